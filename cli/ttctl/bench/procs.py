@@ -1,0 +1,51 @@
+"""Whole-process timing: commands run interleaved, so machine noise hits all of them alike."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+
+def console_script(name: str, module: str) -> list[str]:
+    """The console script `name` next to this interpreter, else `python -m module`."""
+    here = Path(sys.executable).with_name(name)
+    if here.exists():
+        return [str(here)]
+    found = shutil.which(name)
+    return [found] if found else [sys.executable, "-m", module]
+
+
+def run_once(cmd: list[str], cwd: str | None = None) -> float:
+    t0 = time.perf_counter()
+    proc = subprocess.run(cmd, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, check=False)
+    elapsed = time.perf_counter() - t0
+    if proc.returncode not in (0, 1):  # validate exits 1 on errors; anything else is a failure
+        err = proc.stderr.decode(errors="replace").strip().splitlines()
+        raise RuntimeError(f"{' '.join(cmd[:3])} ... failed ({proc.returncode}): {err[-1] if err else ''}")
+    return elapsed
+
+
+def time_interleaved(cmds: dict[str, list[str]], runs: int, warmup: int = 2,
+                     cwd: str | None = None) -> dict[str, list[float]]:
+    """Run each command `warmup` times untimed, then `runs` times, round-robin."""
+    for _ in range(warmup):
+        for cmd in cmds.values():
+            run_once(cmd, cwd)
+    times: dict[str, list[float]] = {k: [] for k in cmds}
+    for _ in range(runs):
+        for key, cmd in cmds.items():
+            times[key].append(run_once(cmd, cwd))
+    return times
+
+
+def median(xs: list[float]) -> float:
+    return statistics.median(xs)
+
+
+def machine() -> str:
+    return f"{os.cpu_count()} cpus, Python {sys.version.split()[0]}"

@@ -1,0 +1,62 @@
+"""`ttctl bench validate`: ttctl validate vs mavgen --lang Python3 on the same dialect."""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+
+from ..dialect.source import pymavlink_dialects_dir
+from .procs import console_script, machine, median, time_interleaved
+
+FLOOR = 0.75  # issue: at most 0.75x mavgen's time
+
+
+def run(dialect: str | None, runs: int, as_json: bool) -> None:
+    from ..app import Fail
+
+    if dialect is None:
+        base = pymavlink_dialects_dir()
+        if base is None:
+            raise Fail("pymavlink's dialects not found; pass a dialect file")
+        dialect = os.path.join(base, "all.xml")
+    if not os.path.isfile(dialect):
+        raise Fail(f"{dialect}: no such file")
+    with tempfile.TemporaryDirectory(prefix="ttctl-bench-") as tmp:
+        cmds = {
+            "ttctl validate": console_script("ttctl", "ttctl") + ["validate", dialect],
+            "mavgen Python3": console_script("mavgen.py", "pymavlink.tools.mavgen")
+            + ["--lang", "Python3", "--wire-protocol", "2.0", "-o", os.path.join(tmp, "out"), dialect],
+        }
+        try:
+            times = time_interleaved(cmds, runs)
+        except RuntimeError as e:
+            raise Fail(str(e)) from None
+    med = {k: median(v) for k, v in times.items()}
+    ratio = med["ttctl validate"] / med["mavgen Python3"]
+    result = {
+        "dialect": dialect,
+        "runs": runs,
+        "median_s": {k: round(v, 4) for k, v in med.items()},
+        "min_s": {k: round(min(v), 4) for k, v in times.items()},
+        "ratio": round(ratio, 3),
+        "floor": FLOOR,
+        "ok": ratio <= FLOOR,
+        "machine": machine(),
+    }
+    if as_json:
+        print(json.dumps(result, indent=2))
+        return
+    from rich.console import Console
+    from rich.table import Table
+
+    table = Table(title=f"whole-process time on {os.path.basename(dialect)}, {runs} interleaved runs each")
+    table.add_column("command")
+    table.add_column("median s", justify="right")
+    table.add_column("min s", justify="right")
+    for k in cmds:
+        table.add_row(k, f"{med[k]:.3f}", f"{min(times[k]):.3f}")
+    console = Console()
+    console.print(table)
+    verdict = "[green]meets[/]" if ratio <= FLOOR else "[red]misses[/]"
+    console.print(f"ratio ttctl/mavgen = [bold]{ratio:.2f}[/] ({verdict} the {FLOOR}x floor)")

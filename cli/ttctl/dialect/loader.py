@@ -1,0 +1,448 @@
+"""From dialect files to the model: includes, element walking, enum merging.
+
+Includes are resolved relative to the including file, then each `-I` directory, then the
+dialect definitions pymavlink ships. Enums split across files are merged as mavgen merges
+them. Problems go to the Reporter; loading continues so that one run shows all of them.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from typing import Any, NamedTuple
+
+from .diagnostics import Loc, Reporter, SourceText
+from .model import (
+    BASE_TYPES,
+    MAX_MSG_ID,
+    Deprecation,
+    Dialect,
+    DialectFile,
+    Enum,
+    EnumEntry,
+    EnumParam,
+    Field,
+    Message,
+)
+from .source import ParsedFile, Unreadable, parse_file, pymavlink_dialects_dir, schema_check
+
+MAX_INCLUDE_DEPTH = 32
+_TYPE_RE = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d+)\])?\Z")
+_VALUE_RE = re.compile(r"\s*(?:(0[xX][0-9a-fA-F]+)|(0[bB][01]+)|2\*\*(\d+)|(\d+))\s*\Z")
+
+
+class LoadError(Exception):
+    """The root dialect file itself could not be read or parsed."""
+
+    def __init__(self, path: str, code: str, message: str, line: int = 1, col: int = 1) -> None:
+        super().__init__(message)
+        self.path, self.code, self.message, self.line, self.col = path, code, message, line, col
+
+
+class LoadResult(NamedTuple):
+    dialect: Dialect
+    reporter: Reporter
+    file_order: list[str]
+
+
+def parse_enum_value(text: str) -> int | None:
+    if text.isdigit():
+        return int(text)
+    m = _VALUE_RE.match(text)
+    if not m:
+        return None
+    hexa, binary, power, dec = m.groups()
+    if hexa:
+        return int(hexa, 16)
+    if binary:
+        return int(binary, 2)
+    if power:
+        return 2 ** int(power)
+    return int(dec)
+
+
+def _text(el: Any) -> str:
+    return (el.text or "").strip()
+
+
+def _deprecation(el: Any) -> Deprecation:
+    return Deprecation(str(el.tag), el.get("since", ""), el.get("replaced_by", ""), _text(el))
+
+
+class _FileReader:
+    """Builds the DialectFile of one parsed document."""
+
+    def __init__(self, pf: ParsedFile, rep: Reporter) -> None:
+        self.pf = pf
+        self.src: SourceText = pf.source
+        self.rep = rep
+        # (line, attribute) pairs already explained, so the XSD check does not repeat them
+        self.covered: set[tuple[int, str | None]] = set()
+
+    def loc(self, el: Any, attr: str | None = None) -> Loc:
+        return Loc(self.src, el.sourceline or 1, str(el.tag), attr)
+
+    def error(self, el: Any, attr: str | None, code: str, msg: str, name: str | None = None) -> None:
+        self.covered.add((el.sourceline or 1, attr))
+        self.rep.error(self.loc(el, attr), code, msg, name)
+
+    def read(self) -> DialectFile:
+        root = self.pf.root
+        df = DialectFile(self.pf.path, self.loc(root))
+        if root.tag != "mavlink":
+            self.error(root, None, "XSD", f"root element is <{root.tag}>, expected <mavlink>")
+            self.covered.add((root.sourceline or 1, "*"))
+            return df
+        for child in root:
+            tag = child.tag
+            if not isinstance(tag, str):
+                continue
+            if tag == "include":
+                df.includes.append((_text(child), self.loc(child)))
+            elif tag == "version":
+                df.version = self._int(child)
+            elif tag == "dialect":
+                df.dialect = self._int(child)
+            elif tag == "enums":
+                for el in child:
+                    if el.tag == "enum":
+                        e = self._enum(el)
+                        if e is not None:
+                            df.enums.append(e)
+            elif tag == "messages":
+                for el in child:
+                    if el.tag == "message":
+                        m = self._message(el)
+                        if m is not None:
+                            df.messages.append(m)
+        return df
+
+    def _int(self, el: Any) -> int | None:
+        try:
+            return int(_text(el))
+        except ValueError:
+            return None  # the XSD reports it
+
+    def _enum(self, el: Any) -> Enum | None:
+        name = el.get("name")
+        if not name:
+            return None
+        e = Enum(name, self.loc(el, "name"), "", el.get("bitmask") == "true")
+        e.parts.append(e.loc)
+        highest = 0
+        for child in el:
+            tag = child.tag
+            if tag == "description":
+                e.description = _text(child)
+            elif tag in ("deprecated", "superseded"):
+                e.deprecated = _deprecation(child)
+            elif tag == "wip":
+                e.wip = True
+            elif tag == "entry":
+                a = dict(child.attrib)
+                ename = a.get("name")
+                if not ename:
+                    continue
+                raw = a.get("value")
+                if raw is None:
+                    value, auto = highest + 1, True
+                else:
+                    parsed = parse_enum_value(raw)
+                    if parsed is None:
+                        self.error(child, "value", "ENUM-VALUE",
+                                   f"enum entry {ename}: value '{raw}' is not an integer "
+                                   "(decimal, 0x hex, 0b binary or 2**N)", ename)
+                        continue
+                    value, auto = parsed, False
+                highest = max(highest, value)
+                loc = Loc(self.src, child.sourceline or 1, "entry", "name")
+                e.entries.append(EnumEntry(ename, value, loc, auto, child if len(child) else None))
+        return e
+
+
+    def _message(self, el: Any) -> Message | None:
+        name = el.get("name")
+        raw_id = el.get("id")
+        if not name or raw_id is None:
+            return None  # the XSD reports the missing attribute
+        try:
+            msgid = int(raw_id.strip())
+        except ValueError:
+            self.error(el, "id", "MSG-ID", f"message {name}: id '{raw_id}' is not an integer", name)
+            msgid = -1
+        else:
+            if not 0 <= msgid <= MAX_MSG_ID:
+                self.error(el, "id", "MSG-ID-RANGE",
+                           f"message {name}: id {msgid} is outside MAVLink 2's 24-bit range 0..{MAX_MSG_ID}",
+                           name)
+        msg = Message(msgid, name, self.loc(el, "name"))
+        in_ext = False
+        ext_el: Any = None
+        broken = msgid < 0
+        for child in el:
+            tag = child.tag
+            if tag == "field":
+                f = self._field(msg, child, in_ext)
+                if f is None:
+                    broken = True
+                else:
+                    msg.fields.append(f)
+            elif tag == "extensions":
+                if in_ext:
+                    self.error(child, None, "EXTENSIONS",
+                               f"message {name}: more than one <extensions/> marker", name)
+                in_ext, ext_el = True, child
+            elif tag == "description":
+                msg.description = _text(child)
+            elif tag in ("deprecated", "superseded"):
+                msg.deprecated = _deprecation(child)
+            elif tag == "wip":
+                msg.wip = True
+        if ext_el is not None and not any(f.extension for f in msg.fields):
+            self.error(ext_el, None, "EXTENSIONS",
+                       f"message {name}: <extensions/> is not followed by any field", name)
+            self.covered.add((el.sourceline or 1, None))
+        if not broken and not msg.fields:
+            return None  # XSD: a message needs at least one field
+        msg.complete = not broken
+        msg.finalize()
+        return msg
+
+    def _field(self, msg: Message, el: Any, extension: bool) -> Field | None:
+        a = el.attrib
+        name = a.get("name")
+        raw_type = a.get("type")
+        if not name or raw_type is None:
+            return None
+        parsed = _parse_type(raw_type)
+        if parsed is None:
+            self.error(el, "type", "FIELD-TYPE",
+                       f"{msg.name}.{name}: '{raw_type}' is not a MAVLink type "
+                       f"(one of {', '.join(BASE_TYPES)}, optionally with [N])", name)
+            return None
+        base, length, mavlink_version = parsed
+        if length < 0:
+            self.error(el, "type", "ARRAY-LENGTH",
+                       f"{msg.name}.{name}: array length {-length - 1} is outside 1..255 "
+                       "(MAVLink encodes it in one byte of CRC_EXTRA)", name)
+            return None
+        if mavlink_version and extension:
+            self.error(el, "type", "EXTENSIONS",
+                       f"{msg.name}.{name}: uint8_t_mavlink_version cannot be an extension field", name)
+        return Field.at(self.src, el.sourceline or 1, name, base, length, a.get("enum") or None, extension,
+                        mavlink_version, el)
+
+
+def field_details(el: Any) -> dict[str, Any]:
+    """What only the generators need of a <field> element."""
+    a = el.attrib
+    text = (el.text or "").strip()
+    for sub in el:
+        if sub.tag == "description":
+            text = (text + " " + _text(sub)).strip()
+    return {
+        "description": text,
+        "display": a.get("display"),
+        "units": a.get("units"),
+        "multiplier": a.get("multiplier"),
+        "print_format": a.get("print_format"),
+        "invalid": a.get("invalid"),
+        "instance": a.get("instance") == "true",
+    }
+
+
+def entry_details(el: Any) -> tuple[str, list[EnumParam], Deprecation | None, bool]:
+    """Description, params, deprecation and wip of an <entry> element."""
+    description, params, deprecated, wip = "", [], None, False
+    for sub in el:
+        tag = sub.tag
+        if tag == "description":
+            description = _text(sub)
+        elif tag == "param":
+            params.append(_param(sub))
+        elif tag in ("deprecated", "superseded"):
+            deprecated = _deprecation(sub)
+        elif tag == "wip":
+            wip = True
+    return description, params, deprecated, wip
+
+
+def _param(el: Any) -> EnumParam:
+    try:
+        index = int(el.get("index", "0"))
+    except ValueError:
+        index = 0
+    return EnumParam(
+        index,
+        _text(el),
+        label=el.get("label"),
+        units=el.get("units"),
+        enum=el.get("enum"),
+        reserved=el.get("reserved") == "true",
+        default=el.get("default"),
+        min_value=el.get("minValue"),
+        max_value=el.get("maxValue"),
+        increment=el.get("increment"),
+    )
+
+
+_TYPE_CACHE: dict[str, tuple[str, int, bool] | None] = {}
+
+
+def _parse_type(raw: str) -> tuple[str, int, bool] | None:
+    """'uint8_t[4]' -> ('uint8_t', 4, False); a bad array length comes back as -(length+1);
+    None if not a MAVLink type. Memoised: dialects use a few dozen distinct spellings."""
+    try:
+        return _TYPE_CACHE[raw]
+    except KeyError:
+        pass
+    m = _TYPE_RE.match(raw.strip())
+    result: tuple[str, int, bool] | None = None
+    if m:
+        base, digits = m.group(1), m.group(2)
+        length = int(digits) if digits is not None else 0
+        mavlink_version = False
+        if base == "uint8_t_mavlink_version" and digits is None:
+            base, mavlink_version = "uint8_t", True
+        elif base == "array":
+            base = "int8_t"  # legacy spelling mavgen still accepts
+        if base in BASE_TYPES:
+            if digits is not None and not 1 <= length <= 255:
+                length = -length - 1
+            result = (base, length, mavlink_version)
+    _TYPE_CACHE[raw] = result
+    return result
+
+
+class _Loader:
+    def __init__(self, include_dirs: list[str], rep: Reporter, schema: bool) -> None:
+        self.include_dirs = [os.path.abspath(d) for d in include_dirs]
+        self.rep = rep
+        self.schema = schema
+        self.files: dict[str, DialectFile | None] = {}  # realpath -> file (None: unreadable)
+        self.order: list[DialectFile] = []  # post-order: dependencies first
+        self.shown: dict[str, str] = {}  # realpath -> path as the user will see it
+
+    def search_path(self, includer: str) -> list[str]:
+        dirs = [os.path.dirname(includer)] + self.include_dirs
+        pm = pymavlink_dialects_dir()
+        if pm:
+            dirs.append(pm)
+        return dirs
+
+    def resolve(self, includer: str, name: str) -> str | None:
+        for d in self.search_path(includer):
+            cand = os.path.normpath(os.path.join(d, name))
+            if os.path.isfile(cand):
+                return cand
+        pm = pymavlink_dialects_dir()
+        if pm and os.path.basename(name) != name:
+            cand = os.path.join(pm, os.path.basename(name))
+            if os.path.isfile(cand):
+                return cand
+        return None
+
+    def load(self, path: str, stack: list[str], at: Loc | None) -> DialectFile | None:
+        real = os.path.realpath(path)
+        if real in self.files:
+            return self.files[real]
+        self.shown[real] = path
+        try:
+            pf = parse_file(path)
+        except Unreadable as e:
+            self.files[real] = None
+            if at is None:
+                raise LoadError(path, e.code, e.message, e.line, e.col) from None
+            self.rep.raw(path, e.line, e.col, "error", e.code, e.message)
+            return None
+        reader = _FileReader(pf, self.rep)
+        df = reader.read()
+        if self.schema:
+            schema_check(pf, self.rep, reader.covered)
+        self.files[real] = df
+        stack = stack + [real]
+        for name, loc in df.includes:
+            if not name:
+                self.rep.error(loc, "INCLUDE-MISSING", "empty <include>")
+                continue
+            target = self.resolve(path, name)
+            if target is None:
+                looked = ", ".join(_short_dir(d) for d in self.search_path(path))
+                self.rep.error(loc, "INCLUDE-MISSING", f"cannot find included file '{name}' (looked in {looked})",
+                               name)
+                continue
+            treal = os.path.realpath(target)
+            if treal in stack:
+                chain = stack[stack.index(treal):] + [treal]
+                shown = " -> ".join(os.path.basename(self.shown.get(p, p)) for p in chain)
+                self.rep.error(loc, "INCLUDE-CYCLE", f"include cycle: {shown}", name)
+                continue
+            if len(stack) >= MAX_INCLUDE_DEPTH:
+                self.rep.error(loc, "INCLUDE-DEPTH", f"includes nested deeper than {MAX_INCLUDE_DEPTH} files", name)
+                continue
+            sub = self.load(target, stack, loc)
+            if sub is not None:
+                df.resolved.append(treal)
+        self.order.append(df)
+        return df
+
+
+def _short_dir(d: str) -> str:
+    from .diagnostics import display_path
+
+    pm = pymavlink_dialects_dir()
+    if pm and os.path.realpath(d) == os.path.realpath(pm):
+        return "pymavlink's dialects"
+    return display_path(d) or "."
+
+
+def merge_enums(files: list[DialectFile], rep: Reporter) -> list[Enum]:
+    """Merge same-named enums across files (first definition wins its header), adjusting
+    auto-assigned values as mavgen does, then sort entries by value."""
+    merged: dict[str, Enum] = {}
+    for df in files:
+        for e in df.enums:
+            first = merged.get(e.name)
+            if first is None:
+                m = merged[e.name] = Enum(e.name, e.loc, e.description, e.bitmask)
+                m.entries = list(e.entries)
+                m.deprecated, m.wip, m.parts = e.deprecated, e.wip, [e.loc]
+                continue
+            lo_new = min((x.value for x in e.entries), default=0)
+            hi_new = max((x.value for x in e.entries), default=0)
+            lo_old = min((x.value for x in first.entries), default=0)
+            hi_old = max((x.value for x in first.entries), default=0)
+            if lo_old <= hi_new and hi_old >= lo_new:
+                for entry in first.entries:
+                    if entry.value <= hi_new and entry.autovalue:
+                        entry.value = hi_new + 1
+                        hi_new = entry.value
+            if e.bitmask != first.bitmask:
+                rep.warning(e.loc.at("bitmask"), "ENUM-MERGE",
+                            f"enum {e.name} is {'a bitmask' if e.bitmask else 'not a bitmask'} here but "
+                            f"{'is' if first.bitmask else 'is not'} at {first.loc.short()}", e.name)
+            first.entries.extend(e.entries)
+            first.parts.append(e.loc)
+            if not first.description:
+                first.description = e.description
+    for e in merged.values():
+        e.entries.sort(key=lambda x: x.value)
+    return list(merged.values())
+
+
+def load_dialect(path: str, include_dirs: list[str] | None = None, schema: bool = True) -> LoadResult:
+    """Load a dialect and everything it includes. Raises LoadError only when the root file
+    itself is unreadable; every other problem is a diagnostic in the result."""
+    rep = Reporter()
+    loader = _Loader(include_dirs or [], rep, schema)
+    root = loader.load(path, [], None)
+    assert root is not None
+    files = loader.order
+    enums = merge_enums(files, rep)
+    messages = [m for f in files for m in f.messages]
+    dialect = Dialect(root, files, messages, enums)
+    order = [f.path for f in reversed(files)]
+    for real, shown in loader.shown.items():
+        if shown not in order:
+            order.append(shown)
+    return LoadResult(dialect, rep, order)

@@ -1,0 +1,106 @@
+"""Identifier rules shared by the validator and the code generators.
+
+The validator refuses every name that one of the generators could not emit
+verbatim, so the generators never need to mangle names.
+"""
+
+from __future__ import annotations
+
+import re
+
+IDENTIFIER_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
+
+PYTHON_KEYWORDS = frozenset(
+    """False None True and as assert async await break class continue def del elif else except
+    finally for from global if import in is lambda nonlocal not or pass raise return try while
+    with yield""".split()
+)
+
+C_KEYWORDS = frozenset(
+    """auto break case char const continue default do double else enum extern float for goto if
+    inline int long register restrict return short signed sizeof static struct switch typedef
+    union unsigned void volatile while _Alignas _Alignof _Atomic _Bool _Complex _Generic
+    _Imaginary _Noreturn _Static_assert _Thread_local alignas alignof bool constexpr false
+    nullptr static_assert thread_local true typeof typeof_unqual""".split()
+)
+
+CPP_KEYWORDS = frozenset(
+    """alignas alignof and and_eq asm auto bitand bitor bool break case catch char char8_t
+    char16_t char32_t class compl concept const consteval constexpr constinit const_cast
+    continue co_await co_return co_yield decltype default delete do double dynamic_cast else
+    enum explicit export extern false float for friend goto if inline int long mutable
+    namespace new noexcept not not_eq nullptr operator or or_eq private protected public
+    register reinterpret_cast requires return short signed sizeof static static_assert
+    static_cast struct switch template this thread_local throw true try typedef typeid
+    typename union unsigned using virtual void volatile wchar_t while xor xor_eq""".split()
+)
+
+JAVA_KEYWORDS = frozenset(
+    """abstract assert boolean break byte case catch char class const continue default do
+    double else enum extends final finally float for goto if implements import instanceof int
+    interface long native new package private protected public return short static strictfp
+    super switch synchronized this throw throws transient try void volatile while true false
+    null _ var yield record sealed permits""".split()
+)
+
+# Names that are not keywords but that break generated code when used verbatim: C library
+# macros that a header we include may define, and Java's implicit java.lang types that a
+# generated class of the same name would shadow inside the generated package.
+C_RESERVED = frozenset("NULL EOF errno assert offsetof stdin stdout stderr".split())
+JAVA_RESERVED_TYPES = frozenset(
+    """Object String Class Integer Long Short Byte Float Double Boolean Character Math System
+    Thread Runnable Override Deprecated Exception RuntimeException Error Enum Record Iterable
+    Number Void""".split()
+)
+
+LANGUAGE_KEYWORDS: dict[str, frozenset[str]] = {
+    "Python": PYTHON_KEYWORDS,
+    "C": C_KEYWORDS,
+    "C++": CPP_KEYWORDS,
+    "Java": JAVA_KEYWORDS,
+}
+
+# Members every generated message class/struct defines; a field of the same name would
+# shadow them. Kept in one place so the templates and the validator agree.
+GENERATED_MESSAGE_MEMBERS = frozenset(
+    """MSG_ID NAME CRC_EXTRA PAYLOAD_LENGTH MIN_LENGTH FIELDS pack pack_payload unpack
+    unpack_payload to_dict from_dict encode decode msgid crc_extra""".split()
+)
+
+
+def camel(name: str) -> str:
+    """UPPER_SNAKE or lower_snake to CamelCase: GPS_RAW_INT -> GpsRawInt, GPS2_RAW -> Gps2Raw."""
+    return name.title().replace("_", "")
+
+
+def lower_camel(name: str) -> str:
+    """lower_snake to lowerCamel, keeping capitals already there: time_boot_ms -> timeBootMs,
+    speed_x and speedX -> speedX."""
+    if "_" not in name:
+        return name[:1].lower() + name[1:]
+    first, *rest = name.split("_")
+    return first[:1].lower() + first[1:] + "".join([p[:1].upper() + p[1:] for p in rest])
+
+
+_KEYWORD_LANGS: dict[str, list[str]] = {}
+for _lang, _words in LANGUAGE_KEYWORDS.items():
+    for _w in _words:
+        _KEYWORD_LANGS.setdefault(_w, []).append(_lang)
+for _w in C_RESERVED:
+    _KEYWORD_LANGS.setdefault(_w, [])
+    if "C" not in _KEYWORD_LANGS[_w]:
+        _KEYWORD_LANGS[_w].append("C")
+
+
+def keyword_hits(name: str) -> list[str]:
+    """Languages in which `name` (exactly as written) is a keyword or reserved."""
+    return _KEYWORD_LANGS.get(name, [])
+
+
+def reserved_identifier(name: str) -> str | None:
+    """Why `name` is reserved for the implementation in C/C++, or None."""
+    if "__" in name:
+        return "identifiers containing '__' are reserved in C++ (and in C when leading)"
+    if name[:1] == "_" and name[1:2].isupper():
+        return "identifiers starting with '_' and a capital letter are reserved in C and C++"
+    return None

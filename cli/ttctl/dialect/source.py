@@ -1,0 +1,161 @@
+"""Reading one dialect file safely: size and type checks, no DTDs or entities, no network,
+line numbers kept, and the XSD check against pymavlink's mavschema.xsd."""
+
+from __future__ import annotations
+
+import os
+import re
+from functools import lru_cache
+from typing import TYPE_CHECKING, Any, NamedTuple
+
+from .diagnostics import Loc, Reporter, SourceText
+
+if TYPE_CHECKING:
+    from lxml import etree
+
+MAX_FILE_BYTES = 8 * 1024 * 1024  # the largest official dialect (common.xml) is 0.6 MB
+
+
+class Unreadable(Exception):
+    """The file could not be read or parsed at all; carries one diagnostic."""
+
+    def __init__(self, code: str, message: str, line: int = 1, col: int = 1) -> None:
+        super().__init__(message)
+        self.code = code
+        self.message = message
+        self.line = line
+        self.col = col
+
+
+class ParsedFile(NamedTuple):
+    path: str
+    source: SourceText
+    root: Any  # lxml Element
+
+
+@lru_cache(maxsize=1)
+def pymavlink_dir() -> str | None:
+    """pymavlink's package folder, found without importing it."""
+    import importlib.util
+
+    spec = importlib.util.find_spec("pymavlink")
+    if spec is None or not spec.submodule_search_locations:
+        return None
+    return list(spec.submodule_search_locations)[0]
+
+
+@lru_cache(maxsize=1)
+def pymavlink_dialects_dir() -> str | None:
+    base = pymavlink_dir()
+    if base is None:
+        return None
+    d = os.path.join(base, "dialects", "v20")
+    return d if os.path.isdir(d) else None
+
+
+def read_bytes(path: str) -> bytes:
+    try:
+        st = os.stat(path)
+    except FileNotFoundError:
+        raise Unreadable("READ", "no such file") from None
+    except OSError as e:
+        raise Unreadable("READ", f"cannot read: {e.strerror or e}") from None
+    import stat
+
+    if stat.S_ISDIR(st.st_mode):
+        raise Unreadable("READ", "is a directory, not a dialect file")
+    if not stat.S_ISREG(st.st_mode):
+        raise Unreadable("READ", "is not a regular file")
+    if st.st_size > MAX_FILE_BYTES:
+        raise Unreadable(
+            "TOO-LARGE",
+            f"file is {st.st_size / 1e6:.1f} MB; dialect files over {MAX_FILE_BYTES // 2**20} MiB are refused",
+        )
+    try:
+        with open(path, "rb") as fh:
+            data = fh.read(MAX_FILE_BYTES + 1)
+    except OSError as e:
+        raise Unreadable("READ", f"cannot read: {e.strerror or e}") from None
+    if len(data) > MAX_FILE_BYTES:
+        raise Unreadable("TOO-LARGE", f"file grew past {MAX_FILE_BYTES // 2**20} MiB while reading")
+    return data
+
+
+_DTD_RE = re.compile(rb"<!(DOCTYPE|ENTITY)\b", re.IGNORECASE)
+
+
+def parse_file(path: str) -> ParsedFile:
+    """Read and parse; raises Unreadable with a single clear diagnostic."""
+    from lxml import etree
+
+    data = read_bytes(path)
+    if not data.strip():
+        raise Unreadable("XML-SYNTAX", "file is empty")
+    m = _DTD_RE.search(data)
+    if m:
+        line = data.count(b"\n", 0, m.start()) + 1
+        col = m.start() - (data.rfind(b"\n", 0, m.start()) + 1) + 1
+        raise Unreadable(
+            "DTD",
+            f"<!{m.group(1).decode().upper()}> is not allowed in a dialect file "
+            "(document type declarations and entities can expand without bound or read other files)",
+            line,
+            col,
+        )
+    parser = etree.XMLParser(
+        resolve_entities=False, no_network=True, load_dtd=False, huge_tree=False, remove_pis=True
+    )
+    try:
+        root = etree.fromstring(data, parser)
+    except etree.XMLSyntaxError as e:
+        line, col = e.position if e.position else (1, 1)
+        msg = (e.msg or str(e)).splitlines()[0]
+        msg = re.sub(r",? line \d+, column \d+$", "", msg)
+        code = "XML-SYNTAX"
+        if "UTF-8" in msg or "encoding" in msg.lower():
+            code = "ENCODING"
+            msg = f"{msg.rstrip('.! ')}: the file is not valid in its declared encoding (UTF-8 unless declared)"
+        raise Unreadable(code, msg, line or 1, col or 1) from None
+    return ParsedFile(path, SourceText(path, data), root)
+
+
+@lru_cache(maxsize=1)
+def _schema() -> etree.XMLSchema | None:
+    from lxml import etree
+
+    base = pymavlink_dir()
+    if base is None:
+        return None
+    xsd = os.path.join(base, "generator", "mavschema.xsd")
+    try:
+        doc = etree.parse(xsd)
+    except (OSError, etree.XMLSyntaxError):
+        return None
+    # As mavgen does without --strict-units: accept any units string.
+    ns = {"xs": "http://www.w3.org/2001/XMLSchema"}
+    for el in doc.getroot().iterfind('xs:attribute[@name="units"]', ns):
+        el.set("type", "xs:string")
+    return etree.XMLSchema(doc)
+
+
+_XSD_ATTR_RE = re.compile(r"^Element '([^']+)'(?:, attribute '([^']+)')?: (.*)$", re.S)
+
+
+def schema_check(pf: ParsedFile, rep: Reporter, covered: set[tuple[int, str | None]]) -> None:
+    """Report XSD violations, skipping (line, attribute) pairs the loader already explained."""
+    schema = _schema()
+    if schema is None:
+        rep.raw(pf.path, 1, 1, "warning", "XSD", "pymavlink's mavschema.xsd not found; schema check skipped")
+        return
+    if schema.validate(pf.root.getroottree()):
+        return
+    for err in schema.error_log:
+        m = _XSD_ATTR_RE.match(err.message)
+        tag, attr, text = (m.group(1), m.group(2), m.group(3)) if m else (None, None, err.message)
+        if (err.line, attr) in covered or (err.line, "*") in covered:
+            continue
+        text = " ".join(text.split())
+        text = text.replace("[facet 'pattern'] ", "")
+        what = f"<{tag}>" + (f" attribute '{attr}'" if attr else "") if tag else ""
+        loc = Loc(pf.source, err.line, tag, attr)
+        rep.error(loc, "XSD", f"{what}: {text}" if what else text)
