@@ -9,7 +9,7 @@ from __future__ import annotations
 import os
 import sys
 from pathlib import Path
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
@@ -50,14 +50,14 @@ def _version(value: bool) -> None:
 @app.callback()
 def _root(
     version: Annotated[
-        Optional[bool], typer.Option("--version", callback=_version, is_eager=True, help="Print the version.")
+        bool | None, typer.Option("--version", callback=_version, is_eager=True, help="Print the version.")
     ] = None,
 ) -> None:
     pass
 
 
 IncludeOpt = Annotated[
-    Optional[list[Path]],
+    list[Path] | None,
     typer.Option("-I", "--include-dir", help="Extra directory to search for <include> files (repeatable)."),
 ]
 
@@ -90,7 +90,7 @@ def validate(
 
 @bench_app.command("validate")
 def bench_validate(
-    dialect: Annotated[Optional[Path], typer.Argument(help="Dialect XML (default: pymavlink's all.xml).")] = None,
+    dialect: Annotated[Path | None, typer.Argument(help="Dialect XML (default: pymavlink's all.xml).")] = None,
     runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=200)] = 15,
     json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
 ) -> None:
@@ -131,7 +131,7 @@ def main() -> None:
     except BrokenPipeError:
         sys.stderr.close()
         sys.exit(1)
-    except Exception as e:  # noqa: BLE001 - the last line of defence against tracebacks
+    except Exception as e:
         if os.environ.get("TTCTL_DEBUG"):
             raise
         print(f"ttctl: internal error: {type(e).__name__}: {e} (set TTCTL_DEBUG=1 for a traceback)",

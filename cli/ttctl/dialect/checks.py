@@ -20,6 +20,7 @@ from .model import (
 from .names import (
     GENERATED_MESSAGE_MEMBERS,
     IDENTIFIER_RE,
+    JAVA_RESERVED_TYPES,
     LANGUAGE_KEYWORDS,
     camel,
     keyword_hits,
@@ -128,6 +129,11 @@ def _identifier(loc: Loc, kind: str, name: str, rep: Reporter, fold_case: bool) 
     why = reserved_identifier(name)
     if why:
         rep.error(loc, "RESERVED-NAME", f"{kind} name '{name}': {why}", name)
+        return False
+    if fold_case and camel(name) in JAVA_RESERVED_TYPES:
+        rep.error(loc, "RESERVED-NAME",
+                  f"{kind} name '{name}' becomes class {camel(name)}, which would shadow java.lang.{camel(name)} "
+                  "in the generated Java package", name)
         return False
     return True
 

@@ -12,7 +12,7 @@ Severity = Literal["error", "warning"]
 class SourceText:
     """The text of one dialect file, kept to turn element lines into precise columns."""
 
-    __slots__ = ("path", "_lines", "_data")
+    __slots__ = ("_data", "_lines", "path")
 
     def __init__(self, path: str, data: bytes | None) -> None:
         self.path = path

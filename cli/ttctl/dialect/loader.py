@@ -442,7 +442,7 @@ def load_dialect(path: str, include_dirs: list[str] | None = None, schema: bool 
     messages = [m for f in files for m in f.messages]
     dialect = Dialect(root, files, messages, enums)
     order = [f.path for f in reversed(files)]
-    for real, shown in loader.shown.items():
+    for shown in loader.shown.values():
         if shown not in order:
             order.append(shown)
     return LoadResult(dialect, rep, order)

@@ -67,8 +67,19 @@ class Field:
     `array_length` is 0 for a scalar. What only the generators need (description, units,
     display...) is read from the XML element on first use, as is the location."""
 
-    __slots__ = ("name", "type", "array_length", "enum", "extension", "mavlink_version", "wire_offset",
-                 "_src", "_line", "_el", "_details")
+    __slots__ = (
+        "_details",
+        "_el",
+        "_line",
+        "_src",
+        "array_length",
+        "enum",
+        "extension",
+        "mavlink_version",
+        "name",
+        "type",
+        "wire_offset",
+    )
 
     def __init__(self, name: str, type: str, array_length: int, loc: Loc | None = None, enum: str | None = None,
                  extension: bool = False, mavlink_version: bool = False, element: Any = None,
@@ -164,8 +175,20 @@ class Message:
     """A message: fields in declared order, plus what finalize() derives (wire order,
     lengths, CRC_EXTRA)."""
 
-    __slots__ = ("id", "name", "loc", "description", "fields", "deprecated", "wip", "complete",
-                 "wire_fields", "payload_length", "min_length", "crc_extra")
+    __slots__ = (
+        "complete",
+        "crc_extra",
+        "deprecated",
+        "description",
+        "fields",
+        "id",
+        "loc",
+        "min_length",
+        "name",
+        "payload_length",
+        "wip",
+        "wire_fields",
+    )
 
     def __init__(self, id: int, name: str, loc: Loc, description: str = "") -> None:
         self.id = id
@@ -258,7 +281,7 @@ class EnumEntry:
     """An enum entry. Its description, params and deprecation are read from the XML element
     on first use: validation never needs them, and MAV_CMD alone has thousands of params."""
 
-    __slots__ = ("name", "value", "loc", "autovalue", "_el", "_description", "_params", "_deprecated", "_wip")
+    __slots__ = ("_deprecated", "_description", "_el", "_params", "_wip", "autovalue", "loc", "name", "value")
 
     def __init__(self, name: str, value: int, loc: Loc, autovalue: bool = False, element: Any = None) -> None:
         self.name = name
@@ -303,7 +326,7 @@ class EnumEntry:
 
 
 class Enum:
-    __slots__ = ("name", "loc", "description", "bitmask", "entries", "deprecated", "wip", "parts")
+    __slots__ = ("bitmask", "deprecated", "description", "entries", "loc", "name", "parts", "wip")
 
     def __init__(self, name: str, loc: Loc, description: str = "", bitmask: bool = False) -> None:
         self.name = name
@@ -326,7 +349,7 @@ class Enum:
 
 
 class DialectFile:
-    __slots__ = ("path", "loc", "includes", "resolved", "version", "dialect", "messages", "enums")
+    __slots__ = ("dialect", "enums", "includes", "loc", "messages", "path", "resolved", "version")
 
     def __init__(self, path: str, loc: Loc) -> None:
         self.path = path

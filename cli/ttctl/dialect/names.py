@@ -10,21 +10,26 @@ import re
 
 IDENTIFIER_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
 
-PYTHON_KEYWORDS = frozenset(
+
+def _words(text: str) -> frozenset[str]:
+    return frozenset(text.split())
+
+
+PYTHON_KEYWORDS = _words(
     """False None True and as assert async await break class continue def del elif else except
     finally for from global if import in is lambda nonlocal not or pass raise return try while
-    with yield""".split()
+    with yield"""
 )
 
-C_KEYWORDS = frozenset(
+C_KEYWORDS = _words(
     """auto break case char const continue default do double else enum extern float for goto if
     inline int long register restrict return short signed sizeof static struct switch typedef
     union unsigned void volatile while _Alignas _Alignof _Atomic _Bool _Complex _Generic
     _Imaginary _Noreturn _Static_assert _Thread_local alignas alignof bool constexpr false
-    nullptr static_assert thread_local true typeof typeof_unqual""".split()
+    nullptr static_assert thread_local true typeof typeof_unqual"""
 )
 
-CPP_KEYWORDS = frozenset(
+CPP_KEYWORDS = _words(
     """alignas alignof and and_eq asm auto bitand bitor bool break case catch char char8_t
     char16_t char32_t class compl concept const consteval constexpr constinit const_cast
     continue co_await co_return co_yield decltype default delete do double dynamic_cast else
@@ -32,25 +37,25 @@ CPP_KEYWORDS = frozenset(
     namespace new noexcept not not_eq nullptr operator or or_eq private protected public
     register reinterpret_cast requires return short signed sizeof static static_assert
     static_cast struct switch template this thread_local throw true try typedef typeid
-    typename union unsigned using virtual void volatile wchar_t while xor xor_eq""".split()
+    typename union unsigned using virtual void volatile wchar_t while xor xor_eq"""
 )
 
-JAVA_KEYWORDS = frozenset(
+JAVA_KEYWORDS = _words(
     """abstract assert boolean break byte case catch char class const continue default do
     double else enum extends final finally float for goto if implements import instanceof int
     interface long native new package private protected public return short static strictfp
     super switch synchronized this throw throws transient try void volatile while true false
-    null _ var yield record sealed permits""".split()
+    null _ var yield record sealed permits"""
 )
 
 # Names that are not keywords but that break generated code when used verbatim: C library
 # macros that a header we include may define, and Java's implicit java.lang types that a
 # generated class of the same name would shadow inside the generated package.
-C_RESERVED = frozenset("NULL EOF errno assert offsetof stdin stdout stderr".split())
-JAVA_RESERVED_TYPES = frozenset(
+C_RESERVED = _words("NULL EOF errno assert offsetof stdin stdout stderr")
+JAVA_RESERVED_TYPES = _words(
     """Object String Class Integer Long Short Byte Float Double Boolean Character Math System
     Thread Runnable Override Deprecated Exception RuntimeException Error Enum Record Iterable
-    Number Void""".split()
+    Number Void"""
 )
 
 LANGUAGE_KEYWORDS: dict[str, frozenset[str]] = {
@@ -62,9 +67,9 @@ LANGUAGE_KEYWORDS: dict[str, frozenset[str]] = {
 
 # Members every generated message class/struct defines; a field of the same name would
 # shadow them. Kept in one place so the templates and the validator agree.
-GENERATED_MESSAGE_MEMBERS = frozenset(
+GENERATED_MESSAGE_MEMBERS = _words(
     """MSG_ID NAME CRC_EXTRA PAYLOAD_LENGTH MIN_LENGTH FIELDS pack pack_payload unpack
-    unpack_payload to_dict from_dict encode decode msgid crc_extra""".split()
+    unpack_payload to_dict from_dict encode decode msgid crc_extra"""
 )
 
 
@@ -83,8 +88,8 @@ def lower_camel(name: str) -> str:
 
 
 _KEYWORD_LANGS: dict[str, list[str]] = {}
-for _lang, _words in LANGUAGE_KEYWORDS.items():
-    for _w in _words:
+for _lang, _kws in LANGUAGE_KEYWORDS.items():
+    for _w in _kws:
         _KEYWORD_LANGS.setdefault(_w, []).append(_lang)
 for _w in C_RESERVED:
     _KEYWORD_LANGS.setdefault(_w, [])

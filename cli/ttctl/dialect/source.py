@@ -41,7 +41,7 @@ def pymavlink_dir() -> str | None:
     spec = importlib.util.find_spec("pymavlink")
     if spec is None or not spec.submodule_search_locations:
         return None
-    return list(spec.submodule_search_locations)[0]
+    return next(iter(spec.submodule_search_locations))
 
 
 @lru_cache(maxsize=1)

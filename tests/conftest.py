@@ -1,0 +1,45 @@
+"""Shared helpers: paths, and running the real `ttctl` console script."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+DIALECTS = ROOT / "dialects"
+TTAPI = DIALECTS / "ttapi.xml"
+
+
+def pymavlink_dialects() -> Path:
+    import pymavlink
+
+    return Path(pymavlink.__file__).parent / "dialects" / "v20"
+
+
+def ttctl_cmd() -> list[str]:
+    exe = Path(sys.executable).with_name("ttctl")
+    if exe.exists():
+        return [str(exe)]
+    found = shutil.which("ttctl")
+    return [found] if found else [sys.executable, "-m", "ttctl"]
+
+
+def run_ttctl(*args: str, cwd: str | os.PathLike[str] | None = None, timeout: float = 120,
+              input: bytes | None = None) -> subprocess.CompletedProcess[str]:
+    """Run the installed console script as a real process."""
+    return subprocess.run(ttctl_cmd() + list(args), cwd=cwd, capture_output=True, text=True, timeout=timeout,
+                          input=input.decode() if input is not None else None)
+
+
+def assert_no_traceback(proc: subprocess.CompletedProcess[str]) -> None:
+    assert "Traceback" not in proc.stderr and "Traceback" not in proc.stdout, proc.stderr
+
+
+@pytest.fixture(scope="session")
+def pm_dialects() -> Path:
+    return pymavlink_dialects()
