@@ -88,6 +88,35 @@ def validate(
     raise typer.Exit(code)
 
 
+@app.command()
+def gen(
+    dialect: Annotated[Path | None, typer.Argument(help="Dialect XML file (default: dialects/ttapi.xml).",
+                                                     show_default=False)] = None,
+    lang: Annotated[str, typer.Option("--lang", help="Comma-separated: python,cpp,java.")] = "python,cpp,java",
+    out: Annotated[Path, typer.Option("-o", "--out", help="Output directory.")] = Path("generated"),
+    check: Annotated[bool, typer.Option("--check", help="Write nothing; list files that differ; exit 1 if any.")]
+    = False,
+    force_skeletons: Annotated[bool, typer.Option("--force-skeletons",
+                                                  help="Overwrite skeletons (code you edit) too.")] = False,
+    include: IncludeOpt = None,
+    templates: Annotated[Path | None, typer.Option("--templates",
+                                                      help="Folder of templates overriding ttctl's, by name.")] = None,
+) -> None:
+    """Generate Python, C++ and Java bindings, skeletons and conformance programs.
+
+    Bindings are rewritten when they change; skeletons (handler and command stubs you fill in)
+    are written once. Refuses a dialect with validation errors.
+    """
+    from .gen import GenError, run_gen
+
+    try:
+        code = run_gen(str(dialect) if dialect else None, lang, str(out), check, force_skeletons,
+                       [str(p) for p in include or []], str(templates) if templates else None)
+    except GenError as e:
+        raise Fail(str(e), e.code) from None
+    raise typer.Exit(code)
+
+
 @bench_app.command("validate")
 def bench_validate(
     dialect: Annotated[Path | None, typer.Argument(help="Dialect XML (default: pymavlink's all.xml).")] = None,

@@ -1,0 +1,221 @@
+"""Python: a package per dialect (enums, messages, framing), a conformance program, and a
+handler module skeleton for ttctl's plugin system."""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from ..dialect.model import BASE_TYPES, Dialect, Enum, Field, Message
+from ..dialect.names import camel
+from .engine import Output, dialect_ident
+
+name = "python"
+
+_PY_TYPES = {
+    "float": "float",
+    "double": "float",
+    "char": "str",
+    "int8_t": "int",
+    "uint8_t": "int",
+    "int16_t": "int",
+    "uint16_t": "int",
+    "int32_t": "int",
+    "uint32_t": "int",
+    "int64_t": "int",
+    "uint64_t": "int",
+}
+
+
+def package(d: Dialect) -> str:
+    """The Python package name of a dialect."""
+    return dialect_ident(d)
+
+
+def is_bytes(f: Field) -> bool:
+    """uint8_t arrays are `bytes` in Python (file data, raw buffers)."""
+    return f.type == "uint8_t" and f.array_length > 0
+
+
+def is_text(f: Field) -> bool:
+    """char fields (arrays and the rare scalar) are `str`."""
+    return f.type == "char"
+
+
+def is_seq(f: Field) -> bool:
+    return f.array_length > 0 and not is_bytes(f) and not is_text(f)
+
+
+def struct_format(m: Message) -> str:
+    parts = ["<"]
+    for f in m.wire_fields:
+        code = BASE_TYPES[f.type][1]
+        if is_text(f) or is_bytes(f):
+            parts.append(f"{max(f.array_length, 1)}s")
+        elif f.array_length:
+            parts.append(code * f.array_length)
+        else:
+            parts.append(code)
+    return "".join(parts)
+
+
+def py_type(f: Field) -> str:
+    """Annotation of the attribute (what decoding produces)."""
+    if is_bytes(f):
+        return "bytes"
+    if is_text(f):
+        return "str"
+    base = _PY_TYPES[f.type]
+    return f"Sequence[{base}]" if f.array_length else base
+
+
+def default(f: Field, d: Dialect) -> str:
+    if f.mavlink_version:
+        return str(d.version)
+    if is_bytes(f):
+        return f"bytes({f.array_length})"
+    if is_text(f):
+        return '""'
+    zero = "0.0" if f.is_float else "0"
+    return f"({', '.join([zero] * f.array_length)},)" if f.array_length else zero
+
+
+def pack_arg(m: Message, f: Field) -> str:
+    """Expression for this field in the struct.pack call (wire order)."""
+    size = max(f.array_length, 1)
+    where = f'"{m.name}.{f.name}"'
+    if is_text(f):
+        return f"_cbytes(self.{f.name}, {size}, {where})"
+    if is_bytes(f):
+        return f"_cbytes(self.{f.name}, {size}, {where})"
+    if f.array_length:
+        return f"*_array(self.{f.name}, {f.array_length}, {where})"
+    return f"self.{f.name}"
+
+
+def unpack_plan(m: Message) -> tuple[bool, list[tuple[str, str]]]:
+    """(simple, assignments). simple: every wire field is one struct item, so the fields can
+    be assigned straight from the tuple; else (field, expression over tuple t)."""
+    simple = all(not f.array_length or is_bytes(f) for f in m.wire_fields) and not any(
+        is_text(f) for f in m.wire_fields
+    )
+    plan: list[tuple[str, str]] = []
+    i = 0
+    for f in m.wire_fields:
+        if is_text(f):
+            plan.append((f.name, f"_cstr(t[{i}])"))
+            i += 1
+        elif is_bytes(f) or not f.array_length:
+            plan.append((f.name, f"t[{i}]"))
+            i += 1
+        else:
+            plan.append((f.name, f"t[{i}:{i + f.array_length}]"))
+            i += f.array_length
+    return simple, plan
+
+
+def doc(text: str, indent: int = 4) -> str:
+    """A safe docstring body."""
+    t = " ".join((text or "").split()).replace("\\", "\\\\").replace('"""', '\\"\\"\\"')
+    if t.endswith('"'):
+        t = t[:-1] + '\\"'
+    return t or "(no description)"
+
+
+def field_doc(f: Field) -> str:
+    extra = []
+    if f.units:
+        extra.append(f"[{f.units}]")
+    if f.enum:
+        extra.append(f"(enum {camel(f.enum)})")
+    if f.extension:
+        extra.append("(extension)")
+    return doc(" ".join([f.description, *extra]))
+
+
+def wrap(text: str, width: int = 96, prefix: str = "    ") -> str:
+    import textwrap
+
+    return "\n".join(textwrap.wrap(text, width, initial_indent=prefix, subsequent_indent=prefix)) or prefix
+
+
+def _natural(s: str) -> list[Any]:
+    return [int(part) if part.isdigit() else part for part in re.split(r"(\d+)", s)]
+
+
+def isort_sorted(names: list[str]) -> list[str]:
+    """The order ruff's RUF022 wants for __all__: SCREAMING_CASE, then CamelCase, then the
+    rest, each in natural order."""
+
+    def key(n: str) -> tuple[int, list[Any]]:
+        if n.isupper() or (n.upper() == n and any(c.isalpha() for c in n)):
+            group = 0
+        elif n[:1].isupper():
+            group = 1
+        else:
+            group = 2
+        return group, _natural(n)
+
+    return sorted(names, key=key)
+
+
+def import_sorted(names: list[str]) -> list[str]:
+    """isort's order of names in `from x import (...)`: CONSTANTS, Classes, functions, each
+    case-insensitively."""
+
+    def key(n: str) -> tuple[int, str]:
+        if n.upper() == n:
+            return 0, n
+        return (1 if n[:1].isupper() else 2), n.lower()
+
+    return sorted(names, key=key)
+
+
+def natural_sorted(names: list[str]) -> list[str]:
+    return sorted(names, key=_natural)
+
+
+def enum_base(e: Enum) -> str:
+    return "IntFlag" if e.bitmask else "IntEnum"
+
+
+class _Python:
+    name = "python"
+
+    def outputs(self, d: Dialect) -> list[Output]:
+        pkg = package(d)
+        return [
+            Output(f"python/{pkg}/__init__.py", "python/__init__.py.j2"),
+            Output(f"python/{pkg}/mavlink.py", "python/mavlink.py.j2"),
+            Output(f"python/{pkg}/enums.py", "python/enums.py.j2"),
+            Output(f"python/{pkg}/messages.py", "python/messages.py.j2"),
+            Output(f"python/{pkg}/py.typed", "python/py.typed.j2"),
+            Output("python/conformance.py", "python/conformance.py.j2"),
+            Output(f"python/handlers/{pkg}_onboard.py", "python/handlers.py.j2", skeleton=True),
+        ]
+
+    def owned_dirs(self, d: Dialect) -> list[str]:
+        return [f"python/{package(d)}"]
+
+    def globals(self, d: Dialect) -> dict[str, Any]:
+        return {
+            "pkg": package(d),
+            "py_type": py_type,
+            "default": lambda f: default(f, d),
+            "struct_format": struct_format,
+            "pack_arg": pack_arg,
+            "unpack_plan": unpack_plan,
+            "doc": doc,
+            "field_doc": field_doc,
+            "wrap": wrap,
+            "enum_base": enum_base,
+            "isort_sorted": isort_sorted,
+            "natural_sorted": natural_sorted,
+            "import_sorted": import_sorted,
+            "is_text": is_text,
+            "is_bytes": is_bytes,
+            "is_seq": is_seq,
+        }
+
+
+LANG = _Python()

@@ -1,0 +1,1 @@
+"""The two ends of the link (onboard, tablet) and their plugin system."""

@@ -1,0 +1,133 @@
+"""ttctl's plugin system: handlers bound to message classes, several per msgid.
+
+A plugin is a class deriving from Plugin whose methods are marked with @handles(MsgClass, ...).
+`ttctl gen` writes a skeleton of one (python/handlers/<dialect>_onboard.py). The onboard end
+loads plugin modules, instantiates their Plugin classes, and dispatches every received
+message to every handler bound to its msgid, in registration order. A handler that raises is
+reported and does not stop the others.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import inspect
+import sys
+from collections.abc import Callable, Iterable
+from pathlib import Path
+from typing import Any
+
+Handler = Callable[[Any, "Context"], None]
+
+
+class Context:
+    """What a handler gets besides the message: a way to answer and to log."""
+
+    def __init__(self, send: Callable[[Any], None] | None = None, log: Callable[[str], None] | None = None,
+                 sysid: int = 1, compid: int = 240) -> None:
+        self._send = send
+        self._log = log
+        self.sysid = sysid
+        self.compid = compid
+        self.logged: list[str] = []
+
+    def send(self, msg: Any) -> None:
+        if self._send is None:
+            raise RuntimeError("this context cannot send")
+        self._send(msg)
+
+    def log(self, text: str) -> None:
+        self.logged.append(text)
+        if self._log is not None:
+            self._log(text)
+
+
+def handles(*classes: type) -> Callable[[Callable[..., None]], Callable[..., None]]:
+    """Mark a plugin method as the handler of these message classes."""
+    if not classes:
+        raise TypeError("@handles needs at least one message class")
+
+    def mark(fn: Callable[..., None]) -> Callable[..., None]:
+        fn.__ttctl_handles__ = tuple(classes)  # type: ignore[attr-defined]
+        return fn
+
+    return mark
+
+
+class Plugin:
+    """Base of handler plugins. Override `start`/`stop` for set-up and tear-down."""
+
+    def start(self, ctx: Context) -> None:
+        pass
+
+    def stop(self) -> None:
+        pass
+
+    def handlers(self) -> list[tuple[int, Handler]]:
+        out: list[tuple[int, Handler]] = []
+        for _, method in inspect.getmembers(self, predicate=inspect.ismethod):
+            for cls in getattr(method, "__ttctl_handles__", ()):
+                out.append((cls.MSG_ID, method))
+        return out
+
+
+class Dispatcher:
+    """msgid -> handlers, in registration order."""
+
+    def __init__(self, on_error: Callable[[Any, BaseException], None] | None = None) -> None:
+        self._table: dict[int, list[Handler]] = {}
+        self.on_error = on_error
+        self.errors = 0
+
+    def bind(self, msgid: int, handler: Handler) -> None:
+        self._table.setdefault(msgid, []).append(handler)
+
+    def add(self, plugin: Plugin) -> None:
+        for msgid, handler in plugin.handlers():
+            self.bind(msgid, handler)
+
+    def handlers_for(self, msgid: int) -> list[Handler]:
+        return list(self._table.get(msgid, ()))
+
+    def dispatch(self, msg: Any, ctx: Context) -> int:
+        """Run every handler of msg's id; returns how many ran."""
+        handlers = self._table.get(msg.MSG_ID, ())
+        for h in handlers:
+            try:
+                h(msg, ctx)
+            except Exception as e:
+                self.errors += 1
+                if self.on_error is not None:
+                    self.on_error(msg, e)
+        return len(handlers)
+
+
+class PluginError(Exception):
+    pass
+
+
+def load_plugins(paths: Iterable[str | Path]) -> list[Plugin]:
+    """Import each module file and instantiate every Plugin subclass it defines. The file's
+    parent folder goes on sys.path so that generated packages beside it import."""
+    plugins: list[Plugin] = []
+    for raw in paths:
+        path = Path(raw).resolve()
+        if not path.is_file():
+            raise PluginError(f"{raw}: no such plugin file")
+        for folder in (str(path.parent.parent), str(path.parent)):
+            if folder not in sys.path:
+                sys.path.append(folder)
+        spec = importlib.util.spec_from_file_location(f"ttctl_plugin_{path.stem}", path)
+        if spec is None or spec.loader is None:
+            raise PluginError(f"{raw}: not a Python module")
+        module = importlib.util.module_from_spec(spec)
+        try:
+            spec.loader.exec_module(module)
+        except Exception as e:
+            raise PluginError(f"{raw}: {type(e).__name__}: {e}") from None
+        found = [obj for obj in vars(module).values()
+                 if inspect.isclass(obj) and issubclass(obj, Plugin) and obj is not Plugin
+                 and obj.__module__ == module.__name__]
+        if not found:
+            raise PluginError(f"{raw}: defines no Plugin subclass")
+        plugins.extend(cls() for cls in found)
+    return plugins

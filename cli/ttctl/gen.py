@@ -1,0 +1,100 @@
+"""`ttctl gen`: validate, render, write (or check) the output tree."""
+
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+
+from .codegen.engine import LANGUAGES, language, render, write_tree
+from .validate import load_and_check
+
+DEFAULT_DIALECT = "dialects/ttapi.xml"
+DEFAULT_OUT = "generated"
+
+
+class GenError(Exception):
+    def __init__(self, message: str, code: int) -> None:
+        super().__init__(message)
+        self.code = code
+
+
+def parse_langs(spec: str) -> list[str]:
+    langs = [s.strip().lower() for s in spec.split(",") if s.strip()]
+    aliases = {"py": "python", "c++": "cpp", "cxx": "cpp"}
+    langs = [aliases.get(x, x) for x in langs]
+    bad = [x for x in langs if x not in LANGUAGES]
+    if bad or not langs:
+        raise GenError(f"--lang: unknown language {', '.join(bad) or '(none)'}; choose from {', '.join(LANGUAGES)}", 2)
+    return list(dict.fromkeys(langs))
+
+
+def check_out_dir(out: Path, check: bool) -> None:
+    if out.exists() and not out.is_dir():
+        raise GenError(f"output path {out} exists and is not a directory", 2)
+    if check:
+        return
+    probe = out
+    while not probe.exists():
+        probe = probe.parent
+    if not probe.is_dir() or not os.access(probe, os.W_OK | os.X_OK):
+        raise GenError(f"output path {out} is not writable", 2)
+
+
+def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool, force_skeletons: bool,
+            include_dirs: list[str], user_templates: str | None, quiet: bool = False) -> int:
+    from .dialect import LoadError
+
+    if dialect_path is None:
+        if not os.path.isfile(DEFAULT_DIALECT):
+            raise GenError(f"no dialect given and {DEFAULT_DIALECT} is not here", 2)
+        dialect_path = DEFAULT_DIALECT
+    langs = parse_langs(langs_spec)
+    if user_templates is not None and not os.path.isdir(user_templates):
+        raise GenError(f"--templates {user_templates}: not a directory", 2)
+    out = Path(out_dir)
+    check_out_dir(out, check)
+    try:
+        dialect, rep, order = load_and_check(dialect_path, include_dirs)
+    except LoadError as e:
+        print(f"{e.path}:{e.line}:{e.col}: error: [{e.code}] {e.message}", file=sys.stderr)
+        return 2
+    if rep.errors:
+        for d in rep.sorted(order):
+            if d.severity == "error":
+                print(d.text(), file=sys.stderr)
+        print(f"{dialect_path}: {rep.errors} error(s); nothing generated", file=sys.stderr)
+        return 1
+    try:
+        rendered = render(dialect, langs, user_templates)
+    except Exception as e:  # jinja2 template errors (user templates), undefined names
+        import jinja2
+
+        if isinstance(e, jinja2.TemplateError):
+            where = f"{e.filename}:{e.lineno}: " if isinstance(e, jinja2.TemplateSyntaxError) else ""
+            raise GenError(f"template error: {where}{e}", 2) from None
+        raise
+    owned = [p for lang in langs for p in language(lang).owned_dirs(dialect)]
+    try:
+        report = write_tree(out, rendered, owned, check, force_skeletons)
+    except OSError as e:
+        raise GenError(f"cannot write {e.filename or out}: {e.strerror or e}", 2) from None
+    if check:
+        for p in report.differ:
+            print(f"{out / p}: out of date", file=sys.stdout)
+        if report.differ:
+            print(f"{len(report.differ)} file(s) differ from what `ttctl gen` would write; run it", file=sys.stdout)
+            return 1
+        if not quiet:
+            print(f"{out}: up to date ({len(report.unchanged) + len(report.kept)} files)")
+        return 0
+    if not quiet:
+        parts = [f"{len(report.written)} written", f"{len(report.unchanged)} unchanged"]
+        if report.kept:
+            parts.append(f"{len(report.kept)} skeletons kept (--force-skeletons overwrites)")
+        if report.removed:
+            parts.append(f"{len(report.removed)} stale removed")
+        print(f"{out}: {', '.join(parts)} [{', '.join(langs)}; {len(dialect.messages)} messages]")
+        if rep.warnings:
+            print(f"({rep.warnings} validation warning(s); `ttctl validate {dialect_path}` shows them)")
+    return 0
