@@ -129,6 +129,32 @@ def bench_validate(
     run(str(dialect) if dialect else None, runs, json_out)
 
 
+@bench_app.command("gen")
+def bench_gen(
+    dialect: Annotated[Path | None, typer.Argument(help="Dialect XML (default: pymavlink's all.xml).")] = None,
+    runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=50)] = 5,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+) -> None:
+    """Whole-process time of `ttctl gen` (three languages) against mavgen's Python3 + C++11 + Java."""
+    from .bench.gen import run
+
+    run(str(dialect) if dialect else None, runs, json_out)
+
+
+@bench_app.command("codec")
+def bench_codec(
+    seconds: Annotated[float, typer.Option(help="Approximate time budget per measurement.", min=0.05)] = 0.5,
+    rounds: Annotated[int, typer.Option(help="Interleaved rounds; medians are reported.", min=1, max=50)] = 5,
+    cpp: Annotated[bool, typer.Option("--cpp/--no-cpp", help="Also build and compare the C++ decoder with "
+                                                             "mavgen's C library (needs g++).")] = True,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+) -> None:
+    """Generated Python decode/encode against pymavlink, and generated C++ decode against mavgen's C."""
+    from .bench.codec import run
+
+    run(seconds, rounds, cpp, json_out)
+
+
 def main() -> None:
     """Console entry point: clean one-line errors instead of tracebacks."""
     try:  # typer >= 0.26 vendors click

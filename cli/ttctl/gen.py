@@ -7,7 +7,7 @@ import sys
 from pathlib import Path
 
 from .codegen.engine import LANGUAGES, language, render, write_tree
-from .validate import load_and_check
+from .validate import load_and_check, user_warnings
 
 DEFAULT_DIALECT = "dialects/ttapi.xml"
 DEFAULT_OUT = "generated"
@@ -34,10 +34,11 @@ def check_out_dir(out: Path, check: bool) -> None:
         raise GenError(f"output path {out} exists and is not a directory", 2)
     if check:
         return
-    probe = out
-    while not probe.exists():
-        probe = probe.parent
-    if not probe.is_dir() or not os.access(probe, os.W_OK | os.X_OK):
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise GenError(f"output path {out} cannot be created: {e.strerror or e}", 2) from None
+    if not os.access(out, os.W_OK | os.X_OK):
         raise GenError(f"output path {out} is not writable", 2)
 
 
@@ -95,6 +96,7 @@ def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool
         if report.removed:
             parts.append(f"{len(report.removed)} stale removed")
         print(f"{out}: {', '.join(parts)} [{', '.join(langs)}; {len(dialect.messages)} messages]")
-        if rep.warnings:
-            print(f"({rep.warnings} validation warning(s); `ttctl validate {dialect_path}` shows them)")
+        warnings = user_warnings(rep, dialect_path)
+        if warnings:
+            print(f"({warnings} validation warning(s); `ttctl validate {dialect_path}` shows them)")
     return 0

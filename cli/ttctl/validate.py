@@ -21,6 +21,14 @@ def load_and_check(path: str, include_dirs: list[str], mtu: int = 100,
     return result.dialect, result.reporter, result.file_order
 
 
+def user_warnings(rep: Reporter, root: str) -> int:
+    """Warnings the user can act on: not those inside pymavlink's own definitions (unless the
+    root dialect is one of them)."""
+    if _in_pymavlink(root):
+        return rep.warnings
+    return sum(1 for d in rep.items if d.severity == "warning" and not _in_pymavlink(d.path))
+
+
 def _in_pymavlink(path: str) -> bool:
     pm = pymavlink_dialects_dir()
     return pm is not None and os.path.dirname(os.path.realpath(path)) == os.path.realpath(pm)

@@ -8,6 +8,7 @@ import statistics
 import subprocess
 import sys
 import time
+from collections.abc import Callable
 from pathlib import Path
 
 
@@ -30,16 +31,24 @@ def run_once(cmd: list[str], cwd: str | None = None) -> float:
     return elapsed
 
 
-def time_interleaved(cmds: dict[str, list[str]], runs: int, warmup: int = 2,
+Command = list[str] | Callable[[int], list[str]]
+
+
+def time_interleaved(cmds: dict[str, Command], runs: int, warmup: int = 2,
                      cwd: str | None = None) -> dict[str, list[float]]:
-    """Run each command `warmup` times untimed, then `runs` times, round-robin."""
-    for _ in range(warmup):
+    """Run each command `warmup` times untimed, then `runs` times, round-robin. A command may
+    be a function of the run number (e.g. to write into a fresh directory each time)."""
+
+    def at(cmd: Command, i: int) -> list[str]:
+        return cmd(i) if callable(cmd) else cmd
+
+    for w in range(warmup):
         for cmd in cmds.values():
-            run_once(cmd, cwd)
+            run_once(at(cmd, -1 - w), cwd)
     times: dict[str, list[float]] = {k: [] for k in cmds}
-    for _ in range(runs):
+    for i in range(runs):
         for key, cmd in cmds.items():
-            times[key].append(run_once(cmd, cwd))
+            times[key].append(run_once(at(cmd, i), cwd))
     return times
 
 

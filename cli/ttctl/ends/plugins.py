@@ -14,7 +14,7 @@ import inspect
 import sys
 from collections.abc import Callable, Iterable
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 Handler = Callable[[Any, "Context"], None]
 
@@ -41,12 +41,15 @@ class Context:
             self._log(text)
 
 
-def handles(*classes: type) -> Callable[[Callable[..., None]], Callable[..., None]]:
+F = TypeVar("F", bound=Callable[..., None])
+
+
+def handles(*classes: type) -> Callable[[F], F]:
     """Mark a plugin method as the handler of these message classes."""
     if not classes:
         raise TypeError("@handles needs at least one message class")
 
-    def mark(fn: Callable[..., None]) -> Callable[..., None]:
+    def mark(fn: F) -> F:
         fn.__ttctl_handles__ = tuple(classes)  # type: ignore[attr-defined]
         return fn
 
