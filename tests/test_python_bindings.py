@@ -24,8 +24,8 @@ def sample_messages() -> list[ttapi.Message]:
         ttapi.TtActionCommand(target_system=1, target_component=240, command_id=77,
                               action=ttapi.TtAction.TT_ACTION_FLY_TRAJECTORY, time_usec=2**60, param=(1.5, 0, 0, 0),
                               argument="mission.yaml"),
-        ttapi.TtFileData(transfer_id=3, offset=1 << 20, count=82, data=bytes(range(82))),
-        ttapi.TtFileDataWide(transfer_id=3, offset=5, count=249, data=bytes(range(249))),
+        ttapi.TtFileData(transfer_id=3, offset=1 << 20, data=bytes(range(83))),
+        ttapi.TtFileDataWide(transfer_id=3, offset=5, data=bytes(range(250))),
         ttapi.Statustext(severity=4, text="hello"),
         ttapi.DjiPoseStamped(target_system=1, sec=5, nsec=6, topic_name=1, position=(1.0, 2.0, 3.0),
                              orientation=(0.0, 0.0, 0.0, 1.0)),
@@ -176,7 +176,7 @@ def test_garbage_never_raises_and_is_counted() -> None:
 @pytest.mark.parametrize(("msg", "needle"), [
     (ttapi.Heartbeat(type=300), "HEARTBEAT"),
     (ttapi.Statustext(text="x" * 51), "STATUSTEXT.text: 51 bytes do not fit char[50]"),
-    (ttapi.TtFileData(data=bytes(83)), "TT_FILE_DATA.data: 83 bytes do not fit"),
+    (ttapi.TtFileData(data=bytes(84)), "TT_FILE_DATA.data: 84 bytes do not fit"),
     (ttapi.DjiPoseStamped(position=(1.0, 2.0)), "DJI_POSE_STAMPED.position: expected 3 values, got 2"),
 ])
 def test_values_that_do_not_fit_are_clear_errors(msg: ttapi.Message, needle: str) -> None:

@@ -29,7 +29,7 @@ class TtapiOnboard(Plugin):
 
     @handles(m.TtFileData)
     def on_tt_file_data(self, msg: m.TtFileData, ctx: Context) -> None:
-        """[sender: any] File bytes in a frame that fits one 100-byte packet. Trailing zero bytes of data may be truncated on the wire; count says how many bytes are real."""
+        """[sender: any] File bytes in a frame that fills one 100-byte packet exactly. It carries min(83, size - offset) bytes: the count follows from the offer's size, so trailing zero bytes may be truncated on the wire."""
         ctx.log(f"TT_FILE_DATA from {msg.get_srcSystem()}/{msg.get_srcComponent()} not handled yet: {msg!r}")
 
     @handles(m.TtFileRequest)
@@ -54,7 +54,7 @@ class TtapiOnboard(Plugin):
 
     @handles(m.TtFileDataWide)
     def on_tt_file_data_wide(self, msg: m.TtFileDataWide, ctx: Context) -> None:
-        """[sender: any] [spans-packets] File bytes in a frame that spans packets (up to 267 bytes): less framing per byte, for when the transfer observes little loss. Trailing zero bytes of data may be truncated on the wire; count says how many bytes are real."""
+        """[sender: any] [spans-packets] File bytes in a 267-byte frame that spans packets: less framing per byte, for when the transfer observes little loss. It carries min(250, size - offset) bytes; trailing zero bytes may be truncated on the wire."""
         ctx.log(f"TT_FILE_DATA_WIDE from {msg.get_srcSystem()}/{msg.get_srcComponent()} not handled yet: {msg!r}")
 
     @handles(m.TtVrPose)

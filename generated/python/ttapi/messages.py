@@ -19794,28 +19794,25 @@ class TtFileStatus(Message):
 
 
 class TtFileData(Message):
-    """TT_FILE_DATA (id 50002): [sender: any] File bytes in a frame that fits one 100-byte packet. Trailing zero bytes of data may be truncated on the wire; count says how many bytes are real."""
+    """TT_FILE_DATA (id 50002): [sender: any] File bytes in a frame that fills one 100-byte packet exactly. It carries min(83, size - offset) bytes: the count follows from the offer's size, so trailing zero bytes may be truncated on the wire."""
 
-    __slots__ = ("count", "data", "offset", "transfer_id",)
+    __slots__ = ("data", "offset", "transfer_id",)
     MSG_ID: ClassVar[int] = 50002
     NAME: ClassVar[str] = "TT_FILE_DATA"
-    CRC_EXTRA: ClassVar[int] = 185
+    CRC_EXTRA: ClassVar[int] = 143
     PAYLOAD_LENGTH: ClassVar[int] = 88
     MIN_LENGTH: ClassVar[int] = 88
-    FIELDS: ClassVar[tuple[str, ...]] = ("transfer_id", "offset", "count", "data",)
+    FIELDS: ClassVar[tuple[str, ...]] = ("transfer_id", "offset", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
     _IDB: ClassVar[bytes] = b'R\xc3\x00'
-    _XB: ClassVar[bytes] = b'\xb9'
-    _S: ClassVar[struct.Struct] = struct.Struct("<IBB82s")
+    _XB: ClassVar[bytes] = b'\x8f'
+    _S: ClassVar[struct.Struct] = struct.Struct("<IB83s")
 
     transfer_id: int
     """Transfer id from the offer."""
 
     offset: int
     """Offset of data in the file. [bytes]"""
-
-    count: int
-    """Number of valid bytes in data. [bytes]"""
 
     data: bytes
     """File bytes."""
@@ -19824,12 +19821,10 @@ class TtFileData(Message):
         self,
         transfer_id: int = 0,
         offset: int = 0,
-        count: int = 0,
-        data: bytes = bytes(82),
+        data: bytes = bytes(83),
     ) -> None:
         self.transfer_id = transfer_id
         self.offset = offset
-        self.count = count
         self.data = data
 
     def pack_payload(self) -> bytes:
@@ -19837,8 +19832,7 @@ class TtFileData(Message):
             p = self._S.pack(
                 self.offset,
                 self.transfer_id,
-                self.count,
-                _cbytes(self.data, 82, "TT_FILE_DATA.data"),
+                _cbytes(self.data, 83, "TT_FILE_DATA.data"),
             )
         except struct.error as e:
             raise ValueError(f"TT_FILE_DATA: {e}") from None
@@ -19850,7 +19844,6 @@ class TtFileData(Message):
         (
             self.offset,
             self.transfer_id,
-            self.count,
             self.data,
         ) = cls._S.unpack_from(b, off)
         return self
@@ -20349,28 +20342,25 @@ class TtLog(Message):
 
 
 class TtFileDataWide(Message):
-    """TT_FILE_DATA_WIDE (id 50009): [sender: any] [spans-packets] File bytes in a frame that spans packets (up to 267 bytes): less framing per byte, for when the transfer observes little loss. Trailing zero bytes of data may be truncated on the wire; count says how many bytes are real."""
+    """TT_FILE_DATA_WIDE (id 50009): [sender: any] [spans-packets] File bytes in a 267-byte frame that spans packets: less framing per byte, for when the transfer observes little loss. It carries min(250, size - offset) bytes; trailing zero bytes may be truncated on the wire."""
 
-    __slots__ = ("count", "data", "offset", "transfer_id",)
+    __slots__ = ("data", "offset", "transfer_id",)
     MSG_ID: ClassVar[int] = 50009
     NAME: ClassVar[str] = "TT_FILE_DATA_WIDE"
-    CRC_EXTRA: ClassVar[int] = 118
+    CRC_EXTRA: ClassVar[int] = 221
     PAYLOAD_LENGTH: ClassVar[int] = 255
     MIN_LENGTH: ClassVar[int] = 255
-    FIELDS: ClassVar[tuple[str, ...]] = ("transfer_id", "offset", "count", "data",)
+    FIELDS: ClassVar[tuple[str, ...]] = ("transfer_id", "offset", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
     _IDB: ClassVar[bytes] = b'Y\xc3\x00'
-    _XB: ClassVar[bytes] = b'v'
-    _S: ClassVar[struct.Struct] = struct.Struct("<IBB249s")
+    _XB: ClassVar[bytes] = b'\xdd'
+    _S: ClassVar[struct.Struct] = struct.Struct("<IB250s")
 
     transfer_id: int
     """Transfer id from the offer."""
 
     offset: int
     """Offset of data in the file. [bytes]"""
-
-    count: int
-    """Number of valid bytes in data. [bytes]"""
 
     data: bytes
     """File bytes."""
@@ -20379,12 +20369,10 @@ class TtFileDataWide(Message):
         self,
         transfer_id: int = 0,
         offset: int = 0,
-        count: int = 0,
-        data: bytes = bytes(249),
+        data: bytes = bytes(250),
     ) -> None:
         self.transfer_id = transfer_id
         self.offset = offset
-        self.count = count
         self.data = data
 
     def pack_payload(self) -> bytes:
@@ -20392,8 +20380,7 @@ class TtFileDataWide(Message):
             p = self._S.pack(
                 self.offset,
                 self.transfer_id,
-                self.count,
-                _cbytes(self.data, 249, "TT_FILE_DATA_WIDE.data"),
+                _cbytes(self.data, 250, "TT_FILE_DATA_WIDE.data"),
             )
         except struct.error as e:
             raise ValueError(f"TT_FILE_DATA_WIDE: {e}") from None
@@ -20405,7 +20392,6 @@ class TtFileDataWide(Message):
         (
             self.offset,
             self.transfer_id,
-            self.count,
             self.data,
         ) = cls._S.unpack_from(b, off)
         return self

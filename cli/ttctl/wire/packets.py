@@ -1,0 +1,263 @@
+"""MAVLink frames in DTT packets (at most `mtu` bytes, 100 on DJI's link) and back.
+
+Packets carry raw MAVLink 2 bytes, no header of their own, so any MAVLink tool can read the
+stream. The packing rule (the generated C++ and Java packetizers follow it too):
+
+- a frame that fits in the space left in the current packet is appended;
+- else a frame of at most `mtu` bytes starts a new packet: it never straddles two packets;
+- else (a frame longer than a packet) it fills the current packet and continues in the next
+  ones, back to back.
+
+The receiver is packet-aware: every frame inside one packet is delivered as soon as that
+packet arrives, whatever happened to other packets; a frame spanning packets is assembled
+from the packets that continue it. A packet that starts with a plausible frame header is not a
+continuation, so a sender may slip a packet of urgent frames between the pieces of a long
+frame. A lost, corrupted, duplicated or reordered packet therefore costs only the frames that
+overlapped it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+from typing import Any
+
+from ttapi.mavlink import (
+    INCOMPAT_SIGNED,
+    MAGIC,
+    REGISTRY,
+    SIGNATURE_LENGTH,
+    DecodeError,
+    Message,
+    MessageInfo,
+    Signing,
+    decode,
+)
+
+DTT_MTU = 100
+
+
+class Packetizer:
+    """Cuts frames into packets by the rule above. `emit` receives each finished packet."""
+
+    def __init__(self, emit: Callable[[bytes], None], mtu: int = DTT_MTU) -> None:
+        if mtu < 13:
+            raise ValueError("an MTU below 13 bytes cannot carry a MAVLink 2 header")
+        self.mtu = mtu
+        self.emit = emit
+        self._cur = bytearray()
+
+    @property
+    def pending(self) -> int:
+        return len(self._cur)
+
+    def add(self, frame: bytes) -> None:
+        mtu, cur = self.mtu, self._cur
+        n = len(frame)
+        if n <= mtu - len(cur):
+            cur += frame
+        elif n <= mtu:
+            if cur:
+                self._ship()
+            self._cur += frame
+        else:
+            view = memoryview(frame)
+            space = mtu - len(cur)
+            self._cur += view[:space]
+            view = view[space:]
+            while True:
+                self._ship()
+                self._cur += view[:mtu]
+                view = view[mtu:]
+                if not view:
+                    break
+        if len(self._cur) == mtu:
+            self._ship()
+
+    def flush(self) -> None:
+        if self._cur:
+            self._ship()
+
+    def _ship(self) -> None:
+        self.emit(bytes(self._cur))
+        self._cur = bytearray()
+
+
+def packetize(frames: Iterable[bytes], mtu: int = DTT_MTU) -> list[bytes]:
+    out: list[bytes] = []
+    p = Packetizer(out.append, mtu)
+    for f in frames:
+        p.add(f)
+    p.flush()
+    return out
+
+
+class ReceiverStats:
+    __slots__ = ("bad_frames", "carries_dropped", "frames", "packets", "rescans")
+
+    def __init__(self) -> None:
+        self.packets = 0
+        self.frames = 0
+        self.bad_frames = 0  # complete frames that failed CRC, signature or decoding
+        self.carries_dropped = 0  # spanning frames whose continuation never came
+        self.rescans = 0  # packets taken for a continuation that were scanned on their own after all
+
+    def as_dict(self) -> dict[str, int]:
+        return {k: getattr(self, k) for k in self.__slots__}
+
+
+class PacketReceiver:
+    """Frames out of DTT packets; see the module documentation."""
+
+    def __init__(self, registry: dict[int, MessageInfo] | None = None, signing: Signing | None = None,
+                 on_bad: Callable[[bytes, str], None] | None = None) -> None:
+        self.registry = REGISTRY if registry is None else registry
+        self.signing = signing
+        self.on_bad = on_bad
+        self.stats = ReceiverStats()
+        self._carry = b""  # a frame begun in an earlier packet, with its continuation so far
+        self._origin = b""  # the part of the carry that came from its first packet
+        self._taken: list[bytes] = []  # packets appended to the carry, rescanned if it proves false
+
+    @property
+    def pending(self) -> int:
+        return len(self._carry)
+
+    def feed(self, packet: bytes) -> list[Message]:
+        """Messages completed by this packet."""
+        self.stats.packets += 1
+        out: list[Message] = []
+        if packet:  # DJI ignores 0-byte packets; so do we
+            self._feed(packet, out)
+        self.stats.frames += len(out)
+        return out
+
+    def flush(self) -> list[Message]:
+        """The link went quiet: give up on a frame still waiting for its continuation and
+        return what the packets taken for it hold on their own."""
+        out: list[Message] = []
+        if self._carry:
+            self._drop_carry(out)
+        self.stats.frames += len(out)
+        return out
+
+    def _feed(self, packet: bytes, out: list[Message]) -> None:
+        pos = 0
+        if self._carry:
+            buf = self._carry + packet
+            total = self._total(buf, 0)
+            complete = total is not None and len(buf) >= total
+            msg = self._try(buf[:total]) if complete and total is not None else None
+            if msg is not None:  # 1. the long frame's continuation
+                out.append(msg)
+                pos = len(packet) - (len(buf) - total) if total is not None else 0
+                self._carry, self._taken, self._origin = b"", [], b""
+            elif self._starts_with_frame(packet):  # 2. a packet of its own (maybe urgent frames)
+                pass
+            elif not complete and (total is not None or len(buf) < 10):  # 3. continues further
+                self._carry = buf
+                self._taken.append(packet)
+                return
+            else:  # 4. the long frame was not one
+                self.stats.bad_frames += 1
+                self._drop_carry(out, packet)
+                return
+        self._scan(packet, pos, out)
+
+    def _starts_with_frame(self, packet: bytes) -> bool:
+        total = self._total(packet, 0)
+        return total is not None and total <= len(packet) and self._try(packet[:total]) is not None
+
+    def _try(self, frame: bytes) -> Message | None:
+        try:
+            return decode(frame, self.registry, self.signing)
+        except DecodeError:
+            return None
+
+    def _drop_carry(self, out: list[Message], then: bytes | None = None) -> None:
+        """The frame being assembled was not one. Give the next candidate head inside its first
+        packet a chance, and replay the packets it had taken (and `then`) so that frames in
+        them, and a long frame starting in them, live."""
+        self.stats.carries_dropped += 1
+        origin = self._origin
+        replay = self._taken + ([then] if then is not None else [])
+        self._carry, self._taken, self._origin = b"", [], b""
+        k = self._next_head(origin, 1)
+        if k >= 0:
+            self._carry = self._origin = origin[k:]
+        for p in replay:
+            self.stats.rescans += 1
+            self._feed(p, out)
+
+    def _next_head(self, buf: bytes, start: int) -> int:
+        """Offset of the first plausible header at or after `start` whose frame runs past the
+        end of `buf`, or -1."""
+        n = len(buf)
+        j = buf.find(b"\xfd", start)
+        while j >= 0:
+            if n - j < 10:
+                return j
+            total = self._total(buf, j)
+            if total is not None and j + total > n:
+                return j
+            j = buf.find(b"\xfd", j + 1)
+        return -1
+
+    def _total(self, buf: bytes, i: int) -> int | None:
+        """Length of the frame whose plausible header starts at buf[i], else None."""
+        if len(buf) - i < 10 or buf[i] != MAGIC:
+            return None
+        incompat = buf[i + 2]
+        if incompat & ~INCOMPAT_SIGNED:
+            return None
+        info = self.registry.get(buf[i + 7] | buf[i + 8] << 8 | buf[i + 9] << 16)
+        plen = buf[i + 1]
+        if info is None or plen > info.length:
+            return None
+        return 12 + plen + (SIGNATURE_LENGTH if incompat else 0)
+
+    def _decode(self, frame: bytes) -> Message | None:
+        try:
+            return decode(frame, self.registry, self.signing)
+        except DecodeError as e:
+            self.stats.bad_frames += 1
+            if self.on_bad is not None:
+                self.on_bad(frame, str(e))
+            return None
+
+    def _scan(self, pkt: bytes, pos: int, out: list[Message]) -> None:
+        head = -1  # a frame that runs past the end of this packet
+        i = pos
+        n = len(pkt)
+        while True:
+            j = pkt.find(b"\xfd", i)
+            if j < 0:
+                break
+            if n - j < 10:
+                if head < 0:
+                    head = j
+                break
+            total = self._total(pkt, j)
+            if total is None:
+                i = j + 1
+                continue
+            if j + total <= n:
+                msg = self._decode(pkt[j:j + total])
+                if msg is not None:
+                    out.append(msg)
+                    head = -1  # a complete frame after it: that head was false
+                    i = j + total
+                else:
+                    i = j + 1
+                continue
+            if head < 0:
+                head = j
+            i = j + 1
+        if head >= 0:
+            if self._carry:
+                self._drop_carry(out)  # a newer long frame began: the old one is gone
+            self._carry = self._origin = pkt[head:]
+            self._taken = []
+
+
+def describe(msg: Any) -> str:
+    return f"{msg.NAME} from {msg.get_srcSystem()}/{msg.get_srcComponent()}"

@@ -1,0 +1,137 @@
+"""Property tests of the packet layer: packing by the rule, and no collateral loss — a lost,
+corrupted, duplicated or displaced packet costs only the frames that overlapped it."""
+
+from __future__ import annotations
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import ttapi
+from ttctl.wire.packets import PacketReceiver, packetize
+
+SETTINGS = settings(max_examples=300, deadline=None, suppress_health_check=list(HealthCheck))
+
+
+@st.composite
+def frame_lists(draw: st.DrawFn) -> list[bytes]:
+    enc = ttapi.Encoder(sysid=1, compid=240)
+    kinds = st.sampled_from(["heartbeat", "ack", "command", "narrow", "wide"])
+    frames = []
+    for kind in draw(st.lists(kinds, min_size=1, max_size=40)):
+        blob = draw(st.binary(min_size=250, max_size=250))
+        if kind == "heartbeat":
+            msg: ttapi.Message = ttapi.Heartbeat(type=2, custom_mode=draw(st.integers(0, 2**32 - 1)))
+        elif kind == "ack":
+            msg = ttapi.TtCommandAck(command_id=draw(st.integers(0, 65535)), result=2, progress=100)
+        elif kind == "command":
+            msg = ttapi.TtActionCommand(command_id=draw(st.integers(0, 65535)), action=1, argument="x" * 40)
+        elif kind == "narrow":
+            msg = ttapi.TtFileData(transfer_id=1, offset=draw(st.integers(0, 2**32 - 1)), data=blob[:83])
+        else:
+            msg = ttapi.TtFileDataWide(transfer_id=1, offset=draw(st.integers(0, 2**32 - 1)), data=blob)
+        frames.append(enc.encode(msg))
+    return frames
+
+
+def layout(frames: list[bytes], mtu: int = 100) -> tuple[list[bytes], list[set[int]]]:
+    """Packets, and for each frame the packets its bytes are in. Packets are contiguous
+    slices of the frame stream, so overlap follows from byte offsets."""
+    packets = packetize(frames, mtu)
+    starts, pos = [], 0
+    for p in packets:
+        starts.append((pos, pos + len(p)))
+        pos += len(p)
+    spans, pos = [], 0
+    for f in frames:
+        a, b = pos, pos + len(f)
+        spans.append({i for i, (s, e) in enumerate(starts) if s < b and a < e})
+        pos = b
+    return packets, spans
+
+
+def receive(packets: list[bytes]) -> list[bytes]:
+    rx = PacketReceiver()
+    got = [m for p in packets for m in rx.feed(p)] + rx.flush()
+    return [m.pack(m.get_seq(), m.get_srcSystem(), m.get_srcComponent()) for m in got]
+
+
+def check(frames: list[bytes], spans: list[set[int]], faulty: set[int], got: list[bytes]) -> None:
+    assert set(got) <= set(frames), "a frame that was never sent came out"
+    for f, s in zip(frames, spans, strict=True):
+        if not s & faulty:
+            assert f in got, "a frame that did not touch a faulty packet was lost"
+
+
+@SETTINGS
+@given(frame_lists(), st.sampled_from([40, 64, 100, 255]))
+def test_packing_rule(frames: list[bytes], mtu: int) -> None:
+    packets = packetize(frames, mtu)
+    assert all(0 < len(p) <= mtu for p in packets)
+    assert b"".join(packets) == b"".join(frames)
+    # a frame that fits a packet never straddles two
+    _, spans = layout(frames, mtu)
+    for f, s in zip(frames, spans, strict=True):
+        if len(f) <= mtu:
+            assert len(s) == 1
+
+
+@SETTINGS
+@given(frame_lists())
+def test_clean_link_delivers_everything_in_order(frames: list[bytes]) -> None:
+    packets, _ = layout(frames)
+    assert receive(packets) == frames
+
+
+@SETTINGS
+@given(frame_lists(), st.sets(st.integers(0, 200)))
+def test_lost_packets(frames: list[bytes], lost: set[int]) -> None:
+    packets, spans = layout(frames)
+    lost = {i % len(packets) for i in lost}
+    check(frames, spans, lost, receive([p for i, p in enumerate(packets) if i not in lost]))
+
+
+@SETTINGS
+@given(frame_lists(), st.integers(0, 10_000), st.integers(0, 200), st.integers(1, 255))
+def test_corrupted_packet(frames: list[bytes], which: int, pos: int, flip: int) -> None:
+    packets, spans = layout(frames)
+    which %= len(packets)
+    bad = bytearray(packets[which])
+    bad[pos % len(bad)] ^= flip
+    packets[which] = bytes(bad)
+    check(frames, spans, {which}, receive(packets))
+
+
+@SETTINGS
+@given(frame_lists(), st.integers(0, 10_000))
+def test_duplicated_packet(frames: list[bytes], which: int) -> None:
+    packets, spans = layout(frames)
+    which %= len(packets)
+    got = receive(packets[: which + 1] + packets[which:])
+    check(frames, spans, {which}, got)
+
+
+@SETTINGS
+@given(frame_lists(), st.integers(0, 10_000))
+def test_adjacent_packets_swapped(frames: list[bytes], which: int) -> None:
+    packets, spans = layout(frames)
+    if len(packets) < 2:
+        return
+    i = which % (len(packets) - 1)
+    packets[i], packets[i + 1] = packets[i + 1], packets[i]
+    check(frames, spans, {i, i + 1}, receive(packets))
+
+
+@SETTINGS
+@given(frame_lists(), st.integers(0, 10_000))
+def test_urgent_packet_between_pieces_of_a_long_frame(frames: list[bytes], where: int) -> None:
+    """The sender may slip a self-contained packet of urgent frames into a long frame."""
+    packets, _ = layout(frames)
+    urgent = ttapi.Encoder(sysid=9, compid=9).encode(ttapi.TtCommandAck(command_id=4242, result=0))
+    i = where % (len(packets) + 1)
+    got = receive(packets[:i] + [urgent] + packets[i:])
+    assert sorted(got) == sorted(frames + [urgent])
+
+
+def test_zero_byte_packets_are_ignored() -> None:
+    rx = PacketReceiver()
+    assert rx.feed(b"") == [] and rx.stats.packets == 1
