@@ -22,6 +22,7 @@ from .names import (
     IDENTIFIER_RE,
     JAVA_RESERVED_TYPES,
     LANGUAGE_KEYWORDS,
+    RUNTIME_TYPE_NAMES,
     camel,
     keyword_hits,
     lower_camel,
@@ -129,6 +130,10 @@ def _identifier(loc: Loc, kind: str, name: str, rep: Reporter, fold_case: bool) 
     why = reserved_identifier(name)
     if why:
         rep.error(loc, "RESERVED-NAME", f"{kind} name '{name}': {why}", name)
+        return False
+    if fold_case and camel(name) in RUNTIME_TYPE_NAMES:
+        rep.error(loc, "RESERVED-NAME",
+                  f"{kind} name '{name}' becomes {camel(name)}, a type the generated runtime defines", name)
         return False
     if fold_case and camel(name) in JAVA_RESERVED_TYPES:
         rep.error(loc, "RESERVED-NAME",

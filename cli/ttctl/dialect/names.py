@@ -65,6 +65,13 @@ LANGUAGE_KEYWORDS: dict[str, frozenset[str]] = {
     "Java": JAVA_KEYWORDS,
 }
 
+# Types the generated runtimes define next to the message and enum types (Python package,
+# C++ namespace): a message or enum whose CamelCase name is one of these would clash.
+RUNTIME_TYPE_NAMES = _words(
+    """Message MessageInfo Parser ParserStats Encoder Signing DecodeError BasicPacketizer DecodeStatus
+    Dispatcher Frame IsBitmask Packetizer Plugin"""
+)
+
 # Members every generated message class/struct defines; a field of the same name would
 # shadow them. Kept in one place so the templates and the validator agree.
 GENERATED_MESSAGE_MEMBERS = _words(

@@ -1,0 +1,187 @@
+"""C++: header-only C++17 bindings per dialect (runtime, enums, messages, an umbrella header),
+a conformance program, and an onboard handler-plugin skeleton.
+
+Layout under the output root:
+  cpp/<ident>/runtime.hpp     CRC, little-endian helpers, framing, Parser, Dispatcher, Packetizer
+  cpp/<ident>/enums.hpp       one `enum class` per enum
+  cpp/<ident>/messages.hpp    one struct per message
+  cpp/<ident>/<ident>.hpp     umbrella header
+  cpp/conformance.cpp         the D/E line-protocol program of the conformance tests
+  cpp/onboard/<ident>_plugin.hpp   skeleton: handler stubs for what the onboard end receives
+"""
+
+from __future__ import annotations
+
+import textwrap
+from typing import Any
+
+from ..dialect.model import Dialect, Enum, Field, Message
+from ..dialect.names import C_RESERVED, CPP_KEYWORDS, RUNTIME_TYPE_NAMES, camel
+from .engine import Output, dialect_ident
+
+name = "cpp"
+
+_CPP_TYPES = {
+    "float": "float",
+    "double": "double",
+    "char": "char",
+    "int8_t": "std::int8_t",
+    "uint8_t": "std::uint8_t",
+    "int16_t": "std::int16_t",
+    "uint16_t": "std::uint16_t",
+    "int32_t": "std::int32_t",
+    "uint32_t": "std::uint32_t",
+    "int64_t": "std::int64_t",
+    "uint64_t": "std::uint64_t",
+}
+
+# Types and namespaces the runtime defines beside the messages and enums of a dialect.
+RUNTIME_TYPES = RUNTIME_TYPE_NAMES  # the validator refuses these; checked here again for user templates
+_SUB_HEADERS = ("runtime", "enums", "messages")
+
+
+def namespace(d: Dialect) -> str:
+    """The C++ namespace of a dialect: its identifier, unless that is a keyword or a name
+    the standard library or the runtime already uses."""
+    ident = dialect_ident(d)
+    if ident in CPP_KEYWORDS or ident in C_RESERVED or ident in ("std", "detail", "onboard"):
+        return f"{ident}_mav"
+    return ident
+
+
+def umbrella(d: Dialect) -> str:
+    """Path (relative to cpp/) of the header that includes everything of the dialect."""
+    ident = dialect_ident(d)
+    stem = f"{ident}_all" if ident in _SUB_HEADERS else ident
+    return f"{ident}/{stem}.hpp"
+
+
+def guard(d: Dialect, part: str) -> str:
+    return f"TTCTL_{dialect_ident(d).upper()}_{part.upper()}_HPP"
+
+
+def cpp_type(f: Field) -> str:
+    base = _CPP_TYPES[f.type]
+    return f"std::array<{base}, {f.array_length}>" if f.array_length else base
+
+
+def initializer(f: Field, d: Dialect) -> str:
+    """Brace initializer of a field: zero, except mavlink_version (the dialect's version)."""
+    return f"{{{d.version}}}" if f.mavlink_version else "{}"
+
+
+def enum_base(e: Enum) -> str:
+    """The smallest unsigned type that holds every value of the enum."""
+    top = max((x.value for x in e.entries), default=0)
+    for bits in (8, 16, 32):
+        if top < 1 << bits:
+            return f"std::uint{bits}_t"
+    return "std::uint64_t"
+
+
+def enum_value(e: Enum, value: int) -> str:
+    if e.bitmask and value > 9:
+        return f"0x{value:X}"
+    return str(value)
+
+
+def _clean(text: str) -> str:
+    return " ".join((text or "").split())
+
+
+def comment(text: str, indent: int = 0, width: int = 100, prefix: str = "/// ") -> str:
+    """`text` as //-comment lines (wrapped; no line ends in a backslash, which would splice
+    the next source line into the comment)."""
+    lead = " " * indent + prefix
+    lines = textwrap.wrap(_clean(text) or "(no description)", max(40, width - len(lead)),
+                          break_long_words=False, break_on_hyphens=False)
+    out = []
+    for line in lines:
+        line = line.rstrip()
+        while line.endswith("\\"):
+            line = line[:-1].rstrip()
+        out.append((lead + line).rstrip())
+    return "\n".join(out)
+
+
+def field_comment(f: Field, indent: int = 4) -> str:
+    extra = []
+    if f.units:
+        extra.append(f"[{f.units}]")
+    if f.enum:
+        extra.append(f"(enum {camel(f.enum)})")
+    if f.extension:
+        extra.append("(extension)")
+    return comment(" ".join([f.description or f.name, *extra]), indent)
+
+
+def local(m: Message, name: str) -> str:
+    """A parameter or local variable name for code inside message `m`'s struct that no field of
+    it shadows (-Wshadow): `name`, or `name_` if a field is called that."""
+    fields = {f.name for f in m.fields}
+    while name in fields:
+        name += "_"
+    return name
+
+
+def handler_name(m: Message) -> str:
+    return f"on_{m.name.lower()}"
+
+
+def field_kind(f: Field) -> str:
+    """How the conformance program presents a field: text (char), float, int; arrays are
+    lists of those (except char arrays, which are text)."""
+    if f.type == "char":
+        return "text"
+    return "float" if f.is_float else "int"
+
+
+def check_names(d: Dialect) -> None:
+    """Refuse dialects whose type names would collide with the runtime's (the validator does
+    not know about them)."""
+    names = [m.name for m in d.messages] + [e.name for e in d.enums]
+    clash = sorted({camel(n) for n in names} & RUNTIME_TYPES)
+    if clash:
+        import jinja2
+
+        raise jinja2.TemplateRuntimeError(
+            f"C++: {', '.join(clash)} would collide with the C++ runtime type(s) of the same name; rename the "
+            "message or enum")
+
+
+class _Cpp:
+    name = "cpp"
+
+    def outputs(self, d: Dialect) -> list[Output]:
+        ident = dialect_ident(d)
+        return [
+            Output(f"cpp/{ident}/runtime.hpp", "cpp/runtime.hpp.j2"),
+            Output(f"cpp/{ident}/enums.hpp", "cpp/enums.hpp.j2"),
+            Output(f"cpp/{ident}/messages.hpp", "cpp/messages.hpp.j2"),
+            Output(f"cpp/{umbrella(d)}", "cpp/umbrella.hpp.j2"),
+            Output("cpp/conformance.cpp", "cpp/conformance.cpp.j2"),
+            Output(f"cpp/onboard/{ident}_plugin.hpp", "cpp/plugin.hpp.j2", skeleton=True),
+        ]
+
+    def owned_dirs(self, d: Dialect) -> list[str]:
+        return [f"cpp/{dialect_ident(d)}"]
+
+    def globals(self, d: Dialect) -> dict[str, Any]:
+        check_names(d)
+        return {
+            "ns": namespace(d),
+            "umbrella": umbrella(d),
+            "guard": lambda part: guard(d, part),
+            "cpp_type": cpp_type,
+            "initializer": lambda f: initializer(f, d),
+            "enum_base": enum_base,
+            "enum_value": enum_value,
+            "comment": comment,
+            "field_comment": field_comment,
+            "handler_name": handler_name,
+            "local": local,
+            "field_kind": field_kind,
+        }
+
+
+LANG = _Cpp()
