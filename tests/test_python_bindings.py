@@ -122,8 +122,14 @@ def test_a_lost_chunk_costs_only_the_frames_it_overlapped(stream: tuple[list[byt
     end = start + len(chunks[lost])
     parser = ttapi.Parser()
     got = [m for i, c in enumerate(chunks) if i != lost for m in parser.feed(c)] + parser.flush()
-    expected = [f for f, (a, b) in zip(frames, frame_spans(frames), strict=True) if b <= start or a >= end]
-    assert [m.pack(m.get_seq(), m.get_srcSystem(), m.get_srcComponent()) for m in got] == expected
+    untouched = [f for f, (a, b) in zip(frames, frame_spans(frames), strict=True) if b <= start or a >= end]
+    delivered = [m.pack(m.get_seq(), m.get_srcSystem(), m.get_srcComponent()) for m in got]
+    # every frame the loss did not touch arrives, in order; nothing but sent frames comes out (a
+    # touched frame may still arrive: if the loss took only its magic byte, a surviving 0xFD
+    # of an earlier frame completes it exactly)
+    it = iter(delivered)
+    assert all(any(d == f for d in it) for f in untouched)
+    assert set(delivered) <= set(frames)
 
 
 @SETTINGS

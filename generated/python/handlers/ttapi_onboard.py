@@ -24,7 +24,7 @@ class TtapiOnboard(Plugin):
 
     @handles(m.TtFileStatus)
     def on_tt_file_status(self, msg: m.TtFileStatus, ctx: Context) -> None:
-        """[sender: any] The receiver's view of a transfer: sent on accepting or refusing an offer, periodically while data flows, and on completion. Bytes below received_contiguous have all arrived; in [received_contiguous, received_end) everything arrived except the listed missing ranges."""
+        """[sender: any] The receiver's view of a transfer: sent on accepting or refusing an offer, while data flows (regularly, when new gaps appear, and when data stops coming), and on completion. Bytes below received_contiguous have all arrived; in [region_start, received_end) everything arrived except the listed missing ranges. When there are more gaps than fit, several statuses describe successive regions."""
         ctx.log(f"TT_FILE_STATUS from {msg.get_srcSystem()}/{msg.get_srcComponent()} not handled yet: {msg!r}")
 
     @handles(m.TtFileData)

@@ -19690,19 +19690,19 @@ class TtFileOffer(Message):
 
 
 class TtFileStatus(Message):
-    """TT_FILE_STATUS (id 50001): [sender: any] The receiver's view of a transfer: sent on accepting or refusing an offer, periodically while data flows, and on completion. Bytes below received_contiguous have all arrived; in [received_contiguous, received_end) everything arrived except the listed missing ranges."""
+    """TT_FILE_STATUS (id 50001): [sender: any] The receiver's view of a transfer: sent on accepting or refusing an offer, while data flows (regularly, when new gaps appear, and when data stops coming), and on completion. Bytes below received_contiguous have all arrived; in [region_start, received_end) everything arrived except the listed missing ranges. When there are more gaps than fit, several statuses describe successive regions."""
 
-    __slots__ = ("frames_received", "missing_end", "missing_start", "range_count", "received_contiguous", "received_end", "result", "target_component", "target_system", "transfer_id",)
+    __slots__ = ("hold_ms", "last_offset", "missing_end", "missing_start", "range_count", "received_contiguous", "received_end", "region_start", "result", "target_component", "target_system", "transfer_id",)
     MSG_ID: ClassVar[int] = 50001
     NAME: ClassVar[str] = "TT_FILE_STATUS"
-    CRC_EXTRA: ClassVar[int] = 33
-    PAYLOAD_LENGTH: ClassVar[int] = 81
-    MIN_LENGTH: ClassVar[int] = 81
-    FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "transfer_id", "result", "received_contiguous", "received_end", "frames_received", "range_count", "missing_start", "missing_end",)
+    CRC_EXTRA: ClassVar[int] = 68
+    PAYLOAD_LENGTH: ClassVar[int] = 87
+    MIN_LENGTH: ClassVar[int] = 87
+    FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "transfer_id", "result", "received_contiguous", "region_start", "received_end", "last_offset", "hold_ms", "range_count", "missing_start", "missing_end",)
     ENUMS: ClassVar[dict[str, str]] = {"result": "TT_FILE_RESULT"}
     _IDB: ClassVar[bytes] = b'Q\xc3\x00'
-    _XB: ClassVar[bytes] = b'!'
-    _S: ClassVar[struct.Struct] = struct.Struct("<IIIIIIIIIIIIIIIIIIIBBBBB")
+    _XB: ClassVar[bytes] = b'D'
+    _S: ClassVar[struct.Struct] = struct.Struct("<IIIIIIIIIIIIIIIIIIIIHBBBBB")
 
     target_system: int
     """File sender's system id."""
@@ -19719,11 +19719,17 @@ class TtFileStatus(Message):
     received_contiguous: int
     """All bytes before this offset have arrived. [bytes]"""
 
-    received_end: int
-    """End of the range this status describes. [bytes]"""
+    region_start: int
+    """Start of the region this status describes (received_contiguous in the first status of a burst). [bytes]"""
 
-    frames_received: int
-    """Data frames received for this transfer so far, duplicates included (lets the sender measure loss)."""
+    received_end: int
+    """End of the region this status describes. [bytes]"""
+
+    last_offset: int
+    """Offset of the latest data frame received (with hold_ms, lets the sender measure the round-trip time). [bytes]"""
+
+    hold_ms: int
+    """Time between the arrival of that frame and this status, at most 65535. [ms]"""
 
     range_count: int
     """Number of valid entries in missing_start and missing_end."""
@@ -19741,8 +19747,10 @@ class TtFileStatus(Message):
         transfer_id: int = 0,
         result: int = 0,
         received_contiguous: int = 0,
+        region_start: int = 0,
         received_end: int = 0,
-        frames_received: int = 0,
+        last_offset: int = 0,
+        hold_ms: int = 0,
         range_count: int = 0,
         missing_start: Sequence[int] = (0, 0, 0, 0, 0, 0, 0, 0,),
         missing_end: Sequence[int] = (0, 0, 0, 0, 0, 0, 0, 0,),
@@ -19752,8 +19760,10 @@ class TtFileStatus(Message):
         self.transfer_id = transfer_id
         self.result = result
         self.received_contiguous = received_contiguous
+        self.region_start = region_start
         self.received_end = received_end
-        self.frames_received = frames_received
+        self.last_offset = last_offset
+        self.hold_ms = hold_ms
         self.range_count = range_count
         self.missing_start = missing_start
         self.missing_end = missing_end
@@ -19762,10 +19772,12 @@ class TtFileStatus(Message):
         try:
             p = self._S.pack(
                 self.received_contiguous,
+                self.region_start,
                 self.received_end,
-                self.frames_received,
+                self.last_offset,
                 *_array(self.missing_start, 8, "TT_FILE_STATUS.missing_start"),
                 *_array(self.missing_end, 8, "TT_FILE_STATUS.missing_end"),
+                self.hold_ms,
                 self.target_system,
                 self.target_component,
                 self.transfer_id,
@@ -19781,15 +19793,17 @@ class TtFileStatus(Message):
         self: TtFileStatus = _new(cls)
         t = cls._S.unpack_from(b, off)
         self.received_contiguous = t[0]
-        self.received_end = t[1]
-        self.frames_received = t[2]
-        self.missing_start = t[3:11]
-        self.missing_end = t[11:19]
-        self.target_system = t[19]
-        self.target_component = t[20]
-        self.transfer_id = t[21]
-        self.result = t[22]
-        self.range_count = t[23]
+        self.region_start = t[1]
+        self.received_end = t[2]
+        self.last_offset = t[3]
+        self.missing_start = t[4:12]
+        self.missing_end = t[12:20]
+        self.hold_ms = t[20]
+        self.target_system = t[21]
+        self.target_component = t[22]
+        self.transfer_id = t[23]
+        self.result = t[24]
+        self.range_count = t[25]
         return self
 
 

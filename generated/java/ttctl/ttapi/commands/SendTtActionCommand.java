@@ -1,0 +1,77 @@
+// A skeleton written by ttctl gen from ttapi.xml: yours to edit; `ttctl gen` does not
+// overwrite it (unless --force-skeletons).
+package ttctl.ttapi.commands;
+
+import ttctl.ttapi.msg.TtActionCommand;
+import ttctl.ttapi.msg.TtCommandAck;
+import ttctl.ttapi.runtime.CommandContext;
+import ttctl.ttapi.runtime.MavlinkMessage;
+import ttctl.ttapi.runtime.MessageMatcher;
+import ttctl.ttapi.runtime.SendCommand;
+
+/**
+ * Sends TT_ACTION_COMMAND: [sender: tablet] Ask the onboard computer to perform an action. Answered
+ * by TT_COMMAND_ACK with the same command_id; a retry repeats command_id, so the action runs once.
+ * <p>
+ * Waits for TT_COMMAND_ACK with the same command_id addressed to us (target_system 0 or our system
+ * id); retries with backoff when it does not come (see {@link SendCommand}).
+ * <p>
+ * The message is packed anew on every try from the values given to the constructor.
+ */
+public class SendTtActionCommand extends SendCommand {
+    /** Receiver system id. (uint8_t) */
+    public final int target_system;
+    /** Receiver component id. (uint8_t) */
+    public final int target_component;
+    /** Sender-chosen id, repeated on retries. (uint16_t) */
+    public final int command_id;
+    /** What to do. (uint8_t; enum {@link ttctl.ttapi.enums.TtAction}) */
+    public final int action;
+    /** Sender's clock (UNIX epoch) when the command was issued. [us] (uint64_t) */
+    public final long time_usec;
+    /** Action parameters, see TT_ACTION. (float[4]) */
+    public final float[] param;
+    /** Action argument, e.g. the mission file of FLY_TRAJECTORY. (char[48]) */
+    public final byte[] argument;
+
+    public SendTtActionCommand(int target_system, int target_component, int command_id, int action, long time_usec, float[] param, byte[] argument) {
+        super(DEFAULT_PRIORITY, 3, 500, 2.0);
+        this.target_system = target_system;
+        this.target_component = target_component;
+        this.command_id = command_id;
+        this.action = action;
+        this.time_usec = time_usec;
+        this.param = param;
+        this.argument = argument;
+    }
+
+    @Override
+    protected MavlinkMessage createMessage(CommandContext ctx, int attempt) {
+        TtActionCommand msg = new TtActionCommand();
+        msg.target_system = this.target_system;
+        msg.target_component = this.target_component;
+        msg.command_id = this.command_id;
+        msg.action = this.action;
+        msg.time_usec = this.time_usec;
+        msg.param = this.param;
+        msg.argument = this.argument;
+        return msg;
+    }
+
+    @Override
+    protected MessageMatcher expectedReply(final CommandContext ctx) {
+        return MessageMatcher.of(TtCommandAck.MSG_ID, TtCommandAck.class,
+            reply -> reply.command_id == this.command_id
+                && (reply.target_system == 0 || reply.target_system == ctx.sysId()));
+    }
+
+    @Override
+    protected void onSuccess(MavlinkMessage reply) {
+        // TODO: what to do once TT_ACTION_COMMAND is acknowledged
+    }
+
+    @Override
+    protected void onFailure(Throwable error) {
+        // TODO: what to do when TT_ACTION_COMMAND fails (error is usually a CommandException)
+    }
+}
