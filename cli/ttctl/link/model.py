@@ -1,0 +1,235 @@
+"""A model of one direction of the DTT link, in terms of packets and seconds.
+
+The model is a single-server queue: the SDK's send buffer (a few packets; a packet arriving
+to a full buffer is dropped silently), drained by the radio at the profile's rate with DJI's
+pacing, then loss (random or Gilbert-Elliott bursts), corruption, duplication, reordering and
+outages, then a fixed latency. Everything is computed from the packet's submission time, so
+the same object serves the virtual clock (tests, benchmarks) and the real-time relay.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import random
+import tomllib
+from dataclasses import dataclass, field
+from importlib import resources
+from typing import Any
+
+DIRECTIONS = ("up", "down")
+LOSS_MODELS = ("random", "burst")
+
+
+class ProfileError(ValueError):
+    pass
+
+
+def _interp(points: list[list[float]], x: float) -> float:
+    pts = sorted((float(a), float(b)) for a, b in points)
+    if x <= pts[0][0]:
+        return pts[0][1]
+    for (x0, y0), (x1, y1) in itertools.pairwise(pts):
+        if x <= x1:
+            return y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+    return pts[-1][1]
+
+
+@dataclass(frozen=True)
+class DirectionProfile:
+    rate_Bps: list[list[float]]
+    loss: list[list[float]]
+    latency_s: float = 0.04
+    queue_packets: int = 2
+    pacing_bytes: int = 0
+    pacing_interval_s: float = 0.0
+    advertised_Bps: float | None = None
+    feedback: bool = False
+
+    def rate_at(self, distance_m: float) -> float:
+        return _interp(self.rate_Bps, distance_m)
+
+    def loss_at(self, distance_m: float) -> float:
+        return min(1.0, max(0.0, _interp(self.loss, distance_m)))
+
+    def service_time(self, size: int, distance_m: float) -> float:
+        t = size / self.rate_at(distance_m)
+        if self.pacing_bytes and self.pacing_interval_s:
+            t = max(t, math.ceil(size / self.pacing_bytes) * self.pacing_interval_s)
+        return t
+
+
+@dataclass(frozen=True)
+class Profile:
+    name: str
+    description: str
+    mtu: int
+    up: DirectionProfile
+    down: DirectionProfile
+
+    def direction(self, d: str) -> DirectionProfile:
+        if d not in DIRECTIONS:
+            raise ProfileError(f"direction must be 'up' or 'down', not {d!r}")
+        return self.up if d == "up" else self.down
+
+    def capacity_Bps(self, direction: str, distance_m: float) -> float:
+        """What the model delivers with back-to-back full packets, before loss."""
+        return self.mtu / self.direction(direction).service_time(self.mtu, distance_m)
+
+
+def _load_table() -> dict[str, Any]:
+    text = resources.files("ttctl.link").joinpath("profiles.toml").read_text(encoding="utf-8")
+    return tomllib.loads(text)
+
+
+def profile_names() -> list[str]:
+    return sorted(_load_table())
+
+
+def load_profile(name: str, path: str | None = None) -> Profile:
+    """A profile by name, from ttctl's profiles.toml or from `path` (a TOML file of the same
+    shape)."""
+    if path is not None:
+        try:
+            with open(path, "rb") as fh:
+                table = tomllib.load(fh)
+        except OSError as e:
+            raise ProfileError(f"{path}: {e.strerror or e}") from None
+        except tomllib.TOMLDecodeError as e:
+            raise ProfileError(f"{path}: {e}") from None
+    else:
+        table = _load_table()
+    if name not in table:
+        raise ProfileError(f"unknown link profile {name!r} (known: {', '.join(sorted(table))})")
+    raw = table[name]
+    try:
+        dirs = {d: DirectionProfile(**raw[d]) for d in DIRECTIONS}
+        return Profile(name, raw.get("description", ""), int(raw.get("mtu", 100)), dirs["up"], dirs["down"])
+    except (KeyError, TypeError) as e:
+        raise ProfileError(f"profile {name!r} is malformed: {e}") from None
+
+
+@dataclass
+class Impairments:
+    """What to do to packets besides the profile's own loss. `loss` overrides the profile's
+    distance-dependent loss when given."""
+
+    loss: float | None = None
+    loss_model: str = "random"  # random | burst (Gilbert-Elliott)
+    burst_mean: float = 3.0  # mean length of a loss burst, in packets
+    corrupt: float = 0.0  # probability that a delivered packet has bytes flipped
+    duplicate: float = 0.0  # probability that a delivered packet arrives twice
+    reorder: float = 0.0  # probability that a packet is held back behind later ones
+    outages: list[tuple[float, float]] = field(default_factory=list)  # (start, duration) in seconds
+
+    def check(self) -> None:
+        for name in ("corrupt", "duplicate", "reorder"):
+            v = getattr(self, name)
+            if not 0.0 <= v <= 1.0:
+                raise ProfileError(f"{name} must be a probability in 0..1, not {v}")
+        if self.loss is not None and not 0.0 <= self.loss < 1.0:
+            raise ProfileError(f"loss must be in 0..1 (exclusive of 1), not {self.loss}")
+        if self.loss_model not in LOSS_MODELS:
+            raise ProfileError(f"loss model must be one of {', '.join(LOSS_MODELS)}, not {self.loss_model!r}")
+        if self.burst_mean < 1.0:
+            raise ProfileError("mean burst length must be at least 1 packet")
+
+
+class ChannelStats:
+    __slots__ = ("bytes_delivered", "corrupted", "delivered", "duplicated", "lost", "overflow", "refused",
+                 "reordered", "submitted")
+
+    def __init__(self) -> None:
+        for k in self.__slots__:
+            setattr(self, k, 0)
+
+    def as_dict(self) -> dict[str, int]:
+        return {k: getattr(self, k) for k in self.__slots__}
+
+
+class Channel:
+    """One direction of the link. submit() takes a packet at time t and returns when (and
+    what) arrives at the far end: a list of (arrival time, packet), empty if it was lost."""
+
+    def __init__(self, profile: Profile, direction: str, distance_m: float = 10.0,
+                 impairments: Impairments | None = None, seed: int = 0) -> None:
+        self.profile = profile
+        self.direction = direction
+        self.dir = profile.direction(direction)
+        self.distance_m = distance_m
+        self.imp = impairments or Impairments()
+        self.imp.check()
+        self.rng = random.Random(seed)
+        self.stats = ChannelStats()
+        self._busy_until = 0.0
+        self._starts: list[float] = []  # service start times of packets waiting in the buffer
+        self._bad = False  # Gilbert-Elliott state
+        self.loss_p = self.imp.loss if self.imp.loss is not None else self.dir.loss_at(distance_m)
+
+    @property
+    def mtu(self) -> int:
+        return self.profile.mtu
+
+    def capacity_Bps(self) -> float:
+        return self.profile.capacity_Bps(self.direction, self.distance_m)
+
+    def service_time(self, size: int) -> float:
+        return self.dir.service_time(size, self.distance_m)
+
+    def free_at(self) -> float:
+        """When the radio finishes what it has been given (what a per-packet completion
+        callback would report)."""
+        return self._busy_until
+
+    def _lost(self) -> bool:
+        p = self.loss_p
+        if p <= 0.0:
+            return False
+        if self.imp.loss_model == "burst":
+            to_good = 1.0 / self.imp.burst_mean
+            to_bad = p * to_good / (1.0 - p)
+            self._bad = (self.rng.random() >= to_good) if self._bad else (self.rng.random() < to_bad)
+            return self._bad
+        return self.rng.random() < p
+
+    def _in_outage(self, t: float) -> bool:
+        return any(start <= t < start + length for start, length in self.imp.outages)
+
+    def submit(self, t: float, packet: bytes) -> list[tuple[float, bytes]]:
+        st = self.stats
+        st.submitted += 1
+        if not packet:
+            return []  # 0-byte packets are ignored
+        if len(packet) > self.profile.mtu:
+            st.refused += 1
+            return []
+        self._starts = [s for s in self._starts if s > t]
+        if len(self._starts) >= self.dir.queue_packets:
+            st.overflow += 1  # the SDK buffer is full: silently dropped
+            return []
+        start = max(t, self._busy_until)
+        if start > t:
+            self._starts.append(start)
+        end = start + self.service_time(len(packet))
+        self._busy_until = end
+        if self._lost() or self._in_outage(end):
+            st.lost += 1
+            return []
+        arrive = end + self.dir.latency_s
+        if self.imp.reorder and self.rng.random() < self.imp.reorder:
+            st.reordered += 1
+            arrive += self.rng.uniform(1.0, 3.0) * self.service_time(self.profile.mtu)
+        data = packet
+        if self.imp.corrupt and self.rng.random() < self.imp.corrupt:
+            st.corrupted += 1
+            buf = bytearray(packet)
+            for _ in range(self.rng.randint(1, 3)):
+                buf[self.rng.randrange(len(buf))] ^= self.rng.randint(1, 255)
+            data = bytes(buf)
+        out = [(arrive, data)]
+        if self.imp.duplicate and self.rng.random() < self.imp.duplicate:
+            st.duplicated += 1
+            out.append((arrive + 0.001, data))
+        st.delivered += len(out)
+        st.bytes_delivered += len(data) * len(out)
+        return out

@@ -1,0 +1,1 @@
+"""Sans-IO protocol cores: file transfer, commands, packet scheduling, the endpoint."""

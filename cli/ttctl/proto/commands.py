@@ -1,0 +1,156 @@
+"""Commands with acknowledgement, sans-IO.
+
+The client sends a TT_ACTION_COMMAND carrying a command id, at control priority (never behind
+bulk data), and waits for the TT_COMMAND_ACK with the same id. It repeats the command with
+backoff; after the last try it gives up and calls on_failure. Every command ends: on_success or
+on_failure is called exactly once.
+
+The server executes a (peer, command id) once: a retry gets the recorded ack again without
+running the action twice.
+"""
+
+from __future__ import annotations
+
+from collections import OrderedDict
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import ttapi
+from ttapi import TtResult
+
+FINAL_OK = {TtResult.TT_RESULT_ACCEPTED, TtResult.TT_RESULT_IN_PROGRESS, TtResult.TT_RESULT_DONE}
+
+
+@dataclass
+class Command:
+    msg: ttapi.TtActionCommand
+    target: tuple[int, int]
+    retries: int = 3
+    timeout: float = 1.5  # first wait for the ack; doubles per retry
+    on_success: Callable[[Command], None] | None = None
+    on_failure: Callable[[Command], None] | None = None
+    # filled in
+    sent_at: list[float] = field(default_factory=list)
+    acked_at: float | None = None
+    ack: ttapi.TtCommandAck | None = None
+    error: str | None = None
+    _due: float = 0.0
+    _wait: float = 0.0
+
+    @property
+    def id(self) -> int:
+        return int(self.msg.command_id)
+
+    @property
+    def done(self) -> bool:
+        return self.acked_at is not None or self.error is not None
+
+    @property
+    def ok(self) -> bool:
+        return self.ack is not None and self.ack.result in FINAL_OK
+
+    @property
+    def latency(self) -> float | None:
+        return None if self.acked_at is None or not self.sent_at else self.acked_at - self.sent_at[0]
+
+
+class CommandClient:
+    def __init__(self, sysid: int, compid: int) -> None:
+        self.sysid = sysid
+        self.compid = compid
+        self.pending: dict[int, Command] = {}
+        self._next_id = 1
+
+    def submit(self, cmd: Command, now: float) -> Command:
+        if cmd.msg.command_id == 0:
+            cmd.msg.command_id = self._next_id
+            self._next_id = self._next_id % 65535 + 1
+        if cmd.msg.command_id in self.pending:
+            raise ValueError(f"command id {cmd.msg.command_id} is already pending")
+        cmd.msg.target_system, cmd.msg.target_component = cmd.target
+        cmd._due = now
+        cmd._wait = cmd.timeout
+        self.pending[cmd.id] = cmd
+        return cmd
+
+    def control(self, now: float) -> list[ttapi.Message]:
+        out: list[ttapi.Message] = []
+        for cmd in list(self.pending.values()):
+            if now < cmd._due:
+                continue
+            if len(cmd.sent_at) > cmd.retries:
+                self._fail(cmd, f"no ack after {len(cmd.sent_at)} tries")
+                continue
+            cmd.sent_at.append(now)
+            cmd._due = now + cmd._wait
+            cmd._wait *= 2
+            out.append(cmd.msg)
+        return out
+
+    def on_ack(self, now: float, ack: ttapi.TtCommandAck) -> Command | None:
+        if (ack.target_system, ack.target_component) not in ((self.sysid, self.compid), (self.sysid, 0), (0, 0)):
+            return None
+        cmd = self.pending.get(ack.command_id)
+        if cmd is None or ((ack.get_srcSystem(), ack.get_srcComponent()) != cmd.target and cmd.target[1] != 0):
+            return None
+        del self.pending[cmd.id]
+        cmd.ack = ack
+        cmd.acked_at = now
+        if cmd.ok:
+            if cmd.on_success:
+                cmd.on_success(cmd)
+        else:
+            cmd.error = f"refused: {TtResult(ack.result).name.removeprefix('TT_RESULT_')}" if ack.result in iter(
+                TtResult) else f"refused: result {ack.result}"
+            if cmd.on_failure:
+                cmd.on_failure(cmd)
+        return cmd
+
+    def _fail(self, cmd: Command, why: str) -> None:
+        self.pending.pop(cmd.id, None)
+        cmd.error = why
+        if cmd.on_failure:
+            cmd.on_failure(cmd)
+
+    def cancel_all(self, why: str) -> None:
+        for cmd in list(self.pending.values()):
+            self._fail(cmd, why)
+
+    def deadline(self) -> float | None:
+        return min((c._due for c in self.pending.values()), default=None)
+
+
+Action = Callable[[ttapi.TtActionCommand], int]
+"""Runs an action; returns a TtResult value."""
+
+
+class CommandServer:
+    def __init__(self, sysid: int, compid: int, action: Action | None = None, memory: int = 512) -> None:
+        self.sysid = sysid
+        self.compid = compid
+        self.action = action or (lambda msg: int(TtResult.TT_RESULT_ACCEPTED))
+        self.memory = memory
+        self.done: OrderedDict[tuple[int, int, int], ttapi.TtCommandAck] = OrderedDict()
+        self.executed = 0
+        self.duplicates = 0
+
+    def on_command(self, msg: ttapi.TtActionCommand) -> ttapi.TtCommandAck | None:
+        if msg.target_system not in (self.sysid, 0) or msg.target_component not in (self.compid, 0):
+            return None
+        key = (msg.get_srcSystem(), msg.get_srcComponent(), msg.command_id)
+        ack = self.done.get(key)
+        if ack is not None:
+            self.duplicates += 1
+            self.done.move_to_end(key)
+            return ack
+        try:
+            result = int(self.action(msg))
+        except Exception:
+            result = int(TtResult.TT_RESULT_FAILED)
+        self.executed += 1
+        ack = ttapi.TtCommandAck(target_system=key[0], target_component=key[1], command_id=msg.command_id,
+                                 action=msg.action, result=result, progress=100 if result != 1 else 0)
+        self.done[key] = ack
+        if len(self.done) > self.memory:
+            self.done.popitem(last=False)
+        return ack

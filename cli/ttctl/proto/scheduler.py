@@ -1,0 +1,162 @@
+"""Which bytes go into the next DTT packet, and when: priorities at packet granularity.
+
+A packet is built only when the pacer allows one to leave, from what is waiting at that
+moment: control frames (commands, acks, file-transfer control) first, then telemetry, then
+bulk data pulled from the active transfers (round-robin). A frame longer than a packet
+continues in the next packets; if control frames are waiting meanwhile, they go first in a
+packet of their own (the receiver keeps the long frame's pieces apart from it). Nothing sits
+in a FIFO behind a file, so a command sent during a bulk transfer waits at most for the
+packet on the air.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Callable
+
+CONTROL, TELEMETRY, BULK = 0, 1, 2
+PRIORITY_NAMES = {CONTROL: "control", TELEMETRY: "telemetry", BULK: "bulk"}
+
+BulkPull = Callable[[float, int], bytes | None]
+"""A bulk source: given (now, bytes free in the packet being built, possibly 0) returns the next
+frame, or None if it has nothing to send now."""
+
+
+class Pacer:
+    """Lets packets leave at `rate` bytes per second on average: a packet of n bytes
+    occupies n / rate seconds of the link. rate None means unpaced."""
+
+    def __init__(self, rate_Bps: float | None) -> None:
+        self.rate = rate_Bps
+        self.next_free = 0.0
+
+    def ready_at(self) -> float:
+        return self.next_free if self.rate else 0.0
+
+    def ready(self, now: float) -> bool:
+        return self.rate is None or now >= self.next_free - 1e-9
+
+    def sent(self, now: float, nbytes: int) -> None:
+        if self.rate:
+            self.next_free = max(now, self.next_free) + nbytes / self.rate
+
+
+class Scheduler:
+    def __init__(self, mtu: int = 100, rate_Bps: float | None = None, telemetry_limit: int = 32) -> None:
+        self.mtu = mtu
+        self.pacer = Pacer(rate_Bps)
+        self.control: deque[bytes] = deque()
+        self._keys: dict[object, int] = {}  # coalescing key -> id of the queued control frame
+        self.telemetry: deque[bytes] = deque()
+        self.telemetry_limit = telemetry_limit
+        self.sources: list[BulkPull] = []
+        self._rr = 0
+        self._spill = b""  # the rest of a frame longer than a packet
+        self._held: bytes | None = None  # a bulk frame pulled but not yet placed
+        self.packets = 0
+        self.bytes = 0
+        self.dropped_telemetry = 0
+
+    # -- what to send ------------------------------------------------------------------------
+    def send(self, frame: bytes, priority: int = CONTROL, key: object = None) -> None:
+        """Queue a frame. A control frame with a `key` replaces a queued, unsent frame with
+        the same key (a newer status makes an older one worthless)."""
+        if priority == CONTROL:
+            if key is not None:
+                old = self._keys.get(key)
+                for i, queued in enumerate(self.control):
+                    if id(queued) == old:
+                        self.control[i] = frame
+                        self._keys[key] = id(frame)
+                        return
+                self._keys[key] = id(frame)
+            self.control.append(frame)
+        elif priority == TELEMETRY:
+            if len(self.telemetry) >= self.telemetry_limit:
+                self.telemetry.popleft()  # stale telemetry goes first; control is never dropped
+                self.dropped_telemetry += 1
+            self.telemetry.append(frame)
+        else:
+            raise ValueError("bulk data is pulled from a source, not sent")
+
+    def add_source(self, pull: BulkPull) -> None:
+        self.sources.append(pull)
+
+    def remove_source(self, pull: BulkPull) -> None:
+        if pull in self.sources:
+            self.sources.remove(pull)
+
+    @property
+    def busy(self) -> bool:
+        """Anything queued (sources may still have data on demand)."""
+        return bool(self.control or self.telemetry or self._spill or self._held)
+
+    # -- building packets --------------------------------------------------------------------
+    def ready_at(self) -> float:
+        return self.pacer.ready_at()
+
+    def next_packet(self, now: float) -> bytes | None:
+        if not self.pacer.ready(now):
+            return None
+        pkt = self._build(now)
+        if pkt:
+            self.pacer.sent(now, len(pkt))
+            self.packets += 1
+            self.bytes += len(pkt)
+            return pkt
+        return None
+
+    def _build(self, now: float) -> bytes:
+        mtu = self.mtu
+        pkt = bytearray()
+        if self._spill and self.control and len(self.control[0]) <= mtu:
+            while self.control and len(self.control[0]) <= mtu - len(pkt):  # urgent, in a packet of its own
+                pkt += self.control.popleft()
+            return bytes(pkt)
+        if self._spill:
+            pkt += self._spill[:mtu]
+            self._spill = self._spill[mtu:]
+            if self._spill or len(pkt) == mtu:
+                return bytes(pkt)
+        while len(pkt) < mtu:
+            space = mtu - len(pkt)
+            got = self._next_frame(now, space)
+            if got is None:
+                break
+            frame, kind = got
+            if len(frame) <= space:
+                pkt += frame
+            elif len(frame) > mtu:
+                pkt += frame[:space]
+                self._spill = frame[space:]
+                break
+            else:  # does not fit what is left: back to the head of its queue, for the next packet
+                if kind == CONTROL:
+                    self.control.appendleft(frame)
+                elif kind == TELEMETRY:
+                    self.telemetry.appendleft(frame)
+                else:
+                    self._held = frame
+                break
+        return bytes(pkt)
+
+    def _next_frame(self, now: float, space: int) -> tuple[bytes, int] | None:
+        if self.control:
+            return self.control.popleft(), CONTROL
+        if self.telemetry:
+            return self.telemetry.popleft(), TELEMETRY
+        if self._held is not None:
+            frame, self._held = self._held, None
+            return frame, BULK
+        n = len(self.sources)
+        for k in range(n):
+            i = (self._rr + k) % n
+            frame = self.sources[i](now, space)
+            if frame is not None:
+                self._rr = (i + 1) % n
+                return frame, BULK
+        return None
+
+    def wants_to_send(self, now: float) -> bool:
+        """Something is queued or a source may produce (callers use ready_at for timing)."""
+        return self.busy or bool(self.sources)
