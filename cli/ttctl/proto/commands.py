@@ -30,6 +30,7 @@ class Command:
     on_success: Callable[[Command], None] | None = None
     on_failure: Callable[[Command], None] | None = None
     # filled in
+    submitted_at: float = 0.0
     sent_at: list[float] = field(default_factory=list)
     acked_at: float | None = None
     ack: ttapi.TtCommandAck | None = None
@@ -51,7 +52,8 @@ class Command:
 
     @property
     def latency(self) -> float | None:
-        return None if self.acked_at is None or not self.sent_at else self.acked_at - self.sent_at[0]
+        """From the moment the command was issued to its ack."""
+        return None if self.acked_at is None else self.acked_at - self.submitted_at
 
 
 class CommandClient:
@@ -68,6 +70,7 @@ class CommandClient:
         if cmd.msg.command_id in self.pending:
             raise ValueError(f"command id {cmd.msg.command_id} is already pending")
         cmd.msg.target_system, cmd.msg.target_component = cmd.target
+        cmd.submitted_at = now
         cmd._due = now
         cmd._wait = cmd.timeout
         self.pending[cmd.id] = cmd

@@ -200,7 +200,7 @@ class FileSender:
         """Offers due now (the first, retries, or a poll when the receiver has gone quiet)."""
         if self.done:
             return []
-        if now - self.last_heard > self.cfg.give_up_after:
+        if now - self.last_heard >= self.cfg.give_up_after:
             self._finish(now, False, "TIMEOUT",
                          f"no answer from {self.target[0]}/{self.target[1]} for {self.cfg.give_up_after:.0f} s "
                          "(what arrived is kept there: send again to resume)")

@@ -1,0 +1,285 @@
+"""The sans-IO protocol cores in virtual time, over the link model: file transfer (both ways,
+loss, jail, quotas, resume, concurrency, disk full, downloads) and commands (retries without
+double execution, failure after retries)."""
+
+from __future__ import annotations
+
+import os
+import random
+import shutil
+import subprocess
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+import ttapi
+from ttctl.link.model import Channel, Impairments, load_profile
+from ttctl.link.sim import Simulation
+from ttctl.proto.endpoint import Endpoint
+from ttctl.proto.storage import BytesSource, Quota, ReceiveDir, check_name
+from ttctl.proto.transfer import TransferConfig
+
+TABLET, ONBOARD = (255, 190), (1, 240)
+
+
+def data(n: int, seed: int = 1) -> bytes:
+    return random.Random(seed).randbytes(n)
+
+
+class World:
+    """A tablet and an onboard end over m100 (or lan) channels, with event logs."""
+
+    def __init__(self, tmp: Path, loss: float = 0.0, model: str = "random", profile: str = "m100", seed: int = 1,
+                 tablet_dir: Path | None = None, onboard_dir: Path | None = None, quota: Quota | None = None,
+                 config: TransferConfig | None = None, serve: Path | None = None, action: Any = None) -> None:
+        prof = load_profile(profile)
+        imp = {"loss": loss, "loss_model": model}
+        self.up = Channel(prof, "up", 10, Impairments(**imp), seed=seed)
+        self.down = Channel(prof, "down", 10, Impairments(**imp), seed=seed + 100)
+        self.events: list[tuple[str, Any]] = []
+        cfg = config or TransferConfig()
+
+        def log(what: str, obj: Any) -> None:
+            self.events.append((what, obj))
+
+        self.tablet = Endpoint(*TABLET, rate_Bps=self.up.capacity_Bps(), config=cfg, on_event=log,
+                               receive_dir=ReceiveDir(tablet_dir, quota) if tablet_dir else None)
+        self.onboard = Endpoint(*ONBOARD, rate_Bps=self.down.capacity_Bps(), config=cfg, on_event=log,
+                                receive_dir=ReceiveDir(onboard_dir, quota) if onboard_dir else None,
+                                serve_dir=str(serve) if serve else None, action=action)
+        self.sim = Simulation(self.tablet, self.onboard, self.up, self.down)
+
+    def run(self, until: float, stop: Any = None) -> float:
+        t = self.sim.run(until, stop)
+        self.tablet.now = self.onboard.now = t
+        return t
+
+    def event(self, what: str) -> list[Any]:
+        return [o for w, o in self.events if w == what]
+
+
+@pytest.mark.parametrize(("direction", "loss", "model"), [("up", 0.1, "random"), ("down", 0.3, "burst")])
+def test_file_arrives_intact_both_ways_under_loss(tmp_path: Path, direction: str, loss: float, model: str) -> None:
+    payload = data(12_000)
+    w = World(tmp_path, loss, model, onboard_dir=tmp_path / "on" if direction == "up" else None,
+              tablet_dir=tmp_path / "tab" if direction == "down" else None)
+    sender, target, where = ((w.tablet, ONBOARD, tmp_path / "on") if direction == "up"
+                             else (w.onboard, TABLET, tmp_path / "tab"))
+    s = sender.send_file("m.yaml", target, source=BytesSource(payload, "m.yaml"))
+    w.run(600, stop=lambda: s.done)
+    assert s.result is not None and s.result.ok, s.result
+    assert (where / "m.yaml").read_bytes() == payload
+    assert not any((where / ".ttctl-partial").glob("*.part"))
+    assert s.stats.bytes_retransmitted > 0  # the loss was real
+
+
+@pytest.mark.parametrize("name", ["../escape", "/etc/passwd", "a/../../x", "bad\x01name", "x" * 201, "sub//x", "."])
+def test_names_outside_the_jail_are_refused_with_a_reason(tmp_path: Path, name: str) -> None:
+    w = World(tmp_path, onboard_dir=tmp_path / "on")
+    s = w.tablet.send_file("x", ONBOARD, name=name, source=BytesSource(b"evil", "x"))
+    w.run(60, stop=lambda: s.done)
+    assert s.result is not None and not s.result.ok and s.result.code == "REFUSED_NAME"
+    assert not any(p.is_file() for p in (tmp_path / "on").rglob("*") if ".ttctl-partial" not in p.parts)
+    refused = w.event("file-refused")
+    assert refused and refused[0].reason
+
+
+def test_check_name_accepts_plain_relative_paths() -> None:
+    assert check_name("missions/day1/route.yaml") == "missions/day1/route.yaml"
+    assert check_name("ünïcode.txt") == "ünïcode.txt"
+
+
+def test_no_silent_overwrite(tmp_path: Path) -> None:
+    on = tmp_path / "on"
+    on.mkdir()
+    (on / "m.yaml").write_bytes(b"original")
+    w = World(tmp_path, onboard_dir=on)
+    s = w.tablet.send_file("m.yaml", ONBOARD, source=BytesSource(b"new contents", "m.yaml"))
+    w.run(60, stop=lambda: s.done)
+    assert s.result is not None and s.result.code == "REFUSED_EXISTS"
+    assert (on / "m.yaml").read_bytes() == b"original"
+    # a directory that allows overwriting, and a sender that asks
+    w2 = World(tmp_path, onboard_dir=on, quota=Quota(overwrite=True))
+    s2 = w2.tablet.send_file("m.yaml", ONBOARD, overwrite=True, source=BytesSource(b"new contents", "m.yaml"))
+    w2.run(60, stop=lambda: s2.done)
+    assert s2.result is not None and s2.result.ok
+    assert (on / "m.yaml").read_bytes() == b"new contents"
+
+
+def test_quotas(tmp_path: Path) -> None:
+    w = World(tmp_path, onboard_dir=tmp_path / "on", quota=Quota(max_file_bytes=1000, max_dir_bytes=1500))
+    big = w.tablet.send_file("big", ONBOARD, source=BytesSource(data(1001), "big"))
+    w.run(60, stop=lambda: big.done)
+    assert big.result is not None and big.result.code == "REFUSED_QUOTA"
+    first = w.tablet.send_file("a", ONBOARD, source=BytesSource(data(900), "a"))
+    w.run(120, stop=lambda: first.done)
+    second = w.tablet.send_file("b", ONBOARD, source=BytesSource(data(900, 2), "b"))
+    w.run(240, stop=lambda: second.done)
+    assert first.result and first.result.ok
+    assert second.result is not None and second.result.code == "REFUSED_QUOTA"
+
+
+def test_partial_file_is_never_visible_under_its_name(tmp_path: Path) -> None:
+    on = tmp_path / "on"
+    payload = data(6000)
+    w = World(tmp_path, onboard_dir=on)
+    s = w.tablet.send_file("m.bin", ONBOARD, source=BytesSource(payload, "m.bin"))
+    t = 0.0
+    looked = 0
+    while not s.done:
+        t += 0.5
+        w.run(t, stop=lambda: s.done)
+        final = on / "m.bin"
+        if final.exists():  # whenever the name exists, it holds the whole verified file
+            assert final.read_bytes() == payload
+        else:
+            looked += 1
+    assert looked > 5 and (on / "m.bin").read_bytes() == payload
+
+
+def test_resume_after_both_ends_restart(tmp_path: Path) -> None:
+    on = tmp_path / "on"
+    payload = data(20_000)
+    w = World(tmp_path, onboard_dir=on)
+    s = w.tablet.send_file("big.bin", ONBOARD, source=BytesSource(payload, "big.bin"))
+    w.run(25)  # about half of it at 500 B/s
+    assert not s.done and s.acked_bytes > 5000
+    w.tablet.close()
+    w.onboard.close()  # both ends go away; the partial state stays on disk
+    assert not (on / "big.bin").exists() and list((on / ".ttctl-partial").glob("*.json"))
+    w2 = World(tmp_path, onboard_dir=on, seed=2)
+    s2 = w2.tablet.send_file("big.bin", ONBOARD, source=BytesSource(payload, "big.bin"))
+    w2.run(600, stop=lambda: s2.done)
+    assert s2.result is not None and s2.result.ok
+    assert (on / "big.bin").read_bytes() == payload
+    assert s2.stats.bytes_sent < len(payload) * 0.8  # resumed: only the rest (plus the first RTT) was sent
+
+
+def test_several_transfers_at_once(tmp_path: Path) -> None:
+    w = World(tmp_path, loss=0.05, onboard_dir=tmp_path / "on", tablet_dir=tmp_path / "tab")
+    files = {f"f{i}.bin": data(3000 + 500 * i, i) for i in range(3)}
+    senders = [w.tablet.send_file(n, ONBOARD, source=BytesSource(b, n)) for n, b in files.items()]
+    down = w.onboard.send_file("result.csv", TABLET, source=BytesSource(data(4000, 9), "result.csv"))
+    w.run(600, stop=lambda: all(s.done for s in [*senders, down]))
+    assert all(s.result and s.result.ok for s in [*senders, down])
+    for n, b in files.items():
+        assert (tmp_path / "on" / n).read_bytes() == b
+    assert (tmp_path / "tab" / "result.csv").read_bytes() == data(4000, 9)
+
+
+def test_peer_that_never_answers_fails_cleanly(tmp_path: Path) -> None:
+    w = World(tmp_path, config=TransferConfig(give_up_after=10.0))  # the onboard end has no receive dir
+    s = w.tablet.send_file("x", ONBOARD, source=BytesSource(b"hello", "x"))
+    w.run(60, stop=lambda: s.done)
+    assert s.result is not None and s.result.code == "TIMEOUT" and "no answer" in s.result.message
+
+
+def test_source_changing_under_the_sender_fails_the_checksum(tmp_path: Path) -> None:
+    class Fickle(BytesSource):
+        def read(self, offset: int, length: int) -> bytes:
+            chunk = super().read(offset, length)
+            return bytes(b ^ 1 for b in chunk) if offset == 0 else chunk
+
+    on = tmp_path / "on"
+    w = World(tmp_path, onboard_dir=on)
+    s = w.tablet.send_file("x.bin", ONBOARD, source=Fickle(data(2000), "x.bin"))
+    w.run(120, stop=lambda: s.done)
+    assert s.result is not None and s.result.code == "FAILED_CHECKSUM"
+    assert not (on / "x.bin").exists() and not list((on / ".ttctl-partial").glob("*.part"))
+
+
+def test_download_on_request_and_not_found(tmp_path: Path) -> None:
+    serve = tmp_path / "results"
+    serve.mkdir()
+    (serve / "log.csv").write_bytes(data(5000, 4))
+    w = World(tmp_path, tablet_dir=tmp_path / "tab", serve=serve)
+    req = w.tablet.request_file("log.csv", ONBOARD)
+    w.run(120, stop=lambda: bool(w.event("file-complete")))
+    assert (tmp_path / "tab" / "log.csv").read_bytes() == data(5000, 4)
+    assert req.answered and req.error is None
+    missing = w.tablet.request_file("nope.csv", ONBOARD)
+    outside = w.tablet.request_file("../../etc/passwd", ONBOARD)
+    w.run(w.sim.now + 30, stop=lambda: missing.error is not None and outside.error is not None)
+    assert missing.error == "no such file there"
+    assert outside.error == "the peer does not serve that file"
+
+
+def test_garbage_and_foreign_traffic_are_ignored(tmp_path: Path) -> None:
+    on = tmp_path / "on"
+    w = World(tmp_path, onboard_dir=on)
+    rng = random.Random(3)
+    for _ in range(200):
+        w.onboard.receive(0.0, rng.randbytes(rng.randint(0, 100)))
+    other = ttapi.Encoder(9, 9).encode(ttapi.TtActionCommand(target_system=77, command_id=5, action=1))
+    w.onboard.receive(0.0, other)
+    assert w.onboard.server is not None and w.onboard.server.executed == 0 and w.onboard.ignored >= 1
+    s = w.tablet.send_file("ok.bin", ONBOARD, source=BytesSource(b"still works", "ok.bin"))
+    w.run(60, stop=lambda: s.done)
+    assert s.result is not None and s.result.ok
+
+
+def test_commands_retry_without_running_twice(tmp_path: Path) -> None:
+    ran: list[int] = []
+
+    def action(msg: ttapi.TtActionCommand) -> int:
+        ran.append(msg.command_id)
+        return int(ttapi.TtResult.TT_RESULT_ACCEPTED)
+
+    w = World(tmp_path, loss=0.4, action=action)
+    done: list[Any] = []
+    cmds = [w.tablet.command(ttapi.TtActionCommand(action=int(ttapi.TtAction.TT_ACTION_HOVER)), ONBOARD, retries=8,
+                             timeout=1.0, on_success=done.append, on_failure=done.append) for _ in range(20)]
+    w.run(600, stop=lambda: all(c.done for c in cmds))
+    assert len(done) == 20  # every command ended, exactly once
+    assert sorted(ran) == sorted(set(ran))  # no command ran twice
+    assert w.onboard.server is not None and w.onboard.server.duplicates > 0  # retries did arrive
+    assert sum(c.ok for c in cmds) >= 18
+
+
+def test_commands_fail_after_retries_and_on_refusal(tmp_path: Path) -> None:
+    w = World(tmp_path, action=lambda msg: int(ttapi.TtResult.TT_RESULT_DENIED))
+    failed: list[Any] = []
+    denied = w.tablet.command(ttapi.TtActionCommand(action=0), ONBOARD, on_failure=failed.append)
+    lost = w.tablet.command(ttapi.TtActionCommand(action=0), (42, 1), retries=2, timeout=0.5,
+                            on_failure=failed.append)
+    w.run(60, stop=lambda: denied.done and lost.done)
+    assert denied.error == "refused: DENIED"
+    assert lost.error is not None and "no ack after 3 tries" in lost.error
+    assert len(failed) == 2
+
+
+def test_a_command_is_not_queued_behind_a_file(tmp_path: Path) -> None:
+    w = World(tmp_path, onboard_dir=tmp_path / "on")
+    w.tablet.send_file("bulk.bin", ONBOARD, source=BytesSource(data(40_000), "bulk.bin"))
+    w.run(30)
+    cmd = w.tablet.command(ttapi.TtActionCommand(action=int(ttapi.TtAction.TT_ACTION_LAND)), ONBOARD)
+    w.run(60, stop=lambda: cmd.done)
+    assert cmd.ok and cmd.latency is not None
+    # at most the packet on the air (0.2 s at 500 B/s) plus the command's own round trip
+    assert cmd.latency < 0.2 + 0.3
+
+
+def _tmpfs(path: Path, size: str) -> bool:
+    if os.geteuid() != 0 or shutil.which("mount") is None:
+        return False
+    path.mkdir(parents=True, exist_ok=True)
+    return subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", str(path)],
+                          capture_output=True).returncode == 0
+
+
+def test_full_disk_stops_cleanly_and_resumes(tmp_path: Path) -> None:
+    disk = tmp_path / "small"
+    if not _tmpfs(disk, "64k"):
+        pytest.skip("cannot mount a small tmpfs here (needs root)")
+    try:
+        payload = data(120_000)
+        w = World(tmp_path, onboard_dir=disk, profile="lan")
+        s = w.tablet.send_file("huge.bin", ONBOARD, source=BytesSource(payload, "huge.bin"))
+        w.run(120, stop=lambda: s.done)
+        assert s.result is not None and s.result.code == "FAILED_DISK_FULL"
+        assert not (disk / "huge.bin").exists()
+        state = list((disk / ".ttctl-partial").glob("*.json"))
+        assert state, "the partial state is kept for a resume"
+    finally:
+        subprocess.run(["umount", str(disk)], capture_output=True)
