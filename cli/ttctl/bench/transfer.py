@@ -64,9 +64,9 @@ def default_cases() -> list[Case]:
 
 
 def channels(profile: Profile, distance: float, case: Case, seed: int) -> tuple[Channel, Channel]:
-    imp = {"loss": case.loss, "loss_model": case.loss_model}
-    up = Channel(profile, "up", distance, Impairments(**imp), seed=seed * 2 + 1)
-    down = Channel(profile, "down", distance, Impairments(**imp), seed=seed * 2 + 2)
+    up = Channel(profile, "up", distance, Impairments(loss=case.loss, loss_model=case.loss_model), seed=seed * 2 + 1)
+    down = Channel(profile, "down", distance, Impairments(loss=case.loss, loss_model=case.loss_model),
+                   seed=seed * 2 + 2)
     return up, down
 
 

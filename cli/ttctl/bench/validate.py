@@ -7,7 +7,7 @@ import os
 import tempfile
 
 from ..dialect.source import pymavlink_dialects_dir
-from .procs import console_script, machine, median, time_interleaved
+from .procs import Command, console_script, machine, median, time_interleaved
 
 FLOOR = 0.75  # issue: at most 0.75x mavgen's time
 
@@ -23,7 +23,7 @@ def run(dialect: str | None, runs: int, as_json: bool) -> None:
     if not os.path.isfile(dialect):
         raise Fail(f"{dialect}: no such file")
     with tempfile.TemporaryDirectory(prefix="ttctl-bench-") as tmp:
-        cmds = {
+        cmds: dict[str, Command] = {
             "ttctl validate": console_script("ttctl", "ttctl") + ["validate", dialect],
             "mavgen Python3": console_script("mavgen.py", "pymavlink.tools.mavgen")
             + ["--lang", "Python3", "--wire-protocol", "2.0", "-o", os.path.join(tmp, "out"), dialect],

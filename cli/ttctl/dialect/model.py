@@ -9,7 +9,7 @@ from __future__ import annotations
 import re
 from typing import Any, Literal, NamedTuple
 
-from .diagnostics import Loc
+from .diagnostics import Loc, SourceText
 
 # type -> (size in bytes, struct format character)
 BASE_TYPES: dict[str, tuple[int, str]] = {
@@ -91,7 +91,8 @@ class Field:
         self.extension = extension
         self.mavlink_version = mavlink_version  # declared as uint8_t_mavlink_version
         self.wire_offset = 0
-        self._src, self._line = (loc.source, loc.line) if loc is not None else (None, 0)
+        self._src: SourceText | None = loc.source if loc is not None else None
+        self._line = loc.line if loc is not None else 0
         self._el = element
         self._details: dict[str, Any] | None = details if element is None else None
 
@@ -107,7 +108,8 @@ class Field:
 
     @property
     def loc(self) -> Loc:
-        return Loc(self._src, self._line, "field", "name")
+        src = self._src if self._src is not None else SourceText("<built>", None)
+        return Loc(src, self._line, "field", "name")
 
     def _detail(self, key: str) -> Any:
         if self._details is None:
@@ -264,17 +266,28 @@ def crc_extra(name: str, wire_fields: list[Field]) -> int:
     return (crc & 0xFF) ^ (crc >> 8)
 
 
-class EnumParam(NamedTuple):
-    index: int
-    description: str = ""
-    label: str | None = None
-    units: str | None = None
-    enum: str | None = None
-    reserved: bool = False
-    default: str | None = None
-    min_value: str | None = None
-    max_value: str | None = None
-    increment: str | None = None
+class EnumParam:
+    """A <param> of an enum entry (MAV_CMD's command parameters)."""
+
+    __slots__ = ("default", "description", "enum", "increment", "index", "label", "max_value", "min_value",
+                 "reserved", "units")
+
+    def __init__(self, index: int, description: str = "", label: str | None = None, units: str | None = None,
+                 enum: str | None = None, reserved: bool = False, default: str | None = None,
+                 min_value: str | None = None, max_value: str | None = None, increment: str | None = None) -> None:
+        self.index = index
+        self.description = description
+        self.label = label
+        self.units = units
+        self.enum = enum
+        self.reserved = reserved
+        self.default = default
+        self.min_value = min_value
+        self.max_value = max_value
+        self.increment = increment
+
+    def __repr__(self) -> str:
+        return f"EnumParam({self.index}, {self.label!r})"
 
 
 class EnumEntry:

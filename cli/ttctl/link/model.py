@@ -140,8 +140,15 @@ class ChannelStats:
                  "reordered", "submitted")
 
     def __init__(self) -> None:
-        for k in self.__slots__:
-            setattr(self, k, 0)
+        self.submitted = 0  # packets handed to the radio
+        self.refused = 0  # larger than the MTU
+        self.overflow = 0  # the SDK buffer was full: dropped silently
+        self.lost = 0
+        self.reordered = 0
+        self.corrupted = 0
+        self.duplicated = 0
+        self.delivered = 0  # copies delivered (duplicates count twice)
+        self.bytes_delivered = 0
 
     def as_dict(self) -> dict[str, int]:
         return {k: getattr(self, k) for k in self.__slots__}

@@ -103,8 +103,10 @@ class CommandClient:
             if cmd.on_success:
                 cmd.on_success(cmd)
         else:
-            cmd.error = f"refused: {TtResult(ack.result).name.removeprefix('TT_RESULT_')}" if ack.result in iter(
-                TtResult) else f"refused: result {ack.result}"
+            try:
+                cmd.error = f"refused: {TtResult(ack.result).name.removeprefix('TT_RESULT_')}"
+            except ValueError:
+                cmd.error = f"refused: result {ack.result}"
             if cmd.on_failure:
                 cmd.on_failure(cmd)
         return cmd

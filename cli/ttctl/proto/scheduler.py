@@ -151,10 +151,10 @@ class Scheduler:
         n = len(self.sources)
         for k in range(n):
             i = (self._rr + k) % n
-            frame = self.sources[i](now, space)
-            if frame is not None:
+            pulled = self.sources[i](now, space)
+            if pulled is not None:
                 self._rr = (i + 1) % n
-                return frame, BULK
+                return pulled, BULK
         return None
 
     def wants_to_send(self, now: float) -> bool:

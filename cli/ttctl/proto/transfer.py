@@ -157,7 +157,7 @@ class FileSender:
         self.rtt = 0.5
         self._rtt_sampled = False
         self.mode = "narrow" if self.cfg.frame_mode in ("auto", "narrow") else "wide"
-        self.loss = {"narrow": None, "wide": None}  # per-packet loss estimates
+        self.loss: dict[str, float | None] = {"narrow": None, "wide": None}  # per-packet loss estimates
         self._unclassified: list[tuple[int, int, float, str]] = []  # first sends not yet known lost or not
         self._outcomes: dict[str, list[bool]] = {"narrow": [], "wide": []}  # recent first sends: lost?
         self._probe_due: float | None = None
@@ -188,7 +188,7 @@ class FileSender:
 
     # -- offers -------------------------------------------------------------------------------
     def offer_messages(self) -> list[ttapi.Message]:
-        parts = []
+        parts: list[ttapi.Message] = []
         for off in range(0, len(self.meta), META_PART):
             parts.append(ttapi.TtFileOffer(
                 target_system=self.target[0], target_component=self.target[1], transfer_id=self.id,
