@@ -157,7 +157,15 @@ class WriteReport:
 
 
 def _atomic_write(path: Path, text: str) -> None:
+    """Replace a file all at once (a reader never sees it half-written); a new file is
+    created in place, which needs no temporary."""
     path.parent.mkdir(parents=True, exist_ok=True)
+    try:
+        with open(path, "x", encoding="utf-8", newline="\n") as fh:
+            fh.write(text)
+        return
+    except FileExistsError:
+        pass
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
         with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
@@ -182,10 +190,13 @@ def write_tree(root: Path, rendered: list[tuple[Output, str]], owned: list[str],
                force_skeletons: bool) -> WriteReport:
     rep = WriteReport()
     produced = set()
+    existing: set[str] = set()
+    for dirpath, _, files in os.walk(root):  # one listing instead of a failed open per new file
+        existing.update(os.path.join(dirpath, f) for f in files)
     for out, text in rendered:
         produced.add(out.path)
         dest = root / out.path
-        current = _read(dest)
+        current = _read(dest) if str(dest) in existing else None
         if out.skeleton and current is not None and not force_skeletons:
             rep.kept.append(out.path)
             continue

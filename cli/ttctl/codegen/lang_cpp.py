@@ -12,12 +12,12 @@ Layout under the output root:
 
 from __future__ import annotations
 
-import textwrap
 from typing import Any
 
 from ..dialect.model import Dialect, Enum, Field, Message
 from ..dialect.names import C_RESERVED, CPP_KEYWORDS, RUNTIME_TYPE_NAMES, camel
 from .engine import Output, dialect_ident
+from .text import wrap
 
 name = "cpp"
 
@@ -93,8 +93,7 @@ def comment(text: str, indent: int = 0, width: int = 100, prefix: str = "/// ") 
     """`text` as //-comment lines (wrapped; no line ends in a backslash, which would splice
     the next source line into the comment)."""
     lead = " " * indent + prefix
-    lines = textwrap.wrap(_clean(text) or "(no description)", max(40, width - len(lead)),
-                          break_long_words=False, break_on_hyphens=False)
+    lines = wrap(_clean(text) or "(no description)", max(40, width - len(lead)))
     out = []
     for line in lines:
         line = line.rstrip()

@@ -21,12 +21,12 @@ Java types of fields (documented in every message class, see TYPE_MAPPING):
 from __future__ import annotations
 
 import re
-import textwrap
 from typing import Any
 
 from ..dialect.model import Dialect, Enum, Field, Message
 from ..dialect.names import JAVA_KEYWORDS, JAVA_RESERVED_TYPES, camel
 from .engine import Output, dialect_ident, receives, sends
+from .text import wrap
 
 name = "java"
 
@@ -204,24 +204,22 @@ def to_string_expr(f: Field) -> str:
 
 # --- Javadoc ------------------------------------------------------------------------------
 
+_DOC_ESCAPES = {"&": "&amp;", "<": "&lt;", ">": "&gt;", "@": "&#64;", "\\": "&#92;", "\t": " ", "\r": " ",
+                "\n": " "}
+_DOC_PLAIN = re.compile(r"[ -~]*\Z")
+_DOC_SPECIAL = re.compile(r"[&<>@\\]|[^ -~]")
+
+
 def _escape_doc(text: str) -> str:
-    out = []
-    for ch in text:
-        if ch == "&":
-            out.append("&amp;")
-        elif ch == "<":
-            out.append("&lt;")
-        elif ch == ">":
-            out.append("&gt;")
-        elif ch == "@":
-            out.append("&#64;")
-        elif ch == "\\":
-            out.append("&#92;")
-        elif ord(ch) > 126 or (ord(ch) < 32):
-            out.append(" " if ch in "\t\r\n" else f"&#{ord(ch)};")
-        else:
-            out.append(ch)
-    return "".join(out).replace("*/", "*&#47;")
+    """Text for Javadoc: HTML-escaped, ASCII only (&#N; for the rest), no comment end."""
+    if _DOC_PLAIN.match(text) and not any(c in text for c in "&<>@\\"):
+        return text.replace("*/", "*&#47;")
+
+    def sub(m: re.Match[str]) -> str:
+        ch = m.group(0)
+        return _DOC_ESCAPES.get(ch) or f"&#{ord(ch)};"
+
+    return _DOC_SPECIAL.sub(sub, text).replace("*/", "*&#47;")
 
 
 def javadoc(text: str | list[str], indent: int = 0, width: int = 100) -> str:
@@ -237,8 +235,7 @@ def javadoc(text: str | list[str], indent: int = 0, width: int = 100) -> str:
             continue
         if lines:
             lines.append("<p>")
-        lines.extend(textwrap.wrap(p if raw else _escape_doc(p), max(40, width - indent - 3),
-                                   break_long_words=False, break_on_hyphens=False))
+        lines.extend(wrap(p if raw else _escape_doc(p), max(40, width - indent - 3)))
     if not lines:
         lines = ["(no description)"]
     if len(lines) == 1 and len(lines[0]) + indent + 7 <= width:

@@ -9,6 +9,7 @@ from typing import Any
 from ..dialect.model import BASE_TYPES, Dialect, Enum, Field, Message
 from ..dialect.names import camel
 from .engine import Output, dialect_ident
+from .text import wrap as wrap_words
 
 name = "python"
 
@@ -134,9 +135,7 @@ def field_doc(f: Field) -> str:
 
 
 def wrap(text: str, width: int = 96, prefix: str = "    ") -> str:
-    import textwrap
-
-    return "\n".join(textwrap.wrap(text, width, initial_indent=prefix, subsequent_indent=prefix)) or prefix
+    return "\n".join(prefix + line for line in wrap_words(text, width - len(prefix))) or prefix
 
 
 def _natural(s: str) -> list[Any]:
