@@ -3768,7 +3768,7 @@ struct Fields<mav::TtFileOffer> {
 
 template <>
 struct Fields<mav::TtFileStatus> {
-    static constexpr std::array<FieldSpec, 12> value{ {
+    static constexpr std::array<FieldSpec, 11> value{ {
         FIELD(mav::TtFileStatus, target_system),
         FIELD(mav::TtFileStatus, target_component),
         FIELD(mav::TtFileStatus, transfer_id),
@@ -3779,8 +3779,7 @@ struct Fields<mav::TtFileStatus> {
         FIELD(mav::TtFileStatus, last_offset),
         FIELD(mav::TtFileStatus, hold_ms),
         FIELD(mav::TtFileStatus, range_count),
-        FIELD(mav::TtFileStatus, missing_start),
-        FIELD(mav::TtFileStatus, missing_end),
+        FIELD(mav::TtFileStatus, ranges),
     } };
 };
 

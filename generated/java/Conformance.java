@@ -5002,10 +5002,8 @@ public final class Conformance {
         sb.append(m.hold_ms);
         sb.append(",\"range_count\":");
         sb.append(m.range_count);
-        sb.append(",\"missing_start\":");
-        Json.longs(sb, m.missing_start);
-        sb.append(",\"missing_end\":");
-        Json.longs(sb, m.missing_end);
+        sb.append(",\"ranges\":");
+        Json.longs(sb, m.ranges);
     }
 
     private static void fields50002(ttctl.ttapi.msg.TtFileData m, StringBuilder sb) {
@@ -13537,11 +13535,8 @@ public final class Conformance {
                 case "range_count":
                     m.range_count = (int) Json.integer(v, 0, 255, "range_count");
                     break;
-                case "missing_start":
-                    m.missing_start = Json.longs(v, 8, 0, 4294967295L, "missing_start");
-                    break;
-                case "missing_end":
-                    m.missing_end = Json.longs(v, 8, 0, 4294967295L, "missing_end");
+                case "ranges":
+                    m.ranges = Json.longs(v, 16, 0, 4294967295L, "ranges");
                     break;
                 default:
                     throw new IllegalArgumentException("TT_FILE_STATUS has no field " + Json.show(e.getKey()));

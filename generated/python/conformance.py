@@ -271,7 +271,7 @@ _KINDS: dict[str, list[tuple[str, int]]] = {
     "OPEN_DRONE_ID_SYSTEM_UPDATE": [("int", 1), ("int", 1), ("int", 4), ("int", 4), ("float", 4), ("int", 4)],
     "HYGROMETER_SENSOR": [("int", 1), ("int", 2), ("int", 2)],
     "TT_FILE_OFFER": [("int", 1), ("int", 1), ("int", 1), ("int", 1), ("int", 4), ("int", 1), ("int", 1), ("int", 1), ("bytes", 1)],
-    "TT_FILE_STATUS": [("int", 1), ("int", 1), ("int", 1), ("int", 1), ("int", 4), ("int", 4), ("int", 4), ("int", 4), ("int", 2), ("int", 1), ("int", 4), ("int", 4)],
+    "TT_FILE_STATUS": [("int", 1), ("int", 1), ("int", 1), ("int", 1), ("int", 4), ("int", 4), ("int", 4), ("int", 4), ("int", 2), ("int", 1), ("int", 4)],
     "TT_FILE_DATA": [("int", 1), ("int", 4), ("bytes", 1)],
     "TT_FILE_REQUEST": [("int", 1), ("int", 1), ("int", 1), ("int", 1), ("int", 1), ("bytes", 1)],
     "DJI_POSE_STAMPED": [("int", 1), ("int", 4), ("int", 4), ("int", 1), ("float", 8), ("float", 8)],

@@ -24,6 +24,7 @@ from .storage import FileSource, ReceiveDir, Refused, StorageError, check_name
 from .transfer import NARROW, WIDE, FileReceiver, FileSender, TransferConfig
 
 TARGETED = "target_system"
+STATUS_BYTES = 60  # typical TT_FILE_STATUS frame
 REQUEST_PART = 80
 
 
@@ -78,8 +79,9 @@ class Endpoint:
             # statuses go back over our own link: on a slow one, fewer of them
             self.receiver.cfg = TransferConfig(**{
                 **vars(self.cfg),
-                "status_min_interval": max(self.cfg.status_min_interval, 3 * mtu / rate_Bps),
-                "status_tail_interval": max(self.cfg.status_tail_interval, 1.2 * mtu / rate_Bps)})
+                # a status with a few gaps is about 50 bytes on the wire (its ranges truncate)
+                "status_min_interval": max(self.cfg.status_min_interval, 3 * STATUS_BYTES / rate_Bps),
+                "status_tail_interval": max(self.cfg.status_tail_interval, 1.2 * STATUS_BYTES / rate_Bps)})
         self.serve_dir = Path(serve_dir).resolve() if serve_dir else None
         self.senders: dict[int, FileSender] = {}
         self.requests: dict[int, _Request] = {}
@@ -314,7 +316,7 @@ class Endpoint:
             self.send_file(path, src, name=name, request_id=msg.request_id)
         except (UnicodeDecodeError, Refused, StorageError, ValueError):
             status = ttapi.TtFileStatus(target_system=src[0], target_component=src[1], transfer_id=msg.request_id,
-                                        result=int(refuse), missing_start=[0] * 8, missing_end=[0] * 8)
+                                        result=int(refuse))
             self.scheduler.send(self.encoder.encode(status), CONTROL)
 
 

@@ -390,8 +390,8 @@ class FileSender:
         region = max(rc, min(msg.region_start, self.size))
         re = max(region, min(msg.received_end, self.size))
         n = min(msg.range_count, MAX_RANGES)
-        missing = [(max(a, region), min(b, re))
-                   for a, b in zip(msg.missing_start[:n], msg.missing_end[:n], strict=True)]
+        pairs = list(msg.ranges)
+        missing = [(max(pairs[2 * i], region), min(pairs[2 * i + 1], re)) for i in range(n)]
         missing = [(a, b) for a, b in missing if a < b]
         before = self.acked.total()
         self.acked.add(0, rc)
@@ -752,13 +752,12 @@ class FileReceiver:
 
     def _status(self, t: _Incoming, rc: int, region: int, re: int,
                 gaps: list[tuple[int, int]]) -> ttapi.TtFileStatus:
-        pad = [0] * (MAX_RANGES - len(gaps))
+        flat = [x for gap in gaps for x in gap]
         return ttapi.TtFileStatus(
             target_system=t.key[0], target_component=t.key[1], transfer_id=t.key[2], result=int(t.result),
             received_contiguous=rc, region_start=region, received_end=re, last_offset=t.last_offset,
             hold_ms=min(65535, int(1000 * (self.now - t.last_data))) if t.last_data is not None else 65535,
-            range_count=len(gaps), missing_start=[a for a, _ in gaps] + pad,
-            missing_end=[b for _, b in gaps] + pad)
+            range_count=len(gaps), ranges=flat + [0] * (2 * MAX_RANGES - len(flat)))
 
     def status(self, t: _Incoming) -> ttapi.TtFileStatus:
         return self.statuses(t)[0]

@@ -17859,9 +17859,9 @@ struct TtFileOffer {
 /// fit, several statuses describe successive regions.
 struct TtFileStatus {
     static constexpr std::uint32_t MSG_ID = 50001;
-    static constexpr std::uint8_t CRC_EXTRA = 68;
+    static constexpr std::uint8_t CRC_EXTRA = 165;
     static constexpr std::size_t PAYLOAD_LENGTH = 87;
-    static constexpr std::size_t MIN_LENGTH = 87;
+    static constexpr std::size_t MIN_LENGTH = 23;
     static constexpr const char* NAME = "TT_FILE_STATUS";
 
     /// File sender's system id.
@@ -17893,14 +17893,13 @@ struct TtFileStatus {
     /// Time between the arrival of that frame and this status, at most 65535. [ms]
     std::uint16_t hold_ms{};
 
-    /// Number of valid entries in missing_start and missing_end.
+    /// Number of missing ranges listed in ranges.
     std::uint8_t range_count{};
 
-    /// Starts of missing byte ranges, ascending. [bytes]
-    std::array<std::uint32_t, 8> missing_start{};
-
-    /// Ends (exclusive) of missing byte ranges. [bytes]
-    std::array<std::uint32_t, 8> missing_end{};
+    /// Missing byte ranges, ascending, as start, end (exclusive) pairs. An extension so that it
+    /// comes last on the wire: unused pairs are zero and truncated away, and a status with few gaps
+    /// is short. [bytes] (extension)
+    std::array<std::uint32_t, 16> ranges{};
 
     /// The payload in wire order, little endian, into `out` (which must hold PAYLOAD_LENGTH
     /// bytes); returns its MAVLink 2 truncated length.
@@ -17910,14 +17909,13 @@ struct TtFileStatus {
         put_le(out + 4, this->region_start);
         put_le(out + 8, this->received_end);
         put_le(out + 12, this->last_offset);
-        put_le(out + 16, this->missing_start);
-        put_le(out + 48, this->missing_end);
-        put_le(out + 80, this->hold_ms);
-        put_le(out + 82, this->target_system);
-        put_le(out + 83, this->target_component);
-        put_le(out + 84, this->transfer_id);
-        put_le(out + 85, this->result);
-        put_le(out + 86, this->range_count);
+        put_le(out + 16, this->hold_ms);
+        put_le(out + 18, this->target_system);
+        put_le(out + 19, this->target_component);
+        put_le(out + 20, this->transfer_id);
+        put_le(out + 21, this->result);
+        put_le(out + 22, this->range_count);
+        put_le(out + 23, this->ranges);
         return truncated_length(out, PAYLOAD_LENGTH);
     }
 
@@ -17937,14 +17935,13 @@ struct TtFileStatus {
         get_le(p + 4, m.region_start);
         get_le(p + 8, m.received_end);
         get_le(p + 12, m.last_offset);
-        get_le(p + 16, m.missing_start);
-        get_le(p + 48, m.missing_end);
-        get_le(p + 80, m.hold_ms);
-        get_le(p + 82, m.target_system);
-        get_le(p + 83, m.target_component);
-        get_le(p + 84, m.transfer_id);
-        get_le(p + 85, m.result);
-        get_le(p + 86, m.range_count);
+        get_le(p + 16, m.hold_ms);
+        get_le(p + 18, m.target_system);
+        get_le(p + 19, m.target_component);
+        get_le(p + 20, m.transfer_id);
+        get_le(p + 21, m.result);
+        get_le(p + 22, m.range_count);
+        get_le(p + 23, m.ranges);
         return m;
     }
 

@@ -431,7 +431,7 @@ inline constexpr std::array<MessageInfo, 223> MESSAGE_INFO{ {
     {12919, 7, 18, 18, "OPEN_DRONE_ID_SYSTEM_UPDATE"},
     {12920, 20, 5, 5, "HYGROMETER_SENSOR"},
     {50000, 196, 88, 88, "TT_FILE_OFFER"},
-    {50001, 68, 87, 87, "TT_FILE_STATUS"},
+    {50001, 165, 87, 23, "TT_FILE_STATUS"},
     {50002, 143, 88, 88, "TT_FILE_DATA"},
     {50003, 89, 85, 85, "TT_FILE_REQUEST"},
     {50004, 70, 66, 66, "DJI_POSE_STAMPED"},

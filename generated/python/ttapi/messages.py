@@ -19692,17 +19692,17 @@ class TtFileOffer(Message):
 class TtFileStatus(Message):
     """TT_FILE_STATUS (id 50001): [sender: any] The receiver's view of a transfer: sent on accepting or refusing an offer, while data flows (regularly, when new gaps appear, and when data stops coming), and on completion. Bytes below received_contiguous have all arrived; in [region_start, received_end) everything arrived except the listed missing ranges. When there are more gaps than fit, several statuses describe successive regions."""
 
-    __slots__ = ("hold_ms", "last_offset", "missing_end", "missing_start", "range_count", "received_contiguous", "received_end", "region_start", "result", "target_component", "target_system", "transfer_id",)
+    __slots__ = ("hold_ms", "last_offset", "range_count", "ranges", "received_contiguous", "received_end", "region_start", "result", "target_component", "target_system", "transfer_id",)
     MSG_ID: ClassVar[int] = 50001
     NAME: ClassVar[str] = "TT_FILE_STATUS"
-    CRC_EXTRA: ClassVar[int] = 68
+    CRC_EXTRA: ClassVar[int] = 165
     PAYLOAD_LENGTH: ClassVar[int] = 87
-    MIN_LENGTH: ClassVar[int] = 87
-    FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "transfer_id", "result", "received_contiguous", "region_start", "received_end", "last_offset", "hold_ms", "range_count", "missing_start", "missing_end",)
+    MIN_LENGTH: ClassVar[int] = 23
+    FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "transfer_id", "result", "received_contiguous", "region_start", "received_end", "last_offset", "hold_ms", "range_count", "ranges",)
     ENUMS: ClassVar[dict[str, str]] = {"result": "TT_FILE_RESULT"}
     _IDB: ClassVar[bytes] = b'Q\xc3\x00'
-    _XB: ClassVar[bytes] = b'D'
-    _S: ClassVar[struct.Struct] = struct.Struct("<IIIIIIIIIIIIIIIIIIIIHBBBBB")
+    _XB: ClassVar[bytes] = b'\xa5'
+    _S: ClassVar[struct.Struct] = struct.Struct("<IIIIHBBBBBIIIIIIIIIIIIIIII")
 
     target_system: int
     """File sender's system id."""
@@ -19732,13 +19732,10 @@ class TtFileStatus(Message):
     """Time between the arrival of that frame and this status, at most 65535. [ms]"""
 
     range_count: int
-    """Number of valid entries in missing_start and missing_end."""
+    """Number of missing ranges listed in ranges."""
 
-    missing_start: Sequence[int]
-    """Starts of missing byte ranges, ascending. [bytes]"""
-
-    missing_end: Sequence[int]
-    """Ends (exclusive) of missing byte ranges. [bytes]"""
+    ranges: Sequence[int]
+    """Missing byte ranges, ascending, as start, end (exclusive) pairs. An extension so that it comes last on the wire: unused pairs are zero and truncated away, and a status with few gaps is short. [bytes] (extension)"""
 
     def __init__(
         self,
@@ -19752,8 +19749,7 @@ class TtFileStatus(Message):
         last_offset: int = 0,
         hold_ms: int = 0,
         range_count: int = 0,
-        missing_start: Sequence[int] = (0, 0, 0, 0, 0, 0, 0, 0,),
-        missing_end: Sequence[int] = (0, 0, 0, 0, 0, 0, 0, 0,),
+        ranges: Sequence[int] = (0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,),
     ) -> None:
         self.target_system = target_system
         self.target_component = target_component
@@ -19765,8 +19761,7 @@ class TtFileStatus(Message):
         self.last_offset = last_offset
         self.hold_ms = hold_ms
         self.range_count = range_count
-        self.missing_start = missing_start
-        self.missing_end = missing_end
+        self.ranges = ranges
 
     def pack_payload(self) -> bytes:
         try:
@@ -19775,14 +19770,13 @@ class TtFileStatus(Message):
                 self.region_start,
                 self.received_end,
                 self.last_offset,
-                *_array(self.missing_start, 8, "TT_FILE_STATUS.missing_start"),
-                *_array(self.missing_end, 8, "TT_FILE_STATUS.missing_end"),
                 self.hold_ms,
                 self.target_system,
                 self.target_component,
                 self.transfer_id,
                 self.result,
                 self.range_count,
+                *_array(self.ranges, 16, "TT_FILE_STATUS.ranges"),
             )
         except struct.error as e:
             raise ValueError(f"TT_FILE_STATUS: {e}") from None
@@ -19796,14 +19790,13 @@ class TtFileStatus(Message):
         self.region_start = t[1]
         self.received_end = t[2]
         self.last_offset = t[3]
-        self.missing_start = t[4:12]
-        self.missing_end = t[12:20]
-        self.hold_ms = t[20]
-        self.target_system = t[21]
-        self.target_component = t[22]
-        self.transfer_id = t[23]
-        self.result = t[24]
-        self.range_count = t[25]
+        self.hold_ms = t[4]
+        self.target_system = t[5]
+        self.target_component = t[6]
+        self.transfer_id = t[7]
+        self.result = t[8]
+        self.range_count = t[9]
+        self.ranges = t[10:26]
         return self
 
 

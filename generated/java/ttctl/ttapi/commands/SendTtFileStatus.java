@@ -43,14 +43,16 @@ public class SendTtFileStatus extends SendCommand {
     public final long last_offset;
     /** Time between the arrival of that frame and this status, at most 65535. [ms] (uint16_t) */
     public final int hold_ms;
-    /** Number of valid entries in missing_start and missing_end. (uint8_t) */
+    /** Number of missing ranges listed in ranges. (uint8_t) */
     public final int range_count;
-    /** Starts of missing byte ranges, ascending. [bytes] (uint32_t[8]) */
-    public final long[] missing_start;
-    /** Ends (exclusive) of missing byte ranges. [bytes] (uint32_t[8]) */
-    public final long[] missing_end;
+    /**
+     * Missing byte ranges, ascending, as start, end (exclusive) pairs. An extension so that it
+     * comes last on the wire: unused pairs are zero and truncated away, and a status with few gaps
+     * is short. [bytes] (uint32_t[16]; extension)
+     */
+    public final long[] ranges;
 
-    public SendTtFileStatus(int target_system, int target_component, int transfer_id, int result, long received_contiguous, long region_start, long received_end, long last_offset, int hold_ms, int range_count, long[] missing_start, long[] missing_end) {
+    public SendTtFileStatus(int target_system, int target_component, int transfer_id, int result, long received_contiguous, long region_start, long received_end, long last_offset, int hold_ms, int range_count, long[] ranges) {
         super(DEFAULT_PRIORITY, 0, 0, 1.0);
         this.target_system = target_system;
         this.target_component = target_component;
@@ -62,8 +64,7 @@ public class SendTtFileStatus extends SendCommand {
         this.last_offset = last_offset;
         this.hold_ms = hold_ms;
         this.range_count = range_count;
-        this.missing_start = missing_start;
-        this.missing_end = missing_end;
+        this.ranges = ranges;
     }
 
     @Override
@@ -79,8 +80,7 @@ public class SendTtFileStatus extends SendCommand {
         msg.last_offset = this.last_offset;
         msg.hold_ms = this.hold_ms;
         msg.range_count = this.range_count;
-        msg.missing_start = this.missing_start;
-        msg.missing_end = this.missing_end;
+        msg.ranges = this.ranges;
         return msg;
     }
 

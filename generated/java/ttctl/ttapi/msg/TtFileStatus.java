@@ -16,16 +16,16 @@ import ttctl.ttapi.runtime.Wire;
  * {@link MavlinkMessage}: int8_t byte, uint8_t int, int16_t short, uint16_t int, int32_t int,
  * uint32_t long, int64_t long, uint64_t long (two's complement bits, see Unsigned), float, double,
  * char[N] byte[] (exact bytes, with String helpers), uint8_t[N] and int8_t[N] byte[], other arrays
- * arrays of the scalar mapping.
+ * arrays of the scalar mapping. Extension fields: ranges.
  */
 public final class TtFileStatus extends MavlinkMessage {
     public static final int MSG_ID = 50001;
     public static final String NAME = "TT_FILE_STATUS";
-    public static final int CRC_EXTRA = 68;
+    public static final int CRC_EXTRA = 165;
     /** Payload length with extension fields. */
     public static final int PAYLOAD_LENGTH = 87;
     /** Payload length without extension fields. */
-    public static final int MIN_LENGTH = 87;
+    public static final int MIN_LENGTH = 23;
 
     /** File sender's system id. (uint8_t) */
     public int target_system;
@@ -60,14 +60,15 @@ public final class TtFileStatus extends MavlinkMessage {
     /** Time between the arrival of that frame and this status, at most 65535. [ms] (uint16_t) */
     public int hold_ms;
 
-    /** Number of valid entries in missing_start and missing_end. (uint8_t) */
+    /** Number of missing ranges listed in ranges. (uint8_t) */
     public int range_count;
 
-    /** Starts of missing byte ranges, ascending. [bytes] (uint32_t[8]) */
-    public long[] missing_start = new long[8];
-
-    /** Ends (exclusive) of missing byte ranges. [bytes] (uint32_t[8]) */
-    public long[] missing_end = new long[8];
+    /**
+     * Missing byte ranges, ascending, as start, end (exclusive) pairs. An extension so that it
+     * comes last on the wire: unused pairs are zero and truncated away, and a status with few gaps
+     * is short. [bytes] (uint32_t[16]; extension)
+     */
+    public long[] ranges = new long[16];
 
     /** A message with every field zero. */
     public TtFileStatus() {
@@ -75,7 +76,7 @@ public final class TtFileStatus extends MavlinkMessage {
 
 
     /** A message with these field values (arrays are used, not copied). */
-    public TtFileStatus(int target_system, int target_component, int transfer_id, int result, long received_contiguous, long region_start, long received_end, long last_offset, int hold_ms, int range_count, long[] missing_start, long[] missing_end) {
+    public TtFileStatus(int target_system, int target_component, int transfer_id, int result, long received_contiguous, long region_start, long received_end, long last_offset, int hold_ms, int range_count, long[] ranges) {
         this.target_system = target_system;
         this.target_component = target_component;
         this.transfer_id = transfer_id;
@@ -86,8 +87,7 @@ public final class TtFileStatus extends MavlinkMessage {
         this.last_offset = last_offset;
         this.hold_ms = hold_ms;
         this.range_count = range_count;
-        this.missing_start = missing_start;
-        this.missing_end = missing_end;
+        this.ranges = ranges;
     }
 
     @Override
@@ -124,20 +124,16 @@ public final class TtFileStatus extends MavlinkMessage {
         Wire.putU32(out, 4, this.region_start, "TT_FILE_STATUS.region_start");
         Wire.putU32(out, 8, this.received_end, "TT_FILE_STATUS.received_end");
         Wire.putU32(out, 12, this.last_offset, "TT_FILE_STATUS.last_offset");
-        Wire.checkLength(this.missing_start == null ? -1 : this.missing_start.length, 8, "TT_FILE_STATUS.missing_start");
-        for (int i = 0; i < 8; i++) {
-            Wire.putU32(out, 16 + 4 * i, this.missing_start[i], "TT_FILE_STATUS.missing_start");
+        Wire.putU16(out, 16, this.hold_ms, "TT_FILE_STATUS.hold_ms");
+        Wire.putU8(out, 18, this.target_system, "TT_FILE_STATUS.target_system");
+        Wire.putU8(out, 19, this.target_component, "TT_FILE_STATUS.target_component");
+        Wire.putU8(out, 20, this.transfer_id, "TT_FILE_STATUS.transfer_id");
+        Wire.putU8(out, 21, this.result, "TT_FILE_STATUS.result");
+        Wire.putU8(out, 22, this.range_count, "TT_FILE_STATUS.range_count");
+        Wire.checkLength(this.ranges == null ? -1 : this.ranges.length, 16, "TT_FILE_STATUS.ranges");
+        for (int i = 0; i < 16; i++) {
+            Wire.putU32(out, 23 + 4 * i, this.ranges[i], "TT_FILE_STATUS.ranges");
         }
-        Wire.checkLength(this.missing_end == null ? -1 : this.missing_end.length, 8, "TT_FILE_STATUS.missing_end");
-        for (int i = 0; i < 8; i++) {
-            Wire.putU32(out, 48 + 4 * i, this.missing_end[i], "TT_FILE_STATUS.missing_end");
-        }
-        Wire.putU16(out, 80, this.hold_ms, "TT_FILE_STATUS.hold_ms");
-        Wire.putU8(out, 82, this.target_system, "TT_FILE_STATUS.target_system");
-        Wire.putU8(out, 83, this.target_component, "TT_FILE_STATUS.target_component");
-        Wire.putU8(out, 84, this.transfer_id, "TT_FILE_STATUS.transfer_id");
-        Wire.putU8(out, 85, this.result, "TT_FILE_STATUS.result");
-        Wire.putU8(out, 86, this.range_count, "TT_FILE_STATUS.range_count");
         return Wire.truncated(out, PAYLOAD_LENGTH);
     }
 
@@ -158,20 +154,16 @@ public final class TtFileStatus extends MavlinkMessage {
         m.region_start = Wire.getU32(b, o + 4);
         m.received_end = Wire.getU32(b, o + 8);
         m.last_offset = Wire.getU32(b, o + 12);
-        m.missing_start = new long[8];
-        for (int i = 0; i < 8; i++) {
-            m.missing_start[i] = Wire.getU32(b, o + 16 + 4 * i);
+        m.hold_ms = Wire.getU16(b, o + 16);
+        m.target_system = Wire.getU8(b, o + 18);
+        m.target_component = Wire.getU8(b, o + 19);
+        m.transfer_id = Wire.getU8(b, o + 20);
+        m.result = Wire.getU8(b, o + 21);
+        m.range_count = Wire.getU8(b, o + 22);
+        m.ranges = new long[16];
+        for (int i = 0; i < 16; i++) {
+            m.ranges[i] = Wire.getU32(b, o + 23 + 4 * i);
         }
-        m.missing_end = new long[8];
-        for (int i = 0; i < 8; i++) {
-            m.missing_end[i] = Wire.getU32(b, o + 48 + 4 * i);
-        }
-        m.hold_ms = Wire.getU16(b, o + 80);
-        m.target_system = Wire.getU8(b, o + 82);
-        m.target_component = Wire.getU8(b, o + 83);
-        m.transfer_id = Wire.getU8(b, o + 84);
-        m.result = Wire.getU8(b, o + 85);
-        m.range_count = Wire.getU8(b, o + 86);
         return m;
     }
 
@@ -188,8 +180,7 @@ public final class TtFileStatus extends MavlinkMessage {
                 + "last_offset=" + this.last_offset + ", "
                 + "hold_ms=" + this.hold_ms + ", "
                 + "range_count=" + this.range_count + ", "
-                + "missing_start=" + java.util.Arrays.toString(this.missing_start) + ", "
-                + "missing_end=" + java.util.Arrays.toString(this.missing_end)
+                + "ranges=" + java.util.Arrays.toString(this.ranges)
                 + "}";
     }
 }
