@@ -289,7 +289,7 @@ NASTY = """<?xml version="1.0"?>
     </enum>
   </enums>
   <messages>
-    <message id="1" name="FRAME">
+    <message id="1" name="CRC">
       <description>[sender: tablet] Named like a runtime class; answered by COMMAND with the same len.</description>
       <field type="uint8_t" name="len">len</field>
       <field type="uint8_t" name="m">m</field>
@@ -346,7 +346,7 @@ def test_names_that_clash_with_generated_code(tmp_path: Path) -> None:
               "target_system": 3, "fields": [1, 18446744073709551615, 0], "signed_bytes": [-1, 2, -3, 4],
               "shorts": [-1, 1], "ushorts": [65535, 0], "ints": [-1, 1], "uints": [4294967295, 1], "longs": [-1, 1],
               "doubles": [5e-324, "-Infinity"], "text": "ab\u00e9"}
-    lines = "E " + json.dumps({"name": "FRAME", "fields": fields}) + "\n"
+    lines = "E " + json.dumps({"name": "CRC", "fields": fields}) + "\n"
     run = subprocess.run(["java", "-cp", str(tmp_path / "classes"), "Conformance"], input=lines, capture_output=True,
                          text=True, timeout=60)
     frame = run.stdout.strip()

@@ -187,6 +187,13 @@ def run(profile_name: str, distance: float, file_bytes: int, seeds: int, protoco
     from ..app import Fail
 
     _register_baselines()
+    if plot:
+        from .plots import require_matplotlib
+
+        try:
+            require_matplotlib()  # fail now, not after minutes of simulation
+        except RuntimeError as e:
+            raise Fail(str(e)) from None
     for p in protocols:
         if p not in PROTOCOLS:
             raise Fail(f"unknown protocol {p!r} (choose from {', '.join(PROTOCOLS)})")
