@@ -154,6 +154,7 @@ def test_resume_after_both_ends_restart(tmp_path: Path) -> None:
     assert s2.result is not None and s2.result.ok
     assert (on / "big.bin").read_bytes() == payload
     assert s2.stats.bytes_sent < len(payload) * 0.8  # resumed: only the rest (plus the first RTT) was sent
+    assert s2.stats.resumed_bytes > 5000
 
 
 def test_several_transfers_at_once(tmp_path: Path) -> None:

@@ -155,6 +155,190 @@ def bench_codec(
     run(seconds, rounds, cpp, json_out)
 
 
+link_app = typer.Typer(help="The emulated DJI link between processes.", no_args_is_help=True)
+app.add_typer(link_app, name="link")
+
+RateOpt = Annotated[float | None, typer.Option("--rate", help="Pacing rate in bytes per second (overrides the "
+                                                              "profile's).", show_default=False)]
+ProfileOpt = Annotated[str | None, typer.Option("--profile", help="Link profile (m100, psdk, lan): pace at its "
+                                                                  "capacity in this end's sending direction.",
+                                                show_default=False)]
+DistanceOpt = Annotated[float, typer.Option("--distance", help="Distance in metres, for --profile.")]
+JsonOpt = Annotated[bool, typer.Option("--json", help="Machine-readable output (JSON).")]
+
+
+@bench_app.command("transfer")
+def bench_transfer(
+    profile: Annotated[str, typer.Option(help="Link profile (see cli/ttctl/link/profiles.toml).")] = "m100",
+    distance: Annotated[float, typer.Option(help="Distance in metres.", min=0)] = 10.0,
+    size: Annotated[int, typer.Option("--size", help="File size in bytes.", min=1, max=1 << 26)] = 65536,
+    seeds: Annotated[int, typer.Option(help="Seeds per case; rows report the median.", min=1, max=99)] = 9,
+    protocols: Annotated[str, typer.Option(help="Comma-separated: ttctl,thesis,mavftp.")] = "ttctl,thesis,mavftp",
+    quick: Annotated[bool, typer.Option("--quick", help="Two cases only (a smoke test).")] = False,
+    plot: Annotated[Path | None, typer.Option(help="Write a PNG of efficiency against loss (needs ttctl[plot]).")]
+    = None,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+) -> None:
+    """File transfer over the link model in virtual time: ttctl against the thesis protocol and
+    MAVLink FTP at 0/10/30 % random and burst loss, both directions, plus command latency."""
+    from .bench.transfer import run
+    from .link.model import ProfileError
+
+    try:
+        run(profile, distance, size, seeds, [p.strip() for p in protocols.split(",") if p.strip()], json_out,
+            str(plot) if plot else None, quick)
+    except ProfileError as e:
+        raise Fail(str(e)) from None
+
+
+@bench_app.command("link")
+def bench_link(
+    profile: Annotated[str, typer.Option(help="Link profile.")] = "m100",
+    plot: Annotated[Path | None, typer.Option(help="Write a PNG (needs ttctl[plot]).")] = None,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+) -> None:
+    """The thesis's measurement method replayed on the link model: uplink packet sizes and
+    distances, downlink send rates."""
+    from .bench import linkbench
+    from .link.model import ProfileError
+
+    try:
+        linkbench.run(profile, json_out, str(plot) if plot else None)
+    except ProfileError as e:
+        raise Fail(str(e)) from None
+    except RuntimeError as e:  # matplotlib missing
+        raise Fail(str(e)) from None
+
+
+@app.command("recv-file")
+def recv_file_cmd(
+    listen: Annotated[str, typer.Option("--listen", help="Endpoint: udpin:HOST:PORT (udp: means udpin), "
+                                                         "tcpin:HOST:PORT, or udpout:/tcp: to reach out.",
+                                        show_default=False)],
+    folder: Annotated[Path, typer.Option("--dir", help="Where received files go (created if missing).",
+                                         show_default=False)],
+    overwrite: Annotated[bool, typer.Option("--overwrite", help="Allow replacing files, when the sender asks "
+                                                                "for it too.")] = False,
+    max_file: Annotated[int | None, typer.Option("--max-file", help="Largest file accepted, bytes "
+                                                                    "(default 1 GiB).", show_default=False)] = None,
+    max_dir: Annotated[int | None, typer.Option("--max-dir", help="Quota for everything in --dir, partial files "
+                                                                  "included, bytes (default 8 GiB).",
+                                                show_default=False)] = None,
+    serve: Annotated[Path | None, typer.Option("--serve", help="Offer the files in this folder for download "
+                                                               "(send-file --from).", show_default=False)] = None,
+    count: Annotated[int | None, typer.Option("--count", help="Exit 0 after this many files completed.",
+                                              show_default=False)] = None,
+    sysid: Annotated[int, typer.Option("--sysid", help="This end's MAVLink system id.")] = 1,
+    compid: Annotated[int, typer.Option("--compid", help="This end's MAVLink component id.")] = 240,
+    rate: RateOpt = None,
+    profile: ProfileOpt = None,
+    distance: DistanceOpt = 10.0,
+    json_out: JsonOpt = False,
+) -> None:
+    """Receive files (the onboard end, 1/240, by default) until interrupted or --count files are in.
+
+    Prints a line per file accepted, refused (with the reason), completed or failed (--json: JSON lines).
+    Files land in DIR/.ttctl-partial first and are renamed into place once their SHA-256 matches.
+    On SIGINT/SIGTERM (exit 0) or a crash, what arrived stays there: offering the file again resumes it.
+
+    Example: ttctl recv-file --listen udpin:0.0.0.0:14560 --dir inbox --profile m100
+    """
+    from .sendrecv import RecvOptions, recv_file
+
+    code = recv_file(RecvOptions(listen, folder, overwrite, max_file, max_dir, serve, count, sysid, compid, rate,
+                                 profile, distance, json_out))
+    raise typer.Exit(code)
+
+
+@app.command("send-file")
+def send_file_cmd(
+    file: Annotated[str, typer.Argument(help="The file to send (with --to), or the name to fetch (with --from).",
+                                        show_default=False)],
+    to: Annotated[str | None, typer.Option("--to", help="Send FILE to this endpoint: udpout:HOST:PORT (udp: "
+                                                        "means udpout), tcp:HOST:PORT, udpin:/tcpin: to wait "
+                                                        "for the peer.", show_default=False)] = None,
+    from_: Annotated[str | None, typer.Option("--from", help="Fetch FILE from a receiver started with --serve "
+                                                             "at this endpoint.", show_default=False)] = None,
+    name: Annotated[str | None, typer.Option("--name", help="Name at the receiver (default: FILE's base name); "
+                                                            "a relative path.", show_default=False)] = None,
+    overwrite: Annotated[bool, typer.Option("--overwrite", help="Ask the receiver to replace an existing "
+                                                                "file.")] = False,
+    folder: Annotated[Path | None, typer.Option("--dir", help="With --from: where the file goes (default: .).",
+                                                show_default=False)] = None,
+    json_out: JsonOpt = False,
+    rate: RateOpt = None,
+    profile: ProfileOpt = None,
+    distance: DistanceOpt = 10.0,
+    sysid: Annotated[int, typer.Option("--sysid", help="This end's MAVLink system id.")] = 255,
+    compid: Annotated[int, typer.Option("--compid", help="This end's MAVLink component id.")] = 190,
+    target_sysid: Annotated[int, typer.Option("--target-sysid", help="The receiver's system id.")] = 1,
+    target_compid: Annotated[int, typer.Option("--target-compid", help="The receiver's component id.")] = 240,
+    timeout: Annotated[float, typer.Option("--timeout", help="Give up after this many seconds without a word "
+                                                             "from the peer.")] = 60.0,
+) -> None:
+    """Send a file to a receiver (ttctl recv-file, or the onboard end), or fetch one with --from.
+
+    A progress bar on stderr when it is a terminal; at the end a summary: bytes, seconds, goodput,
+    efficiency against the link capacity (known from --rate or --profile), retransmitted bytes.
+    --json prints one JSON object instead: ok, code, message, name, bytes, seconds, goodput_Bps,
+    capacity_Bps, efficiency, retransmitted_bytes, frames_sent, bytes_sent, resumed_bytes.
+    Sending a file again after an interruption resumes where the receiver got to.
+
+    Exit status: 0 delivered and verified, 1 refused (with the receiver's reason), failed or timed out,
+    2 bad options, a missing file or an unusable endpoint, 130 interrupted.
+
+    Example: ttctl send-file photo.jpg --to udpout:192.168.1.20:14560 --profile m100 --distance 50
+    """
+    from .sendrecv import SendOptions, send_file
+
+    code = send_file(SendOptions(file, to, from_, name, overwrite, json_out, rate, profile, distance, sysid, compid,
+                                 target_sysid, target_compid, timeout, folder))
+    raise typer.Exit(code)
+
+
+@link_app.command("relay")
+def link_relay(
+    listen: Annotated[str, typer.Option("--listen", help="udp:HOST:PORT where the tablet side sends (udpin).",
+                                        show_default=False)],
+    to: Annotated[str, typer.Option("--to", help="udp:HOST:PORT of the onboard side (udpout).",
+                                    show_default=False)],
+    profile: Annotated[str, typer.Option("--profile", help="Link profile: m100, psdk or lan.")] = "m100",
+    distance: Annotated[float, typer.Option("--distance", help="Distance in metres.")] = 10.0,
+    loss: Annotated[float | None, typer.Option("--loss", help="Packet loss probability, both directions "
+                                                              "(default: the profile's at --distance).",
+                                               show_default=False)] = None,
+    loss_model: Annotated[str, typer.Option("--loss-model", help="random or burst (Gilbert-Elliott).")] = "random",
+    corrupt: Annotated[float, typer.Option("--corrupt", help="Probability that a packet has bytes flipped.")] = 0.0,
+    duplicate: Annotated[float, typer.Option("--duplicate", help="Probability that a packet arrives twice.")]
+    = 0.0,
+    reorder: Annotated[float, typer.Option("--reorder", help="Probability that a packet is held back behind "
+                                                             "later ones.")] = 0.0,
+    seed: Annotated[int, typer.Option("--seed", help="Random seed.")] = 0,
+    rate: Annotated[float | None, typer.Option("--rate", help="Override the profile's rate, both directions, "
+                                                              "bytes per second.", show_default=False)] = None,
+    stats_interval: Annotated[float, typer.Option("--stats-interval", help="Seconds between stats lines on "
+                                                                           "stderr (0: only at the end).")] = 5.0,
+) -> None:
+    """The emulated DJI radio link, as a process between the two ends, in real time.
+
+    Packets arriving on --listen (the tablet side) go through the profile's uplink model (rate, SDK
+    buffer, loss, latency) and reach --to after the modelled time, or are lost, corrupted, duplicated
+    or reordered as asked. Packets from --to go through the downlink model to the address last heard
+    on --listen. Datagrams over the profile's MTU (100 bytes) are dropped, as DJI refuses them.
+    A stats line goes to stderr every --stats-interval seconds, and a last one on SIGINT/SIGTERM (exit 0).
+
+    Example, three shells:
+    ttctl link relay --listen udp:127.0.0.1:14550 --to udp:127.0.0.1:14560 --loss 0.1
+    ttctl recv-file --listen udpin:127.0.0.1:14560 --dir inbox --profile m100
+    ttctl send-file FILE --to udpout:127.0.0.1:14550 --profile m100
+    """
+    from .sendrecv import RelayOptions, relay
+
+    code = relay(RelayOptions(listen, to, profile, distance, loss, loss_model, corrupt, duplicate, reorder, seed,
+                              rate, stats_interval))
+    raise typer.Exit(code)
+
+
 def main() -> None:
     """Console entry point: clean one-line errors instead of tracebacks."""
     try:  # typer >= 0.26 vendors click
@@ -172,7 +356,8 @@ def main() -> None:
         hint = " Did you mean"
         if msg.count(hint) > 1:  # typer and click both add the suggestion
             msg = msg[: msg.rindex(hint)]
-        print(f"{where}: error: {msg} (see '{where} --help')", file=sys.stderr)
+        if msg.strip():  # a group called without a command has printed its help already
+            print(f"{where}: error: {msg} (see '{where} --help')", file=sys.stderr)
         sys.exit(e.exit_code)
     except typer.Abort:
         print("ttctl: aborted", file=sys.stderr)
@@ -193,6 +378,8 @@ def main() -> None:
               file=sys.stderr)
         sys.exit(3)
     code = code if isinstance(code, int) else 0
+    if code == 130:  # typer turns Ctrl-C into a quiet exit 130
+        print("ttctl: interrupted", file=sys.stderr)
     if _fast_exit:
         try:
             sys.stdout.flush()

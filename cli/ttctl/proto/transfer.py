@@ -403,7 +403,9 @@ class FileSender:
         if re > pos:
             self.acked.add(pos, re)
         if self.stats.statuses == 1 and before == 0:
-            self.stats.resumed_bytes = self.acked.total() if self.stats.frames_sent == 0 else 0
+            # what the receiver had before we started: its first answer, less what we had sent
+            # by then (0-RTT data may already be in it)
+            self.stats.resumed_bytes = max(0, self.acked.total() - self.next_new)
         # a resumed transfer: skip what the receiver already has
         while self.next_new < self.size and self.acked.covers(self.next_new, min(self.size, self.next_new + 1)):
             end = next((b for a, b in self.acked if a <= self.next_new < b), self.next_new + 1)

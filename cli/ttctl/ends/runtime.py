@@ -1,0 +1,214 @@
+"""The asyncio driver of a sans-IO Endpoint over a transport, in real time.
+
+The clock is the event loop's (`loop.time()`). Received datagrams (or stream chunks) go to
+`Endpoint.receive` (or `receive_stream`) as they arrive; one task, the pump, sends every packet
+`Endpoint.poll` lets go, then sleeps until the endpoint's next wake-up (its pacer, a status, an
+offer retry, ...) or until something arrives, whichever is first. After a few packet times of
+silence with a long frame half received, it calls `Endpoint.flush` so that frames in the
+packets taken for it are not held back. It never spins: a wake-up time that produces nothing
+costs a millisecond's sleep, not a busy loop.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+from ..link.transport import Transport
+from ..proto.endpoint import Endpoint
+
+BURST = 64  # packets sent without yielding to the loop (receives get their turn)
+SPIN_GUARD = 0.001  # least sleep when a wake-up time is already past but nothing went out
+CATCH_UP = 0.002  # a late wake-up by up to this much keeps the pacer's schedule (timer granularity)
+QUIET_MIN, QUIET_MAX = 0.02, 2.0
+
+
+@dataclass
+class RunnerStats:
+    packets_in: int = 0
+    packets_out: int = 0
+    bytes_in: int = 0
+    bytes_out: int = 0
+    flushes: int = 0
+    wakeups: int = 0
+    idle_wakeups: int = 0  # wake-ups that sent nothing (timers, status checks)
+
+
+class Runner:
+    """Drives `endpoint` over `transport`. `quiet` is the silence (seconds) after which a
+    half-received frame is given up; None measures it: three times the usual gap between
+    packets."""
+
+    def __init__(self, endpoint: Endpoint, transport: Transport, quiet: float | None = None,
+                 hello: Callable[[], Any] | None = None, hello_interval: float = 1.0) -> None:
+        self.ep = endpoint
+        self.transport = transport
+        self.quiet = quiet
+        # a message to send every hello_interval s until the peer is heard: an end that reaches
+        # out (udpout) and would otherwise wait for the peer to speak first makes itself known
+        self.hello = hello
+        self.hello_interval = hello_interval
+        self._hello_due: float | None = None
+        self._error: BaseException | None = None
+        self.stats = RunnerStats()
+        self.last_rx: float | None = None
+        self._gap = 0.05  # EWMA of the time between arriving packets
+        self._waiter: asyncio.Future[None] | None = None
+        self._task: asyncio.Task[None] | None = None
+        self._closed = False
+        self._last_now = 0.0
+        self._loop: asyncio.AbstractEventLoop | None = None
+        transport.on_receive = self._on_data
+
+    # -- the clock ------------------------------------------------------------------------------
+    def now(self) -> float:
+        """The current time on the endpoint's clock (never going backwards)."""
+        loop = self._loop or asyncio.get_running_loop()
+        t = max(loop.time(), self._last_now)
+        self._last_now = t
+        return t
+
+    def sync(self) -> float:
+        """Bring the endpoint's clock to now: call before send_file / request_file / command,
+        which stamp what they create with the endpoint's time."""
+        t = self.now()
+        self.ep.now = t
+        return t
+
+    # -- life cycle -----------------------------------------------------------------------------
+    async def start(self) -> None:
+        """Open the transport (TransportError if it cannot) and start the pump."""
+        self._loop = asyncio.get_running_loop()
+        self.sync()
+        await self.transport.open()
+        self._task = self._loop.create_task(self._pump())
+
+    def kick(self) -> None:
+        """Something changed (a file was queued, a command submitted): reconsider now."""
+        w = self._waiter
+        if w is not None and not w.done():
+            w.set_result(None)
+
+    async def drain(self, timeout: float) -> None:
+        """Wait (at most `timeout`) until what the endpoint has to say now (a last status, say)
+        has left: nothing queued and nothing due within the next moment."""
+        loop = self._loop or asyncio.get_running_loop()
+        end = loop.time() + timeout
+        self.kick()
+        await asyncio.sleep(0.02)  # the pump's turn: statuses due now are built when it polls
+        while loop.time() < end and self._task is not None and not self._task.done():
+            w = self.ep.wakeup()
+            if not self.ep.scheduler.busy and (w is None or w > loop.time() + 0.1):
+                break
+            await asyncio.sleep(0.01)
+
+    async def close(self) -> None:
+        self._closed = True
+        self.kick()
+        if self._task is not None:
+            self._task.cancel()
+            with contextlib.suppress(asyncio.CancelledError, Exception):
+                await self._task
+        self.transport.close()
+
+    @property
+    def failed(self) -> BaseException | None:
+        """The exception the pump died of, or the first one the endpoint raised on receive."""
+        if self._error is not None:
+            return self._error
+        t = self._task
+        if t is None or not t.done() or t.cancelled():
+            return None
+        return t.exception()
+
+    # -- receiving ------------------------------------------------------------------------------
+    def _on_data(self, data: bytes) -> None:
+        now = self.now()
+        if self.last_rx is not None:
+            self._gap = 0.9 * self._gap + 0.1 * min(1.0, now - self.last_rx)
+        self.last_rx = now
+        self.stats.packets_in += 1
+        self.stats.bytes_in += len(data)
+        try:
+            if self.transport.stream:
+                self.ep.receive_stream(now, data)
+            else:
+                self.ep.receive(now, data)
+        except Exception as e:  # a bug, not bad input (the parsers take anything): report it once
+            self._error = self._error or e
+        self.kick()
+
+    def _pending(self) -> bool:
+        rx = self.ep.stream_rx if self.transport.stream else self.ep.rx
+        return rx.pending > 0
+
+    def _quiet(self) -> float:
+        """Three packet times of the link (`quiet`, when the caller knows the rate) or of what
+        actually arrives, whichever is longer; never below the OS's scheduling jitter."""
+        q = max(QUIET_MIN, 3 * self._gap, self.quiet or 0.0)
+        return min(q, max(QUIET_MAX, self.quiet or 0.0))
+
+    # -- sending --------------------------------------------------------------------------------
+    async def _pump(self) -> None:
+        loop = self._loop or asyncio.get_running_loop()
+        target: float | None = None
+        while not self._closed:
+            real = loop.time()
+            now = self.now()
+            if target is not None and target <= real < target + CATCH_UP:
+                # woken a little late by the timer: keep the pacer's schedule rather than
+                # losing the lateness on every packet (the clock still never goes back)
+                now = max(target, self.ep.now)
+            if self.hello is not None and self.last_rx is None and (self._hello_due is None or now >= self._hello_due):
+                msg = self.hello()
+                if msg is not None:
+                    self.ep.send_message(msg)
+                self._hello_due = now + self.hello_interval
+            sent = 0
+            while sent < BURST:
+                pkt = self.ep.poll(now)
+                if pkt is None:
+                    break
+                self.transport.send(pkt)
+                sent += 1
+                self.stats.packets_out += 1
+                self.stats.bytes_out += len(pkt)
+            self.stats.wakeups += 1
+            if sent == 0:
+                self.stats.idle_wakeups += 1
+            flush_at = None
+            if self.last_rx is not None and self._pending():
+                flush_at = self.last_rx + self._quiet()
+                if flush_at <= real:
+                    self.ep.flush(now)
+                    self.stats.flushes += 1
+                    continue  # send what the frames it released called for
+            if sent >= BURST:
+                target = None
+                await asyncio.sleep(0)
+                continue
+            hello_at = self._hello_due if self.hello is not None and self.last_rx is None else None
+            times = [t for t in (self.ep.wakeup(), flush_at, hello_at) if t is not None]
+            target = min(times) if times else None
+            if target is not None and target <= loop.time() and sent == 0:
+                target = loop.time() + SPIN_GUARD  # due but nothing to do: do not spin
+            await self._sleep_until(loop, target)
+
+    async def _sleep_until(self, loop: asyncio.AbstractEventLoop, when: float | None) -> None:
+        if when is not None and when <= loop.time():
+            await asyncio.sleep(0)
+            return
+        self._waiter = loop.create_future()
+        handle = loop.call_at(when, self.kick) if when is not None else None
+        try:
+            await self._waiter
+        finally:
+            self._waiter = None
+            if handle is not None:
+                handle.cancel()
+
+
+__all__ = ["Runner", "RunnerStats"]
