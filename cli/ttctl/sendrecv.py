@@ -325,11 +325,10 @@ class Outcome:
 
 def send_file(o: SendOptions) -> int:
     """Exit status: 0 delivered, 1 refused / failed / timed out (Fail), 2 bad input (Fail), 130
-    interrupted. (typer turns a KeyboardInterrupt into a silent exit 130: say it here.)"""
+    interrupted (app.main says so, for every command)."""
     try:
         return _send_file(o)
     except KeyboardInterrupt:
-        _err("interrupted")
         return 130
 
 
@@ -351,7 +350,6 @@ def _send_file(o: SendOptions) -> int:
             raise Fail("--name and --overwrite apply to sending (--to), not to --from")
         outcome = _download_prepare(o, link)
     if outcome.interrupted:
-        _err("interrupted")
         return 130
     if o.as_json:
         print(json.dumps(outcome.report), flush=True)
