@@ -167,6 +167,9 @@ DistanceOpt = Annotated[float, typer.Option("--distance", help="Distance in metr
 JsonOpt = Annotated[bool, typer.Option("--json", help="Machine-readable output (JSON).")]
 
 
+PLOT_EXTRA = "needs the plot extra: pip install 'ttctl\\[plot]'"  # \\[ keeps rich from reading a style tag
+
+
 @bench_app.command("transfer")
 def bench_transfer(
     profile: Annotated[str, typer.Option(help="Link profile (see cli/ttctl/link/profiles.toml).")] = "m100",
@@ -175,8 +178,7 @@ def bench_transfer(
     seeds: Annotated[int, typer.Option(help="Seeds per case; rows report the median.", min=1, max=99)] = 9,
     protocols: Annotated[str, typer.Option(help="Comma-separated: ttctl,thesis,mavftp.")] = "ttctl,thesis,mavftp",
     quick: Annotated[bool, typer.Option("--quick", help="Two cases only (a smoke test).")] = False,
-    plot: Annotated[Path | None, typer.Option(help="Write a PNG of efficiency against loss (needs ttctl[plot]).")]
-    = None,
+    plot: Annotated[Path | None, typer.Option(help=f"Write a PNG of efficiency against loss ({PLOT_EXTRA}).")] = None,
     json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
 ) -> None:
     """File transfer over the link model in virtual time: ttctl against the thesis protocol and
@@ -194,7 +196,7 @@ def bench_transfer(
 @bench_app.command("link")
 def bench_link(
     profile: Annotated[str, typer.Option(help="Link profile.")] = "m100",
-    plot: Annotated[Path | None, typer.Option(help="Write a PNG (needs ttctl[plot]).")] = None,
+    plot: Annotated[Path | None, typer.Option(help=f"Write a PNG ({PLOT_EXTRA}).")] = None,
     json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
 ) -> None:
     """The thesis's measurement method replayed on the link model: uplink packet sizes and
