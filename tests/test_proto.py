@@ -32,9 +32,10 @@ class World:
 
     def __init__(self, tmp: Path, loss: float = 0.0, model: str = "random", profile: str = "m100", seed: int = 1,
                  tablet_dir: Path | None = None, onboard_dir: Path | None = None, quota: Quota | None = None,
-                 config: TransferConfig | None = None, serve: Path | None = None, action: Any = None) -> None:
+                 config: TransferConfig | None = None, serve: Path | None = None, action: Any = None,
+                 outages: list[tuple[float, float]] | None = None) -> None:
         prof = load_profile(profile)
-        imp = {"loss": loss, "loss_model": model}
+        imp: dict[str, Any] = {"loss": loss, "loss_model": model, "outages": outages or []}
         self.up = Channel(prof, "up", 10, Impairments(**imp), seed=seed)
         self.down = Channel(prof, "down", 10, Impairments(**imp), seed=seed + 100)
         self.events: list[tuple[str, Any]] = []
@@ -155,6 +156,47 @@ def test_resume_after_both_ends_restart(tmp_path: Path) -> None:
     assert (on / "big.bin").read_bytes() == payload
     assert s2.stats.bytes_sent < len(payload) * 0.8  # resumed: only the rest (plus the first RTT) was sent
     assert s2.stats.resumed_bytes > 5000
+
+
+def test_channel_outage_drops_everything_inside_the_window() -> None:
+    ch = Channel(load_profile("lan"), "up", 10, Impairments(loss=0.0, outages=[(1.0, 2.0)]))
+    arrived = [bool(ch.submit(t / 10, bytes(50))) for t in range(50)]  # one packet every 0.1 s for 5 s
+    assert arrived[:10] == [True] * 10
+    assert not any(arrived[10:30])
+    assert all(arrived[31:])
+    assert ch.stats.lost == 20
+
+
+def test_transfer_rides_out_an_outage(tmp_path: Path) -> None:
+    """The radio goes dark both ways for 20 s mid-file (out of range, a turn behind a building):
+    nothing is given up, and sending resumes from where the receiver got to."""
+    payload = data(20_000)
+    w = World(tmp_path, onboard_dir=tmp_path / "on", outages=[(15.0, 20.0)])
+    s = w.tablet.send_file("m.bin", ONBOARD, source=BytesSource(payload, "m.bin"))
+    w.run(600, stop=lambda: s.done)
+    assert s.result is not None and s.result.ok, s.result
+    assert (tmp_path / "on" / "m.bin").read_bytes() == payload
+    assert 20_000 / 500 + 20 <= s.result.seconds <= 20_000 / 500 + 20 + 15
+    assert w.up.stats.lost > 0 and w.down.stats.lost > 0
+
+
+def test_outage_longer_than_the_patience_fails_then_resumes(tmp_path: Path) -> None:
+    payload = data(20_000)
+    cfg = TransferConfig(give_up_after=10.0)
+    w = World(tmp_path, onboard_dir=tmp_path / "on", outages=[(15.0, 1000.0)], config=cfg)
+    s = w.tablet.send_file("m.bin", ONBOARD, source=BytesSource(payload, "m.bin"))
+    w.run(600, stop=lambda: s.done)
+    assert s.result is not None and s.result.code == "TIMEOUT"
+    assert 24.0 <= s.result.seconds <= 40.0  # the last word came just before the outage, at 15 s
+    assert not (tmp_path / "on" / "m.bin").exists()
+    w.tablet.close()
+    w.onboard.close()
+    w2 = World(tmp_path, onboard_dir=tmp_path / "on", config=cfg)  # back in range
+    s2 = w2.tablet.send_file("m.bin", ONBOARD, source=BytesSource(payload, "m.bin"))
+    w2.run(600, stop=lambda: s2.done)
+    assert s2.result is not None and s2.result.ok
+    assert (tmp_path / "on" / "m.bin").read_bytes() == payload
+    assert s2.stats.resumed_bytes >= 5000
 
 
 def test_several_transfers_at_once(tmp_path: Path) -> None:

@@ -170,6 +170,25 @@ def test_through_relay_with_loss(tmp_path: Path, start: Start) -> None:
     assert m and int(m.group(3)) > 0 and int(m.group(1)) > int(m.group(2)), last
 
 
+def test_through_relay_with_an_outage(tmp_path: Path, start: Start) -> None:
+    """Nothing crosses the relay for its first 4 s: the sender keeps offering and delivers once
+    the link is back."""
+    src = data_file(tmp_path, "a.bin", 20_000, seed=5)
+    a, b = free_port(), free_port()
+    t0 = time.monotonic()
+    air = relay(start, a, b, "--profile", "lan", "--loss", "0", "--outage", "0:4", "--stats-interval", "0")
+    recv = receiver(start, tmp_path, f"udpin:{LOCAL}:{b}", "--count", "1", "--profile", "lan")
+    proc, r = send(str(src), "--to", f"udpout:{LOCAL}:{a}", "--profile", "lan", "--timeout", "20")
+    assert proc.returncode == 0, proc.stderr
+    assert r["ok"] and time.monotonic() - t0 >= 4.0  # done only once the link was back
+    assert recv.wait() == 0
+    assert (tmp_path / "inbox" / "a.bin").read_bytes() == src.read_bytes()
+    air.signal(signal.SIGINT)
+    assert air.wait() == 0
+    m = re.search(r"up (\d+) in, (\d+) out, (\d+) lost", air.stderr.strip().splitlines()[-1])
+    assert m and int(m.group(3)) > 0, air.stderr  # --loss 0: only the outage lost them
+
+
 def test_m100_at_10m(tmp_path: Path, start: Start) -> None:
     """The realistic link: a 4 KiB file up the M100's 500 B/s uplink, through the relay."""
     src = data_file(tmp_path, "small.bin", 4096, seed=4)
@@ -356,6 +375,10 @@ def test_bad_input_is_one_line(tmp_path: Path) -> None:
          "loss must be in 0..1"),
         (["link", "relay", "--listen", f"udp:{LOCAL}:0", "--to", f"udp:{LOCAL}:2", "--loss-model", "x"],
          "loss model must be one of"),
+        (["link", "relay", "--listen", f"udp:{LOCAL}:0", "--to", f"udp:{LOCAL}:2", "--outage", "10"],
+         "--outage wants START:SECONDS"),
+        (["link", "relay", "--listen", f"udp:{LOCAL}:0", "--to", f"udp:{LOCAL}:2", "--outage", "10:-1"],
+         "an outage needs a start >= 0 and a positive duration"),
     ]
     try:
         for args, want in cases:

@@ -320,6 +320,10 @@ def link_relay(
                                                               "bytes per second.", show_default=False)] = None,
     stats_interval: Annotated[float, typer.Option("--stats-interval", help="Seconds between stats lines on "
                                                                            "stderr (0: only at the end).")] = 5.0,
+    outage: Annotated[list[str] | None, typer.Option("--outage", help="START:SECONDS: nothing gets through, "
+                                                                      "either way, for SECONDS from START seconds "
+                                                                      "after the relay starts (repeatable).",
+                                                     show_default=False)] = None,
 ) -> None:
     """The emulated DJI radio link, as a process between the two ends, in real time.
 
@@ -337,7 +341,7 @@ def link_relay(
     from .sendrecv import RelayOptions, relay
 
     code = relay(RelayOptions(listen, to, profile, distance, loss, loss_model, corrupt, duplicate, reorder, seed,
-                              rate, stats_interval))
+                              rate, stats_interval, outage or []))
     raise typer.Exit(code)
 
 

@@ -15,7 +15,7 @@ import json
 import signal
 import sys
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -685,6 +685,17 @@ class RelayOptions:
     seed: int = 0
     rate: float | None = None
     stats_interval: float = 5.0
+    outages: list[str] = field(default_factory=list)  # START:SECONDS, from the relay's start
+
+
+def _outage(text: str) -> tuple[float, float]:
+    start, sep, length = text.partition(":")
+    try:
+        if not sep:
+            raise ValueError
+        return float(start), float(length)
+    except ValueError:
+        raise Fail(f"--outage wants START:SECONDS (seconds from the relay's start), not {text!r}") from None
 
 
 def relay(o: RelayOptions) -> int:
@@ -708,7 +719,7 @@ def relay(o: RelayOptions) -> int:
                 raise Fail("--rate must be a positive number of bytes per second")
             prof = with_rate(prof, o.rate)
         imp = Impairments(loss=o.loss, loss_model=o.loss_model, corrupt=o.corrupt, duplicate=o.duplicate,
-                          reorder=o.reorder)
+                          reorder=o.reorder, outages=[_outage(text) for text in o.outages])
         imp.check()
         r = Relay(listen, to, prof, o.distance, imp, seed=o.seed, log=lambda text: _err(f"relay: {text}"))
     except ProfileError as e:

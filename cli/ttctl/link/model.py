@@ -133,6 +133,9 @@ class Impairments:
             raise ProfileError(f"loss model must be one of {', '.join(LOSS_MODELS)}, not {self.loss_model!r}")
         if self.burst_mean < 1.0:
             raise ProfileError("mean burst length must be at least 1 packet")
+        for start, length in self.outages:
+            if not (start >= 0.0 and length > 0.0 and math.isfinite(start + length)):
+                raise ProfileError(f"an outage needs a start >= 0 and a positive duration, not {start:g}:{length:g}")
 
 
 class ChannelStats:

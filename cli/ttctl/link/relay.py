@@ -4,7 +4,8 @@ Packets arriving on the listening side (the tablet's) go through the model's `up
 are delivered to the other side after the modelled time, or lost, corrupted, duplicated or
 reordered; packets from the other side go through `down` and are sent to the address last
 heard on the listening side. The same Channel objects the virtual-time simulator uses, driven
-by the event loop's clock with `call_at`.
+by the event loop's clock with `call_at`; the model's time (outages included) counts from the
+moment the relay opens.
 """
 
 from __future__ import annotations
@@ -45,13 +46,13 @@ class Relay:
 
     async def open(self) -> None:
         self._loop = asyncio.get_running_loop()
+        self.started = self._loop.time()
         await self.a.open()
         try:
             await self.b.open()
         except BaseException:
             self.a.close()
             raise
-        self.started = self._loop.time()
 
     def close(self) -> None:
         self.a.close()
@@ -66,9 +67,9 @@ class Relay:
     def _carry(self, ch: Channel, data: bytes, deliver: Callable[[bytes], None]) -> None:
         loop = self._loop
         assert loop is not None
-        for when, pkt in ch.submit(loop.time(), data):
+        for when, pkt in ch.submit(loop.time() - self.started, data):
             self.in_flight += 1
-            loop.call_at(when, deliver, pkt)
+            loop.call_at(self.started + when, deliver, pkt)
 
     def _to_b(self, pkt: bytes) -> None:
         self.in_flight -= 1
