@@ -117,6 +117,31 @@ def test_user_templates_override_by_name(tmp_path: Path) -> None:
     assert not (out / "python" / "ttapi" / "messages.py").read_text().startswith("# custom")
 
 
+def test_compiled_template_cache_follows_the_source(tmp_path: Path) -> None:
+    """Compiled templates are cached between runs; editing a template (same name, same path)
+    takes effect at once, and an unusable cache folder costs only time."""
+    mine = tmp_path / "tpl" / "python"
+    mine.mkdir(parents=True)
+    original = (ROOT / "templates" / "python" / "enums.py.j2").read_text()
+    cache = tmp_path / "cache"
+    out = tmp_path / "out"
+    enums = out / "python" / "ttapi" / "enums.py"
+    for marker in ("# first\n", "# second\n"):
+        (mine / "enums.py.j2").write_text(marker + original)
+        proc = run_ttctl("gen", str(TTAPI), "--lang", "python", "-o", str(out), "--templates", str(tmp_path / "tpl"),
+                         env={"XDG_CACHE_HOME": str(cache)})
+        assert proc.returncode == 0, proc.stderr
+        assert enums.read_text().startswith(marker)
+    assert list((cache / "ttctl" / "templates").glob("*.cache"))
+    not_a_folder = tmp_path / "file"
+    not_a_folder.write_text("x")
+    proc = run_ttctl("gen", str(TTAPI), "--lang", "python", "-o", str(tmp_path / "out2"),
+                     env={"XDG_CACHE_HOME": str(not_a_folder)})
+    assert proc.returncode == 0, proc.stderr
+    assert (tmp_path / "out2" / "python" / "ttapi" / "enums.py").read_text() == (
+        ROOT / "generated" / "python" / "ttapi" / "enums.py").read_text()
+
+
 def test_broken_user_template_is_one_line_error(tmp_path: Path) -> None:
     mine = tmp_path / "tpl" / "python"
     mine.mkdir(parents=True)

@@ -109,6 +109,8 @@ def gen(
     """
     from .gen import GenError, run_gen
 
+    global _fast_exit
+    _fast_exit = True  # every file is written and closed before run_gen returns
     try:
         code = run_gen(str(dialect) if dialect else None, lang, str(out), check, force_skeletons,
                        [str(p) for p in include or []], str(templates) if templates else None)

@@ -11,6 +11,7 @@ only when missing, or with --force-skeletons.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
 import tempfile
@@ -89,6 +90,25 @@ def sends(d: Dialect, end: str) -> list[Message]:
     return [m for m in sorted(d.root.messages, key=lambda m: m.id) if (m.sender or "any") in (end, "any")]
 
 
+def _bytecode_cache(jinja2: Any) -> Any:
+    """Compiled templates kept between runs in the user's cache folder (keyed by each
+    template's source, so edited and user templates are recompiled); None if there is no
+    usable folder. A failure to save is ignored: the cache only saves time."""
+
+    class Cache(jinja2.FileSystemBytecodeCache):  # type: ignore[misc]
+        def dump_bytecode(self, bucket: Any) -> None:
+            with contextlib.suppress(OSError):
+                super().dump_bytecode(bucket)
+
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    folder = os.path.join(base, "ttctl", "templates")
+    try:
+        os.makedirs(folder, exist_ok=True)
+    except OSError:
+        return None
+    return Cache(folder)
+
+
 def make_env(user_templates: str | None) -> Any:
     import jinja2
 
@@ -100,6 +120,7 @@ def make_env(user_templates: str | None) -> Any:
     loaders.append(jinja2.FileSystemLoader(str(data_dir("templates"))))
     env = jinja2.Environment(
         loader=jinja2.ChoiceLoader(loaders),
+        bytecode_cache=_bytecode_cache(jinja2),
         undefined=jinja2.StrictUndefined,
         trim_blocks=True,
         lstrip_blocks=True,
