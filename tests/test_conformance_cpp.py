@@ -15,17 +15,13 @@ from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
 import pytest
-from hypothesis import HealthCheck, given, settings
-from hypothesis import strategies as st
 
 from conformance_lib import (
     Conformance,
-    assert_fields_match,
+    check_message,
     cpp_cmd,
     generate,
-    json_fields,
     load_model,
-    message_values,
     pymavlink_frame,
     pymavlink_module,
 )
@@ -71,36 +67,14 @@ def common_world(builds: dict[str, Any]) -> Iterator[dict[str, Any]]:
     assert proc.close() == 0
 
 
-def roundtrip(world: dict[str, Any], m: Message, values: dict[str, Any], seq: int, sysid: int, compid: int) -> None:
-    proc, pm = world["proc"], world["pm"]
-    frame = pymavlink_frame(pm, m, values, seq, sysid, compid)
-    doc = proc.decode(frame)
-    assert "error" not in doc, (m.name, doc, frame.hex())
-    assert (doc["msgid"], doc["name"], doc["sysid"], doc["compid"], doc["seq"]) == (m.id, m.name, sysid, compid, seq)
-    assert_fields_match(m, doc["fields"], json_fields(m, values))
-    again = proc.encode(doc)
-    assert again == frame, (m.name, frame.hex(), again)
-    parsed = pm.MAVLink(None).parse_buffer(again)
-    assert parsed and parsed[0].get_msgId() == m.id
-
-
-def _check(world: dict[str, Any], m: Message, examples: int) -> None:
-    @settings(max_examples=examples, deadline=None, suppress_health_check=list(HealthCheck), database=None)
-    @given(values=message_values(m), seq=st.integers(0, 255), sysid=st.integers(1, 255), compid=st.integers(0, 255))
-    def check(values: dict[str, Any], seq: int, sysid: int, compid: int) -> None:
-        roundtrip(world, m, values, seq, sysid, compid)
-
-    check()
-
-
 @pytest.mark.parametrize("m", _complete(TTAPI_MODEL), ids=lambda m: m.name)
 def test_every_message_roundtrips(ttapi_world: dict[str, Any], m: Message) -> None:
-    _check(ttapi_world, m, 8)
+    check_message(ttapi_world, m, 8)
 
 
 @pytest.mark.parametrize("m", _complete(COMMON_MODEL), ids=lambda m: m.name)
 def test_common_generated_alone_roundtrips(common_world: dict[str, Any], m: Message) -> None:
-    _check(common_world, m, 3)
+    check_message(common_world, m, 3)
 
 
 # --- the sanitized build ------------------------------------------------------------------

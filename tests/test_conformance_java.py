@@ -19,12 +19,10 @@ from hypothesis import strategies as st
 
 from conformance_lib import (
     Conformance,
-    assert_fields_match,
+    check_message,
     generate,
     java_cmd,
-    json_fields,
     load_model,
-    message_values,
     pymavlink_frame,
     pymavlink_module,
 )
@@ -57,34 +55,12 @@ def common_world(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str,
     assert w["proc"].close() == 0
 
 
-def roundtrip(world: dict[str, Any], m: Message, values: dict[str, Any], seq: int, sysid: int, compid: int) -> None:
-    proc, pm = world["proc"], world["pm"]
-    frame = pymavlink_frame(pm, m, values, seq, sysid, compid)
-    doc = proc.decode(frame)
-    assert "error" not in doc, (m.name, doc, frame.hex())
-    assert (doc["msgid"], doc["name"], doc["sysid"], doc["compid"], doc["seq"]) == (m.id, m.name, sysid, compid, seq)
-    assert_fields_match(m, doc["fields"], json_fields(m, values))
-    again = proc.encode(doc)
-    assert again == frame, (m.name, frame.hex(), again)
-    parsed = pm.MAVLink(None).parse_buffer(again)
-    assert parsed and parsed[0].get_msgId() == m.id
-
-
-def _check_message(world: dict[str, Any], m: Message, examples: int) -> None:
-    @settings(max_examples=examples, deadline=None, suppress_health_check=list(HealthCheck), database=None)
-    @given(values=message_values(m), seq=st.integers(0, 255), sysid=st.integers(1, 255), compid=st.integers(0, 255))
-    def check(values: dict[str, Any], seq: int, sysid: int, compid: int) -> None:
-        roundtrip(world, m, values, seq, sysid, compid)
-
-    check()
-
-
 TTAPI_MESSAGES = sorted(TTAPI_MODEL.messages, key=lambda m: m.id)
 
 
 @pytest.mark.parametrize("m", TTAPI_MESSAGES, ids=[m.name for m in TTAPI_MESSAGES])
 def test_every_message_roundtrips(world: dict[str, Any], m: Message) -> None:
-    _check_message(world, m, 8)
+    check_message(world, m, 8)
 
 
 def test_every_common_message_roundtrips(common_world: dict[str, Any]) -> None:
@@ -92,7 +68,7 @@ def test_every_common_message_roundtrips(common_world: dict[str, Any]) -> None:
     msgs = sorted((m for m in COMMON_MODEL.messages if m.complete), key=lambda m: m.id)
     assert len(msgs) > 200
     for m in msgs:
-        _check_message(common_world, m, 3)
+        check_message(common_world, m, 3)
 
 
 # --- bad input ----------------------------------------------------------------------------
