@@ -453,25 +453,33 @@ def _refusal_text(code: str, name: str, message: str) -> str:
     return message
 
 
-async def _upload(o: SendOptions, spec: Any, link: LinkChoice, src: Any, name: str) -> Outcome:
+async def _open_end(o: SendOptions, spec: Any, link: LinkChoice, bar: _Bar, **endpoint: Any) -> tuple[Any, Any]:
+    """This end of a send-file or fetch: its endpoint and runner, started (Fail, with the bar
+    stopped, if the transport cannot open)."""
     from .ends.runtime import Runner
     from .link.transport import make_transport
     from .proto.endpoint import Endpoint
     from .proto.transfer import TransferConfig
 
-    loop = asyncio.get_running_loop()
-    wake = asyncio.Event()
-    target = (o.target_sysid, o.target_compid)
-    bar = _Bar(f"{name} → {target[0]}/{target[1]}", src.size)
     transport = make_transport(spec, log=bar.log)
     ep = Endpoint(o.sysid, o.compid, mtu=transport.mtu, rate_Bps=link.pace_Bps,
-                  config=TransferConfig(give_up_after=o.timeout))
+                  config=TransferConfig(give_up_after=o.timeout), **endpoint)
     runner = Runner(ep, transport, quiet=link.quiet)
     try:
         await _start(runner)
     except Fail:
         bar.stop()
         raise
+    return ep, runner
+
+
+async def _upload(o: SendOptions, spec: Any, link: LinkChoice, src: Any, name: str) -> Outcome:
+    loop = asyncio.get_running_loop()
+    wake = asyncio.Event()
+    target = (o.target_sysid, o.target_compid)
+    bar = _Bar(f"{name} → {target[0]}/{target[1]}", src.size)
+    ep, runner = await _open_end(o, spec, link, bar)
+    transport = runner.transport
     sigs = _Signals(loop, wake)
     sender = None
     try:
@@ -552,10 +560,7 @@ def _download_prepare(o: SendOptions, link: LinkChoice) -> Outcome:
 
 
 async def _download(o: SendOptions, spec: Any, link: LinkChoice, store: Any) -> Outcome:
-    from .ends.runtime import Runner
-    from .link.transport import make_transport
-    from .proto.endpoint import Endpoint
-    from .proto.transfer import TransferConfig, result_name
+    from .proto.transfer import result_name
 
     loop = asyncio.get_running_loop()
     wake = asyncio.Event()
@@ -579,15 +584,8 @@ async def _download(o: SendOptions, spec: Any, link: LinkChoice, store: Any) -> 
         wake.set()
 
     bar = _Bar(f"{o.file} ← {who}", 0)
-    transport = make_transport(spec, log=bar.log)
-    ep = Endpoint(o.sysid, o.compid, mtu=transport.mtu, rate_Bps=link.pace_Bps, receive_dir=store,
-                  config=TransferConfig(give_up_after=o.timeout), on_event=on_event)
-    runner = Runner(ep, transport, quiet=link.quiet)
-    try:
-        await _start(runner)
-    except Fail:
-        bar.stop()
-        raise
+    ep, runner = await _open_end(o, spec, link, bar, receive_dir=store, on_event=on_event)
+    transport = runner.transport
     sigs = _Signals(loop, wake)
     started = loop.time()
     try:

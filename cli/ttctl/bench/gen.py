@@ -7,8 +7,7 @@ import json
 import os
 import tempfile
 
-from ..dialect.source import pymavlink_dialects_dir
-from .procs import console_script, machine, median, time_interleaved
+from .procs import benchmark_dialect, console_script, machine, median, time_interleaved
 
 FLOOR = 0.5  # issue: at most half the summed mavgen time
 
@@ -16,13 +15,7 @@ FLOOR = 0.5  # issue: at most half the summed mavgen time
 def run(dialect: str | None, runs: int, as_json: bool) -> None:
     from ..app import Fail
 
-    if dialect is None:
-        base = pymavlink_dialects_dir()
-        if base is None:
-            raise Fail("pymavlink's dialects not found; pass a dialect file")
-        dialect = os.path.join(base, "all.xml")
-    if not os.path.isfile(dialect):
-        raise Fail(f"{dialect}: no such file")
+    dialect = benchmark_dialect(dialect)
     ttctl = console_script("ttctl", "ttctl")
     mavgen = console_script("mavgen.py", "pymavlink.tools.mavgen")
     with tempfile.TemporaryDirectory(prefix="ttctl-bench-gen-") as tmp:

@@ -12,6 +12,21 @@ from collections.abc import Callable
 from pathlib import Path
 
 
+def benchmark_dialect(dialect: str | None) -> str:
+    """The dialect given, or pymavlink's all.xml (353 messages in 17 files); Fail if missing."""
+    from ..app import Fail
+    from ..dialect.source import pymavlink_dialects_dir
+
+    if dialect is None:
+        base = pymavlink_dialects_dir()
+        if base is None:
+            raise Fail("pymavlink's dialects not found; pass a dialect file")
+        dialect = os.path.join(base, "all.xml")
+    if not os.path.isfile(dialect):
+        raise Fail(f"{dialect}: no such file")
+    return dialect
+
+
 def console_script(name: str, module: str) -> list[str]:
     """The console script `name` next to this interpreter, else `python -m module`."""
     here = Path(sys.executable).with_name(name)

@@ -6,8 +6,7 @@ import json
 import os
 import tempfile
 
-from ..dialect.source import pymavlink_dialects_dir
-from .procs import Command, console_script, machine, median, time_interleaved
+from .procs import Command, benchmark_dialect, console_script, machine, median, time_interleaved
 
 FLOOR = 0.75  # issue: at most 0.75x mavgen's time
 
@@ -15,13 +14,7 @@ FLOOR = 0.75  # issue: at most 0.75x mavgen's time
 def run(dialect: str | None, runs: int, as_json: bool) -> None:
     from ..app import Fail
 
-    if dialect is None:
-        base = pymavlink_dialects_dir()
-        if base is None:
-            raise Fail("pymavlink's dialects not found; pass a dialect file")
-        dialect = os.path.join(base, "all.xml")
-    if not os.path.isfile(dialect):
-        raise Fail(f"{dialect}: no such file")
+    dialect = benchmark_dialect(dialect)
     with tempfile.TemporaryDirectory(prefix="ttctl-bench-") as tmp:
         cmds: dict[str, Command] = {
             "ttctl validate": console_script("ttctl", "ttctl") + ["validate", dialect],
