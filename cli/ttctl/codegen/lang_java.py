@@ -44,20 +44,8 @@ _SCALAR = {
     "double": "double",
     "char": "byte",
 }
-# base type -> element type of an array field
-_ARRAY = {
-    "int8_t": "byte",
-    "uint8_t": "byte",
-    "int16_t": "short",
-    "uint16_t": "int",
-    "int32_t": "int",
-    "uint32_t": "long",
-    "int64_t": "long",
-    "uint64_t": "long",
-    "float": "float",
-    "double": "double",
-    "char": "byte",
-}
+# base type -> element type of an array field: the same, but uint8_t arrays stay raw bytes
+_ARRAY = {**_SCALAR, "uint8_t": "byte"}
 # Wire put/get method suffix per base type (scalars; arrays use the same per element, except
 # byte arrays which are copied whole).
 _WIRE = {
