@@ -90,6 +90,62 @@ def test_lost_packets(frames: list[bytes], lost: set[int]) -> None:
     check(frames, spans, lost, receive([p for i, p in enumerate(packets) if i not in lost]))
 
 
+def test_flush_gives_up_every_carry_its_replay_begins() -> None:
+    """Found by hypothesis: a long frame whose tail is lost takes in the head and the tail of
+    the next long frame; when it is given up, replaying those begins another carry, which must
+    be given up too, or the small frame after the second tail never comes out."""
+    enc = ttapi.Encoder(sysid=1, compid=240)
+    frames = [enc.encode(m) for m in (
+        ttapi.Heartbeat(type=2),
+        ttapi.TtFileDataWide(transfer_id=1, offset=1, data=bytes(range(250))),
+        ttapi.TtFileData(transfer_id=1, offset=2, data=b"\x01" * 83),
+        ttapi.TtFileDataWide(transfer_id=1, offset=3, data=bytes(range(250))),
+        ttapi.TtCommandAck(command_id=7, result=2, progress=100),
+        ttapi.TtFileData(transfer_id=1, offset=4, data=b"\x02" * 83),
+        ttapi.Heartbeat(type=3),
+    )]
+    packets, spans = layout(frames)
+    lost = (spans[1] - {min(spans[1])}) | spans[2] | (spans[3] - {min(spans[3]), max(spans[3])})
+    assert max(spans[3]) in spans[4] and not spans[4] & lost  # the ack shares the second tail's packet
+    check(frames, spans, lost, receive([p for i, p in enumerate(packets) if i not in lost]))
+
+
+def test_a_new_long_frame_gives_up_the_carry_its_replay_begins() -> None:
+    """Found by hypothesis: when a packet begins a new long frame, the old carry is dropped and
+    its packets replayed; that replay can begin a carry of its own (a long frame with a lost
+    middle), whose packets must be replayed too before the new frame takes over, or the
+    heartbeat after that frame's tail is lost with it."""
+    enc = ttapi.Encoder(sysid=1, compid=240)
+
+    def wide() -> ttapi.Message:
+        return ttapi.TtFileDataWide(transfer_id=1, offset=0, data=b"\x01" * 250)
+
+    def cmd() -> ttapi.Message:
+        return ttapi.TtActionCommand(command_id=0, action=1, argument="x" * 40)
+
+    def hb() -> ttapi.Message:
+        return ttapi.Heartbeat(type=2)
+
+    frames = [enc.encode(m) for m in (cmd(), wide(), hb(), wide(), hb(), wide(), hb(), cmd(), wide(),
+                                      ttapi.TtFileData(transfer_id=1, offset=0, data=b"\x01" * 83), hb(), cmd())]
+    packets, spans = layout(frames)
+    lost = {0, 1, 4, 5, 7, 8, 11}
+    assert spans[6] == {9} and not spans[6] & lost  # the heartbeat after the third wide frame's tail
+    check(frames, spans, lost, receive([p for i, p in enumerate(packets) if i not in lost]))
+
+
+def test_a_packet_of_whole_frames_is_not_a_continuation_even_if_the_crc_agrees() -> None:
+    """Found by hypothesis: the middle packet of a long frame is lost and the next packet (a
+    frame of its own) fills exactly what is missing. The offset below is one of the 1 in 65536
+    for which that false assembly passes the CRC; the packet's own frame must still win."""
+    wide = ttapi.TtFileDataWide(transfer_id=1, offset=12115, data=bytes(range(1, 251))).pack(0, 1, 240)
+    narrow = ttapi.TtFileData(transfer_id=1, offset=5, data=b"\x07" * 83).pack(1, 1, 240)
+    packets, spans = layout([wide, narrow])
+    assert [len(p) for p in packets] == [100, 100, 67, 100]
+    assert ttapi.decode(packets[0] + packets[2] + packets[3]).get_seq() == 0  # the chance match
+    check([wide, narrow], spans, {1}, receive([packets[0], packets[2], packets[3]]))
+
+
 @SETTINGS
 @given(frame_lists(), st.integers(0, 10_000), st.integers(0, 200), st.integers(1, 255))
 def test_corrupted_packet(frames: list[bytes], which: int, pos: int, flip: int) -> None:

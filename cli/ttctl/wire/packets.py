@@ -10,10 +10,12 @@ stream. The packing rule (the generated C++ and Java packetizers follow it too):
 
 The receiver is packet-aware: every frame inside one packet is delivered as soon as that
 packet arrives, whatever happened to other packets; a frame spanning packets is assembled
-from the packets that continue it. A packet that starts with a plausible frame header is not a
-continuation, so a sender may slip a packet of urgent frames between the pieces of a long
-frame. A lost, corrupted, duplicated or reordered packet therefore costs only the frames that
-overlapped it.
+from the packets that continue it. A packet that starts with a whole valid frame is never taken
+as a continuation, so a sender may slip a packet of urgent frames between the pieces of a long
+frame; and a long frame must end at its last packet's end or be followed there by the next
+frame's header, so a false assembly across a lost packet whose CRC matches by chance is rarely
+believed. A lost, corrupted, duplicated or reordered packet therefore costs only the frames
+that overlapped it.
 """
 
 from __future__ import annotations
@@ -135,8 +137,7 @@ class PacketReceiver:
         """The link went quiet: give up on a frame still waiting for its continuation and
         return what the packets taken for it hold on their own."""
         out: list[Message] = []
-        if self._carry:
-            self._drop_carry(out)
+        self._give_up(out)
         self.stats.frames += len(out)
         return out
 
@@ -146,13 +147,15 @@ class PacketReceiver:
             buf = self._carry + packet
             total = self._total(buf, 0)
             complete = total is not None and len(buf) >= total
-            msg = self._try(buf[:total]) if complete and total is not None else None
-            if msg is not None:  # 1. the long frame's continuation
-                out.append(msg)
-                pos = len(packet) - (len(buf) - total) if total is not None else 0
-                self._carry, self._taken, self._origin = b"", [], b""
-            elif self._starts_with_frame(packet):  # 2. a packet of its own (maybe urgent frames)
+            own = self._starts_with_frame(packet)
+            fits = not own and complete and total is not None and self._rest_plausible(buf, total)
+            msg = self._try(buf[:total]) if fits and total is not None else None
+            if own:  # 1. a packet of its own (maybe urgent frames slipped between the pieces)
                 pass
+            elif msg is not None and total is not None:  # 2. the long frame's continuation
+                out.append(msg)
+                pos = len(packet) - (len(buf) - total)
+                self._carry, self._taken, self._origin = b"", [], b""
             elif not complete and (total is not None or len(buf) < 10):  # 3. continues further
                 self._carry = buf
                 self._taken.append(packet)
@@ -163,6 +166,14 @@ class PacketReceiver:
                 return
         self._scan(packet, pos, out)
 
+    def _rest_plausible(self, buf: bytes, end: int) -> bool:
+        """By the packing rule, what follows a long frame's end in its last packet is nothing or
+        the next frame's header: a false continuation whose CRC happens to match (1 in 65536)
+        is caught here nearly always, instead of taking the packet's own frames with it."""
+        if end == len(buf):
+            return True
+        return buf[end] == MAGIC and (len(buf) - end < 10 or self._total(buf, end) is not None)
+
     def _starts_with_frame(self, packet: bytes) -> bool:
         total = self._total(packet, 0)
         return total is not None and total <= len(packet) and self._try(packet[:total]) is not None
@@ -172,6 +183,12 @@ class PacketReceiver:
             return decode(frame, self.registry, self.signing)
         except DecodeError:
             return None
+
+    def _give_up(self, out: list[Message]) -> None:
+        """Drop the frame being assembled for good: replaying the packets it took may begin
+        another, which is given up too, so that every frame in those packets comes out."""
+        while self._carry:
+            self._drop_carry(out)
 
     def _drop_carry(self, out: list[Message], then: bytes | None = None) -> None:
         """The frame being assembled was not one. Give the next candidate head inside its first
@@ -253,8 +270,7 @@ class PacketReceiver:
                 head = j
             i = j + 1
         if head >= 0:
-            if self._carry:
-                self._drop_carry(out)  # a newer long frame began: the old one is gone
+            self._give_up(out)  # a newer long frame began: the old one is gone
             self._carry = self._origin = pkt[head:]
             self._taken = []
 
