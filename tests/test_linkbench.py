@@ -11,7 +11,7 @@ from typing import Any
 
 import pytest
 
-from ttctl.app import Fail
+from ttctl.errors import Fail
 from ttctl.bench import linkbench
 from ttctl.link.model import load_profile
 

@@ -14,6 +14,7 @@ from typing import Annotated
 import typer
 
 from . import __version__
+from .errors import Fail
 
 app = typer.Typer(
     name="ttctl",
@@ -31,14 +32,6 @@ app.add_typer(bench_app, name="bench")
 # Commands that leave nothing to clean up set this: main() then skips interpreter teardown
 # (freeing tens of thousands of objects), which is a tenth of `ttctl validate`'s run time.
 _fast_exit = False
-
-
-class Fail(Exception):
-    """A clear one-line failure: printed as `ttctl: error: ...`, exits with `code`."""
-
-    def __init__(self, message: str, code: int = 2) -> None:
-        super().__init__(message)
-        self.code = code
 
 
 def _version(value: bool) -> None:

@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from .app import Fail
+from .errors import Fail
 
 TABLET = (255, 190)
 ONBOARD = (1, 240)

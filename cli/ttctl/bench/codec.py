@@ -112,7 +112,7 @@ def measure(world: dict[str, Any], seconds: float, rounds: int) -> dict[str, Any
 
 
 def run(seconds: float, rounds: int, cpp: bool, as_json: bool) -> None:
-    from ..app import Fail
+    from ..errors import Fail
 
     try:
         import fastcrc  # noqa: F401 - both libraries use it when present; make sure they do

@@ -13,7 +13,7 @@ FLOOR = 0.5  # issue: at most half the summed mavgen time
 
 
 def run(dialect: str | None, runs: int, as_json: bool) -> None:
-    from ..app import Fail
+    from ..errors import Fail
 
     dialect = benchmark_dialect(dialect)
     ttctl = console_script("ttctl", "ttctl")

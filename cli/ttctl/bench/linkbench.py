@@ -167,7 +167,7 @@ def facts(report: dict[str, Any]) -> list[dict[str, Any]]:
 
 
 def run(profile_name: str, as_json: bool, plot: str | None, seed: int = 1) -> dict[str, Any]:
-    from ..app import Fail
+    from ..errors import Fail
 
     try:
         profile = load_profile(profile_name)

@@ -12,7 +12,7 @@ INSTALL_HINT = "plotting needs matplotlib: pip install 'ttctl[plot]'"
 def _missing() -> RuntimeError:
     """A RuntimeError that the command line also prints as a clean one-line error."""
     try:
-        from ..app import Fail
+        from ..errors import Fail
     except ImportError:  # pragma: no cover - the CLI's dependencies are ttctl's
         return RuntimeError(INSTALL_HINT)
 

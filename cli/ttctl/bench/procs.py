@@ -14,7 +14,7 @@ from pathlib import Path
 
 def benchmark_dialect(dialect: str | None) -> str:
     """The dialect given, or pymavlink's all.xml (353 messages in 17 files); Fail if missing."""
-    from ..app import Fail
+    from ..errors import Fail
     from ..dialect.source import pymavlink_dialects_dir
 
     if dialect is None:

@@ -184,7 +184,7 @@ def _register_baselines() -> None:
 
 def run(profile_name: str, distance: float, file_bytes: int, seeds: int, protocols: list[str],
         as_json: bool, plot: str | None, quick: bool) -> None:
-    from ..app import Fail
+    from ..errors import Fail
 
     _register_baselines()
     if plot:

@@ -12,7 +12,7 @@ FLOOR = 0.75  # issue: at most 0.75x mavgen's time
 
 
 def run(dialect: str | None, runs: int, as_json: bool) -> None:
-    from ..app import Fail
+    from ..errors import Fail
 
     dialect = benchmark_dialect(dialect)
     with tempfile.TemporaryDirectory(prefix="ttctl-bench-") as tmp:
