@@ -11,8 +11,8 @@ from typing import Any
 
 import pytest
 
-from ttctl.errors import Fail
 from ttctl.bench import linkbench
+from ttctl.errors import Fail
 from ttctl.link.model import load_profile
 
 PNG = b"\x89PNG\r\n\x1a\n"

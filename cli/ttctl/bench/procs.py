@@ -14,8 +14,8 @@ from pathlib import Path
 
 def benchmark_dialect(dialect: str | None) -> str:
     """The dialect given, or pymavlink's all.xml (353 messages in 17 files); Fail if missing."""
-    from ..errors import Fail
     from ..dialect.source import pymavlink_dialects_dir
+    from ..errors import Fail
 
     if dialect is None:
         base = pymavlink_dialects_dir()
