@@ -6,7 +6,9 @@ import os
 import shutil
 import subprocess
 import sys
+from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -44,3 +46,23 @@ def assert_no_traceback(proc: subprocess.CompletedProcess[str]) -> None:
 @pytest.fixture(scope="session")
 def pm_dialects() -> Path:
     return pymavlink_dialects()
+
+
+@pytest.fixture
+def start(tmp_path: Path) -> Iterator[Any]:
+    """Start a ttctl process (`start(name, *args)`, output in tmp_path/name.out|err); every one
+    is killed when the test ends."""
+    from e2e_lib import Proc
+
+    procs: list[Proc] = []
+
+    def go(name: str, *args: str) -> Proc:
+        p = Proc(tmp_path, name, list(args))
+        procs.append(p)
+        return p
+
+    try:
+        yield go
+    finally:
+        for p in procs:
+            p.close()

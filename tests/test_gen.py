@@ -198,7 +198,7 @@ def test_handler_skeleton_loads_into_the_plugin_system(py_out: Path) -> None:
     bound = {mid for mid in (m.MSG_ID for m in ttapi.ALL) if disp.handlers_for(mid)}
     assert bound == {ttapi.TtActionCommand.MSG_ID, ttapi.DjiPoseStamped.MSG_ID, ttapi.TtFileOffer.MSG_ID,
                      ttapi.TtFileStatus.MSG_ID, ttapi.TtFileData.MSG_ID, ttapi.TtFileRequest.MSG_ID,
-                     ttapi.TtLog.MSG_ID, ttapi.TtFileDataWide.MSG_ID, ttapi.TtVrPose.MSG_ID,
+                     ttapi.TtLog.MSG_ID, ttapi.TtFileDataWide.MSG_ID, ttapi.TtVrPose.MSG_ID, ttapi.TtFileReason.MSG_ID,
                      ttapi.TtVrController.MSG_ID}
     ctx = Context()
     assert disp.dispatch(ttapi.TtActionCommand(action=ttapi.TtAction.TT_ACTION_LAND), ctx) == 1

@@ -18,7 +18,7 @@ def frame_lists(draw: st.DrawFn) -> list[bytes]:
     kinds = st.sampled_from(["heartbeat", "ack", "command", "narrow", "wide"])
     frames = []
     for kind in draw(st.lists(kinds, min_size=1, max_size=40)):
-        blob = draw(st.binary(min_size=250, max_size=250))
+        blob = draw(st.binary(min_size=247, max_size=247))
         if kind == "heartbeat":
             msg: ttapi.Message = ttapi.Heartbeat(type=2, custom_mode=draw(st.integers(0, 2**32 - 1)))
         elif kind == "ack":
@@ -26,7 +26,7 @@ def frame_lists(draw: st.DrawFn) -> list[bytes]:
         elif kind == "command":
             msg = ttapi.TtActionCommand(command_id=draw(st.integers(0, 65535)), action=1, argument="x" * 40)
         elif kind == "narrow":
-            msg = ttapi.TtFileData(transfer_id=1, offset=draw(st.integers(0, 2**32 - 1)), data=blob[:83])
+            msg = ttapi.TtFileData(transfer_id=1, offset=draw(st.integers(0, 2**32 - 1)), data=blob[:80])
         else:
             msg = ttapi.TtFileDataWide(transfer_id=1, offset=draw(st.integers(0, 2**32 - 1)), data=blob)
         frames.append(enc.encode(msg))
@@ -97,11 +97,11 @@ def test_flush_gives_up_every_carry_its_replay_begins() -> None:
     enc = ttapi.Encoder(sysid=1, compid=240)
     frames = [enc.encode(m) for m in (
         ttapi.Heartbeat(type=2),
-        ttapi.TtFileDataWide(transfer_id=1, offset=1, data=bytes(range(250))),
-        ttapi.TtFileData(transfer_id=1, offset=2, data=b"\x01" * 83),
-        ttapi.TtFileDataWide(transfer_id=1, offset=3, data=bytes(range(250))),
+        ttapi.TtFileDataWide(transfer_id=1, offset=1, data=bytes(range(247))),
+        ttapi.TtFileData(transfer_id=1, offset=2, data=b"\x01" * 80),
+        ttapi.TtFileDataWide(transfer_id=1, offset=3, data=bytes(range(247))),
         ttapi.TtCommandAck(command_id=7, result=2, progress=100),
-        ttapi.TtFileData(transfer_id=1, offset=4, data=b"\x02" * 83),
+        ttapi.TtFileData(transfer_id=1, offset=4, data=b"\x02" * 80),
         ttapi.Heartbeat(type=3),
     )]
     packets, spans = layout(frames)
@@ -118,7 +118,7 @@ def test_a_new_long_frame_gives_up_the_carry_its_replay_begins() -> None:
     enc = ttapi.Encoder(sysid=1, compid=240)
 
     def wide() -> ttapi.Message:
-        return ttapi.TtFileDataWide(transfer_id=1, offset=0, data=b"\x01" * 250)
+        return ttapi.TtFileDataWide(transfer_id=1, offset=0, data=b"\x01" * 247)
 
     def cmd() -> ttapi.Message:
         return ttapi.TtActionCommand(command_id=0, action=1, argument="x" * 40)
@@ -127,7 +127,7 @@ def test_a_new_long_frame_gives_up_the_carry_its_replay_begins() -> None:
         return ttapi.Heartbeat(type=2)
 
     frames = [enc.encode(m) for m in (cmd(), wide(), hb(), wide(), hb(), wide(), hb(), cmd(), wide(),
-                                      ttapi.TtFileData(transfer_id=1, offset=0, data=b"\x01" * 83), hb(), cmd())]
+                                      ttapi.TtFileData(transfer_id=1, offset=0, data=b"\x01" * 80), hb(), cmd())]
     packets, spans = layout(frames)
     lost = {0, 1, 4, 5, 7, 8, 11}
     assert spans[6] == {9} and not spans[6] & lost  # the heartbeat after the third wide frame's tail
@@ -138,8 +138,8 @@ def test_a_packet_of_whole_frames_is_not_a_continuation_even_if_the_crc_agrees()
     """Found by hypothesis: the middle packet of a long frame is lost and the next packet (a
     frame of its own) fills exactly what is missing. The offset below is one of the 1 in 65536
     for which that false assembly passes the CRC; the packet's own frame must still win."""
-    wide = ttapi.TtFileDataWide(transfer_id=1, offset=12115, data=bytes(range(1, 251))).pack(0, 1, 240)
-    narrow = ttapi.TtFileData(transfer_id=1, offset=5, data=b"\x07" * 83).pack(1, 1, 240)
+    wide = ttapi.TtFileDataWide(transfer_id=1, offset=15619, data=bytes(range(1, 248))).pack(0, 1, 240)
+    narrow = ttapi.TtFileData(transfer_id=1, offset=5, data=b"\x07" * 80).pack(1, 1, 240)
     packets, spans = layout([wide, narrow])
     assert [len(p) for p in packets] == [100, 100, 67, 100]
     assert ttapi.decode(packets[0] + packets[2] + packets[3]).get_seq() == 0  # the chance match

@@ -5,131 +5,17 @@ from __future__ import annotations
 
 import contextlib
 import json
-import os
-import random
 import re
 import signal
 import socket
 import subprocess
 import time
-from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
 
-from conftest import assert_no_traceback, run_ttctl, ttctl_cmd
-
-LOCAL = "127.0.0.1"
-SIZE = 64 * 1024
-
-
-def free_port(kind: int = socket.SOCK_DGRAM) -> int:
-    with socket.socket(socket.AF_INET, kind) as s:
-        s.bind((LOCAL, 0))
-        return s.getsockname()[1]
-
-
-class Proc:
-    """A ttctl process with its output in files (no pipe to fill up)."""
-
-    def __init__(self, folder: Path, name: str, args: list[str]) -> None:
-        self.name = name
-        self.out_path = folder / f"{name}.out"
-        self.err_path = folder / f"{name}.err"
-        self._out = open(self.out_path, "w")  # noqa: SIM115 - closed in close()
-        self._err = open(self.err_path, "w")  # noqa: SIM115
-        self.p = subprocess.Popen(ttctl_cmd() + args, stdout=self._out, stderr=self._err, cwd=folder)
-
-    @property
-    def stdout(self) -> str:
-        return self.out_path.read_text()
-
-    @property
-    def stderr(self) -> str:
-        return self.err_path.read_text()
-
-    def wait_for(self, text: str, timeout: float = 15.0, where: str = "stderr") -> None:
-        end = time.monotonic() + timeout
-        while time.monotonic() < end:
-            if text in (self.stderr if where == "stderr" else self.stdout):
-                return
-            if self.p.poll() is not None:
-                break
-            time.sleep(0.02)
-        raise AssertionError(f"{self.name}: no {text!r} on {where} (exit {self.p.poll()}):\n"
-                             f"{self.stdout}\n{self.stderr}")
-
-    def wait(self, timeout: float = 15.0) -> int:
-        try:
-            return self.p.wait(timeout)
-        except subprocess.TimeoutExpired:
-            self.kill()
-            raise AssertionError(f"{self.name} did not exit in {timeout} s:\n{self.stdout}\n{self.stderr}") from None
-
-    def signal(self, sig: int) -> None:
-        if self.p.poll() is None:
-            self.p.send_signal(sig)
-
-    def kill(self) -> None:
-        if self.p.poll() is None:
-            self.p.kill()
-            self.p.wait(5)
-
-    def close(self) -> None:
-        self.kill()
-        self._out.close()
-        self._err.close()
-
-
-Start = Callable[..., Proc]
-
-
-@pytest.fixture
-def start(tmp_path: Path) -> Iterator[Start]:
-    procs: list[Proc] = []
-
-    def go(name: str, *args: str) -> Proc:
-        p = Proc(tmp_path, name, list(args))
-        procs.append(p)
-        return p
-
-    try:
-        yield go
-    finally:
-        for p in procs:
-            p.close()
-
-
-def data_file(folder: Path, name: str, size: int = SIZE, seed: int = 1) -> Path:
-    path = folder / name
-    path.write_bytes(random.Random(seed).randbytes(size))
-    return path
-
-
-def receiver(start: Start, tmp: Path, spec: str, *extra: str, name: str = "recv") -> Proc:
-    p = start(name, "recv-file", "--listen", spec, "--dir", str(tmp / "inbox"), *extra)
-    p.wait_for("receiving into")
-    return p
-
-
-def relay(start: Start, listen: int, to: int, *extra: str) -> Proc:
-    p = start("relay", "link", "relay", "--listen", f"udp:{LOCAL}:{listen}", "--to", f"udp:{LOCAL}:{to}", *extra)
-    p.wait_for("relay: udpin")
-    return p
-
-
-def send(*args: str, timeout: float = 60, cwd: Path | None = None) -> tuple[subprocess.CompletedProcess[str], dict]:
-    proc = run_ttctl("send-file", *args, "--json", timeout=timeout, cwd=cwd)
-    assert_no_traceback(proc)
-    report = json.loads(proc.stdout) if proc.stdout.strip() else {}
-    return proc, report
-
-
-def one_line(text: str) -> str:
-    lines = text.strip().splitlines()
-    assert len(lines) == 1, text
-    return lines[0]
-
+from conftest import assert_no_traceback, run_ttctl
+from e2e_lib import LOCAL, SIZE, Start, data_file, free_port, one_line, receiver, relay, send
 
 # -- delivery ----------------------------------------------------------------------------------
 
@@ -236,22 +122,28 @@ def test_refusals(tmp_path: Path, start: Start) -> None:
     to = f"udpout:{LOCAL}:{port}"
     recv = receiver(start, tmp_path, f"udpin:{LOCAL}:{port}")
 
+    # a name no receiver would take: refused here, before anything is sent, in the receiver's words
     proc, r = send(str(a), "--to", to, "--name", "../evil.bin")
-    assert proc.returncode == 1
-    assert one_line(proc.stderr) == ("ttctl: error: refused by 1/240: name has an empty, '.' or '..' component")
-    assert r["ok"] is False and r["code"] == "REFUSED_NAME"
-    assert "refused ../evil.bin from 255/190: name has an empty, '.' or '..' component" in recv.stdout
+    assert proc.returncode == 2 and r == {}
+    assert one_line(proc.stderr) == ("ttctl: error: the name '../evil.bin' would be refused: the name has an empty, "
+                                     "'.' or '..' component")
 
     proc, r = send(str(a), "--to", to)
     assert proc.returncode == 0 and r["ok"], proc.stderr
+    proc, r = send(str(a), "--to", to)  # the very same file again: verified there, nothing sent
+    assert proc.returncode == 0 and r["ok"] and r["nothing_sent"] and r["bytes_sent"] == 0, r
     proc, r = send(str(other), "--to", to, "--name", "a.bin")
     assert proc.returncode == 1 and r["code"] == "REFUSED_EXISTS"
-    assert one_line(proc.stderr).startswith("ttctl: error: refused by 1/240: a.bin exists there")
+    assert r["message"] == "a.bin exists and overwriting is not allowed here"  # the receiver's own reason
+    assert one_line(proc.stderr) == ("ttctl: error: refused by 1/240: a.bin exists and overwriting is not allowed "
+                                     "here (to replace it: --overwrite here, and a receiver started with --overwrite)")
+    assert r["bytes_sent"] == 0  # refused at the offer
     proc, r = send(str(other), "--to", to, "--name", "a.bin", "--overwrite")  # the receiver does not allow it
     assert proc.returncode == 1 and r["code"] == "REFUSED_EXISTS"
     assert (tmp_path / "inbox" / "a.bin").read_bytes() == a.read_bytes()
     assert "a.bin exists and overwriting is not allowed here" in recv.stdout
     assert not list((tmp_path / "inbox").glob("*evil*")) and not (tmp_path / "evil.bin").exists()
+    assert "evil" not in recv.stdout
 
     recv.signal(signal.SIGTERM)
     assert recv.wait() == 0
@@ -311,7 +203,7 @@ def test_download_with_from_and_serve(tmp_path: Path, start: Start) -> None:
 
     proc, r = send("nope.bin", "--from", f"udpout:{LOCAL}:{port}", "--dir", str(dl))
     assert proc.returncode == 1 and r["code"] == "NOT_FOUND"
-    assert one_line(proc.stderr) == "ttctl: error: 1/240 has no file 'nope.bin' to send"
+    assert one_line(proc.stderr) == "ttctl: error: not found at 1/240: there is no nope.bin in the served folder"
 
     recv.wait_for("served c.bin", where="stdout")
     assert "serving c.bin (20000 bytes) to 255/190" in recv.stdout
@@ -352,7 +244,7 @@ def test_bad_input_is_one_line(tmp_path: Path) -> None:
     to = f"udpout:{LOCAL}:9"
     cases = [
         (["send-file", str(tmp_path / "missing.bin"), "--to", to], "missing.bin: No such file or directory"),
-        (["send-file", str(tmp_path), "--to", to], "is a directory"),
+        (["send-file", str(tmp_path), "--to", to], "is a directory, not a regular file"),
         (["send-file", str(src), "--to", "bogus"], "bad endpoint 'bogus'"),
         (["send-file", str(src), "--to", "udpout:127.0.0.1:99999"], "port must be in 1..65535"),
         (["send-file", str(src)], "give --to ENDPOINT"),
@@ -389,4 +281,4 @@ def test_bad_input_is_one_line(tmp_path: Path) -> None:
             assert line.startswith("ttctl: error: ") and want in line, (args, line)
     finally:
         busy.close()
-    assert not (tmp_path / "in").exists() or os.listdir(tmp_path / "in") == []
+    assert not (tmp_path / "in").exists()  # no refusal left a directory behind

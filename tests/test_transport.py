@@ -82,35 +82,46 @@ def test_kinds_can_be_restricted() -> None:
 
 # -- UDP ---------------------------------------------------------------------------------------
 
-def test_udpin_answers_the_address_it_heard_from() -> None:
+def test_udpin_answers_only_confirmed_peers_and_every_one_of_them() -> None:
+    """Datagrams alone never make a peer (garbage from anywhere moves nothing); an address the
+    layer above confirmed (it sent a valid frame) is answered, and so is every other one."""
     async def main() -> None:
         t = UdpTransport(parse_spec(f"udpin:{LOCAL}:0"))
-        got: list[bytes] = []
-        t.on_receive = got.append
+        got: list[tuple[bytes, object]] = []
+        notes: list[str] = []
+        t.on_receive = lambda data, source: got.append((data, source))
+        t.log = notes.append
         await t.open()
         port = int(t.local.rsplit(":", 1)[1])
         assert t.describe() == f"udpin:{LOCAL}:{port}"
         assert not t.send(b"nobody yet")  # nobody heard: nowhere to send
         assert t.stats.unsent == 1
-        a = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-        b = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        a, b, c = (socket.socket(socket.AF_INET, socket.SOCK_DGRAM) for _ in range(3))
         try:
-            for s in (a, b):
+            for s in (a, b, c):
                 s.bind((LOCAL, 0))
-                s.settimeout(2.0)
+                s.settimeout(0.5)
             a.sendto(b"from a", (LOCAL, port))
             await _until(lambda: len(got) == 1)
+            assert got[0] == (b"from a", a.getsockname())
+            assert not t.send(b"unconfirmed") and t.peer is None
+            t.confirm(a.getsockname(), {(255, 190)})
             assert t.send(b"to a")
             assert a.recv(200) == b"to a"
             b.sendto(b"from b", (LOCAL, port))
-            await _until(lambda: len(got) == 2)
-            assert t.send(b"to b")
-            assert b.recv(200) == b"to b"
-            assert got == [b"from a", b"from b"]
-            assert t.peer == f"{LOCAL}:{b.getsockname()[1]}"
+            c.sendto(b"garbage", (LOCAL, port))
+            await _until(lambda: len(got) == 3)
+            t.confirm(b.getsockname(), {(255, 190)})  # the same ids from another process: both are answered
+            t.confirm(a.getsockname(), {(255, 190)})
+            assert t.send(b"to all")
+            assert a.recv(200) == b"to all" and b.recv(200) == b"to all"
+            with pytest.raises(TimeoutError):
+                c.recv(200)
+            assert notes == [f"answering {LOCAL}:{a.getsockname()[1]} (255/190)",
+                             f"answering {LOCAL}:{b.getsockname()[1]} (255/190)"]  # once per new peer
         finally:
-            a.close()
-            b.close()
+            for s in (a, b, c):
+                s.close()
             t.close()
 
     asyncio.run(main())
@@ -123,7 +134,7 @@ def test_udpout_sends_and_hears_replies() -> None:
         server.settimeout(2.0)
         t = UdpTransport(parse_spec(f"udpout:{LOCAL}:{server.getsockname()[1]}"))
         got: list[bytes] = []
-        t.on_receive = got.append
+        t.on_receive = lambda data, source: got.append(data)
         await t.open()
         try:
             assert t.send(b"hello")
@@ -142,7 +153,7 @@ def test_oversize_datagrams_are_dropped_and_counted() -> None:
     async def main() -> None:
         t = UdpTransport(parse_spec(f"udpin:{LOCAL}:0"))
         got: list[bytes] = []
-        t.on_receive = got.append
+        t.on_receive = lambda data, source: got.append(data)
         await t.open()
         port = int(t.local.rsplit(":", 1)[1])
         with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
@@ -154,7 +165,7 @@ def test_oversize_datagrams_are_dropped_and_counted() -> None:
         assert got == [b"z" * DTT_MTU]
         assert t.stats.oversize == 2
         assert t.stats.rx_packets == 1
-        assert t.peer is not None
+        assert t.peer is None  # datagrams alone never make a peer
 
     asyncio.run(main())
 

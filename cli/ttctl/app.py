@@ -207,6 +207,25 @@ def bench_link(
         raise Fail(str(e)) from None
 
 
+@bench_app.command("integrity")
+def bench_integrity(
+    rounds: Annotated[int, typer.Option("--rounds", help="Rounds per topology.", min=1, max=100_000)] = 50,
+    seed: Annotated[int, typer.Option("--seed", help="Random seed (the same seed, the same plan).")] = 1,
+    topology: Annotated[str, typer.Option("--topology", help="direct, relay (lossy) or both.")] = "both",
+    strangers: Annotated[bool, typer.Option("--strangers/--no-strangers",
+                                            help="Garbage datagrams from other ports throughout.")] = True,
+    keep: Annotated[Path | None, typer.Option("--keep", help="Keep every process's output in this (new or empty) "
+                                                             "folder.", show_default=False)] = None,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+) -> None:
+    """Soak send-file's promise on real processes: rounds of concurrent senders with equal ids, kills
+    and restarts of senders and the receiver, relay loss, strangers; exit 1 if any sender exited 0
+    without the receiver holding its file, or a partial file was ever visible under its name."""
+    from .bench.integrity import main as integrity_main
+
+    raise typer.Exit(integrity_main(rounds, seed, topology, strangers, keep, json_out))
+
+
 @app.command("recv-file")
 def recv_file_cmd(
     listen: Annotated[str, typer.Option("--listen", help="Endpoint: udpin:HOST:PORT (udp: means udpin), "
@@ -240,7 +259,7 @@ def recv_file_cmd(
 
     Example: ttctl recv-file --listen udpin:0.0.0.0:14560 --dir inbox --profile m100
     """
-    from .sendrecv import RecvOptions, recv_file
+    from .commands.recv_file import RecvOptions, recv_file
 
     code = recv_file(RecvOptions(listen, folder, overwrite, max_file, max_dir, serve, count, sysid, compid, rate,
                                  profile, distance, json_out))
@@ -286,7 +305,7 @@ def send_file_cmd(
 
     Example: ttctl send-file photo.jpg --to udpout:192.168.1.20:14560 --profile m100 --distance 50
     """
-    from .sendrecv import SendOptions, send_file
+    from .commands.send_file import SendOptions, send_file
 
     code = send_file(SendOptions(file, to, from_, name, overwrite, json_out, rate, profile, distance, sysid, compid,
                                  target_sysid, target_compid, timeout, folder))
@@ -333,7 +352,7 @@ def link_relay(
     ttctl recv-file --listen udpin:127.0.0.1:14560 --dir inbox --profile m100
     ttctl send-file FILE --to udpout:127.0.0.1:14550 --profile m100
     """
-    from .sendrecv import RelayOptions, relay
+    from .commands.relay import RelayOptions, relay
 
     code = relay(RelayOptions(listen, to, profile, distance, loss, loss_model, corrupt, duplicate, reorder, seed,
                               rate, stats_interval, outage or []))

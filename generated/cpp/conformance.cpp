@@ -3768,7 +3768,7 @@ struct Fields<mav::TtFileOffer> {
 
 template <>
 struct Fields<mav::TtFileStatus> {
-    static constexpr std::array<FieldSpec, 11> value{ {
+    static constexpr std::array<FieldSpec, 12> value{ {
         FIELD(mav::TtFileStatus, target_system),
         FIELD(mav::TtFileStatus, target_component),
         FIELD(mav::TtFileStatus, transfer_id),
@@ -3779,6 +3779,7 @@ struct Fields<mav::TtFileStatus> {
         FIELD(mav::TtFileStatus, last_offset),
         FIELD(mav::TtFileStatus, hold_ms),
         FIELD(mav::TtFileStatus, range_count),
+        FIELD(mav::TtFileStatus, meta_check),
         FIELD(mav::TtFileStatus, ranges),
     } };
 };
@@ -3916,6 +3917,17 @@ struct Fields<mav::TtVrController> {
         FIELD(mav::TtVrController, pad_x),
         FIELD(mav::TtVrController, pad_y),
         FIELD(mav::TtVrController, buttons),
+    } };
+};
+
+template <>
+struct Fields<mav::TtFileReason> {
+    static constexpr std::array<FieldSpec, 5> value{ {
+        FIELD(mav::TtFileReason, target_system),
+        FIELD(mav::TtFileReason, target_component),
+        FIELD(mav::TtFileReason, transfer_id),
+        FIELD(mav::TtFileReason, result),
+        FIELD(mav::TtFileReason, text),
     } };
 };
 
@@ -4593,6 +4605,9 @@ bool decode_fields(const mav::Frame& f, std::string& o)
     case mav::TtVrController::MSG_ID:
         decode_as<mav::TtVrController>(f, o);
         return true;
+    case mav::TtFileReason::MSG_ID:
+        decode_as<mav::TtFileReason>(f, o);
+        return true;
     default:
         return false;
     }
@@ -5047,6 +5062,8 @@ std::string encode_fields(std::uint32_t msgid, const Json& req, const Header& h)
         return encode_as<mav::TtVrPose>(req, h);
     case mav::TtVrController::MSG_ID:
         return encode_as<mav::TtVrController>(req, h);
+    case mav::TtFileReason::MSG_ID:
+        return encode_as<mav::TtFileReason>(req, h);
     default:
         return error_json("unknown msgid " + std::to_string(msgid));
     }

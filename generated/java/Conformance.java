@@ -813,6 +813,9 @@ public final class Conformance {
             case 50012:
                 fields50012((ttctl.ttapi.msg.TtVrController) m, sb);
                 break;
+            case 50013:
+                fields50013((ttctl.ttapi.msg.TtFileReason) m, sb);
+                break;
             default:
                 throw new IllegalStateException("no fields for msgid " + m.msgId());
         }
@@ -5002,6 +5005,8 @@ public final class Conformance {
         sb.append(m.hold_ms);
         sb.append(",\"range_count\":");
         sb.append(m.range_count);
+        sb.append(",\"meta_check\":");
+        sb.append(m.meta_check);
         sb.append(",\"ranges\":");
         Json.longs(sb, m.ranges);
     }
@@ -5177,6 +5182,19 @@ public final class Conformance {
         Json.f32(sb, m.pad_y);
         sb.append(",\"buttons\":");
         sb.append(m.buttons);
+    }
+
+    private static void fields50013(ttctl.ttapi.msg.TtFileReason m, StringBuilder sb) {
+        sb.append("\"target_system\":");
+        sb.append(m.target_system);
+        sb.append(",\"target_component\":");
+        sb.append(m.target_component);
+        sb.append(",\"transfer_id\":");
+        sb.append(m.transfer_id);
+        sb.append(",\"result\":");
+        sb.append(m.result);
+        sb.append(",\"text\":");
+        Json.text(sb, m.text);
     }
 
     // --- E ---------------------------------------------------------------------------------
@@ -5668,6 +5686,8 @@ public final class Conformance {
                 return build50011(fields);
             case 50012:
                 return build50012(fields);
+            case 50013:
+                return build50013(fields);
             default:
                 throw new IllegalArgumentException("unknown msgid " + msgId);
         }
@@ -13473,10 +13493,10 @@ public final class Conformance {
                     m.target_component = (int) Json.integer(v, 0, 255, "target_component");
                     break;
                 case "transfer_id":
-                    m.transfer_id = (int) Json.integer(v, 0, 255, "transfer_id");
+                    m.transfer_id = Json.integer(v, 0, 4294967295L, "transfer_id");
                     break;
                 case "request_id":
-                    m.request_id = (int) Json.integer(v, 0, 255, "request_id");
+                    m.request_id = Json.integer(v, 0, 4294967295L, "request_id");
                     break;
                 case "size":
                     m.size = Json.integer(v, 0, 4294967295L, "size");
@@ -13491,7 +13511,7 @@ public final class Conformance {
                     m.meta_offset = (int) Json.integer(v, 0, 255, "meta_offset");
                     break;
                 case "meta":
-                    m.meta = Json.u8s(v, 77, "meta");
+                    m.meta = Json.u8s(v, 71, "meta");
                     break;
                 default:
                     throw new IllegalArgumentException("TT_FILE_OFFER has no field " + Json.show(e.getKey()));
@@ -13512,7 +13532,7 @@ public final class Conformance {
                     m.target_component = (int) Json.integer(v, 0, 255, "target_component");
                     break;
                 case "transfer_id":
-                    m.transfer_id = (int) Json.integer(v, 0, 255, "transfer_id");
+                    m.transfer_id = Json.integer(v, 0, 4294967295L, "transfer_id");
                     break;
                 case "result":
                     m.result = (int) Json.integer(v, 0, 255, "result");
@@ -13535,8 +13555,11 @@ public final class Conformance {
                 case "range_count":
                     m.range_count = (int) Json.integer(v, 0, 255, "range_count");
                     break;
+                case "meta_check":
+                    m.meta_check = Json.integer(v, 0, 4294967295L, "meta_check");
+                    break;
                 case "ranges":
-                    m.ranges = Json.longs(v, 16, 0, 4294967295L, "ranges");
+                    m.ranges = Json.longs(v, 14, 0, 4294967295L, "ranges");
                     break;
                 default:
                     throw new IllegalArgumentException("TT_FILE_STATUS has no field " + Json.show(e.getKey()));
@@ -13551,13 +13574,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "transfer_id":
-                    m.transfer_id = (int) Json.integer(v, 0, 255, "transfer_id");
+                    m.transfer_id = Json.integer(v, 0, 4294967295L, "transfer_id");
                     break;
                 case "offset":
                     m.offset = Json.integer(v, 0, 4294967295L, "offset");
                     break;
                 case "data":
-                    m.data = Json.u8s(v, 83, "data");
+                    m.data = Json.u8s(v, 80, "data");
                     break;
                 default:
                     throw new IllegalArgumentException("TT_FILE_DATA has no field " + Json.show(e.getKey()));
@@ -13578,7 +13601,7 @@ public final class Conformance {
                     m.target_component = (int) Json.integer(v, 0, 255, "target_component");
                     break;
                 case "request_id":
-                    m.request_id = (int) Json.integer(v, 0, 255, "request_id");
+                    m.request_id = Json.integer(v, 0, 4294967295L, "request_id");
                     break;
                 case "name_length":
                     m.name_length = (int) Json.integer(v, 0, 255, "name_length");
@@ -13767,13 +13790,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "transfer_id":
-                    m.transfer_id = (int) Json.integer(v, 0, 255, "transfer_id");
+                    m.transfer_id = Json.integer(v, 0, 4294967295L, "transfer_id");
                     break;
                 case "offset":
                     m.offset = Json.integer(v, 0, 4294967295L, "offset");
                     break;
                 case "data":
-                    m.data = Json.u8s(v, 250, "data");
+                    m.data = Json.u8s(v, 247, "data");
                     break;
                 default:
                     throw new IllegalArgumentException("TT_FILE_DATA_WIDE has no field " + Json.show(e.getKey()));
@@ -13882,6 +13905,33 @@ public final class Conformance {
                     break;
                 default:
                     throw new IllegalArgumentException("TT_VR_CONTROLLER has no field " + Json.show(e.getKey()));
+            }
+        }
+        return m;
+    }
+
+    private static MavlinkMessage build50013(Map<?, ?> fields) {
+        ttctl.ttapi.msg.TtFileReason m = new ttctl.ttapi.msg.TtFileReason();
+        for (Map.Entry<?, ?> e : fields.entrySet()) {
+            Object v = e.getValue();
+            switch ((String) e.getKey()) {
+                case "target_system":
+                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    break;
+                case "target_component":
+                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    break;
+                case "transfer_id":
+                    m.transfer_id = Json.integer(v, 0, 4294967295L, "transfer_id");
+                    break;
+                case "result":
+                    m.result = (int) Json.integer(v, 0, 255, "result");
+                    break;
+                case "text":
+                    m.text = Json.text(v, 80, "text");
+                    break;
+                default:
+                    throw new IllegalArgumentException("TT_FILE_REASON has no field " + Json.show(e.getKey()));
             }
         }
         return m;

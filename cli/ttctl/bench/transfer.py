@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import os
+import random
 import statistics
 import tempfile
 from collections.abc import Callable
@@ -24,7 +25,7 @@ from ..link.model import Channel, Impairments, Profile, load_profile
 from ..link.sim import Simulation
 from ..proto.endpoint import Endpoint
 from ..proto.storage import BytesSource, ReceiveDir
-from ..proto.transfer import NARROW, NARROW_FRAME, TransferConfig
+from ..proto.transfer import NARROW, NARROW_FRAME, WIDE, WIDE_FRAME, TransferConfig
 
 TABLET = (255, 190)
 ONBOARD = (1, 240)
@@ -87,9 +88,9 @@ def run_ttctl(profile: Profile, distance: float, case: Case, data: bytes, seed: 
 
         store = ReceiveDir(d)
         cfg = TransferConfig()
-        tablet = Endpoint(*TABLET, rate_Bps=pace(up), config=cfg,
+        tablet = Endpoint(*TABLET, rate_Bps=pace(up), config=cfg, rng=random.Random(seed),
                           receive_dir=store if case.direction == "down" else None, on_event=on_event)
-        onboard = Endpoint(*ONBOARD, rate_Bps=pace(down), config=cfg,
+        onboard = Endpoint(*ONBOARD, rate_Bps=pace(down), config=cfg, rng=random.Random(seed + 1),
                            receive_dir=store if case.direction == "up" else None, on_event=on_event)
         sender, target = (tablet, ONBOARD) if case.direction == "up" else (onboard, TABLET)
         s = sender.send_file("bench.bin", target, source=BytesSource(data, "bench.bin"))
@@ -132,15 +133,13 @@ def command_latency(profile: Profile, distance: float, busy: bool, count: int = 
                     interval: float = 2.0) -> list[float]:
     """Round trips of TT_ACTION_COMMAND -> TT_COMMAND_ACK, idle or while the tablet uploads a
     file, issued every `interval` seconds (at a random phase within it)."""
-    import random
-
     rng = random.Random(seed)
     case = Case("up", 0.0, "random")
     up, down = channels(profile, distance, case, seed)
     lat: list[float] = []
     with tempfile.TemporaryDirectory(prefix="ttctl-bench-") as d:
-        tablet = Endpoint(*TABLET, rate_Bps=pace(up))
-        onboard = Endpoint(*ONBOARD, rate_Bps=pace(down), receive_dir=ReceiveDir(d))
+        tablet = Endpoint(*TABLET, rate_Bps=pace(up), rng=random.Random(seed))
+        onboard = Endpoint(*ONBOARD, rate_Bps=pace(down), receive_dir=ReceiveDir(d), rng=random.Random(seed + 1))
         sim = Simulation(tablet, onboard, up, down)
         size = int(profile.capacity_Bps("up", distance) * interval * (count + 5))
         if busy:
@@ -213,7 +212,7 @@ def run(profile_name: str, distance: float, file_bytes: int, seeds: int, protoco
                {"case": "during_upload", "p50_ms": round(1000 * percentile(busy, 0.5), 1),
                 "p95_ms": round(1000 * percentile(busy, 0.95), 1), "count": len(busy)}]
     report = {"profile": profile.name, "distance_m": distance, "file_bytes": file_bytes, "seeds": seed_list,
-              "frame_efficiency": {"narrow": NARROW / NARROW_FRAME, "wide": 250 / 267},
+              "frame_efficiency": {"narrow": NARROW / NARROW_FRAME, "wide": WIDE / WIDE_FRAME},
               "rows": [asdict(r) for r in rows], "latency": latency, "checks": checks(rows, latency)}
     if plot:
         from .plots import plot_transfer
@@ -233,7 +232,7 @@ def checks(rows: list[Row], latency: list[dict[str, Any]]) -> list[dict[str, Any
         need = 0.88 if r.loss == 0 else 0.80 * (1 - r.loss)
         out.append({"check": f"efficiency {r.direction} {r.loss:.0%} {r.loss_model}", "value": r.efficiency,
                     "floor": round(need, 4), "ok": r.ok and r.efficiency >= need})
-        best = max(NARROW / NARROW_FRAME * (1 - r.loss), 250 / 267 * _wide_survival(r.loss)) / (1 - r.loss) \
+        best = max(NARROW / NARROW_FRAME * (1 - r.loss), WIDE / WIDE_FRAME * _wide_survival(r.loss)) / (1 - r.loss) \
             if r.loss < 1 else 1.0
         limit = 1.15 * r.file_bytes / (r.capacity_Bps * (1 - r.loss) * best)
         out.append({"check": f"time {r.direction} {r.loss:.0%} {r.loss_model}", "value": r.seconds,

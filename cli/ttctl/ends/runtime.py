@@ -1,11 +1,13 @@
 """The asyncio driver of a sans-IO Endpoint over a transport, in real time.
 
 The clock is the event loop's (`loop.time()`). Received datagrams (or stream chunks) go to
-`Endpoint.receive` (or `receive_stream`) as they arrive; one task, the pump, sends every packet
+`Endpoint.receive` (or `receive_stream`) as they arrive, with where they came from; the
+senders of valid frames are confirmed to the transport, which answers only such peers. One
+task, the pump, sends every packet
 `Endpoint.poll` lets go, then sleeps until the endpoint's next wake-up (its pacer, a status, an
 offer retry, ...) or until something arrives, whichever is first. After a few packet times of
-silence with a long frame half received, it calls `Endpoint.flush` so that frames in the
-packets taken for it are not held back. It never spins: a wake-up time that produces nothing
+silence from a source with a long frame half received, it calls `Endpoint.flush` so that
+frames in the packets taken for it are not held back. It never spins: a wake-up time that produces nothing
 costs a millisecond's sleep, not a busy loop.
 """
 
@@ -13,7 +15,7 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
-from collections.abc import Callable
+from collections.abc import Callable, Hashable
 from dataclasses import dataclass
 from typing import Any
 
@@ -62,6 +64,7 @@ class Runner:
         self._last_now = 0.0
         self._loop: asyncio.AbstractEventLoop | None = None
         transport.on_receive = self._on_data
+        transport.on_close = endpoint.forget_source
 
     # -- the clock ------------------------------------------------------------------------------
     def now(self) -> float:
@@ -125,7 +128,7 @@ class Runner:
         return t.exception()
 
     # -- receiving ------------------------------------------------------------------------------
-    def _on_data(self, data: bytes) -> None:
+    def _on_data(self, data: bytes, source: Hashable = None) -> None:
         now = self.now()
         if self.last_rx is not None:
             self._gap = 0.9 * self._gap + 0.1 * min(1.0, now - self.last_rx)
@@ -134,16 +137,14 @@ class Runner:
         self.stats.bytes_in += len(data)
         try:
             if self.transport.stream:
-                self.ep.receive_stream(now, data)
+                ids = self.ep.receive_stream(now, data, source)
             else:
-                self.ep.receive(now, data)
+                ids = self.ep.receive(now, data, source)
+            if ids:
+                self.transport.confirm(source, ids)
         except Exception as e:  # a bug, not bad input (the parsers take anything): report it once
             self._error = self._error or e
         self.kick()
-
-    def _pending(self) -> bool:
-        rx = self.ep.stream_rx if self.transport.stream else self.ep.rx
-        return rx.pending > 0
 
     def _quiet(self) -> float:
         """Three packet times of the link (`quiet`, when the caller knows the rate) or of what
@@ -180,10 +181,11 @@ class Runner:
             if sent == 0:
                 self.stats.idle_wakeups += 1
             flush_at = None
-            if self.last_rx is not None and self._pending():
-                flush_at = self.last_rx + self._quiet()
+            since = self.ep.pending_since()
+            if since is not None:
+                flush_at = since + self._quiet()
                 if flush_at <= real:
-                    self.ep.flush(now)
+                    self.ep.flush(max(now, real), self._quiet())
                     self.stats.flushes += 1
                     continue  # send what the frames it released called for
             if sent >= BURST:

@@ -2,8 +2,10 @@
 
 Packets arriving on the listening side (the tablet's) go through the model's `up` Channel and
 are delivered to the other side after the modelled time, or lost, corrupted, duplicated or
-reordered; packets from the other side go through `down` and are sent to the address last
-heard on the listening side. The same Channel objects the virtual-time simulator uses, driven
+reordered; packets from the other side go through `down` and are sent to every peer of the
+listening side: the addresses that sent a valid frame there lately, as `validate` (given by
+the layer that knows frames) judges. Anything may go up, as anything may be put on DJI's
+link; garbage never becomes a destination. The same Channel objects the virtual-time simulator uses, driven
 by the event loop's clock with `call_at`; the model's time (outages included) counts from the
 moment the relay opens.
 """
@@ -12,7 +14,7 @@ from __future__ import annotations
 
 import asyncio
 import dataclasses
-from collections.abc import Callable
+from collections.abc import Callable, Hashable
 
 from .model import Channel, Impairments, Profile
 from .transport import Spec, UdpTransport
@@ -29,7 +31,8 @@ def with_rate(profile: Profile, rate_Bps: float) -> Profile:
 
 class Relay:
     def __init__(self, listen: Spec, to: Spec, profile: Profile, distance_m: float, impairments: Impairments,
-                 seed: int = 0, log: Callable[[str], None] | None = None) -> None:
+                 seed: int = 0, log: Callable[[str], None] | None = None,
+                 validate: Callable[[bytes, Hashable], set[tuple[int, int]]] | None = None) -> None:
         self.listen = listen
         self.to = to
         self.up = Channel(profile, "up", distance_m, dataclasses.replace(impairments), seed=seed * 2 + 1)
@@ -39,6 +42,7 @@ class Relay:
         self.b = UdpTransport(to, mtu=65535, log=log)
         self.a.on_receive = self._from_a
         self.b.on_receive = self._from_b
+        self.validate = validate
         self.started = 0.0
         self.undeliverable = 0  # down packets with nobody heard on the listening side yet
         self.in_flight = 0
@@ -58,10 +62,14 @@ class Relay:
         self.a.close()
         self.b.close()
 
-    def _from_a(self, data: bytes) -> None:
+    def _from_a(self, data: bytes, source: Hashable) -> None:
         self._carry(self.up, data, self._to_b)
+        if self.validate is not None:
+            ids = self.validate(data, source)
+            if ids:
+                self.a.confirm(source, ids)
 
-    def _from_b(self, data: bytes) -> None:
+    def _from_b(self, data: bytes, source: Hashable) -> None:
         self._carry(self.down, data, self._to_a)
 
     def _carry(self, ch: Channel, data: bytes, deliver: Callable[[bytes], None]) -> None:

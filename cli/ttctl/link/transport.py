@@ -2,7 +2,9 @@
 
 Specs are spelled as MAVLink tools (mavutil, MAVProxy) spell them:
 
-- `udpin:HOST:PORT`: bind HOST:PORT and listen; replies go to the address last heard from.
+- `udpin:HOST:PORT`: bind HOST:PORT and listen; what is sent goes to every peer address heard
+  from lately, where a peer is an address that sent at least one valid MAVLink frame (the
+  layer above says which: `confirm`). Garbage, from anywhere, never makes a peer.
 - `udpout:HOST:PORT`: send to HOST:PORT from an ephemeral port, and hear replies there.
 - `tcp:HOST:PORT`: connect to a TCP server (reconnecting if the connection drops).
 - `tcpin:HOST:PORT`: listen for TCP connections; what is sent goes to every connection.
@@ -21,8 +23,9 @@ import contextlib
 import errno
 import os
 import socket
-from collections.abc import Callable
-from dataclasses import dataclass
+from collections import OrderedDict
+from collections.abc import Callable, Hashable
+from dataclasses import dataclass, field
 
 KINDS = ("udpin", "udpout", "tcp", "tcpin")
 LISTENING = ("udpin", "tcpin")
@@ -30,6 +33,8 @@ DTT_MTU = 100
 STREAM_MTU = 280  # the longest MAVLink 2 frame: 10 + 255 + 2 + 13
 TCP_BUFFER_LIMIT = 256 * 1024  # a TCP client this far behind loses packets instead of growing our memory
 UDP_SOCKET_BUFFER = 1 << 20
+PEER_TIMEOUT = 60.0  # a udpin peer silent this long is no longer sent to
+MAX_PEERS = 16  # udpin peers kept (the least recently heard goes first)
 
 FORMS = "udpin:HOST:PORT, udpout:HOST:PORT, tcp:HOST:PORT or tcpin:HOST:PORT"
 
@@ -136,9 +141,22 @@ def _addr_text(addr: object) -> str:
     return str(addr)
 
 
+Receive = Callable[[bytes, Hashable], None]
+
+
+@dataclass
+class Peer:
+    """An address a udpin end answers: it sent a valid frame as one of `ids` at `last`."""
+
+    addr: tuple[str, int]
+    last: float
+    ids: set[tuple[int, int]] = field(default_factory=set)
+
+
 class Transport:
-    """What the runtime and the relay see of a link to another process. `on_receive(data)`
-    gets each datagram (UDP) or chunk of the byte stream (TCP)."""
+    """What the runtime and the relay see of a link to another process. `on_receive(data,
+    source)` gets each datagram (UDP, source the sender's address) or chunk of the byte stream
+    (TCP, source the connection); `on_close(source)` hears that a connection ended."""
 
     stream = False
 
@@ -147,7 +165,8 @@ class Transport:
         self.mtu = mtu
         self.log = log
         self.stats = TransportStats()
-        self.on_receive: Callable[[bytes], None] = lambda data: None
+        self.on_receive: Receive = lambda data, source: None
+        self.on_close: Callable[[Hashable], None] = lambda source: None
         self.local = ""  # the address we are bound to, once open
 
     async def open(self) -> None:
@@ -162,6 +181,10 @@ class Transport:
     @property
     def peer(self) -> str | None:
         return None
+
+    def confirm(self, source: Hashable, ids: set[tuple[int, int]]) -> None:
+        """Valid frames from (sysid, compid) `ids` came from `source` (a listening UDP end
+        answers only such sources)."""
 
     def describe(self) -> str:
         """The spec, with the port actually bound when it was 0."""
@@ -190,7 +213,8 @@ class UdpTransport(Transport):
     def __init__(self, spec: Spec, mtu: int = DTT_MTU, log: Callable[[str], None] | None = None) -> None:
         super().__init__(spec, mtu, log)
         self._tr: asyncio.DatagramTransport | None = None
-        self._peer: tuple[str, int] | None = None
+        self.peers: OrderedDict[tuple[str, int], Peer] = OrderedDict()
+        self.clock: Callable[[], float] = lambda: asyncio.get_running_loop().time()
 
     async def open(self) -> None:
         loop = asyncio.get_running_loop()
@@ -215,18 +239,35 @@ class UdpTransport(Transport):
         if len(data) > self.mtu:
             self.stats.oversize += 1  # DJI would refuse it: so do we
             return
-        if self.spec.kind == "udpin" and addr != self._peer:
-            if self._peer is not None:
-                self._note(f"now answering {_addr_text(addr)}")
-            self._peer = addr
         self.stats.rx_packets += 1
         self.stats.rx_bytes += len(data)
-        self.on_receive(data)
+        self.on_receive(data, addr)
+
+    def confirm(self, source: Hashable, ids: set[tuple[int, int]]) -> None:
+        if self.spec.kind != "udpin" or not isinstance(source, tuple) or not ids:
+            return
+        now = self.clock()
+        p = self.peers.get(source)
+        if p is None:
+            p = self.peers[source] = Peer(source, now)
+            who = ", ".join(f"{s}/{c}" for s, c in sorted(ids))
+            self._note(f"answering {_addr_text(source)} ({who})")
+            while len(self.peers) > MAX_PEERS:
+                self.peers.popitem(last=False)
+        else:
+            self.peers.move_to_end(source)
+        p.last = now
+        p.ids |= ids
+
+    def _live_peers(self) -> list[tuple[str, int]]:
+        now = self.clock()
+        return [a for a, p in self.peers.items() if now - p.last < PEER_TIMEOUT]
 
     @property
     def peer(self) -> str | None:
         if self.spec.kind == "udpin":
-            return _addr_text(self._peer) if self._peer else None
+            live = self._live_peers()
+            return ", ".join(_addr_text(a) for a in live) or None
         return str(self.spec)
 
     def send(self, data: bytes) -> bool:
@@ -235,10 +276,12 @@ class UdpTransport(Transport):
             self.stats.unsent += 1
             return False
         if self.spec.kind == "udpin":
-            if self._peer is None:
+            live = self._live_peers()
+            if not live:
                 self.stats.unsent += 1
                 return False
-            tr.sendto(data, self._peer)
+            for addr in live:
+                tr.sendto(data, addr)
         else:
             tr.sendto(data)
         self.stats.tx_packets += 1
@@ -265,7 +308,7 @@ class _Stream(asyncio.Protocol):
     def data_received(self, data: bytes) -> None:
         self.owner.stats.rx_packets += 1
         self.owner.stats.rx_bytes += len(data)
-        self.owner.on_receive(data)
+        self.owner.on_receive(data, self)
 
     def connection_lost(self, exc: Exception | None) -> None:
         self.owner._lost(self)
@@ -316,6 +359,7 @@ class TcpTransport(Transport):
     def _lost(self, client: _Stream) -> None:
         if client in self.clients:
             self.clients.remove(client)
+        self.on_close(client)
         if self._closed:
             return
         self._note(f"connection {'from' if self.spec.kind == 'tcpin' else 'to'} {client.name} closed")
@@ -379,5 +423,5 @@ def make_transport(spec: Spec, log: Callable[[str], None] | None = None, mtu: in
     return TcpTransport(spec, mtu or STREAM_MTU, log)
 
 
-__all__ = ["DTT_MTU", "KINDS", "STREAM_MTU", "Spec", "TcpTransport", "Transport", "TransportError", "TransportStats",
-           "UdpTransport", "make_transport", "parse_spec"]
+__all__ = ["DTT_MTU", "KINDS", "STREAM_MTU", "Peer", "Spec", "TcpTransport", "Transport", "TransportError",
+           "TransportStats", "UdpTransport", "make_transport", "parse_spec"]

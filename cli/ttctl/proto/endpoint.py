@@ -1,15 +1,20 @@
 """One end of the link, sans-IO: packets and the time in; packets to send, and when to wake up,
-out. It owns the packet receiver, the packet scheduler, file transfers (both directions,
+out. It owns the packet receivers, the packet scheduler, file transfers (both directions,
 several at once), downloads on request, and commands.
 
-Drive it with `receive(now, packet)`, `poll(now)` (the next packet to send, if the pacer lets
-one go) and `wakeup()`; the virtual-time simulator and the asyncio transport both do.
+Drive it with `receive(now, packet, source)`, `poll(now)` (the next packet to send, if the
+pacer lets one go) and `wakeup()`; the virtual-time simulator and the asyncio runner both do.
+`source` names where a packet came from (a UDP address, a TCP connection): each source has a
+packet receiver of its own, so that two peers' packets never mix in one frame.
 """
 
 from __future__ import annotations
 
-import itertools
-from collections.abc import Callable
+import os
+import random
+import stat
+from collections import OrderedDict
+from collections.abc import Callable, Hashable
 from pathlib import Path
 from typing import Any
 
@@ -18,31 +23,38 @@ from ttapi import TtFileResult as R
 
 from ..wire.packets import PacketReceiver
 from .commands import Command, CommandClient, CommandServer
+from .names import Refused, check_name, encoded
 from .ranges import RangeSet
+from .receiver import FileReceiver
 from .scheduler import BULK, CONTROL, TELEMETRY, Scheduler
-from .storage import FileSource, ReceiveDir, Refused, StorageError, check_name
-from .transfer import NARROW, WIDE, FileReceiver, FileSender, TransferConfig
+from .sender import FileSender
+from .storage import FileSource, ReceiveDir, StorageError, kind_of
+from .transfer import NARROW, REQUEST_PART, RESULT_TEXT, WIDE, TransferConfig, reason_fit, reason_text
 
 TARGETED = "target_system"
 STATUS_BYTES = 60  # typical TT_FILE_STATUS frame
-REQUEST_PART = 80
+MAX_SOURCES = 64  # packet receivers kept for distinct sources (the least recently heard goes first)
 
 
-class _Request:
+class Request:
     """A download we asked for."""
 
     def __init__(self, request_id: int, name: str, target: tuple[int, int], now: float,
                  config: TransferConfig) -> None:
         self.id = request_id
         self.name = name
-        self.raw = name.encode("utf-8")
+        self.raw = encoded(name)
         self.target = target
         self.due = now
         self.interval = config.offer_interval
         self.interval_max = config.offer_interval_max
         self.give_up = now + config.give_up_after
+        self.reason_wait = config.reason_wait
         self.answered = False
+        self.code: str | None = None  # NOT_FOUND, REQUEST_REFUSED, TIMEOUT when it failed
         self.error: str | None = None
+        self.reason: str | None = None
+        self._refusal: tuple[str, float] | None = None
         self.key: tuple[int, int, int] | None = None
 
     def messages(self) -> list[ttapi.Message]:
@@ -65,15 +77,19 @@ class Endpoint:
                  config: TransferConfig | None = None, signing: ttapi.Signing | None = None,
                  action: Callable[[ttapi.TtActionCommand], int] | None = None,
                  on_message: Callable[[float, Any], None] | None = None,
-                 on_event: Callable[[str, Any], None] | None = None, accept_commands: bool = True) -> None:
+                 on_event: Callable[[str, Any], None] | None = None, accept_commands: bool = True,
+                 unsolicited: bool = True, rng: random.Random | None = None) -> None:
         self.sysid = sysid
         self.compid = compid
         self.cfg = config or TransferConfig()
+        self.signing = signing
         self.encoder = ttapi.Encoder(sysid, compid, signing)
-        self.rx = PacketReceiver(signing=signing)
-        self.stream_rx = ttapi.Parser(signing=signing)  # for byte-stream links (TCP): no packet boundaries
+        self._rxs: OrderedDict[Hashable, PacketReceiver] = OrderedDict()
+        self._streams: OrderedDict[Hashable, ttapi.Parser] = OrderedDict()  # byte-stream links (TCP)
+        self._last_rx: dict[Hashable, float] = {}
         self.scheduler = Scheduler(mtu, rate_Bps)
-        self.receiver = (FileReceiver(receive_dir, sysid, compid, self.cfg, on_event=self._file_event)
+        self.receiver = (FileReceiver(receive_dir, sysid, compid, self.cfg, on_event=self._file_event,
+                                      unsolicited=unsolicited)
                          if receive_dir is not None else None)
         if self.receiver is not None and rate_Bps:
             # statuses go back over our own link: on a slow one, fewer of them
@@ -84,34 +100,65 @@ class Endpoint:
                 "status_tail_interval": max(self.cfg.status_tail_interval, 1.2 * STATUS_BYTES / rate_Bps)})
         self.serve_dir = Path(serve_dir).resolve() if serve_dir else None
         self.senders: dict[int, FileSender] = {}
-        self.requests: dict[int, _Request] = {}
+        self.requests: dict[int, Request] = {}
         self._served: dict[tuple[int, int, int], _ServedRequest] = {}
         self.commands = CommandClient(sysid, compid)
         self.server = CommandServer(sysid, compid, action) if accept_commands else None
         self.on_message = on_message
         self.on_event = on_event
-        self._ids = itertools.cycle(range(1, 256))
-        self._req_ids = itertools.cycle(range(1, 256))
+        # transfer and request ids are nonces: random, never reused by accident (seeded in simulations)
+        self._rng = rng or random.SystemRandom()
         self.now = 0.0
         self.ignored = 0
         self.peers: dict[tuple[int, int], float] = {}  # who we heard from, when
 
     # -- node interface -----------------------------------------------------------------------
-    def receive(self, now: float, packet: bytes) -> None:
+    def receive(self, now: float, packet: bytes, source: Hashable = None) -> set[tuple[int, int]]:
+        """A packet from `source`; returns the (sysid, compid) of every valid frame in it, so
+        that a transport learns who is behind an address only from what proves it."""
         self.now = now
-        for msg in self.rx.feed(packet):
-            self._handle(now, msg)
+        rx = self._rxs.get(source)
+        if rx is None:
+            rx = self._rxs[source] = PacketReceiver(signing=self.signing)
+            if len(self._rxs) > MAX_SOURCES:
+                old, _ = self._rxs.popitem(last=False)
+                self._last_rx.pop(old, None)
+        else:
+            self._rxs.move_to_end(source)
+        self._last_rx[source] = now
+        return self._handle_all(now, rx.feed(packet))
 
-    def receive_stream(self, now: float, data: bytes) -> None:
+    def receive_stream(self, now: float, data: bytes, source: Hashable = None) -> set[tuple[int, int]]:
         """Bytes from a stream link (TCP), where chunk boundaries mean nothing."""
         self.now = now
-        for msg in self.stream_rx.feed(data):
-            self._handle(now, msg)
+        parser = self._streams.get(source)
+        if parser is None:
+            parser = self._streams[source] = ttapi.Parser(signing=self.signing)
+            if len(self._streams) > MAX_SOURCES:
+                self._streams.popitem(last=False)
+        self._last_rx[source] = now
+        return self._handle_all(now, parser.feed(data))
 
-    def flush(self, now: float) -> None:
-        """The link has been quiet: give up on half-received long frames."""
-        for msg in self.rx.flush() + self.stream_rx.flush():
-            self._handle(now, msg)
+    def forget_source(self, source: Hashable) -> None:
+        """A connection closed: its half-received frame goes with it."""
+        self._rxs.pop(source, None)
+        self._streams.pop(source, None)
+        self._last_rx.pop(source, None)
+
+    def pending_since(self) -> float | None:
+        """When the quietest source holding half a frame last sent something (None: none does)."""
+        times = [self._last_rx.get(s, 0.0) for s, rx in self._rxs.items() if rx.pending]
+        times += [self._last_rx.get(s, 0.0) for s, p in self._streams.items() if p.pending]
+        return min(times) if times else None
+
+    def flush(self, now: float, quiet: float = 0.0) -> None:
+        """Sources quiet for `quiet` seconds: give up on their half-received long frames."""
+        for source, rx in list(self._rxs.items()):
+            if rx.pending and now - self._last_rx.get(source, 0.0) >= quiet:
+                self._handle_all(now, rx.flush())
+        for source, parser in list(self._streams.items()):
+            if parser.pending and now - self._last_rx.get(source, 0.0) >= quiet:
+                self._handle_all(now, parser.flush())
 
     def poll(self, now: float) -> bytes | None:
         self.now = now
@@ -122,7 +169,9 @@ class Endpoint:
         times = [t for t in (self.commands.deadline(),
                              self.receiver.deadline() if self.receiver else None) if t is not None]
         times += [t for s in self.senders.values() if (t := s.deadline(self.now)) is not None]
-        times += [r.due for r in self.requests.values() if not r.answered]
+        for r in self.requests.values():
+            if not r.answered:
+                times.append(min(r.due, r.give_up) if r._refusal is None else r._refusal[1] + r.reason_wait)
         if self.scheduler.busy or any(s.has_data(self.now) for s in self.senders.values()):
             times.append(self.scheduler.ready_at())
         return min(times) if times else None
@@ -134,26 +183,30 @@ class Endpoint:
     def send_file(self, path: str | Path, target: tuple[int, int], name: str | None = None,
                   overwrite: bool = False, request_id: int = 0,
                   on_progress: Callable[[FileSender], None] | None = None, source: Any = None) -> FileSender:
+        """Start sending a file (ValueError for a name no receiver would take, StorageError for
+        a file that cannot be sent)."""
         src = source if source is not None else FileSource(path)
-        tid = self._free_id()
-        sender = FileSender(tid, src, name or Path(path).name, target, self.cfg, request_id, overwrite, self.now,
-                            on_progress)
+        sender = FileSender(self._new_id, src, name or Path(path).name, target, self.cfg, request_id, overwrite,
+                            self.now, on_progress)
+        sender.owns_source = source is None
         rate = self.scheduler.pacer.rate
         sender.byte_time = 1.0 / rate if rate else 0.0
-        self.senders[tid] = sender
+        self.senders[sender.id] = sender
         self.scheduler.add_source(self._puller(sender))
         return sender
 
-    def request_file(self, name: str, target: tuple[int, int]) -> _Request:
-        raw = name.encode("utf-8")
-        if not raw or len(raw) > 255:
-            raise ValueError("file names must be 1..255 bytes of UTF-8")
+    def request_file(self, name: str, target: tuple[int, int]) -> Request:
+        """Ask the peer for a file (ValueError for a name no peer would serve)."""
+        try:
+            check_name(name)
+        except Refused as e:
+            raise ValueError(e.reason) from None
         if self.receiver is None:
             raise ValueError("this end has no receive directory")
-        rid = next(self._req_ids)
-        req = _Request(rid, name, target, self.now, self.cfg)
+        rid = self._new_id()
+        req = Request(rid, name, target, self.now, self.cfg)
         self.requests[rid] = req
-        self.receiver.expected_requests[(target[0], target[1], rid)] = name
+        self.receiver.expect(target, rid, name)
         return req
 
     def command(self, msg: ttapi.TtActionCommand, target: tuple[int, int], retries: int = 3,
@@ -164,21 +217,24 @@ class Endpoint:
     def close(self) -> None:
         if self.receiver is not None:
             self.receiver.close()
+        for s in list(self.senders.values()):
+            self._retire(s)
 
     # -- internals ------------------------------------------------------------------------------
-    def _free_id(self) -> int:
-        for _ in range(255):
-            tid = next(self._ids)
-            s = self.senders.get(tid)
-            if s is None or s.done:
-                if s is not None:
-                    self._retire(s)
-                return tid
-        raise RuntimeError("255 transfers are running: no free transfer id")
+    def _new_id(self) -> int:
+        """A transfer or request id: 32 random bits, never 0, not in use here."""
+        while True:
+            n = self._rng.getrandbits(32)
+            if n and n not in self.senders and n not in self.requests:
+                return n
 
     def _retire(self, s: FileSender) -> None:
-        self.senders.pop(s.id, None)
+        if self.senders.get(s.id) is s:
+            del self.senders[s.id]
         self.scheduler.remove_source(getattr(s, "_pull", None))  # type: ignore[arg-type]
+        if s.owns_source:
+            s.source.close()
+            s.owns_source = False
 
     def _puller(self, sender: FileSender) -> Callable[[float, int], bytes | None]:
         def pull(now: float, space: int) -> bytes | None:
@@ -199,13 +255,17 @@ class Endpoint:
         for s in list(self.senders.values()):
             for msg in s.control(now):
                 send(enc(msg), CONTROL)
-            if s.done and s.id in self.senders and now - (s.stats.finished or now) > 30:
+            if s.done and now - (s.stats.finished or now) > 30:
                 self._retire(s)
         for req in self.requests.values():
             if req.answered:
                 continue
+            if req._refusal is not None and now >= req._refusal[1] + req.reason_wait:
+                self._fail_request(req, req._refusal[0])
+                continue
             if now >= req.give_up:
-                req.answered, req.error = True, f"no answer to the request for {req.name}"
+                req.answered, req.code = True, "TIMEOUT"
+                req.error = f"no answer to the request for {req.name}"
                 self._event("request-failed", req)
                 continue
             if now >= req.due:
@@ -231,10 +291,18 @@ class Endpoint:
                 return False
         return True
 
+    def _handle_all(self, now: float, msgs: list[Any]) -> set[tuple[int, int]]:
+        seen: set[tuple[int, int]] = set()
+        for msg in msgs:
+            src = (msg.get_srcSystem(), msg.get_srcComponent())
+            if src == (self.sysid, self.compid):
+                continue  # our own frames, echoed
+            seen.add(src)
+            self._handle(now, msg)
+        return seen
+
     def _handle(self, now: float, msg: Any) -> None:
         self.peers[(msg.get_srcSystem(), msg.get_srcComponent())] = now
-        if (msg.get_srcSystem(), msg.get_srcComponent()) == (self.sysid, self.compid):
-            return  # our own frames, echoed
         if isinstance(msg, (ttapi.TtFileData, ttapi.TtFileDataWide)):
             if self.receiver is not None:
                 self.receiver.on_data(now, msg, WIDE if isinstance(msg, ttapi.TtFileDataWide) else NARROW)
@@ -246,6 +314,8 @@ class Endpoint:
             self._on_offer(now, msg)
         elif isinstance(msg, ttapi.TtFileStatus):
             self._on_status(now, msg)
+        elif isinstance(msg, ttapi.TtFileReason):
+            self._on_reason(now, msg)
         elif isinstance(msg, ttapi.TtFileRequest):
             self._on_request(now, msg)
         elif isinstance(msg, ttapi.TtCommandAck):
@@ -264,7 +334,7 @@ class Endpoint:
         src = (msg.get_srcSystem(), msg.get_srcComponent())
         if msg.request_id:
             req = self.requests.get(msg.request_id)
-            if req is not None and req.target[0] == src[0]:
+            if req is not None and req.target == src and not req.answered:
                 req.answered = True
                 req.key = (src[0], src[1], msg.transfer_id)
         self.receiver.on_offer(now, msg)
@@ -273,23 +343,46 @@ class Endpoint:
         src = (msg.get_srcSystem(), msg.get_srcComponent())
         if msg.result in (R.TT_FILE_RESULT_NOT_FOUND, R.TT_FILE_RESULT_REQUEST_REFUSED):
             req = self.requests.get(msg.transfer_id)
-            if req is not None and req.target[0] == src[0] and not req.answered:
-                req.answered = True
-                req.error = ("no such file there" if msg.result == R.TT_FILE_RESULT_NOT_FOUND
-                             else "the peer does not serve that file")
-                self._event("request-failed", req)
+            if req is not None and req.target == src and not req.answered:
+                code = "NOT_FOUND" if msg.result == R.TT_FILE_RESULT_NOT_FOUND else "REQUEST_REFUSED"
+                if req.reason is not None:
+                    self._fail_request(req, code)
+                elif req._refusal is None:
+                    req._refusal = (code, now)  # wait a moment for the words, and ask once more
+                    req.due = now
             return
         sender = self.senders.get(msg.transfer_id)
-        if sender is not None and sender.target[0] == src[0]:
+        if sender is not None and sender.target == src:
             sender.on_status(now, msg)
+            if sender.id != msg.transfer_id:  # it started again under a new id
+                self.senders.pop(msg.transfer_id, None)
+                self.senders[sender.id] = sender
+
+    def _on_reason(self, now: float, msg: ttapi.TtFileReason) -> None:
+        src = (msg.get_srcSystem(), msg.get_srcComponent())
+        req = self.requests.get(msg.transfer_id)
+        if req is not None and req.target == src and not req.answered:
+            req.reason = reason_text(msg.text)
+            if req._refusal is not None:
+                self._fail_request(req, req._refusal[0])
+            return
+        sender = self.senders.get(msg.transfer_id)
+        if sender is not None and sender.target == src:
+            sender.on_reason(now, msg)
+
+    def _fail_request(self, req: Request, code: str) -> None:
+        req.answered, req.code = True, code
+        req.error = req.reason or RESULT_TEXT.get(code, "refused")
+        self._event("request-failed", req)
 
     def _on_request(self, now: float, msg: ttapi.TtFileRequest) -> None:
+        if msg.request_id == 0:
+            return
         src = (msg.get_srcSystem(), msg.get_srcComponent())
         key = (src[0], src[1], msg.request_id)
         for s in self.senders.values():
             if s.request_id == msg.request_id and s.target == src and not s.done:
-                s.control(now)  # already serving it: the offers repeat on their own
-                return
+                return  # already serving it: the offers repeat on their own
         part = self._served.setdefault(key, _ServedRequest())
         if not part.length:
             part.length = msg.name_length
@@ -301,23 +394,47 @@ class Endpoint:
         if not part.length or not part.have.covers(0, part.length):
             return
         del self._served[key]
-        refuse = R.TT_FILE_RESULT_REQUEST_REFUSED
         try:
-            name = bytes(part.name).decode("utf-8")
-            if self.serve_dir is None:
-                raise Refused("NAME", "this end serves no files")
-            check_name(name, 255)
-            path = (self.serve_dir / name).resolve()
-            if self.serve_dir not in path.parents:
-                raise Refused("NAME", "outside the served directory")
-            if not path.is_file():
-                refuse = R.TT_FILE_RESULT_NOT_FOUND
-                raise Refused("NOT_FOUND", "no such file")
+            path, name = self._servable(bytes(part.name))
             self.send_file(path, src, name=name, request_id=msg.request_id)
-        except (UnicodeDecodeError, Refused, StorageError, ValueError):
-            status = ttapi.TtFileStatus(target_system=src[0], target_component=src[1], transfer_id=msg.request_id,
-                                        result=int(refuse))
-            self.scheduler.send(self.encoder.encode(status), CONTROL)
+        except Refused as e:
+            result = R.TT_FILE_RESULT_NOT_FOUND if e.code == "NOT_FOUND" else R.TT_FILE_RESULT_REQUEST_REFUSED
+            self._refuse_request(src, msg.request_id, result, e.reason)
+        except (StorageError, ValueError) as e:
+            self._refuse_request(src, msg.request_id, R.TT_FILE_RESULT_REQUEST_REFUSED, str(e))
+
+    def _servable(self, raw: bytes) -> tuple[Path, str]:
+        """The served file a request names, or Refused with the reason."""
+        try:
+            name = raw.decode("utf-8")
+        except UnicodeDecodeError:
+            raise Refused("REQUEST_REFUSED", "the name is not valid UTF-8") from None
+        if self.serve_dir is None:
+            raise Refused("REQUEST_REFUSED", "this end serves no files")
+        try:
+            check_name(name)
+        except Refused as e:
+            raise Refused("REQUEST_REFUSED", e.reason) from None
+        path = (self.serve_dir / name).resolve()
+        if self.serve_dir not in path.parents:
+            raise Refused("REQUEST_REFUSED", f"{name} leads outside the served folder")
+        try:
+            st = os.stat(path)
+        except (FileNotFoundError, NotADirectoryError):
+            raise Refused("NOT_FOUND", f"there is no {name} in the served folder") from None
+        except OSError as e:
+            raise Refused("REQUEST_REFUSED", f"{name}: {e.strerror or e}") from None
+        if not stat.S_ISREG(st.st_mode):
+            raise Refused("REQUEST_REFUSED", f"{name} is {kind_of(st.st_mode)}, not a file")
+        return path, name
+
+    def _refuse_request(self, src: tuple[int, int], request_id: int, result: R, reason: str) -> None:
+        why = ttapi.TtFileReason(target_system=src[0], target_component=src[1], transfer_id=request_id,
+                                 result=int(result), text=reason_fit(reason))
+        status = ttapi.TtFileStatus(target_system=src[0], target_component=src[1], transfer_id=request_id,
+                                    result=int(result))
+        self.scheduler.send(self.encoder.encode(why), CONTROL, key=("request-reason", src, request_id))
+        self.scheduler.send(self.encoder.encode(status), CONTROL, key=("request-status", src, request_id))
 
 
-__all__ = ["BULK", "CONTROL", "TELEMETRY", "Endpoint"]
+__all__ = ["BULK", "CONTROL", "TELEMETRY", "Endpoint", "Request"]

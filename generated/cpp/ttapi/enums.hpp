@@ -4180,7 +4180,8 @@ struct IsBitmask<TtFileFlags> : std::true_type {
 enum class TtFileResult : std::uint8_t {
     /// Accepted and receiving; the status lists what is missing.
     TT_FILE_RESULT_IN_PROGRESS = 0,
-    /// Whole file received, SHA-256 verified, stored under its final name.
+    /// Whole file received, SHA-256 verified, stored under its final name; or a file of that name
+    /// with the same size and SHA-256 was already there.
     TT_FILE_RESULT_COMPLETE = 1,
     /// Name refused: absolute, with '..', control characters, or too long.
     TT_FILE_RESULT_REFUSED_NAME = 2,
@@ -4188,9 +4189,11 @@ enum class TtFileResult : std::uint8_t {
     TT_FILE_RESULT_REFUSED_EXISTS = 3,
     /// The file is larger than the per-transfer quota or the directory quota allows.
     TT_FILE_RESULT_REFUSED_QUOTA = 4,
-    /// Too many transfers at once; retry later.
+    /// Too many transfers at once, or another transfer is receiving that name right now: offer
+    /// again later.
     TT_FILE_RESULT_REFUSED_BUSY = 5,
-    /// All bytes arrived but their SHA-256 differs from the offer; partial state discarded.
+    /// All bytes arrived but their SHA-256 differs from the offer; partial state discarded (the
+    /// sender may offer again, from scratch, under a new transfer id).
     TT_FILE_RESULT_FAILED_CHECKSUM = 6,
     /// The receiver's disk is full; partial state kept for resume.
     TT_FILE_RESULT_FAILED_DISK_FULL = 7,

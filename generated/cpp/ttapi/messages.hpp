@@ -17767,12 +17767,13 @@ struct HygrometerSensor {
 
 /// TT_FILE_OFFER (id 50000): [sender: any] Offer a file to the receiver, or answer a
 /// TT_FILE_REQUEST. The metadata blob is the file's 32-byte SHA-256 followed by its UTF-8 name (at
-/// most 223 bytes); it is sent in parts (meta_offset, up to 77 bytes each), each part repeating the
-/// other fields. The receiver answers with TT_FILE_STATUS. Offering a file whose partial state the
-/// receiver kept resumes it.
+/// most 223 bytes); it is sent in parts (meta_offset, up to 71 bytes each), each part repeating the
+/// other fields. The receiver answers with TT_FILE_STATUS; no file data is sent before it accepts.
+/// Offering a file whose partial state the receiver kept (same name, size and SHA-256) resumes it,
+/// whatever its transfer id was.
 struct TtFileOffer {
     static constexpr std::uint32_t MSG_ID = 50000;
-    static constexpr std::uint8_t CRC_EXTRA = 196;
+    static constexpr std::uint8_t CRC_EXTRA = 88;
     static constexpr std::size_t PAYLOAD_LENGTH = 88;
     static constexpr std::size_t MIN_LENGTH = 88;
     static constexpr const char* NAME = "TT_FILE_OFFER";
@@ -17783,11 +17784,13 @@ struct TtFileOffer {
     /// Receiver component id.
     std::uint8_t target_component{};
 
-    /// Sender-chosen id, unique among all of the sender's active outgoing transfers.
-    std::uint8_t transfer_id{};
+    /// Sender-chosen random nonce, never 0, new for every transfer (a restart or resume gets a new
+    /// one): it names the transfer in every frame, so that no other sender, process or earlier run
+    /// can reuse it by accident.
+    std::uint32_t transfer_id{};
 
-    /// The TT_FILE_REQUEST this answers, 0 if unsolicited.
-    std::uint8_t request_id{};
+    /// The TT_FILE_REQUEST (its request_id) this answers, 0 if unsolicited.
+    std::uint32_t request_id{};
 
     /// File size. [bytes]
     std::uint32_t size{};
@@ -17802,21 +17805,21 @@ struct TtFileOffer {
     std::uint8_t meta_offset{};
 
     /// Part of the metadata blob.
-    std::array<std::uint8_t, 77> meta{};
+    std::array<std::uint8_t, 71> meta{};
 
     /// The payload in wire order, little endian, into `out` (which must hold PAYLOAD_LENGTH
     /// bytes); returns its MAVLink 2 truncated length.
     std::size_t pack_payload(std::uint8_t* out) const noexcept
     {
-        put_le(out + 0, this->size);
-        put_le(out + 4, this->target_system);
-        put_le(out + 5, this->target_component);
-        put_le(out + 6, this->transfer_id);
-        put_le(out + 7, this->request_id);
-        put_le(out + 8, this->flags);
-        put_le(out + 9, this->meta_length);
-        put_le(out + 10, this->meta_offset);
-        put_le(out + 11, this->meta);
+        put_le(out + 0, this->transfer_id);
+        put_le(out + 4, this->request_id);
+        put_le(out + 8, this->size);
+        put_le(out + 12, this->target_system);
+        put_le(out + 13, this->target_component);
+        put_le(out + 14, this->flags);
+        put_le(out + 15, this->meta_length);
+        put_le(out + 16, this->meta_offset);
+        put_le(out + 17, this->meta);
         return truncated_length(out, PAYLOAD_LENGTH);
     }
 
@@ -17832,15 +17835,15 @@ struct TtFileOffer {
             return unpack_payload(full, PAYLOAD_LENGTH);
         }
         TtFileOffer m;
-        get_le(p + 0, m.size);
-        get_le(p + 4, m.target_system);
-        get_le(p + 5, m.target_component);
-        get_le(p + 6, m.transfer_id);
-        get_le(p + 7, m.request_id);
-        get_le(p + 8, m.flags);
-        get_le(p + 9, m.meta_length);
-        get_le(p + 10, m.meta_offset);
-        get_le(p + 11, m.meta);
+        get_le(p + 0, m.transfer_id);
+        get_le(p + 4, m.request_id);
+        get_le(p + 8, m.size);
+        get_le(p + 12, m.target_system);
+        get_le(p + 13, m.target_component);
+        get_le(p + 14, m.flags);
+        get_le(p + 15, m.meta_length);
+        get_le(p + 16, m.meta_offset);
+        get_le(p + 17, m.meta);
         return m;
     }
 
@@ -17856,12 +17859,13 @@ struct TtFileOffer {
 /// refusing an offer, while data flows (regularly, when new gaps appear, and when data stops
 /// coming), and on completion. Bytes below received_contiguous have all arrived; in [region_start,
 /// received_end) everything arrived except the listed missing ranges. When there are more gaps than
-/// fit, several statuses describe successive regions.
+/// fit, several statuses describe successive regions. A sender takes a status for its own only if
+/// both transfer_id and meta_check match its offer.
 struct TtFileStatus {
     static constexpr std::uint32_t MSG_ID = 50001;
-    static constexpr std::uint8_t CRC_EXTRA = 165;
-    static constexpr std::size_t PAYLOAD_LENGTH = 87;
-    static constexpr std::size_t MIN_LENGTH = 23;
+    static constexpr std::uint8_t CRC_EXTRA = 193;
+    static constexpr std::size_t PAYLOAD_LENGTH = 86;
+    static constexpr std::size_t MIN_LENGTH = 30;
     static constexpr const char* NAME = "TT_FILE_STATUS";
 
     /// File sender's system id.
@@ -17871,7 +17875,7 @@ struct TtFileStatus {
     std::uint8_t target_component{};
 
     /// Transfer id from the offer (or request_id, for answers to a request).
-    std::uint8_t transfer_id{};
+    std::uint32_t transfer_id{};
 
     /// State of the transfer. (enum TtFileResult)
     std::uint8_t result{};
@@ -17896,26 +17900,32 @@ struct TtFileStatus {
     /// Number of missing ranges listed in ranges.
     std::uint8_t range_count{};
 
+    /// The first 4 bytes, little-endian, of the SHA-256 of the offer's whole metadata blob (the
+    /// file's SHA-256 then its name), once the receiver has all of it; 0 before (and in answers to
+    /// a request). It binds the status, COMPLETE above all, to that file under that name.
+    std::uint32_t meta_check{};
+
     /// Missing byte ranges, ascending, as start, end (exclusive) pairs. An extension so that it
     /// comes last on the wire: unused pairs are zero and truncated away, and a status with few gaps
     /// is short. [bytes] (extension)
-    std::array<std::uint32_t, 16> ranges{};
+    std::array<std::uint32_t, 14> ranges{};
 
     /// The payload in wire order, little endian, into `out` (which must hold PAYLOAD_LENGTH
     /// bytes); returns its MAVLink 2 truncated length.
     std::size_t pack_payload(std::uint8_t* out) const noexcept
     {
-        put_le(out + 0, this->received_contiguous);
-        put_le(out + 4, this->region_start);
-        put_le(out + 8, this->received_end);
-        put_le(out + 12, this->last_offset);
-        put_le(out + 16, this->hold_ms);
-        put_le(out + 18, this->target_system);
-        put_le(out + 19, this->target_component);
-        put_le(out + 20, this->transfer_id);
-        put_le(out + 21, this->result);
-        put_le(out + 22, this->range_count);
-        put_le(out + 23, this->ranges);
+        put_le(out + 0, this->transfer_id);
+        put_le(out + 4, this->received_contiguous);
+        put_le(out + 8, this->region_start);
+        put_le(out + 12, this->received_end);
+        put_le(out + 16, this->last_offset);
+        put_le(out + 20, this->meta_check);
+        put_le(out + 24, this->hold_ms);
+        put_le(out + 26, this->target_system);
+        put_le(out + 27, this->target_component);
+        put_le(out + 28, this->result);
+        put_le(out + 29, this->range_count);
+        put_le(out + 30, this->ranges);
         return truncated_length(out, PAYLOAD_LENGTH);
     }
 
@@ -17931,17 +17941,18 @@ struct TtFileStatus {
             return unpack_payload(full, PAYLOAD_LENGTH);
         }
         TtFileStatus m;
-        get_le(p + 0, m.received_contiguous);
-        get_le(p + 4, m.region_start);
-        get_le(p + 8, m.received_end);
-        get_le(p + 12, m.last_offset);
-        get_le(p + 16, m.hold_ms);
-        get_le(p + 18, m.target_system);
-        get_le(p + 19, m.target_component);
-        get_le(p + 20, m.transfer_id);
-        get_le(p + 21, m.result);
-        get_le(p + 22, m.range_count);
-        get_le(p + 23, m.ranges);
+        get_le(p + 0, m.transfer_id);
+        get_le(p + 4, m.received_contiguous);
+        get_le(p + 8, m.region_start);
+        get_le(p + 12, m.received_end);
+        get_le(p + 16, m.last_offset);
+        get_le(p + 20, m.meta_check);
+        get_le(p + 24, m.hold_ms);
+        get_le(p + 26, m.target_system);
+        get_le(p + 27, m.target_component);
+        get_le(p + 28, m.result);
+        get_le(p + 29, m.range_count);
+        get_le(p + 30, m.ranges);
         return m;
     }
 
@@ -17954,31 +17965,31 @@ struct TtFileStatus {
 };
 
 /// TT_FILE_DATA (id 50002): [sender: any] File bytes in a frame that fills one 100-byte packet
-/// exactly. It carries min(83, size - offset) bytes: the count follows from the offer's size, so
+/// exactly. It carries min(80, size - offset) bytes: the count follows from the offer's size, so
 /// trailing zero bytes may be truncated on the wire.
 struct TtFileData {
     static constexpr std::uint32_t MSG_ID = 50002;
-    static constexpr std::uint8_t CRC_EXTRA = 143;
+    static constexpr std::uint8_t CRC_EXTRA = 203;
     static constexpr std::size_t PAYLOAD_LENGTH = 88;
     static constexpr std::size_t MIN_LENGTH = 88;
     static constexpr const char* NAME = "TT_FILE_DATA";
 
     /// Transfer id from the offer.
-    std::uint8_t transfer_id{};
+    std::uint32_t transfer_id{};
 
     /// Offset of data in the file. [bytes]
     std::uint32_t offset{};
 
     /// File bytes.
-    std::array<std::uint8_t, 83> data{};
+    std::array<std::uint8_t, 80> data{};
 
     /// The payload in wire order, little endian, into `out` (which must hold PAYLOAD_LENGTH
     /// bytes); returns its MAVLink 2 truncated length.
     std::size_t pack_payload(std::uint8_t* out) const noexcept
     {
-        put_le(out + 0, this->offset);
-        put_le(out + 4, this->transfer_id);
-        put_le(out + 5, this->data);
+        put_le(out + 0, this->transfer_id);
+        put_le(out + 4, this->offset);
+        put_le(out + 8, this->data);
         return truncated_length(out, PAYLOAD_LENGTH);
     }
 
@@ -17994,9 +18005,9 @@ struct TtFileData {
             return unpack_payload(full, PAYLOAD_LENGTH);
         }
         TtFileData m;
-        get_le(p + 0, m.offset);
-        get_le(p + 4, m.transfer_id);
-        get_le(p + 5, m.data);
+        get_le(p + 0, m.transfer_id);
+        get_le(p + 4, m.offset);
+        get_le(p + 8, m.data);
         return m;
     }
 
@@ -18010,12 +18021,13 @@ struct TtFileData {
 
 /// TT_FILE_REQUEST (id 50003): [sender: any] Ask the peer to send a file (download). The name is
 /// UTF-8, sent in parts like the offer's metadata. The peer answers with TT_FILE_OFFER (request_id
-/// echoed) or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or REQUEST_REFUSED).
+/// echoed) or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or REQUEST_REFUSED, with a
+/// TT_FILE_REASON).
 struct TtFileRequest {
     static constexpr std::uint32_t MSG_ID = 50003;
-    static constexpr std::uint8_t CRC_EXTRA = 89;
-    static constexpr std::size_t PAYLOAD_LENGTH = 85;
-    static constexpr std::size_t MIN_LENGTH = 85;
+    static constexpr std::uint8_t CRC_EXTRA = 129;
+    static constexpr std::size_t PAYLOAD_LENGTH = 88;
+    static constexpr std::size_t MIN_LENGTH = 88;
     static constexpr const char* NAME = "TT_FILE_REQUEST";
 
     /// Peer system id.
@@ -18024,8 +18036,8 @@ struct TtFileRequest {
     /// Peer component id.
     std::uint8_t target_component{};
 
-    /// Requester-chosen id, 1..255.
-    std::uint8_t request_id{};
+    /// Requester-chosen random nonce, never 0, new for every request.
+    std::uint32_t request_id{};
 
     /// Length of the whole name. [bytes]
     std::uint8_t name_length{};
@@ -18040,12 +18052,12 @@ struct TtFileRequest {
     /// bytes); returns its MAVLink 2 truncated length.
     std::size_t pack_payload(std::uint8_t* out) const noexcept
     {
-        put_le(out + 0, this->target_system);
-        put_le(out + 1, this->target_component);
-        put_le(out + 2, this->request_id);
-        put_le(out + 3, this->name_length);
-        put_le(out + 4, this->name_offset);
-        put_le(out + 5, this->name);
+        put_le(out + 0, this->request_id);
+        put_le(out + 4, this->target_system);
+        put_le(out + 5, this->target_component);
+        put_le(out + 6, this->name_length);
+        put_le(out + 7, this->name_offset);
+        put_le(out + 8, this->name);
         return truncated_length(out, PAYLOAD_LENGTH);
     }
 
@@ -18061,12 +18073,12 @@ struct TtFileRequest {
             return unpack_payload(full, PAYLOAD_LENGTH);
         }
         TtFileRequest m;
-        get_le(p + 0, m.target_system);
-        get_le(p + 1, m.target_component);
-        get_le(p + 2, m.request_id);
-        get_le(p + 3, m.name_length);
-        get_le(p + 4, m.name_offset);
-        get_le(p + 5, m.name);
+        get_le(p + 0, m.request_id);
+        get_le(p + 4, m.target_system);
+        get_le(p + 5, m.target_component);
+        get_le(p + 6, m.name_length);
+        get_le(p + 7, m.name_offset);
+        get_le(p + 8, m.name);
         return m;
     }
 
@@ -18451,30 +18463,30 @@ struct TtLog {
 
 /// TT_FILE_DATA_WIDE (id 50009): [sender: any] [spans-packets] File bytes in a 267-byte frame that
 /// spans packets: less framing per byte, for when the transfer observes little loss. It carries
-/// min(250, size - offset) bytes; trailing zero bytes may be truncated on the wire.
+/// min(247, size - offset) bytes; trailing zero bytes may be truncated on the wire.
 struct TtFileDataWide {
     static constexpr std::uint32_t MSG_ID = 50009;
-    static constexpr std::uint8_t CRC_EXTRA = 221;
+    static constexpr std::uint8_t CRC_EXTRA = 100;
     static constexpr std::size_t PAYLOAD_LENGTH = 255;
     static constexpr std::size_t MIN_LENGTH = 255;
     static constexpr const char* NAME = "TT_FILE_DATA_WIDE";
 
     /// Transfer id from the offer.
-    std::uint8_t transfer_id{};
+    std::uint32_t transfer_id{};
 
     /// Offset of data in the file. [bytes]
     std::uint32_t offset{};
 
     /// File bytes.
-    std::array<std::uint8_t, 250> data{};
+    std::array<std::uint8_t, 247> data{};
 
     /// The payload in wire order, little endian, into `out` (which must hold PAYLOAD_LENGTH
     /// bytes); returns its MAVLink 2 truncated length.
     std::size_t pack_payload(std::uint8_t* out) const noexcept
     {
-        put_le(out + 0, this->offset);
-        put_le(out + 4, this->transfer_id);
-        put_le(out + 5, this->data);
+        put_le(out + 0, this->transfer_id);
+        put_le(out + 4, this->offset);
+        put_le(out + 8, this->data);
         return truncated_length(out, PAYLOAD_LENGTH);
     }
 
@@ -18490,9 +18502,9 @@ struct TtFileDataWide {
             return unpack_payload(full, PAYLOAD_LENGTH);
         }
         TtFileDataWide m;
-        get_le(p + 0, m.offset);
-        get_le(p + 4, m.transfer_id);
-        get_le(p + 5, m.data);
+        get_le(p + 0, m.transfer_id);
+        get_le(p + 4, m.offset);
+        get_le(p + 8, m.data);
         return m;
     }
 
@@ -18726,6 +18738,71 @@ struct TtVrController {
         get_le(p + 24, m.buttons);
         get_le(p + 26, m.index);
         get_le(p + 27, m.role);
+        return m;
+    }
+
+    /// An unsigned frame into `buf`; returns its size, or 0 if `cap` is too small.
+    std::size_t encode(std::uint8_t* buf, std::size_t cap, std::uint8_t seq = 0, std::uint8_t sysid = 1,
+                       std::uint8_t compid = 1) const noexcept
+    {
+        return encode_message(*this, buf, cap, seq, sysid, compid);
+    }
+};
+
+/// TT_FILE_REASON (id 50013): [sender: any] Why a transfer or a request was refused or failed, in
+/// words for people: sent just before each TT_FILE_STATUS that carries such a result (refused,
+/// failed, not found, request refused), so the sender can say what the receiver knows.
+struct TtFileReason {
+    static constexpr std::uint32_t MSG_ID = 50013;
+    static constexpr std::uint8_t CRC_EXTRA = 210;
+    static constexpr std::size_t PAYLOAD_LENGTH = 87;
+    static constexpr std::size_t MIN_LENGTH = 87;
+    static constexpr const char* NAME = "TT_FILE_REASON";
+
+    /// File sender's (or requester's) system id.
+    std::uint8_t target_system{};
+
+    /// File sender's (or requester's) component id.
+    std::uint8_t target_component{};
+
+    /// Transfer id from the offer (or request_id, for answers to a request).
+    std::uint32_t transfer_id{};
+
+    /// The result the reason explains. (enum TtFileResult)
+    std::uint8_t result{};
+
+    /// UTF-8 reason, NUL-terminated if shorter than 80 bytes.
+    std::array<char, 80> text{};
+
+    /// The payload in wire order, little endian, into `out` (which must hold PAYLOAD_LENGTH
+    /// bytes); returns its MAVLink 2 truncated length.
+    std::size_t pack_payload(std::uint8_t* out) const noexcept
+    {
+        put_le(out + 0, this->transfer_id);
+        put_le(out + 4, this->target_system);
+        put_le(out + 5, this->target_component);
+        put_le(out + 6, this->result);
+        put_le(out + 7, this->text);
+        return truncated_length(out, PAYLOAD_LENGTH);
+    }
+
+    /// Decode `n` payload bytes: a truncated payload is zero-extended, bytes beyond
+    /// PAYLOAD_LENGTH are ignored.
+    static TtFileReason unpack_payload(const std::uint8_t* p, std::size_t n) noexcept
+    {
+        if (n < PAYLOAD_LENGTH) {
+            std::uint8_t full[PAYLOAD_LENGTH] = {};
+            if (n != 0) {
+                std::memcpy(full, p, n);
+            }
+            return unpack_payload(full, PAYLOAD_LENGTH);
+        }
+        TtFileReason m;
+        get_le(p + 0, m.transfer_id);
+        get_le(p + 4, m.target_system);
+        get_le(p + 5, m.target_component);
+        get_le(p + 6, m.result);
+        get_le(p + 7, m.text);
         return m;
     }
 

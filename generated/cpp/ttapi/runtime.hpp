@@ -219,7 +219,7 @@ struct MessageInfo {
 };
 
 /// Every message of the dialect, sorted by msgid.
-inline constexpr std::array<MessageInfo, 223> MESSAGE_INFO{ {
+inline constexpr std::array<MessageInfo, 224> MESSAGE_INFO{ {
     {0, 50, 9, 9, "HEARTBEAT"},
     {1, 124, 43, 31, "SYS_STATUS"},
     {2, 137, 12, 12, "SYSTEM_TIME"},
@@ -430,19 +430,20 @@ inline constexpr std::array<MessageInfo, 223> MESSAGE_INFO{ {
     {12918, 139, 51, 51, "OPEN_DRONE_ID_ARM_STATUS"},
     {12919, 7, 18, 18, "OPEN_DRONE_ID_SYSTEM_UPDATE"},
     {12920, 20, 5, 5, "HYGROMETER_SENSOR"},
-    {50000, 196, 88, 88, "TT_FILE_OFFER"},
-    {50001, 165, 87, 23, "TT_FILE_STATUS"},
-    {50002, 143, 88, 88, "TT_FILE_DATA"},
-    {50003, 89, 85, 85, "TT_FILE_REQUEST"},
+    {50000, 88, 88, 88, "TT_FILE_OFFER"},
+    {50001, 193, 86, 30, "TT_FILE_STATUS"},
+    {50002, 203, 88, 88, "TT_FILE_DATA"},
+    {50003, 129, 88, 88, "TT_FILE_REQUEST"},
     {50004, 70, 66, 66, "DJI_POSE_STAMPED"},
     {50005, 160, 77, 77, "TT_ACTION_COMMAND"},
     {50006, 164, 61, 61, "TT_NAV_SAT_FIX"},
     {50007, 124, 86, 86, "TT_ODOMETRY"},
     {50008, 215, 88, 88, "TT_LOG"},
-    {50009, 221, 255, 255, "TT_FILE_DATA_WIDE"},
+    {50009, 100, 255, 255, "TT_FILE_DATA_WIDE"},
     {50010, 209, 7, 7, "TT_COMMAND_ACK"},
     {50011, 230, 64, 64, "TT_VR_POSE"},
     {50012, 229, 28, 28, "TT_VR_CONTROLLER"},
+    {50013, 210, 87, 87, "TT_FILE_REASON"},
 } };
 
 /// The message with this id, or nullptr (binary search).

@@ -19592,19 +19592,19 @@ class HygrometerSensor(Message):
 
 
 class TtFileOffer(Message):
-    """TT_FILE_OFFER (id 50000): [sender: any] Offer a file to the receiver, or answer a TT_FILE_REQUEST. The metadata blob is the file's 32-byte SHA-256 followed by its UTF-8 name (at most 223 bytes); it is sent in parts (meta_offset, up to 77 bytes each), each part repeating the other fields. The receiver answers with TT_FILE_STATUS. Offering a file whose partial state the receiver kept resumes it."""
+    """TT_FILE_OFFER (id 50000): [sender: any] Offer a file to the receiver, or answer a TT_FILE_REQUEST. The metadata blob is the file's 32-byte SHA-256 followed by its UTF-8 name (at most 223 bytes); it is sent in parts (meta_offset, up to 71 bytes each), each part repeating the other fields. The receiver answers with TT_FILE_STATUS; no file data is sent before it accepts. Offering a file whose partial state the receiver kept (same name, size and SHA-256) resumes it, whatever its transfer id was."""
 
     __slots__ = ("flags", "meta", "meta_length", "meta_offset", "request_id", "size", "target_component", "target_system", "transfer_id",)
     MSG_ID: ClassVar[int] = 50000
     NAME: ClassVar[str] = "TT_FILE_OFFER"
-    CRC_EXTRA: ClassVar[int] = 196
+    CRC_EXTRA: ClassVar[int] = 88
     PAYLOAD_LENGTH: ClassVar[int] = 88
     MIN_LENGTH: ClassVar[int] = 88
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "transfer_id", "request_id", "size", "flags", "meta_length", "meta_offset", "meta",)
     ENUMS: ClassVar[dict[str, str]] = {"flags": "TT_FILE_FLAGS"}
     _IDB: ClassVar[bytes] = b'P\xc3\x00'
-    _XB: ClassVar[bytes] = b'\xc4'
-    _S: ClassVar[struct.Struct] = struct.Struct("<IBBBBBBB77s")
+    _XB: ClassVar[bytes] = b'X'
+    _S: ClassVar[struct.Struct] = struct.Struct("<IIIBBBBB71s")
 
     target_system: int
     """Receiver system id."""
@@ -19613,10 +19613,10 @@ class TtFileOffer(Message):
     """Receiver component id."""
 
     transfer_id: int
-    """Sender-chosen id, unique among all of the sender's active outgoing transfers."""
+    """Sender-chosen random nonce, never 0, new for every transfer (a restart or resume gets a new one): it names the transfer in every frame, so that no other sender, process or earlier run can reuse it by accident."""
 
     request_id: int
-    """The TT_FILE_REQUEST this answers, 0 if unsolicited."""
+    """The TT_FILE_REQUEST (its request_id) this answers, 0 if unsolicited."""
 
     size: int
     """File size. [bytes]"""
@@ -19643,7 +19643,7 @@ class TtFileOffer(Message):
         flags: int = 0,
         meta_length: int = 0,
         meta_offset: int = 0,
-        meta: bytes = bytes(77),
+        meta: bytes = bytes(71),
     ) -> None:
         self.target_system = target_system
         self.target_component = target_component
@@ -19658,15 +19658,15 @@ class TtFileOffer(Message):
     def pack_payload(self) -> bytes:
         try:
             p = self._S.pack(
+                self.transfer_id,
+                self.request_id,
                 self.size,
                 self.target_system,
                 self.target_component,
-                self.transfer_id,
-                self.request_id,
                 self.flags,
                 self.meta_length,
                 self.meta_offset,
-                _cbytes(self.meta, 77, "TT_FILE_OFFER.meta"),
+                _cbytes(self.meta, 71, "TT_FILE_OFFER.meta"),
             )
         except struct.error as e:
             raise ValueError(f"TT_FILE_OFFER: {e}") from None
@@ -19676,11 +19676,11 @@ class TtFileOffer(Message):
     def _unpack(cls, b: Any, off: int) -> TtFileOffer:
         self: TtFileOffer = _new(cls)
         (
+            self.transfer_id,
+            self.request_id,
             self.size,
             self.target_system,
             self.target_component,
-            self.transfer_id,
-            self.request_id,
             self.flags,
             self.meta_length,
             self.meta_offset,
@@ -19690,19 +19690,19 @@ class TtFileOffer(Message):
 
 
 class TtFileStatus(Message):
-    """TT_FILE_STATUS (id 50001): [sender: any] The receiver's view of a transfer: sent on accepting or refusing an offer, while data flows (regularly, when new gaps appear, and when data stops coming), and on completion. Bytes below received_contiguous have all arrived; in [region_start, received_end) everything arrived except the listed missing ranges. When there are more gaps than fit, several statuses describe successive regions."""
+    """TT_FILE_STATUS (id 50001): [sender: any] The receiver's view of a transfer: sent on accepting or refusing an offer, while data flows (regularly, when new gaps appear, and when data stops coming), and on completion. Bytes below received_contiguous have all arrived; in [region_start, received_end) everything arrived except the listed missing ranges. When there are more gaps than fit, several statuses describe successive regions. A sender takes a status for its own only if both transfer_id and meta_check match its offer."""
 
-    __slots__ = ("hold_ms", "last_offset", "range_count", "ranges", "received_contiguous", "received_end", "region_start", "result", "target_component", "target_system", "transfer_id",)
+    __slots__ = ("hold_ms", "last_offset", "meta_check", "range_count", "ranges", "received_contiguous", "received_end", "region_start", "result", "target_component", "target_system", "transfer_id",)
     MSG_ID: ClassVar[int] = 50001
     NAME: ClassVar[str] = "TT_FILE_STATUS"
-    CRC_EXTRA: ClassVar[int] = 165
-    PAYLOAD_LENGTH: ClassVar[int] = 87
-    MIN_LENGTH: ClassVar[int] = 23
-    FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "transfer_id", "result", "received_contiguous", "region_start", "received_end", "last_offset", "hold_ms", "range_count", "ranges",)
+    CRC_EXTRA: ClassVar[int] = 193
+    PAYLOAD_LENGTH: ClassVar[int] = 86
+    MIN_LENGTH: ClassVar[int] = 30
+    FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "transfer_id", "result", "received_contiguous", "region_start", "received_end", "last_offset", "hold_ms", "range_count", "meta_check", "ranges",)
     ENUMS: ClassVar[dict[str, str]] = {"result": "TT_FILE_RESULT"}
     _IDB: ClassVar[bytes] = b'Q\xc3\x00'
-    _XB: ClassVar[bytes] = b'\xa5'
-    _S: ClassVar[struct.Struct] = struct.Struct("<IIIIHBBBBBIIIIIIIIIIIIIIII")
+    _XB: ClassVar[bytes] = b'\xc1'
+    _S: ClassVar[struct.Struct] = struct.Struct("<IIIIIIHBBBBIIIIIIIIIIIIII")
 
     target_system: int
     """File sender's system id."""
@@ -19734,6 +19734,9 @@ class TtFileStatus(Message):
     range_count: int
     """Number of missing ranges listed in ranges."""
 
+    meta_check: int
+    """The first 4 bytes, little-endian, of the SHA-256 of the offer's whole metadata blob (the file's SHA-256 then its name), once the receiver has all of it; 0 before (and in answers to a request). It binds the status, COMPLETE above all, to that file under that name."""
+
     ranges: Sequence[int]
     """Missing byte ranges, ascending, as start, end (exclusive) pairs. An extension so that it comes last on the wire: unused pairs are zero and truncated away, and a status with few gaps is short. [bytes] (extension)"""
 
@@ -19749,7 +19752,8 @@ class TtFileStatus(Message):
         last_offset: int = 0,
         hold_ms: int = 0,
         range_count: int = 0,
-        ranges: Sequence[int] = (0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,),
+        meta_check: int = 0,
+        ranges: Sequence[int] = (0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,),
     ) -> None:
         self.target_system = target_system
         self.target_component = target_component
@@ -19761,22 +19765,24 @@ class TtFileStatus(Message):
         self.last_offset = last_offset
         self.hold_ms = hold_ms
         self.range_count = range_count
+        self.meta_check = meta_check
         self.ranges = ranges
 
     def pack_payload(self) -> bytes:
         try:
             p = self._S.pack(
+                self.transfer_id,
                 self.received_contiguous,
                 self.region_start,
                 self.received_end,
                 self.last_offset,
+                self.meta_check,
                 self.hold_ms,
                 self.target_system,
                 self.target_component,
-                self.transfer_id,
                 self.result,
                 self.range_count,
-                *_array(self.ranges, 16, "TT_FILE_STATUS.ranges"),
+                *_array(self.ranges, 14, "TT_FILE_STATUS.ranges"),
             )
         except struct.error as e:
             raise ValueError(f"TT_FILE_STATUS: {e}") from None
@@ -19786,34 +19792,35 @@ class TtFileStatus(Message):
     def _unpack(cls, b: Any, off: int) -> TtFileStatus:
         self: TtFileStatus = _new(cls)
         t = cls._S.unpack_from(b, off)
-        self.received_contiguous = t[0]
-        self.region_start = t[1]
-        self.received_end = t[2]
-        self.last_offset = t[3]
-        self.hold_ms = t[4]
-        self.target_system = t[5]
-        self.target_component = t[6]
-        self.transfer_id = t[7]
-        self.result = t[8]
-        self.range_count = t[9]
-        self.ranges = t[10:26]
+        self.transfer_id = t[0]
+        self.received_contiguous = t[1]
+        self.region_start = t[2]
+        self.received_end = t[3]
+        self.last_offset = t[4]
+        self.meta_check = t[5]
+        self.hold_ms = t[6]
+        self.target_system = t[7]
+        self.target_component = t[8]
+        self.result = t[9]
+        self.range_count = t[10]
+        self.ranges = t[11:25]
         return self
 
 
 class TtFileData(Message):
-    """TT_FILE_DATA (id 50002): [sender: any] File bytes in a frame that fills one 100-byte packet exactly. It carries min(83, size - offset) bytes: the count follows from the offer's size, so trailing zero bytes may be truncated on the wire."""
+    """TT_FILE_DATA (id 50002): [sender: any] File bytes in a frame that fills one 100-byte packet exactly. It carries min(80, size - offset) bytes: the count follows from the offer's size, so trailing zero bytes may be truncated on the wire."""
 
     __slots__ = ("data", "offset", "transfer_id",)
     MSG_ID: ClassVar[int] = 50002
     NAME: ClassVar[str] = "TT_FILE_DATA"
-    CRC_EXTRA: ClassVar[int] = 143
+    CRC_EXTRA: ClassVar[int] = 203
     PAYLOAD_LENGTH: ClassVar[int] = 88
     MIN_LENGTH: ClassVar[int] = 88
     FIELDS: ClassVar[tuple[str, ...]] = ("transfer_id", "offset", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
     _IDB: ClassVar[bytes] = b'R\xc3\x00'
-    _XB: ClassVar[bytes] = b'\x8f'
-    _S: ClassVar[struct.Struct] = struct.Struct("<IB83s")
+    _XB: ClassVar[bytes] = b'\xcb'
+    _S: ClassVar[struct.Struct] = struct.Struct("<II80s")
 
     transfer_id: int
     """Transfer id from the offer."""
@@ -19828,7 +19835,7 @@ class TtFileData(Message):
         self,
         transfer_id: int = 0,
         offset: int = 0,
-        data: bytes = bytes(83),
+        data: bytes = bytes(80),
     ) -> None:
         self.transfer_id = transfer_id
         self.offset = offset
@@ -19837,9 +19844,9 @@ class TtFileData(Message):
     def pack_payload(self) -> bytes:
         try:
             p = self._S.pack(
-                self.offset,
                 self.transfer_id,
-                _cbytes(self.data, 83, "TT_FILE_DATA.data"),
+                self.offset,
+                _cbytes(self.data, 80, "TT_FILE_DATA.data"),
             )
         except struct.error as e:
             raise ValueError(f"TT_FILE_DATA: {e}") from None
@@ -19849,27 +19856,27 @@ class TtFileData(Message):
     def _unpack(cls, b: Any, off: int) -> TtFileData:
         self: TtFileData = _new(cls)
         (
-            self.offset,
             self.transfer_id,
+            self.offset,
             self.data,
         ) = cls._S.unpack_from(b, off)
         return self
 
 
 class TtFileRequest(Message):
-    """TT_FILE_REQUEST (id 50003): [sender: any] Ask the peer to send a file (download). The name is UTF-8, sent in parts like the offer's metadata. The peer answers with TT_FILE_OFFER (request_id echoed) or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or REQUEST_REFUSED)."""
+    """TT_FILE_REQUEST (id 50003): [sender: any] Ask the peer to send a file (download). The name is UTF-8, sent in parts like the offer's metadata. The peer answers with TT_FILE_OFFER (request_id echoed) or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or REQUEST_REFUSED, with a TT_FILE_REASON)."""
 
     __slots__ = ("name", "name_length", "name_offset", "request_id", "target_component", "target_system",)
     MSG_ID: ClassVar[int] = 50003
     NAME: ClassVar[str] = "TT_FILE_REQUEST"
-    CRC_EXTRA: ClassVar[int] = 89
-    PAYLOAD_LENGTH: ClassVar[int] = 85
-    MIN_LENGTH: ClassVar[int] = 85
+    CRC_EXTRA: ClassVar[int] = 129
+    PAYLOAD_LENGTH: ClassVar[int] = 88
+    MIN_LENGTH: ClassVar[int] = 88
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "request_id", "name_length", "name_offset", "name",)
     ENUMS: ClassVar[dict[str, str]] = {}
     _IDB: ClassVar[bytes] = b'S\xc3\x00'
-    _XB: ClassVar[bytes] = b'Y'
-    _S: ClassVar[struct.Struct] = struct.Struct("<BBBBB80s")
+    _XB: ClassVar[bytes] = b'\x81'
+    _S: ClassVar[struct.Struct] = struct.Struct("<IBBBB80s")
 
     target_system: int
     """Peer system id."""
@@ -19878,7 +19885,7 @@ class TtFileRequest(Message):
     """Peer component id."""
 
     request_id: int
-    """Requester-chosen id, 1..255."""
+    """Requester-chosen random nonce, never 0, new for every request."""
 
     name_length: int
     """Length of the whole name. [bytes]"""
@@ -19908,9 +19915,9 @@ class TtFileRequest(Message):
     def pack_payload(self) -> bytes:
         try:
             p = self._S.pack(
+                self.request_id,
                 self.target_system,
                 self.target_component,
-                self.request_id,
                 self.name_length,
                 self.name_offset,
                 _cbytes(self.name, 80, "TT_FILE_REQUEST.name"),
@@ -19923,9 +19930,9 @@ class TtFileRequest(Message):
     def _unpack(cls, b: Any, off: int) -> TtFileRequest:
         self: TtFileRequest = _new(cls)
         (
+            self.request_id,
             self.target_system,
             self.target_component,
-            self.request_id,
             self.name_length,
             self.name_offset,
             self.name,
@@ -20349,19 +20356,19 @@ class TtLog(Message):
 
 
 class TtFileDataWide(Message):
-    """TT_FILE_DATA_WIDE (id 50009): [sender: any] [spans-packets] File bytes in a 267-byte frame that spans packets: less framing per byte, for when the transfer observes little loss. It carries min(250, size - offset) bytes; trailing zero bytes may be truncated on the wire."""
+    """TT_FILE_DATA_WIDE (id 50009): [sender: any] [spans-packets] File bytes in a 267-byte frame that spans packets: less framing per byte, for when the transfer observes little loss. It carries min(247, size - offset) bytes; trailing zero bytes may be truncated on the wire."""
 
     __slots__ = ("data", "offset", "transfer_id",)
     MSG_ID: ClassVar[int] = 50009
     NAME: ClassVar[str] = "TT_FILE_DATA_WIDE"
-    CRC_EXTRA: ClassVar[int] = 221
+    CRC_EXTRA: ClassVar[int] = 100
     PAYLOAD_LENGTH: ClassVar[int] = 255
     MIN_LENGTH: ClassVar[int] = 255
     FIELDS: ClassVar[tuple[str, ...]] = ("transfer_id", "offset", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
     _IDB: ClassVar[bytes] = b'Y\xc3\x00'
-    _XB: ClassVar[bytes] = b'\xdd'
-    _S: ClassVar[struct.Struct] = struct.Struct("<IB250s")
+    _XB: ClassVar[bytes] = b'd'
+    _S: ClassVar[struct.Struct] = struct.Struct("<II247s")
 
     transfer_id: int
     """Transfer id from the offer."""
@@ -20376,7 +20383,7 @@ class TtFileDataWide(Message):
         self,
         transfer_id: int = 0,
         offset: int = 0,
-        data: bytes = bytes(250),
+        data: bytes = bytes(247),
     ) -> None:
         self.transfer_id = transfer_id
         self.offset = offset
@@ -20385,9 +20392,9 @@ class TtFileDataWide(Message):
     def pack_payload(self) -> bytes:
         try:
             p = self._S.pack(
-                self.offset,
                 self.transfer_id,
-                _cbytes(self.data, 250, "TT_FILE_DATA_WIDE.data"),
+                self.offset,
+                _cbytes(self.data, 247, "TT_FILE_DATA_WIDE.data"),
             )
         except struct.error as e:
             raise ValueError(f"TT_FILE_DATA_WIDE: {e}") from None
@@ -20397,8 +20404,8 @@ class TtFileDataWide(Message):
     def _unpack(cls, b: Any, off: int) -> TtFileDataWide:
         self: TtFileDataWide = _new(cls)
         (
-            self.offset,
             self.transfer_id,
+            self.offset,
             self.data,
         ) = cls._S.unpack_from(b, off)
         return self
@@ -20669,6 +20676,75 @@ class TtVrController(Message):
         return self
 
 
+class TtFileReason(Message):
+    """TT_FILE_REASON (id 50013): [sender: any] Why a transfer or a request was refused or failed, in words for people: sent just before each TT_FILE_STATUS that carries such a result (refused, failed, not found, request refused), so the sender can say what the receiver knows."""
+
+    __slots__ = ("result", "target_component", "target_system", "text", "transfer_id",)
+    MSG_ID: ClassVar[int] = 50013
+    NAME: ClassVar[str] = "TT_FILE_REASON"
+    CRC_EXTRA: ClassVar[int] = 210
+    PAYLOAD_LENGTH: ClassVar[int] = 87
+    MIN_LENGTH: ClassVar[int] = 87
+    FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "transfer_id", "result", "text",)
+    ENUMS: ClassVar[dict[str, str]] = {"result": "TT_FILE_RESULT"}
+    _IDB: ClassVar[bytes] = b']\xc3\x00'
+    _XB: ClassVar[bytes] = b'\xd2'
+    _S: ClassVar[struct.Struct] = struct.Struct("<IBBB80s")
+
+    target_system: int
+    """File sender's (or requester's) system id."""
+
+    target_component: int
+    """File sender's (or requester's) component id."""
+
+    transfer_id: int
+    """Transfer id from the offer (or request_id, for answers to a request)."""
+
+    result: int
+    """The result the reason explains. (enum TtFileResult)"""
+
+    text: str
+    """UTF-8 reason, NUL-terminated if shorter than 80 bytes."""
+
+    def __init__(
+        self,
+        target_system: int = 0,
+        target_component: int = 0,
+        transfer_id: int = 0,
+        result: int = 0,
+        text: str = "",
+    ) -> None:
+        self.target_system = target_system
+        self.target_component = target_component
+        self.transfer_id = transfer_id
+        self.result = result
+        self.text = text
+
+    def pack_payload(self) -> bytes:
+        try:
+            p = self._S.pack(
+                self.transfer_id,
+                self.target_system,
+                self.target_component,
+                self.result,
+                _cbytes(self.text, 80, "TT_FILE_REASON.text"),
+            )
+        except struct.error as e:
+            raise ValueError(f"TT_FILE_REASON: {e}") from None
+        return p if p[-1] else _truncate(p)
+
+    @classmethod
+    def _unpack(cls, b: Any, off: int) -> TtFileReason:
+        self: TtFileReason = _new(cls)
+        t = cls._S.unpack_from(b, off)
+        self.transfer_id = t[0]
+        self.target_system = t[1]
+        self.target_component = t[2]
+        self.result = t[3]
+        self.text = _cstr(t[4])
+        return self
+
+
 ALL: tuple[type[Message], ...] = (
     Heartbeat,
     SysStatus,
@@ -20893,6 +20969,7 @@ ALL: tuple[type[Message], ...] = (
     TtCommandAck,
     TtVrPose,
     TtVrController,
+    TtFileReason,
 )
 BY_NAME: dict[str, type[Message]] = {cls.NAME: cls for cls in ALL}
 register(ALL)
@@ -21100,6 +21177,7 @@ __all__ = [
     "TtFileData",
     "TtFileDataWide",
     "TtFileOffer",
+    "TtFileReason",
     "TtFileRequest",
     "TtFileStatus",
     "TtLog",

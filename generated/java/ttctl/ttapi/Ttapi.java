@@ -42,7 +42,7 @@ public final class Ttapi implements ttctl.ttapi.runtime.MavlinkDialect {
         373, 375, 376, 385, 386, 387, 388, 390, 9000, 9005,
         12900, 12901, 12902, 12903, 12904, 12905, 12915, 12918, 12919, 12920,
         50000, 50001, 50002, 50003, 50004, 50005, 50006, 50007, 50008, 50009,
-        50010, 50011, 50012,
+        50010, 50011, 50012, 50013,
     };
     private static final ttctl.ttapi.runtime.MessageInfo[] INFOS = infos();
 
@@ -270,19 +270,20 @@ public final class Ttapi implements ttctl.ttapi.runtime.MavlinkDialect {
         all[207] = new ttctl.ttapi.runtime.MessageInfo(12918, "OPEN_DRONE_ID_ARM_STATUS", 139, 51, 51);
         all[208] = new ttctl.ttapi.runtime.MessageInfo(12919, "OPEN_DRONE_ID_SYSTEM_UPDATE", 7, 18, 18);
         all[209] = new ttctl.ttapi.runtime.MessageInfo(12920, "HYGROMETER_SENSOR", 20, 5, 5);
-        all[210] = new ttctl.ttapi.runtime.MessageInfo(50000, "TT_FILE_OFFER", 196, 88, 88);
-        all[211] = new ttctl.ttapi.runtime.MessageInfo(50001, "TT_FILE_STATUS", 165, 87, 23);
-        all[212] = new ttctl.ttapi.runtime.MessageInfo(50002, "TT_FILE_DATA", 143, 88, 88);
-        all[213] = new ttctl.ttapi.runtime.MessageInfo(50003, "TT_FILE_REQUEST", 89, 85, 85);
+        all[210] = new ttctl.ttapi.runtime.MessageInfo(50000, "TT_FILE_OFFER", 88, 88, 88);
+        all[211] = new ttctl.ttapi.runtime.MessageInfo(50001, "TT_FILE_STATUS", 193, 86, 30);
+        all[212] = new ttctl.ttapi.runtime.MessageInfo(50002, "TT_FILE_DATA", 203, 88, 88);
+        all[213] = new ttctl.ttapi.runtime.MessageInfo(50003, "TT_FILE_REQUEST", 129, 88, 88);
         all[214] = new ttctl.ttapi.runtime.MessageInfo(50004, "DJI_POSE_STAMPED", 70, 66, 66);
         all[215] = new ttctl.ttapi.runtime.MessageInfo(50005, "TT_ACTION_COMMAND", 160, 77, 77);
         all[216] = new ttctl.ttapi.runtime.MessageInfo(50006, "TT_NAV_SAT_FIX", 164, 61, 61);
         all[217] = new ttctl.ttapi.runtime.MessageInfo(50007, "TT_ODOMETRY", 124, 86, 86);
         all[218] = new ttctl.ttapi.runtime.MessageInfo(50008, "TT_LOG", 215, 88, 88);
-        all[219] = new ttctl.ttapi.runtime.MessageInfo(50009, "TT_FILE_DATA_WIDE", 221, 255, 255);
+        all[219] = new ttctl.ttapi.runtime.MessageInfo(50009, "TT_FILE_DATA_WIDE", 100, 255, 255);
         all[220] = new ttctl.ttapi.runtime.MessageInfo(50010, "TT_COMMAND_ACK", 209, 7, 7);
         all[221] = new ttctl.ttapi.runtime.MessageInfo(50011, "TT_VR_POSE", 230, 64, 64);
         all[222] = new ttctl.ttapi.runtime.MessageInfo(50012, "TT_VR_CONTROLLER", 229, 28, 28);
+        all[223] = new ttctl.ttapi.runtime.MessageInfo(50013, "TT_FILE_REASON", 210, 87, 87);
     }
 
     @Override
@@ -755,6 +756,8 @@ public final class Ttapi implements ttctl.ttapi.runtime.MavlinkDialect {
                 return ttctl.ttapi.msg.TtVrPose.unpack(payload, off, len);
             case 50012:
                 return ttctl.ttapi.msg.TtVrController.unpack(payload, off, len);
+            case 50013:
+                return ttctl.ttapi.msg.TtFileReason.unpack(payload, off, len);
             default:
                 throw new IllegalArgumentException("unknown msgid " + msgId);
         }
@@ -1209,6 +1212,8 @@ public final class Ttapi implements ttctl.ttapi.runtime.MavlinkDialect {
                 return new ttctl.ttapi.msg.TtVrPose();
             case "TT_VR_CONTROLLER":
                 return new ttctl.ttapi.msg.TtVrController();
+            case "TT_FILE_REASON":
+                return new ttctl.ttapi.msg.TtFileReason();
             default:
                 return null;
         }

@@ -9,7 +9,7 @@ import ttctl.ttapi.runtime.ReceiveCommand;
 
 /**
  * Waits for TT_FILE_DATA: [sender: any] File bytes in a frame that fills one 100-byte packet
- * exactly. It carries min(83, size - offset) bytes: the count follows from the offer's size, so
+ * exactly. It carries min(80, size - offset) bytes: the count follows from the offer's size, so
  * trailing zero bytes may be truncated on the wire.
  * <p>
  * Accepts the next TT_FILE_DATA within the timeout; the future completes with it.

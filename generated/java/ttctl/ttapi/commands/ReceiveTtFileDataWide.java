@@ -10,7 +10,7 @@ import ttctl.ttapi.runtime.ReceiveCommand;
 /**
  * Waits for TT_FILE_DATA_WIDE: [sender: any] [spans-packets] File bytes in a 267-byte frame that
  * spans packets: less framing per byte, for when the transfer observes little loss. It carries
- * min(250, size - offset) bytes; trailing zero bytes may be truncated on the wire.
+ * min(247, size - offset) bytes; trailing zero bytes may be truncated on the wire.
  * <p>
  * Accepts the next TT_FILE_DATA_WIDE within the timeout; the future completes with it.
  */

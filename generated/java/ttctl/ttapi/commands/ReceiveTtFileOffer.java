@@ -10,9 +10,10 @@ import ttctl.ttapi.runtime.ReceiveCommand;
 /**
  * Waits for TT_FILE_OFFER: [sender: any] Offer a file to the receiver, or answer a TT_FILE_REQUEST.
  * The metadata blob is the file's 32-byte SHA-256 followed by its UTF-8 name (at most 223 bytes);
- * it is sent in parts (meta_offset, up to 77 bytes each), each part repeating the other fields. The
- * receiver answers with TT_FILE_STATUS. Offering a file whose partial state the receiver kept
- * resumes it.
+ * it is sent in parts (meta_offset, up to 71 bytes each), each part repeating the other fields. The
+ * receiver answers with TT_FILE_STATUS; no file data is sent before it accepts. Offering a file
+ * whose partial state the receiver kept (same name, size and SHA-256) resumes it, whatever its
+ * transfer id was.
  * <p>
  * Accepts the next TT_FILE_OFFER addressed to us (target_system 0 or our system id) within the
  * timeout; the future completes with it.

@@ -10,7 +10,8 @@ import ttctl.ttapi.runtime.ReceiveCommand;
 /**
  * Waits for TT_FILE_REQUEST: [sender: any] Ask the peer to send a file (download). The name is
  * UTF-8, sent in parts like the offer's metadata. The peer answers with TT_FILE_OFFER (request_id
- * echoed) or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or REQUEST_REFUSED).
+ * echoed) or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or REQUEST_REFUSED, with a
+ * TT_FILE_REASON).
  * <p>
  * Accepts the next TT_FILE_REQUEST addressed to us (target_system 0 or our system id) within the
  * timeout; the future completes with it.

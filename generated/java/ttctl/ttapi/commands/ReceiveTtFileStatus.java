@@ -12,7 +12,8 @@ import ttctl.ttapi.runtime.ReceiveCommand;
  * refusing an offer, while data flows (regularly, when new gaps appear, and when data stops
  * coming), and on completion. Bytes below received_contiguous have all arrived; in [region_start,
  * received_end) everything arrived except the listed missing ranges. When there are more gaps than
- * fit, several statuses describe successive regions.
+ * fit, several statuses describe successive regions. A sender takes a status for its own only if
+ * both transfer_id and meta_check match its offer.
  * <p>
  * Accepts the next TT_FILE_STATUS addressed to us (target_system 0 or our system id) within the
  * timeout; the future completes with it.

@@ -9,7 +9,7 @@ import ttctl.ttapi.runtime.SendCommand;
 
 /**
  * Sends TT_FILE_DATA: [sender: any] File bytes in a frame that fills one 100-byte packet exactly.
- * It carries min(83, size - offset) bytes: the count follows from the offer's size, so trailing
+ * It carries min(80, size - offset) bytes: the count follows from the offer's size, so trailing
  * zero bytes may be truncated on the wire.
  * <p>
  * Succeeds once sent: the message awaits no reply.
@@ -17,14 +17,14 @@ import ttctl.ttapi.runtime.SendCommand;
  * The message is packed anew on every try from the values given to the constructor.
  */
 public class SendTtFileData extends SendCommand {
-    /** Transfer id from the offer. (uint8_t) */
-    public final int transfer_id;
+    /** Transfer id from the offer. (uint32_t) */
+    public final long transfer_id;
     /** Offset of data in the file. [bytes] (uint32_t) */
     public final long offset;
-    /** File bytes. (uint8_t[83]) */
+    /** File bytes. (uint8_t[80]) */
     public final byte[] data;
 
-    public SendTtFileData(int transfer_id, long offset, byte[] data) {
+    public SendTtFileData(long transfer_id, long offset, byte[] data) {
         super(DEFAULT_PRIORITY, 0, 0, 1.0);
         this.transfer_id = transfer_id;
         this.offset = offset;

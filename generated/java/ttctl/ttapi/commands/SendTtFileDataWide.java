@@ -9,7 +9,7 @@ import ttctl.ttapi.runtime.SendCommand;
 
 /**
  * Sends TT_FILE_DATA_WIDE: [sender: any] [spans-packets] File bytes in a 267-byte frame that spans
- * packets: less framing per byte, for when the transfer observes little loss. It carries min(250,
+ * packets: less framing per byte, for when the transfer observes little loss. It carries min(247,
  * size - offset) bytes; trailing zero bytes may be truncated on the wire.
  * <p>
  * Succeeds once sent: the message awaits no reply.
@@ -17,14 +17,14 @@ import ttctl.ttapi.runtime.SendCommand;
  * The message is packed anew on every try from the values given to the constructor.
  */
 public class SendTtFileDataWide extends SendCommand {
-    /** Transfer id from the offer. (uint8_t) */
-    public final int transfer_id;
+    /** Transfer id from the offer. (uint32_t) */
+    public final long transfer_id;
     /** Offset of data in the file. [bytes] (uint32_t) */
     public final long offset;
-    /** File bytes. (uint8_t[250]) */
+    /** File bytes. (uint8_t[247]) */
     public final byte[] data;
 
-    public SendTtFileDataWide(int transfer_id, long offset, byte[] data) {
+    public SendTtFileDataWide(long transfer_id, long offset, byte[] data) {
         super(DEFAULT_PRIORITY, 0, 0, 1.0);
         this.transfer_id = transfer_id;
         this.offset = offset;

@@ -10,9 +10,10 @@ import ttctl.ttapi.runtime.SendCommand;
 /**
  * Sends TT_FILE_OFFER: [sender: any] Offer a file to the receiver, or answer a TT_FILE_REQUEST. The
  * metadata blob is the file's 32-byte SHA-256 followed by its UTF-8 name (at most 223 bytes); it is
- * sent in parts (meta_offset, up to 77 bytes each), each part repeating the other fields. The
- * receiver answers with TT_FILE_STATUS. Offering a file whose partial state the receiver kept
- * resumes it.
+ * sent in parts (meta_offset, up to 71 bytes each), each part repeating the other fields. The
+ * receiver answers with TT_FILE_STATUS; no file data is sent before it accepts. Offering a file
+ * whose partial state the receiver kept (same name, size and SHA-256) resumes it, whatever its
+ * transfer id was.
  * <p>
  * Succeeds once sent: the message awaits no reply.
  * <p>
@@ -23,10 +24,14 @@ public class SendTtFileOffer extends SendCommand {
     public final int target_system;
     /** Receiver component id. (uint8_t) */
     public final int target_component;
-    /** Sender-chosen id, unique among all of the sender's active outgoing transfers. (uint8_t) */
-    public final int transfer_id;
-    /** The TT_FILE_REQUEST this answers, 0 if unsolicited. (uint8_t) */
-    public final int request_id;
+    /**
+     * Sender-chosen random nonce, never 0, new for every transfer (a restart or resume gets a new
+     * one): it names the transfer in every frame, so that no other sender, process or earlier run
+     * can reuse it by accident. (uint32_t)
+     */
+    public final long transfer_id;
+    /** The TT_FILE_REQUEST (its request_id) this answers, 0 if unsolicited. (uint32_t) */
+    public final long request_id;
     /** File size. [bytes] (uint32_t) */
     public final long size;
     /** Offer flags. (uint8_t; enum {@link ttctl.ttapi.enums.TtFileFlags}) */
@@ -35,10 +40,10 @@ public class SendTtFileOffer extends SendCommand {
     public final int meta_length;
     /** Offset of this part in the metadata blob. [bytes] (uint8_t) */
     public final int meta_offset;
-    /** Part of the metadata blob. (uint8_t[77]) */
+    /** Part of the metadata blob. (uint8_t[71]) */
     public final byte[] meta;
 
-    public SendTtFileOffer(int target_system, int target_component, int transfer_id, int request_id, long size, int flags, int meta_length, int meta_offset, byte[] meta) {
+    public SendTtFileOffer(int target_system, int target_component, long transfer_id, long request_id, long size, int flags, int meta_length, int meta_offset, byte[] meta) {
         super(DEFAULT_PRIORITY, 0, 0, 1.0);
         this.target_system = target_system;
         this.target_component = target_component;

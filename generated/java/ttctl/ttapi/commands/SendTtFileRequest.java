@@ -10,7 +10,8 @@ import ttctl.ttapi.runtime.SendCommand;
 /**
  * Sends TT_FILE_REQUEST: [sender: any] Ask the peer to send a file (download). The name is UTF-8,
  * sent in parts like the offer's metadata. The peer answers with TT_FILE_OFFER (request_id echoed)
- * or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or REQUEST_REFUSED).
+ * or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or REQUEST_REFUSED, with a
+ * TT_FILE_REASON).
  * <p>
  * Succeeds once sent: the message awaits no reply.
  * <p>
@@ -21,8 +22,8 @@ public class SendTtFileRequest extends SendCommand {
     public final int target_system;
     /** Peer component id. (uint8_t) */
     public final int target_component;
-    /** Requester-chosen id, 1..255. (uint8_t) */
-    public final int request_id;
+    /** Requester-chosen random nonce, never 0, new for every request. (uint32_t) */
+    public final long request_id;
     /** Length of the whole name. [bytes] (uint8_t) */
     public final int name_length;
     /** Offset of this part in the name. [bytes] (uint8_t) */
@@ -30,7 +31,7 @@ public class SendTtFileRequest extends SendCommand {
     /** Part of the UTF-8 name. (uint8_t[80]) */
     public final byte[] name;
 
-    public SendTtFileRequest(int target_system, int target_component, int request_id, int name_length, int name_offset, byte[] name) {
+    public SendTtFileRequest(int target_system, int target_component, long request_id, int name_length, int name_offset, byte[] name) {
         super(DEFAULT_PRIORITY, 0, 0, 1.0);
         this.target_system = target_system;
         this.target_component = target_component;

@@ -12,7 +12,8 @@ import ttctl.ttapi.runtime.SendCommand;
  * refusing an offer, while data flows (regularly, when new gaps appear, and when data stops
  * coming), and on completion. Bytes below received_contiguous have all arrived; in [region_start,
  * received_end) everything arrived except the listed missing ranges. When there are more gaps than
- * fit, several statuses describe successive regions.
+ * fit, several statuses describe successive regions. A sender takes a status for its own only if
+ * both transfer_id and meta_check match its offer.
  * <p>
  * Succeeds once sent: the message awaits no reply.
  * <p>
@@ -23,8 +24,8 @@ public class SendTtFileStatus extends SendCommand {
     public final int target_system;
     /** File sender's component id. (uint8_t) */
     public final int target_component;
-    /** Transfer id from the offer (or request_id, for answers to a request). (uint8_t) */
-    public final int transfer_id;
+    /** Transfer id from the offer (or request_id, for answers to a request). (uint32_t) */
+    public final long transfer_id;
     /** State of the transfer. (uint8_t; enum {@link ttctl.ttapi.enums.TtFileResult}) */
     public final int result;
     /** All bytes before this offset have arrived. [bytes] (uint32_t) */
@@ -46,13 +47,19 @@ public class SendTtFileStatus extends SendCommand {
     /** Number of missing ranges listed in ranges. (uint8_t) */
     public final int range_count;
     /**
+     * The first 4 bytes, little-endian, of the SHA-256 of the offer's whole metadata blob (the
+     * file's SHA-256 then its name), once the receiver has all of it; 0 before (and in answers to a
+     * request). It binds the status, COMPLETE above all, to that file under that name. (uint32_t)
+     */
+    public final long meta_check;
+    /**
      * Missing byte ranges, ascending, as start, end (exclusive) pairs. An extension so that it
      * comes last on the wire: unused pairs are zero and truncated away, and a status with few gaps
-     * is short. [bytes] (uint32_t[16]; extension)
+     * is short. [bytes] (uint32_t[14]; extension)
      */
     public final long[] ranges;
 
-    public SendTtFileStatus(int target_system, int target_component, int transfer_id, int result, long received_contiguous, long region_start, long received_end, long last_offset, int hold_ms, int range_count, long[] ranges) {
+    public SendTtFileStatus(int target_system, int target_component, long transfer_id, int result, long received_contiguous, long region_start, long received_end, long last_offset, int hold_ms, int range_count, long meta_check, long[] ranges) {
         super(DEFAULT_PRIORITY, 0, 0, 1.0);
         this.target_system = target_system;
         this.target_component = target_component;
@@ -64,6 +71,7 @@ public class SendTtFileStatus extends SendCommand {
         this.last_offset = last_offset;
         this.hold_ms = hold_ms;
         this.range_count = range_count;
+        this.meta_check = meta_check;
         this.ranges = ranges;
     }
 
@@ -80,6 +88,7 @@ public class SendTtFileStatus extends SendCommand {
         msg.last_offset = this.last_offset;
         msg.hold_ms = this.hold_ms;
         msg.range_count = this.range_count;
+        msg.meta_check = this.meta_check;
         msg.ranges = this.ranges;
         return msg;
     }

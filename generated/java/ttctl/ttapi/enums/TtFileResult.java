@@ -10,7 +10,10 @@ package ttctl.ttapi.enums;
 public final class TtFileResult {
     /** Accepted and receiving; the status lists what is missing. */
     public static final int TT_FILE_RESULT_IN_PROGRESS = 0;
-    /** Whole file received, SHA-256 verified, stored under its final name. */
+    /**
+     * Whole file received, SHA-256 verified, stored under its final name; or a file of that name
+     * with the same size and SHA-256 was already there.
+     */
     public static final int TT_FILE_RESULT_COMPLETE = 1;
     /** Name refused: absolute, with '..', control characters, or too long. */
     public static final int TT_FILE_RESULT_REFUSED_NAME = 2;
@@ -18,9 +21,15 @@ public final class TtFileResult {
     public static final int TT_FILE_RESULT_REFUSED_EXISTS = 3;
     /** The file is larger than the per-transfer quota or the directory quota allows. */
     public static final int TT_FILE_RESULT_REFUSED_QUOTA = 4;
-    /** Too many transfers at once; retry later. */
+    /**
+     * Too many transfers at once, or another transfer is receiving that name right now: offer again
+     * later.
+     */
     public static final int TT_FILE_RESULT_REFUSED_BUSY = 5;
-    /** All bytes arrived but their SHA-256 differs from the offer; partial state discarded. */
+    /**
+     * All bytes arrived but their SHA-256 differs from the offer; partial state discarded (the
+     * sender may offer again, from scratch, under a new transfer id).
+     */
     public static final int TT_FILE_RESULT_FAILED_CHECKSUM = 6;
     /** The receiver's disk is full; partial state kept for resume. */
     public static final int TT_FILE_RESULT_FAILED_DISK_FULL = 7;

@@ -7,7 +7,7 @@ import ttctl.ttapi.runtime.Wire;
 
 /**
  * TT_FILE_DATA (id 50002): [sender: any] File bytes in a frame that fills one 100-byte packet
- * exactly. It carries min(83, size - offset) bytes: the count follows from the offer's size, so
+ * exactly. It carries min(80, size - offset) bytes: the count follows from the offer's size, so
  * trailing zero bytes may be truncated on the wire.
  * <p>
  * Fields are public, named as in the XML, in XML order; their Java types follow the mapping in
@@ -19,20 +19,20 @@ import ttctl.ttapi.runtime.Wire;
 public final class TtFileData extends MavlinkMessage {
     public static final int MSG_ID = 50002;
     public static final String NAME = "TT_FILE_DATA";
-    public static final int CRC_EXTRA = 143;
+    public static final int CRC_EXTRA = 203;
     /** Payload length with extension fields. */
     public static final int PAYLOAD_LENGTH = 88;
     /** Payload length without extension fields. */
     public static final int MIN_LENGTH = 88;
 
-    /** Transfer id from the offer. (uint8_t) */
-    public int transfer_id;
+    /** Transfer id from the offer. (uint32_t) */
+    public long transfer_id;
 
     /** Offset of data in the file. [bytes] (uint32_t) */
     public long offset;
 
-    /** File bytes. (uint8_t[83]) */
-    public byte[] data = new byte[83];
+    /** File bytes. (uint8_t[80]) */
+    public byte[] data = new byte[80];
 
     /** A message with every field zero. */
     public TtFileData() {
@@ -40,7 +40,7 @@ public final class TtFileData extends MavlinkMessage {
 
 
     /** A message with these field values (arrays are used, not copied). */
-    public TtFileData(int transfer_id, long offset, byte[] data) {
+    public TtFileData(long transfer_id, long offset, byte[] data) {
         this.transfer_id = transfer_id;
         this.offset = offset;
         this.data = data;
@@ -76,9 +76,9 @@ public final class TtFileData extends MavlinkMessage {
         if (out.length < PAYLOAD_LENGTH) {
             throw new IllegalArgumentException(NAME + ": payload buffer of " + out.length + " bytes, need " + PAYLOAD_LENGTH);
         }
-        Wire.putU32(out, 0, this.offset, "TT_FILE_DATA.offset");
-        Wire.putU8(out, 4, this.transfer_id, "TT_FILE_DATA.transfer_id");
-        Wire.putBytes(out, 5, this.data, 83, false, "TT_FILE_DATA.data");
+        Wire.putU32(out, 0, this.transfer_id, "TT_FILE_DATA.transfer_id");
+        Wire.putU32(out, 4, this.offset, "TT_FILE_DATA.offset");
+        Wire.putBytes(out, 8, this.data, 80, false, "TT_FILE_DATA.data");
         return Wire.truncated(out, PAYLOAD_LENGTH);
     }
 
@@ -95,9 +95,9 @@ public final class TtFileData extends MavlinkMessage {
             o = 0;
         }
         TtFileData m = new TtFileData();
-        m.offset = Wire.getU32(b, o + 0);
-        m.transfer_id = Wire.getU8(b, o + 4);
-        m.data = Wire.getBytes(b, o + 5, 83);
+        m.transfer_id = Wire.getU32(b, o + 0);
+        m.offset = Wire.getU32(b, o + 4);
+        m.data = Wire.getBytes(b, o + 8, 80);
         return m;
     }
 

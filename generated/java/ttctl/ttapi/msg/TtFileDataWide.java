@@ -8,7 +8,7 @@ import ttctl.ttapi.runtime.Wire;
 /**
  * TT_FILE_DATA_WIDE (id 50009): [sender: any] [spans-packets] File bytes in a 267-byte frame that
  * spans packets: less framing per byte, for when the transfer observes little loss. It carries
- * min(250, size - offset) bytes; trailing zero bytes may be truncated on the wire.
+ * min(247, size - offset) bytes; trailing zero bytes may be truncated on the wire.
  * <p>
  * Fields are public, named as in the XML, in XML order; their Java types follow the mapping in
  * {@link MavlinkMessage}: int8_t byte, uint8_t int, int16_t short, uint16_t int, int32_t int,
@@ -19,20 +19,20 @@ import ttctl.ttapi.runtime.Wire;
 public final class TtFileDataWide extends MavlinkMessage {
     public static final int MSG_ID = 50009;
     public static final String NAME = "TT_FILE_DATA_WIDE";
-    public static final int CRC_EXTRA = 221;
+    public static final int CRC_EXTRA = 100;
     /** Payload length with extension fields. */
     public static final int PAYLOAD_LENGTH = 255;
     /** Payload length without extension fields. */
     public static final int MIN_LENGTH = 255;
 
-    /** Transfer id from the offer. (uint8_t) */
-    public int transfer_id;
+    /** Transfer id from the offer. (uint32_t) */
+    public long transfer_id;
 
     /** Offset of data in the file. [bytes] (uint32_t) */
     public long offset;
 
-    /** File bytes. (uint8_t[250]) */
-    public byte[] data = new byte[250];
+    /** File bytes. (uint8_t[247]) */
+    public byte[] data = new byte[247];
 
     /** A message with every field zero. */
     public TtFileDataWide() {
@@ -40,7 +40,7 @@ public final class TtFileDataWide extends MavlinkMessage {
 
 
     /** A message with these field values (arrays are used, not copied). */
-    public TtFileDataWide(int transfer_id, long offset, byte[] data) {
+    public TtFileDataWide(long transfer_id, long offset, byte[] data) {
         this.transfer_id = transfer_id;
         this.offset = offset;
         this.data = data;
@@ -76,9 +76,9 @@ public final class TtFileDataWide extends MavlinkMessage {
         if (out.length < PAYLOAD_LENGTH) {
             throw new IllegalArgumentException(NAME + ": payload buffer of " + out.length + " bytes, need " + PAYLOAD_LENGTH);
         }
-        Wire.putU32(out, 0, this.offset, "TT_FILE_DATA_WIDE.offset");
-        Wire.putU8(out, 4, this.transfer_id, "TT_FILE_DATA_WIDE.transfer_id");
-        Wire.putBytes(out, 5, this.data, 250, false, "TT_FILE_DATA_WIDE.data");
+        Wire.putU32(out, 0, this.transfer_id, "TT_FILE_DATA_WIDE.transfer_id");
+        Wire.putU32(out, 4, this.offset, "TT_FILE_DATA_WIDE.offset");
+        Wire.putBytes(out, 8, this.data, 247, false, "TT_FILE_DATA_WIDE.data");
         return Wire.truncated(out, PAYLOAD_LENGTH);
     }
 
@@ -95,9 +95,9 @@ public final class TtFileDataWide extends MavlinkMessage {
             o = 0;
         }
         TtFileDataWide m = new TtFileDataWide();
-        m.offset = Wire.getU32(b, o + 0);
-        m.transfer_id = Wire.getU8(b, o + 4);
-        m.data = Wire.getBytes(b, o + 5, 250);
+        m.transfer_id = Wire.getU32(b, o + 0);
+        m.offset = Wire.getU32(b, o + 4);
+        m.data = Wire.getBytes(b, o + 8, 247);
         return m;
     }
 

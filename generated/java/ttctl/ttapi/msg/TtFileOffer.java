@@ -8,9 +8,10 @@ import ttctl.ttapi.runtime.Wire;
 /**
  * TT_FILE_OFFER (id 50000): [sender: any] Offer a file to the receiver, or answer a
  * TT_FILE_REQUEST. The metadata blob is the file's 32-byte SHA-256 followed by its UTF-8 name (at
- * most 223 bytes); it is sent in parts (meta_offset, up to 77 bytes each), each part repeating the
- * other fields. The receiver answers with TT_FILE_STATUS. Offering a file whose partial state the
- * receiver kept resumes it.
+ * most 223 bytes); it is sent in parts (meta_offset, up to 71 bytes each), each part repeating the
+ * other fields. The receiver answers with TT_FILE_STATUS; no file data is sent before it accepts.
+ * Offering a file whose partial state the receiver kept (same name, size and SHA-256) resumes it,
+ * whatever its transfer id was.
  * <p>
  * Fields are public, named as in the XML, in XML order; their Java types follow the mapping in
  * {@link MavlinkMessage}: int8_t byte, uint8_t int, int16_t short, uint16_t int, int32_t int,
@@ -21,7 +22,7 @@ import ttctl.ttapi.runtime.Wire;
 public final class TtFileOffer extends MavlinkMessage {
     public static final int MSG_ID = 50000;
     public static final String NAME = "TT_FILE_OFFER";
-    public static final int CRC_EXTRA = 196;
+    public static final int CRC_EXTRA = 88;
     /** Payload length with extension fields. */
     public static final int PAYLOAD_LENGTH = 88;
     /** Payload length without extension fields. */
@@ -33,11 +34,15 @@ public final class TtFileOffer extends MavlinkMessage {
     /** Receiver component id. (uint8_t) */
     public int target_component;
 
-    /** Sender-chosen id, unique among all of the sender's active outgoing transfers. (uint8_t) */
-    public int transfer_id;
+    /**
+     * Sender-chosen random nonce, never 0, new for every transfer (a restart or resume gets a new
+     * one): it names the transfer in every frame, so that no other sender, process or earlier run
+     * can reuse it by accident. (uint32_t)
+     */
+    public long transfer_id;
 
-    /** The TT_FILE_REQUEST this answers, 0 if unsolicited. (uint8_t) */
-    public int request_id;
+    /** The TT_FILE_REQUEST (its request_id) this answers, 0 if unsolicited. (uint32_t) */
+    public long request_id;
 
     /** File size. [bytes] (uint32_t) */
     public long size;
@@ -51,8 +56,8 @@ public final class TtFileOffer extends MavlinkMessage {
     /** Offset of this part in the metadata blob. [bytes] (uint8_t) */
     public int meta_offset;
 
-    /** Part of the metadata blob. (uint8_t[77]) */
-    public byte[] meta = new byte[77];
+    /** Part of the metadata blob. (uint8_t[71]) */
+    public byte[] meta = new byte[71];
 
     /** A message with every field zero. */
     public TtFileOffer() {
@@ -60,7 +65,7 @@ public final class TtFileOffer extends MavlinkMessage {
 
 
     /** A message with these field values (arrays are used, not copied). */
-    public TtFileOffer(int target_system, int target_component, int transfer_id, int request_id, long size, int flags, int meta_length, int meta_offset, byte[] meta) {
+    public TtFileOffer(int target_system, int target_component, long transfer_id, long request_id, long size, int flags, int meta_length, int meta_offset, byte[] meta) {
         this.target_system = target_system;
         this.target_component = target_component;
         this.transfer_id = transfer_id;
@@ -102,15 +107,15 @@ public final class TtFileOffer extends MavlinkMessage {
         if (out.length < PAYLOAD_LENGTH) {
             throw new IllegalArgumentException(NAME + ": payload buffer of " + out.length + " bytes, need " + PAYLOAD_LENGTH);
         }
-        Wire.putU32(out, 0, this.size, "TT_FILE_OFFER.size");
-        Wire.putU8(out, 4, this.target_system, "TT_FILE_OFFER.target_system");
-        Wire.putU8(out, 5, this.target_component, "TT_FILE_OFFER.target_component");
-        Wire.putU8(out, 6, this.transfer_id, "TT_FILE_OFFER.transfer_id");
-        Wire.putU8(out, 7, this.request_id, "TT_FILE_OFFER.request_id");
-        Wire.putU8(out, 8, this.flags, "TT_FILE_OFFER.flags");
-        Wire.putU8(out, 9, this.meta_length, "TT_FILE_OFFER.meta_length");
-        Wire.putU8(out, 10, this.meta_offset, "TT_FILE_OFFER.meta_offset");
-        Wire.putBytes(out, 11, this.meta, 77, false, "TT_FILE_OFFER.meta");
+        Wire.putU32(out, 0, this.transfer_id, "TT_FILE_OFFER.transfer_id");
+        Wire.putU32(out, 4, this.request_id, "TT_FILE_OFFER.request_id");
+        Wire.putU32(out, 8, this.size, "TT_FILE_OFFER.size");
+        Wire.putU8(out, 12, this.target_system, "TT_FILE_OFFER.target_system");
+        Wire.putU8(out, 13, this.target_component, "TT_FILE_OFFER.target_component");
+        Wire.putU8(out, 14, this.flags, "TT_FILE_OFFER.flags");
+        Wire.putU8(out, 15, this.meta_length, "TT_FILE_OFFER.meta_length");
+        Wire.putU8(out, 16, this.meta_offset, "TT_FILE_OFFER.meta_offset");
+        Wire.putBytes(out, 17, this.meta, 71, false, "TT_FILE_OFFER.meta");
         return Wire.truncated(out, PAYLOAD_LENGTH);
     }
 
@@ -127,15 +132,15 @@ public final class TtFileOffer extends MavlinkMessage {
             o = 0;
         }
         TtFileOffer m = new TtFileOffer();
-        m.size = Wire.getU32(b, o + 0);
-        m.target_system = Wire.getU8(b, o + 4);
-        m.target_component = Wire.getU8(b, o + 5);
-        m.transfer_id = Wire.getU8(b, o + 6);
-        m.request_id = Wire.getU8(b, o + 7);
-        m.flags = Wire.getU8(b, o + 8);
-        m.meta_length = Wire.getU8(b, o + 9);
-        m.meta_offset = Wire.getU8(b, o + 10);
-        m.meta = Wire.getBytes(b, o + 11, 77);
+        m.transfer_id = Wire.getU32(b, o + 0);
+        m.request_id = Wire.getU32(b, o + 4);
+        m.size = Wire.getU32(b, o + 8);
+        m.target_system = Wire.getU8(b, o + 12);
+        m.target_component = Wire.getU8(b, o + 13);
+        m.flags = Wire.getU8(b, o + 14);
+        m.meta_length = Wire.getU8(b, o + 15);
+        m.meta_offset = Wire.getU8(b, o + 16);
+        m.meta = Wire.getBytes(b, o + 17, 71);
         return m;
     }
 

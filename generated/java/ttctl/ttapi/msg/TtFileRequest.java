@@ -8,7 +8,8 @@ import ttctl.ttapi.runtime.Wire;
 /**
  * TT_FILE_REQUEST (id 50003): [sender: any] Ask the peer to send a file (download). The name is
  * UTF-8, sent in parts like the offer's metadata. The peer answers with TT_FILE_OFFER (request_id
- * echoed) or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or REQUEST_REFUSED).
+ * echoed) or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or REQUEST_REFUSED, with a
+ * TT_FILE_REASON).
  * <p>
  * Fields are public, named as in the XML, in XML order; their Java types follow the mapping in
  * {@link MavlinkMessage}: int8_t byte, uint8_t int, int16_t short, uint16_t int, int32_t int,
@@ -19,11 +20,11 @@ import ttctl.ttapi.runtime.Wire;
 public final class TtFileRequest extends MavlinkMessage {
     public static final int MSG_ID = 50003;
     public static final String NAME = "TT_FILE_REQUEST";
-    public static final int CRC_EXTRA = 89;
+    public static final int CRC_EXTRA = 129;
     /** Payload length with extension fields. */
-    public static final int PAYLOAD_LENGTH = 85;
+    public static final int PAYLOAD_LENGTH = 88;
     /** Payload length without extension fields. */
-    public static final int MIN_LENGTH = 85;
+    public static final int MIN_LENGTH = 88;
 
     /** Peer system id. (uint8_t) */
     public int target_system;
@@ -31,8 +32,8 @@ public final class TtFileRequest extends MavlinkMessage {
     /** Peer component id. (uint8_t) */
     public int target_component;
 
-    /** Requester-chosen id, 1..255. (uint8_t) */
-    public int request_id;
+    /** Requester-chosen random nonce, never 0, new for every request. (uint32_t) */
+    public long request_id;
 
     /** Length of the whole name. [bytes] (uint8_t) */
     public int name_length;
@@ -49,7 +50,7 @@ public final class TtFileRequest extends MavlinkMessage {
 
 
     /** A message with these field values (arrays are used, not copied). */
-    public TtFileRequest(int target_system, int target_component, int request_id, int name_length, int name_offset, byte[] name) {
+    public TtFileRequest(int target_system, int target_component, long request_id, int name_length, int name_offset, byte[] name) {
         this.target_system = target_system;
         this.target_component = target_component;
         this.request_id = request_id;
@@ -88,12 +89,12 @@ public final class TtFileRequest extends MavlinkMessage {
         if (out.length < PAYLOAD_LENGTH) {
             throw new IllegalArgumentException(NAME + ": payload buffer of " + out.length + " bytes, need " + PAYLOAD_LENGTH);
         }
-        Wire.putU8(out, 0, this.target_system, "TT_FILE_REQUEST.target_system");
-        Wire.putU8(out, 1, this.target_component, "TT_FILE_REQUEST.target_component");
-        Wire.putU8(out, 2, this.request_id, "TT_FILE_REQUEST.request_id");
-        Wire.putU8(out, 3, this.name_length, "TT_FILE_REQUEST.name_length");
-        Wire.putU8(out, 4, this.name_offset, "TT_FILE_REQUEST.name_offset");
-        Wire.putBytes(out, 5, this.name, 80, false, "TT_FILE_REQUEST.name");
+        Wire.putU32(out, 0, this.request_id, "TT_FILE_REQUEST.request_id");
+        Wire.putU8(out, 4, this.target_system, "TT_FILE_REQUEST.target_system");
+        Wire.putU8(out, 5, this.target_component, "TT_FILE_REQUEST.target_component");
+        Wire.putU8(out, 6, this.name_length, "TT_FILE_REQUEST.name_length");
+        Wire.putU8(out, 7, this.name_offset, "TT_FILE_REQUEST.name_offset");
+        Wire.putBytes(out, 8, this.name, 80, false, "TT_FILE_REQUEST.name");
         return Wire.truncated(out, PAYLOAD_LENGTH);
     }
 
@@ -110,12 +111,12 @@ public final class TtFileRequest extends MavlinkMessage {
             o = 0;
         }
         TtFileRequest m = new TtFileRequest();
-        m.target_system = Wire.getU8(b, o + 0);
-        m.target_component = Wire.getU8(b, o + 1);
-        m.request_id = Wire.getU8(b, o + 2);
-        m.name_length = Wire.getU8(b, o + 3);
-        m.name_offset = Wire.getU8(b, o + 4);
-        m.name = Wire.getBytes(b, o + 5, 80);
+        m.request_id = Wire.getU32(b, o + 0);
+        m.target_system = Wire.getU8(b, o + 4);
+        m.target_component = Wire.getU8(b, o + 5);
+        m.name_length = Wire.getU8(b, o + 6);
+        m.name_offset = Wire.getU8(b, o + 7);
+        m.name = Wire.getBytes(b, o + 8, 80);
         return m;
     }
 

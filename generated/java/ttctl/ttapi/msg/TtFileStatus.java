@@ -10,7 +10,8 @@ import ttctl.ttapi.runtime.Wire;
  * refusing an offer, while data flows (regularly, when new gaps appear, and when data stops
  * coming), and on completion. Bytes below received_contiguous have all arrived; in [region_start,
  * received_end) everything arrived except the listed missing ranges. When there are more gaps than
- * fit, several statuses describe successive regions.
+ * fit, several statuses describe successive regions. A sender takes a status for its own only if
+ * both transfer_id and meta_check match its offer.
  * <p>
  * Fields are public, named as in the XML, in XML order; their Java types follow the mapping in
  * {@link MavlinkMessage}: int8_t byte, uint8_t int, int16_t short, uint16_t int, int32_t int,
@@ -21,11 +22,11 @@ import ttctl.ttapi.runtime.Wire;
 public final class TtFileStatus extends MavlinkMessage {
     public static final int MSG_ID = 50001;
     public static final String NAME = "TT_FILE_STATUS";
-    public static final int CRC_EXTRA = 165;
+    public static final int CRC_EXTRA = 193;
     /** Payload length with extension fields. */
-    public static final int PAYLOAD_LENGTH = 87;
+    public static final int PAYLOAD_LENGTH = 86;
     /** Payload length without extension fields. */
-    public static final int MIN_LENGTH = 23;
+    public static final int MIN_LENGTH = 30;
 
     /** File sender's system id. (uint8_t) */
     public int target_system;
@@ -33,8 +34,8 @@ public final class TtFileStatus extends MavlinkMessage {
     /** File sender's component id. (uint8_t) */
     public int target_component;
 
-    /** Transfer id from the offer (or request_id, for answers to a request). (uint8_t) */
-    public int transfer_id;
+    /** Transfer id from the offer (or request_id, for answers to a request). (uint32_t) */
+    public long transfer_id;
 
     /** State of the transfer. (uint8_t; enum {@link ttctl.ttapi.enums.TtFileResult}) */
     public int result;
@@ -64,11 +65,18 @@ public final class TtFileStatus extends MavlinkMessage {
     public int range_count;
 
     /**
+     * The first 4 bytes, little-endian, of the SHA-256 of the offer's whole metadata blob (the
+     * file's SHA-256 then its name), once the receiver has all of it; 0 before (and in answers to a
+     * request). It binds the status, COMPLETE above all, to that file under that name. (uint32_t)
+     */
+    public long meta_check;
+
+    /**
      * Missing byte ranges, ascending, as start, end (exclusive) pairs. An extension so that it
      * comes last on the wire: unused pairs are zero and truncated away, and a status with few gaps
-     * is short. [bytes] (uint32_t[16]; extension)
+     * is short. [bytes] (uint32_t[14]; extension)
      */
-    public long[] ranges = new long[16];
+    public long[] ranges = new long[14];
 
     /** A message with every field zero. */
     public TtFileStatus() {
@@ -76,7 +84,7 @@ public final class TtFileStatus extends MavlinkMessage {
 
 
     /** A message with these field values (arrays are used, not copied). */
-    public TtFileStatus(int target_system, int target_component, int transfer_id, int result, long received_contiguous, long region_start, long received_end, long last_offset, int hold_ms, int range_count, long[] ranges) {
+    public TtFileStatus(int target_system, int target_component, long transfer_id, int result, long received_contiguous, long region_start, long received_end, long last_offset, int hold_ms, int range_count, long meta_check, long[] ranges) {
         this.target_system = target_system;
         this.target_component = target_component;
         this.transfer_id = transfer_id;
@@ -87,6 +95,7 @@ public final class TtFileStatus extends MavlinkMessage {
         this.last_offset = last_offset;
         this.hold_ms = hold_ms;
         this.range_count = range_count;
+        this.meta_check = meta_check;
         this.ranges = ranges;
     }
 
@@ -120,19 +129,20 @@ public final class TtFileStatus extends MavlinkMessage {
         if (out.length < PAYLOAD_LENGTH) {
             throw new IllegalArgumentException(NAME + ": payload buffer of " + out.length + " bytes, need " + PAYLOAD_LENGTH);
         }
-        Wire.putU32(out, 0, this.received_contiguous, "TT_FILE_STATUS.received_contiguous");
-        Wire.putU32(out, 4, this.region_start, "TT_FILE_STATUS.region_start");
-        Wire.putU32(out, 8, this.received_end, "TT_FILE_STATUS.received_end");
-        Wire.putU32(out, 12, this.last_offset, "TT_FILE_STATUS.last_offset");
-        Wire.putU16(out, 16, this.hold_ms, "TT_FILE_STATUS.hold_ms");
-        Wire.putU8(out, 18, this.target_system, "TT_FILE_STATUS.target_system");
-        Wire.putU8(out, 19, this.target_component, "TT_FILE_STATUS.target_component");
-        Wire.putU8(out, 20, this.transfer_id, "TT_FILE_STATUS.transfer_id");
-        Wire.putU8(out, 21, this.result, "TT_FILE_STATUS.result");
-        Wire.putU8(out, 22, this.range_count, "TT_FILE_STATUS.range_count");
-        Wire.checkLength(this.ranges == null ? -1 : this.ranges.length, 16, "TT_FILE_STATUS.ranges");
-        for (int i = 0; i < 16; i++) {
-            Wire.putU32(out, 23 + 4 * i, this.ranges[i], "TT_FILE_STATUS.ranges");
+        Wire.putU32(out, 0, this.transfer_id, "TT_FILE_STATUS.transfer_id");
+        Wire.putU32(out, 4, this.received_contiguous, "TT_FILE_STATUS.received_contiguous");
+        Wire.putU32(out, 8, this.region_start, "TT_FILE_STATUS.region_start");
+        Wire.putU32(out, 12, this.received_end, "TT_FILE_STATUS.received_end");
+        Wire.putU32(out, 16, this.last_offset, "TT_FILE_STATUS.last_offset");
+        Wire.putU32(out, 20, this.meta_check, "TT_FILE_STATUS.meta_check");
+        Wire.putU16(out, 24, this.hold_ms, "TT_FILE_STATUS.hold_ms");
+        Wire.putU8(out, 26, this.target_system, "TT_FILE_STATUS.target_system");
+        Wire.putU8(out, 27, this.target_component, "TT_FILE_STATUS.target_component");
+        Wire.putU8(out, 28, this.result, "TT_FILE_STATUS.result");
+        Wire.putU8(out, 29, this.range_count, "TT_FILE_STATUS.range_count");
+        Wire.checkLength(this.ranges == null ? -1 : this.ranges.length, 14, "TT_FILE_STATUS.ranges");
+        for (int i = 0; i < 14; i++) {
+            Wire.putU32(out, 30 + 4 * i, this.ranges[i], "TT_FILE_STATUS.ranges");
         }
         return Wire.truncated(out, PAYLOAD_LENGTH);
     }
@@ -150,19 +160,20 @@ public final class TtFileStatus extends MavlinkMessage {
             o = 0;
         }
         TtFileStatus m = new TtFileStatus();
-        m.received_contiguous = Wire.getU32(b, o + 0);
-        m.region_start = Wire.getU32(b, o + 4);
-        m.received_end = Wire.getU32(b, o + 8);
-        m.last_offset = Wire.getU32(b, o + 12);
-        m.hold_ms = Wire.getU16(b, o + 16);
-        m.target_system = Wire.getU8(b, o + 18);
-        m.target_component = Wire.getU8(b, o + 19);
-        m.transfer_id = Wire.getU8(b, o + 20);
-        m.result = Wire.getU8(b, o + 21);
-        m.range_count = Wire.getU8(b, o + 22);
-        m.ranges = new long[16];
-        for (int i = 0; i < 16; i++) {
-            m.ranges[i] = Wire.getU32(b, o + 23 + 4 * i);
+        m.transfer_id = Wire.getU32(b, o + 0);
+        m.received_contiguous = Wire.getU32(b, o + 4);
+        m.region_start = Wire.getU32(b, o + 8);
+        m.received_end = Wire.getU32(b, o + 12);
+        m.last_offset = Wire.getU32(b, o + 16);
+        m.meta_check = Wire.getU32(b, o + 20);
+        m.hold_ms = Wire.getU16(b, o + 24);
+        m.target_system = Wire.getU8(b, o + 26);
+        m.target_component = Wire.getU8(b, o + 27);
+        m.result = Wire.getU8(b, o + 28);
+        m.range_count = Wire.getU8(b, o + 29);
+        m.ranges = new long[14];
+        for (int i = 0; i < 14; i++) {
+            m.ranges[i] = Wire.getU32(b, o + 30 + 4 * i);
         }
         return m;
     }
@@ -180,6 +191,7 @@ public final class TtFileStatus extends MavlinkMessage {
                 + "last_offset=" + this.last_offset + ", "
                 + "hold_ms=" + this.hold_ms + ", "
                 + "range_count=" + this.range_count + ", "
+                + "meta_check=" + this.meta_check + ", "
                 + "ranges=" + java.util.Arrays.toString(this.ranges)
                 + "}";
     }

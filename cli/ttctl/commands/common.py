@@ -1,0 +1,197 @@
+"""What the link commands share: pacing from --profile/--rate, endpoint specs, signals, the
+progress bar, one-line messages."""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import signal
+import sys
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+from ..errors import Fail
+
+TABLET = (255, 190)
+ONBOARD = (1, 240)
+TICK = 0.25  # how often the command loops look at progress, timeouts and signals
+
+
+@dataclass
+class LinkChoice:
+    """How fast this end sends, and what the link carries each way (None: unknown)."""
+
+    pace_Bps: float | None
+    send_capacity: float | None
+    recv_capacity: float | None
+    quiet: float | None  # silence after which a half-received frame is given up
+
+    def describe(self) -> str:
+        return f"paced at {self.pace_Bps:.0f} B/s" if self.pace_Bps else "unpaced"
+
+
+def link_choice(rate: float | None, profile: str | None, distance: float, sysid: int) -> LinkChoice:
+    from ..link.model import ProfileError, load_profile
+
+    if rate is not None and rate <= 0:
+        raise Fail("--rate must be a positive number of bytes per second")
+    if distance < 0:
+        raise Fail("--distance must not be negative")
+    send_cap = recv_cap = None
+    mtu = 100
+    if profile is not None:
+        try:
+            prof = load_profile(profile)
+        except ProfileError as e:
+            raise Fail(str(e)) from None
+        mine, other = ("up", "down") if sysid == TABLET[0] else ("down", "up")
+        send_cap = prof.capacity_Bps(mine, distance)
+        recv_cap = prof.capacity_Bps(other, distance)
+        mtu = prof.mtu
+    if rate is not None:
+        send_cap = rate
+        recv_cap = recv_cap or rate
+    quiet = 3 * mtu / recv_cap if recv_cap else None
+    return LinkChoice(send_cap, send_cap, recv_cap, quiet)
+
+
+def parse_endpoint(text: str, udp: str) -> Any:
+    from ..link.transport import TransportError, parse_spec
+
+    try:
+        return parse_spec(text, udp=udp)
+    except TransportError as e:
+        raise Fail(str(e)) from None
+
+
+def check_id(value: int, what: str) -> None:
+    if not 0 <= value <= 255:
+        raise Fail(f"{what} must be in 0..255, not {value}")
+
+
+class Signals:
+    """SIGINT/SIGTERM set `stop` (and `wake`) instead of raising in the middle of the loop."""
+
+    def __init__(self, loop: asyncio.AbstractEventLoop, wake: asyncio.Event) -> None:
+        loop.set_exception_handler(_loop_error)
+        self.stop = asyncio.Event()
+        self.got: int | None = None
+        self._loop = loop
+        self._wake = wake
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            with contextlib.suppress(NotImplementedError, RuntimeError):  # not the main thread, or no signals
+                loop.add_signal_handler(sig, self._on, sig)
+
+    def _on(self, sig: int) -> None:
+        self.got = sig
+        self.stop.set()
+        self._wake.set()
+
+    def remove(self) -> None:
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            with contextlib.suppress(NotImplementedError, RuntimeError):
+                self._loop.remove_signal_handler(sig)
+
+
+def oversize_note(transport: Any) -> None:
+    n = transport.stats.oversize
+    if n:
+        err(f"dropped {n} datagram(s) longer than {transport.mtu} bytes (DJI's link refuses them)")
+
+
+def _loop_error(loop: asyncio.AbstractEventLoop, context: dict[str, Any]) -> None:
+    """Whatever asyncio would print with a traceback, as one line."""
+    exc = context.get("exception")
+    what = f"{type(exc).__name__}: {exc}" if exc is not None else ""
+    err(f"warning: {context.get('message', 'error in the event loop')}{': ' + what if what else ''}")
+
+
+def hello(sysid: int, spec: Any) -> Callable[[], Any] | None:
+    """For an end that reaches out over UDP: a HEARTBEAT each second until the peer is heard,
+    so that a peer listening with udpin learns where to answer."""
+    if spec.kind != "udpout":
+        return None
+    import ttapi
+
+    kind = ttapi.MavType.MAV_TYPE_GCS if sysid == TABLET[0] else ttapi.MavType.MAV_TYPE_ONBOARD_CONTROLLER
+    return lambda: ttapi.Heartbeat(type=int(kind), autopilot=int(ttapi.MavAutopilot.MAV_AUTOPILOT_INVALID))
+
+
+async def tick(wake: asyncio.Event, timeout: float = TICK) -> None:
+    with contextlib.suppress(TimeoutError):
+        await asyncio.wait_for(wake.wait(), timeout)
+    wake.clear()
+
+
+def err(text: str) -> None:
+    print(f"ttctl: {text}", file=sys.stderr, flush=True)
+
+
+async def start(runner: Any) -> None:
+    from ..link.transport import TransportError
+
+    try:
+        await runner.start()
+    except TransportError as e:
+        raise Fail(str(e)) from None
+
+
+class Bar:
+    """A rich progress bar on stderr, only when stderr is a terminal."""
+
+    def __init__(self, label: str, total: int) -> None:
+        self.p: Any = None
+        if not sys.stderr.isatty():
+            return
+        from rich.console import Console
+        from rich.progress import (
+            BarColumn,
+            DownloadColumn,
+            Progress,
+            TextColumn,
+            TimeRemainingColumn,
+            TransferSpeedColumn,
+        )
+
+        self.p = Progress(TextColumn("{task.description}"), BarColumn(), DownloadColumn(), TransferSpeedColumn(),
+                          TimeRemainingColumn(), TextColumn("{task.fields[extra]}"),
+                          console=Console(stderr=True), transient=True)
+        self.task = self.p.add_task(label, total=total, extra="")
+        self.p.start()
+
+    def log(self, text: str) -> None:
+        if self.p is not None:
+            self.p.console.print(f"ttctl: {text}", markup=False, highlight=False)
+        else:
+            err(text)
+
+    def update(self, done: int, total: int, extra: str = "") -> None:
+        if self.p is not None:
+            self.p.update(self.task, completed=done, total=total, extra=extra)
+
+    def stop(self) -> None:
+        if self.p is not None:
+            self.p.stop()
+            self.p = None
+
+
+async def await_peer(runner: Any, wake: asyncio.Event, sigs: Signals, timeout: float) -> bool:
+    """A listening end (udpin, tcpin) has nowhere to send until the peer reaches it: wait for
+    that (False if interrupted; Fail after `timeout`)."""
+    transport = runner.transport
+    if not transport.spec.listening:
+        return True
+    loop = asyncio.get_running_loop()
+    end = loop.time() + timeout
+    while transport.peer is None:
+        if sigs.stop.is_set():
+            return False
+        if loop.time() >= end:
+            raise Fail(f"timed out: nobody reached {transport.describe()} within {timeout:g} s", 1)
+        await tick(wake, 0.05)
+    return True
+
+
+def who(ids: tuple[int, ...]) -> str:
+    return f"{ids[0]}/{ids[1]}"

@@ -1,0 +1,132 @@
+"""`ttctl link relay`: the emulated DJI radio between two processes, in real time."""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import socket
+import sys
+from collections import OrderedDict
+from collections.abc import Hashable
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..errors import Fail
+from .common import Signals, err
+
+
+@dataclass
+class RelayOptions:
+    listen: str
+    to: str
+    profile: str = "m100"
+    distance: float = 10.0
+    loss: float | None = None
+    loss_model: str = "random"
+    corrupt: float = 0.0
+    duplicate: float = 0.0
+    reorder: float = 0.0
+    seed: int = 0
+    rate: float | None = None
+    stats_interval: float = 5.0
+    outages: list[str] = field(default_factory=list)  # START:SECONDS, from the relay's start
+
+
+def _outage(text: str) -> tuple[float, float]:
+    start, sep, length = text.partition(":")
+    try:
+        if not sep:
+            raise ValueError
+        return float(start), float(length)
+    except ValueError:
+        raise Fail(f"--outage wants START:SECONDS (seconds from the relay's start), not {text!r}") from None
+
+
+class FrameCheck:
+    """Who is behind a UDP source, judged only by valid MAVLink frames: one packet receiver per
+    source (so packets from two sources never mix), the least recently heard forgotten first."""
+
+    def __init__(self, limit: int = 64) -> None:
+        self.limit = limit
+        self._rxs: OrderedDict[Hashable, Any] = OrderedDict()
+
+    def __call__(self, packet: bytes, source: Hashable) -> set[tuple[int, int]]:
+        from ..wire.packets import PacketReceiver
+
+        rx = self._rxs.get(source)
+        if rx is None:
+            rx = self._rxs[source] = PacketReceiver()
+            if len(self._rxs) > self.limit:
+                self._rxs.popitem(last=False)
+        else:
+            self._rxs.move_to_end(source)
+        return {(m.get_srcSystem(), m.get_srcComponent()) for m in rx.feed(packet)}
+
+
+def _same_place(a: Any, b: Any) -> bool:
+    """Whether sending to `b` would reach the socket listening at `a` (the relay would talk to
+    itself)."""
+    if a.port != b.port:
+        return False
+
+    def addrs(host: str) -> set[str]:
+        with contextlib.suppress(OSError):
+            return {str(info[4][0]) for info in socket.getaddrinfo(host, None, type=socket.SOCK_DGRAM)}
+        return {host}
+
+    mine, theirs = addrs(a.host), addrs(b.host)
+    if mine & theirs:
+        return True
+    wildcard = {"0.0.0.0", "::"}
+    local = {"127.0.0.1", "::1", "localhost"}
+    return bool(mine & wildcard) and bool(theirs & local or theirs & addrs(socket.gethostname()))
+
+
+def relay(o: RelayOptions) -> int:
+    from ..link.model import Impairments, ProfileError, load_profile
+    from ..link.relay import Relay, with_rate
+    from ..link.transport import TransportError, parse_spec
+
+    try:
+        listen = parse_spec(o.listen, udp="udpin", allowed=("udpin",))
+        to = parse_spec(o.to, udp="udpout", allowed=("udpout",))
+    except TransportError as e:
+        raise Fail(f"{e} (the relay carries DTT packets: UDP only)") from None
+    if _same_place(listen, to):
+        raise Fail(f"--to {o.to} is the relay's own --listen address: it would relay to itself")
+    if o.distance < 0:
+        raise Fail("--distance must not be negative")
+    if o.stats_interval < 0:
+        raise Fail("--stats-interval must not be negative")
+    try:
+        prof = load_profile(o.profile)
+        if o.rate is not None:
+            if o.rate <= 0:
+                raise Fail("--rate must be a positive number of bytes per second")
+            prof = with_rate(prof, o.rate)
+        imp = Impairments(loss=o.loss, loss_model=o.loss_model, corrupt=o.corrupt, duplicate=o.duplicate,
+                          reorder=o.reorder, outages=[_outage(text) for text in o.outages])
+        imp.check()
+        r = Relay(listen, to, prof, o.distance, imp, seed=o.seed, log=lambda text: err(f"relay: {text}"),
+                  validate=FrameCheck())
+    except ProfileError as e:
+        raise Fail(str(e)) from None
+
+    async def main() -> None:
+        loop = asyncio.get_running_loop()
+        wake = asyncio.Event()
+        sigs = Signals(loop, wake)
+        try:
+            from ..link.relay import run_relay
+
+            await run_relay(r, sigs.stop, o.stats_interval, lambda text: print(text, file=sys.stderr, flush=True))
+        except TransportError as e:
+            raise Fail(str(e)) from None
+        finally:
+            sigs.remove()
+
+    try:
+        asyncio.run(main())
+    except KeyboardInterrupt:  # before the signal handlers were in place
+        err("relay: stopped")
+    return 0

@@ -1,0 +1,431 @@
+"""The receiving side of every incoming file transfer of an endpoint, sans-IO (see transfer.py
+for the protocol).
+
+A transfer is known by (sender sysid, sender compid, transfer id): the id is the sender's
+random nonce, so senders with equal MAVLink ids (several processes on one laptop) never meet.
+Transfers of the same file under the same name share one partial file (a sender and its
+restarted self, or two senders of one file), so each one's bytes count for all. A status only
+ever reports bytes that were saved to disk before it was built, so whatever a sender learns
+survives a crash of the receiver.
+"""
+
+from __future__ import annotations
+
+from collections import OrderedDict
+from collections.abc import Callable
+
+import ttapi
+from ttapi import TtFileResult as R
+
+from .names import SHA_LEN, Refused, check_name
+from .ranges import RangeSet
+from .storage import DiskFull, Partial, ReceiveDir, StorageError, partial_key
+from .transfer import MAX_RANGES, Key, TransferConfig, meta_check, reason_fit
+
+MAX_PENDING_OFFERS = 64  # offers whose metadata is still arriving: a flood of them is not our memory's problem
+MAX_UNKNOWN = 256  # transfer ids recently told 'unknown'
+
+_REFUSAL = {
+    "NAME": R.TT_FILE_RESULT_REFUSED_NAME,
+    "EXISTS": R.TT_FILE_RESULT_REFUSED_EXISTS,
+    "QUOTA": R.TT_FILE_RESULT_REFUSED_QUOTA,
+    "BUSY": R.TT_FILE_RESULT_REFUSED_BUSY,
+}
+_EXPLAINED = {R.TT_FILE_RESULT_REFUSED_NAME, R.TT_FILE_RESULT_REFUSED_EXISTS, R.TT_FILE_RESULT_REFUSED_QUOTA,
+              R.TT_FILE_RESULT_REFUSED_BUSY, R.TT_FILE_RESULT_FAILED_CHECKSUM, R.TT_FILE_RESULT_FAILED_DISK_FULL,
+              R.TT_FILE_RESULT_FAILED_IO}
+
+
+class Incoming:
+    """The receiving side of one transfer."""
+
+    def __init__(self, key: Key, now: float) -> None:
+        self.key = key
+        self.meta = bytearray()
+        self.meta_have = RangeSet()
+        self.meta_length = 0
+        self.size = 0
+        self.flags = 0
+        self.request_id = 0
+        self.name = ""
+        self.sha256 = b""
+        self.check = 0  # meta_check, once the metadata is whole
+        self.decided = False  # accepted, refused, busy, finished
+        self.group: str | None = None  # the partial file it receives into
+        self.partial: Partial | None = None
+        self.result = R.TT_FILE_RESULT_IN_PROGRESS
+        self.reason = ""
+        self.frames = 0
+        self.last_activity = now
+        self.status_due: float | None = None
+        self.last_status = -1e9
+        self.final_path: str | None = None
+        self.finished_at: float | None = None
+        self.nothing_sent = False  # complete without data: an identical file, or a whole partial, was here
+        self.identical = False  # complete because an identical file was there under the name
+        self.started = now
+        self.last_data: float | None = None
+        self.last_offset = 0
+        self.seen_end = False  # the last chunk has arrived once: the tail, where every round trip counts
+        self.gap_dt = 0.05  # EWMA of the time between data frames
+        self.quiet_due: float | None = None  # report when data stops coming
+        self.said_busy = False
+
+    @property
+    def who(self) -> str:
+        return f"{self.key[0]}/{self.key[1]}"
+
+    @property
+    def overwrite(self) -> bool:
+        return bool(self.flags & ttapi.TtFileFlags.TT_FILE_FLAGS_OVERWRITE)
+
+
+class FileReceiver:
+    """Every incoming transfer of an endpoint; files land in `store`. `unsolicited=False` takes
+    only files this end asked for (`expect()`), as a download does."""
+
+    def __init__(self, store: ReceiveDir, sysid: int, compid: int, config: TransferConfig | None = None,
+                 max_transfers: int = 8, on_event: Callable[[str, Incoming], None] | None = None,
+                 unsolicited: bool = True) -> None:
+        self.store = store
+        self.sysid = sysid
+        self.compid = compid
+        self.cfg = config or TransferConfig()
+        self.max_transfers = max_transfers
+        self.unsolicited = unsolicited
+        self.transfers: dict[Key, Incoming] = {}
+        self.groups: dict[str, tuple[Partial, set[Key]]] = {}  # partial key -> the partial, who shares it
+        self.on_event = on_event
+        self.now = 0.0
+        self.expected: dict[tuple[int, int, int], str] = {}  # (peer sysid, compid, request id) -> name asked for
+        self._unknown: OrderedDict[Key, float] = OrderedDict()  # told 'unknown transfer', when
+        self._unknown_due: list[Key] = []
+
+    def expect(self, peer: tuple[int, int], request_id: int, name: str) -> None:
+        self.expected[(peer[0], peer[1], request_id)] = name
+
+    def receiving(self) -> list[Incoming]:
+        return [t for t in self.transfers.values() if t.partial is not None]
+
+    def _live_groups(self, now: float) -> set[str]:
+        return {t.group for t in self.transfers.values()
+                if t.group is not None and t.partial is not None and now - t.last_activity < self.cfg.live_window}
+
+    # -- offers ---------------------------------------------------------------------------------
+    def on_offer(self, now: float, msg: ttapi.TtFileOffer) -> None:
+        if msg.transfer_id == 0 or msg.meta_length == 0:
+            return
+        key = (msg.get_srcSystem(), msg.get_srcComponent(), msg.transfer_id)
+        t = self.transfers.get(key)
+        if t is None:
+            if sum(1 for x in self.transfers.values() if not x.decided) >= MAX_PENDING_OFFERS:
+                return
+            t = self.transfers[key] = Incoming(key, now)
+            t.size, t.meta_length, t.flags, t.request_id = msg.size, msg.meta_length, msg.flags, msg.request_id
+            t.meta = bytearray(msg.meta_length)
+        elif (t.size, t.meta_length, t.flags, t.request_id) != (msg.size, msg.meta_length, msg.flags, msg.request_id):
+            # another file offered under this id (a 1 in 2^32 draw, or a confused peer): our
+            # answer's meta_check tells that sender to draw a new id
+            if t.decided:
+                self._status_now(t, now)
+            return
+        t.last_activity = now
+        self._unknown.pop(key, None)
+        off = msg.meta_offset
+        part = bytes(msg.meta[: max(0, min(len(msg.meta), t.meta_length - off))])
+        if t.decided:
+            if part and bytes(t.meta[off:off + len(part)]) != part:
+                self._status_now(t, now)  # as above: not the metadata we decided on
+                return
+            if t.result == R.TT_FILE_RESULT_REFUSED_BUSY:
+                self._decide(t, now)  # room now?
+            else:
+                self._status_now(t, now)  # a repeated offer, or a poll: answer with where we are
+            return
+        if off < t.meta_length and part:
+            t.meta[off:off + len(part)] = part
+            t.meta_have.add(off, off + len(part))
+        if t.meta_have.covers(0, t.meta_length):
+            self._decide(t, now)
+
+    def _refuse(self, t: Incoming, now: float, code: R, reason: str) -> None:
+        t.result, t.reason = code, reason
+        if code == R.TT_FILE_RESULT_REFUSED_BUSY:
+            if not t.said_busy:
+                t.said_busy = True
+                self._event("busy", t)
+        else:
+            self._event("refused", t)
+        self._status_now(t, now)
+
+    def _decide(self, t: Incoming, now: float) -> None:
+        t.decided = True
+        meta = bytes(t.meta)
+        t.check = meta_check(meta)
+        t.sha256 = meta[:SHA_LEN]
+        try:
+            t.name = meta[SHA_LEN:].decode("utf-8")
+            check_name(t.name)
+        except UnicodeDecodeError:
+            t.name = meta[SHA_LEN:].decode("utf-8", "replace")
+            return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_NAME, "the name is not valid UTF-8")
+        except Refused as e:
+            return self._refuse(t, now, _REFUSAL[e.code], e.reason)
+        peer = (t.key[0], t.key[1])
+        if t.request_id:
+            asked = self.expected.get((peer[0], peer[1], t.request_id))
+            if asked != t.name:
+                return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_NAME,
+                                    f"this end did not ask {t.who} for {t.name}")
+        elif not self.unsolicited:
+            return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_NAME, "this end takes only the files it asks for")
+        group = partial_key(t.name, t.size, t.sha256)
+        if group not in self.groups:
+            for other in list(self.transfers.values()):
+                if other.partial is None or other.name != t.name or other is t:
+                    continue
+                if now - other.last_activity < self.cfg.live_window:
+                    return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_BUSY,
+                                        f"{t.name} is being received from {other.who} right now")
+                self._close(other)  # its sender went quiet: this one takes over the name (its data stays)
+            if len(self._live_groups(now)) >= self.max_transfers:
+                return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_BUSY,
+                                    f"{self.max_transfers} transfers are running here")
+            try:
+                already = self.store.admit(t.name, t.size, t.overwrite, t.sha256)
+            except Refused as e:
+                return self._refuse(t, now, _REFUSAL[e.code], e.reason)
+            except (StorageError, OSError) as e:
+                return self._refuse(t, now, R.TT_FILE_RESULT_FAILED_IO, str(e))
+            if already:
+                t.result, t.nothing_sent, t.identical, t.finished_at = R.TT_FILE_RESULT_COMPLETE, True, True, now
+                t.final_path = str(self.store.final_path(t.name))
+                self._event("complete", t)
+                self._status_now(t, now)
+                return None
+            self.groups[group] = (self.store.partial(t.name, t.size, t.sha256), set())
+        partial, members = self.groups[group]
+        members.add(t.key)
+        t.group, t.partial = group, partial
+        t.result, t.reason = R.TT_FILE_RESULT_IN_PROGRESS, ""
+        self._event("accepted", t)
+        if partial.complete:
+            t.nothing_sent = True
+            self._complete(group, now)
+        self._status_now(t, now)
+        return None
+
+    # -- data -----------------------------------------------------------------------------------
+    def on_data(self, now: float, msg: ttapi.TtFileData | ttapi.TtFileDataWide, cap: int) -> None:
+        key = (msg.get_srcSystem(), msg.get_srcComponent(), msg.transfer_id)
+        t = self.transfers.get(key)
+        if t is None:
+            if self.unsolicited:
+                self._tell_unknown(key, now)  # e.g. we restarted: the sender must offer again (and resume)
+            return
+        t.last_activity = now
+        t.frames += 1
+        if t.partial is None or t.group is None:  # not accepted (yet), finished or refused
+            if t.decided and now - t.last_status >= self.cfg.status_min_interval:
+                self._status_now(t, now)
+            return
+        offset = msg.offset
+        length = min(cap, t.size - offset) if offset < t.size else 0
+        if length <= 0:
+            return
+        ranges = t.partial.ranges
+        gaps_before = len(ranges)
+        if not self._write(t, now, offset, bytes(msg.data[:length])):
+            return
+        if t.partial.complete:
+            self._complete(t.group, now)
+            return
+        if t.last_data is not None:
+            t.gap_dt = 0.8 * t.gap_dt + 0.2 * min(1.0, now - t.last_data)
+        t.last_data = now
+        t.last_offset = offset
+        ranges = t.partial.ranges
+        new_gap = len(ranges) > gaps_before
+        at_end = offset + length >= t.size
+        # the last second of data (at the rate it is coming): report at tail frequency already,
+        # so that little is in doubt when the sender runs out of new data
+        rate = cap / max(t.gap_dt, 1e-3)
+        t.seen_end = t.seen_end or at_end or t.size - (offset + length) < rate * 1.0
+        repaired = len(ranges) < gaps_before
+        early = t.frames == self.cfg.early_status_frames
+        if early or new_gap or at_end or repaired:
+            soon = max(now, t.last_status + self._min_interval(t))
+            t.status_due = soon if t.status_due is None else min(t.status_due, soon)
+        elif t.status_due is None:
+            t.status_due = now + self.cfg.status_interval
+        if len(ranges) > 1 or at_end or repaired:
+            t.quiet_due = now + max(3 * t.gap_dt, 0.03)  # if data stops with gaps left, report then
+
+    def _tell_unknown(self, key: Key, now: float) -> None:
+        last = self._unknown.get(key)
+        if last is not None and now - last < self.cfg.offer_interval:
+            return
+        self._unknown[key] = now
+        self._unknown.move_to_end(key)
+        while len(self._unknown) > MAX_UNKNOWN:
+            self._unknown.popitem(last=False)
+        if key not in self._unknown_due:
+            self._unknown_due.append(key)
+
+    def _min_interval(self, t: Incoming) -> float:
+        return self.cfg.status_tail_interval if t.seen_end else self.cfg.status_min_interval
+
+    def _write(self, t: Incoming, now: float, offset: int, data: bytes) -> bool:
+        """Store a chunk; on a full disk or a storage error end every transfer of that file
+        (what was written stays, for a resume) and return False."""
+        assert t.partial is not None and t.group is not None
+        try:
+            t.partial.write(offset, data)
+            return True
+        except DiskFull:
+            code, reason = R.TT_FILE_RESULT_FAILED_DISK_FULL, "the disk is full (what arrived is kept for a resume)"
+        except StorageError as e:
+            code, reason = R.TT_FILE_RESULT_FAILED_IO, str(e)
+        self._end_group(t.group, now, code, reason, keep=True)
+        return False
+
+    def _end_group(self, group: str, now: float, code: R, reason: str, keep: bool, final: str | None = None) -> None:
+        partial, members = self.groups.pop(group)
+        if keep:
+            partial.save()
+        partial.close()
+        for key in members:
+            t = self.transfers.get(key)
+            if t is None:
+                continue
+            t.partial, t.group = None, None
+            t.result, t.reason = code, reason
+            if code == R.TT_FILE_RESULT_COMPLETE:
+                t.final_path, t.finished_at = final, now
+                self._event("complete", t)
+            else:
+                self._event("failed", t)
+            self._status_now(t, now)
+
+    def _complete(self, group: str, now: float) -> None:
+        partial, members = self.groups[group]
+        if not partial.verify():
+            partial.discard()
+            self._end_group(group, now, R.TT_FILE_RESULT_FAILED_CHECKSUM,
+                            "the SHA-256 of the bytes received differs from the offer's; they were discarded",
+                            keep=False)
+            return
+        overwrite = self.store.quota.overwrite and all(
+            self.transfers[k].overwrite for k in members if k in self.transfers)
+        try:
+            final = str(partial.finish(overwrite))
+        except Refused as e:
+            self._end_group(group, now, _REFUSAL[e.code], e.reason, keep=True)
+            return
+        except OSError as e:
+            self._end_group(group, now, R.TT_FILE_RESULT_FAILED_IO, f"{partial.name}: {e.strerror or e}", keep=True)
+            return
+        self._end_group(group, now, R.TT_FILE_RESULT_COMPLETE, "", keep=False, final=final)
+
+    def _close(self, t: Incoming) -> None:
+        """Forget a transfer; its partial file stays (for a resume) unless others share it."""
+        self.transfers.pop(t.key, None)
+        if t.group is not None and t.group in self.groups:
+            partial, members = self.groups[t.group]
+            members.discard(t.key)
+            if not members:
+                partial.save()
+                partial.close()
+                del self.groups[t.group]
+        t.partial, t.group = None, None
+
+    def _event(self, what: str, t: Incoming) -> None:
+        if self.on_event:
+            self.on_event(what, t)
+
+    def _status_now(self, t: Incoming, now: float) -> None:
+        t.status_due = now
+
+    # -- statuses -------------------------------------------------------------------------------
+    def statuses(self, t: Incoming) -> list[ttapi.TtFileStatus]:
+        """One status, or a burst describing successive regions when there are more gaps than
+        one status holds."""
+        if t.partial is None:
+            done = t.size if t.result == R.TT_FILE_RESULT_COMPLETE else 0
+            return [self._status(t, done, done, done, [])]
+        ranges = t.partial.ranges
+        rc = ranges.prefix()
+        last = max((b for _, b in ranges), default=0)
+        gaps = ranges.gaps(rc, last)
+        out = []
+        start = rc
+        for k in range(max(1, self.cfg.status_batches)):
+            batch = gaps[k * MAX_RANGES:(k + 1) * MAX_RANGES]
+            more = len(gaps) > (k + 1) * MAX_RANGES
+            end = batch[-1][1] if more else last
+            out.append(self._status(t, rc, start, end, batch))
+            start = end
+            if not more:
+                break
+        return out
+
+    def _status(self, t: Incoming, rc: int, region: int, re: int,
+                gaps: list[tuple[int, int]]) -> ttapi.TtFileStatus:
+        flat = [x for gap in gaps for x in gap]
+        return ttapi.TtFileStatus(
+            target_system=t.key[0], target_component=t.key[1], transfer_id=t.key[2], result=int(t.result),
+            received_contiguous=rc, region_start=region, received_end=re, last_offset=t.last_offset,
+            hold_ms=min(65535, int(1000 * (self.now - t.last_data))) if t.last_data is not None else 65535,
+            range_count=len(gaps), meta_check=t.check, ranges=flat + [0] * (2 * MAX_RANGES - len(flat)))
+
+    def status(self, t: Incoming) -> ttapi.TtFileStatus:
+        return self.statuses(t)[0]
+
+    def reason_message(self, t: Incoming) -> ttapi.TtFileReason:
+        return ttapi.TtFileReason(target_system=t.key[0], target_component=t.key[1], transfer_id=t.key[2],
+                                  result=int(t.result), text=reason_fit(t.reason))
+
+    def control(self, now: float) -> list[tuple[ttapi.Message, object]]:
+        """Statuses due now (each after the reason for a refusal or failure), each with a key
+        under which a newer one replaces it while it waits to be sent; forget silent transfers.
+        Partial state is saved before the statuses that report it leave."""
+        self.now = now
+        out: list[tuple[ttapi.Message, object]] = []
+        for t in list(self.transfers.values()):
+            if now - t.last_activity >= self.cfg.idle_timeout:
+                self._close(t)
+                continue
+            quiet = t.quiet_due is not None and now >= max(t.quiet_due, t.last_status + self._min_interval(t))
+            if not (quiet or (t.status_due is not None and now >= t.status_due)):
+                continue
+            if t.partial is not None:
+                t.partial.save()
+            if t.result in _EXPLAINED and t.reason:
+                out.append((self.reason_message(t), ("reason", t.key)))
+            out.extend((m, ("status", t.key, i)) for i, m in enumerate(self.statuses(t)))
+            t.last_status = now
+            t.quiet_due = None
+            flowing = (t.result == R.TT_FILE_RESULT_IN_PROGRESS and t.partial is not None
+                       and t.last_data is not None and now - t.last_data < self.cfg.status_interval)
+            t.status_due = now + self.cfg.status_interval if flowing else None
+        for key in self._unknown_due:
+            out.append((ttapi.TtFileStatus(target_system=key[0], target_component=key[1], transfer_id=key[2],
+                                           result=int(R.TT_FILE_RESULT_UNKNOWN_TRANSFER)), ("unknown", key)))
+        self._unknown_due.clear()
+        return out
+
+    def deadline(self) -> float | None:
+        if self._unknown_due:
+            return self.now
+        times = [t.status_due for t in self.transfers.values() if t.status_due is not None]
+        times += [max(t.quiet_due, t.last_status + self._min_interval(t))
+                  for t in self.transfers.values() if t.quiet_due is not None]
+        times += [t.last_activity + self.cfg.idle_timeout for t in self.transfers.values()]
+        return min(times) if times else None
+
+    def close(self) -> None:
+        for t in list(self.transfers.values()):
+            self._close(t)
+
+
+__all__ = ["FileReceiver", "Incoming"]

@@ -1,0 +1,471 @@
+"""The sending side of one file transfer, sans-IO (see transfer.py for the protocol).
+
+The endpoint calls `control(now)` for offers, `next_data(now, space)` when the scheduler has
+room, `on_status(now, msg)` and `on_reason(now, msg)` on answers. A transfer ends exactly once:
+COMPLETE only on a status that carries its own transfer id and metadata check, anything else
+with a code and the receiver's reason when it gave one.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import ttapi
+from ttapi import TtFileResult as R
+
+from .names import Refused, check_name, encoded
+from .ranges import RangeSet
+from .transfer import (
+    META_PART,
+    NARROW,
+    NARROW_FRAME,
+    RESULT_TEXT,
+    WIDE,
+    WIDE_FRAME,
+    TransferConfig,
+    TransferResult,
+    TransferStats,
+    frame_survival_wide,
+    meta_check,
+    packet_loss_from_wide,
+    reason_text,
+    result_name,
+    wilson_upper,
+)
+
+
+class FileSender:
+    """One outgoing transfer. `new_id()` draws a fresh transfer id (the endpoint's, so that it
+    is unique among its transfers); the transfer takes a new one when it starts again."""
+
+    def __init__(self, new_id: Callable[[], int], source: Any, name: str, target: tuple[int, int],
+                 config: TransferConfig | None = None, request_id: int = 0, overwrite: bool = False,
+                 now: float = 0.0, on_progress: Callable[[FileSender], None] | None = None) -> None:
+        try:
+            check_name(name)
+        except Refused as e:
+            raise ValueError(e.reason) from None
+        self.new_id = new_id
+        self.id = new_id()
+        self.source = source
+        self.owns_source = False  # the endpoint opened it, and closes it when the transfer is retired
+        self.name = name
+        self.size = source.size
+        self.target = target
+        self.cfg = config or TransferConfig()
+        self.request_id = request_id
+        self.flags = int(ttapi.TtFileFlags.TT_FILE_FLAGS_OVERWRITE) if overwrite else 0
+        self.meta = source.sha256 + encoded(name)
+        self.check = meta_check(self.meta)
+        self.result: TransferResult | None = None
+        self.stats = TransferStats(started=now)
+        self.on_progress = on_progress
+        self.busy: str | None = None  # the receiver's words while it has no room for us
+        self.last_heard = now
+        self.last_progress = now
+        self.heard_any = False
+        self.rtt = 0.5
+        self._rtt_sampled = False
+        self.byte_time = 0.0  # seconds per byte on the link, if known (set by the endpoint)
+        self._begin(now)
+
+    def _begin(self, now: float) -> None:
+        """The per-attempt state: a first offer due now, nothing known of the receiver."""
+        self.state = "offering"
+        self.reason: str | None = None  # the receiver's words for a refusal or failure
+        self._refusal: tuple[str, float] | None = None  # (code, when) of a refusal awaiting its words
+        self.acked = RangeSet()
+        self.retx = RangeSet()
+        self.next_new = 0
+        self._sent: list[tuple[int, int, float]] = []  # (offset, end, last send time), by offset
+        self._offer_due = now
+        self._offer_interval = self.cfg.offer_interval
+        self._last_offer: float | None = None
+        self._offers_since_answer = 0
+        self.mode = "narrow" if self.cfg.frame_mode in ("auto", "narrow") else "wide"
+        self.loss: dict[str, float | None] = {"narrow": None, "wide": None}  # per-packet loss estimates
+        self._unclassified: list[tuple[int, int, float, str]] = []  # first sends not yet known lost or not
+        self._outcomes: dict[str, list[bool]] = {"narrow": [], "wide": []}  # recent first sends: lost?
+        self._probe_due: float | None = None
+        self._sends: dict[int, tuple[float, int]] = {}  # offset -> (last send time, sends)
+        self._since: dict[int, int] = {}  # offset -> sends since it was last known to be missing
+        self._answers = 0
+
+    # -- progress -----------------------------------------------------------------------------
+    @property
+    def done(self) -> bool:
+        return self.result is not None
+
+    @property
+    def acked_bytes(self) -> int:
+        return self.acked.total()
+
+    def _finish(self, now: float, ok: bool, code: str, message: str, nothing_sent: bool = False) -> None:
+        if self.done:
+            return
+        self.state = "complete" if ok else "failed"
+        self.stats.finished = now
+        self.result = TransferResult(ok, code, message, self.name, self.size, now - self.stats.started, self.stats,
+                                     nothing_sent)
+        if self.on_progress:
+            self.on_progress(self)
+
+    def cancel(self, now: float) -> None:
+        self._finish(now, False, "CANCELLED", "cancelled")
+
+    def _restart(self, now: float, count: bool = True) -> None:
+        """Start again from scratch under a new transfer id."""
+        self.stats.restarts += count
+        self.id = self.new_id()
+        self._begin(now)
+
+    # -- offers -------------------------------------------------------------------------------
+    def offer_messages(self) -> list[ttapi.Message]:
+        parts: list[ttapi.Message] = []
+        for off in range(0, len(self.meta), META_PART):
+            parts.append(ttapi.TtFileOffer(
+                target_system=self.target[0], target_component=self.target[1], transfer_id=self.id,
+                request_id=self.request_id, size=self.size, flags=self.flags, meta_length=len(self.meta),
+                meta_offset=off, meta=self.meta[off:off + META_PART]))
+        return parts
+
+    def control(self, now: float) -> list[ttapi.Message]:
+        """Offers due now (the first, retries, or a poll when the receiver has gone quiet)."""
+        if self.done:
+            return []
+        if self._refusal is not None and now >= self._refusal[1] + max(self.cfg.reason_wait, 3 * self.rtt):
+            self._refuse(now, self._refusal[0])
+            return []
+        if now - self.last_progress >= self.cfg.give_up_after:
+            self._time_out(now)
+            return []
+        if self.state == "sending" and self._probe_due is None \
+                and now - self.last_heard >= max(3 * self.cfg.status_interval, 2 * self.rtt + self.cfg.status_interval):
+            # statuses stopped while data flows: the receiver may have restarted; ask where it is
+            self._probe_due = now
+        due = self._offer_due if self.state == "offering" else self._probe_due
+        if due is None or now < due:
+            return []
+        self.stats.offers_sent += 1
+        self._offers_since_answer += 1
+        self._last_offer = now
+        if self.state == "offering":
+            self._offer_due = now + self._offer_interval
+            self._offer_interval = min(self._offer_interval * 1.5, self.cfg.offer_interval_max)
+        else:
+            self._probe_due = now + max(2 * self.rtt, self.cfg.offer_interval)
+        return self.offer_messages()
+
+    def _time_out(self, now: float) -> None:
+        who = f"{self.target[0]}/{self.target[1]}"
+        secs = f"{self.cfg.give_up_after:g} s"
+        if not self.heard_any:
+            text = f"no answer from {who} for {secs}"
+        elif self.busy is not None:
+            text = f"{who} stayed busy for {secs} ({self.busy})"
+        else:
+            text = f"no progress for {secs}"
+            if now - self.last_heard >= self.cfg.give_up_after:
+                text += f", nothing heard from {who}"
+        if self.acked_bytes:
+            text += " (what arrived is kept there: send again to resume)"
+        self._finish(now, False, "TIMEOUT", text)
+
+    def _refuse(self, now: float, code: str) -> None:
+        text = self.reason or RESULT_TEXT.get(code, "refused")
+        if code == "FAILED_CHECKSUM" and self.source.changed():
+            text = f"{self.source.path} changed while it was being sent"
+        self._finish(now, False, code, text)
+
+    # -- data ---------------------------------------------------------------------------------
+    def has_data(self, now: float) -> bool:
+        if self.state != "sending":
+            return False
+        if self.retx or self.next_new < self.size:
+            return True
+        due = self._tail_due()
+        return due is not None and now >= due
+
+    def _tail_due(self) -> float | None:
+        """When the oldest unacknowledged bytes become worth sending again on an otherwise idle
+        link (a tail-loss probe: the link would idle until the next status anyway)."""
+        return min((ts for s, e, ts in self._sent if not self.acked.covers(s, e)), default=None)
+
+    def _choose_mode(self) -> str:
+        if self.cfg.frame_mode != "auto":
+            return self.cfg.frame_mode
+        n, w = self.loss["narrow"], self.loss["wide"]
+        p = w if self.mode == "wide" and w is not None else (n if n is not None else w)
+        if p is None:
+            return "narrow"
+        eff_narrow = NARROW / NARROW_FRAME * (1 - p)
+        eff_wide = WIDE / WIDE_FRAME * frame_survival_wide(p)
+        better = "wide" if eff_wide > eff_narrow else "narrow"
+        if better != self.mode and abs(eff_wide - eff_narrow) < 0.02:
+            return self.mode  # hysteresis
+        return better
+
+    def next_data(self, now: float, space: int) -> ttapi.Message | None:
+        if self.state != "sending":
+            return None
+        mode = self.mode
+        frame_len = WIDE_FRAME if mode == "wide" else NARROW_FRAME
+        if mode == "narrow" and space < frame_len:
+            return None  # a narrow frame takes a packet of its own: wait for the next one
+        cap = WIDE if mode == "wide" else NARROW
+        retx = self.retx.first()
+        if retx is not None:
+            # a data frame always carries min(cap, size - offset) bytes (the receiver counts on
+            # it), so a short gap is resent with the bytes after it
+            offset = retx[0]
+            length = min(cap, self.size - offset)
+            self.retx.remove(offset, offset + length)
+            self.stats.bytes_retransmitted += length
+        elif self.next_new < self.size:
+            offset = self.next_new
+            length = min(cap, self.size - offset)
+            self.next_new += length
+        else:
+            tail = self._tail_candidate(now)
+            if tail is None:
+                return None
+            offset = tail
+            length = min(cap, self.size - offset)
+            self.stats.bytes_retransmitted += length
+        data = self.source.read(offset, length)
+        self._sends[offset] = (now, self._sends.get(offset, (0.0, 0))[1] + 1)
+        self._since[offset] = self._since.get(offset, 0) + 1
+        # when its last byte can have left: frames longer than a packet take several packets
+        left = now + (frame_len + NARROW_FRAME) * self.byte_time
+        self._record(left, offset, offset + length)
+        if retx is None:
+            self._unclassified.append((offset, offset + length, left, mode))
+        self.stats.bytes_sent += length
+        self.stats.frames_sent += 1
+        if self.stats.data_started is None:
+            self.stats.data_started = now
+        if mode == "wide":
+            self.stats.wide_frames += 1
+            msg: ttapi.Message = ttapi.TtFileDataWide(transfer_id=self.id, offset=offset, data=data)
+        else:
+            self.stats.narrow_frames += 1
+            msg = ttapi.TtFileData(transfer_id=self.id, offset=offset, data=data)
+        if self.cfg.frame_mode == "auto" and self.stats.narrow_frames >= self.cfg.probe_frames:
+            self.mode = self._choose_mode()
+        if not self.has_data(now) and self._probe_due is None:
+            self._probe_due = now + max(2 * self.rtt, 0.5)
+        return msg
+
+    def _tail_candidate(self, now: float) -> int | None:
+        """The unacknowledged chunk most likely still missing: the fewest sends since it was
+        last known to be missing (each send leaves it missing with probability p), the one
+        sent longest ago among those. No part of the tail starves when statuses are lost."""
+        best: tuple[int, float, int] | None = None
+        for s, e, ts in self._sent:
+            if ts > now:
+                continue
+            gaps = self.acked.gaps(s, e)
+            if not gaps:
+                continue
+            key = (self._since.get(s, 1), ts, gaps[0][0])
+            if best is None or key < best:
+                best = key
+        return None if best is None else best[2]
+
+    def _record(self, when: float, start: int, end: int) -> None:
+        """Remember when bytes [start, end) last left; a resend supersedes older records, so a
+        status written before the resend arrived does not trigger another one."""
+        sent = [(s, e, t) for s, e, t in self._sent if e <= start or s >= end]
+        for s, e, t in self._sent:
+            if s < start < e:
+                sent.append((s, start, t))
+            if s < end < e:
+                sent.append((end, e, t))
+        sent.append((start, end, when))
+        sent.sort()
+        self._sent = sent
+
+    # -- answers ------------------------------------------------------------------------------
+    def on_reason(self, now: float, msg: ttapi.TtFileReason) -> None:
+        """The receiver's words for a refusal or failure (they come just before its status)."""
+        if self.done or msg.transfer_id != self.id:
+            return
+        text = reason_text(msg.text)
+        if msg.result == R.TT_FILE_RESULT_REFUSED_BUSY:
+            self.busy = text
+            return
+        self.reason = text
+        if self._refusal is not None:
+            self._refuse(now, self._refusal[0])
+
+    def on_status(self, now: float, msg: ttapi.TtFileStatus) -> None:
+        if self.done or msg.transfer_id != self.id:
+            return
+        code = msg.result
+        if msg.meta_check != self.check:
+            if code == R.TT_FILE_RESULT_UNKNOWN_TRANSFER or (code == R.TT_FILE_RESULT_REFUSED_BUSY
+                                                             and msg.meta_check == 0):
+                pass  # said before the receiver had our metadata: nothing to mistake
+            elif msg.meta_check != 0:
+                # the receiver holds another transfer under our id (a 1 in 2^32 draw): take a new one
+                self._restart(now, count=False)
+                return
+            else:
+                return
+        self.last_heard = now
+        self.heard_any = True
+        self.stats.statuses += 1
+        self._answers += 1
+        if (self.state == "offering" and self._offers_since_answer == 1 and self._last_offer is not None
+                and not self._rtt_sampled):
+            # Karn: only an offer answered without a repeat gives a clean sample
+            self.rtt = min(5.0, max(0.02, now - self._last_offer))
+            self._rtt_sampled = True
+        elif self.state == "offering" and self._last_offer is not None and not self._rtt_sampled:
+            # answered after repeats: since the last offer is a lower bound; better than a guess
+            self.rtt = min(5.0, max(0.05, now - self._last_offer))
+        self._offers_since_answer = 0
+        if code == R.TT_FILE_RESULT_COMPLETE:
+            self.acked.add(0, self.size)
+            nothing = self.stats.bytes_sent == 0 and self.size > 0
+            how = "verified there (it had them already)" if nothing else "delivered and verified"
+            self._finish(now, True, "COMPLETE", f"{self.name}: {self.size} bytes {how}", nothing)
+            return
+        if code == R.TT_FILE_RESULT_UNKNOWN_TRANSFER:
+            self.state = "offering"  # the receiver restarted: offer again, it resumes from disk
+            self._offer_due = now
+            return
+        if code == R.TT_FILE_RESULT_REFUSED_BUSY:
+            self.busy = self.busy or RESULT_TEXT["REFUSED_BUSY"]
+            self.state = "offering"  # keep offering (with backoff) until there is room or time is up
+            return
+        if code == R.TT_FILE_RESULT_FAILED_CHECKSUM and self.stats.restarts < self.cfg.checksum_restarts \
+                and not self.source.changed():
+            self._restart(now)  # the receiver discarded what it had: again, from scratch
+            self.last_progress = now
+            return
+        if code != R.TT_FILE_RESULT_IN_PROGRESS:
+            name = result_name(code)
+            if self.reason is not None:
+                self._refuse(now, name)
+            elif self._refusal is None:
+                self._refusal = (name, now)  # wait a moment for the words, and ask once more
+                self._offer_due = now
+                self.state = "offering"
+            return
+        if self.state == "offering":
+            self.state = "sending"
+            self._probe_due = None
+            self.busy = None
+            self.last_progress = now
+        self._rtt_from_echo(now, msg)
+        self._apply_status(now, msg)
+        if self.on_progress:
+            self.on_progress(self)
+
+    def _rtt_from_echo(self, now: float, msg: ttapi.TtFileStatus) -> None:
+        """A round-trip sample from the status's echo of the latest frame it saw (Karn: only
+        frames sent once)."""
+        sent = self._sends.get(msg.last_offset)
+        if sent is None or sent[1] != 1 or msg.hold_ms == 65535:
+            return
+        sample = now - msg.hold_ms / 1000.0 - sent[0]
+        if not 0.0 < sample < 10.0:
+            return
+        if not self._rtt_sampled:
+            self.rtt, self._rtt_sampled = sample, True
+        else:
+            self.rtt = 0.8 * self.rtt + 0.2 * sample
+
+    def _apply_status(self, now: float, msg: ttapi.TtFileStatus) -> None:
+        rc = min(msg.received_contiguous, self.size)
+        region = max(rc, min(msg.region_start, self.size))
+        re = max(region, min(msg.received_end, self.size))
+        n = min(msg.range_count, len(msg.ranges) // 2)
+        pairs = list(msg.ranges)
+        missing = [(max(pairs[2 * i], region), min(pairs[2 * i + 1], re)) for i in range(n)]
+        missing = [(a, b) for a, b in missing if a < b]
+        before = self.acked.total()
+        self.acked.add(0, rc)
+        pos = region
+        for a, b in missing:
+            if a > pos:
+                self.acked.add(pos, a)
+            pos = max(pos, b)
+        if re > pos:
+            self.acked.add(pos, re)
+        if self.acked.total() > before:
+            self.last_progress = now
+        if self._answers == 1 and before == 0:
+            self.stats.resumed_bytes = self.acked.total()  # what the receiver had before we sent a byte
+        # a resumed transfer: skip what the receiver already has
+        while self.next_new < self.size and self.acked.covers(self.next_new, min(self.size, self.next_new + 1)):
+            end = next((b for a, b in self.acked if a <= self.next_new < b), self.next_new + 1)
+            self.next_new = min(end, self.size)
+        # confirmed losses: bytes reported missing, or beyond everything the receiver has seen,
+        # whose last send is older than what this status can tell about: the frame it echoes
+        # left at `echo`; anything sent before it arrived before it or was lost (a few packet
+        # times of slack for reordering). Without an echo, an RTT before now.
+        horizon = now - self.rtt - 0.05
+        echo = self._sends.get(msg.last_offset)
+        if echo is not None and msg.hold_ms != 65535:
+            horizon = min(horizon, echo[0] - 2 * NARROW_FRAME * self.byte_time)
+        truncated = n >= len(msg.ranges) // 2  # bytes past received_end are unknown, not missing
+        if re < self.next_new and not truncated:
+            missing = [*missing, (re, self.next_new)]
+        for a, b in missing:
+            for s, e, ts in self._sent:
+                if e <= a or s >= b or ts > horizon:
+                    continue
+                self.retx.add(max(a, s), min(b, e))
+                self._since[s] = 0
+        for a, b in self.acked:
+            self.retx.remove(a, b)
+        self._sent = [(s, e, ts) for s, e, ts in self._sent if not self.acked.covers(s, e)]
+        self._classify(horizon, re, truncated, missing)
+        self._probe_due = None if self.has_data(now) else now + max(2 * self.rtt, 0.5)
+
+    def _classify(self, horizon: float, re: int, truncated: bool, missing: list[tuple[int, int]]) -> None:
+        """Loss, measured exactly: each first transmission, once a status covers its bytes, was
+        lost if any of them is reported missing. Estimates come from the last 64 per frame size."""
+        keep: list[tuple[int, int, float, str]] = []
+        for rec in self._unclassified:
+            start, end, when, mode = rec
+            known = when <= horizon and (end <= re or not truncated)
+            if not known:
+                keep.append(rec)
+                continue
+            lost = any(a < end and start < b for a, b in missing)
+            window = self._outcomes[mode]
+            window.append(lost)
+            if len(window) > 64:
+                window.pop(0)
+        self._unclassified = keep
+        for mode in ("narrow", "wide"):
+            window = self._outcomes[mode]
+            if len(window) >= 8:
+                frame_loss = wilson_upper(sum(window), len(window))  # pessimistic: wide frames are costly
+                self.loss[mode] = frame_loss if mode == "narrow" else packet_loss_from_wide(frame_loss)
+        if self.cfg.frame_mode == "auto" and self.stats.narrow_frames >= self.cfg.probe_frames:
+            self.mode = self._choose_mode()
+
+    def deadline(self, now: float) -> float | None:
+        """The next time this transfer needs attention (data waiting for the pacer is the
+        scheduler's business, not a deadline)."""
+        if self.done:
+            return None
+        times = [self.last_progress + self.cfg.give_up_after]
+        if self.state == "sending" and not self.retx and self.next_new >= self.size:
+            due = self._tail_due()
+            if due is not None and due > now:
+                times.append(due)
+        if self._refusal is not None:
+            times.append(self._refusal[1] + max(self.cfg.reason_wait, 3 * self.rtt))
+        if self.state == "offering":
+            times.append(self._offer_due)
+        elif self._probe_due is not None:
+            times.append(self._probe_due)
+        else:
+            times.append(self.last_heard + max(3 * self.cfg.status_interval, 2 * self.rtt + self.cfg.status_interval))
+        return min(times)

@@ -1,0 +1,109 @@
+"""Helpers for the end-to-end tests: real ttctl processes on 127.0.0.1, each with its output in
+files, killed at the end of its test (the `start` fixture is in conftest.py)."""
+
+from __future__ import annotations
+
+import json
+import random
+import socket
+import subprocess
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+from conftest import assert_no_traceback, run_ttctl, ttctl_cmd
+
+LOCAL = "127.0.0.1"
+SIZE = 64 * 1024
+
+
+def free_port(kind: int = socket.SOCK_DGRAM) -> int:
+    with socket.socket(socket.AF_INET, kind) as s:
+        s.bind((LOCAL, 0))
+        return s.getsockname()[1]
+
+
+class Proc:
+    """A ttctl process with its output in files (no pipe to fill up)."""
+
+    def __init__(self, folder: Path, name: str, args: list[str]) -> None:
+        self.name = name
+        self.out_path = folder / f"{name}.out"
+        self.err_path = folder / f"{name}.err"
+        self._out = open(self.out_path, "w")  # noqa: SIM115 - closed in close()
+        self._err = open(self.err_path, "w")  # noqa: SIM115
+        self.p = subprocess.Popen(ttctl_cmd() + args, stdout=self._out, stderr=self._err, cwd=folder)
+
+    @property
+    def stdout(self) -> str:
+        return self.out_path.read_text()
+
+    @property
+    def stderr(self) -> str:
+        return self.err_path.read_text()
+
+    def wait_for(self, text: str, timeout: float = 15.0, where: str = "stderr") -> None:
+        end = time.monotonic() + timeout
+        while time.monotonic() < end:
+            if text in (self.stderr if where == "stderr" else self.stdout):
+                return
+            if self.p.poll() is not None:
+                break
+            time.sleep(0.02)
+        raise AssertionError(f"{self.name}: no {text!r} on {where} (exit {self.p.poll()}):\n"
+                             f"{self.stdout}\n{self.stderr}")
+
+    def wait(self, timeout: float = 15.0) -> int:
+        try:
+            return self.p.wait(timeout)
+        except subprocess.TimeoutExpired:
+            self.kill()
+            raise AssertionError(f"{self.name} did not exit in {timeout} s:\n{self.stdout}\n{self.stderr}") from None
+
+    def signal(self, sig: int) -> None:
+        if self.p.poll() is None:
+            self.p.send_signal(sig)
+
+    def kill(self) -> None:
+        if self.p.poll() is None:
+            self.p.kill()
+            self.p.wait(5)
+
+    def close(self) -> None:
+        self.kill()
+        self._out.close()
+        self._err.close()
+
+
+Start = Callable[..., Proc]
+
+
+def data_file(folder: Path, name: str, size: int = SIZE, seed: int = 1) -> Path:
+    path = folder / name
+    path.write_bytes(random.Random(seed).randbytes(size))
+    return path
+
+
+def receiver(start: Start, tmp: Path, spec: str, *extra: str, name: str = "recv") -> Proc:
+    p = start(name, "recv-file", "--listen", spec, "--dir", str(tmp / "inbox"), *extra)
+    p.wait_for("receiving into")
+    return p
+
+
+def relay(start: Start, listen: int, to: int, *extra: str) -> Proc:
+    p = start("relay", "link", "relay", "--listen", f"udp:{LOCAL}:{listen}", "--to", f"udp:{LOCAL}:{to}", *extra)
+    p.wait_for("relay: udpin")
+    return p
+
+
+def send(*args: str, timeout: float = 60, cwd: Path | None = None) -> tuple[subprocess.CompletedProcess[str], dict]:
+    proc = run_ttctl("send-file", *args, "--json", timeout=timeout, cwd=cwd)
+    assert_no_traceback(proc)
+    report = json.loads(proc.stdout) if proc.stdout.strip() else {}
+    return proc, report
+
+
+def one_line(text: str) -> str:
+    lines = text.strip().splitlines()
+    assert len(lines) == 1, text
+    return lines[0]
