@@ -55,7 +55,7 @@ def test_thesis_frames_agree_with_pymavlink_mavgen(tmp_path: Path) -> None:
     assert spec is not None and spec.loader is not None
     pm = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(pm)
-    assert pm.MAVLink_dji_pose_stamped_message.crc_extra == 70  # REFERENCE section 4
+    assert pm.MAVLink_dji_pose_stamped_message.crc_extra == 70  # as in the thesis dialect
 
     d = bl.thesis_dialect()
     enc = ttapi.Encoder(*TABLET)

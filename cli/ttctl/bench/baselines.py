@@ -10,7 +10,7 @@ and handed to the SDK paced at the link's capacity (the tablet only when the rad
 its completion callback allows). Frames are reassembled by ttctl's packet-aware receiver, so
 what is measured is each protocol, not a dispatch bug.
 
-thesis (dialect data/dji_icg.xml, REFERENCE sections 4-5), as designed and without the
+thesis (dialect data/dji_icg.xml; the thesis's file transfer, chapter 3), as designed and without the
 implementation's bugs: the sender repeats DJI_FTP_REQUEST every 3 s until DJI_FTP_REQUEST_ACK
 (ACCEPTED), then sends parts 0..n-1 of 250 bytes in DJI_FTP frames (266 bytes: packets of 100,
 100 and 66 bytes). The receiver restarts a 3 s timer on every part; when it expires it asks for

@@ -155,6 +155,10 @@ class FileSender:
             self._offer_interval = min(self._offer_interval * 1.5, self.cfg.offer_interval_max)
         else:
             self._probe_due = now + max(2 * self.rtt, self.cfg.offer_interval)
+        if self.stats.offers_sent == 1 and self.cfg.first_offer_copies > 1:
+            # nothing moves before the answer: at 30 % loss a single offer and its answer both
+            # arrive half the time, two copies (each answered) 83 % of the time
+            return self.offer_messages() * self.cfg.first_offer_copies
         return self.offer_messages()
 
     def _time_out(self, now: float) -> None:

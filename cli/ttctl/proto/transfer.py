@@ -51,7 +51,8 @@ Key = tuple[int, int, int]  # (sender sysid, sender compid, transfer id)
 
 @dataclass
 class TransferConfig:
-    offer_interval: float = 1.0  # first retry of an unanswered offer; grows 1.5x
+    offer_interval: float = 0.5  # first retry of an unanswered offer; grows 1.5x
+    first_offer_copies: int = 2  # the first offer goes out this often (each copy is answered)
     offer_interval_max: float = 8.0
     give_up_after: float = 60.0  # sender: no progress for this long: fail (what arrived is kept for resume)
     status_interval: float = 1.0  # receiver: regular status period while data flows
