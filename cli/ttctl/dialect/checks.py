@@ -44,8 +44,9 @@ def check_dialect(d: Dialect, rep: Reporter, opts: CheckOptions | None = None) -
     opts = opts or CheckOptions()
     _duplicates(d, rep)
     _names(d, rep)
+    own = {id(m) for m in d.root.messages}  # a set: a list test per message made validation quadratic
     for m in d.messages:
-        _message(d, m, rep, opts, own=m in d.root.messages)
+        _message(d, m, rep, opts, own=id(m) in own)
     for e in d.enums:
         _enum(e, rep)
 
