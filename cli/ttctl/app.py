@@ -72,7 +72,12 @@ def validate(
     """
     if fmt not in ("text", "json"):
         raise Fail(f"--format must be 'text' or 'json', not '{fmt}'")
-    from .validate import run_validate
+    from .validate import include_dir_problem, run_validate
+
+    for d in include or []:
+        problem = include_dir_problem(str(d))
+        if problem:
+            raise Fail(problem)
 
     global _fast_exit
     _fast_exit = True
@@ -116,12 +121,16 @@ def gen(
 def bench_validate(
     dialect: Annotated[Path | None, typer.Argument(help="Dialect XML (default: pymavlink's all.xml).")] = None,
     runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=200)] = 15,
+    synthetic: Annotated[int | None, typer.Option("--synthetic", help="Time both on a made-up dialect of N "
+                                                                      "messages instead (up to 60000: the 8 MiB "
+                                                                      "input cap).", min=1, max=60_000,
+                                                  show_default=False)] = None,
     json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
 ) -> None:
     """Whole-process time of `ttctl validate` against `mavgen.py --lang Python3 --wire-protocol 2.0`."""
     from .bench.validate import run
 
-    run(str(dialect) if dialect else None, runs, json_out)
+    run(str(dialect) if dialect else None, runs, json_out, synthetic)
 
 
 @bench_app.command("gen")
@@ -377,11 +386,11 @@ def main() -> None:
         if msg.count(hint) > 1:  # typer and click both add the suggestion
             msg = msg[: msg.rindex(hint)]
         if msg.strip():  # a group called without a command has printed its help already
-            print(f"{where}: error: {msg} (see '{where} --help')", file=sys.stderr)
+            print(f"ttctl: error: {msg} (see '{where} --help')", file=sys.stderr)
         sys.exit(e.exit_code)
-    except typer.Abort:
-        print("ttctl: aborted", file=sys.stderr)
-        sys.exit(1)
+    except typer.Abort:  # click's word for a KeyboardInterrupt inside a command
+        print("ttctl: interrupted", file=sys.stderr)
+        sys.exit(130)
     except Fail as e:
         print(f"ttctl: error: {e}", file=sys.stderr)
         sys.exit(e.code)

@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import os
+import shutil
 import sys
 from pathlib import Path
 
 from .codegen.engine import LANGUAGES, language, render, write_tree
-from .validate import load_and_check, user_warnings
+from .validate import include_dir_problem, load_and_check, user_warnings
 
 DEFAULT_DIALECT = "dialects/ttapi.xml"
 DEFAULT_OUT = "generated"
@@ -30,16 +31,28 @@ def parse_langs(spec: str) -> list[str]:
 
 
 def check_out_dir(out: Path, check: bool) -> None:
+    """GenError unless `out` is a writable directory or can be made one. Creates nothing: the
+    tree is only made once there is something to write."""
     if out.exists() and not out.is_dir():
         raise GenError(f"output path {out} exists and is not a directory", 2)
     if check:
         return
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as e:
-        raise GenError(f"output path {out} cannot be created: {e.strerror or e}", 2) from None
-    if not os.access(out, os.W_OK | os.X_OK):
-        raise GenError(f"output path {out} is not writable", 2)
+    if out.exists():
+        if not os.access(out, os.W_OK | os.X_OK):
+            raise GenError(f"output path {out} is not writable", 2)
+        return
+    parent = out.absolute().parent
+    while not parent.exists():
+        parent = parent.parent
+    if not parent.is_dir() or not os.access(parent, os.W_OK | os.X_OK):
+        raise GenError(f"output path {out} cannot be created: {parent} is not a writable directory", 2)
+
+
+def check_include_dirs(include_dirs: list[str]) -> None:
+    for d in include_dirs:
+        problem = include_dir_problem(d)
+        if problem:
+            raise GenError(problem, 2)
 
 
 def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool, force_skeletons: bool,
@@ -55,6 +68,7 @@ def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool
         raise GenError(f"--templates {user_templates}: not a directory", 2)
     out = Path(out_dir)
     check_out_dir(out, check)
+    check_include_dirs(include_dirs)
     try:
         dialect, rep, order = load_and_check(dialect_path, include_dirs)
     except LoadError as e:
@@ -76,10 +90,15 @@ def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool
             raise GenError(f"template error: {where}{e}", 2) from None
         raise
     owned = [p for lang in langs for p in language(lang).owned_dirs(dialect)]
+    fresh = not out.exists()
     try:
         report = write_tree(out, rendered, owned, check, force_skeletons)
-    except OSError as e:
-        raise GenError(f"cannot write {e.filename or out}: {e.strerror or e}", 2) from None
+    except BaseException as e:  # a full disk, a permission, Ctrl-C
+        if fresh:  # all of it was ours: leave no half-made tree
+            shutil.rmtree(out, ignore_errors=True)
+        if isinstance(e, OSError):
+            raise GenError(f"cannot write {e.filename or out}: {e.strerror or e}", 2) from None
+        raise
     if check:
         for p in report.differ:
             print(f"{out / p}: out of date", file=sys.stdout)

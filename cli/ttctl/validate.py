@@ -12,6 +12,15 @@ from .dialect.source import pymavlink_dialects_dir
 EXIT_OK, EXIT_ERRORS, EXIT_UNREADABLE = 0, 1, 2
 
 
+def include_dir_problem(path: str) -> str | None:
+    """Why an -I directory cannot be searched, or None."""
+    if not os.path.exists(path):
+        return f"-I {path}: no such directory"
+    if not os.path.isdir(path):
+        return f"-I {path}: not a directory"
+    return None
+
+
 def load_and_check(path: str, include_dirs: list[str], mtu: int = 100,
                    signed: bool = False) -> tuple[Dialect, Reporter, list[str]]:
     """Load and check a dialect; LoadError if the root file is unreadable."""

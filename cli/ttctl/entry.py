@@ -1,0 +1,26 @@
+"""The console entry point: an interrupt at any moment after the interpreter has started, even
+while the heavy modules (typer, rich) are still being imported, ends the program quietly with
+exit 130, never a traceback. (`_signal`, the C module, not `signal`: it costs no import time.)"""
+
+import _signal
+import os
+import sys
+
+
+def _interrupted(signum: int, frame: object) -> None:
+    try:
+        sys.stderr.write("ttctl: interrupted\n")
+        sys.stderr.flush()
+    finally:
+        os._exit(130)
+
+
+def main() -> None:
+    _signal.signal(_signal.SIGINT, _interrupted)  # until the CLI can turn Ctrl-C into a clean exit itself
+    from .app import main as app_main
+
+    _signal.signal(_signal.SIGINT, _signal.default_int_handler)
+    app_main()
+
+
+__all__ = ["main"]

@@ -1,0 +1,99 @@
+"""Bad input and interrupts on every command: one line that starts `ttctl: error:`, a non-zero
+exit, nothing left behind, never a traceback (real processes)."""
+
+from __future__ import annotations
+
+import signal
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from conftest import ROOT, TTAPI, assert_no_traceback, run_ttctl, ttctl_cmd
+
+BROKEN = ROOT / "tests" / "dialects" / "broken" / "keywords.xml"
+
+
+def test_gen_that_fails_leaves_no_directory(tmp_path: Path) -> None:
+    cases = [
+        ([str(BROKEN), "-o", str(tmp_path / "x1")], 1, "error(s); nothing generated"),
+        ([str(tmp_path / "missing.xml"), "-o", str(tmp_path / "x2")], 2, "missing.xml"),
+        ([str(TTAPI), "-o", str(tmp_path / "x3"), "--lang", "cobol"], 2, "unknown language cobol"),
+        ([str(TTAPI), "-o", str(tmp_path / "x4"), "--templates", str(tmp_path / "nope")], 2, "not a directory"),
+        ([str(TTAPI), "-o", str(tmp_path / "x5"), "-I", str(tmp_path / "nope")], 2, "no such directory"),
+    ]
+    for args, code, text in cases:
+        proc = run_ttctl("gen", *args)
+        assert_no_traceback(proc)
+        assert proc.returncode == code and text in proc.stderr + proc.stdout, (args, proc.stderr)
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("cmd", ["validate", "gen"])
+def test_include_dirs_must_exist(tmp_path: Path, cmd: str) -> None:
+    a_file = tmp_path / "f.txt"
+    a_file.write_text("x")
+    for bad, why in ((tmp_path / "nope", "no such directory"), (a_file, "not a directory")):
+        proc = run_ttctl(cmd, str(TTAPI), "-I", str(bad), *(["-o", str(tmp_path / "o")] if cmd == "gen" else []))
+        assert proc.returncode == 2
+        assert proc.stderr.strip() == f"ttctl: error: -I {bad}: {why}"
+    assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize("args", [["validate"], ["gen", "--lang"], ["send-file", "x", "--bogus"],
+                                  ["bench", "transfer", "--size", "0"], ["link", "relay"], ["nosuch"]])
+def test_usage_errors_are_one_line_starting_ttctl_error(args: list[str]) -> None:
+    proc = run_ttctl(*args)
+    assert proc.returncode == 2
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("ttctl: error: "), proc.stderr
+
+
+@pytest.mark.parametrize("bench", ["transfer", "link"])
+def test_bench_plot_path_is_checked_before_any_work(tmp_path: Path, bench: str) -> None:
+    for path, why in ((tmp_path / "no" / "x.png", f"no folder {tmp_path / 'no'}"), (tmp_path, "is a directory")):
+        t0 = time.monotonic()
+        proc = run_ttctl("bench", bench, "--plot", str(path))
+        assert_no_traceback(proc)
+        assert proc.returncode == 2 and proc.stderr.startswith("ttctl: error: ") and why in proc.stderr
+        assert time.monotonic() - t0 < 10  # refused up front, not after the benchmark
+    assert list(tmp_path.iterdir()) == []
+
+
+def _startup() -> float:
+    """How long this machine takes to start a bare interpreter (median of 5)."""
+    times = []
+    for _ in range(5):
+        t0 = time.perf_counter()
+        subprocess.run([sys.executable, "-S", "-c", "pass"], check=True)
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
+
+
+@pytest.mark.parametrize("args", [["validate", str(TTAPI)], ["gen", str(TTAPI), "-o", "{tmp}/out"],
+                                  ["bench", "transfer", "--quick", "--seeds", "1"],
+                                  ["send-file", str(TTAPI), "--to", "udpout:127.0.0.1:9", "--timeout", "5"],
+                                  ["recv-file", "--listen", "udpin:127.0.0.1:0", "--dir", "{tmp}/in"]])
+def test_ctrl_c_at_any_moment_is_one_quiet_line(tmp_path: Path, args: list[str]) -> None:
+    """From a few interpreter start-up times on (before that, the interpreter itself is still
+    starting and no program of its own has run), an interrupt while modules load, while
+    options are parsed or while the command works is `ttctl: interrupted`, or the command's own
+    clean stop; and an interrupted gen leaves no half-made tree."""
+    base = max(0.03, 3 * _startup())
+    argv = [a.replace("{tmp}", str(tmp_path)) for a in args]
+    for delay in (base, base * 1.5, base * 2, base * 3, base * 5, base * 8, 0.6, 1.0):
+        p = subprocess.Popen(ttctl_cmd() + argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        time.sleep(delay)
+        p.send_signal(signal.SIGINT)
+        _, err = p.communicate(timeout=60)
+        assert "Traceback" not in err and "KeyboardInterrupt" not in err, (delay, err)
+        assert p.returncode in (0, 1, 130), (delay, p.returncode, err)
+        if p.returncode == 130:
+            assert err.strip().splitlines()[-1] == "ttctl: interrupted", err
+        if args[0] == "gen" and p.returncode != 0:
+            assert not (tmp_path / "out").exists()
+        if args[0] == "recv-file" and p.returncode == 0:
+            assert "stopped" in err
