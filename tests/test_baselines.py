@@ -87,8 +87,8 @@ CASES = [Case("up", 0.0, "random"), Case("up", 0.1, "random"), Case("down", 0.0,
 @pytest.mark.parametrize("runner", [bl.run_thesis, bl.run_mavftp], ids=["thesis", "mavftp"])
 def test_baseline_delivers_16k(runner: Any, case: Case) -> None:
     data = _data()
-    seconds, ok = runner(M100, 10.0, case, data, 1)
-    assert ok
+    seconds, ok, lost = runner(M100, 10.0, case, data, 1)
+    assert ok and (lost > 0) == (case.loss > 0)
     capacity = M100.capacity_Bps(case.direction, 10.0)
     assert len(data) / capacity < seconds < 3600  # never faster than the raw link
 
@@ -96,7 +96,7 @@ def test_baseline_delivers_16k(runner: Any, case: Case) -> None:
 def test_limit_is_respected_and_nothing_is_left_running() -> None:
     before = threading.active_count()
     for runner in (bl.run_thesis, bl.run_mavftp):
-        seconds, ok = runner(M100, 10.0, Case("up", 0.1, "random"), _data(), 1, limit=5.0)
+        seconds, ok, _ = runner(M100, 10.0, Case("up", 0.1, "random"), _data(), 1, limit=5.0)
         assert (seconds, ok) == (5.0, False)
     assert threading.active_count() == before
 
@@ -105,7 +105,7 @@ def test_limit_is_respected_and_nothing_is_left_running() -> None:
 def test_edge_sizes(size: int) -> None:
     data = _data(n=size)
     for runner in (bl.run_thesis, bl.run_mavftp):
-        _, ok = runner(M100, 10.0, Case("down", 0.0, "random"), data, 1)
+        _, ok, _ = runner(M100, 10.0, Case("down", 0.0, "random"), data, 1)
         assert ok, runner.__name__
 
 
@@ -125,12 +125,12 @@ def test_thesis_waits_out_its_3s_timer_for_every_missing_range() -> None:
     # most of the time the radio is idle: the sender waits for the receiver's timer
     assert _idle(r, "up") > 0.5
     # and its goodput is far below ttctl's on the same case, file and seed
-    t_ttctl, ok = run_ttctl(M100, 10.0, case, data, 1)
+    t_ttctl, ok, _ = run_ttctl(M100, 10.0, case, data, 1)
     assert ok
     assert r.seconds / t_ttctl >= 2.0
     down = Case("down", 0.1, "random")
     r_down = bl.thesis_transfer(M100, 10.0, down, data, 1)
-    t_down, ok = run_ttctl(M100, 10.0, down, data, 1)
+    t_down, ok, _ = run_ttctl(M100, 10.0, down, data, 1)
     assert r_down.ok and ok
     assert _idle(r_down, "down") > 0.8
     assert r_down.seconds / t_down >= 4.0

@@ -1,5 +1,5 @@
-"""`ttctl bench link`: the thesis's measurement method on the link model reproduces REFERENCE
-section 2; plots of both benchmark reports."""
+"""`ttctl bench link`: the thesis's measurement method on the link model reproduces what the
+thesis measured and DJI documents; plots of both benchmark reports."""
 
 from __future__ import annotations
 

@@ -2,7 +2,13 @@
 
 from __future__ import annotations
 
+import os
 import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
 
 from conftest import ROOT
 
@@ -38,3 +44,41 @@ def test_readme_tours_every_subcommand() -> None:
         names += [f"ttctl {name} {s}" for s in sub] if sub else [f"ttctl {name}"]
     for name in names:
         assert f"### `{name}" in text, f"README has no tour section for {name}"
+
+
+def console_examples(heading: str) -> list[tuple[str, list[str]]]:
+    """(command, expected output lines) of every `$ ttctl ...` in the console blocks of the tour
+    section whose heading starts with `heading`; `...` in the expected output stands for any
+    number of lines."""
+    text = (ROOT / "README.md").read_text()
+    section = text.split(f"### `{heading}", 1)[1].split("\n### ", 1)[0]
+    out: list[tuple[str, list[str]]] = []
+    for block in re.findall(r"```console\n(.+?)```", section, re.S):
+        for chunk in re.split(r"^\$ ", block, flags=re.M)[1:]:
+            cmd, _, rest = chunk.partition("\n")
+            out.append((cmd, [line for line in rest.rstrip("\n").split("\n") if line != ""]))
+    return out
+
+
+def matches(expected: list[str], got: list[str]) -> bool:
+    if not expected:
+        return not got
+    if expected[0].strip() == "...":
+        return any(matches(expected[1:], got[i:]) for i in range(len(got) + 1))
+    return bool(got) and got[0] == expected[0] and matches(expected[1:], got[1:])
+
+
+@pytest.mark.parametrize("heading", ["ttctl validate", "ttctl gen"])
+def test_readme_examples_are_what_the_commands_print(heading: str, tmp_path: Path) -> None:
+    """Each example runs as shown (from a folder where `dialects/` and `tests/` are the
+    repository's) and prints what the README says it prints."""
+    (tmp_path / "dialects").symlink_to(ROOT / "dialects")
+    (tmp_path / "tests").symlink_to(ROOT / "tests")
+    examples = [(c, e) for c, e in console_examples(heading) if "ttctl " in c and "conformance" not in c]
+    assert len(examples) >= 3, examples
+    env = {**os.environ, "PATH": f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}",
+           "COLUMNS": "200"}
+    for cmd, expected in examples:
+        proc = subprocess.run(cmd, shell=True, cwd=tmp_path, capture_output=True, text=True, env=env, timeout=300)
+        got = [line for line in (proc.stdout + proc.stderr).rstrip("\n").split("\n") if line != ""]
+        assert matches(expected, got), f"$ {cmd}\nREADME:\n" + "\n".join(expected) + "\nprints:\n" + "\n".join(got)

@@ -838,16 +838,22 @@ def mavftp_transfer(profile: Profile, distance: float, case: Case, data: bytes, 
                        up.stats.as_dict(), down.stats.as_dict())
 
 
+def _realised(r: BaselineRun, case: Case) -> float:
+    ch = r.up if case.direction == "up" else r.down
+    return ch.get("lost", 0) / max(1, ch.get("submitted", 0))
+
+
 def run_thesis(profile: Profile, distance: float, case: Case, data: bytes, seed: int,
-               limit: float = 7200.0) -> tuple[float, bool]:
-    """The thesis file transfer (see the module documentation): (seconds, ok)."""
+               limit: float = 7200.0) -> tuple[float, bool, float]:
+    """The thesis file transfer (see the module documentation): (seconds, ok, the loss the
+    data's direction realised)."""
     r = thesis_transfer(profile, distance, case, data, seed, limit)
-    return r.seconds, r.ok
+    return r.seconds, r.ok, _realised(r, case)
 
 
 def run_mavftp(profile: Profile, distance: float, case: Case, data: bytes, seed: int,
-               limit: float = 7200.0) -> tuple[float, bool]:
+               limit: float = 7200.0) -> tuple[float, bool, float]:
     """MAVLink FTP upload by pymavlink's MAVFTP with its defaults (see the module
-    documentation): (seconds, ok)."""
+    documentation): (seconds, ok, realised loss)."""
     r = mavftp_transfer(profile, distance, case, data, seed, limit)
-    return r.seconds, r.ok
+    return r.seconds, r.ok, _realised(r, case)

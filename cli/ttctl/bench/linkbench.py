@@ -13,7 +13,8 @@ radio); throughput = what the tablet receives, (received - 1) x size / (last arr
 arrival), the rate between the first and last packet it sees.
 
 Each step is its own Channel with a fixed seed, so the tables are reproducible. `facts` holds the
-statements of REFERENCE section 2 evaluated on the numbers.
+statements the thesis (Matej Hrlec, University of Ljubljana, ch. 3.9-3.10) and DJI's SDK
+documentation make about the link, evaluated on the numbers.
 """
 
 from __future__ import annotations
@@ -100,7 +101,7 @@ def _fact(text: str, value: Any, expect: str, ok: bool) -> dict[str, Any]:
 
 
 def facts(report: dict[str, Any]) -> list[dict[str, Any]]:
-    """REFERENCE section 2, evaluated on a report."""
+    """What the thesis measured and DJI documents about the link, evaluated on a report."""
     out = []
     up = report["uplink"]
     dists, sizes = up["distances_m"], up["sizes"]
@@ -176,7 +177,7 @@ def run(profile_name: str, as_json: bool, plot: str | None, seed: int = 1) -> di
     if plot:
         from .plots import require_matplotlib
 
-        require_matplotlib()
+        require_matplotlib(plot)
     report = measure(profile, seed)
     if plot:
         from .plots import plot_link
@@ -220,7 +221,7 @@ def _print_tables(report: dict[str, Any]) -> None:
             cells.append(f"{r['throughput_Bps']:.0f} / {r['lost']}")
         dt.add_row(f"{rate:g}", *cells)
     console.print(dt)
-    ft = Table(title="facts of the thesis (REFERENCE section 2) on this model")
+    ft = Table(title="facts of the thesis and DJI's docs on this model")
     for col in ("fact", "value", "expected", "ok"):
         ft.add_column(col)
     for f in report["facts"]:

@@ -4,6 +4,9 @@ display, no change to pyplot's global backend)."""
 
 from __future__ import annotations
 
+import contextlib
+import os
+import tempfile
 from typing import Any
 
 INSTALL_HINT = "plotting needs matplotlib: pip install 'ttctl[plot]'"
@@ -22,9 +25,44 @@ def _missing() -> RuntimeError:
     return PlotUnavailable(INSTALL_HINT)
 
 
-def require_matplotlib() -> None:
-    """Fail early (before a long benchmark) if plots cannot be drawn."""
+def require_matplotlib(path: str | None = None) -> None:
+    """Fail early (before a long benchmark) if plots cannot be drawn, or not to `path`."""
     _figure()
+    if path is not None:
+        problem = output_problem(path)
+        if problem:
+            from ..errors import Fail
+
+            raise Fail(problem)
+
+
+def output_problem(path: str) -> str | None:
+    """Why a file cannot be written at `path` (its folder missing or read-only, or a directory
+    there), or None."""
+    target = os.path.abspath(path)
+    folder = os.path.dirname(target)
+    if os.path.isdir(target):
+        return f"{path} is a directory"
+    if not os.path.isdir(folder):
+        return f"cannot write {path}: {folder} is not a directory" if os.path.exists(folder) \
+            else f"cannot write {path}: no folder {folder}"
+    if not os.access(folder, os.W_OK | os.X_OK):
+        return f"cannot write {path}: {folder} is not writable"
+    return None
+
+
+def save_atomically(fig: Any, path: str) -> None:
+    """Write the PNG beside its final name, then rename: never a partial file under it."""
+    folder = os.path.dirname(os.path.abspath(path))
+    fd, tmp = tempfile.mkstemp(prefix=f".{os.path.basename(path)}.", suffix=".tmp", dir=folder)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fig.savefig(fh, format="png", dpi=110)
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise
 
 
 def _figure(**kw: Any) -> Any:
@@ -39,7 +77,7 @@ def _figure(**kw: Any) -> Any:
 
 
 def _save(fig: Any, path: str) -> None:
-    fig.savefig(path, format="png", dpi=110)
+    save_atomically(fig, path)
 
 
 def plot_transfer(report: dict[str, Any], path: str) -> None:
