@@ -61,12 +61,4 @@ def check_name(name: str) -> str:
     return name
 
 
-def is_valid(name: str) -> bool:
-    try:
-        check_name(name)
-    except Refused:
-        return False
-    return True
-
-
-__all__ = ["MAX_NAME_BYTES", "PARTIAL_DIR", "SHA_LEN", "Refused", "check_name", "encoded", "is_valid"]
+__all__ = ["MAX_NAME_BYTES", "PARTIAL_DIR", "SHA_LEN", "Refused", "check_name", "encoded"]

@@ -104,9 +104,6 @@ class FileReceiver:
     def expect(self, peer: tuple[int, int], request_id: int, name: str) -> None:
         self.expected[(peer[0], peer[1], request_id)] = name
 
-    def receiving(self) -> list[Incoming]:
-        return [t for t in self.transfers.values() if t.partial is not None]
-
     def _live_groups(self, now: float) -> set[str]:
         return {t.group for t in self.transfers.values()
                 if t.group is not None and t.partial is not None and now - t.last_activity < self.cfg.live_window}
@@ -377,9 +374,6 @@ class FileReceiver:
             received_contiguous=rc, region_start=region, received_end=re, last_offset=t.last_offset,
             hold_ms=min(65535, int(1000 * (self.now - t.last_data))) if t.last_data is not None else 65535,
             range_count=len(gaps), meta_check=t.check, ranges=flat + [0] * (2 * MAX_RANGES - len(flat)))
-
-    def status(self, t: Incoming) -> ttapi.TtFileStatus:
-        return self.statuses(t)[0]
 
     def reason_message(self, t: Incoming) -> ttapi.TtFileReason:
         return ttapi.TtFileReason(target_system=t.key[0], target_component=t.key[1], transfer_id=t.key[2],
