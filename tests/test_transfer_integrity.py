@@ -376,3 +376,25 @@ def test_garbage_from_another_source_between_a_wide_frames_pieces_costs_nothing(
     assert own.bad_frames == 0 and own.carries_dropped == 0 and own.frames >= 30_000 // 247
     assert hub._rxs[("10.0.0.9", 4242)].stats.frames == 0
     assert (root / "w.bin").read_bytes() == payload
+
+
+def test_a_flood_of_offers_is_bounded_and_does_not_stop_real_transfers(tmp_path: Path) -> None:
+    """A peer offering thousands of files with fresh ids (a runaway script, or worse): the
+    receiver remembers a bounded number of them, and a real transfer still goes through."""
+    from ttctl.proto.receiver import MAX_KNOWN
+
+    root = tmp_path / "in"
+    root.mkdir()
+    (root / "taken").write_text("x")
+    hub = receiver(root)
+    for nonce in range(1, 3 * MAX_KNOWN):
+        for frame in raw_offer(b"taken", b"other bytes", nonce):  # refused: exists
+            hub.receive(0.001 * nonce, frame)
+        while hub.poll(0.001 * nonce) is not None:
+            pass
+    assert hub.receiver is not None and len(hub.receiver.transfers) <= MAX_KNOWN
+    t = tablet()
+    s = send(t, "real.bin", data(5000))
+    Bus(hub, [t]).run(60, lambda: s.done)
+    assert s.result is not None and s.result.ok
+    assert (root / "real.bin").read_bytes() == data(5000)

@@ -24,6 +24,7 @@ from .transfer import MAX_RANGES, Key, TransferConfig, meta_check, reason_fit
 
 MAX_PENDING_OFFERS = 64  # offers whose metadata is still arriving: a flood of them is not our memory's problem
 MAX_UNKNOWN = 256  # transfer ids recently told 'unknown'
+MAX_KNOWN = 1024  # transfers remembered at once (those not receiving are forgotten first, oldest first)
 
 _REFUSAL = {
     "NAME": R.TT_FILE_RESULT_REFUSED_NAME,
@@ -117,6 +118,8 @@ class FileReceiver:
         if t is None:
             if sum(1 for x in self.transfers.values() if not x.decided) >= MAX_PENDING_OFFERS:
                 return
+            if len(self.transfers) >= MAX_KNOWN and not self._forget_one():
+                return
             t = self.transfers[key] = Incoming(key, now)
             t.size, t.meta_length, t.flags, t.request_id = msg.size, msg.meta_length, msg.flags, msg.request_id
             t.meta = bytearray(msg.meta_length)
@@ -144,6 +147,15 @@ class FileReceiver:
             t.meta_have.add(off, off + len(part))
         if t.meta_have.covers(0, t.meta_length):
             self._decide(t, now)
+
+    def _forget_one(self) -> bool:
+        """Room for one more: forget the transfer heard from least recently among those not
+        receiving (finished, refused, waiting); False if every one is receiving."""
+        idle = [t for t in self.transfers.values() if t.partial is None]
+        if not idle:
+            return False
+        self._close(min(idle, key=lambda t: t.last_activity))
+        return True
 
     def _refuse(self, t: Incoming, now: float, code: R, reason: str) -> None:
         t.result, t.reason = code, reason
