@@ -134,3 +134,51 @@ def load_plugins(paths: Iterable[str | Path]) -> list[Plugin]:
             raise PluginError(f"{raw}: defines no Plugin subclass")
         plugins.extend(cls() for cls in found)
     return plugins
+
+
+ENTRY_POINT_GROUP = "ttctl.plugins"
+
+
+def _instances(obj: Any, where: str) -> list[Plugin]:
+    if inspect.isclass(obj) and issubclass(obj, Plugin):
+        return [obj()]
+    if isinstance(obj, Plugin):
+        return [obj]
+    if callable(obj):
+        made = obj()
+        if isinstance(made, Plugin):
+            return [made]
+    raise PluginError(f"{where}: not a Plugin class, instance or factory")
+
+
+def load_plugin(spec: str) -> list[Plugin]:
+    """`path/to/file.py` (every Plugin class in it) or `module:attr` (a Plugin class, instance
+    or factory)."""
+    if spec.endswith(".py") or "/" in spec:
+        return load_plugins([spec])
+    module_name, sep, attr = spec.partition(":")
+    if not sep or not module_name or not attr:
+        raise PluginError(f"{spec}: give a file (path/to/plugin.py) or module:attr")
+    try:
+        module = importlib.import_module(module_name)
+    except Exception as e:
+        raise PluginError(f"{spec}: cannot import {module_name}: {type(e).__name__}: {e}") from None
+    obj = getattr(module, attr, None)
+    if obj is None:
+        raise PluginError(f"{spec}: {module_name} has no {attr}")
+    return _instances(obj, spec)
+
+
+def entry_point_plugins() -> list[Plugin]:
+    """Every plugin installed packages declare in the `ttctl.plugins` entry-point group."""
+    from importlib.metadata import entry_points
+
+    out: list[Plugin] = []
+    for ep in entry_points(group=ENTRY_POINT_GROUP):
+        try:
+            out.extend(_instances(ep.load(), f"entry point {ep.name}"))
+        except PluginError:
+            raise
+        except Exception as e:
+            raise PluginError(f"entry point {ep.name} ({ep.value}): {type(e).__name__}: {e}") from None
+    return out

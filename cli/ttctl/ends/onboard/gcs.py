@@ -1,0 +1,235 @@
+"""What ground stations (QGroundControl, MAVProxy, MAVSDK) need from a vehicle, sans-IO: the
+autopilot component (compid 1) with its HEARTBEAT and telemetry, commands answered with
+COMMAND_ACK exactly as MAVLink defines the results (a command in the wrong state DENIED or
+TEMPORARILY_REJECTED, an unknown one UNSUPPORTED, never silence), parameters, missions,
+REQUEST_MESSAGE / SET_MESSAGE_INTERVAL / REQUEST_DATA_STREAM, and PING.
+
+`on_message(now, msg, link)` takes what a ground station sent on `link`; `tick(now)` returns
+(message, link) pairs to send, link None meaning every ground-station link; `wakeup()` says when
+to call tick again.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Hashable
+from typing import Any
+
+import ttapi
+
+from . import modes, telemetry
+from .autopilot import INFO, WARNING, Autopilot
+from .missions import Missions
+from .vehicle import Refused, Snapshot, State
+
+C = ttapi.MavCmd
+A = ttapi.MavResult
+TARGETED = ("target_system",)
+
+
+def _arg(x: float, default: float) -> float:
+    """MAVSDK fills unused command params with NaN: NaN means 'the default'."""
+    return default if x is None or not math.isfinite(x) else float(x)
+
+
+class GroundStations:
+    def __init__(self, ap: Autopilot, sysid: int, compid: int = 1, boot: float = 0.0,
+                 unix: Callable[[float], float] | None = None, log: Callable[[str], None] | None = None) -> None:
+        self.ap = ap
+        self.sysid, self.compid = sysid, compid
+        self.boot = boot
+        self.unix = unix or (lambda now: now)
+        self.log = log or (lambda text: None)
+        self.out: list[tuple[Any, Hashable]] = []
+        self._peer_links: dict[tuple[int, int], Hashable] = {}
+        ap.missions = Missions(sysid, compid, self._to_peer, self.log)
+        self.builders: dict[int, Callable[[Snapshot], Any]] = {
+            ttapi.Heartbeat.MSG_ID: telemetry.heartbeat,
+            ttapi.SysStatus.MSG_ID: telemetry.sys_status,
+            ttapi.GlobalPositionInt.MSG_ID: lambda s: telemetry.global_position_int(s, self._boot_ms(s)),
+            ttapi.LocalPositionNed.MSG_ID: lambda s: telemetry.local_position_ned(s, self._boot_ms(s)),
+            ttapi.Attitude.MSG_ID: lambda s: telemetry.attitude(s, self._boot_ms(s)),
+            ttapi.GpsRawInt.MSG_ID: lambda s: telemetry.gps_raw_int(s, self._unix_us(s)),
+            ttapi.HomePosition.MSG_ID: lambda s: telemetry.home_position(s, self._unix_us(s)),
+            ttapi.ExtendedSysState.MSG_ID: telemetry.extended_sys_state,
+            ttapi.BatteryStatus.MSG_ID: telemetry.battery_status,
+            ttapi.VfrHud.MSG_ID: telemetry.vfr_hud,
+            ttapi.MissionCurrent.MSG_ID: lambda s: telemetry.mission_current(s, len(self._mission())),
+        }
+        self.rates = telemetry.Rates(self.builders)
+        self.now = boot
+
+    def _mission(self) -> list[Any]:
+        return self.ap.missions.mission() if self.ap.missions is not None else []
+
+    def _boot_ms(self, s: Snapshot) -> int:
+        return int((self.now - self.boot) * 1000) & 0xFFFFFFFF
+
+    def _unix_us(self, s: Snapshot) -> int:
+        return int(self.unix(self.now) * 1e6)
+
+    # -- out ------------------------------------------------------------------------------------
+    def _to_peer(self, msg: Any, peer: tuple[int, int]) -> None:
+        self.out.append((msg, self._peer_links.get(peer)))
+
+    def say(self, severity: int, text: str) -> None:
+        self.out.append((ttapi.Statustext(severity=severity, text=text[:50]), None))
+
+    # -- in ---------------------------------------------------------------------------------------
+    def _for_us(self, msg: Any) -> bool:
+        ts = getattr(msg, "target_system", 0)
+        tc = getattr(msg, "target_component", 0)
+        return ts in (0, self.sysid) and tc in (0, self.compid)
+
+    def on_message(self, now: float, msg: Any, link: Hashable = None) -> None:
+        self.now = now
+        peer = (msg.get_srcSystem(), msg.get_srcComponent())
+        if peer[0] == self.sysid:
+            return  # ourselves (or our own onboard computer), echoed
+        self._peer_links[peer] = link
+        if isinstance(msg, ttapi.Ping):
+            if msg.target_system == 0 and msg.target_component == 0:  # a request: answer it
+                self._to_peer(ttapi.Ping(time_usec=msg.time_usec, seq=msg.seq, target_system=peer[0],
+                                         target_component=peer[1]), peer)
+            return
+        if not self._for_us(msg):
+            return
+        if isinstance(msg, (ttapi.CommandLong, ttapi.CommandInt)):
+            result, extra = self._command(now, msg)
+            self._to_peer(ttapi.CommandAck(command=msg.command, result=int(result), target_system=peer[0],
+                                           target_component=peer[1]), peer)
+            for m in extra:
+                self._to_peer(m, peer)
+        elif isinstance(msg, ttapi.ParamRequestList):
+            for m in self.ap.params.all():
+                self._to_peer(m, peer)
+        elif isinstance(msg, ttapi.ParamRequestRead):
+            for m in self.ap.params.read(msg):
+                self._to_peer(m, peer)
+        elif isinstance(msg, ttapi.ParamSet):
+            answers, complaint = self.ap.params.set(msg)
+            if complaint:
+                self.log(complaint)
+                self.say(WARNING, complaint)
+            for m in answers:
+                self.out.append((m, None))  # every ground station learns the new value
+        elif isinstance(msg, ttapi.RequestDataStream):
+            self.rates.set_all(msg.req_message_rate if msg.start_stop else 0)
+        elif self.ap.missions is not None and type(msg).__name__.startswith("Mission"):
+            self.ap.missions.on_message(now, msg)
+
+    def _command(self, now: float, msg: Any) -> tuple[A, list[Any]]:
+        cmd = msg.command
+        p = [msg.param1, msg.param2, msg.param3, msg.param4]
+        v = self.ap.vehicle
+        try:
+            if cmd == C.MAV_CMD_COMPONENT_ARM_DISARM:
+                if _arg(p[0], 0) >= 0.5:
+                    v.arm()
+                else:
+                    v.disarm()
+                return A.MAV_RESULT_ACCEPTED, []
+            if cmd == C.MAV_CMD_NAV_TAKEOFF:
+                alt = _arg(msg.param7 if isinstance(msg, ttapi.CommandLong) else msg.z, 0.0)
+                v.takeoff(alt if alt > 0 else None)
+                return A.MAV_RESULT_ACCEPTED, []
+            if cmd == C.MAV_CMD_NAV_LAND:
+                v.land()
+                return A.MAV_RESULT_ACCEPTED, []
+            if cmd == C.MAV_CMD_NAV_RETURN_TO_LAUNCH:
+                v.return_home()
+                return A.MAV_RESULT_ACCEPTED, []
+            if cmd == C.MAV_CMD_DO_SET_MODE:
+                return self._set_mode(p), []
+            if cmd == C.MAV_CMD_DO_REPOSITION:
+                return self._reposition(msg), []
+            if cmd == C.MAV_CMD_MISSION_START:
+                self.ap.start_mission()
+                return A.MAV_RESULT_ACCEPTED, []
+            if cmd == C.MAV_CMD_SET_MESSAGE_INTERVAL:
+                ok = self.rates.set_interval(int(_arg(p[0], -1)), _arg(p[1], 0))
+                return (A.MAV_RESULT_ACCEPTED if ok else A.MAV_RESULT_UNSUPPORTED), []
+            if cmd in (C.MAV_CMD_REQUEST_MESSAGE, C.MAV_CMD_GET_HOME_POSITION,
+                       C.MAV_CMD_REQUEST_AUTOPILOT_CAPABILITIES):
+                msgid = {C.MAV_CMD_GET_HOME_POSITION: ttapi.HomePosition.MSG_ID,
+                         C.MAV_CMD_REQUEST_AUTOPILOT_CAPABILITIES: ttapi.AutopilotVersion.MSG_ID
+                         }.get(cmd, int(_arg(p[0], -1)))
+                reply = self._requested(msgid)
+                return (A.MAV_RESULT_ACCEPTED, [reply]) if reply is not None else (A.MAV_RESULT_UNSUPPORTED, [])
+        except Refused as e:
+            self.log(f"command {cmd} refused: {e}")
+            self.say(WARNING, f"refused: {e}")
+            return (A.MAV_RESULT_TEMPORARILY_REJECTED if e.temporary else A.MAV_RESULT_DENIED), []
+        return A.MAV_RESULT_UNSUPPORTED, []
+
+    def _requested(self, msgid: int) -> Any | None:
+        if msgid == ttapi.AutopilotVersion.MSG_ID:
+            return telemetry.autopilot_version(self.sysid)
+        build = self.builders.get(msgid)
+        return build(self.ap.snapshot()) if build is not None else None
+
+    def _set_mode(self, p: list[float]) -> A:
+        base = int(_arg(p[0], 0))
+        if not base & int(ttapi.MavModeFlag.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED):
+            return A.MAV_RESULT_UNSUPPORTED
+        main, sub = int(_arg(p[1], 0)), int(_arg(p[2], 0))
+        v = self.ap.vehicle
+        if (main, sub) == (modes.AUTO, modes.RTL):
+            v.return_home()
+        elif (main, sub) == (modes.AUTO, modes.LAND):
+            v.land()
+        elif (main, sub) == (modes.AUTO, modes.LOITER):
+            if v.state is not State.LANDED:
+                v.hover()
+        elif (main, sub) == (modes.AUTO, modes.MISSION):
+            self.ap.start_mission()
+        elif (main, sub) == (modes.AUTO, modes.TAKEOFF):
+            v.takeoff()
+        elif main in (modes.POSCTL, modes.OFFBOARD, modes.ALTCTL):
+            if v.state is not State.LANDED:
+                v.hover()
+        else:
+            return A.MAV_RESULT_UNSUPPORTED
+        return A.MAV_RESULT_ACCEPTED
+
+    def _reposition(self, msg: Any) -> A:
+        s = self.ap.snapshot()
+        if isinstance(msg, ttapi.CommandInt):
+            lat, lon, z = msg.x / 1e7, msg.y / 1e7, msg.z
+            relative = msg.frame in (int(ttapi.MavFrame.MAV_FRAME_GLOBAL_RELATIVE_ALT),
+                                     int(ttapi.MavFrame.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT))
+        else:
+            lat, lon, z = _arg(msg.param5, s.lat), _arg(msg.param6, s.lon), msg.param7
+            relative = False
+        alt = _arg(z, s.alt_rel if relative else s.alt_msl)
+        if not relative:
+            alt -= s.home.alt
+        if not (-90 <= lat <= 90 and -180 <= lon <= 180):
+            raise Refused("position out of range")
+        n = math.radians(lat - s.home.lat) * 6_378_137.0
+        e = math.radians(lon - s.home.lon) * 6_378_137.0 * math.cos(math.radians(s.home.lat))
+        yaw = msg.param4
+        self.ap.vehicle.goto(n, e, alt, math.radians(yaw) if math.isfinite(yaw) else None)
+        return A.MAV_RESULT_ACCEPTED
+
+    # -- time -------------------------------------------------------------------------------------
+    def tick(self, now: float) -> list[tuple[Any, Hashable]]:
+        self.now = now
+        if self.ap.missions is not None:
+            self.ap.missions.tick(now)
+        due = self.rates.take_due(now)
+        if due:
+            s = self.ap.snapshot()
+            self.out.extend((self.builders[mid](s), None) for mid in due)
+        out, self.out = self.out, []
+        return out
+
+    def wakeup(self) -> float | None:
+        if self.out:
+            return self.now
+        times = [t for t in (self.rates.next_due(), self.ap.missions.deadline() if self.ap.missions else None)
+                 if t is not None]
+        return min(times) if times else None
+
+
+__all__ = ["INFO", "GroundStations"]

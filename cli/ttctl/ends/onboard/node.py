@@ -1,0 +1,287 @@
+"""The onboard end as an asyncio node: the vehicle, the tablet's DTT link (a proto Endpoint under
+the shared Runner: file transfer, commands, telemetry) and any number of ground-station links
+(plain MAVLink 2 over UDP, the vehicle as component 1), all on one event loop.
+
+Time: `speed` > 1 runs the vehicle's clock faster than the wall clock (tests, rehearsals); the
+links keep real time.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import time
+from collections.abc import Callable, Hashable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import ttapi
+
+from ...link.transport import Spec, Transport, UdpTransport, make_transport
+from ...proto.endpoint import TELEMETRY, Endpoint
+from ...proto.storage import ReceiveDir
+from ..plugins import Context, Dispatcher, Plugin
+from ..runtime import Runner
+from .autopilot import Autopilot
+from .gcs import GroundStations
+from .trajectory import TrajectoryError, parse_trajectory
+from .vehicle import Home, Refused, SimVehicle, State
+
+TT = ttapi.TtAction
+RES = ttapi.TtResult
+ONBOARD_COMPID = 240
+AUTOPILOT_COMPID = 1
+STEP = 0.02  # s of wall clock between vehicle steps
+
+
+@dataclass
+class OnboardConfig:
+    sysid: int = 1
+    dtt: Spec | None = None  # the tablet's link
+    gcs: list[Spec] = field(default_factory=list)
+    inbox: Path | None = None  # received files (trajectories) go here
+    serve: Path | None = None  # files the tablet may fetch
+    home: Home = field(default_factory=Home)
+    speed: float = 1.0
+    rate_Bps: float | None = None  # pacing of the DTT downlink
+    telemetry_hz: float = 2.0  # TT_NAV_SAT_FIX and TT_ODOMETRY to the tablet
+
+
+class OnboardNode:
+    def __init__(self, cfg: OnboardConfig, plugins: list[Plugin] | None = None,
+                 log: Callable[[str], None] | None = None) -> None:
+        self.cfg = cfg
+        self.log = log or (lambda text: None)
+        self.vehicle = SimVehicle(home=cfg.home)
+        self.ap = Autopilot(self.vehicle, cfg.sysid, say=self._say)
+        self.started = 0.0
+        self.gcs = GroundStations(self.ap, cfg.sysid, AUTOPILOT_COMPID, unix=self._unix, log=self.log)
+        self.gcs_encoder = ttapi.Encoder(cfg.sysid, AUTOPILOT_COMPID)
+        self.gcs_links: list[UdpTransport] = []
+        self._gcs_parsers: dict[Hashable, ttapi.Parser] = {}
+        self.dispatcher = Dispatcher(on_error=self._plugin_error)
+        self.plugins = plugins or []
+        for p in self.plugins:
+            self.dispatcher.add(p)
+        self.endpoint: Endpoint | None = None
+        self.runner: Runner | None = None
+        self._wake = asyncio.Event()
+        self.vehicle_time = 0.0
+        self._tele_due = 0.0
+        self._hb_due = 0.0
+        self._closed = False
+
+    # -- wiring ---------------------------------------------------------------------------------
+    def _unix(self, now: float) -> float:
+        return time.time()
+
+    def _say(self, severity: int, text: str) -> None:
+        self.log(text)
+        self.gcs.say(severity, text)
+        if self.endpoint is not None:
+            self.endpoint.send_message(ttapi.TtLog(time_boot_ms=int(self.vehicle_time * 1000) & 0xFFFFFFFF,
+                                                   severity=severity, text=text[:80]))
+
+    def _plugin_error(self, msg: Any, e: BaseException) -> None:
+        self.log(f"plugin error on {msg.NAME}: {type(e).__name__}: {e}")
+
+    def context(self) -> Context:
+        ctx = Context(send=self._send_dtt, log=self.log, sysid=self.cfg.sysid, compid=ONBOARD_COMPID)
+        ctx.vehicle = self.vehicle  # type: ignore[attr-defined]
+        return ctx
+
+    def _send_dtt(self, msg: Any) -> None:
+        if self.endpoint is not None:
+            self.endpoint.send_message(msg)
+
+    # -- the tablet's commands ------------------------------------------------------------------
+    def tablet_action(self, msg: ttapi.TtActionCommand) -> int:
+        v = self.vehicle
+        p0 = float(msg.param[0]) if msg.param else 0.0
+        try:
+            if msg.action == TT.TT_ACTION_TAKE_OFF:
+                v.arm()
+                v.takeoff(p0 if p0 > 0 else None)
+            elif msg.action == TT.TT_ACTION_LAND:
+                v.land()
+            elif msg.action == TT.TT_ACTION_HOVER:
+                v.hover()
+            elif msg.action == TT.TT_ACTION_RETURN_HOME:
+                v.return_home(p0 if p0 > 0 else None)
+            elif msg.action == TT.TT_ACTION_SYNC_TIME:
+                pass
+            elif msg.action == TT.TT_ACTION_FLY_TRAJECTORY:
+                self._fly_file(msg.argument.rstrip("\x00"), p0)
+            else:
+                return int(RES.TT_RESULT_UNSUPPORTED)
+        except Refused as e:
+            self._say(4, f"refused: {e}")
+            return int(RES.TT_RESULT_BUSY if e.temporary else RES.TT_RESULT_DENIED)
+        except TrajectoryError as e:
+            self._say(4, f"trajectory refused: {e}")
+            return int(RES.TT_RESULT_FAILED)
+        return int(RES.TT_RESULT_ACCEPTED)
+
+    def _fly_file(self, name: str, speed: float) -> None:
+        if self.cfg.inbox is None:
+            raise TrajectoryError("this vehicle has no inbox for trajectory files")
+        from ...proto.names import Refused as NameRefused
+        from ...proto.names import check_name
+
+        try:
+            check_name(name)
+        except NameRefused as e:
+            raise TrajectoryError(f"{name!r}: {e.reason}") from None
+        path = self.cfg.inbox / name
+        try:
+            text = path.read_text(encoding="utf-8")
+        except OSError as e:
+            raise TrajectoryError(f"{name}: {e.strerror or e} (send it first)") from None
+        except UnicodeDecodeError:
+            raise TrajectoryError(f"{name}: not UTF-8 text") from None
+        try:
+            route = parse_trajectory(text, self.vehicle.limits.max_alt)
+        except TrajectoryError as e:
+            raise TrajectoryError(f"{name}: {e}") from None
+        if speed > 0:
+            for w in route:
+                w.speed = speed
+        self.ap.fly_trajectory(route, name)
+
+    def _on_tablet_message(self, now: float, msg: Any) -> None:
+        self.ap.heard_tablet(self.vehicle_time)
+        if isinstance(msg, ttapi.DjiPoseStamped) and msg.topic_name == ttapi.DjiTopicName.DJI_TOPIC_NAME_SETPOINT:
+            x, y, z = msg.position
+            try:
+                self.vehicle.goto(float(x), float(y), float(z))
+            except Refused as e:
+                self.log(f"setpoint refused: {e}")
+        ctx = self.context()
+        self.dispatcher.dispatch(msg, ctx)
+
+    # -- telemetry to the tablet ----------------------------------------------------------------
+    def _tablet_telemetry(self) -> None:
+        if self.endpoint is None:
+            return
+        s = self.vehicle.snapshot()
+        unix_us = int(time.time() * 1e6)
+        fix = ttapi.TtNavSatFix(time_usec=unix_us, latitude=round(s.lat * 1e7), longitude=round(s.lon * 1e7),
+                                altitude=s.alt_msl, position_covariance=[0.64, 0, 0, 0, 0.64, 0, 0, 0, 1.44],
+                                status=int(ttapi.TtFixType.TT_FIX_TYPE_FIX),
+                                service=int(ttapi.TtGnssService.TT_GNSS_SERVICE_GPS),
+                                covariance_type=int(ttapi.TtCovarianceType.TT_COVARIANCE_TYPE_DIAGONAL_KNOWN),
+                                satellites=14)
+        import math
+
+        cy, sy = math.cos(s.yaw / 2), math.sin(s.yaw / 2)
+        cp, sp = math.cos(s.pitch / 2), math.sin(s.pitch / 2)
+        cr, sr = math.cos(s.roll / 2), math.sin(s.roll / 2)
+        q = [sr * cp * cy - cr * sp * sy, cr * sp * cy + sr * cp * sy, cr * cp * sy - sr * sp * cy,
+             cr * cp * cy + sr * sp * sy]  # x, y, z, w of the NED (FRD) attitude
+        odo = ttapi.TtOdometry(time_usec=unix_us, frame_id=int(ttapi.TtFrame.TT_FRAME_WORLD_NED),
+                               child_frame_id=int(ttapi.TtFrame.TT_FRAME_WORLD_NED), position=[s.n, s.e, s.d],
+                               orientation=q, linear=[s.vn, s.ve, s.vd], angular=[0.0, 0.0, s.yaw_rate],
+                               pose_variance=[0.25, 0.25, 0.5, 0.01, 0.01, 0.02])
+        self.endpoint.send_message(fix, TELEMETRY)
+        self.endpoint.send_message(odo, TELEMETRY)
+
+    # -- running ---------------------------------------------------------------------------------
+    async def start(self) -> None:
+        loop = asyncio.get_running_loop()
+        self.started = loop.time()
+        self.gcs.boot = self.gcs.now = 0.0
+        for spec in self.cfg.gcs:
+            t = UdpTransport(spec, mtu=65535, log=self._logger(str(spec)))
+            t.on_receive = self._receiver(t)
+            await t.open()
+            self.gcs_links.append(t)
+        if self.cfg.dtt is not None:
+            store = ReceiveDir(self.cfg.inbox) if self.cfg.inbox is not None else None
+            transport: Transport = make_transport(self.cfg.dtt, log=lambda text: self.log(f"dtt: {text}"))
+            self.endpoint = Endpoint(self.cfg.sysid, ONBOARD_COMPID, mtu=transport.mtu, rate_Bps=self.cfg.rate_Bps,
+                                     receive_dir=store, serve_dir=str(self.cfg.serve) if self.cfg.serve else None,
+                                     action=self.tablet_action, on_message=self._on_tablet_message,
+                                     on_event=self._file_event)
+            self.runner = Runner(self.endpoint, transport)
+            await self.runner.start()
+            if store is not None:
+                store.prepare()
+        ctx = self.context()
+        for p in self.plugins:
+            try:
+                p.start(ctx)
+            except Exception as e:
+                self.log(f"plugin {type(p).__name__} failed to start: {type(e).__name__}: {e}")
+
+    def _logger(self, where: str) -> Callable[[str], None]:
+        return lambda text: self.log(f"{where}: {text}")
+
+    def _receiver(self, link: UdpTransport) -> Callable[[bytes, Hashable], None]:
+        return lambda data, source: self._from_gcs(link, data, source)
+
+    def _file_event(self, what: str, t: Any) -> None:
+        if what == "file-complete":
+            self._say(6, f"received {t.name} ({t.size} bytes)")
+
+    def _from_gcs(self, link: UdpTransport, data: bytes, source: Hashable) -> None:
+        parser = self._gcs_parsers.setdefault((link, source), ttapi.Parser())
+        now = self.vehicle_time
+        for msg in parser.feed(data):
+            link.confirm(source, {(msg.get_srcSystem(), msg.get_srcComponent())})  # a udpin link learns its peers
+            self.gcs.on_message(now, msg, link)
+        self._wake.set()
+
+    def _send_gcs(self, pairs: list[tuple[Any, Hashable]]) -> None:
+        for msg, link in pairs:
+            frame = self.gcs_encoder.encode(msg)
+            for t in self.gcs_links:
+                if link is None or link is t:
+                    t.send(frame)
+
+    async def run(self, stop: asyncio.Event) -> None:
+        loop = asyncio.get_running_loop()
+        last = loop.time()
+        while not stop.is_set() and not self._closed:
+            now = loop.time()
+            dt = (now - last) * self.cfg.speed
+            last = now
+            self.vehicle_time += dt
+            self.ap.step(self.vehicle_time, dt)
+            self._send_gcs(self.gcs.tick(self.vehicle_time))
+            if self.endpoint is not None:
+                if self.vehicle_time >= self._hb_due:
+                    self.endpoint.send_message(telemetry_heartbeat(self.vehicle.snapshot()))
+                    self._hb_due = self.vehicle_time + 1.0
+                if self.cfg.telemetry_hz > 0 and self.vehicle_time >= self._tele_due:
+                    self._tablet_telemetry()
+                    self._tele_due = self.vehicle_time + 1.0 / self.cfg.telemetry_hz
+                if self.runner is not None:
+                    self.runner.kick()
+            self._wake.clear()
+            with contextlib.suppress(TimeoutError):
+                await asyncio.wait_for(self._wake.wait(), STEP)
+
+    async def close(self) -> None:
+        self._closed = True
+        for p in self.plugins:
+            with contextlib.suppress(Exception):
+                p.stop()
+        if self.endpoint is not None:
+            self.endpoint.close()
+        if self.runner is not None:
+            await self.runner.close()
+        for t in self.gcs_links:
+            t.close()
+
+
+def telemetry_heartbeat(s: Any) -> ttapi.Heartbeat:
+    from .telemetry import heartbeat
+
+    hb = heartbeat(s)
+    hb.type = int(ttapi.MavType.MAV_TYPE_ONBOARD_CONTROLLER)
+    hb.autopilot = int(ttapi.MavAutopilot.MAV_AUTOPILOT_INVALID)
+    return hb
+
+
+__all__ = ["OnboardConfig", "OnboardNode", "State"]

@@ -1,0 +1,183 @@
+"""`ttctl emulate onboard` against pymavlink as the ground station (real processes on loopback):
+what QGroundControl, MAVProxy and MAVSDK need from a vehicle, and the tablet's commands."""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from e2e_lib import LOCAL, Start, free_port
+
+SPEED = "4"  # the vehicle's clock runs 4x faster than the wall clock
+
+
+@pytest.fixture
+def gcs(tmp_path: Path, start: Start) -> Iterator[tuple[Any, Any]]:
+    """A running onboard end and a pymavlink connection listening where it sends."""
+    from pymavlink import mavutil
+
+    port = free_port()
+    conn = mavutil.mavlink_connection(f"udpin:{LOCAL}:{port}", source_system=255, source_component=190,
+                                      dialect="common")
+    node = start("onboard", "emulate", "onboard", "--gcs", f"udpout:{LOCAL}:{port}", "--listen",
+                 f"udpin:{LOCAL}:0", "--no-entry-points", "--speed", SPEED, "--inbox", str(tmp_path / "inbox"))
+    node.wait_for("onboard 1:")
+    hb = conn.recv_match(type="HEARTBEAT", blocking=True, timeout=10)
+    assert hb is not None, node.stderr
+    conn.target_system, conn.target_component = 1, 1
+    try:
+        yield conn, node
+    finally:
+        conn.close()
+
+
+def ack(conn: Any, command: int, timeout: float = 5.0) -> int:
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        m = conn.recv_match(type="COMMAND_ACK", blocking=True, timeout=0.5)
+        if m is not None and m.command == command:
+            return int(m.result)
+    raise AssertionError(f"no COMMAND_ACK for {command}")
+
+
+def command(conn: Any, cmd: int, *params: float) -> int:
+    p = list(params) + [0.0] * (7 - len(params))
+    conn.mav.command_long_send(1, 1, cmd, 0, *p)
+    return ack(conn, cmd)
+
+
+def wait_for(conn: Any, kind: str, pred: Any, timeout: float = 20.0) -> Any:
+    end = time.monotonic() + timeout
+    last = None
+    while time.monotonic() < end:
+        m = conn.recv_match(type=kind, blocking=True, timeout=0.5)
+        if m is not None:
+            last = m
+            if pred(m):
+                return m
+    raise AssertionError(f"no {kind} as wanted; last {last}")
+
+
+def test_heartbeat_identity_and_rate(gcs: tuple[Any, Any]) -> None:
+    from pymavlink import mavutil
+
+    conn, _ = gcs
+    beats = []
+    end = time.monotonic() + 3.0
+    while time.monotonic() < end:
+        m = conn.recv_match(type="HEARTBEAT", blocking=True, timeout=0.5)
+        if m is not None and m.get_srcSystem() == 1 and m.get_srcComponent() == 1:
+            beats.append((time.monotonic(), m))
+    assert len(beats) >= 3 * float(SPEED) - 2  # 1 Hz of the vehicle's clock
+    hb = beats[-1][1]
+    assert hb.type == mavutil.mavlink.MAV_TYPE_QUADROTOR and hb.autopilot == mavutil.mavlink.MAV_AUTOPILOT_GENERIC
+    assert hb.mavlink_version == 3 and hb.base_mode & mavutil.mavlink.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED
+    assert not hb.base_mode & mavutil.mavlink.MAV_MODE_FLAG_SAFETY_ARMED
+    assert (hb.custom_mode >> 16) & 0xFF == 4 and (hb.custom_mode >> 24) & 0xFF == 3  # PX4 AUTO.LOITER: HOLD
+
+
+def test_commands_are_answered_as_mavlink_defines(gcs: tuple[Any, Any]) -> None:
+    from pymavlink import mavutil
+
+    m = mavutil.mavlink
+    conn, _ = gcs
+    assert command(conn, m.MAV_CMD_NAV_TAKEOFF, 0, 0, 0, math.nan, math.nan, math.nan, 5) == m.MAV_RESULT_DENIED
+    assert command(conn, 31999) == m.MAV_RESULT_UNSUPPORTED
+    assert command(conn, m.MAV_CMD_NAV_LAND) == m.MAV_RESULT_DENIED  # on the ground
+    assert command(conn, m.MAV_CMD_COMPONENT_ARM_DISARM, 1) == m.MAV_RESULT_ACCEPTED
+    hb = wait_for(conn, "HEARTBEAT", lambda h: h.get_srcComponent() == 1 and h.base_mode & 128)
+    assert hb.system_status == m.MAV_STATE_ACTIVE
+    assert command(conn, m.MAV_CMD_NAV_TAKEOFF, 0, 0, 0, math.nan, math.nan, math.nan, 5) == m.MAV_RESULT_ACCEPTED
+    assert command(conn, m.MAV_CMD_NAV_TAKEOFF) == m.MAV_RESULT_DENIED  # already flying
+    wait_for(conn, "EXTENDED_SYS_STATE", lambda e: e.landed_state == m.MAV_LANDED_STATE_IN_AIR)
+    pos = wait_for(conn, "GLOBAL_POSITION_INT", lambda p: p.relative_alt > 4800)
+    assert abs(pos.lat / 1e7 - 46.0503) < 1e-4 and abs(pos.lon / 1e7 - 14.4686) < 1e-4
+    assert command(conn, m.MAV_CMD_NAV_LAND) == m.MAV_RESULT_ACCEPTED
+    wait_for(conn, "EXTENDED_SYS_STATE", lambda e: e.landed_state == m.MAV_LANDED_STATE_ON_GROUND, timeout=30)
+    wait_for(conn, "HEARTBEAT", lambda h: h.get_srcComponent() == 1 and not h.base_mode & 128)  # disarmed
+
+
+def test_request_message_and_intervals(gcs: tuple[Any, Any]) -> None:
+    from pymavlink import mavutil
+
+    m = mavutil.mavlink
+    conn, _ = gcs
+    assert command(conn, m.MAV_CMD_REQUEST_MESSAGE, m.MAVLINK_MSG_ID_AUTOPILOT_VERSION) == m.MAV_RESULT_ACCEPTED
+    ver = wait_for(conn, "AUTOPILOT_VERSION", lambda v: True, timeout=3)
+    assert ver.capabilities & m.MAV_PROTOCOL_CAPABILITY_MISSION_INT
+    assert ver.capabilities & m.MAV_PROTOCOL_CAPABILITY_PARAM_ENCODE_BYTEWISE
+    assert command(conn, m.MAV_CMD_REQUEST_MESSAGE, m.MAVLINK_MSG_ID_HOME_POSITION) == m.MAV_RESULT_ACCEPTED
+    wait_for(conn, "HOME_POSITION", lambda h: abs(h.latitude / 1e7 - 46.0503) < 1e-6, timeout=3)
+    assert command(conn, m.MAV_CMD_REQUEST_MESSAGE, 12345) == m.MAV_RESULT_UNSUPPORTED
+    assert command(conn, m.MAV_CMD_SET_MESSAGE_INTERVAL, m.MAVLINK_MSG_ID_ATTITUDE, -1) == m.MAV_RESULT_ACCEPTED
+    time.sleep(0.5)
+    while conn.recv_match(blocking=False) is not None:
+        pass
+    assert wait_for(conn, "HEARTBEAT", lambda h: True, timeout=3)
+    assert conn.recv_match(type="ATTITUDE", blocking=True, timeout=1.0) is None  # switched off
+
+
+def test_parameters(gcs: tuple[Any, Any]) -> None:
+    from pymavlink import mavutil
+
+    conn, _ = gcs
+    conn.mav.param_request_list_send(1, 1)
+    seen: dict[str, Any] = {}
+    end = time.monotonic() + 5
+    while time.monotonic() < end and (not seen or len(seen) < next(iter(seen.values())).param_count):
+        p = conn.recv_match(type="PARAM_VALUE", blocking=True, timeout=0.5)
+        if p is not None:
+            seen[p.param_id] = p
+    count = next(iter(seen.values())).param_count
+    assert len(seen) == count >= 5 and sorted(p.param_index for p in seen.values()) == list(range(count))
+    assert {"COM_DL_LOSS_T", "NAV_DLL_ACT", "MIS_TAKEOFF_ALT", "MPC_XY_VEL_MAX"} <= set(seen)
+    conn.mav.param_set_send(1, 1, b"MPC_XY_VEL_MAX", 3.0, mavutil.mavlink.MAV_PARAM_TYPE_REAL32)
+    echo = wait_for(conn, "PARAM_VALUE", lambda p: p.param_id == "MPC_XY_VEL_MAX", timeout=3)
+    assert echo.param_value == pytest.approx(3.0)
+    conn.mav.param_set_send(1, 1, b"MPC_XY_VEL_MAX", 500.0, mavutil.mavlink.MAV_PARAM_TYPE_REAL32)
+    echo = wait_for(conn, "PARAM_VALUE", lambda p: p.param_id == "MPC_XY_VEL_MAX", timeout=3)
+    assert echo.param_value == pytest.approx(3.0)  # out of range: the old value, echoed
+
+
+def test_mission_upload_download_and_flight(gcs: tuple[Any, Any]) -> None:
+    from pymavlink import mavutil
+
+    m = mavutil.mavlink
+    conn, _ = gcs
+    home_lat, home_lon = 46.0503, 14.4686
+    points = [(home_lat + 1e-4, home_lon, 5.0), (home_lat + 1e-4, home_lon + 1.4e-4, 6.0)]
+    items = [m.MAVLink_mission_item_int_message(1, 1, i, m.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, m.MAV_CMD_NAV_WAYPOINT,
+                                                0, 1, 0, 0, 0, math.nan, int(lat * 1e7), int(lon * 1e7), alt,
+                                                m.MAV_MISSION_TYPE_MISSION)
+             for i, (lat, lon, alt) in enumerate(points)]
+    conn.mav.mission_count_send(1, 1, len(items), m.MAV_MISSION_TYPE_MISSION)
+    while True:
+        r = conn.recv_match(type=["MISSION_REQUEST_INT", "MISSION_ACK"], blocking=True, timeout=5)
+        assert r is not None
+        if r.get_type() == "MISSION_ACK":
+            assert r.type == m.MAV_MISSION_ACCEPTED
+            break
+        conn.mav.send(items[r.seq])
+    conn.mav.mission_request_list_send(1, 1, m.MAV_MISSION_TYPE_MISSION)
+    count = wait_for(conn, "MISSION_COUNT", lambda c: True, timeout=3)
+    assert count.count == 2
+    for i in range(2):
+        conn.mav.mission_request_int_send(1, 1, i, m.MAV_MISSION_TYPE_MISSION)
+        it = wait_for(conn, "MISSION_ITEM_INT", lambda x, i=i: x.seq == i, timeout=3)
+        assert (it.x, it.y, it.z) == (items[i].x, items[i].y, items[i].z)
+    conn.mav.mission_ack_send(1, 1, m.MAV_MISSION_ACCEPTED, m.MAV_MISSION_TYPE_MISSION)
+    assert command(conn, m.MAV_CMD_MISSION_START) == m.MAV_RESULT_DENIED  # not armed
+    assert command(conn, m.MAV_CMD_COMPONENT_ARM_DISARM, 1) == m.MAV_RESULT_ACCEPTED
+    assert command(conn, m.MAV_CMD_MISSION_START) == m.MAV_RESULT_ACCEPTED  # takes off first
+    far = wait_for(conn, "GLOBAL_POSITION_INT", lambda p: p.lon > int((home_lon + 1.2e-4) * 1e7)
+                   and p.lat > int((home_lat + 0.8e-4) * 1e7), timeout=60)
+    assert far.relative_alt > 4000
+    assert command(conn, m.MAV_CMD_NAV_RETURN_TO_LAUNCH) == m.MAV_RESULT_ACCEPTED
+    wait_for(conn, "EXTENDED_SYS_STATE", lambda e: e.landed_state == m.MAV_LANDED_STATE_ON_GROUND, timeout=60)
+    back = wait_for(conn, "GLOBAL_POSITION_INT", lambda p: True, timeout=3)
+    assert abs(back.lat / 1e7 - home_lat) < 2e-6 and abs(back.lon / 1e7 - home_lon) < 2e-6
