@@ -22,7 +22,9 @@ F = ttapi.MavFrame
 RETRY = 1.0  # s before an item is asked for again
 RETRIES = 5
 FLOWN = {int(C.MAV_CMD_NAV_WAYPOINT), int(C.MAV_CMD_NAV_TAKEOFF), int(C.MAV_CMD_NAV_LOITER_TIME),
-         int(C.MAV_CMD_NAV_LAND), int(C.MAV_CMD_NAV_RETURN_TO_LAUNCH), int(C.MAV_CMD_NAV_LOITER_UNLIM)}
+         int(C.MAV_CMD_NAV_LAND), int(C.MAV_CMD_NAV_RETURN_TO_LAUNCH), int(C.MAV_CMD_NAV_LOITER_UNLIM),
+         int(C.MAV_CMD_DO_CHANGE_SPEED)}
+UNPLACED = {int(C.MAV_CMD_DO_CHANGE_SPEED)}  # items without a position
 FRAMES = {int(F.MAV_FRAME_GLOBAL_RELATIVE_ALT), int(F.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT), int(F.MAV_FRAME_GLOBAL),
           int(F.MAV_FRAME_GLOBAL_INT), int(F.MAV_FRAME_MISSION)}
 
@@ -142,6 +144,8 @@ def check_item(item: ttapi.MissionItemInt) -> tuple[int, str] | None:
     """Why a mission item cannot be flown here, with its MAV_MISSION_RESULT; None if it can."""
     if item.command not in FLOWN:
         return int(R.MAV_MISSION_UNSUPPORTED), f"command {item.command} is not supported"
+    if item.command in UNPLACED:
+        return None
     if item.frame not in FRAMES:
         return int(R.MAV_MISSION_UNSUPPORTED_FRAME), f"frame {item.frame} is not supported"
     if item.command in (int(C.MAV_CMD_NAV_WAYPOINT), int(C.MAV_CMD_NAV_TAKEOFF), int(C.MAV_CMD_NAV_LOITER_TIME)):
@@ -160,9 +164,13 @@ def waypoints(items: list[ttapi.MissionItemInt], home: Home, here: tuple[float, 
     it is, a land or return ends the list (the caller lands or returns)."""
     out: list[Waypoint] = []
     n, e, alt = here
+    speed: float | None = None
     for item in items:
         if item.command in (int(C.MAV_CMD_NAV_LAND), int(C.MAV_CMD_NAV_RETURN_TO_LAUNCH)):
             break
+        if item.command == int(C.MAV_CMD_DO_CHANGE_SPEED):
+            speed = float(item.param2) if math.isfinite(item.param2) and item.param2 > 0 else None
+            continue
         if item.command == int(C.MAV_CMD_NAV_LOITER_UNLIM):
             continue
         if item.x != 0 or item.y != 0:
@@ -177,7 +185,7 @@ def waypoints(items: list[ttapi.MissionItemInt], home: Home, here: tuple[float, 
                                                                 int(C.MAV_CMD_NAV_LOITER_TIME)) else 0.0
         yaw = None if not math.isfinite(item.param4) or item.command == int(C.MAV_CMD_NAV_TAKEOFF) \
             else math.radians(item.param4)
-        out.append(Waypoint(n, e, alt, yaw=yaw, hold=hold))
+        out.append(Waypoint(n, e, alt, yaw=yaw, speed=speed, hold=hold))
     return out
 
 

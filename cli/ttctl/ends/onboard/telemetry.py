@@ -44,9 +44,15 @@ def heartbeat(s: Snapshot) -> ttapi.Heartbeat:
                            custom_mode=modes.custom_mode(s.state), system_status=int(status), mavlink_version=3)
 
 
+PREARM = int(S.MAV_SYS_STATUS_PREARM_CHECK)
+
+
 def sys_status(s: Snapshot) -> ttapi.SysStatus:
-    return ttapi.SysStatus(onboard_control_sensors_present=SENSORS, onboard_control_sensors_enabled=SENSORS,
-                           onboard_control_sensors_health=SENSORS, load=150,
+    # the pre-arm check (MAVSDK's is_armable) passes while the battery allows arming
+    health = SENSORS | (PREARM if s.battery_pct >= 10.0 and not s.state.airborne else 0)
+    return ttapi.SysStatus(onboard_control_sensors_present=SENSORS | PREARM,
+                           onboard_control_sensors_enabled=SENSORS | PREARM,
+                           onboard_control_sensors_health=health, load=150,
                            voltage_battery=int(s.battery_v * 1000), current_battery=int(s.current_a * 100),
                            battery_remaining=round(s.battery_pct))
 

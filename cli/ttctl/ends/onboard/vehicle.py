@@ -206,7 +206,7 @@ class SimVehicle:
         alt = self._alt(alt)
         if self.state is State.LANDED:
             raise Refused("on the ground: take off first")
-        if self.state in (State.TAKING_OFF, State.LANDING):
+        if self.state is State.LANDING:
             raise Refused(f"busy {self.state.value}", temporary=True)
         self.state = State.MOVING
         self.route, self.leg = [], -1
@@ -224,7 +224,7 @@ class SimVehicle:
                 raise Refused("a waypoint's hold time must not be negative")
         if self.state is State.LANDED:
             raise Refused("on the ground: take off first")
-        if self.state in (State.TAKING_OFF, State.LANDING):
+        if self.state is State.LANDING:
             raise Refused(f"busy {self.state.value}", temporary=True)
         self.state = State.TRAJECTORY
         self.route, self.leg = list(waypoints), 0
