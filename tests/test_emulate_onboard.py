@@ -181,3 +181,100 @@ def test_mission_upload_download_and_flight(gcs: tuple[Any, Any]) -> None:
     wait_for(conn, "EXTENDED_SYS_STATE", lambda e: e.landed_state == m.MAV_LANDED_STATE_ON_GROUND, timeout=60)
     back = wait_for(conn, "GLOBAL_POSITION_INT", lambda p: True, timeout=3)
     assert abs(back.lat / 1e7 - home_lat) < 2e-6 and abs(back.lon / 1e7 - home_lon) < 2e-6
+
+
+def test_mavproxy_connects_fetches_parameters_arms_and_takes_off(tmp_path: Path, start: Start) -> None:
+    """MAVProxy 1.8.75, unmodified, as a process driven through its command prompt."""
+    import shutil
+    import subprocess
+    import sys
+
+    exe = shutil.which("mavproxy.py", path=str(Path(sys.executable).parent))
+    if exe is None:
+        pytest.skip("MAVProxy is in the test extra")
+    port = free_port()
+    node = start("onboard", "emulate", "onboard", "--gcs", f"udpout:{LOCAL}:{port}", "--listen", f"udpin:{LOCAL}:0",
+                 "--no-entry-points", "--speed", "2")
+    node.wait_for("onboard 1:")
+    p = subprocess.Popen([exe, f"--master=udpin:{LOCAL}:{port}", "--source-system=255"], stdin=subprocess.PIPE,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=tmp_path)
+    assert p.stdin is not None
+    try:
+        for line, wait in (("", 6.0), ("arm throttle", 2.0), ("takeoff 5", 7.0), ("status GLOBAL_POSITION_INT", 1.0)):
+            time.sleep(wait if not line else 0)
+            if line:
+                p.stdin.write(line + "\n")
+                p.stdin.flush()
+                time.sleep(wait)
+        out = p.communicate(timeout=20)[0]  # closes its stdin: MAVProxy ends
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.communicate()
+    assert "Detected vehicle 1:1" in out and "GPS lock" in out
+    assert "Received 8 parameters" in out, out[-2000:]
+    assert "taking off" in node.stderr and "hovering" in node.stderr
+    import re
+
+    alt = [int(x) for x in re.findall(r"relative_alt : (\d+)", out)]
+    assert alt and alt[-1] > 4800, out[-2000:]
+    assert "fence breach" not in out
+
+
+def test_a_qgroundcontrol_like_connection_completes_within_5_s(tmp_path: Path, start: Start) -> None:
+    """QGroundControl cannot run here: this peer follows its connection sequence (after its
+    source: REQUEST_MESSAGE for AUTOPILOT_VERSION, then AVAILABLE_MODES and COMPONENT_METADATA,
+    the parameter list with its retries and per-index reads for gaps, then the mission, fence
+    and rally lists), each step only once the one before has finished, as QGC does."""
+    from pymavlink import mavutil
+
+    m = mavutil.mavlink
+    port = free_port()
+    conn = mavutil.mavlink_connection(f"udpin:{LOCAL}:{port}", source_system=255, source_component=190,
+                                      dialect="common")
+    node = start("onboard", "emulate", "onboard", "--gcs", f"udpout:{LOCAL}:{port}", "--listen", f"udpin:{LOCAL}:0",
+                 "--no-entry-points")
+    node.wait_for("onboard 1:")
+    assert conn.recv_match(type="HEARTBEAT", blocking=True, timeout=10) is not None
+    t0 = time.monotonic()
+
+    def request(msgid: int, want: str | None) -> int:
+        for _ in range(3):  # QGC: 3 tries, 3 s each
+            conn.mav.command_long_send(1, 1, m.MAV_CMD_REQUEST_MESSAGE, 0, msgid, 0, 0, 0, 0, 0, 0)
+            end = time.monotonic() + 3
+            result = None
+            while time.monotonic() < end:
+                r = conn.recv_match(type=["COMMAND_ACK"] + ([want] if want else []), blocking=True, timeout=0.2)
+                if r is None:
+                    continue
+                if r.get_type() == "COMMAND_ACK" and r.command == m.MAV_CMD_REQUEST_MESSAGE:
+                    result = r.result
+                    if result != m.MAV_RESULT_ACCEPTED or want is None:
+                        return int(result)
+                elif want and r.get_type() == want and result == m.MAV_RESULT_ACCEPTED:
+                    return int(result)
+        raise AssertionError(f"REQUEST_MESSAGE {msgid} unanswered")
+
+    assert request(m.MAVLINK_MSG_ID_AUTOPILOT_VERSION, "AUTOPILOT_VERSION") == m.MAV_RESULT_ACCEPTED
+    assert request(435, None) == m.MAV_RESULT_UNSUPPORTED  # AVAILABLE_MODES
+    assert request(397, None) == m.MAV_RESULT_UNSUPPORTED  # COMPONENT_METADATA
+    params: dict[int, str] = {}
+    count = None
+    for _ in range(4):
+        conn.mav.param_request_list_send(1, 1)
+        end = time.monotonic() + 5
+        while time.monotonic() < end and (count is None or len(params) < count):
+            p = conn.recv_match(type="PARAM_VALUE", blocking=True, timeout=0.2)
+            if p is not None:
+                count = p.param_count
+                params[p.param_index] = p.param_id
+        if count is not None and len(params) == count:
+            break
+    assert count is not None and len(params) == count
+    for mission_type in (m.MAV_MISSION_TYPE_MISSION, m.MAV_MISSION_TYPE_FENCE, m.MAV_MISSION_TYPE_RALLY):
+        conn.mav.mission_request_list_send(1, 1, mission_type)
+        c = conn.recv_match(type="MISSION_COUNT", blocking=True, timeout=2)
+        assert c is not None and c.mission_type == mission_type and c.count == 0
+        conn.mav.mission_ack_send(1, 1, m.MAV_MISSION_ACCEPTED, mission_type)
+    assert time.monotonic() - t0 < 5.0
+    conn.close()

@@ -50,6 +50,7 @@ PREARM = int(S.MAV_SYS_STATUS_PREARM_CHECK)
 def sys_status(s: Snapshot) -> ttapi.SysStatus:
     # the pre-arm check (MAVSDK's is_armable) passes while the battery allows arming
     health = SENSORS | (PREARM if s.battery_pct >= 10.0 and not s.state.airborne else 0)
+    health |= int(S.MAV_SYS_STATUS_GEOFENCE)  # no fence, so none breached (MAVProxy says so otherwise)
     return ttapi.SysStatus(onboard_control_sensors_present=SENSORS | PREARM,
                            onboard_control_sensors_enabled=SENSORS | PREARM,
                            onboard_control_sensors_health=health, load=150,
