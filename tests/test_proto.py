@@ -351,3 +351,23 @@ def test_full_disk_stops_cleanly_and_resumes(tmp_path: Path) -> None:
         assert state, "the partial state is kept for a resume"
     finally:
         subprocess.run(["umount", str(disk)], capture_output=True)
+
+
+def test_a_new_process_reusing_a_command_id_is_not_answered_with_the_old_ack(tmp_path: Path) -> None:
+    """Every process numbers its commands afresh: a second tablet process whose first command
+    has the id an earlier one used must have its command run, not get the earlier ack."""
+    from ttctl.proto.commands import Command, CommandClient, CommandServer
+
+    ran: list[int] = []
+    server = CommandServer(1, 240, action=lambda msg: ran.append(msg.action) or 0)
+    take_off, land = int(ttapi.TtAction.TT_ACTION_TAKE_OFF), int(ttapi.TtAction.TT_ACTION_LAND)
+    for action, clock in ((take_off, 1000.0), (land, 1060.0)):
+        client = CommandClient(*TABLET, first_id=1, clock=lambda c=clock: c)  # both start at id 1
+        cmd = client.submit(Command(ttapi.TtActionCommand(action=action), ONBOARD), 0.0)
+        (msg,) = client.control(0.0)
+        wire = ttapi.decode(ttapi.Encoder(*TABLET).encode(msg))
+        ack = server.on_command(wire)
+        assert ack is not None and ack.command_id == 1
+        assert server.on_command(wire) is ack  # the retry of that very command: the same ack, not run again
+        assert cmd.id == 1
+    assert ran == [take_off, land]

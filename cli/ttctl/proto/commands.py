@@ -5,12 +5,17 @@ bulk data), and waits for the TT_COMMAND_ACK with the same id. It repeats the co
 backoff; after the last try it gives up and calls on_failure. Every command ends: on_success or
 on_failure is called exactly once.
 
-The server executes a (peer, command id) once: a retry gets the recorded ack again without
-running the action twice.
+The server executes a (peer, command id, issue time) once: a retry (the same message again) gets
+the recorded ack without running the action twice, while a new command that happens to reuse an
+id (another process of the same peer, or one started again, numbers its commands afresh) has
+another issue time and runs. Clients start their ids at random and stamp each command with the
+wall-clock time it was issued (time_usec) when the caller did not.
 """
 
 from __future__ import annotations
 
+import random
+import time
 from collections import OrderedDict
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -57,16 +62,20 @@ class Command:
 
 
 class CommandClient:
-    def __init__(self, sysid: int, compid: int) -> None:
+    def __init__(self, sysid: int, compid: int, first_id: int | None = None,
+                 clock: Callable[[], float] = time.time) -> None:
         self.sysid = sysid
         self.compid = compid
         self.pending: dict[int, Command] = {}
-        self._next_id = 1
+        self._next_id = first_id if first_id is not None else random.randint(1, 65535)
+        self.clock = clock
 
     def submit(self, cmd: Command, now: float) -> Command:
         if cmd.msg.command_id == 0:
             cmd.msg.command_id = self._next_id
             self._next_id = self._next_id % 65535 + 1
+        if cmd.msg.time_usec == 0:
+            cmd.msg.time_usec = int(self.clock() * 1e6)
         if cmd.msg.command_id in self.pending:
             raise ValueError(f"command id {cmd.msg.command_id} is already pending")
         cmd.msg.target_system, cmd.msg.target_component = cmd.target
@@ -135,14 +144,14 @@ class CommandServer:
         self.compid = compid
         self.action = action or (lambda msg: int(TtResult.TT_RESULT_ACCEPTED))
         self.memory = memory
-        self.done: OrderedDict[tuple[int, int, int], ttapi.TtCommandAck] = OrderedDict()
+        self.done: OrderedDict[tuple[int, int, int, int], ttapi.TtCommandAck] = OrderedDict()
         self.executed = 0
         self.duplicates = 0
 
     def on_command(self, msg: ttapi.TtActionCommand) -> ttapi.TtCommandAck | None:
         if msg.target_system not in (self.sysid, 0) or msg.target_component not in (self.compid, 0):
             return None
-        key = (msg.get_srcSystem(), msg.get_srcComponent(), msg.command_id)
+        key = (msg.get_srcSystem(), msg.get_srcComponent(), msg.command_id, msg.time_usec)
         ack = self.done.get(key)
         if ack is not None:
             self.duplicates += 1

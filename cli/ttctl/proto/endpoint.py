@@ -102,12 +102,12 @@ class Endpoint:
         self.senders: dict[int, FileSender] = {}
         self.requests: dict[int, Request] = {}
         self._served: dict[tuple[int, int, int], _ServedRequest] = {}
-        self.commands = CommandClient(sysid, compid)
+        # transfer, request and first command ids are random (seeded in simulations): never reused by accident
+        self._rng = rng or random.SystemRandom()
+        self.commands = CommandClient(sysid, compid, first_id=self._rng.randint(1, 65535))
         self.server = CommandServer(sysid, compid, action) if accept_commands else None
         self.on_message = on_message
         self.on_event = on_event
-        # transfer and request ids are nonces: random, never reused by accident (seeded in simulations)
-        self._rng = rng or random.SystemRandom()
         self.now = 0.0
         self.ignored = 0
         self.peers: dict[tuple[int, int], float] = {}  # who we heard from, when
