@@ -59,7 +59,7 @@ def test_mavsdk_flies_the_emulated_vehicle(tmp_path: Path, start: Start) -> None
             pos = await tel.position()
             assert abs(pos.latitude_deg - home.latitude_deg) < 1e-6 and pos.relative_altitude_m < 0.1
             assert not await tel.armed() and not await tel.in_air()
-            assert await tel.flight_mode() == FlightMode.HOLD
+            assert await tel.flight_mode() == FlightMode.READY
             await _until(tel.health, lambda h: h.is_armable and h.is_global_position_ok, 10)
             with pytest.raises(ActionError, match="COMMAND_DENIED"):
                 await act.takeoff()  # not armed

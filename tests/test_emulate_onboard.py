@@ -78,7 +78,7 @@ def test_heartbeat_identity_and_rate(gcs: tuple[Any, Any]) -> None:
     assert hb.type == mavutil.mavlink.MAV_TYPE_QUADROTOR and hb.autopilot == mavutil.mavlink.MAV_AUTOPILOT_GENERIC
     assert hb.mavlink_version == 3 and hb.base_mode & mavutil.mavlink.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED
     assert not hb.base_mode & mavutil.mavlink.MAV_MODE_FLAG_SAFETY_ARMED
-    assert (hb.custom_mode >> 16) & 0xFF == 4 and (hb.custom_mode >> 24) & 0xFF == 3  # PX4 AUTO.LOITER: HOLD
+    assert (hb.custom_mode >> 16) & 0xFF == 4 and (hb.custom_mode >> 24) & 0xFF == 1  # PX4 AUTO.READY, on the ground
 
 
 def test_commands_are_answered_as_mavlink_defines(gcs: tuple[Any, Any]) -> None:

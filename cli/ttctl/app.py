@@ -413,6 +413,31 @@ def emulate_onboard_cmd(
                                                     telemetry_hz)))
 
 
+@emulate_app.command("tablet")
+def emulate_tablet_cmd(
+    to: Annotated[str, typer.Option("--to", help="The onboard end's DTT link: udpout:HOST:PORT (or tcp:, udpin:).")]
+    = "udpout:127.0.0.1:14560",
+    script: Annotated[Path | None, typer.Option("--script", help="Run these steps (a YAML list) instead of a prompt; "
+                                                                 "exit 0 only if every one succeeds.",
+                                                show_default=False)] = None,
+    json_out: JsonOpt = False,
+    folder: Annotated[Path | None, typer.Option("--dir", help="Where fetched files go.", show_default=False)] = None,
+    target_sysid: Annotated[int, typer.Option("--target-sysid", help="The vehicle's system id.")] = 1,
+    rate: RateOpt = None,
+    profile: ProfileOpt = None,
+    distance: DistanceOpt = 10.0,
+) -> None:
+    """The tablet's end: commands (take-off, land, hover, return, set-points, trajectories),
+    files both ways and the vehicle's state, from a prompt (history, completion) or a --script.
+
+    Example: ttctl emulate tablet --to udpout:127.0.0.1:14560 --script flight.yaml
+    """
+    from .commands.tablet import TabletOptions, emulate_tablet
+
+    raise typer.Exit(emulate_tablet(TabletOptions(to, script, json_out, folder, rate, profile, distance,
+                                                  target_sysid)))
+
+
 def main() -> None:
     """Console entry point: clean one-line errors instead of tracebacks."""
     try:  # typer >= 0.26 vendors click

@@ -14,6 +14,7 @@ from .model import (
     SENDERS,
     Dialect,
     Enum,
+    EnumEntry,
     Message,
     frame_length,
 )
@@ -45,8 +46,9 @@ def check_dialect(d: Dialect, rep: Reporter, opts: CheckOptions | None = None) -
     _duplicates(d, rep)
     _names(d, rep)
     own = {id(m) for m in d.root.messages}  # a set: a list test per message made validation quadratic
+    misfits: dict[tuple[str, str], list[EnumEntry]] = {}  # per (enum, field type): once, not once per field
     for m in d.messages:
-        _message(d, m, rep, opts, own=id(m) in own)
+        _message(d, m, rep, opts, own=id(m) in own, misfits=misfits)
     for e in d.enums:
         _enum(e, rep)
 
@@ -228,7 +230,8 @@ def _names(d: Dialect, rep: Reporter) -> None:
         stems[key] = df.path
 
 
-def _message(d: Dialect, m: Message, rep: Reporter, opts: CheckOptions, own: bool) -> None:
+def _message(d: Dialect, m: Message, rep: Reporter, opts: CheckOptions, own: bool,
+             misfits: dict[tuple[str, str], list[EnumEntry]]) -> None:
     if m.complete and m.payload_length > MAX_PAYLOAD:
         ext = sum(f.wire_length for f in m.extension_fields)
         detail = f" ({m.min_length} B base + {ext} B extensions)" if ext else ""
@@ -259,7 +262,9 @@ def _message(d: Dialect, m: Message, rep: Reporter, opts: CheckOptions, own: boo
                       f.name)
             continue
         lo, hi = INTEGER_RANGES[f.type]
-        bad = [x for x in e.entries if not lo <= x.value <= hi]
+        bad = misfits.get((e.name, f.type))
+        if bad is None:  # scanning the enum for every field that uses it was fields x entries
+            bad = misfits[(e.name, f.type)] = [x for x in e.entries if not lo <= x.value <= hi]
         if bad:
             shown = ", ".join(f"{x.name} = {x.value}" for x in bad[:3]) + (" ..." if len(bad) > 3 else "")
             if e.bitmask:

@@ -396,27 +396,95 @@ def _short_dir(d: str) -> str:
     return display_path(d) or "."
 
 
+class _AutoEntries:
+    """The auto-valued entries of a merged enum in merge order, in a tree of minimum values
+    over positions: finding the next one at or after a position whose value is at most some
+    bound costs O(log n), so merging many parts of one enum stays near linear."""
+
+    def __init__(self) -> None:
+        self.entries: list[EnumEntry] = []
+        self.size = 1
+        self.tree: list[float] = [float("inf")] * 2
+
+    def append(self, entry: EnumEntry) -> None:
+        if len(self.entries) == self.size:
+            self.size *= 2
+            self.tree = [float("inf")] * (2 * self.size)
+            for i, x in enumerate(self.entries):
+                self.tree[self.size + i] = x.value
+            for i in range(self.size - 1, 0, -1):
+                self.tree[i] = min(self.tree[2 * i], self.tree[2 * i + 1])
+        self.entries.append(entry)
+        self._set(len(self.entries) - 1, entry.value)
+
+    def _set(self, i: int, value: int) -> None:
+        i += self.size
+        self.tree[i] = value
+        i //= 2
+        while i:
+            self.tree[i] = min(self.tree[2 * i], self.tree[2 * i + 1])
+            i //= 2
+
+    def _first_at_most(self, start: int, bound: int) -> int | None:
+        """The first position >= start whose value is <= bound, or None."""
+        tree, size = self.tree, self.size
+
+        def down(node: int, lo: int, hi: int) -> int | None:
+            if hi <= start or tree[node] > bound:
+                return None
+            if node >= size:
+                return lo
+            mid = (lo + hi) // 2
+            found = down(2 * node, lo, mid)
+            return found if found is not None else down(2 * node + 1, mid, hi)
+
+        return down(1, 0, size)
+
+    def renumber(self, highest: int) -> int:
+        """mavgen's rule, in merge order: each auto-valued entry whose value is at most
+        `highest` becomes highest + 1, which is the new highest. Returns the last highest."""
+        i = self._first_at_most(0, highest)
+        while i is not None:
+            entry = self.entries[i]
+            entry.value = highest = highest + 1
+            self._set(i, entry.value)
+            i = self._first_at_most(i + 1, highest)
+        return highest
+
+
 def merge_enums(files: list[DialectFile], rep: Reporter) -> list[Enum]:
     """Merge same-named enums across files (first definition wins its header), adjusting
     auto-assigned values as mavgen does, then sort entries by value."""
     merged: dict[str, Enum] = {}
+    # per merged enum: its lowest value (a lower bound once entries are renumbered upwards,
+    # which only ever makes the overlap test below run a renumbering that changes nothing),
+    # its highest value, and its auto-valued entries
+    state: dict[str, tuple[int, int, _AutoEntries]] = {}
     for df in files:
         for e in df.enums:
             first = merged.get(e.name)
+            lo_new = min((x.value for x in e.entries), default=0)
+            hi_new = max((x.value for x in e.entries), default=0)
             if first is None:
                 m = merged[e.name] = Enum(e.name, e.loc, e.description, e.bitmask)
                 m.entries = list(e.entries)
                 m.deprecated, m.wip, m.parts = e.deprecated, e.wip, [e.loc]
+                autos = _AutoEntries()
+                for x in e.entries:
+                    if x.autovalue:
+                        autos.append(x)
+                state[e.name] = (lo_new, hi_new, autos)
                 continue
-            lo_new = min((x.value for x in e.entries), default=0)
-            hi_new = max((x.value for x in e.entries), default=0)
-            lo_old = min((x.value for x in first.entries), default=0)
-            hi_old = max((x.value for x in first.entries), default=0)
-            if lo_old <= hi_new and hi_old >= lo_new:
-                for entry in first.entries:
-                    if entry.value <= hi_new and entry.autovalue:
-                        entry.value = hi_new + 1
-                        hi_new = entry.value
+            lo_old, hi_old, autos = state[e.name]
+            if first.entries and lo_old <= hi_new and hi_old >= lo_new:
+                hi_new = autos.renumber(hi_new)
+            for x in e.entries:
+                if x.autovalue:
+                    autos.append(x)
+            if first.entries or e.entries:
+                lo_old = min(lo_old, lo_new) if first.entries else lo_new
+                hi_old = max(hi_old, hi_new) if first.entries else hi_new
+            state[e.name] = (lo_old, hi_old, autos)
             if e.bitmask != first.bitmask:
                 rep.warning(e.loc.at("bitmask"), "ENUM-MERGE",
                             f"enum {e.name} is {'a bitmask' if e.bitmask else 'not a bitmask'} here but "

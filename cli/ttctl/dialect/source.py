@@ -141,67 +141,119 @@ def _schema() -> etree.XMLSchema | None:
 _XSD_ATTR_RE = re.compile(r"^Element '([^']+)'(?:, attribute '([^']+)')?: (.*)$", re.S)
 
 
-SLICE = 500  # children of a section (or entries of an enum) per validation unit
+SLICE = 500  # element children per container in one validation unit
+
+# What a later slice of a container repeats from its start so that its slice is read in the same
+# context: the children before the first repeated one (description, wip, deprecated...), and
+# for a message its first field too (a message needs one before <extensions/>).
+_REPEATED = {"message": "field", "enum": "entry", "entry": "param"}
 
 
-def _units(root: Any) -> list[Any]:
-    """What to hand to the XSD validator: the document itself, or for a large one copies of it
-    holding a slice of its messages (or of an enum's entries) each. libxml2 names each error's
-    node by its position among its siblings, which costs as many steps as there are siblings
-    before it: 60,000 broken messages took minutes in one piece, a second in slices. Copies
-    keep their source lines."""
-    import copy
+def _units(root: Any) -> tuple[list[Any], dict[Any, Any]]:
+    """What to hand to the XSD validator: the document itself, or for a large one pieces of it
+    in which no element has more than about SLICE children. libxml2 names each error's node by
+    its position among its siblings, which costs as many steps as there are siblings before
+    it: 60,000 broken messages (or 200,000 broken fields of one message) took minutes in one
+    piece, a second in slices. Every element is in some piece; pieces keep source lines and
+    repeat what they need around a slice (an ancestor's leading children, an empty
+    <messages/>). Also returns, for each element copied without its children into several
+    pieces, the original element."""
+    marked = _big_containers(root)
+    if not marked:
+        return [root.getroottree()], {}
+    origin: dict[Any, Any] = {}
+    pieces = _pieces(root, marked, origin)
+    messages = next((c for c in root if c.tag == "messages"), None)
+    for piece in pieces:
+        if piece.find("messages") is None:  # required; an empty one is valid
+            piece.append(_shell(messages) if messages is not None else piece.makeelement("messages", {}))
+    return pieces, origin
 
+
+def _big_containers(root: Any) -> set[Any]:
+    """Elements with more than SLICE children, and their ancestors."""
+    marked: set[Any] = set()
+    for el in root.iter():
+        if len(el) > SLICE:
+            while el is not None and el not in marked:
+                marked.add(el)
+                el = el.getparent()
+    return marked
+
+
+def _shell(el: Any) -> Any:
+    """A copy of `el` without its children, on its source line, in a document of its own."""
     from lxml import etree
 
-    sections = {c.tag: c for c in root if isinstance(c.tag, str)}
-    msgs = sections.get("messages")
-    enums = sections.get("enums")
-    big_enums = [e for e in (enums if enums is not None else []) if len(e) > SLICE]
-    if (msgs is None or len(msgs) <= SLICE) and (enums is None or len(enums) <= SLICE) and not big_enums:
-        return [root.getroottree()]
-
-    def skeleton(keep: str | None) -> Any:
-        r = etree.Element(root.tag, dict(root.attrib))
-        for c in root:
-            if not isinstance(c.tag, str):
-                continue
-            if c.tag not in ("messages", "enums"):
-                r.append(copy.deepcopy(c))
-            elif c.tag != keep:
-                r.append(etree.Element(c.tag, dict(c.attrib)))  # the other section, empty
-        return r
-
-    units = []
-    for tag in ("enums", "messages"):
-        section = sections.get(tag)
-        if section is None:
-            continue
-        kids = [k for k in section if not (tag == "enums" and k in big_enums)]
-        for i in range(0, max(1, len(kids)), SLICE):
-            r = skeleton(tag)
-            part = etree.SubElement(r, tag, dict(section.attrib))
-            part.extend(copy.deepcopy(k) for k in kids[i:i + SLICE])
-            _reorder(r)
-            units.append(r)
-    for e in big_enums:
-        entries = list(e)
-        for i in range(0, len(entries), SLICE):
-            r = skeleton("enums")
-            part = etree.SubElement(r, "enums")
-            shell = etree.SubElement(part, e.tag, dict(e.attrib))
-            shell.extend(copy.deepcopy(k) for k in entries[i:i + SLICE] if i == 0 or k.tag == "entry")
-            _reorder(r)
-            units.append(r)
-    return units
+    c = etree.Element(el.tag, dict(el.attrib))
+    c.text = el.text
+    c.sourceline = el.sourceline
+    return c
 
 
-def _reorder(r: Any) -> None:
-    """Sections back in the order the schema wants (enums before messages)."""
-    msgs = r.find("messages")
-    if msgs is not None:
-        r.remove(msgs)
-        r.append(msgs)
+def _pieces(el: Any, marked: set[Any], origin: dict[Any, Any]) -> list[Any]:
+    import copy
+
+    if el not in marked:
+        return [copy.deepcopy(el)]
+    kids = [k for k in el if isinstance(k.tag, str)]  # comments and PIs do not matter to the XSD
+    context: list[Any] = []
+    repeated = _REPEATED.get(el.tag)
+    if repeated is not None:
+        for k in kids:
+            if k.tag == repeated:
+                if el.tag == "message":
+                    context.append(k)
+                break
+            context.append(k)
+
+    def piece(lead: list[Any]) -> Any:
+        p = _shell(el)
+        origin[p] = el
+        p.extend(copy.deepcopy(k) for k in lead)
+        return p
+
+    pieces = []
+    i = 0
+    while i < len(kids):
+        end = i + SLICE
+        while end < len(kids) and kids[end - 1].tag == "extensions":
+            end += 1  # <extensions/> needs the field after it in the same piece
+        group = kids[i:end]
+        i = end
+        main = piece([k for k in context if k not in group])
+        extra = []
+        for k in group:
+            sub = _pieces(k, marked, origin)
+            main.append(sub[0])
+            for s in sub[1:]:
+                p = piece([c for c in context if c is not k])
+                p.append(s)
+                extra.append(p)
+        pieces.append(main)
+        pieces.extend(extra)
+    return pieces
+
+
+_CONTENT_ERRORS = ("This element is not expected", "Missing child element")
+
+
+def _sliced_parent(unit: Any, err: Any, origin: dict[Any, Any]) -> Any:
+    """For an error about an element's content (reported once per element) in a piece, the
+    original element whose content it is, if that element was split across pieces."""
+    if not any(t in err.message for t in _CONTENT_ERRORS) or not err.path:
+        return None
+    from lxml import etree
+
+    steps = err.path.split("/", 2)  # "/mavlink/messages/message[3]": from the piece's root
+    try:
+        nodes = unit.xpath(steps[2]) if len(steps) > 2 else [unit]
+    except etree.XPathError:
+        return None
+    if not nodes or not isinstance(nodes[0], etree._Element):
+        return None
+    node = nodes[0] if "Missing child element" in err.message else nodes[0].getparent()
+    return origin.get(node)
 
 
 def schema_check(pf: ParsedFile, rep: Reporter, covered: set[tuple[int, str | None]]) -> None:
@@ -210,16 +262,25 @@ def schema_check(pf: ParsedFile, rep: Reporter, covered: set[tuple[int, str | No
     if schema is None:
         rep.raw(pf.path, 1, 1, "warning", "XSD", "pymavlink's mavschema.xsd not found; schema check skipped")
         return
-    errors = []
+    units, origin = _units(pf.root)
+    found = []
     seen: set[tuple[int, str]] = set()
-    for unit in _units(pf.root):
+    for unit in units:
         if schema.validate(unit):
             continue
         for err in schema.error_log:
-            if (err.line, err.message) not in seen:  # what every slice repeats (the header) once
+            if (err.line, err.message) not in seen:  # what several pieces repeat, once
                 seen.add((err.line, err.message))
-                errors.append(err)
-    errors.sort(key=lambda e: e.line)
+                found.append((err, _sliced_parent(unit, err, origin) if origin else None))
+    found.sort(key=lambda e: e[0].line)
+    errors = []
+    parents: set[Any] = set()
+    for err, parent in found:
+        if parent is not None:  # libxml2 reports one content error per element: so do the pieces
+            if parent in parents:
+                continue
+            parents.add(parent)
+        errors.append(err)
     for err in errors:
         m = _XSD_ATTR_RE.match(err.message)
         tag, attr, text = (m.group(1), m.group(2), m.group(3)) if m else (None, None, err.message)

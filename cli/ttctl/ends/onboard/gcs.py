@@ -73,7 +73,7 @@ class GroundStations:
         self.out.append((msg, self._peer_links.get(peer)))
 
     def say(self, severity: int, text: str) -> None:
-        self.out.append((ttapi.Statustext(severity=severity, text=text[:50]), None))
+        self.out.append((ttapi.Statustext(severity=severity, text=text.encode()[:50].decode("utf-8", "ignore")), None))
 
     # -- in ---------------------------------------------------------------------------------------
     def _for_us(self, msg: Any) -> bool:

@@ -19,7 +19,7 @@ from typing import Any
 import ttapi
 
 from ...link.transport import Spec, Transport, UdpTransport, make_transport
-from ...proto.endpoint import TELEMETRY, Endpoint
+from ...proto.endpoint import CONTROL, TELEMETRY, Endpoint
 from ...proto.storage import ReceiveDir
 from ..plugins import Context, Dispatcher, Plugin
 from ..runtime import Runner
@@ -71,17 +71,24 @@ class OnboardNode:
         self._tele_due = 0.0
         self._hb_due = 0.0
         self._closed = False
+        self._log_id = 0
 
     # -- wiring ---------------------------------------------------------------------------------
     def _unix(self, now: float) -> float:
         return time.time()
 
-    def _say(self, severity: int, text: str) -> None:
+    def _say(self, severity: int, text: str, urgent: bool = False) -> None:
+        """Tell ground stations (STATUSTEXT) and the tablet (TT_LOG; `urgent`: ahead of telemetry,
+        so that a refusal's words leave before the refusing ack)."""
         self.log(text)
         self.gcs.say(severity, text)
         if self.endpoint is not None:
-            self.endpoint.send_message(ttapi.TtLog(time_boot_ms=int(self.vehicle_time * 1000) & 0xFFFFFFFF,
-                                                   severity=severity, text=text[:80]))
+            for msg in log_chunks(text, severity, int(self.vehicle_time * 1000), self._next_log_id()):
+                self.endpoint.send_message(msg, CONTROL if urgent else TELEMETRY)
+
+    def _next_log_id(self) -> int:
+        self._log_id = self._log_id % 65535 + 1
+        return self._log_id
 
     def _plugin_error(self, msg: Any, e: BaseException) -> None:
         self.log(f"plugin error on {msg.NAME}: {type(e).__name__}: {e}")
@@ -116,10 +123,10 @@ class OnboardNode:
             else:
                 return int(RES.TT_RESULT_UNSUPPORTED)
         except Refused as e:
-            self._say(4, f"refused: {e}")
+            self._say(4, f"refused: {e}", urgent=True)
             return int(RES.TT_RESULT_BUSY if e.temporary else RES.TT_RESULT_DENIED)
         except TrajectoryError as e:
-            self._say(4, f"trajectory refused: {e}")
+            self._say(4, f"trajectory refused: {e}", urgent=True)
             return int(RES.TT_RESULT_FAILED)
         return int(RES.TT_RESULT_ACCEPTED)
 
@@ -273,6 +280,20 @@ class OnboardNode:
             await self.runner.close()
         for t in self.gcs_links:
             t.close()
+
+
+def log_chunks(text: str, severity: int, boot_ms: int, line_id: int) -> list[ttapi.TtLog]:
+    """A TT_LOG line: one message (id 0) if it fits 80 bytes with room for its NUL, else chunks of
+    80 bytes with one id and rising chunk_seq, the last one NUL-terminated (an empty one if the
+    text divides evenly)."""
+    raw = text.encode("utf-8")
+    if len(raw) < 80:
+        return [ttapi.TtLog(time_boot_ms=boot_ms & 0xFFFFFFFF, id=0, severity=severity, chunk_seq=0, text=text)]
+    pieces = [raw[i:i + 80] for i in range(0, len(raw), 80)]
+    if len(pieces[-1]) == 80:
+        pieces.append(b"")
+    return [ttapi.TtLog(time_boot_ms=boot_ms & 0xFFFFFFFF, id=line_id, severity=severity, chunk_seq=k,
+                        text=piece.decode("utf-8", "surrogateescape")) for k, piece in enumerate(pieces[:256])]
 
 
 def telemetry_heartbeat(s: Any) -> ttapi.Heartbeat:

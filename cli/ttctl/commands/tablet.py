@@ -1,0 +1,166 @@
+"""`ttctl emulate tablet`: the Android app's role, from a prompt or a script."""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from ..errors import Fail
+from .common import ONBOARD, Signals, err, link_choice, parse_endpoint
+
+HELP = ("takeoff [ALT] | land | hover | return | goto N E ALT | move DN DE DALT | fly FILE | send FILE | "
+        "fetch NAME | wait SECONDS | wait until FIELD OP VALUE [timeout S] | status | quit")
+
+
+@dataclass
+class TabletOptions:
+    to: str = "udpout:127.0.0.1:14560"
+    script: Path | None = None
+    as_json: bool = False
+    dir: Path | None = None
+    rate: float | None = None
+    profile: str | None = None
+    distance: float = 10.0
+    target_sysid: int = ONBOARD[0]
+    connect_timeout: float = 15.0
+
+
+def _prompt_step(line: str) -> Any:
+    """A prompt line as a step (StepError if it is not one)."""
+    from ..ends.tablet.steps import StepError, check_step
+
+    words = line.split()
+    name, rest = words[0].lower(), words[1:]
+    try:
+        if name in ("goto", "move"):
+            arg: Any = [float(x) for x in rest]
+        elif name == "takeoff":
+            arg = float(rest[0]) if rest else None
+        elif name == "wait" and rest and rest[0] == "until":
+            text = " ".join(rest[1:])
+            timeout = None
+            if " timeout " in f" {text} ":
+                text, _, t = text.rpartition(" timeout ")
+                timeout = float(t)
+            arg = {"until": text} | ({"timeout": timeout} if timeout is not None else {})
+        elif name == "wait":
+            arg = float(rest[0]) if rest else 1.0
+        elif name in ("fly", "send", "fetch"):
+            arg = " ".join(rest) or None
+        else:
+            arg = None if not rest else " ".join(rest)
+    except (ValueError, IndexError):
+        raise StepError(f"cannot read {line!r}: {HELP}") from None
+    return check_step(name, arg, "prompt")
+
+
+def emulate_tablet(o: TabletOptions) -> int:
+    from ..ends.tablet.steps import StepError, parse_script
+
+    spec = parse_endpoint(o.to, "udpout")
+    link = link_choice(o.rate, o.profile, o.distance, 255)
+    steps = None
+    if o.script is not None:
+        try:
+            text = o.script.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as e:
+            raise Fail(f"--script {o.script}: {getattr(e, 'strerror', None) or e}") from None
+        try:
+            steps = parse_script(text)
+        except StepError as e:
+            raise Fail(f"--script {o.script}: {e}") from None
+    try:
+        return asyncio.run(_run(o, spec, link, steps))
+    except KeyboardInterrupt:
+        return 130
+
+
+async def _run(o: TabletOptions, spec: Any, link: Any, steps: Any) -> int:
+    from ..ends.tablet.session import TabletSession
+    from ..ends.tablet.steps import StepError, run_step
+    from ..link.transport import TransportError
+    from ..proto.storage import StorageError
+
+    def event(what: str, fields: dict[str, Any]) -> None:
+        if o.as_json:
+            print(json.dumps({"event": what, **fields}), flush=True)
+        elif what == "log":
+            print(f"vehicle: {fields['text']}", flush=True)
+
+    loop = asyncio.get_running_loop()
+    wake = asyncio.Event()
+    sigs = Signals(loop, wake)
+    s = TabletSession(spec, (o.target_sysid, ONBOARD[1]), rate_Bps=link.pace_Bps, inbox=o.dir, on_event=event,
+                      log=err)
+    try:
+        try:
+            await s.start()
+        except (TransportError, StorageError) as e:
+            raise Fail(str(e)) from None
+        end = loop.time() + o.connect_timeout
+        while s.vehicle.state == "unknown":  # connected once a HEARTBEAT said what the vehicle is doing
+            if loop.time() >= end:
+                raise Fail(f"no vehicle answered at {spec} within {o.connect_timeout:g} s", 1)
+            if sigs.stop.is_set():
+                return 130
+            await s.changed(0.2)
+        err(f"tablet: connected to {o.target_sysid}/{ONBOARD[1]} at {spec}")
+        base = o.script.parent if o.script is not None else Path(".")
+        if steps is not None:
+            for i, step in enumerate(steps, 1):
+                if sigs.stop.is_set():
+                    return 130
+                try:
+                    words = await run_step(s, step, base)
+                except StepError as e:
+                    if o.as_json:
+                        print(json.dumps({"event": "step", "step": i, "what": step.describe(), "ok": False,
+                                          "reason": str(e)}), flush=True)
+                    raise Fail(f"step {i} ({step.where}: {step.describe()}) failed: {e}", 1) from None
+                if o.as_json:
+                    print(json.dumps({"event": "step", "step": i, "what": step.describe(), "ok": True,
+                                      "result": words}), flush=True)
+                else:
+                    print(f"step {i} {step.describe()}: {words}", flush=True)
+            return 0
+        return await _prompt(s, sigs, base)
+    finally:
+        sigs.remove()
+        await s.close()
+
+
+async def _prompt(s: Any, sigs: Signals, base: Path) -> int:
+    """Commands from the terminal (history and completion with readline) or from piped lines."""
+    from ..ends.tablet.steps import NAMES, StepError, run_step
+
+    interactive = sys.stdin.isatty()
+    if interactive:
+        try:
+            import readline
+
+            readline.parse_and_bind("tab: complete")
+            readline.set_completer(lambda text, i: ([n for n in (*NAMES, "quit") if n.startswith(text)] + [None])[i])
+        except ImportError:
+            pass
+        print(f"commands: {HELP}", file=sys.stderr)
+    loop = asyncio.get_running_loop()
+    while not sigs.stop.is_set():
+        try:
+            line = await loop.run_in_executor(None, lambda: input("tablet> " if interactive else ""))
+        except EOFError:
+            return 0
+        line = line.strip()
+        if not line or line.startswith("#"):
+            continue
+        if line in ("quit", "exit"):
+            return 0
+        try:
+            step = _prompt_step(line)
+            print(await run_step(s, step, base), flush=True)
+        except StepError as e:
+            print(f"ttctl: {e}", file=sys.stderr, flush=True)
+    return 130

@@ -1,0 +1,1 @@
+"""The tablet's end: what the Android app does with the link, scriptable."""

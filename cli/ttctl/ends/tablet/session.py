@@ -1,0 +1,226 @@
+"""The tablet's end of the link, scriptable: what the Android app does, as an asyncio session over
+the shared Runner and a proto Endpoint (255/190): commands with acks, setpoints, files both ways,
+and the vehicle's state as its telemetry tells it.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import ttapi
+
+from ...link.transport import Spec, make_transport
+from ...proto.endpoint import CONTROL, Endpoint
+from ...proto.storage import ReceiveDir
+from ...proto.transfer import TransferConfig
+from ..runtime import Runner
+
+TABLET = (255, 190)
+STATES = {  # PX4 (main, sub) modes the onboard end reports, as the vehicle's states
+    (4, 1): "landed", (4, 3): "hovering", (4, 2): "taking off", (4, 4): "flying trajectory", (4, 6): "landing",
+    (4, 5): "returning", (6, 0): "moving",
+}
+
+
+@dataclass
+class VehicleView:
+    """What the tablet knows of the vehicle, from its telemetry."""
+
+    heard: float | None = None  # when anything last came from the vehicle (loop time)
+    state: str = "unknown"
+    armed: bool = False
+    n: float = 0.0
+    e: float = 0.0
+    altitude: float = 0.0  # above home, m
+    speed: float = 0.0  # horizontal, m/s
+    lat: float = 0.0
+    lon: float = 0.0
+    battery: float = 100.0
+    log: list[str] = field(default_factory=list)
+
+    def fields(self) -> dict[str, Any]:
+        return {"state": self.state, "armed": self.armed, "n": self.n, "e": self.e, "altitude": self.altitude,
+                "speed": self.speed, "lat": self.lat, "lon": self.lon}
+
+
+@dataclass
+class LinkView:
+    frames: int = 0
+    rtt_ms: float | None = None  # of the last command
+    started: float = 0.0
+
+
+class TabletSession:
+    def __init__(self, spec: Spec, target: tuple[int, int] = (1, 240), rate_Bps: float | None = None,
+                 inbox: Path | None = None, timeout: float = 60.0,
+                 on_event: Callable[[str, dict[str, Any]], None] | None = None,
+                 log: Callable[[str], None] | None = None) -> None:
+        self.spec = spec
+        self.target = target
+        self.vehicle = VehicleView()
+        self.link = LinkView()
+        self.on_event = on_event or (lambda what, fields: None)
+        self.log = log or (lambda text: None)
+        self.store = ReceiveDir(inbox) if inbox is not None else None
+        self.transport = make_transport(spec, log=lambda text: self.log(f"{spec.kind}: {text}"))
+        self.ep = Endpoint(*TABLET, mtu=self.transport.mtu, rate_Bps=rate_Bps, receive_dir=self.store,
+                           config=TransferConfig(give_up_after=timeout), on_message=self._on_message,
+                           on_event=self._on_file_event, accept_commands=False, unsolicited=False)
+        self.runner = Runner(self.ep, self.transport)  # its own heartbeats make it known (udpout)
+        self._changed = asyncio.Event()
+        self._file_events: dict[Any, str] = {}
+        self._log_parts: dict[int, dict[int, bytes]] = {}
+        self._hb_task: asyncio.Task[None] | None = None
+
+    # -- life --------------------------------------------------------------------------------------
+    async def start(self) -> None:
+        await self.runner.start()
+        if self.store is not None:
+            self.store.prepare()
+        self.link.started = asyncio.get_running_loop().time()
+        self._hb_task = asyncio.get_running_loop().create_task(self._heartbeats())
+
+    async def _heartbeats(self) -> None:
+        """A HEARTBEAT a second: the vehicle's link-loss watch hears the tablet by it."""
+        while True:
+            self.runner.sync()
+            self.ep.send_message(ttapi.Heartbeat(type=int(ttapi.MavType.MAV_TYPE_GCS),
+                                                 autopilot=int(ttapi.MavAutopilot.MAV_AUTOPILOT_INVALID)), CONTROL)
+            self.runner.kick()
+            await asyncio.sleep(1.0)
+
+    async def close(self) -> None:
+        if self._hb_task is not None:
+            self._hb_task.cancel()
+        self.ep.close()
+        await self.runner.close()
+        if self.store is not None:
+            self.store.release(failed=False)
+
+    # -- what the vehicle says ------------------------------------------------------------------
+    def _on_message(self, now: float, msg: Any) -> None:
+        v = self.vehicle
+        if (msg.get_srcSystem(), msg.get_srcComponent()) != self.target:
+            return
+        v.heard = now
+        self.link.frames += 1
+        if isinstance(msg, ttapi.Heartbeat):
+            main, sub = (msg.custom_mode >> 16) & 0xFF, (msg.custom_mode >> 24) & 0xFF
+            armed = bool(msg.base_mode & ttapi.MavModeFlag.MAV_MODE_FLAG_SAFETY_ARMED)
+            state = STATES.get((main, sub), f"mode {main}/{sub}")
+            if (state, armed) != (v.state, v.armed):
+                v.state, v.armed = state, armed
+                self.on_event("state", {"state": state, "armed": armed})
+        elif isinstance(msg, ttapi.TtOdometry):
+            v.n, v.e, v.altitude = float(msg.position[0]), float(msg.position[1]), -float(msg.position[2])
+            v.speed = math.hypot(float(msg.linear[0]), float(msg.linear[1]))
+        elif isinstance(msg, ttapi.TtNavSatFix):
+            v.lat, v.lon = msg.latitude / 1e7, msg.longitude / 1e7
+        elif isinstance(msg, ttapi.TtLog):
+            text = self._log_line(msg)
+            if text is not None:
+                v.log.append(text)
+                self.on_event("log", {"text": text, "severity": msg.severity})
+        self._changed.set()
+
+    def _log_line(self, msg: ttapi.TtLog) -> str | None:
+        """A whole TT_LOG line, once its last chunk is in (chunks of one id, by chunk_seq)."""
+        raw = msg.text.encode("utf-8", "surrogateescape")
+        if msg.id == 0:
+            return raw.decode("utf-8", "replace")
+        parts = self._log_parts.setdefault(msg.id, {})
+        parts[msg.chunk_seq] = raw
+        last = max(parts)
+        if len(parts[last]) == 80 or sorted(parts) != list(range(last + 1)):
+            if len(self._log_parts) > 16:  # lines whose chunks were lost
+                self._log_parts.pop(next(iter(self._log_parts)))
+            return None
+        del self._log_parts[msg.id]
+        return b"".join(parts[k] for k in range(last + 1)).decode("utf-8", "replace")
+
+    def _on_file_event(self, what: str, obj: Any) -> None:
+        self._file_events[obj] = what
+        self._changed.set()
+
+    async def changed(self, timeout: float) -> None:
+        self._changed.clear()
+        with contextlib.suppress(TimeoutError):
+            await asyncio.wait_for(self._changed.wait(), timeout)
+
+    # -- what the tablet asks ----------------------------------------------------------------------
+    async def command(self, action: int, params: list[float] | None = None, argument: str = "",
+                      retries: int = 4, timeout: float = 1.5) -> tuple[bool, str]:
+        """Send a TT_ACTION_COMMAND and wait for its ack: (ok, words)."""
+        p = (list(params or []) + [0.0] * 4)[:4]
+        msg = ttapi.TtActionCommand(action=action, param=p, argument=argument.encode("utf-8")[:48].decode(
+            "utf-8", "ignore"))
+        done = asyncio.get_running_loop().create_future()
+
+        def finish(c: Any) -> None:
+            if not done.done():
+                done.set_result(c)
+
+        t0 = time.monotonic()
+        self.runner.sync()
+        cmd = self.ep.command(msg, self.target, retries=retries, timeout=timeout, on_success=finish,
+                              on_failure=finish)
+        self.runner.kick()
+        await done
+        self.link.rtt_ms = (time.monotonic() - t0) * 1000 if cmd.ok else self.link.rtt_ms
+        name = ttapi.TtAction(action).name.removeprefix("TT_ACTION_").lower()
+        if cmd.ok:
+            return True, f"{name}: accepted"
+        return False, f"{name}: {cmd.error}"
+
+    async def setpoint(self, n: float, e: float, alt: float) -> None:
+        """A DJI_POSE_STAMPED set-point (position north, east, altitude above home)."""
+        now = time.time()
+        self.runner.sync()
+        self.ep.send_message(ttapi.DjiPoseStamped(target_system=self.target[0], sec=int(now),
+                                                  nsec=int((now % 1) * 1e9),
+                                                  topic_name=int(ttapi.DjiTopicName.DJI_TOPIC_NAME_SETPOINT),
+                                                  position=[n, e, alt], orientation=[0.0, 0.0, 0.0, 1.0]), CONTROL)
+        self.runner.kick()
+
+    async def send_file(self, path: Path, name: str | None = None, overwrite: bool = True) -> tuple[bool, str]:
+        from ...proto.storage import FileSource, StorageError
+
+        try:
+            src = FileSource(path)
+        except StorageError as e:
+            return False, str(e)
+        try:
+            self.runner.sync()
+            s = self.ep.send_file(path, self.target, name=name or path.name, overwrite=overwrite, source=src)
+            self.runner.kick()
+            while not s.done:
+                await self.changed(0.25)
+            r = s.result
+            assert r is not None
+            return r.ok, r.message
+        finally:
+            src.close()
+
+    async def fetch_file(self, name: str) -> tuple[bool, str]:
+        if self.store is None:
+            return False, "this tablet has no --dir for fetched files"
+        self.runner.sync()
+        req = self.ep.request_file(name, self.target)
+        self.runner.kick()
+        while True:
+            if req.error is not None:
+                return False, req.error
+            for obj, what in list(self._file_events.items()):
+                if getattr(obj, "request_id", None) == req.id:
+                    if what == "file-complete":
+                        return True, f"{name}: {obj.size} bytes received -> {obj.final_path}"
+                    if what in ("file-refused", "file-failed"):
+                        return False, obj.reason
+            await self.changed(0.25)

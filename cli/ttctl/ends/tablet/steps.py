@@ -1,0 +1,224 @@
+"""The tablet's steps, the same for a `--script` file and the interactive prompt.
+
+A script is a YAML list; each item is one step, a name with its argument:
+
+    - takeoff: 5                    # metres above home (0 or none: the vehicle's default)
+    - wait: {until: altitude >= 4.5, timeout: 30}
+    - send: mission.yaml            # a file next to the script, by the file transfer
+    - fly: mission.yaml             # TT_ACTION_FLY_TRAJECTORY with that file
+    - wait: {until: state == hovering, timeout: 120}
+    - goto: [10, 0, 5]              # a set-point: north, east, altitude above home
+    - move: [0, 5, 0]               # relative to where the vehicle is
+    - hover
+    - return
+    - land
+    - fetch: results.csv            # from the vehicle's served folder
+    - wait: 2                       # seconds
+    - status
+
+`until` is one or more `FIELD OP VALUE` joined by `and`; fields: state, armed, altitude, n, e,
+speed; operators >=, <=, >, <, ==, !=. A step fails with a reason; the script stops at the first
+failure.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import math
+import re
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import ttapi
+
+from .session import TabletSession
+
+A = ttapi.TtAction
+NAMES = ("takeoff", "land", "hover", "return", "goto", "move", "fly", "send", "fetch", "wait", "status")
+FIELDS = ("state", "armed", "altitude", "n", "e", "speed")
+_COND = re.compile(r"^\s*(\w+)\s*(>=|<=|==|!=|>|<)\s*(.+?)\s*$")
+
+
+class StepError(Exception):
+    pass
+
+
+@dataclass
+class Step:
+    name: str
+    arg: Any
+    where: str  # "step 3" or "line 12"
+
+    def describe(self) -> str:
+        if self.arg is None:
+            return self.name
+        if isinstance(self.arg, dict):
+            timeout = f" (timeout {self.arg['timeout']:g} s)" if "timeout" in self.arg else ""
+            return f"{self.name} until {self.arg['until']}{timeout}"
+        if isinstance(self.arg, list):
+            return f"{self.name} {' '.join(f'{x:g}' for x in self.arg)}"
+        return f"{self.name} {self.arg}"
+
+
+def _numbers(arg: Any, n: int, what: str) -> list[float]:
+    if not isinstance(arg, (list, tuple)) or len(arg) != n:
+        raise StepError(f"{what} wants {n} numbers")
+    try:
+        out = [float(x) for x in arg]
+    except (TypeError, ValueError):
+        raise StepError(f"{what} wants {n} numbers") from None
+    if not all(math.isfinite(x) for x in out):
+        raise StepError(f"{what}: numbers must be finite")
+    return out
+
+
+def check_condition(text: str) -> list[tuple[str, str, str]]:
+    parts = []
+    for clause in re.split(r"\s+and\s+", str(text).strip()):
+        m = _COND.match(clause)
+        if m is None or m.group(1) not in FIELDS:
+            raise StepError(f"cannot read condition {clause!r}: FIELD OP VALUE, FIELD one of {', '.join(FIELDS)}")
+        name, op, raw = m.group(1), m.group(2), m.group(3)
+        if name in ("state", "armed") and op not in ("==", "!="):
+            raise StepError(f"cannot read condition {clause!r}: {name} can only be compared with == or !=")
+        if name not in ("state", "armed"):
+            try:
+                float(raw)
+            except ValueError:
+                raise StepError(f"cannot read condition {clause!r}: {name} is a number, not {raw!r}") from None
+        parts.append((name, op, raw))
+    return parts
+
+
+def holds(parts: list[tuple[str, str, str]], fields: dict[str, Any]) -> bool:
+    for name, op, raw in parts:
+        have = fields[name]
+        if isinstance(have, (bool, str)):
+            want: Any = raw.lower() in ("true", "yes", "1") if isinstance(have, bool) else raw.replace("_", " ")
+            ok = {"==": have == want, "!=": have != want}.get(op)
+            if ok is None:
+                raise StepError(f"{name} can only be compared with == or !=")
+        else:
+            try:
+                want = float(raw)
+            except ValueError:
+                raise StepError(f"{name} is a number, not {raw!r}") from None
+            ok = {">=": have >= want, "<=": have <= want, ">": have > want, "<": have < want,
+                  "==": abs(have - want) < 1e-9, "!=": abs(have - want) >= 1e-9}[op]
+        if not ok:
+            return False
+    return True
+
+
+def parse_script(text: str) -> list[Step]:
+    """The steps of a script, every one checked before any runs (StepError names the line)."""
+    import yaml
+
+    try:
+        root = yaml.compose(text, Loader=yaml.SafeLoader)
+    except yaml.YAMLError as e:
+        mark = getattr(e, "problem_mark", None)
+        where = f"line {mark.line + 1}: " if mark is not None else ""
+        raise StepError(f"{where}not valid YAML ({getattr(e, 'problem', None) or e})") from None
+    if not isinstance(root, yaml.SequenceNode) or not root.value:
+        raise StepError("a script is a non-empty YAML list of steps")
+    steps = []
+    for node in root.value:
+        where = f"line {node.start_mark.line + 1}"
+        value = yaml.safe_load(yaml.serialize(node))
+        if isinstance(value, str):
+            name, arg = value, None
+        elif isinstance(value, dict) and len(value) == 1:
+            ((name, arg),) = value.items()
+        else:
+            raise StepError(f"{where}: a step is one name, or one name: argument")
+        try:
+            steps.append(check_step(str(name), arg, where))
+        except StepError as e:
+            raise StepError(f"{where}: {e}") from None
+    return steps
+
+
+def check_step(name: str, arg: Any, where: str = "") -> Step:
+    if name not in NAMES:
+        raise StepError(f"unknown step {name!r} (one of {', '.join(NAMES)})")
+    if name == "takeoff" and arg is not None:
+        _numbers([arg], 1, "takeoff")
+    elif name in ("goto", "move"):
+        _numbers(arg, 3, name)
+    elif name in ("fly", "send", "fetch") and (not isinstance(arg, str) or not arg):
+        raise StepError(f"{name} wants a file name")
+    elif name == "wait":
+        if isinstance(arg, (int, float)) and not isinstance(arg, bool):
+            if not 0 <= float(arg) <= 86400:
+                raise StepError("wait wants 0..86400 seconds")
+        elif isinstance(arg, dict) and "until" in arg and set(arg) <= {"until", "timeout"}:
+            check_condition(arg["until"])
+            if "timeout" in arg:
+                _numbers([arg["timeout"]], 1, "timeout")
+        else:
+            raise StepError("wait wants seconds, or {until: CONDITION, timeout: SECONDS}")
+    elif name in ("land", "hover", "return", "status") and arg not in (None, {}):
+        raise StepError(f"{name} takes no argument")
+    return Step(name, arg, where)
+
+
+async def run_step(s: TabletSession, step: Step, base: Path) -> str:
+    """Carry out one step; its result in words, or StepError."""
+    name, arg = step.name, step.arg
+    if name in ("takeoff", "land", "hover", "return", "fly"):
+        action = {"takeoff": A.TT_ACTION_TAKE_OFF, "land": A.TT_ACTION_LAND, "hover": A.TT_ACTION_HOVER,
+                  "return": A.TT_ACTION_RETURN_HOME, "fly": A.TT_ACTION_FLY_TRAJECTORY}[name]
+        params = [float(arg)] if name == "takeoff" and arg is not None else []
+        heard = len(s.vehicle.log)
+        ok, words = await s.command(int(action), params, argument=str(arg) if name == "fly" else "")
+        if not ok:
+            why = [line for line in s.vehicle.log[heard:] if "refused" in line]  # the vehicle's own words
+            raise StepError(f"{words} ({why[-1]})" if why else words)
+        return words
+    if name in ("goto", "move"):
+        n, e, alt = _numbers(arg, 3, name)
+        if name == "move":
+            v = s.vehicle
+            n, e, alt = v.n + n, v.e + e, v.altitude + alt
+        await s.setpoint(n, e, alt)
+        return f"set-point {n:.1f} N, {e:.1f} E, {alt:.1f} m"
+    if name == "send":
+        path = (base / arg) if not Path(arg).is_absolute() else Path(arg)
+        ok, words = await s.send_file(path, Path(arg).name)
+        if not ok:
+            raise StepError(words)
+        return words
+    if name == "fetch":
+        ok, words = await s.fetch_file(arg)
+        if not ok:
+            raise StepError(words)
+        return words
+    if name == "wait":
+        if not isinstance(arg, dict):
+            await asyncio.sleep(float(arg))
+            return f"waited {float(arg):g} s"
+        parts = check_condition(arg["until"])
+        timeout = float(arg.get("timeout", 60))
+        end = time.monotonic() + timeout
+        while not holds(parts, s.vehicle.fields()):
+            if time.monotonic() >= end:
+                v = s.vehicle
+                raise StepError(f"{arg['until']} not reached within {timeout:g} s (state {v.state}, altitude "
+                                f"{v.altitude:.1f} m)")
+            await s.changed(0.25)
+        return f"{arg['until']}"
+    if name == "status":
+        return status_line(s)
+    raise StepError(f"unknown step {name!r}")
+
+
+def status_line(s: TabletSession) -> str:
+    v, link = s.vehicle, s.link
+    loop = asyncio.get_running_loop()
+    age = f"{loop.time() - v.heard:.1f} s ago" if v.heard is not None else "never"
+    rtt = f", command round trip {link.rtt_ms:.0f} ms" if link.rtt_ms is not None else ""
+    return (f"{v.state}{' (armed)' if v.armed else ''}: {v.n:.1f} N {v.e:.1f} E {v.altitude:.1f} m, "
+            f"{v.speed:.1f} m/s; heard {age}, {link.frames} frames{rtt}")

@@ -1,0 +1,110 @@
+"""`ttctl emulate tablet --script` flying `ttctl emulate onboard` through `ttctl link relay` (real
+processes on loopback): a whole mission at 10 m and 150 m; a link that dies mid-flight makes the
+script fail on the step it was at, and the vehicle hover, return and land on its own."""
+
+from __future__ import annotations
+
+import json
+import time
+from pathlib import Path
+
+import pytest
+
+from conftest import assert_no_traceback, run_ttctl
+from e2e_lib import LOCAL, Start, free_port, one_line, relay
+
+MISSION = """\
+- takeoff: 5
+- wait: {until: altitude >= 4.5 and state == hovering, timeout: 40}
+- send: square.yaml
+- fly: square.yaml
+- wait: {until: state == flying trajectory, timeout: 15}
+- wait: {until: state == hovering, timeout: 120}
+- goto: [0, 0, 3]
+- wait: {until: altitude <= 3.3, timeout: 40}
+- land
+- wait: {until: state == landed, timeout: 60}
+"""
+SQUARE = "speed: 1.5\nwaypoints:\n  - position: [5, 0, 5]\n  - position: [5, 5, 5]\n    hold: 1\n  - position: [0, 5, 6]\n"
+
+
+def vehicle(start: Start, tmp_path: Path, port: int, *extra: str) -> object:
+    node = start("onboard", "emulate", "onboard", "--no-gcs", "--listen", f"udpin:{LOCAL}:{port}", "--inbox",
+                 str(tmp_path / "inbox"), "--no-entry-points", "--speed", "4", *extra)
+    node.wait_for("onboard 1:")  # type: ignore[attr-defined]
+    return node
+
+
+@pytest.mark.parametrize("distance", [10, 150])
+def test_a_scripted_mission_through_the_emulated_radio(tmp_path: Path, start: Start, distance: int) -> None:
+    (tmp_path / "flight.yaml").write_text(MISSION)
+    (tmp_path / "square.yaml").write_text(SQUARE)
+    air, port = free_port(), free_port()
+    relay(start, air, port, "--profile", "m100", "--distance", str(distance), "--seed", "2", "--stats-interval", "0")
+    node = vehicle(start, tmp_path, port)
+    proc = run_ttctl("emulate", "tablet", "--to", f"udpout:{LOCAL}:{air}", "--script", str(tmp_path / "flight.yaml"),
+                     "--profile", "m100", "--distance", str(distance), "--json", timeout=300)
+    assert_no_traceback(proc)
+    assert proc.returncode == 0, proc.stderr + proc.stdout
+    steps = [json.loads(line) for line in proc.stdout.splitlines() if '"event": "step"' in line]
+    assert [s["step"] for s in steps] == list(range(1, 11)) and all(s["ok"] for s in steps)
+    assert (tmp_path / "inbox" / "square.yaml").read_text() == SQUARE
+    assert "flying square.yaml: 3 waypoints" in node.stderr and "landed" in node.stderr  # type: ignore[attr-defined]
+
+
+def test_a_link_that_dies_mid_flight(tmp_path: Path, start: Start) -> None:
+    script = "- takeoff: 5\n- wait: {until: state == hovering, timeout: 40}\n- wait: 4\n- goto: [20, 0, 5]\n- land\n"
+    (tmp_path / "flight.yaml").write_text(script)
+    air, port = free_port(), free_port()
+    radio = relay(start, air, port, "--profile", "m100", "--distance", "10", "--seed", "3", "--stats-interval", "0",
+                  "--outage", "6:600")  # the radio dies 6 s in: out of range, for good
+    node = vehicle(start, tmp_path, port)
+    proc = run_ttctl("emulate", "tablet", "--to", f"udpout:{LOCAL}:{air}", "--script", str(tmp_path / "flight.yaml"),
+                     timeout=120)
+    assert_no_traceback(proc)
+    assert proc.returncode == 1
+    line = one_line(proc.stderr.replace("ttctl: tablet: connected", "").strip().splitlines()[-1])
+    assert line.startswith("ttctl: error: step 5 (line 5: land) failed: land: no ack after"), line
+    # the vehicle on its own: link lost (COM_DL_LOSS_T 10 s of its clock), hover, return, land
+    node.wait_for("tablet link lost", timeout=30)  # type: ignore[attr-defined]
+    node.wait_for("returning home", timeout=30)  # type: ignore[attr-defined]
+    node.wait_for("landed", timeout=60)  # type: ignore[attr-defined]
+    assert radio is not None
+
+
+def test_a_bad_trajectory_is_refused_with_its_line_and_the_vehicle_keeps_hovering(tmp_path: Path,
+                                                                                  start: Start) -> None:
+    (tmp_path / "bad.yaml").write_text("waypoints:\n  - position: [5, 0]\n")
+    (tmp_path / "flight.yaml").write_text("- takeoff: 3\n- wait: {until: state == hovering, timeout: 40}\n"
+                                          "- send: bad.yaml\n- fly: bad.yaml\n")
+    port = free_port()
+    vehicle(start, tmp_path, port)
+    proc = run_ttctl("emulate", "tablet", "--to", f"udpout:{LOCAL}:{port}", "--script", str(tmp_path / "flight.yaml"),
+                     timeout=120)
+    assert proc.returncode == 1
+    assert proc.stderr.strip().splitlines()[-1] == (
+        "ttctl: error: step 4 (line 4: fly bad.yaml) failed: fly_trajectory: refused: FAILED (trajectory refused: "
+        "bad.yaml: line 2, column 15: position is [north, east, altitude])")
+    status = run_ttctl("emulate", "tablet", "--to", f"udpout:{LOCAL}:{port}", "--script",
+                       str(_write(tmp_path / "s.yaml", "- status\n")), timeout=60)
+    assert status.returncode == 0 and "hovering (armed)" in status.stdout
+
+
+def _write(path: Path, text: str) -> Path:
+    path.write_text(text)
+    return path
+
+
+def test_bad_scripts_and_no_vehicle(tmp_path: Path) -> None:
+    cases = {"- takeof: 5\n": "line 1: unknown step 'takeof'",
+             "- wait: {until: altitude >> 5}\n": "line 1: cannot read condition",
+             "- goto: [1, 2]\n": "line 1: goto wants 3 numbers",
+             "takeoff: 5\n": "a script is a non-empty YAML list of steps"}
+    for text, want in cases.items():
+        proc = run_ttctl("emulate", "tablet", "--script", str(_write(tmp_path / "s.yaml", text)), timeout=30)
+        assert proc.returncode == 2 and want in one_line(proc.stderr), proc.stderr
+    t0 = time.monotonic()
+    proc = run_ttctl("emulate", "tablet", "--to", f"udpout:{LOCAL}:{free_port()}", "--script",
+                     str(_write(tmp_path / "s.yaml", "- status\n")), timeout=60)
+    assert proc.returncode == 1 and "no vehicle answered" in one_line(proc.stderr)
+    assert time.monotonic() - t0 < 30
