@@ -25,7 +25,8 @@ MISSION = """\
 - land
 - wait: {until: state == landed, timeout: 60}
 """
-SQUARE = "speed: 1.5\nwaypoints:\n  - position: [5, 0, 5]\n  - position: [5, 5, 5]\n    hold: 1\n  - position: [0, 5, 6]\n"
+SQUARE = ("speed: 1.5\nwaypoints:\n  - position: [5, 0, 5]\n  - position: [5, 5, 5]\n    hold: 1\n"
+          "  - position: [0, 5, 6]\n")
 
 
 def vehicle(start: Start, tmp_path: Path, port: int, *extra: str) -> object:
