@@ -14,6 +14,9 @@ from typing import Annotated
 import typer
 
 from . import __version__
+from .commands.bench_cli import bench_app
+from .commands.emulate_cli import emulate_app
+from .commands.options import DistanceOpt, JsonOpt, ProfileOpt, RateOpt
 from .errors import Fail
 
 app = typer.Typer(
@@ -24,8 +27,6 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
     context_settings={"help_option_names": ["-h", "--help"]},
 )
-bench_app = typer.Typer(help="Benchmarks that print ratios against a named peer, measured in one run.",
-                        no_args_is_help=True)
 app.add_typer(bench_app, name="bench")
 
 
@@ -117,122 +118,9 @@ def gen(
     raise typer.Exit(code)
 
 
-@bench_app.command("validate")
-def bench_validate(
-    dialect: Annotated[Path | None, typer.Argument(help="Dialect XML (default: pymavlink's all.xml).")] = None,
-    runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=200)] = 15,
-    synthetic: Annotated[int | None, typer.Option("--synthetic", help="Time both on a made-up dialect of N "
-                                                                      "messages instead (up to 60000: the 8 MiB "
-                                                                      "input cap).", min=1, max=60_000,
-                                                  show_default=False)] = None,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
-) -> None:
-    """Whole-process time of `ttctl validate` against `mavgen.py --lang Python3 --wire-protocol 2.0`."""
-    from .bench.validate import run
-
-    run(str(dialect) if dialect else None, runs, json_out, synthetic)
-
-
-@bench_app.command("gen")
-def bench_gen(
-    dialect: Annotated[Path | None, typer.Argument(help="Dialect XML (default: pymavlink's all.xml).")] = None,
-    runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=50)] = 5,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
-) -> None:
-    """Whole-process time of `ttctl gen` (three languages) against mavgen's Python3 + C++11 + Java."""
-    from .bench.gen import run
-
-    run(str(dialect) if dialect else None, runs, json_out)
-
-
-@bench_app.command("codec")
-def bench_codec(
-    seconds: Annotated[float, typer.Option(help="Approximate time budget per measurement.", min=0.05)] = 0.5,
-    rounds: Annotated[int, typer.Option(help="Interleaved rounds; medians are reported.", min=1, max=50)] = 5,
-    cpp: Annotated[bool, typer.Option("--cpp/--no-cpp", help="Also build and compare the C++ decoder with "
-                                                             "mavgen's C library (needs g++).")] = True,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
-) -> None:
-    """Generated Python decode/encode against pymavlink, and generated C++ decode against mavgen's C."""
-    from .bench.codec import run
-
-    run(seconds, rounds, cpp, json_out)
-
-
 link_app = typer.Typer(help="The emulated DJI link between processes.", no_args_is_help=True)
 app.add_typer(link_app, name="link")
-
-RateOpt = Annotated[float | None, typer.Option("--rate", help="Pacing rate in bytes per second (overrides the "
-                                                              "profile's).", show_default=False)]
-ProfileOpt = Annotated[str | None, typer.Option("--profile", help="Link profile (m100, psdk, lan): pace at its "
-                                                                  "capacity in this end's sending direction.",
-                                                show_default=False)]
-DistanceOpt = Annotated[float, typer.Option("--distance", help="Distance in metres, for --profile.")]
-JsonOpt = Annotated[bool, typer.Option("--json", help="Machine-readable output (JSON).")]
-
-
-PLOT_EXTRA = "needs the plot extra: pip install 'ttctl\\[plot]'"  # \\[ keeps rich from reading a style tag
-
-
-@bench_app.command("transfer")
-def bench_transfer(
-    profile: Annotated[str, typer.Option(help="Link profile (see cli/ttctl/link/profiles.toml).")] = "m100",
-    distance: Annotated[float, typer.Option(help="Distance in metres.", min=0)] = 10.0,
-    size: Annotated[int, typer.Option("--size", help="File size in bytes.", min=1, max=1 << 26)] = 65536,
-    seeds: Annotated[int, typer.Option(help="Seeds per case; rows report the median.", min=1, max=99)] = 9,
-    protocols: Annotated[str, typer.Option(help="Comma-separated: ttctl,thesis,mavftp.")] = "ttctl,thesis,mavftp",
-    quick: Annotated[bool, typer.Option("--quick", help="Two cases only (a smoke test).")] = False,
-    plot: Annotated[Path | None, typer.Option(help=f"Write a PNG of efficiency against loss ({PLOT_EXTRA}).")] = None,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
-) -> None:
-    """File transfer over the link model in virtual time: ttctl against the thesis protocol and
-    MAVLink FTP at 0/10/30 % random and burst loss, both directions, plus command latency."""
-    from .bench.transfer import run
-    from .link.model import ProfileError
-
-    try:
-        run(profile, distance, size, seeds, [p.strip() for p in protocols.split(",") if p.strip()], json_out,
-            str(plot) if plot else None, quick)
-    except ProfileError as e:
-        raise Fail(str(e)) from None
-
-
-@bench_app.command("link")
-def bench_link(
-    profile: Annotated[str, typer.Option(help="Link profile.")] = "m100",
-    plot: Annotated[Path | None, typer.Option(help=f"Write a PNG ({PLOT_EXTRA}).")] = None,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
-) -> None:
-    """The thesis's measurement method replayed on the link model: uplink packet sizes and
-    distances, downlink send rates."""
-    from .bench import linkbench
-    from .link.model import ProfileError
-
-    try:
-        linkbench.run(profile, json_out, str(plot) if plot else None)
-    except ProfileError as e:
-        raise Fail(str(e)) from None
-    except RuntimeError as e:  # matplotlib missing
-        raise Fail(str(e)) from None
-
-
-@bench_app.command("integrity")
-def bench_integrity(
-    rounds: Annotated[int, typer.Option("--rounds", help="Rounds per topology.", min=1, max=100_000)] = 50,
-    seed: Annotated[int, typer.Option("--seed", help="Random seed (the same seed, the same plan).")] = 1,
-    topology: Annotated[str, typer.Option("--topology", help="direct, relay (lossy) or both.")] = "both",
-    strangers: Annotated[bool, typer.Option("--strangers/--no-strangers",
-                                            help="Garbage datagrams from other ports throughout.")] = True,
-    keep: Annotated[Path | None, typer.Option("--keep", help="Keep every process's output in this (new or empty) "
-                                                             "folder.", show_default=False)] = None,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
-) -> None:
-    """Soak send-file's promise on real processes: rounds of concurrent senders with equal ids, kills
-    and restarts of senders and the receiver, relay loss, strangers; exit 1 if any sender exited 0
-    without the receiver holding its file, or a partial file was ever visible under its name."""
-    from .bench.integrity import main as integrity_main
-
-    raise typer.Exit(integrity_main(rounds, seed, topology, strangers, keep, json_out))
+app.add_typer(emulate_app, name="emulate")
 
 
 @app.command("recv-file")
@@ -366,76 +254,6 @@ def link_relay(
     code = relay(RelayOptions(listen, to, profile, distance, loss, loss_model, corrupt, duplicate, reorder, seed,
                               rate, stats_interval, outage or []))
     raise typer.Exit(code)
-
-
-emulate_app = typer.Typer(help="Both ends of the link, runnable without a drone.", no_args_is_help=True)
-app.add_typer(emulate_app, name="emulate")
-
-
-@emulate_app.command("onboard")
-def emulate_onboard_cmd(
-    listen: Annotated[str, typer.Option("--listen", help="The tablet's DTT link: udpin:HOST:PORT (or udpout:, tcp:, "
-                                                         "tcpin:).")] = "udpin:0.0.0.0:14560",
-    gcs: Annotated[list[str] | None, typer.Option("--gcs", help="A ground-station link (repeatable; default "
-                                                                "udpout:127.0.0.1:14550 and udpout:127.0.0.1:14540, "
-                                                                "where QGroundControl, MAVProxy and MAVSDK listen).",
-                                                  show_default=False)] = None,
-    no_gcs: Annotated[bool, typer.Option("--no-gcs", help="No ground-station links.")] = False,
-    sysid: Annotated[int, typer.Option("--sysid", help="The vehicle's MAVLink system id.")] = 1,
-    inbox: Annotated[Path | None, typer.Option("--inbox", help="Receive files (trajectories) from the tablet into "
-                                                               "this folder.", show_default=False)] = None,
-    serve: Annotated[Path | None, typer.Option("--serve", help="Let the tablet fetch the files of this folder.",
-                                               show_default=False)] = None,
-    home: Annotated[str | None, typer.Option("--home", help="LAT,LON,ALT of home (default 46.0503,14.4686,295).",
-                                             show_default=False)] = None,
-    speed: Annotated[float, typer.Option("--speed", help="Run the vehicle's clock this many times faster.")] = 1.0,
-    plugin: Annotated[list[str] | None, typer.Option("--plugin", help="path/to/plugin.py or module:attr "
-                                                                      "(repeatable).", show_default=False)] = None,
-    no_entry_points: Annotated[bool, typer.Option("--no-entry-points", help="Do not load the plugins installed "
-                                                                            "packages declare (ttctl.plugins).")]
-    = False,
-    telemetry_hz: Annotated[float, typer.Option("--telemetry-hz", help="TT_NAV_SAT_FIX and TT_ODOMETRY to the "
-                                                                       "tablet, per second.")] = 2.0,
-    rate: RateOpt = None,
-    profile: ProfileOpt = None,
-    distance: DistanceOpt = 10.0,
-) -> None:
-    """The onboard computer's end, flying a simulated multicopter: the tablet's DTT link (commands,
-    telemetry, files) and ground-station links (HEARTBEAT, telemetry, commands, parameters,
-    missions) to the same vehicle. Runs until interrupted (exit 0).
-
-    Example: ttctl emulate onboard --inbox inbox   (then open QGroundControl)
-    """
-    from .commands.emulate import OnboardOptions, emulate_onboard
-
-    raise typer.Exit(emulate_onboard(OnboardOptions(listen, gcs or [], no_gcs, sysid, inbox, serve, home, speed,
-                                                    rate, profile, distance, plugin or [], no_entry_points,
-                                                    telemetry_hz)))
-
-
-@emulate_app.command("tablet")
-def emulate_tablet_cmd(
-    to: Annotated[str, typer.Option("--to", help="The onboard end's DTT link: udpout:HOST:PORT (or tcp:, udpin:).")]
-    = "udpout:127.0.0.1:14560",
-    script: Annotated[Path | None, typer.Option("--script", help="Run these steps (a YAML list) instead of a prompt; "
-                                                                 "exit 0 only if every one succeeds.",
-                                                show_default=False)] = None,
-    json_out: JsonOpt = False,
-    folder: Annotated[Path | None, typer.Option("--dir", help="Where fetched files go.", show_default=False)] = None,
-    target_sysid: Annotated[int, typer.Option("--target-sysid", help="The vehicle's system id.")] = 1,
-    rate: RateOpt = None,
-    profile: ProfileOpt = None,
-    distance: DistanceOpt = 10.0,
-) -> None:
-    """The tablet's end: commands (take-off, land, hover, return, set-points, trajectories),
-    files both ways and the vehicle's state, from a prompt (history, completion) or a --script.
-
-    Example: ttctl emulate tablet --to udpout:127.0.0.1:14560 --script flight.yaml
-    """
-    from .commands.tablet import TabletOptions, emulate_tablet
-
-    raise typer.Exit(emulate_tablet(TabletOptions(to, script, json_out, folder, rate, profile, distance,
-                                                  target_sysid)))
 
 
 def main() -> None:

@@ -1,0 +1,117 @@
+"""`ttctl bench ...`: the benchmark command group (the work is in ttctl.bench)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from ..errors import Fail
+from .options import PLOT_EXTRA
+
+bench_app = typer.Typer(help="Benchmarks that print ratios against a named peer, measured in one run.",
+                        no_args_is_help=True)
+
+
+@bench_app.command("validate")
+def bench_validate(
+    dialect: Annotated[Path | None, typer.Argument(help="Dialect XML (default: pymavlink's all.xml).")] = None,
+    runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=200)] = 15,
+    synthetic: Annotated[int | None, typer.Option("--synthetic", help="Time both on a made-up dialect of N "
+                                                                      "messages instead (up to 60000: the 8 MiB "
+                                                                      "input cap).", min=1, max=60_000,
+                                                  show_default=False)] = None,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+) -> None:
+    """Whole-process time of `ttctl validate` against `mavgen.py --lang Python3 --wire-protocol 2.0`."""
+    from ..bench.validate import run
+
+    run(str(dialect) if dialect else None, runs, json_out, synthetic)
+
+
+@bench_app.command("gen")
+def bench_gen(
+    dialect: Annotated[Path | None, typer.Argument(help="Dialect XML (default: pymavlink's all.xml).")] = None,
+    runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=50)] = 5,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+) -> None:
+    """Whole-process time of `ttctl gen` (three languages) against mavgen's Python3 + C++11 + Java."""
+    from ..bench.gen import run
+
+    run(str(dialect) if dialect else None, runs, json_out)
+
+
+@bench_app.command("codec")
+def bench_codec(
+    seconds: Annotated[float, typer.Option(help="Approximate time budget per measurement.", min=0.05)] = 0.5,
+    rounds: Annotated[int, typer.Option(help="Interleaved rounds; medians are reported.", min=1, max=50)] = 5,
+    cpp: Annotated[bool, typer.Option("--cpp/--no-cpp", help="Also build and compare the C++ decoder with "
+                                                             "mavgen's C library (needs g++).")] = True,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+) -> None:
+    """Generated Python decode/encode against pymavlink, and generated C++ decode against mavgen's C."""
+    from ..bench.codec import run
+
+    run(seconds, rounds, cpp, json_out)
+
+
+@bench_app.command("transfer")
+def bench_transfer(
+    profile: Annotated[str, typer.Option(help="Link profile (see cli/ttctl/link/profiles.toml).")] = "m100",
+    distance: Annotated[float, typer.Option(help="Distance in metres.", min=0)] = 10.0,
+    size: Annotated[int, typer.Option("--size", help="File size in bytes.", min=1, max=1 << 26)] = 65536,
+    seeds: Annotated[int, typer.Option(help="Seeds per case; rows report the median.", min=1, max=99)] = 9,
+    protocols: Annotated[str, typer.Option(help="Comma-separated: ttctl,thesis,mavftp.")] = "ttctl,thesis,mavftp",
+    quick: Annotated[bool, typer.Option("--quick", help="Two cases only (a smoke test).")] = False,
+    plot: Annotated[Path | None, typer.Option(help=f"Write a PNG of efficiency against loss ({PLOT_EXTRA}).")] = None,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+) -> None:
+    """File transfer over the link model in virtual time: ttctl against the thesis protocol and
+    MAVLink FTP at 0/10/30 % random and burst loss, both directions, plus command latency."""
+    from ..bench.transfer import run
+    from ..link.model import ProfileError
+
+    try:
+        run(profile, distance, size, seeds, [p.strip() for p in protocols.split(",") if p.strip()], json_out,
+            str(plot) if plot else None, quick)
+    except ProfileError as e:
+        raise Fail(str(e)) from None
+
+
+@bench_app.command("link")
+def bench_link(
+    profile: Annotated[str, typer.Option(help="Link profile.")] = "m100",
+    plot: Annotated[Path | None, typer.Option(help=f"Write a PNG ({PLOT_EXTRA}).")] = None,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+) -> None:
+    """The thesis's measurement method replayed on the link model: uplink packet sizes and
+    distances, downlink send rates."""
+    from ..bench import linkbench
+    from ..link.model import ProfileError
+
+    try:
+        linkbench.run(profile, json_out, str(plot) if plot else None)
+    except ProfileError as e:
+        raise Fail(str(e)) from None
+    except RuntimeError as e:  # matplotlib missing
+        raise Fail(str(e)) from None
+
+
+@bench_app.command("integrity")
+def bench_integrity(
+    rounds: Annotated[int, typer.Option("--rounds", help="Rounds per topology.", min=1, max=100_000)] = 50,
+    seed: Annotated[int, typer.Option("--seed", help="Random seed (the same seed, the same plan).")] = 1,
+    topology: Annotated[str, typer.Option("--topology", help="direct, relay (lossy) or both.")] = "both",
+    strangers: Annotated[bool, typer.Option("--strangers/--no-strangers",
+                                            help="Garbage datagrams from other ports throughout.")] = True,
+    keep: Annotated[Path | None, typer.Option("--keep", help="Keep every process's output in this (new or empty) "
+                                                             "folder.", show_default=False)] = None,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+) -> None:
+    """Soak send-file's promise on real processes: rounds of concurrent senders with equal ids, kills
+    and restarts of senders and the receiver, relay loss, strangers; exit 1 if any sender exited 0
+    without the receiver holding its file, or a partial file was ever visible under its name."""
+    from ..bench.integrity import main as integrity_main
+
+    raise typer.Exit(integrity_main(rounds, seed, topology, strangers, keep, json_out))

@@ -1,0 +1,78 @@
+"""`ttctl emulate ...`: both ends of the link, runnable without a drone (the work is in ttctl.ends)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from .options import DistanceOpt, JsonOpt, ProfileOpt, RateOpt
+
+emulate_app = typer.Typer(help="Both ends of the link, runnable without a drone.", no_args_is_help=True)
+
+
+@emulate_app.command("onboard")
+def emulate_onboard_cmd(
+    listen: Annotated[str, typer.Option("--listen", help="The tablet's DTT link: udpin:HOST:PORT (or udpout:, tcp:, "
+                                                         "tcpin:).")] = "udpin:0.0.0.0:14560",
+    gcs: Annotated[list[str] | None, typer.Option("--gcs", help="A ground-station link (repeatable; default "
+                                                                "udpout:127.0.0.1:14550 and udpout:127.0.0.1:14540, "
+                                                                "where QGroundControl, MAVProxy and MAVSDK listen).",
+                                                  show_default=False)] = None,
+    no_gcs: Annotated[bool, typer.Option("--no-gcs", help="No ground-station links.")] = False,
+    sysid: Annotated[int, typer.Option("--sysid", help="The vehicle's MAVLink system id.")] = 1,
+    inbox: Annotated[Path | None, typer.Option("--inbox", help="Receive files (trajectories) from the tablet into "
+                                                               "this folder.", show_default=False)] = None,
+    serve: Annotated[Path | None, typer.Option("--serve", help="Let the tablet fetch the files of this folder.",
+                                               show_default=False)] = None,
+    home: Annotated[str | None, typer.Option("--home", help="LAT,LON,ALT of home (default 46.0503,14.4686,295).",
+                                             show_default=False)] = None,
+    speed: Annotated[float, typer.Option("--speed", help="Run the vehicle's clock this many times faster.")] = 1.0,
+    plugin: Annotated[list[str] | None, typer.Option("--plugin", help="path/to/plugin.py or module:attr "
+                                                                      "(repeatable).", show_default=False)] = None,
+    no_entry_points: Annotated[bool, typer.Option("--no-entry-points", help="Do not load the plugins installed "
+                                                                            "packages declare (ttctl.plugins).")]
+    = False,
+    telemetry_hz: Annotated[float, typer.Option("--telemetry-hz", help="TT_NAV_SAT_FIX and TT_ODOMETRY to the "
+                                                                       "tablet, per second.")] = 2.0,
+    rate: RateOpt = None,
+    profile: ProfileOpt = None,
+    distance: DistanceOpt = 10.0,
+) -> None:
+    """The onboard computer's end, flying a simulated multicopter: the tablet's DTT link (commands,
+    telemetry, files) and ground-station links (HEARTBEAT, telemetry, commands, parameters,
+    missions) to the same vehicle. Runs until interrupted (exit 0).
+
+    Example: ttctl emulate onboard --inbox inbox   (then open QGroundControl)
+    """
+    from .emulate import OnboardOptions, emulate_onboard
+
+    raise typer.Exit(emulate_onboard(OnboardOptions(listen, gcs or [], no_gcs, sysid, inbox, serve, home, speed,
+                                                    rate, profile, distance, plugin or [], no_entry_points,
+                                                    telemetry_hz)))
+
+
+@emulate_app.command("tablet")
+def emulate_tablet_cmd(
+    to: Annotated[str, typer.Option("--to", help="The onboard end's DTT link: udpout:HOST:PORT (or tcp:, udpin:).")]
+    = "udpout:127.0.0.1:14560",
+    script: Annotated[Path | None, typer.Option("--script", help="Run these steps (a YAML list) instead of a prompt; "
+                                                                 "exit 0 only if every one succeeds.",
+                                                show_default=False)] = None,
+    json_out: JsonOpt = False,
+    folder: Annotated[Path | None, typer.Option("--dir", help="Where fetched files go.", show_default=False)] = None,
+    target_sysid: Annotated[int, typer.Option("--target-sysid", help="The vehicle's system id.")] = 1,
+    rate: RateOpt = None,
+    profile: ProfileOpt = None,
+    distance: DistanceOpt = 10.0,
+) -> None:
+    """The tablet's end: commands (take-off, land, hover, return, set-points, trajectories),
+    files both ways and the vehicle's state, from a prompt (history, completion) or a --script.
+
+    Example: ttctl emulate tablet --to udpout:127.0.0.1:14560 --script flight.yaml
+    """
+    from .tablet import TabletOptions, emulate_tablet
+
+    raise typer.Exit(emulate_tablet(TabletOptions(to, script, json_out, folder, rate, profile, distance,
+                                                  target_sysid)))

@@ -1,0 +1,16 @@
+"""Option types several command groups share."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+RateOpt = Annotated[float | None, typer.Option("--rate", help="Pacing rate in bytes per second (overrides the "
+                                                              "profile's).", show_default=False)]
+ProfileOpt = Annotated[str | None, typer.Option("--profile", help="Link profile (m100, psdk, lan): pace at its "
+                                                                  "capacity in this end's sending direction.",
+                                                show_default=False)]
+DistanceOpt = Annotated[float, typer.Option("--distance", help="Distance in metres, for --profile.")]
+JsonOpt = Annotated[bool, typer.Option("--json", help="Machine-readable output (JSON).")]
+PLOT_EXTRA = "needs the plot extra: pip install 'ttctl\\[plot]'"  # \\[ keeps rich from reading a style tag
