@@ -109,3 +109,47 @@ def test_bad_scripts_and_no_vehicle(tmp_path: Path) -> None:
                      str(_write(tmp_path / "s.yaml", "- status\n")), timeout=60)
     assert proc.returncode == 1 and "no vehicle answered" in one_line(proc.stderr)
     assert time.monotonic() - t0 < 30
+
+
+PLUGIN = '''
+from pathlib import Path
+
+import ttapi
+from ttctl.ends.plugins import Context, Plugin, handles
+
+OUT = Path(__file__).with_name("plugin.log")
+
+
+class Recorder(Plugin):
+    def start(self, ctx: Context) -> None:
+        ctx.every(1.0, lambda: OUT.open("a").write(f"tick {ctx.vehicle.snapshot().alt_rel:.1f}\\n"))
+
+    @handles(ttapi.DjiPoseStamped)
+    def on_pose(self, msg, ctx: Context) -> None:
+        OUT.open("a").write(f"pose {list(msg.position)}\\n")
+        ctx.send(ttapi.TtLog(severity=6, text="plugin saw a set-point"))
+
+
+class Broken(Plugin):
+    @handles(ttapi.DjiPoseStamped)
+    def explode(self, msg, ctx: Context) -> None:
+        raise RuntimeError("boom")
+'''
+
+
+def test_user_plugins_get_their_messages_and_one_that_raises_is_isolated(tmp_path: Path, start: Start) -> None:
+    (tmp_path / "myplugin.py").write_text(PLUGIN)
+    (tmp_path / "flight.yaml").write_text("- takeoff: 3\n- wait: {until: state == hovering, timeout: 40}\n"
+                                          "- goto: [2, 0, 3]\n- wait: 2\n- goto: [0, 0, 3]\n"
+                                          "- wait: {until: state == hovering, timeout: 40}\n")
+    port = free_port()
+    node = vehicle(start, tmp_path, port, "--plugin", str(tmp_path / "myplugin.py"))
+    assert "plugins Recorder, Broken" in node.stderr  # type: ignore[attr-defined]
+    proc = run_ttctl("emulate", "tablet", "--to", f"udpout:{LOCAL}:{port}", "--script", str(tmp_path / "flight.yaml"),
+                     timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.count("vehicle: plugin saw a set-point") == 2
+    log = (tmp_path / "plugin.log").read_text().splitlines()
+    assert [line for line in log if line.startswith("pose")] == ["pose [2.0, 0.0, 3.0]", "pose [0.0, 0.0, 3.0]"]
+    assert sum(line.startswith("tick") for line in log) >= 5 and any(line == "tick 3.0" for line in log)
+    assert node.stderr.count("plugin Broken.explode failed on DJI_POSE_STAMPED: RuntimeError: boom") == 2  # type: ignore[attr-defined]

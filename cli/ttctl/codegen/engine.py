@@ -80,14 +80,17 @@ def sorted_enums(d: Dialect) -> list[Enum]:
 
 
 def receives(d: Dialect, end: str) -> list[Message]:
-    """Messages of the root dialect that `end` (tablet|onboard) receives, from the
-    `[sender: ...]` tags; untagged messages count as sent by either end."""
+    """Messages of the root dialect that `end` (tablet|onboard) receives and the user handles
+    (skeletons are written for them), from the `[sender: ...]` tags; untagged messages count as
+    sent by either end, `[runtime]` ones are handled by ttctl's runtimes."""
     other = "onboard" if end == "tablet" else "tablet"
-    return [m for m in sorted(d.root.messages, key=lambda m: m.id) if (m.sender or "any") in (other, "any")]
+    return [m for m in sorted(d.root.messages, key=lambda m: m.id)
+            if (m.sender or "any") in (other, "any") and not m.runtime]
 
 
 def sends(d: Dialect, end: str) -> list[Message]:
-    return [m for m in sorted(d.root.messages, key=lambda m: m.id) if (m.sender or "any") in (end, "any")]
+    return [m for m in sorted(d.root.messages, key=lambda m: m.id)
+            if (m.sender or "any") in (end, "any") and not m.runtime]
 
 
 def _bytecode_cache(jinja2: Any) -> Any:
@@ -177,9 +180,20 @@ class WriteReport:
     differ: list[str] = field(default_factory=list)  # --check: would be written or removed
 
 
-def _atomic_write(path: Path, text: str) -> None:
+def _atomic_write(path: Path, text: str, new: bool = False, created: list[Path] | None = None) -> None:
     """Replace a file all at once (a reader never sees it half-written); a new file is
-    created in place, which needs no temporary."""
+    created in place, which needs no temporary. `created` gets, before they are made, the
+    highest folder this makes and the file if `new` (it was not there), so that a caller can
+    take back what a failed run made."""
+    if created is not None:
+        top = None
+        folder = path.parent
+        while not os.path.lexists(folder):
+            top, folder = folder, folder.parent
+        if top is not None:
+            created.append(top)
+        if new and not os.path.lexists(path):  # the listing does not follow symlinked folders
+            created.append(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     try:
         with open(path, "x", encoding="utf-8", newline="\n") as fh:
@@ -187,14 +201,19 @@ def _atomic_write(path: Path, text: str) -> None:
         return
     except FileExistsError:
         pass
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    except OSError as e:
+        raise OSError(e.errno, e.strerror, str(path)) from None  # name the file, not the temporary
     try:
         with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
             fh.write(text)
         os.replace(tmp, path)
-    except BaseException:
+    except BaseException as e:
         if os.path.exists(tmp):
             os.unlink(tmp)
+        if isinstance(e, OSError):
+            raise OSError(e.errno, e.strerror, str(path)) from None
         raise
 
 
@@ -208,7 +227,9 @@ def _read(path: Path) -> str | None:
 
 
 def write_tree(root: Path, rendered: list[tuple[Output, str]], owned: list[str], check: bool,
-               force_skeletons: bool) -> WriteReport:
+               force_skeletons: bool, created: list[Path] | None = None) -> WriteReport:
+    """Write (or with `check` compare) the rendered files under `root`. `created` collects the
+    files and folders this makes, as it makes them (see _atomic_write)."""
     rep = WriteReport()
     produced = set()
     existing: set[str] = set()
@@ -227,7 +248,7 @@ def write_tree(root: Path, rendered: list[tuple[Output, str]], owned: list[str],
         if check:
             rep.differ.append(out.path)
         else:
-            _atomic_write(dest, text)
+            _atomic_write(dest, text, str(dest) not in existing, created)
             rep.written.append(out.path)
     for rel in owned:
         d = root / rel

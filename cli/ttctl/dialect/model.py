@@ -49,6 +49,7 @@ Sender = Literal["tablet", "onboard", "any"]
 SENDER_RE = re.compile(r"\[sender:\s*([A-Za-z]+)\s*\]")
 SENDERS: tuple[str, ...] = ("tablet", "onboard", "any")
 SPANS_TAG = "[spans-packets]"  # in a description: this message is meant to span packets
+RUNTIME_TAG = "[runtime]"  # in a description: ttctl's runtimes handle it themselves (no skeleton for it)
 
 
 def frame_length(payload: int, signed: bool = False) -> int:
@@ -227,6 +228,11 @@ class Message:
     @property
     def spans_packets(self) -> bool:
         return SPANS_TAG in self.description
+
+    @property
+    def runtime(self) -> bool:
+        """Handled by ttctl's runtimes (the file transfer, say): skeletons leave it out."""
+        return RUNTIME_TAG in self.description
 
     def field(self, name: str) -> Field | None:
         for f in self.fields:

@@ -20,15 +20,28 @@ Handler = Callable[[Any, "Context"], None]
 
 
 class Context:
-    """What a handler gets besides the message: a way to answer and to log."""
+    """What a handler gets besides the message: a way to answer, to log, to run something every so
+    often (`every(seconds, fn)`), and the vehicle (`vehicle.snapshot()` for its state) when the
+    end has one."""
 
     def __init__(self, send: Callable[[Any], None] | None = None, log: Callable[[str], None] | None = None,
-                 sysid: int = 1, compid: int = 240) -> None:
+                 sysid: int = 1, compid: int = 240, vehicle: Any = None,
+                 every: Callable[[float, Callable[[], None]], None] | None = None) -> None:
         self._send = send
         self._log = log
+        self._every = every
         self.sysid = sysid
         self.compid = compid
+        self.vehicle = vehicle
         self.logged: list[str] = []
+
+    def every(self, seconds: float, fn: Callable[[], None]) -> None:
+        """Call fn every `seconds` (of the end's clock) from now on; an fn that raises is logged."""
+        if self._every is None:
+            raise RuntimeError("this context cannot schedule")
+        if not seconds > 0:
+            raise ValueError("every() wants a positive number of seconds")
+        self._every(seconds, fn)
 
     def send(self, msg: Any) -> None:
         if self._send is None:
@@ -73,10 +86,17 @@ class Plugin:
         return out
 
 
+def owner(handler: Handler) -> str:
+    """'Plugin.method' of a bound handler, for messages about it."""
+    obj = getattr(handler, "__self__", None)
+    name = getattr(handler, "__name__", repr(handler))
+    return f"{type(obj).__name__}.{name}" if obj is not None else name
+
+
 class Dispatcher:
     """msgid -> handlers, in registration order."""
 
-    def __init__(self, on_error: Callable[[Any, BaseException], None] | None = None) -> None:
+    def __init__(self, on_error: Callable[[Any, BaseException, str], None] | None = None) -> None:
         self._table: dict[int, list[Handler]] = {}
         self.on_error = on_error
         self.errors = 0
@@ -100,7 +120,7 @@ class Dispatcher:
             except Exception as e:
                 self.errors += 1
                 if self.on_error is not None:
-                    self.on_error(msg, e)
+                    self.on_error(msg, e, owner(h))
         return len(handlers)
 
 

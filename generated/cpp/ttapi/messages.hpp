@@ -17765,7 +17765,7 @@ struct HygrometerSensor {
     }
 };
 
-/// TT_FILE_OFFER (id 50000): [sender: any] Offer a file to the receiver, or answer a
+/// TT_FILE_OFFER (id 50000): [sender: any] [runtime] Offer a file to the receiver, or answer a
 /// TT_FILE_REQUEST. The metadata blob is the file's 32-byte SHA-256 followed by its UTF-8 name (at
 /// most 223 bytes); it is sent in parts (meta_offset, up to 71 bytes each), each part repeating the
 /// other fields. The receiver answers with TT_FILE_STATUS; no file data is sent before it accepts.
@@ -17855,12 +17855,12 @@ struct TtFileOffer {
     }
 };
 
-/// TT_FILE_STATUS (id 50001): [sender: any] The receiver's view of a transfer: sent on accepting or
-/// refusing an offer, while data flows (regularly, when new gaps appear, and when data stops
-/// coming), and on completion. Bytes below received_contiguous have all arrived; in [region_start,
-/// received_end) everything arrived except the listed missing ranges. When there are more gaps than
-/// fit, several statuses describe successive regions. A sender takes a status for its own only if
-/// both transfer_id and meta_check match its offer.
+/// TT_FILE_STATUS (id 50001): [sender: any] [runtime] The receiver's view of a transfer: sent on
+/// accepting or refusing an offer, while data flows (regularly, when new gaps appear, and when data
+/// stops coming), and on completion. Bytes below received_contiguous have all arrived; in
+/// [region_start, received_end) everything arrived except the listed missing ranges. When there are
+/// more gaps than fit, several statuses describe successive regions. A sender takes a status for
+/// its own only if both transfer_id and meta_check match its offer.
 struct TtFileStatus {
     static constexpr std::uint32_t MSG_ID = 50001;
     static constexpr std::uint8_t CRC_EXTRA = 193;
@@ -17964,9 +17964,9 @@ struct TtFileStatus {
     }
 };
 
-/// TT_FILE_DATA (id 50002): [sender: any] File bytes in a frame that fills one 100-byte packet
-/// exactly. It carries min(80, size - offset) bytes: the count follows from the offer's size, so
-/// trailing zero bytes may be truncated on the wire.
+/// TT_FILE_DATA (id 50002): [sender: any] [runtime] File bytes in a frame that fills one 100-byte
+/// packet exactly. It carries min(80, size - offset) bytes: the count follows from the offer's
+/// size, so trailing zero bytes may be truncated on the wire.
 struct TtFileData {
     static constexpr std::uint32_t MSG_ID = 50002;
     static constexpr std::uint8_t CRC_EXTRA = 203;
@@ -18019,10 +18019,10 @@ struct TtFileData {
     }
 };
 
-/// TT_FILE_REQUEST (id 50003): [sender: any] Ask the peer to send a file (download). The name is
-/// UTF-8, sent in parts like the offer's metadata. The peer answers with TT_FILE_OFFER (request_id
-/// echoed) or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or REQUEST_REFUSED, with a
-/// TT_FILE_REASON).
+/// TT_FILE_REQUEST (id 50003): [sender: any] [runtime] Ask the peer to send a file (download). The
+/// name is UTF-8, sent in parts like the offer's metadata. The peer answers with TT_FILE_OFFER
+/// (request_id echoed) or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or
+/// REQUEST_REFUSED, with a TT_FILE_REASON).
 struct TtFileRequest {
     static constexpr std::uint32_t MSG_ID = 50003;
     static constexpr std::uint8_t CRC_EXTRA = 129;
@@ -18461,9 +18461,9 @@ struct TtLog {
     }
 };
 
-/// TT_FILE_DATA_WIDE (id 50009): [sender: any] [spans-packets] File bytes in a 267-byte frame that
-/// spans packets: less framing per byte, for when the transfer observes little loss. It carries
-/// min(247, size - offset) bytes; trailing zero bytes may be truncated on the wire.
+/// TT_FILE_DATA_WIDE (id 50009): [sender: any] [runtime] [spans-packets] File bytes in a 267-byte
+/// frame that spans packets: less framing per byte, for when the transfer observes little loss. It
+/// carries min(247, size - offset) bytes; trailing zero bytes may be truncated on the wire.
 struct TtFileDataWide {
     static constexpr std::uint32_t MSG_ID = 50009;
     static constexpr std::uint8_t CRC_EXTRA = 100;
@@ -18749,9 +18749,9 @@ struct TtVrController {
     }
 };
 
-/// TT_FILE_REASON (id 50013): [sender: any] Why a transfer or a request was refused or failed, in
-/// words for people: sent just before each TT_FILE_STATUS that carries such a result (refused,
-/// failed, not found, request refused), so the sender can say what the receiver knows.
+/// TT_FILE_REASON (id 50013): [sender: any] [runtime] Why a transfer or a request was refused or
+/// failed, in words for people: sent just before each TT_FILE_STATUS that carries such a result
+/// (refused, failed, not found, request refused), so the sender can say what the receiver knows.
 struct TtFileReason {
     static constexpr std::uint32_t MSG_ID = 50013;
     static constexpr std::uint8_t CRC_EXTRA = 210;

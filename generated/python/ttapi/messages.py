@@ -19592,7 +19592,7 @@ class HygrometerSensor(Message):
 
 
 class TtFileOffer(Message):
-    """TT_FILE_OFFER (id 50000): [sender: any] Offer a file to the receiver, or answer a TT_FILE_REQUEST. The metadata blob is the file's 32-byte SHA-256 followed by its UTF-8 name (at most 223 bytes); it is sent in parts (meta_offset, up to 71 bytes each), each part repeating the other fields. The receiver answers with TT_FILE_STATUS; no file data is sent before it accepts. Offering a file whose partial state the receiver kept (same name, size and SHA-256) resumes it, whatever its transfer id was."""
+    """TT_FILE_OFFER (id 50000): [sender: any] [runtime] Offer a file to the receiver, or answer a TT_FILE_REQUEST. The metadata blob is the file's 32-byte SHA-256 followed by its UTF-8 name (at most 223 bytes); it is sent in parts (meta_offset, up to 71 bytes each), each part repeating the other fields. The receiver answers with TT_FILE_STATUS; no file data is sent before it accepts. Offering a file whose partial state the receiver kept (same name, size and SHA-256) resumes it, whatever its transfer id was."""
 
     __slots__ = ("flags", "meta", "meta_length", "meta_offset", "request_id", "size", "target_component", "target_system", "transfer_id",)
     MSG_ID: ClassVar[int] = 50000
@@ -19690,7 +19690,7 @@ class TtFileOffer(Message):
 
 
 class TtFileStatus(Message):
-    """TT_FILE_STATUS (id 50001): [sender: any] The receiver's view of a transfer: sent on accepting or refusing an offer, while data flows (regularly, when new gaps appear, and when data stops coming), and on completion. Bytes below received_contiguous have all arrived; in [region_start, received_end) everything arrived except the listed missing ranges. When there are more gaps than fit, several statuses describe successive regions. A sender takes a status for its own only if both transfer_id and meta_check match its offer."""
+    """TT_FILE_STATUS (id 50001): [sender: any] [runtime] The receiver's view of a transfer: sent on accepting or refusing an offer, while data flows (regularly, when new gaps appear, and when data stops coming), and on completion. Bytes below received_contiguous have all arrived; in [region_start, received_end) everything arrived except the listed missing ranges. When there are more gaps than fit, several statuses describe successive regions. A sender takes a status for its own only if both transfer_id and meta_check match its offer."""
 
     __slots__ = ("hold_ms", "last_offset", "meta_check", "range_count", "ranges", "received_contiguous", "received_end", "region_start", "result", "target_component", "target_system", "transfer_id",)
     MSG_ID: ClassVar[int] = 50001
@@ -19808,7 +19808,7 @@ class TtFileStatus(Message):
 
 
 class TtFileData(Message):
-    """TT_FILE_DATA (id 50002): [sender: any] File bytes in a frame that fills one 100-byte packet exactly. It carries min(80, size - offset) bytes: the count follows from the offer's size, so trailing zero bytes may be truncated on the wire."""
+    """TT_FILE_DATA (id 50002): [sender: any] [runtime] File bytes in a frame that fills one 100-byte packet exactly. It carries min(80, size - offset) bytes: the count follows from the offer's size, so trailing zero bytes may be truncated on the wire."""
 
     __slots__ = ("data", "offset", "transfer_id",)
     MSG_ID: ClassVar[int] = 50002
@@ -19864,7 +19864,7 @@ class TtFileData(Message):
 
 
 class TtFileRequest(Message):
-    """TT_FILE_REQUEST (id 50003): [sender: any] Ask the peer to send a file (download). The name is UTF-8, sent in parts like the offer's metadata. The peer answers with TT_FILE_OFFER (request_id echoed) or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or REQUEST_REFUSED, with a TT_FILE_REASON)."""
+    """TT_FILE_REQUEST (id 50003): [sender: any] [runtime] Ask the peer to send a file (download). The name is UTF-8, sent in parts like the offer's metadata. The peer answers with TT_FILE_OFFER (request_id echoed) or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or REQUEST_REFUSED, with a TT_FILE_REASON)."""
 
     __slots__ = ("name", "name_length", "name_offset", "request_id", "target_component", "target_system",)
     MSG_ID: ClassVar[int] = 50003
@@ -20356,7 +20356,7 @@ class TtLog(Message):
 
 
 class TtFileDataWide(Message):
-    """TT_FILE_DATA_WIDE (id 50009): [sender: any] [spans-packets] File bytes in a 267-byte frame that spans packets: less framing per byte, for when the transfer observes little loss. It carries min(247, size - offset) bytes; trailing zero bytes may be truncated on the wire."""
+    """TT_FILE_DATA_WIDE (id 50009): [sender: any] [runtime] [spans-packets] File bytes in a 267-byte frame that spans packets: less framing per byte, for when the transfer observes little loss. It carries min(247, size - offset) bytes; trailing zero bytes may be truncated on the wire."""
 
     __slots__ = ("data", "offset", "transfer_id",)
     MSG_ID: ClassVar[int] = 50009
@@ -20677,7 +20677,7 @@ class TtVrController(Message):
 
 
 class TtFileReason(Message):
-    """TT_FILE_REASON (id 50013): [sender: any] Why a transfer or a request was refused or failed, in words for people: sent just before each TT_FILE_STATUS that carries such a result (refused, failed, not found, request refused), so the sender can say what the receiver knows."""
+    """TT_FILE_REASON (id 50013): [sender: any] [runtime] Why a transfer or a request was refused or failed, in words for people: sent just before each TT_FILE_STATUS that carries such a result (refused, failed, not found, request refused), so the sender can say what the receiver knows."""
 
     __slots__ = ("result", "target_component", "target_system", "text", "transfer_id",)
     MSG_ID: ClassVar[int] = 50013

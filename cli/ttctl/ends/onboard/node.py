@@ -72,6 +72,9 @@ class OnboardNode:
         self._hb_due = 0.0
         self._closed = False
         self._log_id = 0
+        self._timers: list[list[Any]] = []  # [due, period, fn]
+        self._ctx = Context(send=self._send_dtt, log=self.log, sysid=cfg.sysid, compid=ONBOARD_COMPID,
+                            vehicle=self.vehicle, every=self._every)
 
     # -- wiring ---------------------------------------------------------------------------------
     def _unix(self, now: float) -> float:
@@ -90,13 +93,24 @@ class OnboardNode:
         self._log_id = self._log_id % 65535 + 1
         return self._log_id
 
-    def _plugin_error(self, msg: Any, e: BaseException) -> None:
-        self.log(f"plugin error on {msg.NAME}: {type(e).__name__}: {e}")
+    def _plugin_error(self, msg: Any, e: BaseException, where: str) -> None:
+        self.log(f"plugin {where} failed on {msg.NAME}: {type(e).__name__}: {e} (the node keeps running)")
 
     def context(self) -> Context:
-        ctx = Context(send=self._send_dtt, log=self.log, sysid=self.cfg.sysid, compid=ONBOARD_COMPID)
-        ctx.vehicle = self.vehicle  # type: ignore[attr-defined]
-        return ctx
+        return self._ctx
+
+    def _every(self, seconds: float, fn: Callable[[], None]) -> None:
+        self._timers.append([self.vehicle_time + seconds, seconds, fn])
+
+    def _run_timers(self) -> None:
+        for timer in self._timers:
+            due, period, fn = timer
+            if self.vehicle_time >= due:
+                timer[0] = max(due + period, self.vehicle_time)
+                try:
+                    fn()
+                except Exception as e:
+                    self.log(f"plugin timer {getattr(fn, '__qualname__', fn)} failed: {type(e).__name__}: {e}")
 
     def _send_dtt(self, msg: Any) -> None:
         if self.endpoint is not None:
@@ -164,8 +178,7 @@ class OnboardNode:
                 self.vehicle.goto(float(x), float(y), float(z))
             except Refused as e:
                 self.log(f"setpoint refused: {e}")
-        ctx = self.context()
-        self.dispatcher.dispatch(msg, ctx)
+        self.dispatcher.dispatch(msg, self._ctx)
 
     # -- telemetry to the tablet ----------------------------------------------------------------
     def _tablet_telemetry(self) -> None:
@@ -255,6 +268,7 @@ class OnboardNode:
             last = now
             self.vehicle_time += dt
             self.ap.step(self.vehicle_time, dt)
+            self._run_timers()
             self._send_gcs(self.gcs.tick(self.vehicle_time))
             if self.endpoint is not None:
                 if self.vehicle_time >= self._hb_due:

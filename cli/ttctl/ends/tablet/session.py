@@ -77,6 +77,7 @@ class TabletSession:
         self._changed = asyncio.Event()
         self._file_events: dict[Any, str] = {}
         self._log_parts: dict[int, dict[int, bytes]] = {}
+        self.heartbeats = 0
         self._hb_task: asyncio.Task[None] | None = None
 
     # -- life --------------------------------------------------------------------------------------
@@ -112,6 +113,7 @@ class TabletSession:
         v.heard = now
         self.link.frames += 1
         if isinstance(msg, ttapi.Heartbeat):
+            self.heartbeats += 1
             main, sub = (msg.custom_mode >> 16) & 0xFF, (msg.custom_mode >> 24) & 0xFF
             armed = bool(msg.base_mode & ttapi.MavModeFlag.MAV_MODE_FLAG_SAFETY_ARMED)
             state = STATES.get((main, sub), f"mode {main}/{sub}")
@@ -148,6 +150,14 @@ class TabletSession:
     def _on_file_event(self, what: str, obj: Any) -> None:
         self._file_events[obj] = what
         self._changed.set()
+
+    async def fresh_state(self, timeout: float = 3.0) -> None:
+        """Wait for the next HEARTBEAT: after a command, the state it reports is the one the
+        command made (a `wait until state == ...` right after would otherwise see the old one)."""
+        seen = self.heartbeats
+        end = asyncio.get_running_loop().time() + timeout
+        while self.heartbeats == seen and asyncio.get_running_loop().time() < end:
+            await self.changed(0.1)
 
     async def changed(self, timeout: float) -> None:
         self._changed.clear()

@@ -177,6 +177,7 @@ async def run_step(s: TabletSession, step: Step, base: Path) -> str:
         if not ok:
             why = [line for line in s.vehicle.log[heard:] if "refused" in line]  # the vehicle's own words
             raise StepError(f"{words} ({why[-1]})" if why else words)
+        await s.fresh_state()
         return words
     if name in ("goto", "move"):
         n, e, alt = _numbers(arg, 3, name)
@@ -184,6 +185,7 @@ async def run_step(s: TabletSession, step: Step, base: Path) -> str:
             v = s.vehicle
             n, e, alt = v.n + n, v.e + e, v.altitude + alt
         await s.setpoint(n, e, alt)
+        await s.fresh_state()
         return f"set-point {n:.1f} N, {e:.1f} E, {alt:.1f} m"
     if name == "send":
         path = (base / arg) if not Path(arg).is_absolute() else Path(arg)

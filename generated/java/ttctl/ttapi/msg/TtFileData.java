@@ -6,9 +6,9 @@ import ttctl.ttapi.runtime.Unsigned;
 import ttctl.ttapi.runtime.Wire;
 
 /**
- * TT_FILE_DATA (id 50002): [sender: any] File bytes in a frame that fills one 100-byte packet
- * exactly. It carries min(80, size - offset) bytes: the count follows from the offer's size, so
- * trailing zero bytes may be truncated on the wire.
+ * TT_FILE_DATA (id 50002): [sender: any] [runtime] File bytes in a frame that fills one 100-byte
+ * packet exactly. It carries min(80, size - offset) bytes: the count follows from the offer's size,
+ * so trailing zero bytes may be truncated on the wire.
  * <p>
  * Fields are public, named as in the XML, in XML order; their Java types follow the mapping in
  * {@link MavlinkMessage}: int8_t byte, uint8_t int, int16_t short, uint16_t int, int32_t int,

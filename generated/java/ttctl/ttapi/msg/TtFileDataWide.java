@@ -6,9 +6,9 @@ import ttctl.ttapi.runtime.Unsigned;
 import ttctl.ttapi.runtime.Wire;
 
 /**
- * TT_FILE_DATA_WIDE (id 50009): [sender: any] [spans-packets] File bytes in a 267-byte frame that
- * spans packets: less framing per byte, for when the transfer observes little loss. It carries
- * min(247, size - offset) bytes; trailing zero bytes may be truncated on the wire.
+ * TT_FILE_DATA_WIDE (id 50009): [sender: any] [runtime] [spans-packets] File bytes in a 267-byte
+ * frame that spans packets: less framing per byte, for when the transfer observes little loss. It
+ * carries min(247, size - offset) bytes; trailing zero bytes may be truncated on the wire.
  * <p>
  * Fields are public, named as in the XML, in XML order; their Java types follow the mapping in
  * {@link MavlinkMessage}: int8_t byte, uint8_t int, int16_t short, uint16_t int, int32_t int,

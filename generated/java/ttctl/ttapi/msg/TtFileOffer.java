@@ -6,7 +6,7 @@ import ttctl.ttapi.runtime.Unsigned;
 import ttctl.ttapi.runtime.Wire;
 
 /**
- * TT_FILE_OFFER (id 50000): [sender: any] Offer a file to the receiver, or answer a
+ * TT_FILE_OFFER (id 50000): [sender: any] [runtime] Offer a file to the receiver, or answer a
  * TT_FILE_REQUEST. The metadata blob is the file's 32-byte SHA-256 followed by its UTF-8 name (at
  * most 223 bytes); it is sent in parts (meta_offset, up to 71 bytes each), each part repeating the
  * other fields. The receiver answers with TT_FILE_STATUS; no file data is sent before it accepts.

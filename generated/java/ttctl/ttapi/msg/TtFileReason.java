@@ -6,9 +6,9 @@ import ttctl.ttapi.runtime.Unsigned;
 import ttctl.ttapi.runtime.Wire;
 
 /**
- * TT_FILE_REASON (id 50013): [sender: any] Why a transfer or a request was refused or failed, in
- * words for people: sent just before each TT_FILE_STATUS that carries such a result (refused,
- * failed, not found, request refused), so the sender can say what the receiver knows.
+ * TT_FILE_REASON (id 50013): [sender: any] [runtime] Why a transfer or a request was refused or
+ * failed, in words for people: sent just before each TT_FILE_STATUS that carries such a result
+ * (refused, failed, not found, request refused), so the sender can say what the receiver knows.
  * <p>
  * Fields are public, named as in the XML, in XML order; their Java types follow the mapping in
  * {@link MavlinkMessage}: int8_t byte, uint8_t int, int16_t short, uint16_t int, int32_t int,

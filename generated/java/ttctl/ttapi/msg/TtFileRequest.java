@@ -6,10 +6,10 @@ import ttctl.ttapi.runtime.Unsigned;
 import ttctl.ttapi.runtime.Wire;
 
 /**
- * TT_FILE_REQUEST (id 50003): [sender: any] Ask the peer to send a file (download). The name is
- * UTF-8, sent in parts like the offer's metadata. The peer answers with TT_FILE_OFFER (request_id
- * echoed) or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or REQUEST_REFUSED, with a
- * TT_FILE_REASON).
+ * TT_FILE_REQUEST (id 50003): [sender: any] [runtime] Ask the peer to send a file (download). The
+ * name is UTF-8, sent in parts like the offer's metadata. The peer answers with TT_FILE_OFFER
+ * (request_id echoed) or TT_FILE_STATUS (transfer_id = request_id, result NOT_FOUND or
+ * REQUEST_REFUSED, with a TT_FILE_REASON).
  * <p>
  * Fields are public, named as in the XML, in XML order; their Java types follow the mapping in
  * {@link MavlinkMessage}: int8_t byte, uint8_t int, int16_t short, uint16_t int, int32_t int,

@@ -6,12 +6,12 @@ import ttctl.ttapi.runtime.Unsigned;
 import ttctl.ttapi.runtime.Wire;
 
 /**
- * TT_FILE_STATUS (id 50001): [sender: any] The receiver's view of a transfer: sent on accepting or
- * refusing an offer, while data flows (regularly, when new gaps appear, and when data stops
- * coming), and on completion. Bytes below received_contiguous have all arrived; in [region_start,
- * received_end) everything arrived except the listed missing ranges. When there are more gaps than
- * fit, several statuses describe successive regions. A sender takes a status for its own only if
- * both transfer_id and meta_check match its offer.
+ * TT_FILE_STATUS (id 50001): [sender: any] [runtime] The receiver's view of a transfer: sent on
+ * accepting or refusing an offer, while data flows (regularly, when new gaps appear, and when data
+ * stops coming), and on completion. Bytes below received_contiguous have all arrived; in
+ * [region_start, received_end) everything arrived except the listed missing ranges. When there are
+ * more gaps than fit, several statuses describe successive regions. A sender takes a status for its
+ * own only if both transfer_id and meta_check match its offer.
  * <p>
  * Fields are public, named as in the XML, in XML order; their Java types follow the mapping in
  * {@link MavlinkMessage}: int8_t byte, uint8_t int, int16_t short, uint16_t int, int32_t int,
