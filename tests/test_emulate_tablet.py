@@ -153,3 +153,22 @@ def test_user_plugins_get_their_messages_and_one_that_raises_is_isolated(tmp_pat
     assert [line for line in log if line.startswith("pose")] == ["pose [2.0, 0.0, 3.0]", "pose [0.0, 0.0, 3.0]"]
     assert sum(line.startswith("tick") for line in log) >= 5 and any(line == "tick 3.0" for line in log)
     assert node.stderr.count("plugin Broken.explode failed on DJI_POSE_STAMPED: RuntimeError: boom") == 2  # type: ignore[attr-defined]
+
+
+def test_the_prompt_reads_commands_from_a_pipe(tmp_path: Path, start: Start) -> None:
+    import subprocess
+
+    from conftest import ttctl_cmd
+
+    port = free_port()
+    vehicle(start, tmp_path, port)
+    lines = "takeoff 3\nwait until state == hovering timeout 40\nbogus 1\nwatch 1.5\nmove 1 0 0\nstatus\nland\nquit\n"
+    proc = subprocess.run(ttctl_cmd() + ["emulate", "tablet", "--to", f"udpout:{LOCAL}:{port}"], input=lines,
+                          capture_output=True, text=True, timeout=120)
+    assert_no_traceback(proc)
+    assert proc.returncode == 0, proc.stderr
+    out = proc.stdout.splitlines()
+    assert "take_off: accepted" in out and "state == hovering" in out and "land: accepted" in out
+    assert sum("hovering (armed)" in line for line in out) >= 2  # watch printed lines, then status
+    assert any(line.startswith("set-point 1.0 N, 0.0 E, 3.0 m") for line in out)
+    assert "ttctl: unknown step 'bogus'" in proc.stderr  # a bad line is said and skipped, the prompt goes on

@@ -115,3 +115,15 @@ def bench_integrity(
     from ..bench.integrity import main as integrity_main
 
     raise typer.Exit(integrity_main(rounds, seed, topology, strangers, keep, json_out))
+
+
+@bench_app.command("ends")
+def bench_ends(
+    seconds: Annotated[float, typer.Option("--seconds", help="Length of each phase.", min=2, max=600)] = 10.0,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+) -> None:
+    """The onboard end's cost on one core: idle at default telemetry, and loaded (50 Hz telemetry on
+    both links plus a file download at full link rate): core share and event-loop lag."""
+    from ..bench.ends import run
+
+    raise typer.Exit(run(seconds, json_out))

@@ -13,7 +13,7 @@ from ..errors import Fail
 from .common import ONBOARD, Signals, err, link_choice, parse_endpoint
 
 HELP = ("takeoff [ALT] | land | hover | return | goto N E ALT | move DN DE DALT | fly FILE | send FILE | "
-        "fetch NAME | wait SECONDS | wait until FIELD OP VALUE [timeout S] | status | quit")
+        "fetch NAME | wait SECONDS | wait until FIELD OP VALUE [timeout S] | status | watch [SECONDS] | quit")
 
 
 @dataclass
@@ -49,6 +49,8 @@ def _prompt_step(line: str) -> Any:
             arg = {"until": text} | ({"timeout": timeout} if timeout is not None else {})
         elif name == "wait":
             arg = float(rest[0]) if rest else 1.0
+        elif name == "watch":
+            arg = float(rest[0]) if rest else 10.0
         elif name in ("fly", "send", "fetch"):
             arg = " ".join(rest) or None
         else:

@@ -22,7 +22,7 @@ from typing import Any
 from ..link.transport import Transport
 from ..proto.endpoint import Endpoint
 
-BURST = 64  # packets sent without yielding to the loop (receives get their turn)
+BURST = 16  # packets sent without yielding to the loop (receives and timers get their turn)
 SPIN_GUARD = 0.001  # least sleep when a wake-up time is already past but nothing went out
 CATCH_UP = 0.002  # a late wake-up by up to this much keeps the pacer's schedule (timer granularity)
 QUIET_MIN, QUIET_MAX = 0.02, 2.0

@@ -32,7 +32,8 @@ TT = ttapi.TtAction
 RES = ttapi.TtResult
 ONBOARD_COMPID = 240
 AUTOPILOT_COMPID = 1
-STEP = 0.02  # s of wall clock between vehicle steps
+STEP = 0.02  # s of wall clock between vehicle steps in the air
+STEP_GROUND = 0.1  # ... and on the ground, disarmed (nothing moves)
 
 
 @dataclass
@@ -280,8 +281,13 @@ class OnboardNode:
                 if self.runner is not None:
                     self.runner.kick()
             self._wake.clear()
+            idle = self.vehicle.state is State.LANDED and not self.vehicle.armed
+            step = STEP_GROUND if idle else STEP
+            due = self.gcs.wakeup()
+            if due is not None:
+                step = min(step, max(0.001, (due - self.vehicle_time) / self.cfg.speed))
             with contextlib.suppress(TimeoutError):
-                await asyncio.wait_for(self._wake.wait(), STEP)
+                await asyncio.wait_for(self._wake.wait(), step)
 
     async def close(self) -> None:
         self._closed = True

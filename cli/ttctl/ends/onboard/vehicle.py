@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from typing import Protocol
 
 EARTH_RADIUS = 6_378_137.0  # WGS84 semi-major axis, metres
+MIN_ALT = 0.5  # m: set-points lower than this are refused (landing is its own command)
 GRAVITY = 9.80665
 
 
@@ -204,6 +205,8 @@ class SimVehicle:
     def goto(self, n: float, e: float, alt: float, yaw: float | None = None) -> None:
         self._finite(n, e, alt, yaw)
         alt = self._alt(alt)
+        if alt < MIN_ALT:
+            raise Refused(f"altitude {alt:g} m is below {MIN_ALT:g} m: land instead")
         if self.state is State.LANDED:
             raise Refused("on the ground: take off first")
         if self.state is State.LANDING:

@@ -15,6 +15,7 @@ A script is a YAML list; each item is one step, a name with its argument:
     - fetch: results.csv            # from the vehicle's served folder
     - wait: 2                       # seconds
     - status
+    - watch: 10                     # a live view of the vehicle and the link for 10 s
 
 `until` is one or more `FIELD OP VALUE` joined by `and`; fields: state, armed, altitude, n, e,
 speed; operators >=, <=, >, <, ==, !=. A step fails with a reason; the script stops at the first
@@ -36,7 +37,7 @@ import ttapi
 from .session import TabletSession
 
 A = ttapi.TtAction
-NAMES = ("takeoff", "land", "hover", "return", "goto", "move", "fly", "send", "fetch", "wait", "status")
+NAMES = ("takeoff", "land", "hover", "return", "goto", "move", "fly", "send", "fetch", "wait", "status", "watch")
 FIELDS = ("state", "armed", "altitude", "n", "e", "speed")
 _COND = re.compile(r"^\s*(\w+)\s*(>=|<=|==|!=|>|<)\s*(.+?)\s*$")
 
@@ -160,6 +161,8 @@ def check_step(name: str, arg: Any, where: str = "") -> Step:
                 _numbers([arg["timeout"]], 1, "timeout")
         else:
             raise StepError("wait wants seconds, or {until: CONDITION, timeout: SECONDS}")
+    elif name == "watch" and arg is not None and not (isinstance(arg, (int, float)) and 0 < float(arg) <= 3600):
+        raise StepError("watch wants 1..3600 seconds")
     elif name in ("land", "hover", "return", "status") and arg not in (None, {}):
         raise StepError(f"{name} takes no argument")
     return Step(name, arg, where)
@@ -214,7 +217,47 @@ async def run_step(s: TabletSession, step: Step, base: Path) -> str:
         return f"{arg['until']}"
     if name == "status":
         return status_line(s)
+    if name == "watch":
+        return await watch(s, float(arg) if arg is not None else 10.0)
     raise StepError(f"unknown step {name!r}")
+
+
+async def watch(s: TabletSession, seconds: float) -> str:
+    """A live view of the vehicle and the link for `seconds` (a table redrawn four times a
+    second where the output is a terminal; lines otherwise)."""
+    from rich.console import Console
+    from rich.live import Live
+    from rich.table import Table
+
+    console = Console()
+
+    def view() -> Table:
+        v, link = s.vehicle, s.link
+        loop = asyncio.get_running_loop()
+        t = Table(title="vehicle and link", show_header=False)
+        t.add_row("state", f"{v.state}{' (armed)' if v.armed else ''}")
+        t.add_row("position", f"{v.n:.1f} m N, {v.e:.1f} m E, {v.altitude:.1f} m up, {v.speed:.1f} m/s")
+        t.add_row("GNSS", f"{v.lat:.6f}, {v.lon:.6f}")
+        t.add_row("heard", f"{loop.time() - v.heard:.1f} s ago" if v.heard is not None else "never")
+        t.add_row("link", f"{link.frames} frames in, {s.runner.stats.packets_in} packets in, "
+                          f"{s.runner.stats.packets_out} out" + (f", command RTT {link.rtt_ms:.0f} ms"
+                                                                 if link.rtt_ms is not None else ""))
+        transfers = [f"{x.name}: {x.acked_bytes}/{x.size} B" for x in s.ep.senders.values() if not x.done]
+        t.add_row("transfers", ", ".join(transfers) or "none")
+        t.add_row("last log", v.log[-1] if v.log else "")
+        return t
+
+    end = asyncio.get_running_loop().time() + seconds
+    if console.is_terminal:
+        with Live(view(), console=console, refresh_per_second=4) as live:
+            while asyncio.get_running_loop().time() < end:
+                await asyncio.sleep(0.25)
+                live.update(view())
+    else:
+        while asyncio.get_running_loop().time() < end:
+            await asyncio.sleep(min(1.0, max(0.0, end - asyncio.get_running_loop().time())))
+            print(status_line(s), flush=True)
+    return status_line(s)
 
 
 def status_line(s: TabletSession) -> str:
