@@ -172,3 +172,20 @@ def test_the_prompt_reads_commands_from_a_pipe(tmp_path: Path, start: Start) -> 
     assert sum("hovering (armed)" in line for line in out) >= 2  # watch printed lines, then status
     assert any(line.startswith("set-point 1.0 N, 0.0 E, 3.0 m") for line in out)
     assert "ttctl: unknown step 'bogus'" in proc.stderr  # a bad line is said and skipped, the prompt goes on
+
+
+def test_at_300_m_the_script_fails_cleanly(tmp_path: Path, start: Start) -> None:
+    """Out of range (the M100 model loses every uplink packet by 300 m): nothing the tablet says
+    arrives, so the vehicle never learns where to answer either; the script ends, in one line,
+    before any step."""
+    (tmp_path / "flight.yaml").write_text(MISSION)
+    (tmp_path / "square.yaml").write_text(SQUARE)
+    air, port = free_port(), free_port()
+    relay(start, air, port, "--profile", "m100", "--distance", "300", "--seed", "2", "--stats-interval", "0")
+    node = vehicle(start, tmp_path, port)
+    proc = run_ttctl("emulate", "tablet", "--to", f"udpout:{LOCAL}:{air}", "--script", str(tmp_path / "flight.yaml"),
+                     "--profile", "m100", "--distance", "300", timeout=120)
+    assert_no_traceback(proc)
+    assert proc.returncode == 1
+    assert one_line(proc.stderr) == f"ttctl: error: no vehicle answered at udpout:{LOCAL}:{air} within 15 s"
+    assert "taking off" not in node.stderr  # type: ignore[attr-defined]
