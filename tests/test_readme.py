@@ -68,17 +68,63 @@ def matches(expected: list[str], got: list[str]) -> bool:
     return bool(got) and got[0] == expected[0] and matches(expected[1:], got[1:])
 
 
-@pytest.mark.parametrize("heading", ["ttctl validate", "ttctl gen"])
-def test_readme_examples_are_what_the_commands_print(heading: str, tmp_path: Path) -> None:
+@pytest.mark.parametrize(("heading", "columns", "least"),
+                         [("ttctl validate", 200, 3), ("ttctl gen", 200, 3), ("ttctl bench link", 80, 1)])
+def test_readme_examples_are_what_the_commands_print(heading: str, columns: int, least: int, tmp_path: Path) -> None:
     """Each example runs as shown (from a folder where `dialects/` and `tests/` are the
-    repository's) and prints what the README says it prints."""
+    repository's, and `docs/` takes plots) and prints what the README says it prints: the
+    tours of validate and gen, and bench link's (virtual time: the same every run), as a
+    terminal `columns` wide shows it."""
+    if heading == "ttctl bench link":
+        pytest.importorskip("matplotlib")
     (tmp_path / "dialects").symlink_to(ROOT / "dialects")
     (tmp_path / "tests").symlink_to(ROOT / "tests")
+    (tmp_path / "docs").mkdir()
     examples = [(c, e) for c, e in console_examples(heading) if "ttctl " in c and "conformance" not in c]
-    assert len(examples) >= 3, examples
+    assert len(examples) >= least, examples
     env = {**os.environ, "PATH": f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}",
-           "COLUMNS": "200"}
+           "COLUMNS": str(columns)}
     for cmd, expected in examples:
         proc = subprocess.run(cmd, shell=True, cwd=tmp_path, capture_output=True, text=True, env=env, timeout=300)
-        got = [line for line in (proc.stdout + proc.stderr).rstrip("\n").split("\n") if line != ""]
+        got = [line.rstrip() for line in (proc.stdout + proc.stderr).rstrip("\n").split("\n") if line.strip()]
         assert matches(expected, got), f"$ {cmd}\nREADME:\n" + "\n".join(expected) + "\nprints:\n" + "\n".join(got)
+
+
+def _options(cmd: object) -> dict[str, str]:
+    """Every spelling of every option of a click command -> the option's name."""
+    out = {}
+    for p in getattr(cmd, "params", []):
+        if getattr(p, "param_type_name", "") == "option":
+            for o in [*p.opts, *p.secondary_opts]:
+                out[o] = p.name
+    return out
+
+
+# tours whose heading is the command's full synopsis: every option it has, in brackets
+FULL_SYNOPSIS = ["ttctl validate", "ttctl gen", "ttctl bench validate", "ttctl bench gen", "ttctl bench transfer",
+                 "ttctl bench link"]
+
+
+def test_synopses_are_the_commands_options() -> None:
+    """A heading names only options the command has; the full synopses name all of them."""
+    from typer.main import get_command
+
+    from ttctl.app import app
+
+    text = (ROOT / "README.md").read_text()
+    group = get_command(app)
+    checked = []
+    for name, cmd in group.commands.items():  # type: ignore[attr-defined]
+        subs = getattr(cmd, "commands", None)
+        for full, c in ([(f"ttctl {name} {s}", sc) for s, sc in subs.items()] if subs else [(f"ttctl {name}", cmd)]):
+            m = re.search(r"^### `" + re.escape(full) + r"(?: ([^`]*))?`", text, re.M)
+            if m is None:
+                continue  # test_readme_tours_every_subcommand says so
+            listed = set(re.findall(r"(?<![\w-])(--?[A-Za-z][\w-]*)", m.group(1) or ""))
+            real = _options(c)
+            assert listed <= set(real), f"{full}: the README names {sorted(listed - set(real))}, which it lacks"
+            if full in FULL_SYNOPSIS:
+                missing = {n for o, n in real.items() if n != "help"} - {real[o] for o in listed}
+                assert not missing, f"{full}: the README's synopsis lacks {sorted(missing)}"
+                checked.append(full)
+    assert sorted(checked) == sorted(FULL_SYNOPSIS)

@@ -6,12 +6,18 @@ them, so that `ttctl validate` starts fast.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import sys
 from pathlib import Path
 from typing import Annotated
 
 import typer
+
+try:  # typer >= 0.26 vendors click
+    from typer._click.exceptions import ClickException
+except ImportError:
+    from click.exceptions import ClickException
 
 from . import __version__
 from .commands.bench_cli import bench_app
@@ -256,17 +262,22 @@ def link_relay(
     raise typer.Exit(code)
 
 
-def main() -> None:
-    """Console entry point: clean one-line errors instead of tracebacks."""
-    try:  # typer >= 0.26 vendors click
-        from typer._click.exceptions import ClickException
-    except ImportError:
-        from click.exceptions import ClickException
+def _interrupted(signum: int, frame: object) -> None:
+    """Ctrl-C once the command is over (while reporting, or during interpreter teardown)."""
+    try:
+        sys.stderr.write("ttctl: interrupted\n")
+        sys.stderr.flush()
+    finally:
+        os._exit(130)
 
+
+def _run() -> int:
+    """Run the command line; returns the exit status, having printed any failure as one line."""
     try:
         code = app(standalone_mode=False)
     except ClickException as e:
-        # usage errors as one line, not a box
+        # usage errors as one line, not a box; always `ttctl: error:` (click would start them
+        # with the command path), the subcommand in the hint
         ctx = getattr(e, "ctx", None)
         where = ctx.command_path if ctx is not None else "ttctl"
         msg = e.format_message()
@@ -275,33 +286,49 @@ def main() -> None:
             msg = msg[: msg.rindex(hint)]
         if msg.strip():  # a group called without a command has printed its help already
             print(f"ttctl: error: {msg} (see '{where} --help')", file=sys.stderr)
-        sys.exit(e.exit_code)
+        return e.exit_code
     except typer.Abort:  # click's word for a KeyboardInterrupt inside a command
         print("ttctl: interrupted", file=sys.stderr)
-        sys.exit(130)
+        return 130
     except Fail as e:
         print(f"ttctl: error: {e}", file=sys.stderr)
-        sys.exit(e.code)
+        return e.code
     except KeyboardInterrupt:
         print("ttctl: interrupted", file=sys.stderr)
-        sys.exit(130)
+        return 130
     except BrokenPipeError:
         sys.stderr.close()
-        sys.exit(1)
+        return 1
     except Exception as e:
         if os.environ.get("TTCTL_DEBUG"):
             raise
         print(f"ttctl: internal error: {type(e).__name__}: {e} (set TTCTL_DEBUG=1 for a traceback)",
               file=sys.stderr)
-        sys.exit(3)
+        return 3
     code = code if isinstance(code, int) else 0
     if code == 130:  # typer turns Ctrl-C into a quiet exit 130
         print("ttctl: interrupted", file=sys.stderr)
+    return code
+
+
+def main() -> None:
+    """Console entry point: clean one-line errors instead of tracebacks, and Ctrl-C at any
+    moment one quiet line and exit 130 (`ttctl.entry` covers the imports before this)."""
+    import signal
+
+    try:
+        code = _run()
+    except KeyboardInterrupt:  # while a failure was being reported
+        with contextlib.suppress(Exception):
+            print("ttctl: interrupted", file=sys.stderr)
+        code = 130
+    with contextlib.suppress(ValueError):  # the main thread, always, but do not fail over it
+        signal.signal(signal.SIGINT, _interrupted)
     if _fast_exit:
         try:
             sys.stdout.flush()
             sys.stderr.flush()
-        except BrokenPipeError:
+        except (BrokenPipeError, ValueError):
             code = code or 1
         os._exit(code)
     sys.exit(code)

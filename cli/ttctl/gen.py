@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
 import shutil
 import sys
@@ -33,6 +34,13 @@ def parse_langs(spec: str) -> list[str]:
 def check_out_dir(out: Path, check: bool) -> None:
     """GenError unless `out` is a writable directory or can be made one. Creates nothing: the
     tree is only made once there is something to write."""
+    try:
+        _check_out_dir(out, check)
+    except OSError as e:  # a name too long, a loop of symlinks...
+        raise GenError(f"output path {out}: {e.strerror or e}", 2) from None
+
+
+def _check_out_dir(out: Path, check: bool) -> None:
     if out.exists() and not out.is_dir():
         raise GenError(f"output path {out} exists and is not a directory", 2)
     if check:
@@ -53,6 +61,26 @@ def check_include_dirs(include_dirs: list[str]) -> None:
         problem = include_dir_problem(d)
         if problem:
             raise GenError(problem, 2)
+
+
+def _take_back(created: list[Path]) -> None:
+    """Remove what a failed run made (newest first), deaf to a second Ctrl-C meanwhile."""
+    import signal
+
+    try:
+        previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    except ValueError:  # not the main thread
+        previous = None
+    try:
+        for p in reversed(created):
+            if os.path.isdir(p) and not os.path.islink(p):
+                shutil.rmtree(p, ignore_errors=True)
+            else:
+                with contextlib.suppress(OSError):  # not made after all (missing, a name too long)
+                    os.unlink(p)
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGINT, previous)
 
 
 def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool, force_skeletons: bool,
@@ -90,12 +118,11 @@ def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool
             raise GenError(f"template error: {where}{e}", 2) from None
         raise
     owned = [p for lang in langs for p in language(lang).owned_dirs(dialect)]
-    fresh = not out.exists()
+    created: list[Path] = []
     try:
-        report = write_tree(out, rendered, owned, check, force_skeletons)
+        report = write_tree(out, rendered, owned, check, force_skeletons, created)
     except BaseException as e:  # a full disk, a permission, Ctrl-C
-        if fresh:  # all of it was ours: leave no half-made tree
-            shutil.rmtree(out, ignore_errors=True)
+        _take_back(created)  # leave no file or folder this run made
         if isinstance(e, OSError):
             raise GenError(f"cannot write {e.filename or out}: {e.strerror or e}", 2) from None
         raise

@@ -52,12 +52,16 @@ def output_problem(path: str) -> str | None:
 
 
 def save_atomically(fig: Any, path: str) -> None:
-    """Write the PNG beside its final name, then rename: never a partial file under it."""
+    """Write the PNG beside its final name, then rename: never a partial file under it. It
+    gets the mode an ordinary new file would (mkstemp's are 0600)."""
     folder = os.path.dirname(os.path.abspath(path))
     fd, tmp = tempfile.mkstemp(prefix=f".{os.path.basename(path)}.", suffix=".tmp", dir=folder)
     try:
         with os.fdopen(fd, "wb") as fh:
             fig.savefig(fh, format="png", dpi=110)
+        mask = os.umask(0)
+        os.umask(mask)
+        os.chmod(tmp, 0o666 & ~mask)
         os.replace(tmp, path)
     except BaseException:
         with contextlib.suppress(OSError):

@@ -208,6 +208,7 @@ def _atomic_write(path: Path, text: str, new: bool = False, created: list[Path] 
     try:
         with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
             fh.write(text)
+        os.chmod(tmp, _mode_of(path))  # mkstemp makes it 0600: keep the mode the file had
         os.replace(tmp, path)
     except BaseException as e:
         if os.path.exists(tmp):
@@ -215,6 +216,16 @@ def _atomic_write(path: Path, text: str, new: bool = False, created: list[Path] 
         if isinstance(e, OSError):
             raise OSError(e.errno, e.strerror, str(path)) from None
         raise
+
+
+def _mode_of(path: Path) -> int:
+    """The permission bits of the file at `path`, or what a new file would get."""
+    try:
+        return os.stat(path).st_mode & 0o7777
+    except OSError:
+        mask = os.umask(0)
+        os.umask(mask)
+        return 0o666 & ~mask
 
 
 def _read(path: Path) -> str | None:

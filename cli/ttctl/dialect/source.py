@@ -142,6 +142,7 @@ _XSD_ATTR_RE = re.compile(r"^Element '([^']+)'(?:, attribute '([^']+)')?: (.*)$"
 
 
 SLICE = 500  # element children per container in one validation unit
+_LAST_LINE = 65535  # libxml2 keeps a node's line in 16 bits: a copy of a later node has none
 
 # What a later slice of a container repeats from its start so that its slice is read in the same
 # context: the children before the first repeated one (description, wip, deprecated...), and
@@ -154,10 +155,10 @@ def _units(root: Any) -> tuple[list[Any], dict[Any, Any]]:
     in which no element has more than about SLICE children. libxml2 names each error's node by
     its position among its siblings, which costs as many steps as there are siblings before
     it: 60,000 broken messages (or 200,000 broken fields of one message) took minutes in one
-    piece, a second in slices. Every element is in some piece; pieces keep source lines and
-    repeat what they need around a slice (an ancestor's leading children, an empty
-    <messages/>). Also returns, for each element copied without its children into several
-    pieces, the original element."""
+    piece, a second in pieces. Every element is in some piece; pieces repeat what they need
+    around a slice (an ancestor's leading children, an empty <messages/>). Also returns the
+    original of every element a piece holds directly (copies deeper down mirror their
+    original child for child)."""
     marked = _big_containers(root)
     if not marked:
         return [root.getroottree()], {}
@@ -182,16 +183,21 @@ def _big_containers(root: Any) -> set[Any]:
 
 
 def _shell(el: Any) -> Any:
-    """A copy of `el` without its children, on its source line, in a document of its own."""
+    """A copy of `el` without its children, in a document of its own."""
     from lxml import etree
 
     c = etree.Element(el.tag, dict(el.attrib))
     c.text = el.text
-    c.sourceline = el.sourceline
+    if el.sourceline is not None and el.sourceline < _LAST_LINE:
+        c.sourceline = el.sourceline
     return c
 
 
 def _pieces(el: Any, marked: set[Any], origin: dict[Any, Any]) -> list[Any]:
+    """Copies of `el` that hold all of it between them: each has its leading children (the
+    context), then a slice of the rest, after the last child of the slice before (so that an
+    order broken across two slices is still seen); a child that is too large itself comes in
+    pieces of its own."""
     import copy
 
     if el not in marked:
@@ -201,59 +207,73 @@ def _pieces(el: Any, marked: set[Any], origin: dict[Any, Any]) -> list[Any]:
     repeated = _REPEATED.get(el.tag)
     if repeated is not None:
         for k in kids:
-            if k.tag == repeated:
-                if el.tag == "message":
-                    context.append(k)
-                break
             context.append(k)
+            if k.tag == repeated:
+                if el.tag != "message":
+                    context.pop()
+                break
+    rest = kids[len(context):]
 
     def piece(lead: list[Any]) -> Any:
         p = _shell(el)
         origin[p] = el
-        p.extend(copy.deepcopy(k) for k in lead)
+        for k in lead:
+            c = copy.deepcopy(k)
+            origin[c] = k
+            p.append(c)
         return p
 
     pieces = []
     i = 0
-    while i < len(kids):
+    while True:
         end = i + SLICE
-        while end < len(kids) and kids[end - 1].tag == "extensions":
+        while end < len(rest) and rest[end - 1].tag == "extensions":
             end += 1  # <extensions/> needs the field after it in the same piece
-        group = kids[i:end]
-        i = end
-        main = piece([k for k in context if k not in group])
+        before = rest[i - 1:i] if i and rest[i - 1] not in marked else []  # a large one has its own pieces
+        main = piece(context + before)
         extra = []
-        for k in group:
+        for k in rest[i:end]:
             sub = _pieces(k, marked, origin)
+            origin.setdefault(sub[0], k)
             main.append(sub[0])
             for s in sub[1:]:
-                p = piece([c for c in context if c is not k])
+                p = piece(context)
                 p.append(s)
                 extra.append(p)
         pieces.append(main)
         pieces.extend(extra)
-    return pieces
+        i = end
+        if i >= len(rest):
+            return pieces
 
 
-_CONTENT_ERRORS = ("This element is not expected", "Missing child element")
-
-
-def _sliced_parent(unit: Any, err: Any, origin: dict[Any, Any]) -> Any:
-    """For an error about an element's content (reported once per element) in a piece, the
-    original element whose content it is, if that element was split across pieces."""
-    if not any(t in err.message for t in _CONTENT_ERRORS) or not err.path:
-        return None
+def _original(unit: Any, err: Any, origin: dict[Any, Any]) -> Any:
+    """The element of the parsed document an error in a piece is about, or None."""
     from lxml import etree
 
-    steps = err.path.split("/", 2)  # "/mavlink/messages/message[3]": from the piece's root
+    steps = (err.path or "").split("/", 2)  # "/mavlink/messages/message[3]": from the piece's root
+    if len(steps) < 2:
+        return None
     try:
-        nodes = unit.xpath(steps[2]) if len(steps) > 2 else [unit]
+        found = unit.xpath(steps[2]) if len(steps) > 2 else [unit]
     except etree.XPathError:
         return None
-    if not nodes or not isinstance(nodes[0], etree._Element):
+    node = found[0] if found and isinstance(found[0], etree._Element) else None
+    way: list[int] = []
+    while node is not None and node not in origin:  # up to an element whose original is known
+        parent = node.getparent()
+        if parent is not None:
+            way.append(parent.index(node))  # copies keep comments: the same index as in the original
+        node = parent
+    if node is None:
         return None
-    node = nodes[0] if "Missing child element" in err.message else nodes[0].getparent()
-    return origin.get(node)
+    original = origin[node]
+    for i in reversed(way):
+        original = original[i]
+    return original
+
+
+_NOT_EXPECTED, _MISSING_CHILD = "This element is not expected", "Missing child element"
 
 
 def schema_check(pf: ParsedFile, rep: Reporter, covered: set[tuple[int, str | None]]) -> None:
@@ -263,31 +283,40 @@ def schema_check(pf: ParsedFile, rep: Reporter, covered: set[tuple[int, str | No
         rep.raw(pf.path, 1, 1, "warning", "XSD", "pymavlink's mavschema.xsd not found; schema check skipped")
         return
     units, origin = _units(pf.root)
-    found = []
-    seen: set[tuple[int, str]] = set()
+    found: list[tuple[int, str, Any]] = []  # line, message, whose content it is about (pieces only)
     for unit in units:
         if schema.validate(unit):
             continue
         for err in schema.error_log:
-            if (err.line, err.message) not in seen:  # what several pieces repeat, once
-                seen.add((err.line, err.message))
-                found.append((err, _sliced_parent(unit, err, origin) if origin else None))
-    found.sort(key=lambda e: e[0].line)
-    errors = []
-    parents: set[Any] = set()
-    for err, parent in found:
-        if parent is not None:  # libxml2 reports one content error per element: so do the pieces
-            if parent in parents:
+            line, owner = err.line, None
+            content = _NOT_EXPECTED in err.message or _MISSING_CHILD in err.message
+            if origin and (content or not 0 < line < _LAST_LINE):
+                node = _original(unit, err, origin)
+                if node is not None:
+                    line = node.sourceline or line
+                    if content:
+                        owner = node if _MISSING_CHILD in err.message else node.getparent()
+            found.append((line, err.message, owner))
+    found.sort(key=lambda e: e[0])
+    errors: list[tuple[int, str]] = []
+    seen: set[tuple[int, str]] = set()
+    owners: set[Any] = set()
+    for line, message, owner in found:
+        if (line, message) in seen:  # what several pieces repeat, once
+            continue
+        seen.add((line, message))
+        if owner is not None:  # as libxml2 in one piece: one error per element about its content
+            if owner in owners:
                 continue
-            parents.add(parent)
-        errors.append(err)
-    for err in errors:
-        m = _XSD_ATTR_RE.match(err.message)
-        tag, attr, text = (m.group(1), m.group(2), m.group(3)) if m else (None, None, err.message)
-        if (err.line, attr) in covered or (err.line, "*") in covered:
+            owners.add(owner)
+        errors.append((line, message))
+    for line, message in errors:
+        m = _XSD_ATTR_RE.match(message)
+        tag, attr, text = (m.group(1), m.group(2), m.group(3)) if m else (None, None, message)
+        if (line, attr) in covered or (line, "*") in covered:
             continue
         text = " ".join(text.split())
         text = text.replace("[facet 'pattern'] ", "")
         what = f"<{tag}>" + (f" attribute '{attr}'" if attr else "") if tag else ""
-        loc = Loc(pf.source, err.line, tag, attr)
+        loc = Loc(pf.source, line, tag, attr)
         rep.error(loc, "XSD", f"{what}: {text}" if what else text)
