@@ -22,6 +22,7 @@ except ImportError:
 from . import __version__
 from .commands.bench_cli import bench_app
 from .commands.emulate_cli import emulate_app
+from .commands.hmd_cli import hmd_app
 from .commands.options import DistanceOpt, JsonOpt, ProfileOpt, RateOpt
 from .errors import Fail
 
@@ -127,6 +128,7 @@ def gen(
 link_app = typer.Typer(help="The emulated DJI link between processes.", no_args_is_help=True)
 app.add_typer(link_app, name="link")
 app.add_typer(emulate_app, name="emulate")
+app.add_typer(hmd_app, name="hmd")
 
 
 @app.command("recv-file")

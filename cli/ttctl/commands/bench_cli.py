@@ -127,3 +127,22 @@ def bench_ends(
     from ..bench.ends import run
 
     raise typer.Exit(run(seconds, json_out))
+
+
+@bench_app.command("hmd")
+def bench_hmd(
+    seconds: Annotated[float, typer.Option("--seconds", help="Length of the long recording run.", min=4,
+                                           max=600)] = 20.0,
+    runs: Annotated[int, typer.Option("--runs", help="Runs of each measurement (the median is reported).", min=1,
+                                      max=20)] = 3,
+    replay_minutes: Annotated[float, typer.Option("--replay-minutes", help="Length of the recording replayed "
+                                                                           "with --speed 0.", min=0.1,
+                                                  max=60)] = 10.0,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+) -> None:
+    """What recording VR poses costs: `ttctl hmd dump` of the synthetic source (90 Hz headset, 2 x 250 Hz
+    controllers) to MCAP as a share of one core (ceiling 10 %), and replaying a 10-minute recording
+    with --speed 0 (ceiling 10 s)."""
+    from ..bench.hmd import run
+
+    raise typer.Exit(run(seconds, runs, replay_minutes, json_out))

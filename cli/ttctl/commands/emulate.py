@@ -33,6 +33,7 @@ class OnboardOptions:
     plugins: list[str] = field(default_factory=list)
     no_entry_points: bool = False
     telemetry_hz: float = 2.0
+    orbit_hz: float = 10.0
 
 
 def _home(text: str | None) -> Any:
@@ -81,7 +82,8 @@ def emulate_onboard(o: OnboardOptions) -> int:
     except PluginError as e:
         raise Fail(f"--plugin {e}") from None
     cfg = OnboardConfig(sysid=o.sysid, dtt=dtt, gcs=gcs, inbox=o.inbox, serve=o.serve, home=_home(o.home),
-                        speed=o.speed, rate_Bps=link.pace_Bps, telemetry_hz=o.telemetry_hz)
+                        speed=o.speed, rate_Bps=link.pace_Bps, telemetry_hz=o.telemetry_hz,
+                        orbit_hz=o.orbit_hz)
 
     async def main() -> None:
         from ..link.transport import TransportError

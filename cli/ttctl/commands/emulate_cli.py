@@ -36,6 +36,10 @@ def emulate_onboard_cmd(
     = False,
     telemetry_hz: Annotated[float, typer.Option("--telemetry-hz", help="TT_NAV_SAT_FIX and TT_ODOMETRY to the "
                                                                        "tablet, per second.")] = 2.0,
+    orbit_hz: Annotated[float, typer.Option("--orbit-hz", help="The orbit camera (steered by head poses from "
+                                                               "`ttctl hmd dump --to`): published this many times "
+                                                               "a second while they arrive; 0 turns it off.",
+                                            min=0, max=50)] = 10.0,
     rate: RateOpt = None,
     profile: ProfileOpt = None,
     distance: DistanceOpt = 10.0,
@@ -50,7 +54,7 @@ def emulate_onboard_cmd(
 
     raise typer.Exit(emulate_onboard(OnboardOptions(listen, gcs or [], no_gcs, sysid, inbox, serve, home, speed,
                                                     rate, profile, distance, plugin or [], no_entry_points,
-                                                    telemetry_hz)))
+                                                    telemetry_hz, orbit_hz)))
 
 
 @emulate_app.command("tablet")

@@ -20,16 +20,21 @@ Handler = Callable[[Any, "Context"], None]
 
 
 class Context:
-    """What a handler gets besides the message: a way to answer, to log, to run something every so
-    often (`every(seconds, fn)`), and the vehicle (`vehicle.snapshot()` for its state) when the
-    end has one."""
+    """What a handler gets besides the message: a way to answer the tablet (`send`) and to tell
+    the ground stations (`send_gcs`), to log, to run something every so often (`every(seconds,
+    fn)`), the vehicle (`vehicle.snapshot()` for its state) when the end has one, and `shared`,
+    a dict plugins read each other's results from (the orbit camera puts its latest `Camera`
+    under "orbit_camera")."""
 
     def __init__(self, send: Callable[[Any], None] | None = None, log: Callable[[str], None] | None = None,
                  sysid: int = 1, compid: int = 240, vehicle: Any = None,
-                 every: Callable[[float, Callable[[], None]], None] | None = None) -> None:
+                 every: Callable[[float, Callable[[], None]], None] | None = None,
+                 send_gcs: Callable[[Any], None] | None = None) -> None:
         self._send = send
+        self._send_gcs = send_gcs
         self._log = log
         self._every = every
+        self.shared: dict[str, Any] = {}
         self.sysid = sysid
         self.compid = compid
         self.vehicle = vehicle
@@ -47,6 +52,12 @@ class Context:
         if self._send is None:
             raise RuntimeError("this context cannot send")
         self._send(msg)
+
+    def send_gcs(self, msg: Any) -> None:
+        """Send to every ground station (as the autopilot component)."""
+        if self._send_gcs is None:
+            raise RuntimeError("this context has no ground-station link")
+        self._send_gcs(msg)
 
     def log(self, text: str) -> None:
         self.logged.append(text)

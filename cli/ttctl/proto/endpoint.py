@@ -111,6 +111,7 @@ class Endpoint:
         self.now = 0.0
         self.ignored = 0
         self.peers: dict[tuple[int, int], float] = {}  # who we heard from, when
+        self._streams_out: list[Any] = []  # newest-wins sources (add_stream)
 
     # -- node interface -----------------------------------------------------------------------
     def receive(self, now: float, packet: bytes, source: Hashable = None) -> set[tuple[int, int]]:
@@ -172,8 +173,10 @@ class Endpoint:
         for r in self.requests.values():
             if not r.answered:
                 times.append(min(r.due, r.give_up) if r._refusal is None else r._refusal[1] + r.reason_wait)
-        if self.scheduler.busy or any(s.has_data(self.now) for s in self.senders.values()):
+        if self.scheduler.busy or any(s.has_data(self.now) for s in self.senders.values()) \
+                or any(s.has_data(self.now) for s in self._streams_out):
             times.append(self.scheduler.ready_at())
+        times += [t for s in self._streams_out if (t := s.deadline(self.now)) is not None]
         return min(times) if times else None
 
     # -- what the user asks for ------------------------------------------------------------------
@@ -235,6 +238,16 @@ class Endpoint:
         if s.owns_source:
             s.source.close()
             s.owns_source = False
+
+    def add_stream(self, stream: Any) -> None:
+        """A newest-wins message source (hmd.stream.PoseStream: `pull(now, space)` -> message or
+        None, `has_data(now)`, `deadline(now)`), pulled like file data when a packet may leave."""
+        def pull(now: float, space: int) -> bytes | None:
+            msg = stream.pull(now, space)
+            return None if msg is None else self.encoder.encode(msg)
+
+        self._streams_out.append(stream)
+        self.scheduler.add_source(pull)
 
     def _puller(self, sender: FileSender) -> Callable[[float, int], bytes | None]:
         def pull(now: float, space: int) -> bytes | None:

@@ -568,6 +568,9 @@ enum class DjiTopicName : std::uint8_t {
     DJI_TOPIC_NAME_SETPOINT = 0,
     /// The drone's current position.
     DJI_TOPIC_NAME_DRONE_POSITION = 1,
+    /// The orbit camera steered by the VR headset (TT_VR_POSE): position in the local NED frame (m
+    /// from home), orientation of its FRD body (x along the view, at the drone) in NED.
+    DJI_TOPIC_NAME_ORBIT_CAMERA = 2,
 };
 
 /// Engine control options

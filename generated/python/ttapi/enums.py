@@ -641,6 +641,8 @@ class DjiTopicName(IntEnum):
     """A position set-point for the drone to fly to."""
     DJI_TOPIC_NAME_DRONE_POSITION = 1
     """The drone's current position."""
+    DJI_TOPIC_NAME_ORBIT_CAMERA = 2
+    """The orbit camera steered by the VR headset (TT_VR_POSE): position in the local NED frame (m from home), orientation of its FRD body (x along the view, at the drone) in NED."""
 
 
 class EngineControlOptions(IntFlag):

@@ -47,6 +47,7 @@ class OnboardConfig:
     speed: float = 1.0
     rate_Bps: float | None = None  # pacing of the DTT downlink
     telemetry_hz: float = 2.0  # TT_NAV_SAT_FIX and TT_ODOMETRY to the tablet
+    orbit_hz: float = 10.0  # the orbit camera's publishing rate while head poses arrive (0: no orbit camera)
 
 
 class OnboardNode:
@@ -62,7 +63,10 @@ class OnboardNode:
         self.gcs_links: list[UdpTransport] = []
         self._gcs_parsers: dict[Hashable, ttapi.Parser] = {}
         self.dispatcher = Dispatcher(on_error=self._plugin_error)
-        self.plugins = plugins or []
+        from .orbit_camera import OrbitCameraPlugin
+
+        builtin: list[Plugin] = [OrbitCameraPlugin(cfg.orbit_hz)] if cfg.orbit_hz > 0 else []
+        self.plugins = builtin + (plugins or [])
         for p in self.plugins:
             self.dispatcher.add(p)
         self.endpoint: Endpoint | None = None
@@ -75,7 +79,8 @@ class OnboardNode:
         self._log_id = 0
         self._timers: list[list[Any]] = []  # [due, period, fn]
         self._ctx = Context(send=self._send_dtt, log=self.log, sysid=cfg.sysid, compid=ONBOARD_COMPID,
-                            vehicle=self.vehicle, every=self._every)
+                            vehicle=self.vehicle, every=self._every,
+                            send_gcs=lambda msg: self._send_gcs([(msg, None)]))
 
     # -- wiring ---------------------------------------------------------------------------------
     def _unix(self, now: float) -> float:
@@ -283,7 +288,8 @@ class OnboardNode:
             self._wake.clear()
             idle = self.vehicle.state is State.LANDED and not self.vehicle.armed
             step = STEP_GROUND if idle else STEP
-            due = self.gcs.wakeup()
+            dues = [t for t in (self.gcs.wakeup(), min((t[0] for t in self._timers), default=None)) if t is not None]
+            due = min(dues) if dues else None
             if due is not None:
                 step = min(step, max(0.001, (due - self.vehicle_time) / self.cfg.speed))
             with contextlib.suppress(TimeoutError):

@@ -12,13 +12,19 @@ public final class DjiTopicName {
     public static final int DJI_TOPIC_NAME_SETPOINT = 0;
     /** The drone's current position. */
     public static final int DJI_TOPIC_NAME_DRONE_POSITION = 1;
+    /**
+     * The orbit camera steered by the VR headset (TT_VR_POSE): position in the local NED frame (m
+     * from home), orientation of its FRD body (x along the view, at the drone) in NED.
+     */
+    public static final int DJI_TOPIC_NAME_ORBIT_CAMERA = 2;
 
     private static final long[] ENTRY_VALUES = {
-        0, 1,
+        0, 1, 2,
     };
     private static final String[] ENTRY_NAMES = {
         "DJI_TOPIC_NAME_SETPOINT",
         "DJI_TOPIC_NAME_DRONE_POSITION",
+        "DJI_TOPIC_NAME_ORBIT_CAMERA",
     };
 
     private DjiTopicName() {

@@ -1,0 +1,274 @@
+"""`ttctl hmd dump` and `ttctl hmd pulse`: the VR pose streams out of the headset (or a synthetic
+or recorded one), converted to the chosen frame, recorded and/or streamed over the link.
+
+The main thread takes samples from the source (pacing the ones that are not paced by a device:
+synthetic and replay, at `--speed`), converts them (REP-103 by default, sign-continuous unit
+quaternions), writes them, and offers them to the link. The link, when `--to` is given, is the
+shared asyncio Runner over a proto Endpoint in a thread of its own, with a newest-wins
+PoseStream as one of the scheduler's sources (ttctl.hmd.stream). Ctrl-C (or SIGTERM) stops
+taking samples, finishes the file under its final name and exits 0.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import math
+import signal
+import sys
+import threading
+import time
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..errors import Fail
+from .common import TABLET, err, hello, link_choice, parse_endpoint
+
+SOURCES = ("synthetic", "openvr", "replay")
+HEADROOM = 0.85  # of the profile's capacity, for streaming poses
+
+
+@dataclass
+class DumpOptions:
+    source: str = "synthetic"
+    replay_file: str | None = None
+    rate_hmd: float = 90.0
+    rate_controllers: float = 250.0
+    duration: float | None = None
+    fmt: str | None = None
+    output: str | None = None
+    frame: str = "ros"
+    parent_frame: str = "vr_world"
+    seed: int = 0
+    speed: float = 1.0
+    to: str | None = None
+    rate: float | None = None
+    profile: str | None = None
+    distance: float = 10.0
+    stream_hz: float = 30.0
+    quiet: bool = False
+    extra: dict[str, Any] = field(default_factory=dict)
+
+
+def _check(o: DumpOptions) -> None:
+    """Everything that can be refused, before anything is opened or made."""
+    from ..hmd.model import FRAMES
+
+    if o.source not in SOURCES:
+        raise Fail(f"unknown source {o.source!r}: use one of {', '.join(SOURCES)}")
+    if o.source == "replay" and not o.replay_file:
+        raise Fail("--source replay needs the recording: ttctl hmd dump --source replay FILE")
+    if o.source != "replay" and o.replay_file:
+        raise Fail(f"{o.replay_file!r}: a FILE is only read with --source replay")
+    if o.frame not in FRAMES:
+        raise Fail(f"unknown frame {o.frame!r}: use ros or openvr")
+    for name, v in (("--rate-hmd", o.rate_hmd), ("--rate-controllers", o.rate_controllers)):
+        if not (math.isfinite(v) and 0 < v <= 1000):
+            raise Fail(f"{name} must be in (0, 1000] Hz, not {v:g}")
+    if o.duration is not None and not (math.isfinite(o.duration) and o.duration > 0):
+        raise Fail(f"--duration must be a positive number of seconds, not {o.duration:g}")
+    if not (math.isfinite(o.speed) and o.speed >= 0):
+        raise Fail(f"--speed must be 0 (as fast as possible) or positive, not {o.speed:g}")
+    if o.source == "openvr" and o.speed != 1.0:
+        raise Fail("--speed applies to synthetic and replay sources; a headset runs in real time")
+    if not o.parent_frame or not all(c.isalnum() or c in "_/" for c in o.parent_frame):
+        raise Fail(f"--parent-frame {o.parent_frame!r}: letters, digits, _ and / only")
+    if not (math.isfinite(o.stream_hz) and o.stream_hz > 0):
+        raise Fail("--stream-hz must be positive")
+
+
+def _open_source(o: DumpOptions) -> tuple[Any, str]:
+    """The source and the frame its samples are in."""
+    if o.source == "synthetic":
+        from ..hmd.sources.synthetic import SyntheticSource
+
+        return SyntheticSource(seed=o.seed, rate_hmd=o.rate_hmd, rate_controllers=o.rate_controllers,
+                               duration=o.duration), "openvr"
+    if o.source == "openvr":
+        from ..hmd.sources.openvr_source import OpenVRSource
+
+        return OpenVRSource(rate_hmd=o.rate_hmd, rate_controllers=o.rate_controllers, duration=o.duration), "openvr"
+    from ..hmd.formats import read_recording
+
+    assert o.replay_file is not None
+    rec = read_recording(o.replay_file)
+    return _Replay(rec, o.duration), rec.frame
+
+
+class _Replay:
+    """A recording as a source: its samples, at their own times (the driver paces them)."""
+
+    paced = False
+
+    def __init__(self, rec: Any, duration: float | None) -> None:
+        self.rec = rec
+        self.duration = duration
+        self.counts: dict[str, int] = {}
+
+    def samples(self) -> Any:
+        first = None
+        for s in self.rec.samples:
+            if first is None:
+                first = s.t
+            if self.duration is not None and s.t - first >= self.duration:
+                return
+            yield s
+
+    def close(self) -> None:
+        close = getattr(self.rec, "close", None)
+        if close is not None:
+            close()
+
+
+class _Link:
+    """The link to the onboard end, in a thread of its own: a Runner over an Endpoint whose
+    scheduler pulls the newest poses from a PoseStream."""
+
+    def __init__(self, o: DumpOptions) -> None:
+        from ..hmd.stream import PoseStream
+
+        self.spec = parse_endpoint(o.to or "", "udpout")
+        choice = link_choice(o.rate, o.profile or ("m100" if o.rate is None else None), o.distance, TABLET[0])
+        # Poses are newest-wins: a queue in the radio's buffer would only make them stale. Paced
+        # a little below the profile's capacity the buffer stays empty (at exactly the capacity
+        # it holds its two packets, 0.3 s on the M100 uplink); --rate is taken as given.
+        self.pace = choice.pace_Bps * HEADROOM if choice.pace_Bps and o.rate is None else choice.pace_Bps
+        self.quiet = choice.quiet
+        self.stream = PoseStream(max_hz=o.stream_hz)
+        self.loop = asyncio.new_event_loop()
+        self.ready = threading.Event()
+        self.error: str | None = None
+        self.done = asyncio.Event()
+        self.runner: Any = None
+        self.thread = threading.Thread(target=self._main, name="ttctl-link", daemon=True)
+
+    def start(self) -> None:
+        self.thread.start()
+        self.ready.wait(10)
+        if self.error:
+            raise Fail(self.error)
+
+    def _main(self) -> None:
+        asyncio.set_event_loop(self.loop)
+        self.loop.run_until_complete(self._run())
+
+    async def _run(self) -> None:
+        from ..ends.runtime import Runner
+        from ..link.transport import TransportError, make_transport
+        from ..proto.endpoint import Endpoint
+
+        try:
+            transport = make_transport(self.spec)
+            ep = Endpoint(*TABLET, mtu=transport.mtu, rate_Bps=self.pace, accept_commands=False, unsolicited=False)
+            ep.add_stream(self.stream)
+            self.runner = Runner(ep, transport, quiet=self.quiet, hello=hello(TABLET[0], self.spec))
+            await self.runner.start()
+        except (TransportError, OSError) as e:
+            self.error = f"cannot open {self.spec}: {e}"
+            self.ready.set()
+            return
+        self.ready.set()
+        await self.done.wait()
+        await self.runner.drain(1.0)
+        await self.runner.close()
+
+    def offer(self, s: Any) -> None:
+        self.loop.call_soon_threadsafe(self._offer, s)
+
+    def _offer(self, s: Any) -> None:
+        self.stream.offer(s)
+        if self.runner is not None:
+            self.runner.kick()
+
+    def close(self) -> None:
+        if self.thread.is_alive():
+            self.loop.call_soon_threadsafe(self.done.set)
+            self.thread.join(5)
+
+
+def dump(o: DumpOptions) -> int:
+    from ..hmd.formats import check_output, format_for, open_writer
+    from ..hmd.frames import Continuity, convert
+
+    _check(o)
+    fmt = format_for(o.output, o.fmt)
+    check_output(o.output, fmt)
+    link = _Link(o) if o.to else None
+    source, src_frame = _open_source(o)
+    stop = threading.Event()
+    previous = {sig: signal.signal(sig, lambda *_: stop.set()) for sig in (signal.SIGINT, signal.SIGTERM)}
+    writer = None
+    taken = 0
+    kinds: dict[str, int] = {}
+    started = time.monotonic()
+    try:
+        if link is not None:
+            link.start()
+        if isinstance(source, _Replay):  # what the recording said of itself, kept
+            meta: dict[str, Any] = {"source": "replay", "replay": o.replay_file, "recorded": source.rec.meta}
+        else:
+            meta = {"source": o.source, "rate_hmd": o.rate_hmd, "rate_controllers": o.rate_controllers,
+                    **({"seed": o.seed} if o.source == "synthetic" else {})}
+        writer = open_writer(o.output, fmt, o.frame, o.parent_frame, meta)
+        keep = Continuity()
+        first_t: float | None = None
+        for s in source.samples():
+            if stop.is_set():
+                break
+            if not source.paced and o.speed > 0:
+                if first_t is None:
+                    first_t = s.t
+                wait = started + (s.t - first_t) / o.speed - time.monotonic()
+                if wait > 0 and stop.wait(wait):
+                    break
+            s = keep(convert(s, src_frame, o.frame))
+            writer.write(s)
+            if link is not None:
+                link.offer(s)
+            taken += 1
+            kinds[s.device.frame] = kinds.get(s.device.frame, 0) + 1
+        writer.close()
+    except BrokenPipeError:
+        if writer is not None:
+            writer.abort()
+        with contextlib.suppress(Exception):
+            sys.stderr.close()
+        return 1
+    except BaseException:
+        if writer is not None:
+            writer.abort()
+        raise
+    finally:
+        for sig, h in previous.items():
+            signal.signal(sig, h)
+        source.close()
+        if link is not None:
+            link.close()
+    elapsed = time.monotonic() - started
+    if not o.quiet:
+        _summary(o, fmt, taken, kinds, elapsed, writer, link, stop.is_set())
+    return 0
+
+
+def _summary(o: DumpOptions, fmt: str, taken: int, kinds: dict[str, int], elapsed: float, writer: Any,
+             link: _Link | None, interrupted: bool) -> None:
+    where = o.output or "stdout"
+    per = ", ".join(f"{k} {n}" for k, n in sorted(kinds.items()))
+    err(f"{'interrupted: ' if interrupted else ''}{taken} samples in {elapsed:.1f} s ({per}) -> {where} "
+        f"({fmt}, {o.frame} frame under {o.parent_frame})")
+    if link is not None:
+        st = link.stream.stats
+        err(f"streamed to {o.to}: {st.taken} taken, {st.sent} sent, {st.superseded} superseded "
+            f"({st.buttons} button changes, none dropped)" + (f", paced at {link.pace:.0f} B/s" if link.pace else ""))
+
+
+def pulse(device: str, us: int) -> int:
+    from ..hmd.sources.openvr_source import pulse as do_pulse
+
+    if device not in ("left", "right"):
+        raise Fail(f"--device {device!r}: left or right")
+    used, warning = do_pulse(device, us)
+    if warning:
+        err(f"warning: {warning}")
+    print(f"pulsed the {device} controller for {used} us")
+    return 0

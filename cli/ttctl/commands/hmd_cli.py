@@ -1,0 +1,71 @@
+"""`ttctl hmd ...`: VR headset and controller pose streams (the work is in ttctl.hmd)."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+from .options import DistanceOpt, ProfileOpt, RateOpt
+
+hmd_app = typer.Typer(help="VR headset and controller pose streams: record, replay, stream to the drone.",
+                      no_args_is_help=True)
+
+
+@hmd_app.command("dump")
+def hmd_dump_cmd(
+    source: Annotated[str, typer.Option("--source", help="openvr (a headset, through SteamVR; needs ttctl[vr]), "
+                                                         "synthetic (seeded head and hand motion), or replay FILE "
+                                                         "(a recording of ours).")] = "synthetic",
+    file: Annotated[str | None, typer.Argument(help="The recording, with --source replay.", show_default=False)]
+    = None,
+    rate_hmd: Annotated[float, typer.Option("--rate-hmd", help="Headset poses per second.")] = 90.0,
+    rate_controllers: Annotated[float, typer.Option("--rate-controllers", help="Controller and tracker poses per "
+                                                                               "second.")] = 250.0,
+    duration: Annotated[float | None, typer.Option("--duration", help="Stop after this many seconds (default: "
+                                                                      "until Ctrl-C, or the recording's end).",
+                                                   show_default=False)] = None,
+    fmt: Annotated[str | None, typer.Option("--format", help="jsonl, csv, mcap (ROS 2) or bag (ROS 1); default "
+                                                             "from -o's extension, else jsonl.",
+                                            show_default=False)] = None,
+    output: Annotated[str | None, typer.Option("-o", "--output", help="Write here (default: stdout, jsonl/csv "
+                                                                      "only).", show_default=False)] = None,
+    frame: Annotated[str, typer.Option("--frame", help="ros (REP-103: x forward, y left, z up) or openvr "
+                                                       "(raw: y up, -z forward).")] = "ros",
+    parent_frame: Annotated[str, typer.Option("--parent-frame", help="The tf parent of every device's "
+                                                                     "frame.")] = "vr_world",
+    seed: Annotated[int, typer.Option("--seed", help="The synthetic source's seed.")] = 0,
+    speed: Annotated[float, typer.Option("--speed", help="Synthetic and replay: this many times real time; 0 as "
+                                                         "fast as possible.")] = 1.0,
+    to: Annotated[str | None, typer.Option("--to", help="Also stream the poses over the link to the onboard end "
+                                                        "(udpout:HOST:PORT...) as TT_VR_POSE / TT_VR_CONTROLLER.",
+                                           show_default=False)] = None,
+    stream_hz: Annotated[float, typer.Option("--stream-hz", help="With --to: at most this many poses per second "
+                                                                 "per device (the link's pacing limits "
+                                                                 "further).")] = 30.0,
+    rate: RateOpt = None,
+    profile: ProfileOpt = None,
+    distance: DistanceOpt = 10.0,
+    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No summary on stderr.")] = False,
+) -> None:
+    """Record VR poses: JSONL to stdout by default, or CSV, a ROS 2 MCAP file or a ROS 1 bag;
+    optionally streamed to the drone (--to; paced for --profile, m100 by default). Ctrl-C
+    finishes the file and exits 0.
+
+    Example: ttctl hmd dump --duration 10 -o poses.mcap
+    """
+    from .hmd import DumpOptions, dump
+
+    raise typer.Exit(dump(DumpOptions(source, file, rate_hmd, rate_controllers, duration, fmt, output, frame,
+                                      parent_frame, seed, speed, to, rate, profile, distance, stream_hz, quiet)))
+
+
+@hmd_app.command("pulse")
+def hmd_pulse_cmd(
+    device: Annotated[str, typer.Option("--device", help="left or right controller.")] = "right",
+    us: Annotated[int, typer.Option("--us", help="Pulse length in microseconds, 0..3999 (clamped).")] = 2000,
+) -> None:
+    """A haptic pulse on a controller (the openvr source; needs ttctl[vr] and SteamVR)."""
+    from .hmd import pulse
+
+    raise typer.Exit(pulse(device, us))

@@ -1,0 +1,153 @@
+"""Streaming poses over the link: TT_VR_POSE and TT_VR_CONTROLLER, newest sample wins.
+
+The headset makes ~90 poses a second and each controller 250, about 40 KB/s as TT_VR_POSE
+frames; DJI's uplink carries about 1 KB/s, shared with commands and files. So samples are not
+queued: a `PoseStream` keeps, per device, only the newest sample not yet sent (an older one is
+*superseded*), and the link's scheduler pulls from it when a packet may leave, after commands
+and telemetry (a command never waits behind a pose). What leaves is therefore as fresh as the
+link allows. The exception is a controller's buttons: every change of a button (a trigger click,
+a pad press) is queued and sent in order, never superseded, because a press that vanishes is a
+different command; only axis-only changes (trigger travel, thumb on the pad) are newest-wins.
+
+Which device goes next is weighted-fair: on a saturated link the headset (it steers the orbit
+camera) gets twice the share of a controller's pose; base stations, which do not move, go at
+most every 5 s. `max_hz` caps each device on a fast link (LAN, Wi-Fi).
+
+Sans-IO: `offer()` samples, `pull(now, space)` messages; counts in `stats`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+from dataclasses import dataclass
+from typing import Any
+
+import ttapi
+
+from .model import BUTTONS, ControllerSample, PoseSample, Sample
+
+T = ttapi
+KIND_CODES = {"hmd": T.TtVrDevice.TT_VR_DEVICE_HMD, "controller": T.TtVrDevice.TT_VR_DEVICE_CONTROLLER,
+              "tracker": T.TtVrDevice.TT_VR_DEVICE_TRACKER,
+              "base_station": T.TtVrDevice.TT_VR_DEVICE_TRACKING_REFERENCE}
+ROLE_CODES = {"none": T.TtVrRole.TT_VR_ROLE_NONE, "left": T.TtVrRole.TT_VR_ROLE_LEFT,
+              "right": T.TtVrRole.TT_VR_ROLE_RIGHT}
+BUTTON_BITS = {"trigger_click": T.TtVrButtons.TT_VR_BUTTONS_TRIGGER,
+               "pad_touched": T.TtVrButtons.TT_VR_BUTTONS_PAD_TOUCHED,
+               "pad_pressed": T.TtVrButtons.TT_VR_BUTTONS_PAD_PRESSED, "menu": T.TtVrButtons.TT_VR_BUTTONS_MENU,
+               "grip": T.TtVrButtons.TT_VR_BUTTONS_GRIP}
+WEIGHT = {"hmd": 1.0, "controller": 2.0, "tracker": 2.0}  # relative interval: the headset most often
+STATIC_INTERVAL = 5.0  # s between two sends of a base station's pose
+
+
+def pose_message(s: PoseSample) -> ttapi.TtVrPose:
+    flags = (T.TtVrPoseFlags.TT_VR_POSE_FLAGS_VALID if s.valid else 0) | \
+        (T.TtVrPoseFlags.TT_VR_POSE_FLAGS_CONNECTED if s.connected else 0)
+    return ttapi.TtVrPose(time_usec=int(s.t * 1e6), device=int(KIND_CODES[s.device.kind]),
+                          role=int(ROLE_CODES.get(s.device.role, 0)), index=s.device.index & 0xFF, flags=int(flags),
+                          position=list(s.position), orientation=list(s.orientation), velocity=list(s.velocity),
+                          angular_velocity=list(s.angular_velocity))
+
+
+def button_bits(s: ControllerSample) -> int:
+    return sum(int(BUTTON_BITS[b]) for b in BUTTONS if s.buttons.get(b))
+
+
+def controller_message(s: ControllerSample) -> ttapi.TtVrController:
+    return ttapi.TtVrController(time_usec=int(s.t * 1e6), packet_num=s.packet & 0xFFFFFFFF,
+                                index=s.device.index & 0xFF, role=int(ROLE_CODES.get(s.device.role, 0)),
+                                trigger=s.trigger, pad_x=s.pad_x, pad_y=s.pad_y, buttons=button_bits(s))
+
+
+@dataclass
+class StreamStats:
+    taken: int = 0  # samples offered
+    sent: int = 0  # messages that left (pulled into a packet)
+    superseded: int = 0  # samples replaced by a newer one before they could leave
+    buttons: int = 0  # button changes among the sent (none is ever superseded)
+
+    def as_dict(self) -> dict[str, int]:
+        return {"taken": self.taken, "sent": self.sent, "superseded": self.superseded, "button_changes": self.buttons}
+
+
+class _Slot:
+    __slots__ = ("interval", "last_sent", "pending", "virtual", "weight")
+
+    def __init__(self, interval: float, weight: float, virtual: float) -> None:
+        self.pending: Sample | None = None
+        self.last_sent = -math.inf
+        self.interval = interval  # at most one send per interval (max_hz; a base station's 5 s)
+        self.weight = weight  # its share of a saturated link is proportional to 1 / weight
+        self.virtual = virtual  # weighted-fair-queuing clock: + weight per send, least goes first
+
+
+class PoseStream:
+    """Newest-wins pose streaming, pulled by the link's scheduler (see the module's docstring)."""
+
+    def __init__(self, max_hz: float = 30.0) -> None:
+        if not max_hz > 0:
+            raise ValueError("max_hz must be positive")
+        self.min_interval = 1.0 / max_hz
+        self.stats = StreamStats()
+        self._slots: dict[tuple[str, int], _Slot] = {}
+        self._buttons: deque[ControllerSample] = deque()
+        self._last_bits: dict[int, int] = {}
+
+    def offer(self, s: Sample) -> None:
+        self.stats.taken += 1
+        if isinstance(s, ControllerSample):
+            bits = button_bits(s)
+            if bits != self._last_bits.get(s.device.index, 0):
+                self._last_bits[s.device.index] = bits
+                axes = self._slots.get(("axes", s.device.index))
+                if axes is not None and axes.pending is not None:  # the queued change carries newer axes
+                    axes.pending = None
+                    self.stats.superseded += 1
+                self._buttons.append(s)
+                return
+            key: tuple[str, int] = ("axes", s.device.index)
+            interval, weight = self.min_interval, 2.0
+        else:
+            key = ("pose", s.device.index)
+            static = s.device.kind == "base_station"
+            interval = STATIC_INTERVAL if static else self.min_interval
+            weight = WEIGHT.get(s.device.kind, 2.0)
+        slot = self._slots.get(key)
+        if slot is None:  # a newcomer starts level with the least served, not ahead of everyone
+            start = min((x.virtual for x in self._slots.values()), default=0.0)
+            slot = self._slots[key] = _Slot(interval, weight, start)
+        if slot.pending is not None:
+            self.stats.superseded += 1
+        slot.pending = s
+
+    def has_data(self, now: float) -> bool:
+        """Something may leave now."""
+        return bool(self._buttons) or any(s.pending is not None and now >= s.last_sent + s.interval
+                                          for s in self._slots.values())
+
+    def deadline(self, now: float) -> float | None:
+        """When a held sample becomes due, if later than now (has_data says what is due now)."""
+        times = [t for s in self._slots.values() if s.pending is not None and (t := s.last_sent + s.interval) > now]
+        return min(times) if times else None
+
+    def pull(self, now: float, space: int) -> Any:
+        """The next message to send, or None: button changes first, then the most overdue slot."""
+        if self._buttons:
+            s = self._buttons.popleft()
+            self.stats.sent += 1
+            self.stats.buttons += 1
+            return controller_message(s)
+        best: _Slot | None = None
+        for slot in self._slots.values():
+            if slot.pending is not None and now >= slot.last_sent + slot.interval and \
+                    (best is None or slot.virtual < best.virtual):
+                best = slot
+        if best is None or best.pending is None:
+            return None
+        held: Sample = best.pending
+        best.pending = None
+        best.last_sent = now
+        best.virtual += best.weight
+        self.stats.sent += 1
+        return pose_message(held) if isinstance(held, PoseSample) else controller_message(held)

@@ -1,0 +1,164 @@
+"""Pose streaming (ttctl.hmd.stream) under the link's real scheduler and pacer: newest sample
+wins, button changes are never dropped and stay in order, commands go first, the counts add up,
+and the messages decode (pymavlink as the oracle) to what was offered."""
+
+from __future__ import annotations
+
+import random
+from pathlib import Path
+from types import ModuleType
+
+import pytest
+
+import ttapi
+from conformance_lib import pymavlink_module
+from ttctl.hmd.model import BUTTONS, ControllerSample, Device, PoseSample
+from ttctl.hmd.stream import PoseStream, button_bits
+from ttctl.proto.endpoint import CONTROL, Endpoint
+
+HMD = Device(0, "hmd", serial="HMD1")
+LEFT = Device(3, "controller", "left", "CTL-L")
+RIGHT = Device(4, "controller", "right", "CTL-R")
+BASE = Device(1, "base_station", serial="LHB1")
+
+
+def drive(ep: Endpoint, until: float, step: float = 0.001, offer=None, start: float = 0.0) -> list[bytes]:
+    """Poll the endpoint like the Runner does, offering samples on the way; the packets out."""
+    out = []
+    t = start
+    while t < until:
+        if offer is not None:
+            offer(t)
+        while (pkt := ep.poll(t)) is not None:
+            out.append(pkt)
+        t += step
+    return out
+
+
+_PM: list[ModuleType] = []
+
+
+@pytest.fixture(scope="module", autouse=True)
+def pm(tmp_path_factory: pytest.TempPathFactory) -> None:
+    """pymavlink's own ttapi module (mavgen), the oracle that decodes what was streamed."""
+    _PM.append(pymavlink_module("ttapi", Path(tmp_path_factory.mktemp("pm"))))
+
+
+def decode(packets: list[bytes]) -> list[object]:
+    mav = _PM[0].MAVLink(None)
+    mav.robust_parsing = True
+    msgs = []
+    for p in packets:
+        msgs += mav.parse_buffer(p) or []
+    return msgs
+
+
+def test_newest_wins_at_link_rate_and_counts_add_up() -> None:
+    ep = Endpoint(255, 190, rate_Bps=1000.0, accept_commands=False)
+    stream = PoseStream(max_hz=30)
+    ep.add_stream(stream)
+    rng = random.Random(1)
+
+    def offer(t: float) -> None:
+        if abs(t * 90 - round(t * 90)) < 0.045:  # ~90 Hz head
+            stream.offer(PoseSample(t, HMD, position=(t, 0.0, 1.7), orientation=(0.0, 0.0, 0.0, 1.0)))
+        if rng.random() < 0.25:  # ~250 Hz hands
+            stream.offer(PoseSample(t, LEFT if rng.random() < 0.5 else RIGHT, position=(0.3, 0.2, 1.0)))
+
+    packets = drive(ep, 10.0, offer=offer)
+    ep.scheduler.sources.clear()  # stop pulling: what was pulled (one frame may wait for a packet) leaves
+    packets += drive(ep, 11.0, start=10.0)
+    msgs = decode(packets)
+    poses = [m for m in msgs if m.get_type() == "TT_VR_POSE"]
+    st = stream.stats
+    assert st.sent == len(poses) > 0
+    assert st.taken == st.sent + st.superseded + sum(s.pending is not None for s in stream._slots.values())
+    assert sum(len(p) for p in packets) <= 1000 * 11 + 100  # the pacer held it to the link's rate
+    rate = st.sent / 10.0
+    assert 9 < rate < 15  # ~1000 B/s / 76-byte frames: what the link carries, not what the headset makes
+    heads = [m for m in poses if m.device == ttapi.TtVrDevice.TT_VR_DEVICE_HMD]
+    assert len(heads) > 0.4 * len(poses)  # the head (it steers the camera) gets the largest share
+    ts = [m.time_usec for m in heads]
+    assert ts == sorted(ts)
+    # what left is the newest: each head pose sent is at most one link-frame time old when it left
+    assert heads[-1].position[0] > 9.8
+
+
+def test_button_changes_are_never_dropped_and_stay_in_order() -> None:
+    ep = Endpoint(255, 190, rate_Bps=300.0, accept_commands=False)  # a link far too slow for the flood
+    stream = PoseStream()
+    ep.add_stream(stream)
+    rng = random.Random(7)
+    changes: list[int] = []
+    packet = 0
+
+    def offer(t: float) -> None:
+        nonlocal packet
+        stream.offer(PoseSample(t, HMD))
+        stream.offer(PoseSample(t, LEFT))
+        if rng.random() < 0.02:
+            packet += 1
+            buttons = {b: rng.random() < 0.3 for b in BUTTONS}
+            s = ControllerSample(t, LEFT, packet, trigger=rng.random(), buttons=buttons)
+            if button_bits(s) != (changes[-1] if changes else 0):  # nothing held at the start
+                changes.append(button_bits(s))
+            stream.offer(s)
+
+    packets = drive(ep, 8.0, offer=offer)
+    packets += drive(ep, 40.0, start=8.0)  # let the queue empty
+    got = [m.buttons for m in decode(packets) if m.get_type() == "TT_VR_CONTROLLER"]
+    assert got == changes and len(changes) > 20
+    assert stream.stats.buttons == len(got)
+    assert stream.stats.superseded > 100  # poses were superseded meanwhile
+
+
+def test_commands_go_before_poses() -> None:
+    ep = Endpoint(255, 190, rate_Bps=1000.0, accept_commands=False)
+    stream = PoseStream()
+    ep.add_stream(stream)
+    for k in range(50):
+        stream.offer(PoseSample(0.0, Device(k % 8, "tracker", serial=f"T{k % 8}")))
+    ep.scheduler.send(ep.encoder.encode(ttapi.Heartbeat(type=6)), CONTROL)
+    first = decode([ep.poll(0.0) or b""])
+    assert first and first[0].get_type() == "HEARTBEAT"
+
+
+def test_messages_decode_to_what_was_offered() -> None:
+    stream = PoseStream()
+    s = PoseSample(1700000000.25, RIGHT, valid=False, connected=True, position=(1.0, -2.0, 3.5),
+                   orientation=(0.5, -0.5, 0.5, 0.5), velocity=(0.1, 0.2, 0.3), angular_velocity=(1.0, 2.0, 3.0))
+    stream.offer(s)
+    msg = stream.pull(0.0, 100)
+    frame = ttapi.Encoder(255, 190).encode(msg)
+    assert len(frame) <= 100
+    m = decode([frame])[0]
+    assert m.get_type() == "TT_VR_POSE"
+    assert m.time_usec == 1700000000250000 and m.index == 4 and m.role == ttapi.TtVrRole.TT_VR_ROLE_RIGHT
+    assert m.flags == ttapi.TtVrPoseFlags.TT_VR_POSE_FLAGS_CONNECTED  # not VALID
+    assert list(m.position) == pytest.approx([1.0, -2.0, 3.5])
+    assert list(m.orientation) == pytest.approx([0.5, -0.5, 0.5, 0.5])
+    c = ControllerSample(5.0, LEFT, 77, trigger=1.0, pad_x=-0.5, pad_y=0.25,
+                         buttons={"trigger_click": True, "pad_touched": True, "pad_pressed": False,
+                                  "menu": False, "grip": True})
+    stream.offer(c)
+    m = decode([ttapi.Encoder(255, 190).encode(stream.pull(1.0, 100))])[0]
+    assert m.get_type() == "TT_VR_CONTROLLER" and m.packet_num == 77
+    assert m.buttons == (ttapi.TtVrButtons.TT_VR_BUTTONS_TRIGGER | ttapi.TtVrButtons.TT_VR_BUTTONS_PAD_TOUCHED
+                         | ttapi.TtVrButtons.TT_VR_BUTTONS_GRIP)
+    assert (m.trigger, m.pad_x, m.pad_y) == (1.0, -0.5, 0.25)
+
+
+def test_a_base_station_is_sent_rarely_and_max_hz_caps_a_fast_link() -> None:
+    ep = Endpoint(255, 190, rate_Bps=None, accept_commands=False)  # unpaced (LAN)
+    stream = PoseStream(max_hz=20)
+    ep.add_stream(stream)
+
+    def offer(t: float) -> None:
+        stream.offer(PoseSample(t, HMD))
+        stream.offer(PoseSample(t, BASE))
+
+    msgs = decode(drive(ep, 10.0, offer=offer))
+    heads = [m for m in msgs if m.device == ttapi.TtVrDevice.TT_VR_DEVICE_HMD]
+    bases = [m for m in msgs if m.device == ttapi.TtVrDevice.TT_VR_DEVICE_TRACKING_REFERENCE]
+    assert 190 <= len(heads) <= 201
+    assert 2 <= len(bases) <= 3
