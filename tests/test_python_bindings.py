@@ -63,6 +63,29 @@ def test_pymavlink_signed_frames_verify_here_and_replays_and_tampering_fail() ->
     assert wrong_key.feed(frames[0]) == []
 
 
+def test_a_new_stream_more_than_a_minute_old_is_refused_as_pymavlink_does() -> None:
+    now = ttapi.Signing.now()
+    frames = {}
+    for name, ts in (("stale", now - 6_000_100), ("recent", now - 5_999_000), ("ahead", now + 10_000_000)):
+        mav = pm.MAVLink(None, srcSystem=9, srcComponent=1)
+        mav.signing.secret_key = KEY
+        mav.signing.sign_outgoing = True
+        mav.signing.timestamp = ts
+        mav.signing.link_id = len(frames)  # each its own stream
+        frames[name] = bytes(pm.MAVLink_heartbeat_message(2, 3, 0, 0, 4, 3).pack(mav))
+    ours = ttapi.Signing(KEY, timestamp=now)
+    assert ttapi.Parser(signing=ours).feed(frames["stale"]) == []
+    oracle = pm.MAVLink(None)
+    oracle.signing.secret_key = KEY
+    oracle.signing.timestamp = now
+    with pytest.raises(pm.MAVError):
+        oracle.decode(bytearray(frames["stale"]))
+    assert len(ttapi.Parser(signing=ours).feed(frames["recent"])) == 1
+    assert len(ttapi.Parser(signing=ours).feed(frames["ahead"])) == 1
+    assert ours.timestamp >= now + 10_000_000  # an accepted later clock moves ours forward
+    assert ttapi.Parser(signing=ours).feed(frames["recent"]) == []  # now a minute behind ours
+
+
 def test_unsigned_frames_are_refused_by_a_signing_parser_unless_allowed() -> None:
     frame = ttapi.Heartbeat().pack(0, 1, 1)
     assert ttapi.Parser(signing=ttapi.Signing(KEY)).feed(frame) == []

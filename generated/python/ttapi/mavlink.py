@@ -196,12 +196,17 @@ class MessageInfo:
 
 
 class Signing:
-    """MAVLink 2 message signing: HMAC-SHA256 over key + frame (+ link id and 48-bit
-    timestamp in units of 10 us since 2015-01-01 UTC), truncated to 48 bits.
+    """MAVLink 2 message signing (https://mavlink.io/en/guide/message_signing.html): the first
+    48 bits of SHA-256(key + frame + link id + 48-bit timestamp in units of 10 us since
+    2015-01-01 UTC).
 
-    Outgoing frames are signed with `link_id`; incoming signed frames are verified, and their
-    timestamps must increase per (link id, sysid, compid) stream so replays are refused.
-    Unsigned frames are accepted only if `allow_unsigned`."""
+    Outgoing frames are signed with `link_id` and a timestamp that never repeats. Incoming
+    signed frames are verified, and their timestamps must increase per (link id, sysid, compid)
+    stream, so replays are refused; a stream heard for the first time is refused if its
+    timestamp is more than a minute behind ours (as pymavlink does), and an accepted timestamp
+    ahead of ours moves ours forward. Unsigned frames are accepted only if `allow_unsigned`."""
+
+    REPLAY_WINDOW = 6_000_000  # one minute in 10 us units
 
     EPOCH_2015 = 1420070400
 
@@ -240,9 +245,13 @@ class Signing:
             return False
         key = (link_id, sysid, compid)
         last = self.streams.get(key)
-        if last is not None and ts <= last:
+        if last is None:
+            if ts + self.REPLAY_WINDOW < self.timestamp:
+                return False
+        elif ts <= last:
             return False
         self.streams[key] = ts
+        self.timestamp = max(self.timestamp, ts)
         return True
 
 
