@@ -9,6 +9,7 @@ import signal
 import sys
 from collections.abc import Callable
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 from ..errors import Fail
@@ -63,6 +64,33 @@ def parse_endpoint(text: str, udp: str) -> Any:
         return parse_spec(text, udp=udp)
     except TransportError as e:
         raise Fail(str(e)) from None
+
+
+def load_signing(key_file: Path | None, accept_unsigned: bool) -> Any:
+    """MAVLink 2 signing for the DTT link from --key FILE (None without one): the file holds
+    the 32-byte key as 64 hex digits, or a passphrase whose SHA-256 is the key (MAVProxy's
+    `signing setup PASSPHRASE` convention). Every frame sent is signed; frames received must
+    carry a good signature unless --accept-unsigned."""
+    if key_file is None:
+        if accept_unsigned:
+            raise Fail("--accept-unsigned needs --key")
+        return None
+    import hashlib
+    import re
+
+    from ttapi import Signing
+
+    try:
+        raw = key_file.read_bytes()[:4097]
+    except OSError as e:
+        raise Fail(f"--key {key_file}: {e.strerror or e}") from None
+    if len(raw) > 4096:
+        raise Fail(f"--key {key_file}: more than 4 KiB; a key file holds 64 hex digits or a passphrase")
+    text = raw.decode("utf-8", "replace").strip()
+    if not text:
+        raise Fail(f"--key {key_file} is empty; put 64 hex digits or a passphrase in it")
+    key = bytes.fromhex(text) if re.fullmatch(r"[0-9a-fA-F]{64}", text) else hashlib.sha256(text.encode()).digest()
+    return Signing(key, allow_unsigned=accept_unsigned)
 
 
 def check_id(value: int, what: str) -> None:

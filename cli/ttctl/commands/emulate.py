@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import Fail
-from .common import Signals, check_id, err, link_choice, parse_endpoint
+from .common import Signals, check_id, err, link_choice, load_signing, parse_endpoint
 
 DEFAULT_DTT = "udpin:0.0.0.0:14560"
 DEFAULT_GCS = ["udpout:127.0.0.1:14550", "udpout:127.0.0.1:14540"]  # QGroundControl/MAVProxy, MAVSDK
@@ -34,6 +34,8 @@ class OnboardOptions:
     no_entry_points: bool = False
     telemetry_hz: float = 2.0
     orbit_hz: float = 10.0
+    key: Path | None = None
+    accept_unsigned: bool = False
 
 
 def _home(text: str | None) -> Any:
@@ -83,7 +85,7 @@ def emulate_onboard(o: OnboardOptions) -> int:
         raise Fail(f"--plugin {e}") from None
     cfg = OnboardConfig(sysid=o.sysid, dtt=dtt, gcs=gcs, inbox=o.inbox, serve=o.serve, home=_home(o.home),
                         speed=o.speed, rate_Bps=link.pace_Bps, telemetry_hz=o.telemetry_hz,
-                        orbit_hz=o.orbit_hz)
+                        orbit_hz=o.orbit_hz, signing=load_signing(o.key, o.accept_unsigned))
 
     async def main() -> None:
         from ..link.transport import TransportError

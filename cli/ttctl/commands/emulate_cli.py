@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from .options import DistanceOpt, JsonOpt, ProfileOpt, RateOpt
+from .options import AcceptUnsignedOpt, DistanceOpt, JsonOpt, KeyOpt, ProfileOpt, RateOpt
 
 emulate_app = typer.Typer(help="Both ends of the link, runnable without a drone.", no_args_is_help=True)
 
@@ -43,6 +43,8 @@ def emulate_onboard_cmd(
     rate: RateOpt = None,
     profile: ProfileOpt = None,
     distance: DistanceOpt = 10.0,
+    key: KeyOpt = None,
+    accept_unsigned: AcceptUnsignedOpt = False,
 ) -> None:
     """The onboard computer's end, flying a simulated multicopter: the tablet's DTT link (commands,
     telemetry, files) and ground-station links (HEARTBEAT, telemetry, commands, parameters,
@@ -54,7 +56,7 @@ def emulate_onboard_cmd(
 
     raise typer.Exit(emulate_onboard(OnboardOptions(listen, gcs or [], no_gcs, sysid, inbox, serve, home, speed,
                                                     rate, profile, distance, plugin or [], no_entry_points,
-                                                    telemetry_hz, orbit_hz)))
+                                                    telemetry_hz, orbit_hz, key, accept_unsigned)))
 
 
 @emulate_app.command("tablet")
@@ -70,6 +72,8 @@ def emulate_tablet_cmd(
     rate: RateOpt = None,
     profile: ProfileOpt = None,
     distance: DistanceOpt = 10.0,
+    key: KeyOpt = None,
+    accept_unsigned: AcceptUnsignedOpt = False,
 ) -> None:
     """The tablet's end: commands (take-off, land, hover, return, set-points, trajectories),
     files both ways and the vehicle's state, from a prompt (history, completion) or a --script.
@@ -79,4 +83,4 @@ def emulate_tablet_cmd(
     from .tablet import TabletOptions, emulate_tablet
 
     raise typer.Exit(emulate_tablet(TabletOptions(to, script, json_out, folder, rate, profile, distance,
-                                                  target_sysid)))
+                                                  target_sysid, key=key, accept_unsigned=accept_unsigned)))

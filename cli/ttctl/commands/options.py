@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Annotated
 
 import typer
@@ -13,4 +14,10 @@ ProfileOpt = Annotated[str | None, typer.Option("--profile", help="Link profile 
                                                 show_default=False)]
 DistanceOpt = Annotated[float, typer.Option("--distance", help="Distance in metres, for --profile.")]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Machine-readable output (JSON).")]
+KeyOpt = Annotated[Path | None, typer.Option("--key", help="Sign the DTT link's frames (MAVLink 2 signing) and "
+                                                            "accept only frames signed with this key: a file holding "
+                                                            "64 hex digits, or a passphrase (its SHA-256 is the key, "
+                                                            "as MAVProxy's `signing setup`).", show_default=False)]
+AcceptUnsignedOpt = Annotated[bool, typer.Option("--accept-unsigned", help="With --key: accept unsigned frames "
+                                                                          "too.")]
 PLOT_EXTRA = "needs the plot extra: pip install 'ttctl\\[plot]'"  # \\[ keeps rich from reading a style tag

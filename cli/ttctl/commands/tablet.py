@@ -10,7 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import Fail
-from .common import ONBOARD, Signals, err, link_choice, parse_endpoint
+from .common import ONBOARD, Signals, err, link_choice, load_signing, parse_endpoint
 
 HELP = ("takeoff [ALT] | land | hover | return | goto N E ALT | move DN DE DALT | fly FILE | send FILE | "
         "fetch NAME | wait SECONDS | wait until FIELD OP VALUE [timeout S] | status | watch [SECONDS] | quit")
@@ -27,6 +27,8 @@ class TabletOptions:
     distance: float = 10.0
     target_sysid: int = ONBOARD[0]
     connect_timeout: float = 15.0
+    key: Path | None = None
+    accept_unsigned: bool = False
 
 
 def _prompt_step(line: str) -> Any:
@@ -97,7 +99,7 @@ async def _run(o: TabletOptions, spec: Any, link: Any, steps: Any) -> int:
     wake = asyncio.Event()
     sigs = Signals(loop, wake)
     s = TabletSession(spec, (o.target_sysid, ONBOARD[1]), rate_Bps=link.pace_Bps, inbox=o.dir, on_event=event,
-                      log=err)
+                      log=err, signing=load_signing(o.key, o.accept_unsigned))
     try:
         try:
             await s.start()

@@ -48,6 +48,7 @@ class OnboardConfig:
     rate_Bps: float | None = None  # pacing of the DTT downlink
     telemetry_hz: float = 2.0  # TT_NAV_SAT_FIX and TT_ODOMETRY to the tablet
     orbit_hz: float = 10.0  # the orbit camera's publishing rate while head poses arrive (0: no orbit camera)
+    signing: Any = None  # ttapi.Signing for the DTT link (None: unsigned, signed frames unverified)
 
 
 class OnboardNode:
@@ -228,7 +229,7 @@ class OnboardNode:
             self.endpoint = Endpoint(self.cfg.sysid, ONBOARD_COMPID, mtu=transport.mtu, rate_Bps=self.cfg.rate_Bps,
                                      receive_dir=store, serve_dir=str(self.cfg.serve) if self.cfg.serve else None,
                                      action=self.tablet_action, on_message=self._on_tablet_message,
-                                     on_event=self._file_event)
+                                     on_event=self._file_event, signing=self.cfg.signing)
             self.runner = Runner(self.endpoint, transport)
             await self.runner.start()
             if store is not None:

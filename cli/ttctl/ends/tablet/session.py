@@ -61,7 +61,7 @@ class TabletSession:
     def __init__(self, spec: Spec, target: tuple[int, int] = (1, 240), rate_Bps: float | None = None,
                  inbox: Path | None = None, timeout: float = 60.0,
                  on_event: Callable[[str, dict[str, Any]], None] | None = None,
-                 log: Callable[[str], None] | None = None) -> None:
+                 log: Callable[[str], None] | None = None, signing: Any = None) -> None:
         self.spec = spec
         self.target = target
         self.vehicle = VehicleView()
@@ -72,7 +72,8 @@ class TabletSession:
         self.transport = make_transport(spec, log=lambda text: self.log(f"{spec.kind}: {text}"))
         self.ep = Endpoint(*TABLET, mtu=self.transport.mtu, rate_Bps=rate_Bps, receive_dir=self.store,
                            config=TransferConfig(give_up_after=timeout), on_message=self._on_message,
-                           on_event=self._on_file_event, accept_commands=False, unsolicited=False)
+                           on_event=self._on_file_event, accept_commands=False, unsolicited=False,
+                           signing=signing)
         self.runner = Runner(self.ep, self.transport)  # its own heartbeats make it known (udpout)
         self._changed = asyncio.Event()
         self._file_events: dict[Any, str] = {}
