@@ -13,7 +13,7 @@ from pathlib import Path
 from pymavlink.dialects.v20 import common as pm
 
 from conftest import assert_no_traceback, run_ttctl
-from e2e_lib import LOCAL, Start, free_port, one_line
+from e2e_lib import LOCAL, Start, data_file, free_port, one_line, receiver, send
 
 PASSPHRASE = "field day 2026"
 KEY = hashlib.sha256(PASSPHRASE.encode()).digest()
@@ -112,3 +112,25 @@ def test_bad_key_options_are_one_line(tmp_path: Path) -> None:
         proc = run_ttctl("emulate", "onboard", "--no-gcs", "--listen", f"udpin:{LOCAL}:{free_port()}", *args,
                          timeout=30)
         assert proc.returncode == 2 and want in one_line(proc.stderr), proc.stderr
+
+
+def test_signed_send_file_and_fetch_and_an_unsigned_sender_times_out(tmp_path: Path, start: Start) -> None:
+    phrase, hexkey, other = _keys(tmp_path)
+    served = tmp_path / "served"
+    served.mkdir()
+    up, down = data_file(tmp_path, "up.bin", 30_000, seed=4), data_file(served, "down.bin", 20_000, seed=5)
+    port = free_port()
+    recv = receiver(start, tmp_path, f"udpin:{LOCAL}:{port}", "--serve", str(served), "--key", str(phrase))
+    proc, r = send(str(up), "--to", f"udpout:{LOCAL}:{port}", "--key", str(hexkey))
+    assert proc.returncode == 0 and r["ok"], proc.stderr
+    assert (tmp_path / "inbox" / "up.bin").read_bytes() == up.read_bytes()
+    proc, r = send("down.bin", "--from", f"udpout:{LOCAL}:{port}", "--dir", str(tmp_path / "dl"), "--key",
+                   str(phrase))
+    assert proc.returncode == 0 and r["ok"], proc.stderr
+    assert (tmp_path / "dl" / "down.bin").read_bytes() == down.read_bytes()
+    for extra in ([], ["--key", str(other)]):
+        proc = run_ttctl("send-file", str(up), "--name", "again.bin", "--to", f"udpout:{LOCAL}:{port}", "--timeout",
+                         "2", *extra, timeout=30)
+        assert proc.returncode == 1 and "timed out: no answer" in one_line(proc.stderr), proc.stderr
+    assert not (tmp_path / "inbox" / "again.bin").exists()
+    assert recv.p.poll() is None  # type: ignore[attr-defined]

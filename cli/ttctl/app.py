@@ -23,7 +23,7 @@ from . import __version__
 from .commands.bench_cli import bench_app
 from .commands.emulate_cli import emulate_app
 from .commands.hmd_cli import hmd_app
-from .commands.options import DistanceOpt, JsonOpt, ProfileOpt, RateOpt
+from .commands.options import AcceptUnsignedOpt, DistanceOpt, JsonOpt, KeyOpt, ProfileOpt, RateOpt
 from .errors import Fail
 
 app = typer.Typer(
@@ -155,6 +155,8 @@ def recv_file_cmd(
     profile: ProfileOpt = None,
     distance: DistanceOpt = 10.0,
     json_out: JsonOpt = False,
+    key: KeyOpt = None,
+    accept_unsigned: AcceptUnsignedOpt = False,
 ) -> None:
     """Receive files (the onboard end, 1/240, by default) until interrupted or --count files are in.
 
@@ -167,7 +169,7 @@ def recv_file_cmd(
     from .commands.recv_file import RecvOptions, recv_file
 
     code = recv_file(RecvOptions(listen, folder, overwrite, max_file, max_dir, serve, count, sysid, compid, rate,
-                                 profile, distance, json_out))
+                                 profile, distance, json_out, key, accept_unsigned))
     raise typer.Exit(code)
 
 
@@ -196,6 +198,8 @@ def send_file_cmd(
     target_compid: Annotated[int, typer.Option("--target-compid", help="The receiver's component id.")] = 240,
     timeout: Annotated[float, typer.Option("--timeout", help="Give up after this many seconds without a word "
                                                              "from the peer.")] = 60.0,
+    key: KeyOpt = None,
+    accept_unsigned: AcceptUnsignedOpt = False,
 ) -> None:
     """Send a file to a receiver (ttctl recv-file, or the onboard end), or fetch one with --from.
 
@@ -213,7 +217,7 @@ def send_file_cmd(
     from .commands.send_file import SendOptions, send_file
 
     code = send_file(SendOptions(file, to, from_, name, overwrite, json_out, rate, profile, distance, sysid, compid,
-                                 target_sysid, target_compid, timeout, folder))
+                                 target_sysid, target_compid, timeout, folder, key, accept_unsigned))
     raise typer.Exit(code)
 
 

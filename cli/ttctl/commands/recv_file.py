@@ -20,6 +20,7 @@ from .common import (
     err,
     hello,
     link_choice,
+    load_signing,
     oversize_note,
     parse_endpoint,
     start,
@@ -43,6 +44,8 @@ class RecvOptions:
     profile: str | None = None
     distance: float = 10.0
     as_json: bool = False
+    key: Path | None = None
+    accept_unsigned: bool = False
 
 
 def recv_file(o: RecvOptions) -> int:
@@ -54,6 +57,7 @@ def recv_file(o: RecvOptions) -> int:
     if o.count is not None and o.count < 1:
         raise Fail("--count must be at least 1")
     link = link_choice(o.rate, o.profile, o.distance, o.sysid)
+    signing = load_signing(o.key, o.accept_unsigned)
     q = Quota(overwrite=o.overwrite)
     if o.max_file is not None:
         if o.max_file < 0:
@@ -71,13 +75,13 @@ def recv_file(o: RecvOptions) -> int:
     if o.serve is not None and not o.serve.is_dir():
         raise Fail(f"--serve {o.serve} is not a directory")
     try:
-        return asyncio.run(_recv(o, spec, link, store))
+        return asyncio.run(_recv(o, spec, link, store, signing))
     except KeyboardInterrupt:  # before the signal handlers were in place
         err("stopped")
         return 0
 
 
-async def _recv(o: RecvOptions, spec: Any, link: LinkChoice, store: Any) -> int:
+async def _recv(o: RecvOptions, spec: Any, link: LinkChoice, store: Any, signing: Any) -> int:
     from ..ends.runtime import Runner
     from ..link.transport import make_transport
     from ..proto.endpoint import Endpoint
@@ -122,7 +126,7 @@ async def _recv(o: RecvOptions, spec: Any, link: LinkChoice, store: Any) -> int:
 
     transport = make_transport(spec, log=lambda text: err(f"{spec.kind}: {text}"))
     ep = Endpoint(o.sysid, o.compid, mtu=transport.mtu, rate_Bps=link.pace_Bps, receive_dir=store,
-                  serve_dir=str(o.serve) if o.serve is not None else None, on_event=on_event)
+                  serve_dir=str(o.serve) if o.serve is not None else None, on_event=on_event, signing=signing)
     runner = Runner(ep, transport, quiet=link.quiet, hello=hello(o.sysid, spec))
     await start(runner)  # the port first: a refusal leaves no directory behind
     try:
@@ -132,7 +136,9 @@ async def _recv(o: RecvOptions, spec: Any, link: LinkChoice, store: Any) -> int:
         raise Fail(f"--dir: {e}") from None
     sigs = Signals(loop, wake)
     serve = f", serving {o.serve}" if o.serve is not None else ""
-    err(f"receiving into {o.dir} as {o.sysid}/{o.compid} on {transport.describe()}{serve} ({link.describe()})")
+    signed = ", signed" + (" (unsigned frames accepted too)" if o.accept_unsigned else "") if signing else ""
+    err(f"receiving into {o.dir} as {o.sysid}/{o.compid} on {transport.describe()}{serve} ({link.describe()}"
+        f"{signed})")
     served: dict[int, Any] = {}
     done_at: float | None = None
     failed = True

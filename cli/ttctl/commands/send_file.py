@@ -24,6 +24,7 @@ from .common import (
     await_peer,
     check_id,
     link_choice,
+    load_signing,
     oversize_note,
     parse_endpoint,
     start,
@@ -49,6 +50,8 @@ class SendOptions:
     target_compid: int = ONBOARD[1]
     timeout: float = 60.0
     dir: Path | None = None
+    key: Path | None = None
+    accept_unsigned: bool = False
 
 
 @dataclass
@@ -77,6 +80,7 @@ def _send_file(o: SendOptions) -> int:
     if o.timeout <= 0:
         raise Fail("--timeout must be positive")
     link = link_choice(o.rate, o.profile, o.distance, o.sysid)
+    load_signing(o.key, o.accept_unsigned)  # a bad --key is refused before anything starts
     if o.to is not None:
         if o.dir is not None:
             raise Fail("--dir is where --from downloads go; with --to, FILE is the file to send")
@@ -133,7 +137,8 @@ async def _open_end(o: SendOptions, spec: Any, link: LinkChoice, bar: Bar, **end
 
     transport = make_transport(spec, log=bar.log)
     ep = Endpoint(o.sysid, o.compid, mtu=transport.mtu, rate_Bps=link.pace_Bps,
-                  config=TransferConfig(give_up_after=o.timeout), **endpoint)
+                  config=TransferConfig(give_up_after=o.timeout), signing=load_signing(o.key, o.accept_unsigned),
+                  **endpoint)
     runner = Runner(ep, transport, quiet=link.quiet)
     try:
         await start(runner)
