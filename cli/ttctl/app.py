@@ -107,19 +107,30 @@ def gen(
     include: IncludeOpt = None,
     templates: Annotated[Path | None, typer.Option("--templates",
                                                       help="Folder of templates overriding ttctl's, by name.")] = None,
+    python_package: Annotated[str | None, typer.Option(
+        "--python-package", metavar="NAME", show_default=False,
+        help="Python package of the bindings (default: the dialect's name).")] = None,
+    cpp_namespace: Annotated[str | None, typer.Option(
+        "--cpp-namespace", metavar="NAME", show_default=False,
+        help="C++ namespace, a or a::b (default: the dialect's name); headers in cpp/a/b/.")] = None,
+    java_package: Annotated[str | None, typer.Option(
+        "--java-package", metavar="NAME", show_default=False,
+        help="Java package, a.b.c (default: ttctl.<dialect>).")] = None,
 ) -> None:
     """Generate Python, C++ and Java bindings, skeletons and conformance programs.
 
     Bindings are rewritten when they change; skeletons (handler and command stubs you fill in)
     are written once. Refuses a dialect with validation errors.
     """
+    from .codegen.engine import Names
     from .gen import GenError, run_gen
 
     global _fast_exit
     _fast_exit = True  # every file is written and closed before run_gen returns
     try:
         code = run_gen(str(dialect) if dialect else None, lang, str(out), check, force_skeletons,
-                       [str(p) for p in include or []], str(templates) if templates else None)
+                       [str(p) for p in include or []], str(templates) if templates else None,
+                       names=Names(python_package, cpp_namespace, java_package))
     except GenError as e:
         raise Fail(str(e), e.code) from None
     raise typer.Exit(code)

@@ -8,7 +8,8 @@ import shutil
 import sys
 from pathlib import Path
 
-from .codegen.engine import LANGUAGES, language, render, write_tree
+from .codegen.engine import LANGUAGES, Names, language, render, write_tree
+from .dialect.names import C_RESERVED, CPP_KEYWORDS, IDENTIFIER_RE, JAVA_KEYWORDS, PYTHON_KEYWORDS
 from .validate import include_dir_problem, load_and_check, user_warnings
 
 DEFAULT_DIALECT = "dialects/ttapi.xml"
@@ -29,6 +30,82 @@ def parse_langs(spec: str) -> list[str]:
     if bad or not langs:
         raise GenError(f"--lang: unknown language {', '.join(bad) or '(none)'}; choose from {', '.join(LANGUAGES)}", 2)
     return list(dict.fromkeys(langs))
+
+
+# What the generated Python code imports (besides the standard library), and the names beside
+# the package in python/: a package of one of these names would shadow it.
+_PY_TAKEN = frozenset({"ttctl", "fastcrc", "handlers", "conformance"})
+# Object-like macros of glibc and of g++ in its GNU modes (-std=gnu++17, the default).
+_CPP_MACROS = frozenset({"linux", "unix", "errno", "math_errhandling", "sched_priority"})
+# Namespaces of the runtime and the standard library; `mav` (the conformance program's alias
+# for the namespace) and `main` are global names of cpp/conformance.cpp.
+_CPP_TAKEN = frozenset({"std", "detail", "onboard"})
+_CPP_TOP_TAKEN = frozenset({"mav", "main"})
+# Contextual words that are Java keywords only as type names: fine as a package name.
+_JAVA_CONTEXTUAL = frozenset({"var", "yield", "record", "sealed", "permits"})
+# Variables in scope where the generated Registry and Conformance name the package in full: a
+# first package segment of one of these names would be read as the variable.
+_JAVA_LOCALS = frozenset({"all", "doc", "fields", "frame", "hex", "id", "info", "len", "m", "messageName",
+                          "msgId", "n", "obj", "off", "payload", "sb", "text"})
+
+
+def python_package_problem(name: str) -> str | None:
+    """Why `name` cannot be the generated Python package, or None."""
+    if not IDENTIFIER_RE.match(name):
+        return "not a Python identifier (ASCII letters, digits, _; no dots)"
+    if name in PYTHON_KEYWORDS:
+        return f"'{name}' is a Python keyword"
+    if name in _PY_TAKEN:
+        return f"'{name}' would shadow the module or folder of that name that generated code uses"
+    if name in sys.stdlib_module_names:
+        return f"'{name}' is a module of Python's standard library, which the package would shadow"
+    return None
+
+
+def cpp_namespace_problem(name: str) -> str | None:
+    """Why `name` (a or a::b::c) cannot be the generated C++ namespace, or None."""
+    parts = name.split("::")
+    for i, seg in enumerate(parts):
+        if not IDENTIFIER_RE.match(seg):
+            return f"'{seg}' is not a C++ identifier" if seg else "not a C++ namespace (a or a::b)"
+        if seg in CPP_KEYWORDS:
+            return f"'{seg}' is a C++ keyword"
+        if (seg.startswith("_") and (i == 0 or seg[1:2].isupper())) or "__" in seg:
+            return f"'{seg}' is reserved to the implementation (a leading _ at the top or before a capital, or __)"
+        if seg in C_RESERVED or seg in _CPP_MACROS:
+            return f"'{seg}' is a macro of the C library or the compiler"
+        if seg in _CPP_TAKEN or (i == 0 and seg in _CPP_TOP_TAKEN):
+            return f"'{seg}' is a name the generated code uses itself"
+    return None
+
+
+def java_package_problem(name: str) -> str | None:
+    """Why `name` (dotted) cannot be the generated Java package, or None."""
+    parts = name.split(".")
+    for seg in parts:
+        if not IDENTIFIER_RE.match(seg):
+            return f"'{seg}' is not a Java identifier" if seg else "not a Java package (a or a.b.c)"
+        if seg in JAVA_KEYWORDS and seg not in _JAVA_CONTEXTUAL:
+            return f"'{seg}' is a Java keyword or literal"
+    first = parts[0]
+    if first == "java":
+        return "packages java.* are the JDK's: a class loader refuses classes in them"
+    if not first[:1].islower():
+        return f"'{first}' does not start with a lower-case letter: the generated code would read it as a class"
+    if first in _JAVA_LOCALS:
+        return f"'{first}' is a variable of the generated code, which would hide the package"
+    return None
+
+
+def check_names(names: Names) -> None:
+    """GenError (exit 2) for the first name the user gives that cannot be used."""
+    for option, value, problem in (("--python-package", names.python_package, python_package_problem),
+                                   ("--cpp-namespace", names.cpp_namespace, cpp_namespace_problem),
+                                   ("--java-package", names.java_package, java_package_problem)):
+        if value is not None:
+            why = problem(value)
+            if why:
+                raise GenError(f"{option} {value}: {why}", 2)
 
 
 def check_out_dir(out: Path, check: bool) -> None:
@@ -84,7 +161,9 @@ def _take_back(created: list[Path]) -> None:
 
 
 def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool, force_skeletons: bool,
-            include_dirs: list[str], user_templates: str | None, quiet: bool = False) -> int:
+            include_dirs: list[str], user_templates: str | None, quiet: bool = False,
+            names: Names | None = None) -> int:
+    """`names`: --python-package, --cpp-namespace, --java-package (see check_names)."""
     from .dialect import LoadError
 
     if dialect_path is None:
@@ -92,6 +171,8 @@ def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool
             raise GenError(f"no dialect given and {DEFAULT_DIALECT} is not here", 2)
         dialect_path = DEFAULT_DIALECT
     langs = parse_langs(langs_spec)
+    if names is not None:
+        check_names(names)
     if user_templates is not None and not os.path.isdir(user_templates):
         raise GenError(f"--templates {user_templates}: not a directory", 2)
     out = Path(out_dir)
@@ -109,7 +190,7 @@ def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool
         print(f"{dialect_path}: {rep.errors} error(s); nothing generated", file=sys.stderr)
         return 1
     try:
-        rendered = render(dialect, langs, user_templates)
+        rendered = render(dialect, langs, user_templates, names=names)
     except Exception as e:  # jinja2 template errors (user templates), undefined names
         import jinja2
 
@@ -117,7 +198,7 @@ def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool
             where = f"{e.filename}:{e.lineno}: " if isinstance(e, jinja2.TemplateSyntaxError) else ""
             raise GenError(f"template error: {where}{e}", 2) from None
         raise
-    owned = [p for lang in langs for p in language(lang).owned_dirs(dialect)]
+    owned = [p for lang in langs for p in language(lang, names).owned_dirs(dialect)]
     created: list[Path] = []
     try:
         report = write_tree(out, rendered, owned, check, force_skeletons, created)

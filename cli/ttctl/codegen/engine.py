@@ -48,19 +48,31 @@ class Language(Protocol):
         ...
 
 
-def language(name: str) -> Language:
+@dataclass(frozen=True, slots=True)
+class Names:
+    """Where the generated code goes in the user's program (`ttctl gen --python-package`,
+    `--cpp-namespace`, `--java-package`); None: the name derived from the dialect. Checked
+    by the caller (ttctl.gen.check_names)."""
+
+    python_package: str | None = None
+    cpp_namespace: str | None = None  # nested as a::b
+    java_package: str | None = None  # dotted
+
+
+def language(name: str, names: Names | None = None) -> Language:
+    """The generator of one language; with `names`, one that uses those names."""
     if name == "python":
         from . import lang_python
 
-        return lang_python.LANG
+        return lang_python.LANG if names is None else lang_python._Python(names.python_package)
     if name == "cpp":
         from . import lang_cpp
 
-        return lang_cpp.LANG
+        return lang_cpp.LANG if names is None else lang_cpp._Cpp(names.cpp_namespace)
     if name == "java":
         from . import lang_java
 
-        return lang_java.LANG
+        return lang_java.LANG if names is None else lang_java._Java(names.java_package)
     raise ValueError(f"unknown language '{name}' (choose from {', '.join(LANGUAGES)})")
 
 
@@ -136,8 +148,8 @@ def make_env(user_templates: str | None) -> Any:
 
 
 def render(d: Dialect, langs: Iterable[str], user_templates: str | None = None,
-           progress: Callable[[str], None] | None = None) -> list[tuple[Output, str]]:
-    """Render every output of every language; returns (output, text) pairs."""
+           progress: Callable[[str], None] | None = None, names: Names | None = None) -> list[tuple[Output, str]]:
+    """Render every output of every language (under `names`, if given); returns (output, text) pairs."""
     env = make_env(user_templates)
     base = {
         "dialect": d,
@@ -154,7 +166,7 @@ def render(d: Dialect, langs: Iterable[str], user_templates: str | None = None,
     }
     result: list[tuple[Output, str]] = []
     for lang_name in langs:
-        lang = language(lang_name)
+        lang = language(lang_name, names)
         g = dict(base)
         g.update(lang.globals(d))
         cache: dict[str, Any] = {}

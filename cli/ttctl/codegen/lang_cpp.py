@@ -1,7 +1,8 @@
 """C++: header-only C++17 bindings per dialect (runtime, enums, messages, an umbrella header),
 a conformance program, and an onboard handler-plugin skeleton.
 
-Layout under the output root:
+Layout under the output root (<ident>: the dialect's identifier; with --cpp-namespace a::b the
+headers go to cpp/a/b/ instead of cpp/<ident>/):
   cpp/<ident>/runtime.hpp     CRC, little-endian helpers, framing, Parser, Dispatcher, Packetizer
   cpp/<ident>/enums.hpp       one `enum class` per enum
   cpp/<ident>/messages.hpp    one struct per message
@@ -40,24 +41,34 @@ RUNTIME_TYPES = RUNTIME_TYPE_NAMES  # the validator refuses these; checked here 
 _SUB_HEADERS = ("runtime", "enums", "messages")
 
 
-def namespace(d: Dialect) -> str:
-    """The C++ namespace of a dialect: its identifier, unless that is a keyword or a name
-    the standard library or the runtime already uses."""
+def namespace(d: Dialect, override: str | None = None) -> str:
+    """The C++ namespace of a dialect: `override` (--cpp-namespace, maybe nested: a::b), else
+    its identifier, unless that is a keyword or a name the standard library or the runtime
+    already uses."""
+    if override:
+        return override
     ident = dialect_ident(d)
     if ident in CPP_KEYWORDS or ident in C_RESERVED or ident in ("std", "detail", "onboard"):
         return f"{ident}_mav"
     return ident
 
 
-def umbrella(d: Dialect) -> str:
+def folder(d: Dialect, override: str | None = None) -> str:
+    """The folder (relative to cpp/) of the dialect's headers: the namespace's path (a::b ->
+    a/b) with --cpp-namespace, else the dialect's identifier."""
+    return override.replace("::", "/") if override else dialect_ident(d)
+
+
+def umbrella(d: Dialect, override: str | None = None) -> str:
     """Path (relative to cpp/) of the header that includes everything of the dialect."""
     ident = dialect_ident(d)
     stem = f"{ident}_all" if ident in _SUB_HEADERS else ident
-    return f"{ident}/{stem}.hpp"
+    return f"{folder(d, override)}/{stem}.hpp"
 
 
-def guard(d: Dialect, part: str) -> str:
-    return f"TTCTL_{dialect_ident(d).upper()}_{part.upper()}_HPP"
+def guard(d: Dialect, part: str, override: str | None = None) -> str:
+    base = override.replace("::", "_") if override else dialect_ident(d)
+    return f"TTCTL_{base.upper()}_{part.upper()}_HPP"
 
 
 def cpp_type(f: Field) -> str:
@@ -151,26 +162,29 @@ def check_names(d: Dialect) -> None:
 class _Cpp:
     name = "cpp"
 
+    def __init__(self, override: str | None = None) -> None:
+        self.override = override  # --cpp-namespace; None: from the dialect's identifier
+
     def outputs(self, d: Dialect) -> list[Output]:
-        ident = dialect_ident(d)
+        ident = folder(d, self.override)  # the dialect's identifier, or a/b for --cpp-namespace a::b
         return [
             Output(f"cpp/{ident}/runtime.hpp", "cpp/runtime.hpp.j2"),
             Output(f"cpp/{ident}/enums.hpp", "cpp/enums.hpp.j2"),
             Output(f"cpp/{ident}/messages.hpp", "cpp/messages.hpp.j2"),
-            Output(f"cpp/{umbrella(d)}", "cpp/umbrella.hpp.j2"),
+            Output(f"cpp/{umbrella(d, self.override)}", "cpp/umbrella.hpp.j2"),
             Output("cpp/conformance.cpp", "cpp/conformance.cpp.j2"),
-            Output(f"cpp/onboard/{ident}_plugin.hpp", "cpp/plugin.hpp.j2", skeleton=True),
+            Output(f"cpp/onboard/{dialect_ident(d)}_plugin.hpp", "cpp/plugin.hpp.j2", skeleton=True),
         ]
 
     def owned_dirs(self, d: Dialect) -> list[str]:
-        return [f"cpp/{dialect_ident(d)}"]
+        return [f"cpp/{folder(d, self.override)}"]
 
     def globals(self, d: Dialect) -> dict[str, Any]:
         check_names(d)
         return {
-            "ns": namespace(d),
-            "umbrella": umbrella(d),
-            "guard": lambda part: guard(d, part),
+            "ns": namespace(d, self.override),
+            "umbrella": umbrella(d, self.override),
+            "guard": lambda part: guard(d, part, self.override),
             "cpp_type": cpp_type,
             "initializer": lambda f: initializer(f, d),
             "enum_base": enum_base,

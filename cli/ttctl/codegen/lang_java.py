@@ -89,8 +89,11 @@ RUNTIME_FILES = [
 RUNTIME_CLASSES = frozenset(RUNTIME_FILES)
 
 
-def package(d: Dialect) -> str:
-    """The Java root package of a dialect: ttctl.<ident> (ident_ if it is a Java keyword)."""
+def package(d: Dialect, override: str | None = None) -> str:
+    """The Java root package of a dialect: `override` (--java-package), else ttctl.<ident>
+    (ident_ if it is a Java keyword)."""
+    if override:
+        return override
     ident = dialect_ident(d)
     return f"ttctl.{ident}_" if ident in JAVA_KEYWORDS else f"ttctl.{ident}"
 
@@ -244,7 +247,7 @@ def reply_conditions(m: Message, d: Dialect) -> list[str]:
     return conds
 
 
-def field_doc(f: Field, d: Dialect | None = None) -> str:
+def field_doc(f: Field, d: Dialect | None = None, root: str | None = None) -> str:
     """Javadoc paragraph (RAW) of a field: description, units, MAVLink type, enum (linked when the
     dialect has it), extension."""
     text = f.description or f.name
@@ -253,7 +256,7 @@ def field_doc(f: Field, d: Dialect | None = None) -> str:
     notes = [f.declared_type]
     if f.enum:
         if d is not None and f.enum in d.enums_by_name:
-            notes.append(f"enum {{@link {package(d)}.enums.{camel(f.enum)}}}")
+            notes.append(f"enum {{@link {root or package(d)}.enums.{camel(f.enum)}}}")
         else:
             notes.append(f"enum {_escape_doc(camel(f.enum))}")
     if f.extension:
@@ -409,8 +412,8 @@ class _Refs:
     """How generated code outside the runtime package names runtime and message classes:
     imported simple names unless two classes would share one."""
 
-    def __init__(self, d: Dialect) -> None:
-        self.root = package(d)
+    def __init__(self, d: Dialect, root: str) -> None:
+        self.root = root
         self.msg_names = {class_name(m) for m in d.messages if m.complete}
         self.clash = {n for n in RUNTIME_CLASSES if n in self.msg_names}
 
@@ -447,8 +450,11 @@ class _Refs:
 class _Java:
     name = "java"
 
+    def __init__(self, override: str | None = None) -> None:
+        self.override = override  # --java-package; None: ttctl.<ident>
+
     def outputs(self, d: Dialect) -> list[Output]:
-        root = "java/" + package(d).replace(".", "/")
+        root = "java/" + package(d, self.override).replace(".", "/")
         outs = [Output(f"{root}/{registry_class(d)}.java", "java/Registry.java.j2")]
         for n in RUNTIME_FILES:
             outs.append(Output(f"{root}/runtime/{n}.java", f"java/runtime/{n}.java.j2"))
@@ -466,13 +472,14 @@ class _Java:
         return outs
 
     def owned_dirs(self, d: Dialect) -> list[str]:
-        root = "java/" + package(d).replace(".", "/")
+        root = "java/" + package(d, self.override).replace(".", "/")
         return [f"{root}/runtime", f"{root}/msg", f"{root}/enums"]
 
     def globals(self, d: Dialect) -> dict[str, Any]:
-        refs = _Refs(d)
+        pkg = package(d, self.override)
+        refs = _Refs(d, pkg)
         return {
-            "pkg": package(d),
+            "pkg": pkg,
             "registry": registry_class(d),
             "class_name": class_name,
             "java_type": java_type,
@@ -483,7 +490,7 @@ class _Java:
             "unpack_lines": lambda m, f: [refs.qualify(x) for x in unpack_lines(m, f)],
             "to_string_expr": lambda f: refs.qualify(to_string_expr(f)),
             "javadoc": javadoc,
-            "field_doc": lambda f: field_doc(f, d),
+            "field_doc": lambda f: field_doc(f, d, pkg),
             "java_string": java_string,
             "enum_type": enum_type,
             "enum_table": enum_table,

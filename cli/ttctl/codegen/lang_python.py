@@ -28,9 +28,9 @@ _PY_TYPES = {
 }
 
 
-def package(d: Dialect) -> str:
-    """The Python package name of a dialect."""
-    return dialect_ident(d)
+def package(d: Dialect, override: str | None = None) -> str:
+    """The Python package name of a dialect: `override` (--python-package) or its identifier."""
+    return override or dialect_ident(d)
 
 
 def is_bytes(f: Field) -> bool:
@@ -181,8 +181,11 @@ def enum_base(e: Enum) -> str:
 class _Python:
     name = "python"
 
+    def __init__(self, override: str | None = None) -> None:
+        self.override = override  # --python-package; None: the dialect's identifier
+
     def outputs(self, d: Dialect) -> list[Output]:
-        pkg = package(d)
+        pkg = package(d, self.override)
         return [
             Output(f"python/{pkg}/__init__.py", "python/__init__.py.j2"),
             Output(f"python/{pkg}/mavlink.py", "python/mavlink.py.j2"),
@@ -194,11 +197,11 @@ class _Python:
         ]
 
     def owned_dirs(self, d: Dialect) -> list[str]:
-        return [f"python/{package(d)}"]
+        return [f"python/{package(d, self.override)}"]
 
     def globals(self, d: Dialect) -> dict[str, Any]:
         return {
-            "pkg": package(d),
+            "pkg": package(d, self.override),
             "py_type": py_type,
             "default": lambda f: default(f, d),
             "struct_format": struct_format,
