@@ -191,3 +191,22 @@ def test_urgent_packet_between_pieces_of_a_long_frame(frames: list[bytes], where
 def test_zero_byte_packets_are_ignored() -> None:
     rx = PacketReceiver()
     assert rx.feed(b"") == [] and rx.stats.packets == 1
+
+
+def test_probing_a_packet_for_its_own_frame_does_not_use_up_its_signature() -> None:
+    """An urgent signed packet slipped between the pieces of a signed long frame: the receiver
+    checks whether the packet starts with a whole frame before taking it for the continuation;
+    that check must not record the frame's timestamp, or the frame is refused as a replay when
+    delivered a moment later."""
+    key = bytes(range(32))
+    bulk = ttapi.Signing(key, link_id=0)
+    urgent = ttapi.Signing(key, link_id=1)  # another stream (the same one would be a replay: it is newer)
+    data = ttapi.TtFileDataWide(transfer_id=9, offset=0, data=bytes(range(1, 248)))
+    wide = ttapi.Encoder(255, 190, bulk).encode(data)
+    ack = ttapi.Encoder(255, 190, urgent).encode(ttapi.TtCommandAck(command_id=1, result=0))
+    assert len(wide) == 280
+    pieces = [wide[:100], wide[100:200], wide[200:]]
+    rx = PacketReceiver(signing=ttapi.Signing(key))
+    got = [m for pkt in (pieces[0], ack, pieces[1], pieces[2]) for m in rx.feed(pkt)]
+    assert sorted(type(m).__name__ for m in got) == ["TtCommandAck", "TtFileDataWide"]
+    assert rx.stats.bad_frames == 0

@@ -33,7 +33,7 @@ class World:
     def __init__(self, tmp: Path, loss: float = 0.0, model: str = "random", profile: str = "m100", seed: int = 1,
                  tablet_dir: Path | None = None, onboard_dir: Path | None = None, quota: Quota | None = None,
                  config: TransferConfig | None = None, serve: Path | None = None, action: Any = None,
-                 outages: list[tuple[float, float]] | None = None) -> None:
+                 outages: list[tuple[float, float]] | None = None, key: bytes | None = None) -> None:
         prof = load_profile(profile)
         imp: dict[str, Any] = {"loss": loss, "loss_model": model, "outages": outages or []}
         self.up = Channel(prof, "up", 10, Impairments(**imp), seed=seed)
@@ -46,11 +46,12 @@ class World:
 
         self.tablet = Endpoint(*TABLET, rate_Bps=self.up.capacity_Bps(), config=cfg, on_event=log,
                                receive_dir=ReceiveDir(tablet_dir, quota) if tablet_dir else None,
-                               rng=random.Random(seed))
+                               rng=random.Random(seed), signing=ttapi.Signing(key) if key else None)
         self.onboard = Endpoint(*ONBOARD, rate_Bps=self.down.capacity_Bps(), config=cfg, on_event=log,
                                 rng=random.Random(seed + 1),
                                 receive_dir=ReceiveDir(onboard_dir, quota) if onboard_dir else None,
-                                serve_dir=str(serve) if serve else None, action=action)
+                                serve_dir=str(serve) if serve else None, action=action,
+                                signing=ttapi.Signing(key) if key else None)
         self.sim = Simulation(self.tablet, self.onboard, self.up, self.down)
 
     def run(self, until: float, stop: Any = None) -> float:
@@ -371,3 +372,29 @@ def test_a_new_process_reusing_a_command_id_is_not_answered_with_the_old_ack(tmp
         assert server.on_command(wire) is ack  # the retry of that very command: the same ack, not run again
         assert cmd.id == 1
     assert ran == [take_off, land]
+
+
+def test_a_signed_link_loses_nothing_to_its_own_reordering(tmp_path: Path) -> None:
+    """Priorities reorder frames (commands overtake telemetry and file data, statuses replace
+    older ones) and a long TT_FILE_DATA_WIDE frame spans packets: with signing, every frame is
+    signed as it is placed, and nothing is slipped between a long frame's pieces, so the
+    receiver's replay check never refuses one of ours."""
+    key = bytes(range(32))
+    w = World(tmp_path, onboard_dir=tmp_path / "on", tablet_dir=tmp_path / "tab", key=key)
+    up, down = data(20_000, 3), data(30_000, 4)
+    s1 = w.tablet.send_file("up.bin", ONBOARD, source=BytesSource(up, "up.bin"))
+    s2 = w.onboard.send_file("down.bin", TABLET, source=BytesSource(down, "down.bin"))
+    cmds = []
+    for k in range(12):
+        w.run(0.25 * (k + 1))
+        cmds.append(w.tablet.command(ttapi.TtActionCommand(action=int(ttapi.TtAction.TT_ACTION_HOVER)), ONBOARD))
+        w.onboard.send_message(ttapi.Statustext(severity=6, text=f"note {k}"))
+    w.run(300, stop=lambda: s1.done and s2.done and all(c.done for c in cmds))
+    assert s1.result is not None and s1.result.ok and s2.result is not None and s2.result.ok
+    assert (tmp_path / "on" / "up.bin").read_bytes() == up and (tmp_path / "tab" / "down.bin").read_bytes() == down
+    assert all(c.ok for c in cmds)
+    assert s1.stats.wide_frames > 0  # long frames did span packets
+    for ep in (w.tablet, w.onboard):
+        stats = [rx.stats for rx in ep._rxs.values()]
+        assert stats and sum(st.frames for st in stats) > 100
+        assert sum(st.bad_frames for st in stats) == 0, [st.as_dict() for st in stats]

@@ -83,11 +83,11 @@ class Endpoint:
         self.compid = compid
         self.cfg = config or TransferConfig()
         self.signing = signing
-        self.encoder = ttapi.Encoder(sysid, compid, signing)
+        self.encoder = ttapi.Encoder(sysid, compid)  # unsigned: the scheduler signs frames as they leave
         self._rxs: OrderedDict[Hashable, PacketReceiver] = OrderedDict()
         self._streams: OrderedDict[Hashable, ttapi.Parser] = OrderedDict()  # byte-stream links (TCP)
         self._last_rx: dict[Hashable, float] = {}
-        self.scheduler = Scheduler(mtu, rate_Bps)
+        self.scheduler = Scheduler(mtu, rate_Bps, sign=signing.sign if signing is not None else None)
         self.receiver = (FileReceiver(receive_dir, sysid, compid, self.cfg, on_event=self._file_event,
                                       unsolicited=unsolicited)
                          if receive_dir is not None else None)

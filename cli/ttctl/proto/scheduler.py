@@ -7,12 +7,19 @@ continues in the next packets; if control frames are waiting meanwhile, they go 
 packet of their own (the receiver keeps the long frame's pieces apart from it). Nothing sits
 in a FIFO behind a file, so a command sent during a bulk transfer waits at most for the
 packet on the air.
+
+With MAVLink signing, frames are signed as they are placed in a packet (`sign`), so their
+timestamps increase in the order they go on the wire whatever the priorities reorder, and no
+frame is slipped between the pieces of a long one (it would arrive, with a later timestamp,
+before the long frame completes, which the receiver would then refuse as a replay).
 """
 
 from __future__ import annotations
 
 from collections import deque
 from collections.abc import Callable
+
+SIGNATURE_OVERHEAD = 13
 
 CONTROL, TELEMETRY, BULK = 0, 1, 2
 PRIORITY_NAMES = {CONTROL: "control", TELEMETRY: "telemetry", BULK: "bulk"}
@@ -42,8 +49,10 @@ class Pacer:
 
 
 class Scheduler:
-    def __init__(self, mtu: int = 100, rate_Bps: float | None = None, telemetry_limit: int = 32) -> None:
+    def __init__(self, mtu: int = 100, rate_Bps: float | None = None, telemetry_limit: int = 32,
+                 sign: Callable[[bytes], bytes] | None = None) -> None:
         self.mtu = mtu
+        self.sign = sign  # signs an unsigned frame as it is placed (MAVLink signing), or None
         self.pacer = Pacer(rate_Bps)
         self.control: deque[bytes] = deque()
         self._keys: dict[object, int] = {}  # coalescing key -> id of the queued control frame
@@ -109,7 +118,8 @@ class Scheduler:
     def _build(self, now: float) -> bytes:
         mtu = self.mtu
         pkt = bytearray()
-        if self._spill and self.control and len(self.control[0]) <= mtu:
+        over = SIGNATURE_OVERHEAD if self.sign is not None else 0
+        if self._spill and self.control and len(self.control[0]) + over <= mtu and self.sign is None:
             while self.control and len(self.control[0]) <= mtu - len(pkt):  # urgent, in a packet of its own
                 pkt += self.control.popleft()
             return bytes(pkt)
@@ -120,13 +130,16 @@ class Scheduler:
                 return bytes(pkt)
         while len(pkt) < mtu:
             space = mtu - len(pkt)
-            got = self._next_frame(now, space)
+            got = self._next_frame(now, space)  # (signed, a frame is `over` longer than its source thinks)
             if got is None:
                 break
             frame, kind = got
-            if len(frame) <= space:
+            size = len(frame) + over
+            if (size <= space or size > mtu) and self.sign is not None:
+                frame = self.sign(frame)  # placed now: signed now
+            if size <= space:
                 pkt += frame
-            elif len(frame) > mtu:
+            elif size > mtu:
                 pkt += frame[:space]
                 self._spill = frame[space:]
                 break

@@ -176,11 +176,13 @@ class PacketReceiver:
 
     def _starts_with_frame(self, packet: bytes) -> bool:
         total = self._total(packet, 0)
-        return total is not None and total <= len(packet) and self._try(packet[:total]) is not None
+        return total is not None and total <= len(packet) and self._try(packet[:total], peek=True) is not None
 
-    def _try(self, frame: bytes) -> Message | None:
+    def _try(self, frame: bytes, peek: bool = False) -> Message | None:
+        """The frame's message, or None. A `peek` leaves the signing's replay state alone: the
+        frame is decoded for real when its packet is scanned."""
         try:
-            return decode(frame, self.registry, self.signing)
+            return decode(frame, self.registry, self.signing, peek)
         except DecodeError:
             return None
 

@@ -234,8 +234,9 @@ class Signing:
         digest = hashlib.sha256(self.key + frame + head).digest()
         return head + digest[:6]
 
-    def verify(self, frame: bytes | memoryview, sysid: int, compid: int) -> bool:
-        """`frame` is a whole signed frame."""
+    def verify(self, frame: bytes | memoryview, sysid: int, compid: int, record: bool = True) -> bool:
+        """`frame` is a whole signed frame. With `record` False nothing is remembered (a probe:
+        the same frame still verifies afterwards)."""
         frame = bytes(frame)
         body, sig = frame[:-SIGNATURE_LENGTH], frame[-SIGNATURE_LENGTH:]
         link_id = sig[0]
@@ -250,9 +251,23 @@ class Signing:
                 return False
         elif ts <= last:
             return False
-        self.streams[key] = ts
-        self.timestamp = max(self.timestamp, ts)
+        if record:
+            self.streams[key] = ts
+            self.timestamp = max(self.timestamp, ts)
         return True
+
+    def sign(self, frame: bytes, registry: dict[int, MessageInfo] | None = None) -> bytes:
+        """An unsigned frame, signed now (the signed flag set, the CRC redone, the signature
+        appended); a signed one unchanged. Signing when a frame leaves, rather than when it is
+        queued, keeps timestamps increasing on the wire whatever a scheduler reorders."""
+        if frame[2] & INCOMPAT_SIGNED:
+            return frame
+        info = (REGISTRY if registry is None else registry)[frame[7] | frame[8] << 8 | frame[9] << 16]
+        end = HEADER_LENGTH + frame[1]
+        body = bytearray(frame[:end])
+        body[2] |= INCOMPAT_SIGNED
+        body += _CRC.pack(crc16(info.extra, crc16(body[1:])))
+        return bytes(body) + self.signature(bytes(body), self.link_id, self.next_timestamp())
 
 
 def encode(msg: Message, seq: int = 0, sysid: int = 1, compid: int = 1, signing: Signing | None = None) -> bytes:
@@ -281,8 +296,9 @@ class Encoder:
 
 
 def decode(frame: bytes | bytearray | memoryview, registry: dict[int, MessageInfo] | None = None,
-           signing: Signing | None = None) -> Message:
-    """Decode exactly one whole frame; DecodeError says why not."""
+           signing: Signing | None = None, peek: bool = False) -> Message:
+    """Decode exactly one whole frame; DecodeError says why not. `peek`: a signature is checked
+    but its timestamp not remembered (the frame will be decoded for real later)."""
     reg = REGISTRY if registry is None else registry
     buf = bytes(frame)
     n = len(buf)
@@ -306,7 +322,7 @@ def decode(frame: bytes | bytearray | memoryview, registry: dict[int, MessageInf
     end = HEADER_LENGTH + plen
     if crc16(info.extra, crc16(buf[1:end])) != _CRC.unpack_from(buf, end)[0]:
         raise DecodeError("bad CRC")
-    if signed and signing is not None and not signing.verify(buf, sysid, compid):
+    if signed and signing is not None and not signing.verify(buf, sysid, compid, not peek):
         raise DecodeError("bad signature or replayed timestamp")
     if not signed and signing is not None and not signing.allow_unsigned:
         raise DecodeError("unsigned frame refused")
