@@ -102,8 +102,8 @@ def test_generated_files_are_formatted(tree: dict[str, Any]) -> None:
     cpp = tree["out"] / "cpp"
     files = sorted(p for p in cpp.rglob("*") if p.is_file())
     assert {p.relative_to(cpp).as_posix() for p in files} == {
-        "ttapi/runtime.hpp", "ttapi/enums.hpp", "ttapi/messages.hpp", "ttapi/ttapi.hpp", "conformance.cpp",
-        "onboard/ttapi_plugin.hpp"}
+        "ttapi/runtime.hpp", "ttapi/enums.hpp", "ttapi/messages.hpp", "ttapi/ttapi.hpp", "ttapi/signing.hpp",
+        "ttapi/packets.hpp", "conformance.cpp", "onboard/ttapi_plugin.hpp"}
     for p in files:
         lines = p.read_text().split("\n")
         assert lines[-1] == "" and lines[-2] != "", p  # exactly one final newline

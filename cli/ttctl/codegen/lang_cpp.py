@@ -3,7 +3,9 @@ a conformance program, and an onboard handler-plugin skeleton.
 
 Layout under the output root (<ident>: the dialect's identifier; with --cpp-namespace a::b the
 headers go to cpp/a/b/ instead of cpp/<ident>/):
-  cpp/<ident>/runtime.hpp     CRC, little-endian helpers, framing, Parser, Dispatcher, Packetizer
+  cpp/<ident>/runtime.hpp     CRC, little-endian helpers, framing, Parser, Dispatcher, Plugin
+  cpp/<ident>/signing.hpp     SHA-256 and MAVLink 2 signing (included by runtime.hpp)
+  cpp/<ident>/packets.hpp     Packetizer and the packet-aware PacketReceiver (included by runtime.hpp)
   cpp/<ident>/enums.hpp       one `enum class` per enum
   cpp/<ident>/messages.hpp    one struct per message
   cpp/<ident>/<ident>.hpp     umbrella header
@@ -37,8 +39,8 @@ _CPP_TYPES = {
 }
 
 # Types and namespaces the runtime defines beside the messages and enums of a dialect.
-RUNTIME_TYPES = RUNTIME_TYPE_NAMES  # the validator refuses these; checked here again for user templates
-_SUB_HEADERS = ("runtime", "enums", "messages")
+RUNTIME_TYPES = RUNTIME_TYPE_NAMES  # the validator refuses those; checked here again for user templates
+_SUB_HEADERS = ("runtime", "enums", "messages", "signing", "packets")
 
 
 def namespace(d: Dialect, override: str | None = None) -> str:
@@ -169,6 +171,8 @@ class _Cpp:
         ident = folder(d, self.override)  # the dialect's identifier, or a/b for --cpp-namespace a::b
         return [
             Output(f"cpp/{ident}/runtime.hpp", "cpp/runtime.hpp.j2"),
+            Output(f"cpp/{ident}/signing.hpp", "cpp/signing.hpp.j2"),
+            Output(f"cpp/{ident}/packets.hpp", "cpp/packets.hpp.j2"),
             Output(f"cpp/{ident}/enums.hpp", "cpp/enums.hpp.j2"),
             Output(f"cpp/{ident}/messages.hpp", "cpp/messages.hpp.j2"),
             Output(f"cpp/{umbrella(d, self.override)}", "cpp/umbrella.hpp.j2"),
