@@ -85,8 +85,15 @@ RUNTIME_FILES = [
     "Crc", "Wire", "Unsigned", "MavlinkMessage", "MessageInfo", "MavlinkDialect",
     "DecodeException", "Frame", "Parser", "Dispatcher", "Link", "UdpLink", "CommandContext",
     "CommandException", "Command", "MessageMatcher", "SendCommand", "ReceiveCommand", "CommandQueue",
+    "LinkScheduler", "DjiLink",
+    "Packetizer", "PacketReceiver", "Signing",
 ]
 RUNTIME_CLASSES = frozenset(RUNTIME_FILES)
+# File transfer (package <root>.transfer), for dialects that have ttctl's file messages.
+TRANSFER_FILES = ["RangeSet", "Names", "TransferConfig", "TransferResult", "Transfer", "LossEstimate", "FileSender",
+                  "FileFetch", "FileTransfers"]
+TRANSFER_MESSAGES = {"TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_REASON", "TT_FILE_DATA", "TT_FILE_DATA_WIDE",
+                     "TT_FILE_REQUEST"}
 
 
 def package(d: Dialect, override: str | None = None) -> str:
@@ -458,6 +465,9 @@ class _Java:
         outs = [Output(f"{root}/{registry_class(d)}.java", "java/Registry.java.j2")]
         for n in RUNTIME_FILES:
             outs.append(Output(f"{root}/runtime/{n}.java", f"java/runtime/{n}.java.j2"))
+        if TRANSFER_MESSAGES.issubset(m.name for m in d.messages if m.complete):
+            for n in TRANSFER_FILES:
+                outs.append(Output(f"{root}/transfer/{n}.java", f"java/runtime/transfer/{n}.java.j2"))
         for m in sorted((m for m in d.messages if m.complete), key=lambda m: m.id):
             outs.append(Output(f"{root}/msg/{class_name(m)}.java", "java/Message.java.j2", context={"m": m}))
         for e in sorted(d.enums, key=lambda e: e.name):
@@ -473,7 +483,7 @@ class _Java:
 
     def owned_dirs(self, d: Dialect) -> list[str]:
         root = "java/" + package(d, self.override).replace(".", "/")
-        return [f"{root}/runtime", f"{root}/msg", f"{root}/enums"]
+        return [f"{root}/runtime", f"{root}/transfer", f"{root}/msg", f"{root}/enums"]
 
     def globals(self, d: Dialect) -> dict[str, Any]:
         pkg = package(d, self.override)

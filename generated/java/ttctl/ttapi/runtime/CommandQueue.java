@@ -28,6 +28,10 @@ import java.util.function.Consumer;
  * <p>Feed incoming messages to {@link #accept} (e.g. {@code link.addListener(queue)}); the
  * command in flight checks them. Also a {@link CommandContext}: {@link #send} packs a message
  * with this queue's ids and sequence numbers and sends it at once, outside the queue.
+ *
+ * <p>Built on a {@link LinkScheduler}, the queue's frames go through it at CONTROL priority
+ * (ahead of telemetry and file data, signed by its signer); built on a plain {@link Link}, each
+ * frame is sent as a packet of its own.
  */
 public final class CommandQueue implements CommandContext, Consumer<MavlinkMessage> {
     private static final class Job {
@@ -57,6 +61,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
     };
 
     private final Link link;
+    private final LinkScheduler scheduler;
     private final int sysId;
     private final int compId;
     private final AtomicInteger seq = new AtomicInteger();
@@ -78,6 +83,24 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
             throw new IllegalArgumentException("sysid and compid are 0..255");
         }
         this.link = link;
+        this.scheduler = null;
+        this.sysId = sysId;
+        this.compId = compId;
+    }
+
+    /**
+     * A queue whose frames go through {@code scheduler} at CONTROL priority, as {@code sysId}/
+     * {@code compId}; call {@link #start()} (and the scheduler's).
+     */
+    public CommandQueue(LinkScheduler scheduler, int sysId, int compId) {
+        if (scheduler == null) {
+            throw new NullPointerException("scheduler");
+        }
+        if ((sysId & ~0xFF) != 0 || (compId & ~0xFF) != 0) {
+            throw new IllegalArgumentException("sysid and compid are 0..255");
+        }
+        this.link = scheduler.link();
+        this.scheduler = scheduler;
         this.sysId = sysId;
         this.compId = compId;
     }
@@ -115,7 +138,12 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
 
     @Override
     public void send(MavlinkMessage msg) throws IOException {
-        link.send(msg.pack(seq.getAndIncrement() & 0xFF, sysId, compId));
+        byte[] frame = msg.pack(seq.getAndIncrement() & 0xFF, sysId, compId);
+        if (scheduler != null) {
+            scheduler.sendControl(frame);
+        } else {
+            link.send(frame);
+        }
     }
 
     /** Queues a command; the future always completes (see the class comment). */

@@ -5,12 +5,25 @@ import java.io.Closeable;
 import java.io.IOException;
 
 /**
- * Where frames go: a UDP socket, a DJI SDK pipeline, a serial port... Incoming bytes are the
- * link owner's business: feed them to a {@link Parser} and hand the messages to a
- * {@link CommandQueue} and a {@link Dispatcher}, which are both message consumers, e.g.
- * {@code parser.feed(bytes, 0, n, queue)} ({@link UdpLink} does this itself).
+ * Where packets go: a UDP socket ({@link UdpLink}), DJI's Data Transparent Transmission
+ * ({@link DjiLink}), a serial port... Incoming bytes are the link owner's business: feed them to
+ * a {@link PacketReceiver} (or a {@link Parser}) and hand the messages to a {@link CommandQueue}
+ * and a {@link Dispatcher}, which are both message consumers ({@link UdpLink} and
+ * {@link DjiLink} do this themselves).
+ *
+ * <p>Put a {@link LinkScheduler} in front of a link to share it between commands, telemetry
+ * and file transfers with priorities and a rate cap.
  */
 public interface Link extends Closeable {
     /** Sends one packet: a frame, or several frames back to back. Must be thread-safe. */
     void send(byte[] packet) throws IOException;
+
+    /**
+     * For links with flow control ({@link DjiLink}: the SDK confirms each packet): waits up to
+     * {@code timeoutNanos} until the link can take the next packet; true when it can. Links
+     * without flow control are always ready.
+     */
+    default boolean awaitReady(long timeoutNanos) throws InterruptedException {
+        return true;
+    }
 }

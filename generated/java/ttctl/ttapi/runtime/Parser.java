@@ -11,14 +11,19 @@ import java.util.function.Consumer;
  *
  * <p>On a bad CRC, an unknown msgid, an impossible length or garbage it drops one byte and looks
  * for the next magic byte, so a lost or corrupted chunk costs only the frames that overlapped
- * it: a frame already buffered behind a false start is still found. Signed frames are accepted
- * without verifying their signature. Not thread-safe: feed it from one thread.
+ * it: a frame already buffered behind a false start is still found.
+ *
+ * <p>Without a {@link Signing}, signed frames are accepted without verifying their signature.
+ * With one, a signed frame must carry a valid, fresh signature and an unsigned one is refused
+ * unless the signing allows unsigned frames; a refused frame is counted
+ * ({@link Stats#badSignature()}) and dropped whole. Not thread-safe: feed it from one thread.
  */
 public final class Parser {
     /** Counters since the parser was made. */
     public static final class Stats {
         long messages;
         long badCrc;
+        long badSignature;
         long unknown;
         long skippedBytes;
 
@@ -30,6 +35,11 @@ public final class Parser {
         /** Candidate frames refused for their CRC. */
         public long badCrc() {
             return badCrc;
+        }
+
+        /** Frames refused by the {@link Signing}: bad signature, replayed, or unsigned when refused. */
+        public long badSignature() {
+            return badSignature;
         }
 
         /** Candidate frames refused for an unknown msgid, a too long payload or bad flags. */
@@ -44,21 +54,29 @@ public final class Parser {
 
         @Override
         public String toString() {
-            return "Stats(messages=" + messages + ", badCrc=" + badCrc + ", unknown=" + unknown + ", skippedBytes="
-                    + skippedBytes + ")";
+            return "Stats(messages=" + messages + ", badCrc=" + badCrc + ", badSignature=" + badSignature + ", unknown="
+                    + unknown + ", skippedBytes=" + skippedBytes + ")";
         }
     }
 
     private final MavlinkDialect dialect;
+    private final Signing signing;
     private final Stats stats = new Stats();
     private byte[] buf = new byte[2 * Frame.MAX_FRAME];
     private int size;
 
+    /** A parser that accepts signed frames without verifying them. */
     public Parser(MavlinkDialect dialect) {
+        this(dialect, null);
+    }
+
+    /** A parser that verifies frames with {@code signing}, if not null. */
+    public Parser(MavlinkDialect dialect, Signing signing) {
         if (dialect == null) {
             throw new NullPointerException("dialect");
         }
         this.dialect = dialect;
+        this.signing = signing;
     }
 
     public Stats stats() {
@@ -179,6 +197,11 @@ public final class Parser {
                     stats.badCrc++;
                     stats.skippedBytes++;
                     i++;
+                    continue;
+                }
+                if (signing != null && signing.check(b, i, total - i) != Signing.Result.OK) {
+                    stats.badSignature++;
+                    i = total;
                     continue;
                 }
                 MavlinkMessage m = dialect.unpack(msgId, b, i + Frame.HEADER_LENGTH, plen);

@@ -13,19 +13,24 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Consumer;
 
 /**
- * A {@link Link} over UDP. A reader thread (daemon) receives datagrams, feeds them to a
- * {@link Parser} (flushed when nothing arrives for {@link #IDLE_FLUSH_MILLIS}) and hands every
- * message to the listeners, in the order they were added (e.g.
- * a {@link CommandQueue} and a {@link Dispatcher}). A listener that throws does not stop the
- * others. Frames are sent to the given remote address, or, without one, to the sender of the
- * last datagram received.
+ * A {@link Link} over UDP. A reader thread (daemon) receives datagrams and feeds each one, as
+ * one DTT packet, to a {@link PacketReceiver} (flushed when nothing arrives for
+ * {@link #IDLE_FLUSH_MILLIS}, so that a frame spanning packets whose continuation was lost does
+ * not hold back the frames behind it), and hands every message to the listeners, in the order
+ * they were added (e.g. a {@link CommandQueue} and a {@link Dispatcher}). Datagrams holding
+ * whole frames, one or several, are read as they are; a frame cut across datagrams by a
+ * {@link Packetizer} is reassembled. A listener that throws does not stop the others. With a
+ * {@link Signing}, incoming frames are verified (refused ones are counted in
+ * {@link PacketReceiver.Stats#badFrames()} and dropped); {@link #send} sends bytes as given, so
+ * sign outgoing frames with {@link Signing#sign}. Frames are sent to the given remote address,
+ * or, without one, to the sender of the last datagram received.
  */
 public final class UdpLink implements Link {
     /** How long the link waits for more bytes before giving up on an incomplete frame. */
     public static final int IDLE_FLUSH_MILLIS = 200;
 
     private final DatagramSocket socket;
-    private final Parser parser;
+    private final PacketReceiver receiver;
     private final List<Consumer<? super MavlinkMessage>> listeners = new CopyOnWriteArrayList<>();
     private volatile SocketAddress remote;
     private volatile boolean closed;
@@ -34,13 +39,21 @@ public final class UdpLink implements Link {
 
     /** A link on an existing socket; remote may be null (answer whoever sent last). */
     public UdpLink(DatagramSocket socket, SocketAddress remote, MavlinkDialect dialect) {
+        this(socket, remote, dialect, null);
+    }
+
+    /**
+     * A link on an existing socket that verifies incoming frames with {@code signing} (null:
+     * signed frames are accepted unverified); remote may be null (answer whoever sent last).
+     */
+    public UdpLink(DatagramSocket socket, SocketAddress remote, MavlinkDialect dialect, Signing signing) {
         if (socket == null) {
             throw new NullPointerException("socket");
         }
         this.socket = socket;
         this.remote = remote;
         this.learnsRemote = remote == null;
-        this.parser = new Parser(dialect);
+        this.receiver = new PacketReceiver(dialect, signing);
     }
 
     /**
@@ -101,9 +114,9 @@ public final class UdpLink implements Link {
         this.remote = remote;
     }
 
-    /** The parser's counters (read them from any thread; they are updated by the reader). */
-    public Parser.Stats stats() {
-        return parser.stats();
+    /** The receiver's counters (read them from any thread; they are updated by the reader). */
+    public PacketReceiver.Stats stats() {
+        return receiver.stats();
     }
 
     @Override
@@ -160,8 +173,8 @@ public final class UdpLink implements Link {
                 packet.setLength(buf.length);
                 socket.receive(packet);
             } catch (SocketTimeoutException e) {
-                if (parser.pending() > 0) {
-                    parser.flush(deliver); // idle: frames behind a broken head are delivered
+                if (receiver.pending() > 0) {
+                    receiver.flush(deliver); // idle: frames in packets taken for a lost continuation are delivered
                 }
                 continue;
             } catch (IOException e) {
@@ -173,7 +186,7 @@ public final class UdpLink implements Link {
             if (learnsRemote) {
                 remote = packet.getSocketAddress();
             }
-            parser.feed(buf, packet.getOffset(), packet.getLength(), deliver);
+            receiver.feed(buf, packet.getOffset(), packet.getLength(), deliver);
         }
     }
 
