@@ -285,3 +285,27 @@ def test_scheduler_packing_priorities_and_signer(classes: Path) -> None:
     assert proc.returncode == 0 and "DONE" in proc.stdout, proc.stdout + proc.stderr
     assert "ok the command went in a packet of its own" in proc.stdout
     assert "ok signed as placed, in the order on the air, nothing slipped between pieces" in proc.stdout
+
+
+def test_against_the_emulated_onboard_end(classes: Path, tmp_path: Path, start: Start) -> None:
+    """The Java tablet against `ttctl emulate onboard` (not recv-file) through the relay at 10 %
+    burst loss: it uploads into the vehicle's inbox and fetches from its served folder at once,
+    and its commands during the transfers are acknowledged by the vehicle."""
+    a, b = free_port(), free_port()
+    (tmp_path / "served").mkdir()
+    back = tmp_path / "served" / "flight.log"
+    back.write_bytes(random.Random(21).randbytes(SIZE // 2))
+    node = start("onboard", "emulate", "onboard", "--no-gcs", "--listen", f"udpin:{LOCAL}:{b}", "--inbox",
+                 str(tmp_path / "inbox"), "--serve", str(tmp_path / "served"), "--no-entry-points", "--rate",
+                 str(RATE))
+    node.wait_for("onboard 1:")
+    relay(start, a, b, "--profile", "m100", "--rate", str(RATE), "--loss", "0.1", "--loss-model", "burst", "--seed",
+          "8", "--stats-interval", "0")
+    (up,) = files(tmp_path, "trajectory.bin")
+    r = Driver(classes, tmp_path, "java", link="udp", port=a, rate=RATE, timeout=30, send=up.name,
+               fetch="flight.log", dir="got", idle=3, during=800).finish(150)
+    assert r["send_ok"] and r["fetch_ok"], r["_text"][-3000:]
+    assert sha(tmp_path / "inbox" / "trajectory.bin") == sha(up)
+    assert sha(tmp_path / "got" / "flight.log") == sha(back) == r["fetch_sha256"]
+    assert len(r["idle_ms"]) == 3 and r["during_ms"] and not r["during_errors"], r
+    assert r["app_thread_errors"] == 0 and r["uncaught"] == 0
