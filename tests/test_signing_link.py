@@ -48,7 +48,7 @@ def _tablet(tmp_path: Path, port: int, script: str, *extra: str) -> object:
 def test_signed_ends_fly_and_strangers_get_no_answer(tmp_path: Path, start: Start) -> None:
     phrase, hexkey, other = _keys(tmp_path)
     port = free_port()
-    _vehicle(start, tmp_path, port, "--key", str(phrase))
+    node = _vehicle(start, tmp_path, port, "--key", str(phrase))
     ok = _tablet(tmp_path, port, FLY, "--key", str(hexkey))
     assert ok.returncode == 0, ok.stderr  # type: ignore[attr-defined]
     for extra in ([], ["--key", str(other)]):
@@ -56,6 +56,8 @@ def test_signed_ends_fly_and_strangers_get_no_answer(tmp_path: Path, start: Star
         refused = _tablet(tmp_path, port, STATUS, *extra)
         assert refused.returncode == 1 and "no vehicle answered" in one_line(refused.stderr)  # type: ignore
         assert time.monotonic() - t0 < 40
+    assert "unsigned frames (the same --key at both ends?)" in node.stderr  # type: ignore[attr-defined]
+    assert "frames whose signatures do not verify" in node.stderr  # type: ignore[attr-defined]
 
 
 def test_accept_unsigned_lets_an_unsigned_tablet_in(tmp_path: Path, start: Start) -> None:
@@ -134,3 +136,6 @@ def test_signed_send_file_and_fetch_and_an_unsigned_sender_times_out(tmp_path: P
         assert proc.returncode == 1 and "timed out: no answer" in one_line(proc.stderr), proc.stderr
     assert not (tmp_path / "inbox" / "again.bin").exists()
     assert recv.p.poll() is None  # type: ignore[attr-defined]
+    # the receiver says why it stays silent, once per peer
+    assert recv.stderr.count(": unsigned frames (the same --key at both ends?)") == 1, recv.stderr
+    assert recv.stderr.count(": frames whose signatures do not verify (the same --key at both ends?)") == 1

@@ -83,7 +83,7 @@ def recv_file(o: RecvOptions) -> int:
 
 async def _recv(o: RecvOptions, spec: Any, link: LinkChoice, store: Any, signing: Any) -> int:
     from ..ends.runtime import Runner
-    from ..link.transport import make_transport
+    from ..link.transport import addr_text, make_transport
     from ..proto.endpoint import Endpoint
     from ..proto.storage import StorageError
 
@@ -99,6 +99,9 @@ async def _recv(o: RecvOptions, spec: Any, link: LinkChoice, store: Any, signing
 
     def on_event(what: str, t: Any) -> None:
         nonlocal completed
+        if what == "link-refused":
+            err(f"ignoring {addr_text(t[0])}: {t[1]} (the same --key at both ends?)")
+            return
         peer = who(t.key)
         name = t.name or "?"
         if what == "file-accepted":

@@ -134,7 +134,8 @@ def _os_reason(e: OSError) -> str:
     return (e.strerror or str(e) or type(e).__name__).lower()
 
 
-def _addr_text(addr: object) -> str:
+def addr_text(addr: object) -> str:
+    """A peer's address as people write it (host:port, [v6]:port)."""
     if isinstance(addr, tuple) and len(addr) >= 2:
         host = str(addr[0])
         return f"[{host}]:{addr[1]}" if ":" in host else f"{host}:{addr[1]}"
@@ -233,7 +234,7 @@ class UdpTransport(Transport):
             for opt in (socket.SO_RCVBUF, socket.SO_SNDBUF):
                 with contextlib.suppress(OSError):
                     sock.setsockopt(socket.SOL_SOCKET, opt, UDP_SOCKET_BUFFER)
-        self.local = _addr_text(tr.get_extra_info("sockname"))
+        self.local = addr_text(tr.get_extra_info("sockname"))
 
     def _received(self, data: bytes, addr: tuple[str, int]) -> None:
         if len(data) > self.mtu:
@@ -251,7 +252,7 @@ class UdpTransport(Transport):
         if p is None:
             p = self.peers[source] = Peer(source, now)
             who = ", ".join(f"{s}/{c}" for s, c in sorted(ids))
-            self._note(f"answering {_addr_text(source)} ({who})")
+            self._note(f"answering {addr_text(source)} ({who})")
             while len(self.peers) > MAX_PEERS:
                 self.peers.popitem(last=False)
         else:
@@ -267,7 +268,7 @@ class UdpTransport(Transport):
     def peer(self) -> str | None:
         if self.spec.kind == "udpin":
             live = self._live_peers()
-            return ", ".join(_addr_text(a) for a in live) or None
+            return ", ".join(addr_text(a) for a in live) or None
         return str(self.spec)
 
     def send(self, data: bytes) -> bool:
@@ -302,7 +303,7 @@ class _Stream(asyncio.Protocol):
     def connection_made(self, transport: asyncio.BaseTransport) -> None:
         assert isinstance(transport, asyncio.Transport)
         self.tr = transport
-        self.name = _addr_text(transport.get_extra_info("peername"))
+        self.name = addr_text(transport.get_extra_info("peername"))
         self.owner._connected(self)
 
     def data_received(self, data: bytes) -> None:
@@ -336,7 +337,7 @@ class TcpTransport(Transport):
             except OSError as e:
                 raise TransportError(f"cannot listen on {s}: {_os_reason(e)}") from None
             socks = self._server.sockets
-            self.local = _addr_text(socks[0].getsockname()) if socks else ""
+            self.local = addr_text(socks[0].getsockname()) if socks else ""
             return
         await self._connect(loop)
 
@@ -349,7 +350,7 @@ class TcpTransport(Transport):
             raise TransportError(f"cannot connect to {s}: no answer within {self.connect_timeout:g} s") from None
         except OSError as e:
             raise TransportError(f"cannot connect to {s}: {_os_reason(e)}") from None
-        self.local = _addr_text(tr.get_extra_info("sockname"))
+        self.local = addr_text(tr.get_extra_info("sockname"))
 
     def _connected(self, client: _Stream) -> None:
         self.clients.append(client)

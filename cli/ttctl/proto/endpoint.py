@@ -112,6 +112,7 @@ class Endpoint:
         self.ignored = 0
         self.peers: dict[tuple[int, int], float] = {}  # who we heard from, when
         self._streams_out: list[Any] = []  # newest-wins sources (add_stream)
+        self._refused_sources: set[Hashable] = set()  # reported once each (signing)
 
     # -- node interface -----------------------------------------------------------------------
     def receive(self, now: float, packet: bytes, source: Hashable = None) -> set[tuple[int, int]]:
@@ -120,7 +121,7 @@ class Endpoint:
         self.now = now
         rx = self._rxs.get(source)
         if rx is None:
-            rx = self._rxs[source] = PacketReceiver(signing=self.signing)
+            rx = self._rxs[source] = PacketReceiver(signing=self.signing, on_bad=self._refused_by_signing(source))
             if len(self._rxs) > MAX_SOURCES:
                 old, _ = self._rxs.popitem(last=False)
                 self._last_rx.pop(old, None)
@@ -286,6 +287,21 @@ class Endpoint:
                     send(enc(msg), CONTROL)
                 req.due = now + req.interval
                 req.interval = min(req.interval * 1.5, req.interval_max)
+
+    def _refused_by_signing(self, source: Hashable) -> Callable[[bytes, str], None] | None:
+        """With signing on: the first frame from `source` refused for its signature (or for
+        having none) is reported once, as a "link-refused" event with (source, reason), so a
+        peer with another key is not mistaken for no peer at all."""
+        if self.signing is None:
+            return None
+
+        def bad(frame: bytes, reason: str) -> None:
+            if reason in ("unsigned frame refused", "bad signature or replayed timestamp") \
+                    and source not in self._refused_sources:
+                self._refused_sources.add(source)
+                self._event("link-refused", (source, "unsigned frames" if reason.startswith("unsigned")
+                                             else "frames whose signatures do not verify"))
+        return bad
 
     def _event(self, what: str, obj: Any) -> None:
         if self.on_event is not None:

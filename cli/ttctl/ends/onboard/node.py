@@ -18,7 +18,7 @@ from typing import Any
 
 import ttapi
 
-from ...link.transport import Spec, Transport, UdpTransport, make_transport
+from ...link.transport import Spec, Transport, UdpTransport, addr_text, make_transport
 from ...proto.endpoint import CONTROL, TELEMETRY, Endpoint
 from ...proto.storage import ReceiveDir
 from ..plugins import Context, Dispatcher, Plugin
@@ -248,7 +248,9 @@ class OnboardNode:
         return lambda data, source: self._from_gcs(link, data, source)
 
     def _file_event(self, what: str, t: Any) -> None:
-        if what == "file-complete":
+        if what == "link-refused":
+            self.log(f"dtt: ignoring {addr_text(t[0])}: {t[1]} (the same --key at both ends?)")
+        elif what == "file-complete":
             self._say(6, f"received {t.name} ({t.size} bytes)")
 
     def _from_gcs(self, link: UdpTransport, data: bytes, source: Hashable) -> None:
