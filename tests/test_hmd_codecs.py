@@ -292,7 +292,7 @@ def test_mcap_iterator_yields_what_the_mcap_library_yields(tmp_path: Any, compre
 
 
 def test_mcap_iterator_on_ttctl_recordings(tmp_path: Any) -> None:
-    from test_hmd_formats import make_samples
+    from hmd_recordings import make_samples
     from ttctl.hmd.formats import mcapfile, open_writer
 
     for chunk_size in (4096, 1 << 20):
