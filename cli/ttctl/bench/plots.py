@@ -7,7 +7,8 @@ from __future__ import annotations
 import contextlib
 import os
 import tempfile
-from typing import Any
+from collections.abc import Callable
+from typing import Any, BinaryIO
 
 INSTALL_HINT = "plotting needs matplotlib: pip install 'ttctl[plot]'"
 
@@ -52,13 +53,19 @@ def output_problem(path: str) -> str | None:
 
 
 def save_atomically(fig: Any, path: str) -> None:
-    """Write the PNG beside its final name, then rename: never a partial file under it. It
-    gets the mode an ordinary new file would (mkstemp's are 0600)."""
+    """Write the PNG beside its final name, then rename: never a partial file under it."""
+    write_atomically(path, lambda fh: fig.savefig(fh, format="png", dpi=110))
+
+
+def write_atomically(path: str, write: Callable[[BinaryIO], Any]) -> None:
+    """`write` fills a temporary file beside `path`, which is then renamed to it: never a
+    partial file under the final name. It gets the mode an ordinary new file would (mkstemp's
+    are 0600)."""
     folder = os.path.dirname(os.path.abspath(path))
     fd, tmp = tempfile.mkstemp(prefix=f".{os.path.basename(path)}.", suffix=".tmp", dir=folder)
     try:
         with os.fdopen(fd, "wb") as fh:
-            fig.savefig(fh, format="png", dpi=110)
+            write(fh)
         mask = os.umask(0)
         os.umask(mask)
         os.chmod(tmp, 0o666 & ~mask)

@@ -19,13 +19,12 @@ from collections.abc import Callable
 from dataclasses import asdict, dataclass
 from typing import Any
 
-import ttapi
-
 from ..link.model import Channel, Impairments, Profile, load_profile
 from ..link.sim import Simulation
 from ..proto.endpoint import Endpoint
 from ..proto.storage import BytesSource, ReceiveDir
 from ..proto.transfer import NARROW, NARROW_FRAME, WIDE, WIDE_FRAME, TransferConfig
+from .latency import percentile  # shared with `ttctl bench latency`
 
 TABLET = (255, 190)
 ONBOARD = (1, 240)
@@ -140,43 +139,14 @@ def _data(n: int, seed: int) -> bytes:
 def command_latency(profile: Profile, distance: float, busy: bool, count: int = 200, seed: int = 7,
                     interval: float = 2.0) -> list[float]:
     """Round trips of TT_ACTION_COMMAND -> TT_COMMAND_ACK, idle or while the tablet uploads a
-    file, issued every `interval` seconds (at a random phase within it)."""
-    rng = random.Random(seed)
-    case = Case("up", 0.0, "random")
-    up, down = channels(profile, distance, case, seed)
-    lat: list[float] = []
-    with tempfile.TemporaryDirectory(prefix="ttctl-bench-") as d:
-        tablet = Endpoint(*TABLET, rate_Bps=pace(up), rng=random.Random(seed))
-        onboard = Endpoint(*ONBOARD, rate_Bps=pace(down), receive_dir=ReceiveDir(d), rng=random.Random(seed + 1))
-        sim = Simulation(tablet, onboard, up, down)
-        size = int(profile.capacity_Bps("up", distance) * interval * (count + 5))
-        if busy:
-            tablet.send_file("bulk.bin", ONBOARD, source=BytesSource(_data(size, seed), "bulk.bin"))
-        t = 1.0
-        pending: list[Any] = []
-        for _ in range(count):
-            t += interval
-            issue = t + rng.uniform(0, interval / 2)
-            sim.run(issue)
-            tablet.now = sim.now
-            cmd = tablet.command(ttapi.TtActionCommand(action=int(ttapi.TtAction.TT_ACTION_HOVER)), ONBOARD,
-                                 retries=5, timeout=3.0)
-            pending.append(cmd)
-        sim.run(t + 30, stop=lambda: all(c.done for c in pending))
-        lat = [c.latency for c in pending if c.latency is not None]
-        tablet.close()
-        onboard.close()
-    return lat
+    file (one that lasts past the last command), issued every `interval` seconds (at a random
+    phase within it): `ttctl bench latency`'s model phases."""
+    from .latency import model_commands
 
-
-def percentile(xs: list[float], q: float) -> float:
-    xs = sorted(xs)
-    if not xs:
-        return float("nan")
-    k = (len(xs) - 1) * q
-    lo = int(k)
-    hi = min(lo + 1, len(xs) - 1)
-    return xs[lo] + (xs[hi] - xs[lo]) * (k - lo)
+    size = int(profile.capacity_Bps("up", distance) * interval * (count + 5))
+    cmds, _, _ = model_commands(profile, distance, "upload" if busy else "idle", count, seed, interval, size,
+                                restart=False)
+    return [c.latency for c in cmds if c.latency is not None]
 
 
 PROTOCOLS: dict[str, Callable[..., tuple[float, bool, float]]] = {"ttctl": run_ttctl}

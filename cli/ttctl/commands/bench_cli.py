@@ -84,18 +84,60 @@ def bench_link(
     profile: Annotated[str, typer.Option(help="Link profile.")] = "m100",
     plot: Annotated[Path | None, typer.Option(help=f"Write a PNG ({PLOT_EXTRA}).")] = None,
     json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+    to: Annotated[str | None, typer.Option("--to", help="Measure a live link instead of the model: the "
+                                                        "udpout:HOST:PORT of a `ttctl bench serve` behind it.",
+                                           show_default=False)] = None,
+    direction: Annotated[str, typer.Option("--direction", help="With --to: up, down or both.")] = "both",
+    sizes: Annotated[str, typer.Option("--sizes", help="With --to: uplink probe sizes in bytes, 10..100.")]
+    = "10,50,100",
+    rates: Annotated[str, typer.Option("--rates", help="With --to: downlink send rates in Hz (100-byte "
+                                                       "probes).")] = "5,10,20",
+    count: Annotated[int, typer.Option("--count", help="With --to: probes per size and per rate.")] = 100,
+    rate: Annotated[float | None, typer.Option("--rate", help="With --to: pace the uplink at this many bytes "
+                                                              "per second (default: the profile's uplink "
+                                                              "capacity).", show_default=False)] = None,
+    label: Annotated[str, typer.Option("--label", help="With --to: a note on the conditions, kept in the "
+                                                       "output.")] = "",
+    output: Annotated[Path | None, typer.Option("-o", "--output", help="With --to: also write the report to "
+                                                                       "FILE.json or FILE.csv.",
+                                                show_default=False)] = None,
 ) -> None:
     """The thesis's measurement method replayed on the link model: uplink packet sizes and
-    distances, downlink send rates."""
+    distances, downlink send rates; with --to, the same against a live `ttctl bench serve`."""
     from ..bench import linkbench
     from ..link.model import ProfileError
 
+    if to is not None:
+        from ..bench import live
+
+        o = live.Options(to, direction, live.parse_list(sizes, "--sizes", int),
+                         live.parse_list(rates, "--rates", float), count, rate, profile, label, json_out,
+                         str(output) if output else None, str(plot) if plot else None)
+        raise typer.Exit(live.run(o))
+    given = [name for name, value, default in (("--direction", direction, "both"), ("--sizes", sizes, "10,50,100"),
+                                               ("--rates", rates, "5,10,20"), ("--count", count, 100),
+                                               ("--rate", rate, None), ("--label", label, ""),
+                                               ("-o", output, None)) if value != default]
+    if given:
+        raise Fail(f"{', '.join(given)} measure a live link: give --to udpout:HOST:PORT (a `ttctl bench serve`)")
     try:
         linkbench.run(profile, json_out, str(plot) if plot else None)
     except ProfileError as e:
         raise Fail(str(e)) from None
     except RuntimeError as e:  # matplotlib missing
         raise Fail(str(e)) from None
+
+
+@bench_app.command("serve")
+def bench_serve(
+    listen: Annotated[str, typer.Option("--listen", help="Where to listen (udpin:HOST:PORT).")]
+    = "udpin:0.0.0.0:14570",
+) -> None:
+    """The peer of `ttctl bench link --to`: counts probes, echoes round-trip probes, reports what
+    arrived and sends downlink probes on request (plain UDP datagrams of at most 100 bytes)."""
+    from ..bench.serve import serve
+
+    raise typer.Exit(serve(listen))
 
 
 @bench_app.command("integrity")
@@ -146,3 +188,7 @@ def bench_hmd(
     from ..bench.hmd import run
 
     raise typer.Exit(run(seconds, runs, replay_minutes, json_out))
+
+from .bench_latency_cli import bench_latency  # noqa: E402
+
+bench_app.command("latency")(bench_latency)

@@ -1,0 +1,118 @@
+"""`ttctl bench latency`: command latency idle and during transfers (the work is in ttctl.bench.latency)."""
+
+from __future__ import annotations
+
+import sys
+from typing import TYPE_CHECKING, Annotated, Any
+
+import typer
+
+from ..errors import Fail
+
+if TYPE_CHECKING:
+    from ..bench.latency import Phase
+    from ..link.model import Profile
+
+MODEL_MARGIN = 0.05  # s over a packet time: the scheduler's promise, in virtual time
+LIVE_MARGIN = 0.2  # s over a packet time: the same, with two processes, a relay and the OS's timers
+
+
+def bench_latency(
+    to: Annotated[str | None, typer.Option("--to", help="Measure live: the onboard end (ttctl emulate onboard, "
+                                                        "recv-file), or a relay in front of it, as udpout:HOST:PORT "
+                                                        "(or tcp:, udpin:). Without it: the link model, in virtual "
+                                                        "time.", show_default=False)] = None,
+    profile: Annotated[str, typer.Option("--profile", help="Link profile: the model's (without --to), or this end's "
+                                                           "pacing (with --to).")] = "m100",
+    distance: Annotated[float, typer.Option("--distance", help="Distance in metres.", min=0)] = 10.0,
+    count: Annotated[int, typer.Option("--count", help="Commands per phase (idle, upload, download).", min=1,
+                                       max=10_000)] = 50,
+    interval: Annotated[float, typer.Option("--interval", help="One command every this many seconds (at a random "
+                                                               "moment in the first half).", min=0.05,
+                                            max=60)] = 1.0,
+    size: Annotated[int, typer.Option("--size", help="Bytes of the file moved during the transfer phases (sent "
+                                                     "again while commands remain).", min=1,
+                                      max=1 << 26)] = 65536,
+    seed: Annotated[int, typer.Option("--seed", help="Random seed (model: the same seed, the same numbers).")] = 1,
+    fetch: Annotated[str | None, typer.Option("--fetch", help="With --to: a file the peer serves (emulate onboard "
+                                                              "--serve DIR), fetched during the download phase; "
+                                                              "without it that phase is skipped.",
+                                              show_default=False)] = None,
+    timeout: Annotated[float, typer.Option("--timeout", help="With --to: seconds to wait for the peer's first "
+                                                             "ack before giving up (exit 2).", min=0.1,
+                                           max=600)] = 10.0,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+) -> None:
+    """Command latency (TT_ACTION_COMMAND -> TT_COMMAND_ACK): idle, during an upload and during a
+    download; p50/p95/max, retries, and during/idle ratios. On the link model in virtual time, or
+    live (--to) against a real onboard end. Exit 1 if a transfer phase's p95 is over idle p95 +
+    a packet time + a margin (what the scheduler promises) or the phase could not run (a refused
+    fetch, a peer that takes no files), 2 for bad input or no peer.
+
+    Example: ttctl bench latency --to udpout:127.0.0.1:14550 --count 20 --interval 0.5
+    """
+    from ..bench import latency as lat
+    from ..link.model import ProfileError, load_profile
+
+    try:
+        prof = load_profile(profile)
+    except ProfileError as e:
+        raise Fail(str(e)) from None
+    if fetch is not None and to is None:
+        raise Fail("--fetch applies to live runs (--to); the model's download phase needs no file")
+    bound = lat.packet_time(prof, distance) + (LIVE_MARGIN if to is not None else MODEL_MARGIN)
+    meta: dict[str, Any] = {"mode": "live" if to else "model", "profile": prof.name, "distance_m": distance,
+                            "count": count, "interval_s": interval, "file_bytes": size, "seed": seed,
+                            "packet_time_ms": round(1000 * lat.packet_time(prof, distance), 1),
+                            "bound_ms": round(1000 * bound, 1)}
+    if to is None:
+        phases = lat.run_model(prof, distance, count, seed, interval, size)
+    else:
+        phases, extra = _live(to, prof, distance, count, interval, size, seed, fetch, timeout)
+        meta.update(extra)
+    rep = lat.report(phases, meta, bound)
+    if json_out:
+        print(lat.dumps(rep), flush=True)
+    else:
+        lat.print_report(rep)
+    broken = [p for p in rep["phases"] if p["note"] and not p["note"].startswith("skipped")]
+    if broken or not all(c["ok"] for c in rep["checks"]):
+        raise typer.Exit(1)
+
+
+def _live(to: str, prof: Profile, distance: float, count: int, interval: float, size: int, seed: int,
+          fetch: str | None, timeout: float) -> tuple[list[Phase], dict[str, Any]]:
+    from ..bench import latency as lat
+    from .common import TABLET, link_choice
+
+    if fetch is not None:
+        from ..proto.names import Refused, check_name
+
+        try:
+            check_name(fetch)
+        except Refused as e:
+            raise Fail(f"--fetch {fetch!r}: {e.reason}") from None
+    link = link_choice(None, prof.name, distance, TABLET[0])
+    o = lat.LiveOptions(to, count, interval, size, link.pace_Bps, link.quiet, fetch, timeout, seed)
+    tty = sys.stderr.isatty()
+
+    def progress(text: str) -> None:
+        if tty:
+            print(f"\rttctl: {text}\033[K", end="", file=sys.stderr, flush=True)
+        elif text.endswith(f"{count}/{count}") or "skipped" in text:
+            print(f"ttctl: {text}", file=sys.stderr, flush=True)
+
+    from ..link.transport import TransportError
+
+    try:
+        phases, extra = lat.run_live(o, progress)
+    except lat.Unreachable as e:
+        if tty:
+            print("\r\033[K", end="", file=sys.stderr)
+        raise Fail(str(e)) from None
+    except TransportError as e:
+        raise Fail(str(e)) from None
+    finally:
+        if tty:
+            print("\r\033[K", end="", file=sys.stderr, flush=True)
+    return phases, extra
