@@ -173,7 +173,7 @@ def test_server_killed_midway_keeps_rows_marked_partial(start: Start, tmp_path: 
 
 
 def test_server_ignores_garbage_and_strangers_and_stops_on_sigint(start: Start) -> None:
-    from ttctl.bench import serve as P
+    from ttctl.link import probes as P
 
     srv, sport = server(start)
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
@@ -193,7 +193,7 @@ def test_server_ignores_garbage_and_strangers_and_stops_on_sigint(start: Start) 
 
 
 def test_server_core_bounds_its_memory_and_reports_ranges() -> None:
-    from ttctl.bench import serve as P
+    from ttctl.link import probes as P
 
     core = P.Server(clock=lambda: 0)
     for run in range(1, P.MAX_RUNS + 10):
@@ -211,3 +211,58 @@ def test_server_core_bounds_its_memory_and_reports_ranges() -> None:
     from ttctl.bench.live import loss_runs
 
     assert loss_runs(got, 50) == [3, 5, 4]
+
+
+def test_link_probes_beside_a_node_take_only_whole_probes() -> None:
+    """The onboard end's embedded service: a packet that parses as a probe is not one while a
+    frame from its source is half received (it is that frame's continuation), and a downlink
+    run needs an echo from the same source first (so a stray continuation cannot start one)."""
+    from ttctl.link import probes as P
+
+    mid: set[str] = set()
+    sent: list[tuple[bytes, object]] = []
+    lp = P.LinkProbes(lambda data, src: sent.append((data, src)), lambda src: src in mid, lambda _: None)
+    echo = (P.header(b"E", 5, 1) + P.STAMP.pack(7)).ljust(18, b"\x55")
+    mid.add("a")
+    assert lp.take(echo, "a") is False and sent == []
+    assert lp.take(b"\xfd\x09" + bytes(20), "b") is False  # a MAVLink frame: the node's
+    down = P.DOWN_REQ.pack(P.MAGIC, b"D", 9, 10, 50, 10_000)
+    assert lp.take(down, "b") is True and sent == []  # no echo from b yet: refused
+    assert lp.take(echo, "b") is True and P.parse(sent[-1][0]) == (b"e", 5, 1) and sent[-1][1] == "b"
+
+
+def test_emulate_onboard_answers_bench_link_beside_its_link(start: Start, tmp_path: Path) -> None:
+    """`bench link --to` a running onboard end through the relay: the m100 uplink's 500 B/s is
+    measured, and a file sent over the same link meanwhile arrives whole."""
+    from e2e_lib import data_file
+
+    dtt = free_port()
+    onboard = start("onboard", "emulate", "onboard", "--listen", f"udpin:{LOCAL}:{dtt}", "--no-gcs", "--inbox",
+                    str(tmp_path / "inbox"), "--profile", "m100")
+    onboard.wait_for("tablet link")
+    port = free_port()
+    start("relay", "link", "relay", "--listen", f"udpin:{LOCAL}:{port}", "--to", f"udpout:{LOCAL}:{dtt}",
+          "--profile", "m100", "--stats-interval", "0").wait_for("relay: udpin")
+    b, err = bench_bg(tmp_path, port, "--sizes", "100", "--rates", "10", "--count", "40", "--rate", "1000")
+    f = data_file(tmp_path, "f.bin", 3000)
+    sent = run_ttctl("send-file", str(f), "--to", f"udpout:{LOCAL}:{port}", "--profile", "m100", "--json",
+                     timeout=90)
+    out, _ = b.communicate(timeout=90)
+    assert b.returncode == 0, err.read_text()
+    assert sent.returncode == 0, sent.stdout + sent.stderr
+    assert (tmp_path / "inbox" / "f.bin").read_bytes() == f.read_bytes()
+    rep = json.loads(out)
+    up, down = rep["uplink"]["rows"][0], rep["downlink"]["rows"][0]
+    assert 350 <= up["capacity_Bps"] <= 560, up  # the file shares the uplink part of the time
+    assert down["received"] >= 36, down
+    assert "bench: downlink run" in onboard.stderr
+
+
+def test_emulate_onboard_with_a_key_answers_no_probes(start: Start, tmp_path: Path) -> None:
+    key = tmp_path / "key"
+    key.write_text("correct horse battery staple")
+    dtt = free_port()
+    start("onboard", "emulate", "onboard", "--listen", f"udpin:{LOCAL}:{dtt}", "--no-gcs", "--key",
+          str(key)).wait_for("tablet link")
+    proc, _ = bench(dtt, "--count", "5", "--sizes", "50", "--rates", "10")
+    assert proc.returncode == 2 and "no answer" in proc.stderr, proc.stderr

@@ -13,7 +13,7 @@ import pytest
 
 from ttctl.bench import linkbench
 from ttctl.errors import Fail
-from ttctl.link.model import load_profile
+from ttctl.link.model import ProfileError, load_profile
 
 PNG = b"\x89PNG\r\n\x1a\n"
 
@@ -100,17 +100,17 @@ def test_all_facts_hold(report: dict[str, Any]) -> None:
 
 
 def test_run_prints_json_and_tables(capsys: pytest.CaptureFixture[str]) -> None:
-    rep = linkbench.run("m100", True, None)
+    rep = linkbench.run(load_profile("m100"), True, None)
     out = json.loads(capsys.readouterr().out)
     assert out == json.loads(json.dumps(rep))
-    linkbench.run("m100", False, None)
+    linkbench.run(load_profile("m100"), False, None)
     text = capsys.readouterr().out
     assert "uplink" in text and "downlink" in text and "200 m" in text
 
 
 def test_run_unknown_profile_is_a_clean_error() -> None:
-    with pytest.raises(Fail, match="unknown link profile"):
-        linkbench.run("nope", True, None)
+    with pytest.raises(ProfileError, match="unknown link profile"):
+        linkbench.run(load_profile("nope"), True, None)
 
 
 def test_plots_without_matplotlib_say_what_to_install(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -138,7 +138,7 @@ def test_plot_link_writes_png(report: dict[str, Any], tmp_path: Path) -> None:
 def test_run_with_plot(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     pytest.importorskip("matplotlib")
     out = tmp_path / "link.png"
-    linkbench.run("psdk", True, str(out))
+    linkbench.run(load_profile("psdk"), True, str(out))
     assert out.read_bytes()[:8] == PNG
     assert json.loads(capsys.readouterr().out)["profile"] == "psdk"
 

@@ -23,7 +23,8 @@ from . import __version__
 from .commands.bench_cli import bench_app
 from .commands.emulate_cli import emulate_app
 from .commands.hmd_cli import hmd_app
-from .commands.options import AcceptUnsignedOpt, DistanceOpt, JsonOpt, KeyOpt, ProfileOpt, RateOpt
+from .commands.link_cli import link_app
+from .commands.options import AcceptUnsignedOpt, DistanceOpt, JsonOpt, KeyOpt, ProfileFileOpt, ProfileOpt, RateOpt
 from .errors import Fail
 
 app = typer.Typer(
@@ -136,7 +137,6 @@ def gen(
     raise typer.Exit(code)
 
 
-link_app = typer.Typer(help="The emulated DJI link between processes.", no_args_is_help=True)
 app.add_typer(link_app, name="link")
 app.add_typer(emulate_app, name="emulate")
 app.add_typer(hmd_app, name="hmd")
@@ -164,6 +164,7 @@ def recv_file_cmd(
     compid: Annotated[int, typer.Option("--compid", help="This end's MAVLink component id.")] = 240,
     rate: RateOpt = None,
     profile: ProfileOpt = None,
+    profile_file: ProfileFileOpt = None,
     distance: DistanceOpt = 10.0,
     json_out: JsonOpt = False,
     key: KeyOpt = None,
@@ -180,7 +181,7 @@ def recv_file_cmd(
     from .commands.recv_file import RecvOptions, recv_file
 
     code = recv_file(RecvOptions(listen, folder, overwrite, max_file, max_dir, serve, count, sysid, compid, rate,
-                                 profile, distance, json_out, key, accept_unsigned))
+                                 profile, distance, json_out, key, accept_unsigned, profile_file))
     raise typer.Exit(code)
 
 
@@ -202,6 +203,7 @@ def send_file_cmd(
     json_out: JsonOpt = False,
     rate: RateOpt = None,
     profile: ProfileOpt = None,
+    profile_file: ProfileFileOpt = None,
     distance: DistanceOpt = 10.0,
     sysid: Annotated[int, typer.Option("--sysid", help="This end's MAVLink system id.")] = 255,
     compid: Annotated[int, typer.Option("--compid", help="This end's MAVLink component id.")] = 190,
@@ -228,54 +230,7 @@ def send_file_cmd(
     from .commands.send_file import SendOptions, send_file
 
     code = send_file(SendOptions(file, to, from_, name, overwrite, json_out, rate, profile, distance, sysid, compid,
-                                 target_sysid, target_compid, timeout, folder, key, accept_unsigned))
-    raise typer.Exit(code)
-
-
-@link_app.command("relay")
-def link_relay(
-    listen: Annotated[str, typer.Option("--listen", help="udp:HOST:PORT where the tablet side sends (udpin).",
-                                        show_default=False)],
-    to: Annotated[str, typer.Option("--to", help="udp:HOST:PORT of the onboard side (udpout).",
-                                    show_default=False)],
-    profile: Annotated[str, typer.Option("--profile", help="Link profile: m100, psdk or lan.")] = "m100",
-    distance: Annotated[float, typer.Option("--distance", help="Distance in metres.")] = 10.0,
-    loss: Annotated[float | None, typer.Option("--loss", help="Packet loss probability, both directions "
-                                                              "(default: the profile's at --distance).",
-                                               show_default=False)] = None,
-    loss_model: Annotated[str, typer.Option("--loss-model", help="random or burst (Gilbert-Elliott).")] = "random",
-    corrupt: Annotated[float, typer.Option("--corrupt", help="Probability that a packet has bytes flipped.")] = 0.0,
-    duplicate: Annotated[float, typer.Option("--duplicate", help="Probability that a packet arrives twice.")]
-    = 0.0,
-    reorder: Annotated[float, typer.Option("--reorder", help="Probability that a packet is held back behind "
-                                                             "later ones.")] = 0.0,
-    seed: Annotated[int, typer.Option("--seed", help="Random seed.")] = 0,
-    rate: Annotated[float | None, typer.Option("--rate", help="Override the profile's rate, both directions, "
-                                                              "bytes per second.", show_default=False)] = None,
-    stats_interval: Annotated[float, typer.Option("--stats-interval", help="Seconds between stats lines on "
-                                                                           "stderr (0: only at the end).")] = 5.0,
-    outage: Annotated[list[str] | None, typer.Option("--outage", help="START:SECONDS: nothing gets through, "
-                                                                      "either way, for SECONDS from START seconds "
-                                                                      "after the relay starts (repeatable).",
-                                                     show_default=False)] = None,
-) -> None:
-    """The emulated DJI radio link, as a process between the two ends, in real time.
-
-    Packets arriving on --listen (the tablet side) go through the profile's uplink model (rate, SDK
-    buffer, loss, latency) and reach --to after the modelled time, or are lost, corrupted, duplicated
-    or reordered as asked. Packets from --to go through the downlink model to the address last heard
-    on --listen. Datagrams over the profile's MTU (100 bytes) are dropped, as DJI refuses them.
-    A stats line goes to stderr every --stats-interval seconds, and a last one on SIGINT/SIGTERM (exit 0).
-
-    Example, three shells:
-    ttctl link relay --listen udp:127.0.0.1:14550 --to udp:127.0.0.1:14560 --loss 0.1
-    ttctl recv-file --listen udpin:127.0.0.1:14560 --dir inbox --profile m100
-    ttctl send-file FILE --to udpout:127.0.0.1:14550 --profile m100
-    """
-    from .commands.relay import RelayOptions, relay
-
-    code = relay(RelayOptions(listen, to, profile, distance, loss, loss_model, corrupt, duplicate, reorder, seed,
-                              rate, stats_interval, outage or []))
+                                 target_sysid, target_compid, timeout, folder, key, accept_unsigned, profile_file))
     raise typer.Exit(code)
 
 

@@ -27,7 +27,7 @@ import json
 import statistics
 from typing import Any
 
-from ..link.model import Channel, Impairments, Profile, ProfileError, load_profile
+from ..link.model import Channel, Impairments, Profile
 
 UP_SIZES = (1, *range(10, 101, 10))
 UP_DISTANCES = (10.0, 50.0, 100.0, 150.0, 200.0)
@@ -171,13 +171,7 @@ def facts(report: dict[str, Any]) -> list[dict[str, Any]]:
     return out
 
 
-def run(profile_name: str, as_json: bool, plot: str | None, seed: int = 1) -> dict[str, Any]:
-    from ..errors import Fail
-
-    try:
-        profile = load_profile(profile_name)
-    except ProfileError as e:
-        raise Fail(str(e)) from None
+def run(profile: Profile, as_json: bool, plot: str | None, seed: int = 1) -> dict[str, Any]:
     if plot:
         from .plots import require_matplotlib
 

@@ -1,6 +1,6 @@
 """`ttctl bench link --to ENDPOINT`: the thesis's measurement against a live `ttctl bench serve`.
 
-The protocol is in ttctl.bench.serve. The run, in real time:
+The protocol is in ttctl.link.probes. The run, in real time:
 
 1. Latency: ECHOES round-trip probes, one at a time; RTT p50/p95 and the server clock's offset
    (NTP-style: the median offset of the echoes with the shortest round trips). Like NTP's, the
@@ -45,7 +45,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..errors import Fail
-from . import serve as P
+from ..link import probes as P
 
 ECHOES = 20
 UNREACHABLE_S = 3.0
@@ -54,7 +54,7 @@ HELLO_S = 10.0
 DOWN_SIZE = 100
 CSV_FIELDS = ("direction", "size", "rate_hz", "sent", "received", "lost", "loss", "loss_runs", "loss_run_mean",
               "loss_run_max", "seconds", "throughput_Bps", "goodput_Bps", "rx_rate_Bps", "capacity_Bps", "owd_p50_ms",
-              "owd_p95_ms", "partial", "label", "endpoint", "time", "ttctl_version")
+              "owd_p95_ms", "owd_min_ms", "partial", "label", "endpoint", "time", "ttctl_version")
 
 
 class Silent(Exception):
@@ -69,11 +69,13 @@ class Options:
     rates: list[float] = field(default_factory=lambda: [5.0, 10.0, 20.0])
     count: int = 100
     rate: float | None = None
-    profile: str = "m100"
+    profile: str | None = None
     label: str = ""
     as_json: bool = False
     output: str | None = None
     plot: str | None = None
+    profile_file: str | None = None
+    distance: float | None = None  # metres, kept in the conditions (for `ttctl link fit`)
 
 
 def parse_list(text: str, what: str, kind: Callable[[str], Any]) -> list[Any]:
@@ -107,10 +109,12 @@ def check(o: Options) -> tuple[Any, float]:
             raise Fail(f"--rates: {r:g} Hz is not in (0, {P.MAX_RATE_HZ:g}]")
     if not 1 <= o.count <= P.MAX_COUNT:
         raise Fail(f"--count must be in 1..{P.MAX_COUNT}")
+    if o.distance is not None and not (0 <= o.distance < 1e6):
+        raise Fail("--distance must be a number of metres >= 0")
     if o.rate is not None and o.rate <= 0:
         raise Fail("--rate must be a positive number of bytes per second")
     try:
-        pace = o.rate or load_profile(o.profile).capacity_Bps("up", 10.0)
+        pace = o.rate or load_profile(o.profile, o.profile_file).capacity_Bps("up", o.distance or 10.0)
     except ProfileError as e:
         raise Fail(str(e)) from None
     if o.output is not None:
@@ -331,7 +335,7 @@ class Measure:
         await asyncio.sleep(2 * self.rtt_p95 + 0.3)  # the last probes drain through the link
         c.keepalive()
         data, _ = await c.ask(P.header(b"Q", run, 0), (b"R", run, 0), self._timeout(), self._tries())
-        (_, _, _, _, received, pages, first_rx, last_rx, d0, dp50, dp95, _dmin, _nbytes,
+        (_, _, _, _, received, pages, first_rx, last_rx, d0, dp50, dp95, dmin, _nbytes,
          gap) = P.SUMMARY.unpack(data)
         ranges: list[tuple[int, int]] = []
         for page in range(1, pages + 1):
@@ -347,6 +351,7 @@ class Measure:
         if received:
             row["owd_p50_ms"] = round((P.signed(d0 + dp50) - self.offset_us) / 1e3, 2)
             row["owd_p95_ms"] = round((P.signed(d0 + dp95) - self.offset_us) / 1e3, 2)
+            row["owd_min_ms"] = round((P.signed(d0 + dmin) - self.offset_us) / 1e3, 2)
         return row
 
     async def downlink(self, rate: float) -> dict[str, Any]:
@@ -393,7 +398,8 @@ class Measure:
                     "rx_rate_Bps": round((got - 1) * DOWN_SIZE / span, 1) if got > 1 and span > 0 else 0.0,
                     "capacity_Bps": round(DOWN_SIZE / gap, 1) if gap > 0 else 0.0,
                     "owd_p50_ms": round((P.signed(d0 + P._pct(rel, 0.5)) + self.offset_us) / 1e3, 2),
-                    "owd_p95_ms": round((P.signed(d0 + P._pct(rel, 0.95)) + self.offset_us) / 1e3, 2)})
+                    "owd_p95_ms": round((P.signed(d0 + P._pct(rel, 0.95)) + self.offset_us) / 1e3, 2),
+                    "owd_min_ms": round((P.signed(d0 + min(rel)) + self.offset_us) / 1e3, 2)})
         return row
 
 
@@ -451,7 +457,7 @@ def run(o: Options) -> int:
     report: dict[str, Any] = {
         "conditions": {"label": o.label, "endpoint": str(spec), "time": time.strftime("%Y-%m-%dT%H:%M:%SZ",
                                                                                       time.gmtime()),
-                       "ttctl_version": _version(), "count": o.count},
+                       "ttctl_version": _version(), "count": o.count, "distance_m": o.distance},
         "partial": False, "latency": None,
         "uplink": {"pace_Bps": round(pace, 1), "sizes": ups, "rows": []},
         "downlink": {"size": DOWN_SIZE, "rates_hz": downs, "rows": []},

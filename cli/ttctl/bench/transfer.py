@@ -19,7 +19,7 @@ from collections.abc import Callable
 from dataclasses import asdict, dataclass
 from typing import Any
 
-from ..link.model import Channel, Impairments, Profile, load_profile
+from ..link.model import Channel, Impairments, Profile
 from ..link.sim import Simulation
 from ..proto.endpoint import Endpoint
 from ..proto.storage import BytesSource, ReceiveDir
@@ -159,7 +159,7 @@ def _register_baselines() -> None:
     PROTOCOLS["mavftp"] = baselines.run_mavftp
 
 
-def run(profile_name: str, distance: float, file_bytes: int, seeds: int, protocols: list[str],
+def run(profile: Profile, distance: float, file_bytes: int, seeds: int, protocols: list[str],
         as_json: bool, plot: str | None, quick: bool) -> None:
     from ..errors import Fail
 
@@ -174,7 +174,6 @@ def run(profile_name: str, distance: float, file_bytes: int, seeds: int, protoco
     for p in protocols:
         if p not in PROTOCOLS:
             raise Fail(f"unknown protocol {p!r} (choose from {', '.join(PROTOCOLS)})")
-    profile = load_profile(profile_name)
     seed_list = list(range(1, seeds + 1))
     cases = default_cases() if not quick else [Case("up", 0.0, "random"), Case("up", 0.1, "random")]
     rows: list[Row] = []

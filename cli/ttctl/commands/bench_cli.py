@@ -8,7 +8,7 @@ from typing import Annotated
 import typer
 
 from ..errors import Fail
-from .options import PLOT_EXTRA
+from .options import PLOT_EXTRA, ProfileFileOpt
 
 bench_app = typer.Typer(help="Benchmarks that print ratios against a named peer, measured in one run.",
                         no_args_is_help=True)
@@ -58,7 +58,9 @@ def bench_codec(
 
 @bench_app.command("transfer")
 def bench_transfer(
-    profile: Annotated[str, typer.Option(help="Link profile (see cli/ttctl/link/profiles.toml).")] = "m100",
+    profile: Annotated[str | None, typer.Option(help="Link profile (see cli/ttctl/link/profiles.toml); default "
+                                                     "m100.", show_default=False)] = None,
+    profile_file: ProfileFileOpt = None,
     distance: Annotated[float, typer.Option(help="Distance in metres.", min=0)] = 10.0,
     size: Annotated[int, typer.Option("--size", help="File size in bytes.", min=1, max=1 << 26)] = 65536,
     seeds: Annotated[int, typer.Option(help="Seeds per case; rows report the median.", min=1, max=99)] = 9,
@@ -70,10 +72,11 @@ def bench_transfer(
     """File transfer over the link model in virtual time: ttctl against the thesis protocol and
     MAVLink FTP at 0/10/30 % random and burst loss, both directions, plus command latency."""
     from ..bench.transfer import run
-    from ..link.model import ProfileError
+    from ..link.model import ProfileError, load_profile
 
     try:
-        run(profile, distance, size, seeds, [p.strip() for p in protocols.split(",") if p.strip()], json_out,
+        prof = load_profile(profile, str(profile_file) if profile_file else None)
+        run(prof, distance, size, seeds, [p.strip() for p in protocols.split(",") if p.strip()], json_out,
             str(plot) if plot else None, quick)
     except ProfileError as e:
         raise Fail(str(e)) from None
@@ -81,7 +84,9 @@ def bench_transfer(
 
 @bench_app.command("link")
 def bench_link(
-    profile: Annotated[str, typer.Option(help="Link profile.")] = "m100",
+    profile: Annotated[str | None, typer.Option(help="Link profile (default m100): the model's, or with --to the "
+                                                     "uplink pace's.", show_default=False)] = None,
+    profile_file: ProfileFileOpt = None,
     plot: Annotated[Path | None, typer.Option(help=f"Write a PNG ({PLOT_EXTRA}).")] = None,
     json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
     to: Annotated[str | None, typer.Option("--to", help="Measure a live link instead of the model: the "
@@ -101,18 +106,31 @@ def bench_link(
     output: Annotated[Path | None, typer.Option("-o", "--output", help="With --to: also write the report to "
                                                                        "FILE.json or FILE.csv.",
                                                 show_default=False)] = None,
+    distance: Annotated[float | None, typer.Option("--distance", help="With --to: the distance in metres, kept "
+                                                                      "with the measurement (for `ttctl link "
+                                                                      "fit`); with --like: replay at this "
+                                                                      "distance instead of the measurement's.",
+                                                   show_default=False)] = None,
+    like: Annotated[Path | None, typer.Option("--like", help="Replay this measurement (a `bench link --to -o "
+                                                             "FILE.json`) on the model: the same packets at the "
+                                                             "same moments, compared figure by figure; exit 1 if "
+                                                             "any is outside its tolerance.",
+                                              show_default=False)] = None,
 ) -> None:
     """The thesis's measurement method replayed on the link model: uplink packet sizes and
     distances, downlink send rates; with --to, the same against a live `ttctl bench serve`."""
     from ..bench import linkbench
-    from ..link.model import ProfileError
+    from ..link.model import ProfileError, load_profile
 
+    pfile = str(profile_file) if profile_file else None
     if to is not None:
         from ..bench import live
 
+        if like is not None:
+            raise Fail("--like replays a measurement on the model: leave out --to")
         o = live.Options(to, direction, live.parse_list(sizes, "--sizes", int),
                          live.parse_list(rates, "--rates", float), count, rate, profile, label, json_out,
-                         str(output) if output else None, str(plot) if plot else None)
+                         str(output) if output else None, str(plot) if plot else None, pfile, distance)
         raise typer.Exit(live.run(o))
     given = [name for name, value, default in (("--direction", direction, "both"), ("--sizes", sizes, "10,50,100"),
                                                ("--rates", rates, "5,10,20"), ("--count", count, 100),
@@ -120,8 +138,14 @@ def bench_link(
                                                ("-o", output, None)) if value != default]
     if given:
         raise Fail(f"{', '.join(given)} measure a live link: give --to udpout:HOST:PORT (a `ttctl bench serve`)")
+    if like is not None:
+        from ..bench.replay_cli import run_like
+
+        raise typer.Exit(run_like(str(like), profile, pfile, distance, json_out))
+    if distance is not None:
+        raise Fail("--distance goes with --to (kept with the measurement) or --like (the replay's distance)")
     try:
-        linkbench.run(profile, json_out, str(plot) if plot else None)
+        linkbench.run(load_profile(profile, pfile), json_out, str(plot) if plot else None)
     except ProfileError as e:
         raise Fail(str(e)) from None
     except RuntimeError as e:  # matplotlib missing

@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import sys
+from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
 from ..errors import Fail
+from .options import ProfileFileOpt
 
 if TYPE_CHECKING:
     from ..bench.latency import Phase
@@ -22,8 +24,10 @@ def bench_latency(
                                                         "recv-file), or a relay in front of it, as udpout:HOST:PORT "
                                                         "(or tcp:, udpin:). Without it: the link model, in virtual "
                                                         "time.", show_default=False)] = None,
-    profile: Annotated[str, typer.Option("--profile", help="Link profile: the model's (without --to), or this end's "
-                                                           "pacing (with --to).")] = "m100",
+    profile: Annotated[str | None, typer.Option("--profile", help="Link profile: the model's (without --to), or this "
+                                                                  "end's pacing (with --to); default m100.",
+                                                show_default=False)] = None,
+    profile_file: ProfileFileOpt = None,
     distance: Annotated[float, typer.Option("--distance", help="Distance in metres.", min=0)] = 10.0,
     count: Annotated[int, typer.Option("--count", help="Commands per phase (idle, upload, download).", min=1,
                                        max=10_000)] = 50,
@@ -55,7 +59,7 @@ def bench_latency(
     from ..link.model import ProfileError, load_profile
 
     try:
-        prof = load_profile(profile)
+        prof = load_profile(profile, str(profile_file) if profile_file else None)
     except ProfileError as e:
         raise Fail(str(e)) from None
     if fetch is not None and to is None:
@@ -68,7 +72,7 @@ def bench_latency(
     if to is None:
         phases = lat.run_model(prof, distance, count, seed, interval, size)
     else:
-        phases, extra = _live(to, prof, distance, count, interval, size, seed, fetch, timeout)
+        phases, extra = _live(to, prof, distance, count, interval, size, seed, fetch, timeout, profile_file)
         meta.update(extra)
     rep = lat.report(phases, meta, bound)
     if json_out:
@@ -81,7 +85,7 @@ def bench_latency(
 
 
 def _live(to: str, prof: Profile, distance: float, count: int, interval: float, size: int, seed: int,
-          fetch: str | None, timeout: float) -> tuple[list[Phase], dict[str, Any]]:
+          fetch: str | None, timeout: float, profile_file: Path | None) -> tuple[list[Phase], dict[str, Any]]:
     from ..bench import latency as lat
     from .common import TABLET, link_choice
 
@@ -92,7 +96,7 @@ def _live(to: str, prof: Profile, distance: float, count: int, interval: float, 
             check_name(fetch)
         except Refused as e:
             raise Fail(f"--fetch {fetch!r}: {e.reason}") from None
-    link = link_choice(None, prof.name, distance, TABLET[0])
+    link = link_choice(None, prof.name, distance, TABLET[0], profile_file)
     o = lat.LiveOptions(to, count, interval, size, link.pace_Bps, link.quiet, fetch, timeout, seed)
     tty = sys.stderr.isatty()
 

@@ -32,7 +32,8 @@ class LinkChoice:
         return f"paced at {self.pace_Bps:.0f} B/s" if self.pace_Bps else "unpaced"
 
 
-def link_choice(rate: float | None, profile: str | None, distance: float, sysid: int) -> LinkChoice:
+def link_choice(rate: float | None, profile: str | None, distance: float, sysid: int,
+                profile_file: Path | None = None) -> LinkChoice:
     from ..link.model import ProfileError, load_profile
 
     if rate is not None and rate <= 0:
@@ -41,9 +42,9 @@ def link_choice(rate: float | None, profile: str | None, distance: float, sysid:
         raise Fail("--distance must not be negative")
     send_cap = recv_cap = None
     mtu = 100
-    if profile is not None:
+    if profile is not None or profile_file is not None:
         try:
-            prof = load_profile(profile)
+            prof = load_profile(profile, str(profile_file) if profile_file else None)
         except ProfileError as e:
             raise Fail(str(e)) from None
         mine, other = ("up", "down") if sysid == TABLET[0] else ("down", "up")

@@ -36,6 +36,7 @@ class OnboardOptions:
     orbit_hz: float = 10.0
     key: Path | None = None
     accept_unsigned: bool = False
+    profile_file: Path | None = None
 
 
 def _home(text: str | None) -> Any:
@@ -69,7 +70,7 @@ def emulate_onboard(o: OnboardOptions) -> int:
         raise Fail("--telemetry-hz must be in 0..50")
     dtt = parse_endpoint(o.listen, "udpin")
     gcs = [] if o.no_gcs else [parse_endpoint(g, "udpout") for g in (o.gcs or DEFAULT_GCS)]
-    link = link_choice(o.rate, o.profile, o.distance, o.sysid)
+    link = link_choice(o.rate, o.profile, o.distance, o.sysid, o.profile_file)
     if o.inbox is not None:
         try:
             ReceiveDir(o.inbox).check()

@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from .options import AcceptUnsignedOpt, DistanceOpt, JsonOpt, KeyOpt, ProfileOpt, RateOpt
+from .options import AcceptUnsignedOpt, DistanceOpt, JsonOpt, KeyOpt, ProfileFileOpt, ProfileOpt, RateOpt
 
 emulate_app = typer.Typer(help="Both ends of the link, runnable without a drone.", no_args_is_help=True)
 
@@ -42,6 +42,7 @@ def emulate_onboard_cmd(
                                             min=0, max=50)] = 10.0,
     rate: RateOpt = None,
     profile: ProfileOpt = None,
+    profile_file: ProfileFileOpt = None,
     distance: DistanceOpt = 10.0,
     key: KeyOpt = None,
     accept_unsigned: AcceptUnsignedOpt = False,
@@ -56,7 +57,7 @@ def emulate_onboard_cmd(
 
     raise typer.Exit(emulate_onboard(OnboardOptions(listen, gcs or [], no_gcs, sysid, inbox, serve, home, speed,
                                                     rate, profile, distance, plugin or [], no_entry_points,
-                                                    telemetry_hz, orbit_hz, key, accept_unsigned)))
+                                                    telemetry_hz, orbit_hz, key, accept_unsigned, profile_file)))
 
 
 @emulate_app.command("tablet")
@@ -71,6 +72,7 @@ def emulate_tablet_cmd(
     target_sysid: Annotated[int, typer.Option("--target-sysid", help="The vehicle's system id.")] = 1,
     rate: RateOpt = None,
     profile: ProfileOpt = None,
+    profile_file: ProfileFileOpt = None,
     distance: DistanceOpt = 10.0,
     key: KeyOpt = None,
     accept_unsigned: AcceptUnsignedOpt = False,
@@ -83,4 +85,5 @@ def emulate_tablet_cmd(
     from .tablet import TabletOptions, emulate_tablet
 
     raise typer.Exit(emulate_tablet(TabletOptions(to, script, json_out, folder, rate, profile, distance,
-                                                  target_sysid, key=key, accept_unsigned=accept_unsigned)))
+                                                  target_sysid, key=key, accept_unsigned=accept_unsigned,
+                                                  profile_file=profile_file)))

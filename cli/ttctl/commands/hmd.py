@@ -19,6 +19,7 @@ import sys
 import threading
 import time
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 from ..errors import Fail
@@ -48,6 +49,7 @@ class DumpOptions:
     stream_hz: float = 30.0
     quiet: bool = False
     extra: dict[str, Any] = field(default_factory=dict)
+    profile_file: Path | None = None
 
 
 def _check(o: DumpOptions) -> None:
@@ -128,7 +130,8 @@ class _Link:
         from ..hmd.stream import PoseStream
 
         self.spec = parse_endpoint(o.to or "", "udpout")
-        choice = link_choice(o.rate, o.profile or ("m100" if o.rate is None else None), o.distance, TABLET[0])
+        choice = link_choice(o.rate, o.profile or ("m100" if o.rate is None and o.profile_file is None else None),
+                             o.distance, TABLET[0], o.profile_file)
         # Poses are newest-wins: a queue in the radio's buffer would only make them stale. Paced
         # a little below the profile's capacity the buffer stays empty (at exactly the capacity
         # it holds its two packets, 0.3 s on the M100 uplink); --rate is taken as given.

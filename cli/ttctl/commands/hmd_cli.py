@@ -6,7 +6,7 @@ from typing import Annotated
 
 import typer
 
-from .options import DistanceOpt, ProfileOpt, RateOpt
+from .options import DistanceOpt, ProfileFileOpt, ProfileOpt, RateOpt
 
 hmd_app = typer.Typer(help="VR headset and controller pose streams: record, replay, stream to the drone.",
                       no_args_is_help=True)
@@ -45,6 +45,7 @@ def hmd_dump_cmd(
                                                                  "further).")] = 30.0,
     rate: RateOpt = None,
     profile: ProfileOpt = None,
+    profile_file: ProfileFileOpt = None,
     distance: DistanceOpt = 10.0,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No summary on stderr.")] = False,
 ) -> None:
@@ -57,7 +58,8 @@ def hmd_dump_cmd(
     from .hmd import DumpOptions, dump
 
     raise typer.Exit(dump(DumpOptions(source, file, rate_hmd, rate_controllers, duration, fmt, output, frame,
-                                      parent_frame, seed, speed, to, rate, profile, distance, stream_hz, quiet)))
+                                      parent_frame, seed, speed, to, rate, profile, distance, stream_hz, quiet,
+                                      profile_file=profile_file)))
 
 
 @hmd_app.command("pulse")

@@ -12,6 +12,11 @@ RateOpt = Annotated[float | None, typer.Option("--rate", help="Pacing rate in by
 ProfileOpt = Annotated[str | None, typer.Option("--profile", help="Link profile (m100, psdk, lan): pace at its "
                                                                   "capacity in this end's sending direction.",
                                                 show_default=False)]
+ProfileFileOpt = Annotated[Path | None, typer.Option("--profile-file", help="Take --profile from this TOML file "
+                                                                         "(the schema of ttctl's profiles.toml, "
+                                                                         "e.g. written by `ttctl link fit`); "
+                                                                         "--profile may be left out when it holds "
+                                                                         "one profile.", show_default=False)]
 DistanceOpt = Annotated[float, typer.Option("--distance", help="Distance in metres, for --profile.")]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Machine-readable output (JSON).")]
 KeyOpt = Annotated[Path | None, typer.Option("--key", help="Sign the DTT link's frames (MAVLink 2 signing) and "

@@ -46,6 +46,7 @@ class RecvOptions:
     as_json: bool = False
     key: Path | None = None
     accept_unsigned: bool = False
+    profile_file: Path | None = None
 
 
 def recv_file(o: RecvOptions) -> int:
@@ -56,7 +57,7 @@ def recv_file(o: RecvOptions) -> int:
     check_id(o.compid, "--compid")
     if o.count is not None and o.count < 1:
         raise Fail("--count must be at least 1")
-    link = link_choice(o.rate, o.profile, o.distance, o.sysid)
+    link = link_choice(o.rate, o.profile, o.distance, o.sysid, o.profile_file)
     signing = load_signing(o.key, o.accept_unsigned)
     q = Quota(overwrite=o.overwrite)
     if o.max_file is not None:

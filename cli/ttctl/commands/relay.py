@@ -9,6 +9,7 @@ import sys
 from collections import OrderedDict
 from collections.abc import Hashable
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 from ..errors import Fail
@@ -19,10 +20,10 @@ from .common import Signals, err
 class RelayOptions:
     listen: str
     to: str
-    profile: str = "m100"
+    profile: str | None = None  # None: m100, or the one profile in profile_file
     distance: float = 10.0
     loss: float | None = None
-    loss_model: str = "random"
+    loss_model: str | None = None  # None: the profile's
     corrupt: float = 0.0
     duplicate: float = 0.0
     reorder: float = 0.0
@@ -30,6 +31,8 @@ class RelayOptions:
     rate: float | None = None
     stats_interval: float = 5.0
     outages: list[str] = field(default_factory=list)  # START:SECONDS, from the relay's start
+    profile_file: Path | None = None
+    burst_mean: float | None = None  # None: the profile's
 
 
 def _outage(text: str) -> tuple[float, float]:
@@ -99,13 +102,13 @@ def relay(o: RelayOptions) -> int:
     if o.stats_interval < 0:
         raise Fail("--stats-interval must not be negative")
     try:
-        prof = load_profile(o.profile)
+        prof = load_profile(o.profile, str(o.profile_file) if o.profile_file else None)
         if o.rate is not None:
             if o.rate <= 0:
                 raise Fail("--rate must be a positive number of bytes per second")
             prof = with_rate(prof, o.rate)
-        imp = Impairments(loss=o.loss, loss_model=o.loss_model, corrupt=o.corrupt, duplicate=o.duplicate,
-                          reorder=o.reorder, outages=[_outage(text) for text in o.outages])
+        imp = Impairments(loss=o.loss, loss_model=o.loss_model, burst_mean=o.burst_mean, corrupt=o.corrupt,
+                          duplicate=o.duplicate, reorder=o.reorder, outages=[_outage(text) for text in o.outages])
         imp.check()
         r = Relay(listen, to, prof, o.distance, imp, seed=o.seed, log=lambda text: err(f"relay: {text}"),
                   validate=FrameCheck())

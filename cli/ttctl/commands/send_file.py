@@ -52,6 +52,7 @@ class SendOptions:
     dir: Path | None = None
     key: Path | None = None
     accept_unsigned: bool = False
+    profile_file: Path | None = None
 
 
 @dataclass
@@ -79,7 +80,7 @@ def _send_file(o: SendOptions) -> int:
         check_id(v, what)
     if o.timeout <= 0:
         raise Fail("--timeout must be positive")
-    link = link_choice(o.rate, o.profile, o.distance, o.sysid)
+    link = link_choice(o.rate, o.profile, o.distance, o.sysid, o.profile_file)
     load_signing(o.key, o.accept_unsigned)  # a bad --key is refused before anything starts
     if o.to is not None:
         if o.dir is not None:

@@ -29,6 +29,7 @@ class TabletOptions:
     connect_timeout: float = 15.0
     key: Path | None = None
     accept_unsigned: bool = False
+    profile_file: Path | None = None
 
 
 def _prompt_step(line: str) -> Any:
@@ -66,7 +67,7 @@ def emulate_tablet(o: TabletOptions) -> int:
     from ..ends.tablet.steps import StepError, parse_script
 
     spec = parse_endpoint(o.to, "udpout")
-    link = link_choice(o.rate, o.profile, o.distance, 255)
+    link = link_choice(o.rate, o.profile, o.distance, 255, o.profile_file)
     steps = None
     if o.script is not None:
         try:

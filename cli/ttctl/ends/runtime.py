@@ -45,8 +45,12 @@ class Runner:
     packets."""
 
     def __init__(self, endpoint: Endpoint, transport: Transport, quiet: float | None = None,
-                 hello: Callable[[], Any] | None = None, hello_interval: float = 1.0) -> None:
+                 hello: Callable[[], Any] | None = None, hello_interval: float = 1.0,
+                 probes: Any = None) -> None:
         self.ep = endpoint
+        # something that may take a datagram before the endpoint does (`take(data, source) ->
+        # bool`): ttctl.link.probes.LinkProbes beside an onboard end
+        self.probes = probes
         self.transport = transport
         self.quiet = quiet
         # a message to send every hello_interval s until the peer is heard: an end that reaches
@@ -136,6 +140,8 @@ class Runner:
         self.stats.packets_in += 1
         self.stats.bytes_in += len(data)
         try:
+            if self.probes is not None and not self.transport.stream and self.probes.take(data, source):
+                return
             if self.transport.stream:
                 ids = self.ep.receive_stream(now, data, source)
             else:

@@ -35,6 +35,10 @@ def _interp(points: list[list[float]], x: float) -> float:
     return pts[-1][1]
 
 
+def _number(v: Any) -> bool:
+    return isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v)
+
+
 @dataclass(frozen=True)
 class DirectionProfile:
     rate_Bps: list[list[float]]
@@ -45,6 +49,34 @@ class DirectionProfile:
     pacing_interval_s: float = 0.0
     advertised_Bps: float | None = None
     feedback: bool = False
+    loss_model: str = "random"  # random | burst (Gilbert-Elliott)
+    burst_mean: float = 3.0  # with burst: the mean length of a run of lost packets
+
+    def check(self, where: str) -> None:
+        """Refuse values the model cannot run with, naming the field (`where` says which
+        profile and direction)."""
+        for key, points in (("rate_Bps", self.rate_Bps), ("loss", self.loss)):
+            if not isinstance(points, list) or not points or not all(
+                    isinstance(p, list) and len(p) == 2 and all(_number(v) for v in p) for p in points):
+                raise ProfileError(f"{where}.{key} must be a non-empty list of [metres, value] pairs")
+            if any(p[0] < 0 for p in points):
+                raise ProfileError(f"{where}.{key}: distances must not be negative")
+        if any(p[1] <= 0 for p in self.rate_Bps):
+            raise ProfileError(f"{where}.rate_Bps: rates must be positive")
+        if any(not 0.0 <= p[1] <= 1.0 for p in self.loss):
+            raise ProfileError(f"{where}.loss: loss must be in 0..1")
+        if not (_number(self.latency_s) and self.latency_s >= 0):
+            raise ProfileError(f"{where}.latency_s must be a number of seconds >= 0")
+        if isinstance(self.queue_packets, bool) or not isinstance(self.queue_packets, int) or self.queue_packets < 1:
+            raise ProfileError(f"{where}.queue_packets must be a whole number >= 1")
+        if isinstance(self.pacing_bytes, bool) or not isinstance(self.pacing_bytes, int) or self.pacing_bytes < 0:
+            raise ProfileError(f"{where}.pacing_bytes must be a whole number >= 0")
+        if not (_number(self.pacing_interval_s) and self.pacing_interval_s >= 0):
+            raise ProfileError(f"{where}.pacing_interval_s must be a number of seconds >= 0")
+        if self.loss_model not in LOSS_MODELS:
+            raise ProfileError(f"{where}.loss_model must be one of {', '.join(LOSS_MODELS)}, not {self.loss_model!r}")
+        if not (_number(self.burst_mean) and self.burst_mean >= 1.0):
+            raise ProfileError(f"{where}.burst_mean must be at least 1 packet")
 
     def rate_at(self, distance_m: float) -> float:
         return _interp(self.rate_Bps, distance_m)
@@ -86,27 +118,51 @@ def profile_names() -> list[str]:
     return sorted(_load_table())
 
 
-def load_profile(name: str, path: str | None = None) -> Profile:
+def load_profile(name: str | None, path: str | None = None) -> Profile:
     """A profile by name, from ttctl's profiles.toml or from `path` (a TOML file of the same
-    shape)."""
+    shape, such as `ttctl link fit` writes). With a path, the name may be None when the file
+    holds one profile."""
+    where = "ttctl's profiles.toml"
     if path is not None:
+        where = path
         try:
             with open(path, "rb") as fh:
                 table = tomllib.load(fh)
         except OSError as e:
-            raise ProfileError(f"{path}: {e.strerror or e}") from None
+            raise ProfileError(f"--profile-file {path}: {e.strerror or e}") from None
         except tomllib.TOMLDecodeError as e:
-            raise ProfileError(f"{path}: {e}") from None
+            raise ProfileError(f"--profile-file {path}: not TOML: {e}") from None
+        profiles = sorted(k for k, v in table.items() if isinstance(v, dict))
+        if not profiles:
+            raise ProfileError(f"--profile-file {path}: holds no profile (a [NAME] table with [NAME.up] and "
+                               f"[NAME.down])")
+        if name is None:
+            if len(profiles) > 1:
+                raise ProfileError(f"--profile-file {path} holds {len(profiles)} profiles: pick one with --profile "
+                                   f"({', '.join(profiles)})")
+            name = profiles[0]
     else:
         table = _load_table()
-    if name not in table:
-        raise ProfileError(f"unknown link profile {name!r} (known: {', '.join(sorted(table))})")
+        if name is None:
+            name = "m100"
+    if name not in table or not isinstance(table[name], dict):
+        known = ", ".join(sorted(k for k, v in table.items() if isinstance(v, dict)))
+        raise ProfileError(f"unknown link profile {name!r} in {where} (known: {known})")
     raw = table[name]
     try:
-        dirs = {d: DirectionProfile(**raw[d]) for d in DIRECTIONS}
-        return Profile(name, raw.get("description", ""), int(raw.get("mtu", 100)), dirs["up"], dirs["down"])
-    except (KeyError, TypeError) as e:
-        raise ProfileError(f"profile {name!r} is malformed: {e}") from None
+        dirs = {}
+        for d in DIRECTIONS:
+            if not isinstance(raw.get(d), dict):
+                raise ProfileError(f"profile {name!r} in {where} has no [{name}.{d}] table")
+            dirs[d] = DirectionProfile(**raw[d])
+            dirs[d].check(f"{where}: {name}.{d}")
+        mtu = raw.get("mtu", 100)
+        if isinstance(mtu, bool) or not isinstance(mtu, int) or not 1 <= mtu <= 100:
+            raise ProfileError(f"{where}: {name}.mtu must be a whole number of bytes in 1..100 (DTT's packet limit)")
+        return Profile(name, str(raw.get("description", "")), mtu, dirs["up"], dirs["down"])
+    except TypeError as e:
+        field_name = str(e).rsplit(" ", 1)[-1].strip("'")
+        raise ProfileError(f"{where}: profile {name!r} is malformed: unknown or missing field {field_name!r}") from None
 
 
 @dataclass
@@ -115,8 +171,8 @@ class Impairments:
     distance-dependent loss when given."""
 
     loss: float | None = None
-    loss_model: str = "random"  # random | burst (Gilbert-Elliott)
-    burst_mean: float = 3.0  # mean length of a loss burst, in packets
+    loss_model: str | None = None  # random | burst (Gilbert-Elliott); None: the profile's
+    burst_mean: float | None = None  # mean length of a loss burst, in packets; None: the profile's
     corrupt: float = 0.0  # probability that a delivered packet has bytes flipped
     duplicate: float = 0.0  # probability that a delivered packet arrives twice
     reorder: float = 0.0  # probability that a packet is held back behind later ones
@@ -129,9 +185,9 @@ class Impairments:
                 raise ProfileError(f"{name} must be a probability in 0..1, not {v}")
         if self.loss is not None and not 0.0 <= self.loss < 1.0:
             raise ProfileError(f"loss must be in 0..1 (exclusive of 1), not {self.loss}")
-        if self.loss_model not in LOSS_MODELS:
+        if self.loss_model is not None and self.loss_model not in LOSS_MODELS:
             raise ProfileError(f"loss model must be one of {', '.join(LOSS_MODELS)}, not {self.loss_model!r}")
-        if self.burst_mean < 1.0:
+        if self.burst_mean is not None and not self.burst_mean >= 1.0:
             raise ProfileError("mean burst length must be at least 1 packet")
         for start, length in self.outages:
             if not (start >= 0.0 and length > 0.0 and math.isfinite(start + length)):
@@ -175,6 +231,8 @@ class Channel:
         self._starts: list[float] = []  # service start times of packets waiting in the buffer
         self._bad = False  # Gilbert-Elliott state
         self.loss_p = self.imp.loss if self.imp.loss is not None else self.dir.loss_at(distance_m)
+        self.loss_model = self.imp.loss_model or self.dir.loss_model
+        self.burst_mean = self.imp.burst_mean or self.dir.burst_mean
 
     @property
     def mtu(self) -> int:
@@ -195,8 +253,8 @@ class Channel:
         p = self.loss_p
         if p <= 0.0:
             return False
-        if self.imp.loss_model == "burst":
-            to_good = 1.0 / self.imp.burst_mean
+        if self.loss_model == "burst":
+            to_good = 1.0 / self.burst_mean
             to_bad = p * to_good / (1.0 - p)
             self._bad = (self.rng.random() >= to_good) if self._bad else (self.rng.random() < to_bad)
             return self._bad

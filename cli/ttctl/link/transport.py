@@ -289,6 +289,21 @@ class UdpTransport(Transport):
         self.stats.tx_bytes += len(data)
         return True
 
+    def send_to(self, data: bytes, source: Hashable) -> bool:
+        """To one peer only: the address a datagram came from (udpin: if it is a live peer)."""
+        tr = self._tr
+        if tr is None or tr.is_closing():
+            return False
+        if self.spec.kind == "udpin":
+            if source not in self._live_peers():
+                return False
+            tr.sendto(data, source)
+        else:
+            tr.sendto(data)
+        self.stats.tx_packets += 1
+        self.stats.tx_bytes += len(data)
+        return True
+
     def close(self) -> None:
         if self._tr is not None:
             self._tr.close()

@@ -141,6 +141,11 @@ class Endpoint:
         self._last_rx[source] = now
         return self._handle_all(now, parser.feed(data))
 
+    def mid_frame(self, source: Hashable) -> bool:
+        """Whether a frame from `source` is half received (its next packet is a continuation)."""
+        rx = self._rxs.get(source)
+        return rx is not None and rx.pending > 0
+
     def forget_source(self, source: Hashable) -> None:
         """A connection closed: its half-received frame goes with it."""
         self._rxs.pop(source, None)

@@ -72,6 +72,7 @@ class OnboardNode:
             self.dispatcher.add(p)
         self.endpoint: Endpoint | None = None
         self.runner: Runner | None = None
+        self.probes: Any = None  # ttctl.link.probes.LinkProbes
         self._wake = asyncio.Event()
         self.vehicle_time = 0.0
         self._tele_due = 0.0
@@ -230,7 +231,7 @@ class OnboardNode:
                                      receive_dir=store, serve_dir=str(self.cfg.serve) if self.cfg.serve else None,
                                      action=self.tablet_action, on_message=self._on_tablet_message,
                                      on_event=self._file_event, signing=self.cfg.signing)
-            self.runner = Runner(self.endpoint, transport)
+            self.runner = Runner(self.endpoint, transport, probes=self._probes(transport))
             await self.runner.start()
             if store is not None:
                 store.prepare()
@@ -240,6 +241,19 @@ class OnboardNode:
                 p.start(ctx)
             except Exception as e:
                 self.log(f"plugin {type(p).__name__} failed to start: {type(e).__name__}: {e}")
+
+    def _probes(self, transport: Transport) -> Any:
+        """`ttctl bench link --to` answered on the DTT link (datagram links only, and not where
+        --key asks for signed frames only: a peer without the key gets no answer at all)."""
+        signing = self.cfg.signing
+        if transport.stream or not hasattr(transport, "send_to") or (
+                signing is not None and not getattr(signing, "allow_unsigned", False)):
+            return None
+        from ...link.probes import LinkProbes
+
+        assert self.endpoint is not None
+        self.probes = LinkProbes(transport.send_to, self.endpoint.mid_frame, lambda text: self.log(f"dtt: {text}"))
+        return self.probes
 
     def _logger(self, where: str) -> Callable[[str], None]:
         return lambda text: self.log(f"{where}: {text}")
@@ -305,6 +319,8 @@ class OnboardNode:
                 p.stop()
         if self.endpoint is not None:
             self.endpoint.close()
+        if self.probes is not None:
+            self.probes.close()
         if self.runner is not None:
             await self.runner.close()
         for t in self.gcs_links:
