@@ -128,3 +128,34 @@ def test_synopses_are_the_commands_options() -> None:
                 assert not missing, f"{full}: the README's synopsis lacks {sorted(missing)}"
                 checked.append(full)
     assert sorted(checked) == sorted(FULL_SYNOPSIS)
+
+
+def test_calibration_table_is_what_bench_link_computes() -> None:
+    """The README's m100-against-the-thesis table quotes `ttctl bench link`'s own numbers."""
+    from ttctl.bench import linkbench
+    from ttctl.link.model import load_profile
+
+    text = (ROOT / "README.md").read_text()
+    table = text[text.index("**Calibration: the m100 model against the thesis.**"):]
+    table = table[:table.index("\n\n", table.index("|---|"))]
+    rep = linkbench.measure(load_profile("m100"))
+    facts = {f["fact"]: f["value"] for f in rep["facts"]}
+    facts |= {f["fact"].split(" (")[0]: f["value"] for f in rep["facts"] if f["fact"].split(" (")[0]
+              not in {g["fact"].split(" (")[0] for g in rep["facts"] if g is not f}}  # the unambiguous short names
+    up = {(r["distance_m"], r["size"]): r for r in rep["uplink"]["rows"]}
+    near, far = up[(10.0, 100)]["throughput_Bps"], up[(200.0, 100)]["throughput_Bps"]
+    expected = [
+        f"{max(r['throughput_Bps'] for r in rep['uplink']['rows']):.0f} B/s, "
+        f"{facts['uplink: at best about half the advertised rate']:.2f} of it",
+        f"{near:.0f} to {far:.0f} B/s ({near / far:.1f}x)",
+        f"{facts['uplink: very few of 100 lost up to 150 m']['mean']} of 100 on average, at most "
+        f"{facts['uplink: very few of 100 lost up to 150 m']['max']}",
+        f"{facts['uplink: reliability plummets at 200 m']} of 100 on average",
+        f"{facts['downlink: about a third lost at 100 Hz with 100-byte packets (10 m)']} of 100 at 10 m, "
+        f"{facts['downlink: about a third lost at 100 Hz with 100-byte packets (200 m)']} at 200 m",
+        f"within {facts['downlink: distance hardly matters']['throughput_rel_diff_max'] * 100:.1f} %, loss within "
+        f"{facts['downlink: distance hardly matters']['lost_diff_max']} packets",
+    ]
+    for e in expected:
+        assert e in table, (e, table)
+    assert all(f["ok"] for f in rep["facts"])

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import random
 import statistics
 from typing import Any
 
@@ -86,11 +87,20 @@ def _row(direction: str, size: int, count: int, seconds: float, sends: list[floa
     return row
 
 
+def _schedule(count: int, interval: float, seed: int) -> list[float]:
+    """Send times as a real sender's: on schedule, but each late by up to a millisecond (the OS's
+    timers). Without it a pace of exactly twice the link's rate meets every service completion
+    at the same instant, and which comes first is decided by rounding."""
+    rng = random.Random(seed)
+    late = min(0.001, 0.05 * interval)
+    return [i * interval + rng.uniform(0.0, late) for i in range(count)]
+
+
 def uplink_once(profile: Profile, distance: float, size: int, count: int, pace_Bps: float,
                 seed: int) -> dict[str, Any]:
     ch = Channel(profile, "up", distance, Impairments(), seed=seed)
     interval = size / pace_Bps
-    sends = [i * interval for i in range(count)]
+    sends = _schedule(count, interval, seed)
     payload = bytes(size)
     arrivals = [(t, i) for i, s in enumerate(sends) for t, _ in ch.submit(s, payload)]
     return _row("up", size, count, count * interval, sends, arrivals)
@@ -99,7 +109,7 @@ def uplink_once(profile: Profile, distance: float, size: int, count: int, pace_B
 def downlink_once(profile: Profile, distance: float, rate_hz: float, count: int, seed: int,
                   size: int = DOWN_SIZE) -> dict[str, Any]:
     ch = Channel(profile, "down", distance, Impairments(), seed=seed)
-    sends = [i / rate_hz for i in range(count)]
+    sends = _schedule(count, 1 / rate_hz, seed)
     payload = bytes(size)
     arrivals = [(t, i) for i, s in enumerate(sends) for t, _ in ch.submit(s, payload)]
     row = _row("down", size, count, count / rate_hz, sends, arrivals)
