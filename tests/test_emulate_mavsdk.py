@@ -56,8 +56,9 @@ def test_mavsdk_flies_the_emulated_vehicle(tmp_path: Path, start: Start) -> None
             assert system is not None and await system.get_system_id() == 1
             tel, act, par, mis = TelemetryAsync(system), ActionAsync(system), ParamAsync(system), MissionAsync(system)
             home = await _until(tel.home, lambda h: abs(h.latitude_deg - 46.0503) < 1e-6, 10)
-            pos = await tel.position()
-            assert abs(pos.latitude_deg - home.latitude_deg) < 1e-6 and pos.relative_altitude_m < 0.1
+            # HOME_POSITION may come before the first GLOBAL_POSITION_INT (position is NaN until then)
+            pos = await _until(tel.position, lambda p: abs(p.latitude_deg - home.latitude_deg) < 1e-6, 10)
+            assert pos.relative_altitude_m < 0.1
             assert not await tel.armed() and not await tel.in_air()
             assert await tel.flight_mode() == FlightMode.READY
             await _until(tel.health, lambda h: h.is_armable and h.is_global_position_ok, 10)
