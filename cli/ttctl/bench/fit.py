@@ -10,18 +10,21 @@ Gilbert-Elliott bursts. Each is read off the measurement where it shows:
   more sizes show it: it must halve the error of the plain rate, and that error must be over
   8 %. A direction never outpaced keeps the base profile's rate if that is above every rate
   offered, else 1.5 x the highest offered (a lower bound, said so in the notes).
-- buffer depth: in a saturated row the packets wait behind the buffer's contents, so the delay
-  above the run's fastest packet (p50) grows by one service time per buffered packet. The depth
-  (1..MAX_QUEUE) whose replay matches the measured delays best; the base's without such rows.
 - latency: the echoes' round trip p50, less the service times of an echo each way, split
   evenly between the two directions (one-way delays need synchronised clocks; the split is the
   assumption, the sum is measured).
+- buffer depth: in a saturated row every packet waits behind a full buffer, so its one-way
+  delay grows by a service time per buffered packet. The depth (1..MAX_QUEUE) whose replay puts
+  the saturated rows' median delay where it was measured, the measured delay corrected for the
+  NTP-style offset's error under the fitted rates and latency (ttctl.bench.replay.offset_error);
+  the base's without such rows.
 - loss per distance: 1 - received / what the buffer lets through, the latter from replaying the
   rows with no loss (so overflow is not counted as the radio's loss).
 - bursts: in rows that did not saturate (overflow drops are periodic, not the radio's), the mean
   length of a run of lost packets. Random loss at rate p gives 1 / (1 - p); a mean above that by
   more than two standard errors, over at least MIN_RUNS runs, makes the loss Gilbert-Elliott with
-  burst_mean = that mean. A direction without such rows borrows the other's (same radio).
+  burst_mean = that mean. A direction with fewer runs is judged on both directions' together
+  (the same radio).
 
 Then every measurement is replayed on the fitted profile and compared figure by figure
 (ttctl.bench.replay.compare): those are the residuals.

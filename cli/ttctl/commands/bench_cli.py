@@ -141,6 +141,9 @@ def bench_link(
     if like is not None:
         from ..bench.replay_cli import run_like
 
+        if plot is not None:
+            raise Fail("--plot draws the thesis method's run (no --like) or a live one (--to), not a replay")
+
         raise typer.Exit(run_like(str(like), profile, pfile, distance, json_out))
     if distance is not None:
         raise Fail("--distance goes with --to (kept with the measurement) or --like (the replay's distance)")

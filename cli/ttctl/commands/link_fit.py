@@ -49,7 +49,7 @@ def _print(result: Any, output: str) -> None:
     from rich.console import Console
     from rich.table import Table
 
-    from ..bench.replay import TOLERANCES
+    from ..bench.replay import SEEDS, TOLERANCES
 
     console = Console()
     p = result.profile
@@ -66,7 +66,7 @@ def _print(result: Any, output: str) -> None:
     console.print(t)
     for n in result.notes:
         console.print(f"  {n}", highlight=False)
-    r = Table(title="residuals: each measurement replayed on the fitted profile (median of 7 seeds)")
+    r = Table(title=f"residuals: each measurement replayed on the fitted profile (median of {SEEDS} seeds)")
     for col in ("file", "row", "figure", "measured", "model", "ok"):
         r.add_column(col, overflow="fold")
     for row in result.residuals:
