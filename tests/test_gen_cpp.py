@@ -103,7 +103,7 @@ def test_generated_files_are_formatted(tree: dict[str, Any]) -> None:
     files = sorted(p for p in cpp.rglob("*") if p.is_file())
     assert {p.relative_to(cpp).as_posix() for p in files} == {
         "ttapi/runtime.hpp", "ttapi/enums.hpp", "ttapi/messages.hpp", "ttapi/ttapi.hpp", "ttapi/signing.hpp",
-        "ttapi/packets.hpp", "conformance.cpp", "onboard/ttapi_plugin.hpp"}
+        "ttapi/packets.hpp", "ttapi/udp_forward.hpp", "conformance.cpp", "onboard/ttapi_plugin.hpp"}
     for p in files:
         lines = p.read_text().split("\n")
         assert lines[-1] == "" and lines[-2] != "", p  # exactly one final newline

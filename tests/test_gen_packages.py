@@ -193,6 +193,7 @@ CPP_MAIN = r"""#include <cstdint>
 #include <cstdio>
 
 #include "myco/drone/ttapi.hpp"
+#include "myco/drone/udp_forward.hpp"  // compiles in the namespace too
 #include "onboard/ttapi_plugin.hpp"
 
 namespace {
@@ -237,7 +238,8 @@ def test_cpp_namespace_builds_and_runs(tmp_path: Path) -> None:
     cpp = out / "cpp"
     assert {p.relative_to(cpp).as_posix() for p in cpp.rglob("*") if p.is_file()} == {
         "myco/drone/runtime.hpp", "myco/drone/enums.hpp", "myco/drone/messages.hpp", "myco/drone/ttapi.hpp",
-        "myco/drone/signing.hpp", "myco/drone/packets.hpp", "conformance.cpp", "onboard/ttapi_plugin.hpp"}
+        "myco/drone/signing.hpp", "myco/drone/packets.hpp", "myco/drone/udp_forward.hpp", "conformance.cpp",
+        "onboard/ttapi_plugin.hpp"}
     for name in ("runtime", "enums", "messages"):
         text = (cpp / "myco" / "drone" / f"{name}.hpp").read_text()
         assert f"#ifndef TTCTL_MYCO_DRONE_{name.upper()}_HPP" in text

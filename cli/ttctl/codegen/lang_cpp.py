@@ -173,6 +173,7 @@ class _Cpp:
             Output(f"cpp/{ident}/runtime.hpp", "cpp/runtime.hpp.j2"),
             Output(f"cpp/{ident}/signing.hpp", "cpp/signing.hpp.j2"),
             Output(f"cpp/{ident}/packets.hpp", "cpp/packets.hpp.j2"),
+            Output(f"cpp/{ident}/udp_forward.hpp", "cpp/udp_forward.hpp.j2"),
             Output(f"cpp/{ident}/enums.hpp", "cpp/enums.hpp.j2"),
             Output(f"cpp/{ident}/messages.hpp", "cpp/messages.hpp.j2"),
             Output(f"cpp/{umbrella(d, self.override)}", "cpp/umbrella.hpp.j2"),

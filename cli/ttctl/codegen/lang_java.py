@@ -86,7 +86,7 @@ RUNTIME_FILES = [
     "DecodeException", "Frame", "Parser", "Dispatcher", "Link", "UdpLink", "CommandContext",
     "CommandException", "Command", "MessageMatcher", "SendCommand", "ReceiveCommand", "CommandQueue",
     "LinkScheduler", "DjiLink",
-    "Packetizer", "PacketReceiver", "Signing",
+    "Packetizer", "PacketReceiver", "Signing", "UdpForward",
 ]
 RUNTIME_CLASSES = frozenset(RUNTIME_FILES)
 # File transfer (package <root>.transfer), for dialects that have ttctl's file messages.

@@ -65,6 +65,7 @@ public final class DjiLink implements Link {
     private final PacketSender sender;
     private final PacketReceiver receiver;
     private final List<Consumer<? super MavlinkMessage>> listeners = new CopyOnWriteArrayList<>();
+    private final List<Consumer<byte[]>> packetListeners = new CopyOnWriteArrayList<>();
     private final ReentrantLock lock = new ReentrantLock();
     private final Condition ready = lock.newCondition();
     private final ScheduledThreadPoolExecutor exec;
@@ -163,6 +164,22 @@ public final class DjiLink implements Link {
         return this;
     }
 
+    /**
+     * Every packet from the onboard computer as it came, before parsing (a copy each), on the
+     * link's thread: for {@link UdpForward}, or a log of the raw link.
+     */
+    public DjiLink addPacketListener(Consumer<byte[]> listener) {
+        if (listener == null) {
+            throw new NullPointerException("listener");
+        }
+        packetListeners.add(listener);
+        return this;
+    }
+
+    public void removePacketListener(Consumer<byte[]> listener) {
+        packetListeners.remove(listener);
+    }
+
     public void removeListener(Consumer<? super MavlinkMessage> listener) {
         listeners.remove(listener);
     }
@@ -213,6 +230,13 @@ public final class DjiLink implements Link {
     private void parse(byte[] packet) {
         received++;
         lastReceive = System.nanoTime();
+        for (Consumer<byte[]> l : packetListeners) {
+            try {
+                l.accept(packet.clone());
+            } catch (RuntimeException e) {
+                listenerErrors++;
+            }
+        }
         try {
             receiver.feed(packet, 0, packet.length, deliver);
         } catch (RuntimeException e) {
