@@ -274,3 +274,19 @@ def check_message(world: dict[str, Any], m: Message, examples: int) -> None:
         roundtrip(world, m, values, seq, sysid, compid)
 
     check()
+
+
+def build_java(base: Path, drivers: list[Path], langs: str = "java") -> tuple[Path, Path]:
+    """`ttctl gen` of ttapi.xml (`langs`, java among them) into base/gen, then the Java sources
+    and the `drivers` (.java files) compiled with javac --release 11 -Xlint:all -Werror into
+    base/classes: (classes, generated tree)."""
+    out = base / "gen"
+    proc = run_ttctl("gen", str(TTAPI), "--lang", langs, "-o", str(out), timeout=600)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    sources = sorted(str(p) for p in (out / "java").rglob("*.java")) + sorted(map(str, drivers))
+    cls = base / "classes"
+    cls.mkdir()
+    javac = subprocess.run(["javac", "--release", "11", "-Xlint:all", "-Werror", "-encoding", "UTF-8", "-d", str(cls),
+                            *sources], capture_output=True, text=True, timeout=600)
+    assert javac.returncode == 0 and "warning" not in javac.stderr, javac.stderr[-6000:]
+    return cls, out

@@ -19,7 +19,8 @@ from pathlib import Path
 
 import pytest
 
-from conftest import ROOT, TTAPI, run_ttctl
+from conformance_lib import build_java
+from conftest import ROOT
 
 pytestmark = pytest.mark.skipif(shutil.which("javac") is None or shutil.which("java") is None,
                                 reason="needs a JDK (javac, java)")
@@ -33,17 +34,7 @@ MADE: list[bytes] = []  # every frame any case was made of
 @pytest.fixture(scope="module")
 def built(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, Path]:
     """(classes, generated tree): Java sources and driver built with --release 11 -Xlint:all -Werror."""
-    base = tmp_path_factory.mktemp("java_packets")
-    out = base / "gen"
-    proc = run_ttctl("gen", str(TTAPI), "--lang", "python,java", "-o", str(out), timeout=600)
-    assert proc.returncode == 0, proc.stdout + proc.stderr
-    sources = sorted(str(p) for p in (out / "java").rglob("*.java")) + sorted(str(p) for p in DRIVERS.glob("*.java"))
-    cls = base / "classes"
-    cls.mkdir()
-    javac = subprocess.run(["javac", "--release", "11", "-Xlint:all", "-Werror", "-encoding", "UTF-8", "-d", str(cls),
-                            *sources], capture_output=True, text=True, timeout=600)
-    assert javac.returncode == 0 and "warning" not in javac.stderr, javac.stderr[-6000:]
-    return cls, out
+    return build_java(tmp_path_factory.mktemp("java_packets"), sorted(DRIVERS.glob("*.java")), "python,java")
 
 
 def run_both(built: tuple[Path, Path], cases: list[str]) -> tuple[list[str], list[str]]:

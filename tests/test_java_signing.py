@@ -17,7 +17,8 @@ from typing import Any
 
 import pytest
 
-from conftest import ROOT, TTAPI, run_ttctl
+from conformance_lib import build_java
+from conftest import ROOT
 
 pytestmark = pytest.mark.skipif(shutil.which("javac") is None or shutil.which("java") is None,
                                 reason="needs a JDK (javac, java)")
@@ -34,16 +35,7 @@ def now() -> int:
 
 @pytest.fixture(scope="module")
 def classes(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    base = tmp_path_factory.mktemp("java_signing")
-    out = base / "gen"
-    proc = run_ttctl("gen", str(TTAPI), "--lang", "java", "-o", str(out), timeout=600)
-    assert proc.returncode == 0, proc.stdout + proc.stderr
-    sources = sorted(str(p) for p in (out / "java").rglob("*.java")) + sorted(str(p) for p in DRIVERS.glob("*.java"))
-    cls = base / "classes"
-    cls.mkdir()
-    javac = subprocess.run(["javac", "--release", "11", "-Xlint:all", "-Werror", "-encoding", "UTF-8", "-d", str(cls),
-                            *sources], capture_output=True, text=True, timeout=600)
-    assert javac.returncode == 0 and "warning" not in javac.stderr, javac.stderr[-6000:]
+    cls, _ = build_java(tmp_path_factory.mktemp("java_signing"), sorted(DRIVERS.glob("*.java")))
     return cls
 
 

@@ -25,7 +25,8 @@ from typing import Any
 
 import pytest
 
-from conftest import ROOT, TTAPI, run_ttctl
+from conformance_lib import build_java
+from conftest import ROOT
 from e2e_lib import LOCAL, SIZE, Start, free_port, receiver, relay, send
 
 pytestmark = pytest.mark.skipif(shutil.which("javac") is None or shutil.which("java") is None,
@@ -37,16 +38,7 @@ RATE = 8000  # B/s both ways: the relay's and both senders' pace (64 KiB in abou
 
 @pytest.fixture(scope="module")
 def classes(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    base = tmp_path_factory.mktemp("java_transfer")
-    out = base / "gen"
-    proc = run_ttctl("gen", str(TTAPI), "--lang", "java", "-o", str(out), timeout=600)
-    assert proc.returncode == 0, proc.stdout + proc.stderr
-    sources = sorted(str(p) for p in (out / "java").rglob("*.java")) + sorted(str(p) for p in DRIVERS.glob("*.java"))
-    cls = base / "classes"
-    cls.mkdir()
-    javac = subprocess.run(["javac", "--release", "11", "-Xlint:all", "-Werror", "-encoding", "UTF-8", "-d", str(cls),
-                            *sources], capture_output=True, text=True, timeout=600)
-    assert javac.returncode == 0 and "warning" not in javac.stderr, javac.stderr[-6000:]
+    cls, _ = build_java(tmp_path_factory.mktemp("java_transfer"), sorted(DRIVERS.glob("*.java")))
     return cls
 
 

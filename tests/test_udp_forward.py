@@ -16,7 +16,8 @@ from pathlib import Path
 
 import pytest
 
-from conftest import ROOT, TTAPI, run_ttctl
+from conformance_lib import build_java
+from conftest import ROOT, run_ttctl
 from e2e_lib import LOCAL, Start, free_port
 
 pytestmark = pytest.mark.skipif(not (shutil.which("javac") and shutil.which("java") and shutil.which("g++")),
@@ -30,16 +31,7 @@ LOSS = 0.05
 def built(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, Path]:
     """(Java classes, C++ driver), built from freshly generated code with warnings as errors."""
     base = tmp_path_factory.mktemp("udp_forward")
-    out = base / "gen"
-    proc = run_ttctl("gen", str(TTAPI), "--lang", "cpp,java", "-o", str(out), timeout=600)
-    assert proc.returncode == 0, proc.stdout + proc.stderr
-    sources = sorted(str(p) for p in (out / "java").rglob("*.java"))
-    sources.append(str(ROOT / "tests" / "java" / "forward" / "ForwardDriver.java"))
-    cls = base / "classes"
-    cls.mkdir()
-    javac = subprocess.run(["javac", "--release", "11", "-Xlint:all", "-Werror", "-encoding", "UTF-8", "-d", str(cls),
-                            *sources], capture_output=True, text=True, timeout=600)
-    assert javac.returncode == 0 and "warning" not in javac.stderr, javac.stderr[-6000:]
+    cls, out = build_java(base, [ROOT / "tests" / "java" / "forward" / "ForwardDriver.java"], "cpp,java")
     exe = base / "forward_driver"
     gxx = subprocess.run(["g++", "-std=c++17", "-O1", "-Wall", "-Wextra", "-Werror", "-I", str(out / "cpp"), "-o",
                           str(exe), str(ROOT / "tests" / "cpp" / "forward" / "forward_driver.cpp")],
