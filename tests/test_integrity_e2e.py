@@ -200,3 +200,24 @@ def test_integrity_soak_command(tmp_path: Path) -> None:
     assert set(report) == {"direct", "relay"}
     assert all(r["rounds"] == 2 and r["violations"] == [] and r["sends"] >= 2 for r in report.values())
     assert not list(tmp_path.iterdir())  # its scratch directory is gone
+
+
+def test_soak_picks_other_ports_when_its_free_port_was_taken(tmp_path: Path) -> None:
+    """A port picked free can be taken by another process before the receiver binds it: the
+    receiver exits at once ('address in use') and the harness picks again, not a crash."""
+    from ttctl.bench.integrity import Harness
+
+    h = Harness(tmp_path / "work", 1, relay=True, strangers=False)
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as taken:
+        taken.bind(("127.0.0.1", 0))
+        h.port = taken.getsockname()[1]
+        try:
+            h._start_ends()
+            assert h.port != taken.getsockname()[1]
+            assert h.receiver is not None and h.receiver.poll() is None
+            assert h.relay is not None and h.relay.poll() is None
+        finally:
+            for p in (h.receiver, h.relay):
+                if p is not None and p.poll() is None:
+                    p.kill()
+                    p.wait(5)

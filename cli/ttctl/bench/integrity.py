@@ -73,6 +73,12 @@ class _Send:
     code: int | None = None
 
 
+class _NotStarted(RuntimeError):
+    def __init__(self, text: str, exited: bool) -> None:
+        super().__init__(text)
+        self.exited = exited
+
+
 def _free_port() -> int:
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
         s.bind((LOCAL, 0))
@@ -143,6 +149,26 @@ class Harness:
         self._wait_for(err, "relay: udpin", p)
         self.relay_err = err
 
+    def _start_ends(self, tries: int = 3) -> None:
+        """The receiver (and the relay) on ports picked free a moment ago: another process's
+        ephemeral port can take one in between, and the process then exits at once ('address
+        in use'); pick again, a few times."""
+        for attempt in range(tries):
+            try:
+                self.start_receiver()
+                if self.use_relay:
+                    self.start_relay()
+                return
+            except _NotStarted as e:
+                for p in (self.receiver, self.relay):
+                    if p is not None and p.poll() is None:
+                        p.kill()
+                        p.wait(5)
+                self.receiver = self.relay = None
+                if not e.exited or attempt == tries - 1:
+                    raise RuntimeError(str(e)) from None
+                self.port, self.air = _free_port(), _free_port()
+
     def _wait_for(self, path: Path, text: str, p: subprocess.Popen[bytes], timeout: float = 20.0) -> None:
         end = time.monotonic() + timeout
         while time.monotonic() < end:
@@ -151,7 +177,7 @@ class Harness:
             if p.poll() is not None:
                 break
             time.sleep(0.02)
-        raise RuntimeError(f"{path.name}: no {text!r}: {path.read_text(errors='replace')}")
+        raise _NotStarted(f"{path.name}: no {text!r}: {path.read_text(errors='replace').strip()}", p.poll() is not None)
 
     def _content(self, name: str) -> tuple[Path, str]:
         made = self.contents.setdefault(name, [])
@@ -353,9 +379,7 @@ class Harness:
         if self.use_strangers:
             threads.append(threading.Thread(target=self._strangers, daemon=True))
         try:
-            self.start_receiver()
-            if self.use_relay:
-                self.start_relay()
+            self._start_ends()
             for t in threads:
                 t.start()
             for i in range(rounds):
@@ -365,7 +389,8 @@ class Harness:
         finally:
             self._stop.set()
             for t in threads:
-                t.join(5)
+                if t.ident is not None:  # started: a receiver or relay that never came up started none
+                    t.join(5)
             for p in (self.receiver, self.relay):
                 if p is not None and p.poll() is None:
                     p.send_signal(signal.SIGINT)
