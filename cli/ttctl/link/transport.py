@@ -272,32 +272,25 @@ class UdpTransport(Transport):
         return str(self.spec)
 
     def send(self, data: bytes) -> bool:
+        return self._send(data, None)
+
+    def send_to(self, data: bytes, source: Hashable) -> bool:
+        """To one peer only: the address a datagram came from (udpin: if it is a live peer)."""
+        return self._send(data, source)
+
+    def _send(self, data: bytes, only: Hashable) -> bool:
+        """To every live peer (udpin), or only to `only` if it is one; to the peer (udpout)."""
         tr = self._tr
         if tr is None or tr.is_closing():
             self.stats.unsent += 1
             return False
         if self.spec.kind == "udpin":
-            live = self._live_peers()
-            if not live:
+            to = [a for a in self._live_peers() if only is None or a == only]
+            if not to:
                 self.stats.unsent += 1
                 return False
-            for addr in live:
+            for addr in to:
                 tr.sendto(data, addr)
-        else:
-            tr.sendto(data)
-        self.stats.tx_packets += 1
-        self.stats.tx_bytes += len(data)
-        return True
-
-    def send_to(self, data: bytes, source: Hashable) -> bool:
-        """To one peer only: the address a datagram came from (udpin: if it is a live peer)."""
-        tr = self._tr
-        if tr is None or tr.is_closing():
-            return False
-        if self.spec.kind == "udpin":
-            if source not in self._live_peers():
-                return False
-            tr.sendto(data, source)
         else:
             tr.sendto(data)
         self.stats.tx_packets += 1
