@@ -46,6 +46,9 @@ from typing import Any
 
 from ..errors import Fail
 from ..link import probes as P
+from ..link.probes import loss_runs
+from ..link.probes import pct as _pct
+from ..link.probes import ranges as _ranges
 
 ECHOES = 20
 UNREACHABLE_S = 3.0
@@ -231,34 +234,6 @@ class Client:
             self.tr.close()
 
 
-def _pct(values: list[float], q: float) -> float:
-    s = sorted(values)
-    return s[min(len(s) - 1, int(q * (len(s) - 1) + 0.5))]
-
-
-def loss_runs(received: list[tuple[int, int]], count: int) -> list[int]:
-    """Lengths of the runs of consecutive lost sequence numbers, given the ranges received."""
-    runs = []
-    nxt = 0
-    for a, b in sorted(received):
-        if a > nxt:
-            runs.append(a - nxt)
-        nxt = max(nxt, b + 1)
-    if nxt < count:
-        runs.append(count - nxt)
-    return runs
-
-
-def _ranges(seqs: list[int]) -> list[tuple[int, int]]:
-    out: list[tuple[int, int]] = []
-    for s in sorted(seqs):
-        if out and s == out[-1][1] + 1:
-            out[-1] = (out[-1][0], s)
-        else:
-            out.append((s, s))
-    return out
-
-
 def _loss_fields(runs: list[int], sent: int, received: int) -> dict[str, Any]:
     return {"lost": sent - received, "loss": round((sent - received) / sent, 4), "loss_runs": len(runs),
             "loss_run_mean": round(statistics.mean(runs), 2) if runs else 0.0, "loss_run_max": max(runs, default=0)}
@@ -397,8 +372,8 @@ class Measure:
                     "goodput_Bps": round(got * DOWN_SIZE / seconds, 1),
                     "rx_rate_Bps": round((got - 1) * DOWN_SIZE / span, 1) if got > 1 and span > 0 else 0.0,
                     "capacity_Bps": round(DOWN_SIZE / gap, 1) if gap > 0 else 0.0,
-                    "owd_p50_ms": round((P.signed(d0 + P._pct(rel, 0.5)) + self.offset_us) / 1e3, 2),
-                    "owd_p95_ms": round((P.signed(d0 + P._pct(rel, 0.95)) + self.offset_us) / 1e3, 2),
+                    "owd_p50_ms": round((P.signed(d0 + _pct(rel, 0.5)) + self.offset_us) / 1e3, 2),
+                    "owd_p95_ms": round((P.signed(d0 + _pct(rel, 0.95)) + self.offset_us) / 1e3, 2),
                     "owd_min_ms": round((P.signed(d0 + min(rel)) + self.offset_us) / 1e3, 2)})
         return row
 

@@ -25,6 +25,7 @@ from typing import Any
 
 from ..link import probes as P
 from ..link.model import Channel, Impairments, Profile
+from ..link.probes import pct as _pct
 
 ECHO_SIZE = P.ECHO_REPLY.size  # an echo request is padded to the size of its answer
 DOWN_SIZE = 100
@@ -42,23 +43,6 @@ TOLERANCES = {
 }
 
 
-def _pct(values: list[float], q: float) -> float:
-    s = sorted(values)
-    return s[min(len(s) - 1, int(q * (len(s) - 1) + 0.5))]
-
-
-def loss_runs(arrived: set[int], count: int) -> list[int]:
-    runs: list[int] = []
-    k = 0
-    for seq in range(count + 1):
-        if seq < count and seq not in arrived:
-            k += 1
-        elif k:
-            runs.append(k)
-            k = 0
-    return runs
-
-
 def _row(direction: str, size: int, count: int, seconds: float, sends: list[float],
          arrivals: list[tuple[float, int]]) -> dict[str, Any]:
     """A row as the live run reports it, from send times and (arrival time, seq) pairs."""
@@ -67,7 +51,7 @@ def _row(direction: str, size: int, count: int, seconds: float, sends: list[floa
         first.setdefault(seq, t)
     got = len(first)
     times = sorted(first.values())
-    runs = loss_runs(set(first), count)
+    runs = P.loss_runs(P.ranges(first), count)
     gaps = [b - a for a, b in itertools.pairwise(times)]
     gap = _pct(gaps, 0.5) if gaps else 0.0
     span = times[-1] - times[0] if got > 1 else 0.0

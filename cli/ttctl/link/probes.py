@@ -38,9 +38,11 @@ import asyncio
 import struct
 import time
 from collections import OrderedDict
-from collections.abc import Callable
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, TypeVar
+
+N = TypeVar("N", int, float)
 
 MAGIC = 0xB7
 HDR = struct.Struct(">BcHH")
@@ -87,9 +89,36 @@ def parse(data: bytes) -> tuple[bytes, int, int] | None:
     return kind, run, seq
 
 
-def _pct(values: list[int], q: float) -> int:
+def pct(values: Sequence[N], q: float) -> N:
+    """The q-quantile of `values` (nearest rank; not empty)."""
     s = sorted(values)
     return s[min(len(s) - 1, int(q * (len(s) - 1) + 0.5))]
+
+
+
+def loss_runs(received: list[tuple[int, int]], count: int) -> list[int]:
+    """Lengths of the runs of consecutive lost sequence numbers of 0..count-1, given the ranges
+    (first, last) received."""
+    runs = []
+    nxt = 0
+    for a, b in sorted(received):
+        if a > nxt:
+            runs.append(a - nxt)
+        nxt = max(nxt, b + 1)
+    if nxt < count:
+        runs.append(count - nxt)
+    return runs
+
+
+def ranges(seqs: Iterable[int]) -> list[tuple[int, int]]:
+    """Sequence numbers as sorted ranges (first, last)."""
+    out: list[tuple[int, int]] = []
+    for s in sorted(seqs):
+        if out and s == out[-1][1] + 1:
+            out[-1] = (out[-1][0], s)
+        else:
+            out.append((s, s))
+    return out
 
 
 @dataclass
@@ -209,8 +238,8 @@ class Server:
             d0 = r.delays[0] if r.delays else 0
             rel = [d - d0 for d in r.delays] or [0]
             return SUMMARY.pack(MAGIC, b"R", run, 0, r.received, pages, r.first_rx, r.last_rx, d0 % MOD,
-                                _pct(rel, 0.5), _pct(rel, 0.95), min(rel), r.bytes,
-                                max(0, _pct(r.gaps, 0.5)) if r.gaps else 0)
+                                pct(rel, 0.5), pct(rel, 0.95), min(rel), r.bytes,
+                                max(0, pct(r.gaps, 0.5)) if r.gaps else 0)
         part = ranges[(page - 1) * RANGES_PER_PAGE:page * RANGES_PER_PAGE]
         return header(b"R", run, page) + b"".join(RANGE.pack(a, b) for a, b in part)
 
