@@ -17,6 +17,14 @@ DIALECTS = ROOT / "dialects"
 TTAPI = DIALECTS / "ttapi.xml"
 
 
+def shipped() -> Any:
+    """ttctl's shipped dialect as the link layer takes it (a ttctl.wire.bindings.Bindings)."""
+    import ttapi
+    from ttctl.wire.bindings import Bindings
+
+    return Bindings(ttapi)
+
+
 def pymavlink_dialects() -> Path:
     import pymavlink
 

@@ -15,7 +15,7 @@ from typing import Any
 import pytest
 
 import ttapi
-from conftest import pymavlink_dialects
+from conftest import pymavlink_dialects, shipped
 from ttctl.bench import baselines as bl
 from ttctl.bench.transfer import ONBOARD, TABLET, Case, run_ttctl
 from ttctl.link.model import load_profile
@@ -73,7 +73,7 @@ def test_thesis_frames_agree_with_pymavlink_mavgen(tmp_path: Path) -> None:
         a = enc.encode(m)
         mav.seq = a[4]
         assert a == bytes(t.pack(mav)), m.NAME
-        back = PacketReceiver(d.registry).feed(a)  # our receiver decodes mavgen's frames too
+        back = PacketReceiver(shipped(), registry=d.registry).feed(a)  # our receiver decodes mavgen's frames too
         assert len(back) == 1 and back[0].pack_payload() == m.pack_payload()
 
 
@@ -173,7 +173,7 @@ def test_thesis_receiver_fixes_the_original_defects() -> None:
     feed(4.0, d.part(target_system=1, file_id=4, sequence=1, payload=data[250:500]))  # keeps its number
     feed(4.1, d.part(target_system=1, file_id=4, sequence=0, payload=data[:250]))
     assert rx.complete_at == 4.1 and rx.content == data
-    done = PacketReceiver(d.registry)
+    done = PacketReceiver(shipped(), registry=d.registry)
     msgs = [m for p in list(rx.fifo) for m in done.feed(p)]
     assert (msgs[-1].sequence_start, msgs[-1].sequence_end) == (0xFFFF, 0xFFFF)
 
@@ -217,7 +217,7 @@ def test_ftp_server_answers_like_ardupilot() -> None:
 
     srv = bl.FtpServer(ONBOARD, None, b"hello world!")
     enc = ttapi.Encoder(*TABLET)
-    replies = PacketReceiver()
+    replies = PacketReceiver(shipped())
 
     def ask(now: float, msg: Any) -> tuple[int, ...]:
         for p in packetize([enc.encode(msg)]):

@@ -16,6 +16,7 @@ from typing import Any
 
 import pytest
 
+from conftest import shipped
 from test_cpp_signing import build_driver, run
 
 KEY = bytes(range(1, 33))
@@ -140,7 +141,7 @@ class FixedReceiver:
                 finally:
                     self.signing = real
 
-        return Fixed(signing=signing)
+        return Fixed(shipped(), signing=signing)
 
 
 def canonical(frame: bytes) -> bytes:
@@ -156,7 +157,7 @@ def python_run(cases: list[list[bytes | None]], signing_for: Any) -> list[tuple[
     results = []
     for items in cases:
         signing = signing_for()
-        rx = PacketReceiver() if signing is None else FixedReceiver(signing)
+        rx = PacketReceiver(shipped()) if signing is None else FixedReceiver(signing)
         per: list[list[bytes]] = []
         for p in items:
             got = rx.flush() if p is None else rx.feed(p)

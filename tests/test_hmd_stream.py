@@ -12,6 +12,7 @@ import pytest
 
 import ttapi
 from conformance_lib import pymavlink_module
+from conftest import shipped
 from ttctl.hmd.model import BUTTONS, ControllerSample, Device, PoseSample
 from ttctl.hmd.stream import PoseStream, button_bits
 from ttctl.proto.endpoint import CONTROL, Endpoint
@@ -54,8 +55,8 @@ def decode(packets: list[bytes]) -> list[object]:
 
 
 def test_newest_wins_at_link_rate_and_counts_add_up() -> None:
-    ep = Endpoint(255, 190, rate_Bps=1000.0, accept_commands=False)
-    stream = PoseStream(max_hz=30)
+    ep = Endpoint(shipped(), 255, 190, rate_Bps=1000.0, accept_commands=False)
+    stream = PoseStream(shipped(), max_hz=30)
     ep.add_stream(stream)
     rng = random.Random(1)
 
@@ -85,8 +86,8 @@ def test_newest_wins_at_link_rate_and_counts_add_up() -> None:
 
 
 def test_button_changes_are_never_dropped_and_stay_in_order() -> None:
-    ep = Endpoint(255, 190, rate_Bps=300.0, accept_commands=False)  # a link far too slow for the flood
-    stream = PoseStream()
+    ep = Endpoint(shipped(), 255, 190, rate_Bps=300.0, accept_commands=False)  # a link far too slow for the flood
+    stream = PoseStream(shipped())
     ep.add_stream(stream)
     rng = random.Random(7)
     changes: list[int] = []
@@ -113,8 +114,8 @@ def test_button_changes_are_never_dropped_and_stay_in_order() -> None:
 
 
 def test_commands_go_before_poses() -> None:
-    ep = Endpoint(255, 190, rate_Bps=1000.0, accept_commands=False)
-    stream = PoseStream()
+    ep = Endpoint(shipped(), 255, 190, rate_Bps=1000.0, accept_commands=False)
+    stream = PoseStream(shipped())
     ep.add_stream(stream)
     for k in range(50):
         stream.offer(PoseSample(0.0, Device(k % 8, "tracker", serial=f"T{k % 8}")))
@@ -124,7 +125,7 @@ def test_commands_go_before_poses() -> None:
 
 
 def test_messages_decode_to_what_was_offered() -> None:
-    stream = PoseStream()
+    stream = PoseStream(shipped())
     s = PoseSample(1700000000.25, RIGHT, valid=False, connected=True, position=(1.0, -2.0, 3.5),
                    orientation=(0.5, -0.5, 0.5, 0.5), velocity=(0.1, 0.2, 0.3), angular_velocity=(1.0, 2.0, 3.0))
     stream.offer(s)
@@ -149,8 +150,8 @@ def test_messages_decode_to_what_was_offered() -> None:
 
 
 def test_a_base_station_is_sent_rarely_and_max_hz_caps_a_fast_link() -> None:
-    ep = Endpoint(255, 190, rate_Bps=None, accept_commands=False)  # unpaced (LAN)
-    stream = PoseStream(max_hz=20)
+    ep = Endpoint(shipped(), 255, 190, rate_Bps=None, accept_commands=False)  # unpaced (LAN)
+    stream = PoseStream(shipped(), max_hz=20)
     ep.add_stream(stream)
 
     def offer(t: float) -> None:

@@ -9,6 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from conftest import shipped
 from ttctl.hmd.frames import matrix_from_quat
 from ttctl.hmd.orbit import (
     OrbitCamera,
@@ -137,7 +138,8 @@ def test_the_plugin_publishes_to_the_tablet_ground_stations_and_plugins() -> Non
     tablet: list[object] = []
     gcs: list[object] = []
     timers: list[tuple[float, object]] = []
-    ctx = Context(send=tablet.append, send_gcs=gcs.append, vehicle=v, every=lambda s, fn: timers.append((s, fn)))
+    ctx = Context(send=lambda m, urgent=False: tablet.append(m), send_gcs=gcs.append, vehicle=v,
+                  every=lambda s, fn: timers.append((s, fn)), dialect=shipped())
     plugin = OrbitCameraPlugin(rate=10.0)
     plugin.start(ctx)
     assert timers and timers[0][0] == pytest.approx(0.1)

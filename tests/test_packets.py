@@ -7,6 +7,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import ttapi
+from conftest import shipped
 from ttctl.wire.packets import PacketReceiver, packetize
 
 SETTINGS = settings(max_examples=300, deadline=None, suppress_health_check=list(HealthCheck))
@@ -50,7 +51,7 @@ def layout(frames: list[bytes], mtu: int = 100) -> tuple[list[bytes], list[set[i
 
 
 def receive(packets: list[bytes]) -> list[bytes]:
-    rx = PacketReceiver()
+    rx = PacketReceiver(shipped())
     got = [m for p in packets for m in rx.feed(p)] + rx.flush()
     return [m.pack(m.get_seq(), m.get_srcSystem(), m.get_srcComponent()) for m in got]
 
@@ -189,7 +190,7 @@ def test_urgent_packet_between_pieces_of_a_long_frame(frames: list[bytes], where
 
 
 def test_zero_byte_packets_are_ignored() -> None:
-    rx = PacketReceiver()
+    rx = PacketReceiver(shipped())
     assert rx.feed(b"") == [] and rx.stats.packets == 1
 
 
@@ -206,7 +207,7 @@ def test_probing_a_packet_for_its_own_frame_does_not_use_up_its_signature() -> N
     ack = ttapi.Encoder(255, 190, urgent).encode(ttapi.TtCommandAck(command_id=1, result=0))
     assert len(wide) == 280
     pieces = [wide[:100], wide[100:200], wide[200:]]
-    rx = PacketReceiver(signing=ttapi.Signing(key))
+    rx = PacketReceiver(shipped(), signing=ttapi.Signing(key))
     got = [m for pkt in (pieces[0], ack, pieces[1], pieces[2]) for m in rx.feed(pkt)]
     assert sorted(type(m).__name__ for m in got) == ["TtCommandAck", "TtFileDataWide"]
     assert rx.stats.bad_frames == 0

@@ -14,6 +14,7 @@ from typing import Any
 import pytest
 
 import ttapi
+from conftest import shipped
 from ttctl.link.model import Channel, Impairments, load_profile
 from ttctl.link.sim import Simulation
 from ttctl.proto.endpoint import Endpoint
@@ -44,10 +45,10 @@ class World:
         def log(what: str, obj: Any) -> None:
             self.events.append((what, obj))
 
-        self.tablet = Endpoint(*TABLET, rate_Bps=self.up.capacity_Bps(), config=cfg, on_event=log,
+        self.tablet = Endpoint(shipped(), *TABLET, rate_Bps=self.up.capacity_Bps(), config=cfg, on_event=log,
                                receive_dir=ReceiveDir(tablet_dir, quota) if tablet_dir else None,
                                rng=random.Random(seed), signing=ttapi.Signing(key) if key else None)
-        self.onboard = Endpoint(*ONBOARD, rate_Bps=self.down.capacity_Bps(), config=cfg, on_event=log,
+        self.onboard = Endpoint(shipped(), *ONBOARD, rate_Bps=self.down.capacity_Bps(), config=cfg, on_event=log,
                                 rng=random.Random(seed + 1),
                                 receive_dir=ReceiveDir(onboard_dir, quota) if onboard_dir else None,
                                 serve_dir=str(serve) if serve else None, action=action,
@@ -360,7 +361,7 @@ def test_a_new_process_reusing_a_command_id_is_not_answered_with_the_old_ack(tmp
     from ttctl.proto.commands import Command, CommandClient, CommandServer
 
     ran: list[int] = []
-    server = CommandServer(1, 240, action=lambda msg: ran.append(msg.action) or 0)
+    server = CommandServer(shipped(), 1, 240, action=lambda msg: ran.append(msg.action) or 0)
     take_off, land = int(ttapi.TtAction.TT_ACTION_TAKE_OFF), int(ttapi.TtAction.TT_ACTION_LAND)
     for action, clock in ((take_off, 1000.0), (land, 1060.0)):
         client = CommandClient(*TABLET, first_id=1, clock=lambda c=clock: c)  # both start at id 1

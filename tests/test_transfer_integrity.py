@@ -17,6 +17,7 @@ from typing import Any
 import pytest
 
 import ttapi
+from conftest import shipped
 from ttctl.proto.endpoint import Endpoint
 from ttctl.proto.names import MAX_NAME_BYTES, Refused, check_name
 from ttctl.proto.sender import FileSender
@@ -80,12 +81,12 @@ def receiver(root: Path, events: list[tuple[str, Any, Any]] | None = None, quota
         if events is not None:
             events.append((what, obj, getattr(obj, "reason", None)))  # the reason as it was then
 
-    return Endpoint(*ONBOARD, receive_dir=ReceiveDir(root, quota), on_event=log, config=config,
+    return Endpoint(shipped(), *ONBOARD, receive_dir=ReceiveDir(root, quota), on_event=log, config=config,
                     rng=random.Random(99), **kw)
 
 
 def tablet(seed: int | None = None, config: TransferConfig | None = None, **kw: Any) -> Endpoint:
-    return Endpoint(*TABLET, rng=random.Random(seed) if seed is not None else None, config=config, **kw)
+    return Endpoint(shipped(), *TABLET, rng=random.Random(seed) if seed is not None else None, config=config, **kw)
 
 
 def send(ep: Endpoint, name: str, payload: bytes, **kw: Any) -> FileSender:

@@ -11,6 +11,7 @@ import sys
 import pytest
 
 import ttapi
+from conftest import shipped
 from ttctl.ends.runtime import Runner
 from ttctl.link.transport import (
     DTT_MTU,
@@ -202,7 +203,7 @@ def test_unreachable_tcp_and_unresolvable_host() -> None:
 
 def test_runner_does_not_spin_when_idle() -> None:
     async def main() -> Runner:
-        ep = Endpoint(1, 240)
+        ep = Endpoint(shipped(), 1, 240)
         runner = Runner(ep, make_transport(parse_spec(f"udpin:{LOCAL}:0")))
         await runner.start()
         await asyncio.sleep(0.5)
@@ -216,10 +217,10 @@ def test_runner_does_not_spin_when_idle() -> None:
 def test_two_endpoints_over_loopback_udp_exchange_a_command() -> None:
     """A command and its ack through two runners: the wake-up loop and receive path both work."""
     async def main() -> tuple[object, Runner]:
-        onboard = Endpoint(1, 240, rate_Bps=50_000, action=lambda cmd: 0)
+        onboard = Endpoint(shipped(), 1, 240, rate_Bps=50_000, action=lambda cmd: 0)
         a = Runner(onboard, make_transport(parse_spec(f"udpin:{LOCAL}:0")))
         await a.start()
-        tablet = Endpoint(255, 190, rate_Bps=50_000)
+        tablet = Endpoint(shipped(), 255, 190, rate_Bps=50_000)
         b = Runner(tablet, make_transport(parse_spec(f"udpout:{a.transport.local}")))
         await b.start()
         b.sync()
@@ -254,7 +255,7 @@ for _ in range(20):
 def test_tcp_stream_carries_frames_pymavlink_parses() -> None:
     async def main() -> tuple[str, int, list[object]]:
         heard: list[object] = []
-        ep = Endpoint(1, 240, on_message=lambda now, msg: heard.append(msg))
+        ep = Endpoint(shipped(), 1, 240, on_message=lambda now, msg: heard.append(msg))
         runner = Runner(ep, make_transport(parse_spec(f"tcpin:{LOCAL}:0")))
         await runner.start()
         assert runner.transport.stream and runner.transport.mtu >= 280

@@ -7,6 +7,7 @@ import math
 
 import pytest
 
+from conftest import shipped
 from ttctl.ends.onboard.autopilot import Autopilot
 from ttctl.ends.onboard.trajectory import TrajectoryError, parse_trajectory
 from ttctl.ends.onboard.vehicle import Refused, SimVehicle, State, Waypoint
@@ -88,7 +89,7 @@ def test_absurd_setpoints_are_refused_and_the_vehicle_holds(bad: float) -> None:
 def test_link_loss_hovers_then_returns_and_lands() -> None:
     v = SimVehicle()
     said: list[str] = []
-    ap = Autopilot(v, say=lambda sev, text: said.append(text))
+    ap = Autopilot(shipped(), v, say=lambda sev, text: said.append(text))
     v.arm()
     v.takeoff(5)
     fly(v, State.HOVERING)

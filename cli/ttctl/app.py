@@ -24,7 +24,17 @@ from .commands.bench_cli import bench_app
 from .commands.emulate_cli import emulate_app
 from .commands.hmd_cli import hmd_app
 from .commands.link_cli import link_app
-from .commands.options import AcceptUnsignedOpt, DistanceOpt, JsonOpt, KeyOpt, ProfileFileOpt, ProfileOpt, RateOpt
+from .commands.options import (
+    AcceptUnsignedOpt,
+    DialectIncludeOpt,
+    DialectOpt,
+    DistanceOpt,
+    JsonOpt,
+    KeyOpt,
+    ProfileFileOpt,
+    ProfileOpt,
+    RateOpt,
+)
 from .errors import Fail
 
 app = typer.Typer(
@@ -169,6 +179,8 @@ def recv_file_cmd(
     json_out: JsonOpt = False,
     key: KeyOpt = None,
     accept_unsigned: AcceptUnsignedOpt = False,
+    dialect: DialectOpt = None,
+    include: DialectIncludeOpt = None,
 ) -> None:
     """Receive files (the onboard end, 1/240, by default) until interrupted or --count files are in.
 
@@ -181,7 +193,8 @@ def recv_file_cmd(
     from .commands.recv_file import RecvOptions, recv_file
 
     code = recv_file(RecvOptions(listen, folder, overwrite, max_file, max_dir, serve, count, sysid, compid, rate,
-                                 profile, distance, json_out, key, accept_unsigned, profile_file))
+                                 profile, distance, json_out, key, accept_unsigned, profile_file, dialect,
+                                 include or []))
     raise typer.Exit(code)
 
 
@@ -213,6 +226,8 @@ def send_file_cmd(
                                                              "from the peer.")] = 60.0,
     key: KeyOpt = None,
     accept_unsigned: AcceptUnsignedOpt = False,
+    dialect: DialectOpt = None,
+    include: DialectIncludeOpt = None,
 ) -> None:
     """Send a file to a receiver (ttctl recv-file, or the onboard end), or fetch one with --from.
 
@@ -230,7 +245,8 @@ def send_file_cmd(
     from .commands.send_file import SendOptions, send_file
 
     code = send_file(SendOptions(file, to, from_, name, overwrite, json_out, rate, profile, distance, sysid, compid,
-                                 target_sysid, target_compid, timeout, folder, key, accept_unsigned, profile_file))
+                                 target_sysid, target_compid, timeout, folder, key, accept_unsigned, profile_file,
+                                 dialect, include or []))
     raise typer.Exit(code)
 
 

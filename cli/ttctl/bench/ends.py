@@ -48,7 +48,9 @@ async def _phase(seconds: float, loaded: bool, work: Path) -> dict[str, Any]:
     gcs = parse_spec(f"udpout:127.0.0.1:{sink.getsockname()[1]}")
     cfg = OnboardConfig(dtt=parse_spec(f"udpin:127.0.0.1:{dtt}"), gcs=[gcs], serve=serve,
                         rate_Bps=lan if loaded else None, telemetry_hz=50.0 if loaded else 2.0)
-    node = OnboardNode(cfg)
+    from .shipped import bindings
+
+    node = OnboardNode(bindings(), cfg)
     await node.start()
     if loaded:
         node.gcs.rates.set_all(50.0)

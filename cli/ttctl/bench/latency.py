@@ -22,18 +22,18 @@ from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
-import ttapi
-
 from ..link.model import Profile
 from ..link.sim import Simulation
 from ..proto.endpoint import Endpoint
 from ..proto.storage import BytesSource, ReceiveDir
+from ..wire.contract import TtAction
+from . import shipped
 
 TABLET = (255, 190)
 ONBOARD = (1, 240)
 PHASES = ("idle", "upload", "download")
-HOVER = int(ttapi.TtAction.TT_ACTION_HOVER)
-SYNC_TIME = int(ttapi.TtAction.TT_ACTION_SYNC_TIME)  # changes nothing on the vehicle: what live mode sends
+HOVER = int(TtAction.TT_ACTION_HOVER)
+SYNC_TIME = int(TtAction.TT_ACTION_SYNC_TIME)  # changes nothing on the vehicle: what live mode sends
 BENCH_FOLDER = "ttctl-bench"
 RETRIES, TIMEOUT = 5, 3.0  # per command: 3 + 6 + 12 + ... s of waiting before it gives up
 
@@ -92,10 +92,11 @@ def model_commands(profile: Profile, distance: float, phase: str, count: int, se
 
     rng = random.Random(seed)
     up, down = channels(profile, distance, Case("up", 0.0, "random"), seed)
+    b = shipped.bindings()
     with tempfile.TemporaryDirectory(prefix="ttctl-bench-") as d:
-        tablet = Endpoint(*TABLET, rate_Bps=pace(up), rng=random.Random(seed),
+        tablet = Endpoint(b, *TABLET, rate_Bps=pace(up), rng=random.Random(seed),
                           receive_dir=ReceiveDir(d) if phase == "download" else None)
-        onboard = Endpoint(*ONBOARD, rate_Bps=pace(down), rng=random.Random(seed + 1),
+        onboard = Endpoint(b, *ONBOARD, rate_Bps=pace(down), rng=random.Random(seed + 1),
                            receive_dir=ReceiveDir(d) if phase != "download" else None)
         sim = Simulation(tablet, onboard, up, down)
         senders: list[Any] = []
@@ -117,7 +118,7 @@ def model_commands(profile: Profile, distance: float, phase: str, count: int, se
             if restart and senders and senders[-1].done:
                 start_file()
             tablet.now = sim.now
-            pending.append(tablet.command(ttapi.TtActionCommand(action=action), ONBOARD, retries=RETRIES,
+            pending.append(tablet.command(b.TtActionCommand(action=action), ONBOARD, retries=RETRIES,
                                           timeout=TIMEOUT))
         sim.run(t + 30 + 60 * RETRIES, stop=lambda: all(c.done for c in pending))
         moved = sum(s.acked_bytes for s in senders)
@@ -176,6 +177,7 @@ class LiveOptions:
     fetch: str | None
     timeout: float
     seed: int | None = None
+    bindings: Any = None  # the link's dialect (None: ttctl's shipped ttapi)
 
 
 class Unreachable(Exception):
@@ -187,26 +189,26 @@ def run_live(o: LiveOptions, progress: Callable[[str], None]) -> tuple[list[Phas
 
 
 async def _live(o: LiveOptions, progress: Callable[[str], None]) -> tuple[list[Phase], dict[str, Any]]:
-    from ..commands.common import hello, parse_endpoint
-    from ..ends.runtime import Runner
-    from ..link.transport import make_transport
+    from ..ends.runtime import Runner, hello
+    from ..link.transport import make_transport, parse_spec
 
-    spec = parse_endpoint(o.to, "udpout")
+    spec = parse_spec(o.to, udp="udpout")
+    b = o.bindings or shipped.bindings()
     rng = random.Random(o.seed)
     loop = asyncio.get_running_loop()
     wake = asyncio.Event()
     with tempfile.TemporaryDirectory(prefix="ttctl-bench-") as d:
         store = ReceiveDir(d)
         transport = make_transport(spec, log=lambda text: None)
-        ep = Endpoint(*TABLET, mtu=transport.mtu, rate_Bps=o.pace_Bps, receive_dir=store, unsolicited=False,
+        ep = Endpoint(b, *TABLET, mtu=transport.mtu, rate_Bps=o.pace_Bps, receive_dir=store, unsolicited=False,
                       on_event=lambda what, obj: wake.set())
-        runner = Runner(ep, transport, quiet=o.quiet, hello=hello(TABLET[0], spec))
+        runner = Runner(ep, transport, quiet=o.quiet, hello=hello(TABLET[0], spec, b))
         await runner.start()
         store.prepare()
         try:
             # the peer first: one command, acknowledged within the timeout, or nobody is there
             runner.sync()
-            probe = ep.command(ttapi.TtActionCommand(action=SYNC_TIME), ONBOARD, retries=100, timeout=0.5)
+            probe = ep.command(b.TtActionCommand(action=SYNC_TIME), ONBOARD, retries=100, timeout=0.5)
             runner.kick()
             end = loop.time() + o.timeout
             while not probe.done and loop.time() < end:
@@ -275,7 +277,7 @@ async def _live_phase(o: LiveOptions, phase: str, ep: Endpoint, runner: Any, rng
         if phase != "idle" and busy_done():
             start_file()
         runner.sync()
-        cmds.append(ep.command(ttapi.TtActionCommand(action=SYNC_TIME), ONBOARD, retries=RETRIES, timeout=TIMEOUT))
+        cmds.append(ep.command(ep.b.TtActionCommand(action=SYNC_TIME), ONBOARD, retries=RETRIES, timeout=TIMEOUT))
         runner.kick()
         progress(f"{phase}: command {i + 1}/{o.count}")
     end = loop.time() + 60

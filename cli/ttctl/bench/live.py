@@ -177,12 +177,14 @@ class Client:
             self.hello()
 
     def hello(self) -> None:
-        import ttapi
+        """A HEARTBEAT (common.xml's, the same bytes in every dialect on the link): a relay or an
+        onboard end learns this address from a valid frame; the probes themselves are not MAVLink."""
+        from .shipped import bindings
 
+        b = bindings()
         self.last_hello = time.monotonic()
-        hb = ttapi.Heartbeat(type=int(ttapi.MavType.MAV_TYPE_GCS),
-                             autopilot=int(ttapi.MavAutopilot.MAV_AUTOPILOT_INVALID))
-        self.send(ttapi.encode(hb, sysid=255, compid=190))
+        hb = b.Heartbeat(type=int(b.MavType.MAV_TYPE_GCS), autopilot=int(b.MavAutopilot.MAV_AUTOPILOT_INVALID))
+        self.send(b.encoder(255, 190).encode(hb))
 
     def new_run(self) -> int:
         while True:

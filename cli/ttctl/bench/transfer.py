@@ -24,6 +24,7 @@ from ..link.sim import Simulation
 from ..proto.endpoint import Endpoint
 from ..proto.storage import BytesSource, ReceiveDir
 from ..proto.transfer import NARROW, NARROW_FRAME, WIDE, WIDE_FRAME, TransferConfig
+from . import shipped
 from .latency import percentile  # shared with `ttctl bench latency`
 
 TABLET = (255, 190)
@@ -90,9 +91,10 @@ def run_ttctl(profile: Profile, distance: float, case: Case, data: bytes, seed: 
 
         store = ReceiveDir(d)
         cfg = TransferConfig()
-        tablet = Endpoint(*TABLET, rate_Bps=pace(up), config=cfg, rng=random.Random(seed),
+        b = shipped.bindings()
+        tablet = Endpoint(b, *TABLET, rate_Bps=pace(up), config=cfg, rng=random.Random(seed),
                           receive_dir=store if case.direction == "down" else None, on_event=on_event)
-        onboard = Endpoint(*ONBOARD, rate_Bps=pace(down), config=cfg, rng=random.Random(seed + 1),
+        onboard = Endpoint(b, *ONBOARD, rate_Bps=pace(down), config=cfg, rng=random.Random(seed + 1),
                            receive_dir=store if case.direction == "up" else None, on_event=on_event)
         sender, target = (tablet, ONBOARD) if case.direction == "up" else (onboard, TABLET)
         s = sender.send_file("bench.bin", target, source=BytesSource(data, "bench.bin"))

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 
 from ..errors import Fail
-from .options import ProfileFileOpt
+from .options import DialectIncludeOpt, DialectOpt, ProfileFileOpt
 
 if TYPE_CHECKING:
     from ..bench.latency import Phase
@@ -46,6 +46,8 @@ def bench_latency(
                                                              "ack before giving up (exit 2).", min=0.1,
                                            max=600)] = 10.0,
     json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+    dialect: DialectOpt = None,
+    include: DialectIncludeOpt = None,
 ) -> None:
     """Command latency (TT_ACTION_COMMAND -> TT_COMMAND_ACK): idle, during an upload and during a
     download; p50/p95/max, retries, and during/idle ratios. On the link model in virtual time, or
@@ -72,7 +74,10 @@ def bench_latency(
     if to is None:
         phases = lat.run_model(prof, distance, count, seed, interval, size)
     else:
-        phases, extra = _live(to, prof, distance, count, interval, size, seed, fetch, timeout, profile_file)
+        from .dialect import load_bindings
+
+        b = load_bindings(dialect, include or [])
+        phases, extra = _live(to, prof, distance, count, interval, size, seed, fetch, timeout, profile_file, b)
         meta.update(extra)
     rep = lat.report(phases, meta, bound)
     if json_out:
@@ -85,10 +90,11 @@ def bench_latency(
 
 
 def _live(to: str, prof: Profile, distance: float, count: int, interval: float, size: int, seed: int,
-          fetch: str | None, timeout: float, profile_file: Path | None) -> tuple[list[Phase], dict[str, Any]]:
+          fetch: str | None, timeout: float, profile_file: Path | None, b: Any) -> tuple[list[Phase], dict[str, Any]]:
     from ..bench import latency as lat
-    from .common import TABLET, link_choice
+    from .common import TABLET, link_choice, parse_endpoint
 
+    parse_endpoint(to, "udpout")  # refused in one line before anything starts
     if fetch is not None:
         from ..proto.names import Refused, check_name
 
@@ -97,7 +103,7 @@ def _live(to: str, prof: Profile, distance: float, count: int, interval: float, 
         except Refused as e:
             raise Fail(f"--fetch {fetch!r}: {e.reason}") from None
     link = link_choice(None, prof.name, distance, TABLET[0], profile_file)
-    o = lat.LiveOptions(to, count, interval, size, link.pace_Bps, link.quiet, fetch, timeout, seed)
+    o = lat.LiveOptions(to, count, interval, size, link.pace_Bps, link.quiet, fetch, timeout, seed, b)
     tty = sys.stderr.isatty()
 
     def progress(text: str) -> None:

@@ -1,5 +1,5 @@
-"""What the link commands share: pacing from --profile/--rate, endpoint specs, signals, the
-progress bar, one-line messages."""
+"""What the link commands share: pacing from --profile/--rate, endpoint specs, signing,
+signals, the progress bar, one-line messages. (The dialect on the link: dialect.py.)"""
 
 from __future__ import annotations
 
@@ -7,7 +7,6 @@ import asyncio
 import contextlib
 import signal
 import sys
-from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -67,7 +66,7 @@ def parse_endpoint(text: str, udp: str) -> Any:
         raise Fail(str(e)) from None
 
 
-def load_signing(key_file: Path | None, accept_unsigned: bool) -> Any:
+def load_signing(key_file: Path | None, accept_unsigned: bool, bindings: Any = None) -> Any:
     """MAVLink 2 signing for the DTT link from --key FILE (None without one): the file holds
     the 32-byte key as 64 hex digits, or a passphrase whose SHA-256 is the key (MAVProxy's
     `signing setup PASSPHRASE` convention). Every frame sent is signed; frames received must
@@ -79,8 +78,6 @@ def load_signing(key_file: Path | None, accept_unsigned: bool) -> Any:
     import hashlib
     import re
 
-    from ttapi import Signing
-
     try:
         raw = key_file.read_bytes()[:4097]
     except OSError as e:
@@ -91,7 +88,11 @@ def load_signing(key_file: Path | None, accept_unsigned: bool) -> Any:
     if not text:
         raise Fail(f"--key {key_file} is empty; put 64 hex digits or a passphrase in it")
     key = bytes.fromhex(text) if re.fullmatch(r"[0-9a-fA-F]{64}", text) else hashlib.sha256(text.encode()).digest()
-    return Signing(key, allow_unsigned=accept_unsigned)
+    if bindings is None:
+        from .dialect import load_bindings
+
+        bindings = load_bindings(None)
+    return bindings.signing(key, allow_unsigned=accept_unsigned)
 
 
 def check_id(value: int, what: str) -> None:
@@ -134,17 +135,6 @@ def _loop_error(loop: asyncio.AbstractEventLoop, context: dict[str, Any]) -> Non
     exc = context.get("exception")
     what = f"{type(exc).__name__}: {exc}" if exc is not None else ""
     err(f"warning: {context.get('message', 'error in the event loop')}{': ' + what if what else ''}")
-
-
-def hello(sysid: int, spec: Any) -> Callable[[], Any] | None:
-    """For an end that reaches out over UDP: a HEARTBEAT each second until the peer is heard,
-    so that a peer listening with udpin learns where to answer."""
-    if spec.kind != "udpout":
-        return None
-    import ttapi
-
-    kind = ttapi.MavType.MAV_TYPE_GCS if sysid == TABLET[0] else ttapi.MavType.MAV_TYPE_ONBOARD_CONTROLLER
-    return lambda: ttapi.Heartbeat(type=int(kind), autopilot=int(ttapi.MavAutopilot.MAV_AUTOPILOT_INVALID))
 
 
 async def tick(wake: asyncio.Event, timeout: float = TICK) -> None:

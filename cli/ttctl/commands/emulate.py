@@ -12,6 +12,7 @@ from typing import Any
 
 from ..errors import Fail
 from .common import Signals, check_id, err, link_choice, load_signing, parse_endpoint
+from .dialect import load_bindings
 
 DEFAULT_DTT = "udpin:0.0.0.0:14560"
 DEFAULT_GCS = ["udpout:127.0.0.1:14550", "udpout:127.0.0.1:14540"]  # QGroundControl/MAVProxy, MAVSDK
@@ -37,6 +38,8 @@ class OnboardOptions:
     key: Path | None = None
     accept_unsigned: bool = False
     profile_file: Path | None = None
+    dialect: Path | None = None
+    include_dirs: list[Path] = field(default_factory=list)
 
 
 def _home(text: str | None) -> Any:
@@ -78,15 +81,17 @@ def emulate_onboard(o: OnboardOptions) -> int:
             raise Fail(f"--inbox: {e}") from None
     if o.serve is not None and not o.serve.is_dir():
         raise Fail(f"--serve {o.serve} is not a directory")
+    b = load_bindings(o.dialect, o.include_dirs)  # before the plugins: they import its package
+    cfg = OnboardConfig(sysid=o.sysid, dtt=dtt, gcs=gcs, inbox=o.inbox, serve=o.serve, home=_home(o.home),
+                        speed=o.speed, rate_Bps=link.pace_Bps, telemetry_hz=o.telemetry_hz,
+                        orbit_hz=o.orbit_hz, signing=load_signing(o.key, o.accept_unsigned, b))
     try:
         plugins = [] if o.no_entry_points else entry_point_plugins()
         for spec in o.plugins:
             plugins.extend(load_plugin(spec))
+        node = OnboardNode(b, cfg, plugins, log=lambda text: err(text))  # checks the plugins' messages
     except PluginError as e:
         raise Fail(f"--plugin {e}") from None
-    cfg = OnboardConfig(sysid=o.sysid, dtt=dtt, gcs=gcs, inbox=o.inbox, serve=o.serve, home=_home(o.home),
-                        speed=o.speed, rate_Bps=link.pace_Bps, telemetry_hz=o.telemetry_hz,
-                        orbit_hz=o.orbit_hz, signing=load_signing(o.key, o.accept_unsigned))
 
     async def main() -> None:
         from ..link.transport import TransportError
@@ -94,7 +99,6 @@ def emulate_onboard(o: OnboardOptions) -> int:
         loop = asyncio.get_running_loop()
         wake = asyncio.Event()
         sigs = Signals(loop, wake)
-        node = OnboardNode(cfg, plugins, log=lambda text: err(text))
         try:
             try:
                 await node.start()
@@ -104,7 +108,7 @@ def emulate_onboard(o: OnboardOptions) -> int:
             gcs_at = ", ".join(str(g) for g in gcs) or "none"
             names = ", ".join(type(p).__name__ for p in plugins)
             err(f"onboard {o.sysid}: tablet link {dtt_at}; ground stations {gcs_at}; home {cfg.home.lat:.5f}, "
-                f"{cfg.home.lon:.5f}, {cfg.home.alt:g} m" + (f"; plugins {names}" if names else ""))
+                f"{cfg.home.lon:.5f}, {cfg.home.alt:g} m; dialect {b.name}" + (f"; plugins {names}" if names else ""))
             await node.run(sigs.stop)
         finally:
             sigs.remove()

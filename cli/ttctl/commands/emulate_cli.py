@@ -7,7 +7,17 @@ from typing import Annotated
 
 import typer
 
-from .options import AcceptUnsignedOpt, DistanceOpt, JsonOpt, KeyOpt, ProfileFileOpt, ProfileOpt, RateOpt
+from .options import (
+    AcceptUnsignedOpt,
+    DialectIncludeOpt,
+    DialectOpt,
+    DistanceOpt,
+    JsonOpt,
+    KeyOpt,
+    ProfileFileOpt,
+    ProfileOpt,
+    RateOpt,
+)
 
 emulate_app = typer.Typer(help="Both ends of the link, runnable without a drone.", no_args_is_help=True)
 
@@ -46,6 +56,8 @@ def emulate_onboard_cmd(
     distance: DistanceOpt = 10.0,
     key: KeyOpt = None,
     accept_unsigned: AcceptUnsignedOpt = False,
+    dialect: DialectOpt = None,
+    include: DialectIncludeOpt = None,
 ) -> None:
     """The onboard computer's end, flying a simulated multicopter: the tablet's DTT link (commands,
     telemetry, files) and ground-station links (HEARTBEAT, telemetry, commands, parameters,
@@ -57,7 +69,8 @@ def emulate_onboard_cmd(
 
     raise typer.Exit(emulate_onboard(OnboardOptions(listen, gcs or [], no_gcs, sysid, inbox, serve, home, speed,
                                                     rate, profile, distance, plugin or [], no_entry_points,
-                                                    telemetry_hz, orbit_hz, key, accept_unsigned, profile_file)))
+                                                    telemetry_hz, orbit_hz, key, accept_unsigned, profile_file,
+                                                    dialect, include or [])))
 
 
 @emulate_app.command("tablet")
@@ -76,6 +89,8 @@ def emulate_tablet_cmd(
     distance: DistanceOpt = 10.0,
     key: KeyOpt = None,
     accept_unsigned: AcceptUnsignedOpt = False,
+    dialect: DialectOpt = None,
+    include: DialectIncludeOpt = None,
 ) -> None:
     """The tablet's end: commands (take-off, land, hover, return, set-points, trajectories),
     files both ways and the vehicle's state, from a prompt (history, completion) or a --script.
@@ -86,4 +101,5 @@ def emulate_tablet_cmd(
 
     raise typer.Exit(emulate_tablet(TabletOptions(to, script, json_out, folder, rate, profile, distance,
                                                   target_sysid, key=key, accept_unsigned=accept_unsigned,
-                                                  profile_file=profile_file)))
+                                                  profile_file=profile_file, dialect=dialect,
+                                                  include_dirs=include or [])))

@@ -23,7 +23,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import Fail
-from .common import TABLET, err, hello, link_choice, parse_endpoint
+from .common import TABLET, err, link_choice, parse_endpoint
 
 SOURCES = ("synthetic", "openvr", "replay")
 HEADROOM = 0.85  # of the profile's capacity, for streaming poses
@@ -50,6 +50,8 @@ class DumpOptions:
     quiet: bool = False
     extra: dict[str, Any] = field(default_factory=dict)
     profile_file: Path | None = None
+    dialect: Path | None = None  # of the link (--to)
+    include_dirs: list[Path] = field(default_factory=list)
 
 
 def _check(o: DumpOptions) -> None:
@@ -128,8 +130,10 @@ class _Link:
 
     def __init__(self, o: DumpOptions) -> None:
         from ..hmd.stream import PoseStream
+        from .dialect import load_bindings
 
         self.spec = parse_endpoint(o.to or "", "udpout")
+        self.b = load_bindings(o.dialect, o.include_dirs)
         choice = link_choice(o.rate, o.profile or ("m100" if o.rate is None and o.profile_file is None else None),
                              o.distance, TABLET[0], o.profile_file)
         # Poses are newest-wins: a queue in the radio's buffer would only make them stale. Paced
@@ -137,7 +141,7 @@ class _Link:
         # it holds its two packets, 0.3 s on the M100 uplink); --rate is taken as given.
         self.pace = choice.pace_Bps * HEADROOM if choice.pace_Bps and o.rate is None else choice.pace_Bps
         self.quiet = choice.quiet
-        self.stream = PoseStream(max_hz=o.stream_hz)
+        self.stream = PoseStream(self.b, max_hz=o.stream_hz)
         self.loop = asyncio.new_event_loop()
         self.ready = threading.Event()
         self.error: str | None = None
@@ -156,15 +160,16 @@ class _Link:
         self.loop.run_until_complete(self._run())
 
     async def _run(self) -> None:
-        from ..ends.runtime import Runner
+        from ..ends.runtime import Runner, hello
         from ..link.transport import TransportError, make_transport
         from ..proto.endpoint import Endpoint
 
         try:
             transport = make_transport(self.spec)
-            ep = Endpoint(*TABLET, mtu=transport.mtu, rate_Bps=self.pace, accept_commands=False, unsolicited=False)
+            ep = Endpoint(self.b, *TABLET, mtu=transport.mtu, rate_Bps=self.pace, accept_commands=False,
+                          unsolicited=False)
             ep.add_stream(self.stream)
-            self.runner = Runner(ep, transport, quiet=self.quiet, hello=hello(TABLET[0], self.spec))
+            self.runner = Runner(ep, transport, quiet=self.quiet, hello=hello(TABLET[0], self.spec, self.b))
             await self.runner.start()
         except (TransportError, OSError) as e:
             self.error = f"cannot open {self.spec}: {e}"

@@ -6,7 +6,7 @@ from typing import Annotated
 
 import typer
 
-from .options import DistanceOpt, ProfileFileOpt, ProfileOpt, RateOpt
+from .options import DialectIncludeOpt, DialectOpt, DistanceOpt, ProfileFileOpt, ProfileOpt, RateOpt
 
 hmd_app = typer.Typer(help="VR headset and controller pose streams: record, replay, stream to the drone.",
                       no_args_is_help=True)
@@ -48,6 +48,8 @@ def hmd_dump_cmd(
     profile_file: ProfileFileOpt = None,
     distance: DistanceOpt = 10.0,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No summary on stderr.")] = False,
+    dialect: DialectOpt = None,
+    include: DialectIncludeOpt = None,
 ) -> None:
     """Record VR poses: JSONL to stdout by default, or CSV, a ROS 2 MCAP file or a ROS 1 bag;
     optionally streamed to the drone (--to; paced for --profile, m100 by default). Ctrl-C
@@ -59,7 +61,7 @@ def hmd_dump_cmd(
 
     raise typer.Exit(dump(DumpOptions(source, file, rate_hmd, rate_controllers, duration, fmt, output, frame,
                                       parent_frame, seed, speed, to, rate, profile, distance, stream_hz, quiet,
-                                      profile_file=profile_file)))
+                                      profile_file=profile_file, dialect=dialect, include_dirs=include or [])))
 
 
 @hmd_app.command("pulse")

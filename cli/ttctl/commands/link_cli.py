@@ -8,7 +8,7 @@ from typing import Annotated
 
 import typer
 
-from .options import ProfileFileOpt
+from .options import DialectIncludeOpt, DialectOpt, ProfileFileOpt
 
 link_app = typer.Typer(help="The emulated DJI link between processes, and link profiles fitted from measurements.",
                        no_args_is_help=True)
@@ -49,6 +49,8 @@ def link_relay(
                                                                       "either way, for SECONDS from START seconds "
                                                                       "after the relay starts (repeatable).",
                                                      show_default=False)] = None,
+    dialect: DialectOpt = None,
+    include: DialectIncludeOpt = None,
 ) -> None:
     """The emulated DJI radio link, as a process between the two ends, in real time.
 
@@ -57,6 +59,8 @@ def link_relay(
     or reordered as asked. Packets from --to go through the downlink model to the address last heard
     on --listen. Datagrams over the profile's MTU (100 bytes) are dropped, as DJI refuses them.
     A stats line goes to stderr every --stats-interval seconds, and a last one on SIGINT/SIGTERM (exit 0).
+    The relay carries packets, whatever they hold; it learns who is behind an address only from valid
+    frames of the --dialect (so strangers cannot divert the link).
 
     Example, three shells:
     ttctl link relay --listen udp:127.0.0.1:14550 --to udp:127.0.0.1:14560 --loss 0.1
@@ -66,7 +70,7 @@ def link_relay(
     from .relay import RelayOptions, relay
 
     code = relay(RelayOptions(listen, to, profile, distance, loss, loss_model, corrupt, duplicate, reorder, seed,
-                              rate, stats_interval, outage or [], profile_file, burst_mean))
+                              rate, stats_interval, outage or [], profile_file, burst_mean, dialect, include or []))
     raise typer.Exit(code)
 
 

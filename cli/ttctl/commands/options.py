@@ -26,3 +26,10 @@ KeyOpt = Annotated[Path | None, typer.Option("--key", help="Sign the DTT link's 
 AcceptUnsignedOpt = Annotated[bool, typer.Option("--accept-unsigned", help="With --key: accept unsigned frames "
                                                                           "too.")]
 PLOT_EXTRA = "needs the plot extra: pip install 'ttctl\\[plot]'"  # \\[ keeps rich from reading a style tag
+DialectOpt = Annotated[Path | None, typer.Option(
+    "--dialect", envvar="TTCTL_DIALECT", metavar="FILE.xml", show_default=False,
+    help="The dialect on the link: yours, which includes ttapi.xml (its Python bindings are generated on first "
+         "use and cached); default ttctl's ttapi. Set $TTCTL_DIALECT once instead.")]
+DialectIncludeOpt = Annotated[list[Path] | None, typer.Option(
+    "-I", "--include-dir", envvar="TTCTL_INCLUDE", metavar="DIR", show_default=False,
+    help="Extra directory to search for the --dialect's <include> files (repeatable; $TTCTL_INCLUDE).")]

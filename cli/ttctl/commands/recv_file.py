@@ -7,7 +7,7 @@ import asyncio
 import json
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -18,7 +18,6 @@ from .common import (
     Signals,
     check_id,
     err,
-    hello,
     link_choice,
     load_signing,
     oversize_note,
@@ -27,6 +26,7 @@ from .common import (
     tick,
     who,
 )
+from .dialect import load_bindings
 
 
 @dataclass
@@ -47,6 +47,8 @@ class RecvOptions:
     key: Path | None = None
     accept_unsigned: bool = False
     profile_file: Path | None = None
+    dialect: Path | None = None
+    include_dirs: list[Path] = field(default_factory=list)
 
 
 def recv_file(o: RecvOptions) -> int:
@@ -58,7 +60,8 @@ def recv_file(o: RecvOptions) -> int:
     if o.count is not None and o.count < 1:
         raise Fail("--count must be at least 1")
     link = link_choice(o.rate, o.profile, o.distance, o.sysid, o.profile_file)
-    signing = load_signing(o.key, o.accept_unsigned)
+    b = load_bindings(o.dialect, o.include_dirs)
+    signing = load_signing(o.key, o.accept_unsigned, b)
     q = Quota(overwrite=o.overwrite)
     if o.max_file is not None:
         if o.max_file < 0:
@@ -76,14 +79,14 @@ def recv_file(o: RecvOptions) -> int:
     if o.serve is not None and not o.serve.is_dir():
         raise Fail(f"--serve {o.serve} is not a directory")
     try:
-        return asyncio.run(_recv(o, spec, link, store, signing))
+        return asyncio.run(_recv(o, b, spec, link, store, signing))
     except KeyboardInterrupt:  # before the signal handlers were in place
         err("stopped")
         return 0
 
 
-async def _recv(o: RecvOptions, spec: Any, link: LinkChoice, store: Any, signing: Any) -> int:
-    from ..ends.runtime import Runner
+async def _recv(o: RecvOptions, b: Any, spec: Any, link: LinkChoice, store: Any, signing: Any) -> int:
+    from ..ends.runtime import Runner, hello, unknown_note
     from ..link.transport import addr_text, make_transport
     from ..proto.endpoint import Endpoint
     from ..proto.storage import StorageError
@@ -102,6 +105,11 @@ async def _recv(o: RecvOptions, spec: Any, link: LinkChoice, store: Any, signing
         nonlocal completed
         if what == "link-refused":
             err(f"ignoring {addr_text(t[0])}: {t[1]} (the same --key at both ends?)")
+            return
+        if what == "unknown-message":
+            err(unknown_note(b, t))
+            return
+        if not what.startswith("file-"):
             return
         peer = who(t.key)
         name = t.name or "?"
@@ -129,9 +137,9 @@ async def _recv(o: RecvOptions, spec: Any, link: LinkChoice, store: Any, signing
         wake.set()
 
     transport = make_transport(spec, log=lambda text: err(f"{spec.kind}: {text}"))
-    ep = Endpoint(o.sysid, o.compid, mtu=transport.mtu, rate_Bps=link.pace_Bps, receive_dir=store,
+    ep = Endpoint(b, o.sysid, o.compid, mtu=transport.mtu, rate_Bps=link.pace_Bps, receive_dir=store,
                   serve_dir=str(o.serve) if o.serve is not None else None, on_event=on_event, signing=signing)
-    runner = Runner(ep, transport, quiet=link.quiet, hello=hello(o.sysid, spec))
+    runner = Runner(ep, transport, quiet=link.quiet, hello=hello(o.sysid, spec, b))
     await start(runner)  # the port first: a refusal leaves no directory behind
     try:
         store.prepare()

@@ -33,6 +33,8 @@ class RelayOptions:
     outages: list[str] = field(default_factory=list)  # START:SECONDS, from the relay's start
     profile_file: Path | None = None
     burst_mean: float | None = None  # None: the profile's
+    dialect: Path | None = None  # whose frames prove who is behind an address
+    include_dirs: list[Path] = field(default_factory=list)
 
 
 def _outage(text: str) -> tuple[float, float]:
@@ -46,10 +48,12 @@ def _outage(text: str) -> tuple[float, float]:
 
 
 class FrameCheck:
-    """Who is behind a UDP source, judged only by valid MAVLink frames: one packet receiver per
-    source (so packets from two sources never mix), the least recently heard forgotten first."""
+    """Who is behind a UDP source, judged only by valid MAVLink frames of the link's dialect: one
+    packet receiver per source (so packets from two sources never mix), the least recently heard
+    forgotten first."""
 
-    def __init__(self, limit: int = 64) -> None:
+    def __init__(self, bindings: Any, limit: int = 64) -> None:
+        self.b = bindings
         self.limit = limit
         self._rxs: OrderedDict[Hashable, Any] = OrderedDict()
 
@@ -58,7 +62,7 @@ class FrameCheck:
 
         rx = self._rxs.get(source)
         if rx is None:
-            rx = self._rxs[source] = PacketReceiver()
+            rx = self._rxs[source] = PacketReceiver(self.b)
             if len(self._rxs) > self.limit:
                 self._rxs.popitem(last=False)
         else:
@@ -97,6 +101,9 @@ def relay(o: RelayOptions) -> int:
         raise Fail(f"{e} (the relay carries DTT packets: UDP only)") from None
     if _same_place(listen, to):
         raise Fail(f"--to {o.to} is the relay's own --listen address: it would relay to itself")
+    from .dialect import load_bindings
+
+    b = load_bindings(o.dialect, o.include_dirs)
     if o.distance < 0:
         raise Fail("--distance must not be negative")
     if o.stats_interval < 0:
@@ -111,7 +118,7 @@ def relay(o: RelayOptions) -> int:
                           duplicate=o.duplicate, reorder=o.reorder, outages=[_outage(text) for text in o.outages])
         imp.check()
         r = Relay(listen, to, prof, o.distance, imp, seed=o.seed, log=lambda text: err(f"relay: {text}"),
-                  validate=FrameCheck())
+                  validate=FrameCheck(b))
     except ProfileError as e:
         raise Fail(str(e)) from None
 

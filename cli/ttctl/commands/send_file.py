@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import asyncio
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -31,6 +31,7 @@ from .common import (
     tick,
     who,
 )
+from .dialect import load_bindings
 
 
 @dataclass
@@ -53,6 +54,8 @@ class SendOptions:
     key: Path | None = None
     accept_unsigned: bool = False
     profile_file: Path | None = None
+    dialect: Path | None = None
+    include_dirs: list[Path] = field(default_factory=list)
 
 
 @dataclass
@@ -81,15 +84,14 @@ def _send_file(o: SendOptions) -> int:
     if o.timeout <= 0:
         raise Fail("--timeout must be positive")
     link = link_choice(o.rate, o.profile, o.distance, o.sysid, o.profile_file)
-    load_signing(o.key, o.accept_unsigned)  # a bad --key is refused before anything starts
-    if o.to is not None:
-        if o.dir is not None:
-            raise Fail("--dir is where --from downloads go; with --to, FILE is the file to send")
-        outcome = _upload_prepare(o, link)
-    else:
-        if o.name is not None or o.overwrite:
-            raise Fail("--name and --overwrite apply to sending (--to), not to --from")
-        outcome = _download_prepare(o, link)
+    if o.to is not None and o.dir is not None:
+        raise Fail("--dir is where --from downloads go; with --to, FILE is the file to send")
+    if o.to is None and (o.name is not None or o.overwrite):
+        raise Fail("--name and --overwrite apply to sending (--to), not to --from")
+    b = load_bindings(o.dialect, o.include_dirs)
+    signing = load_signing(o.key, o.accept_unsigned, b)  # a bad --key is refused before anything starts
+    side = _End(b, signing)
+    outcome = _upload_prepare(o, link, side) if o.to is not None else _download_prepare(o, link, side)
     if outcome.interrupted:
         return 130
     if o.as_json:
@@ -113,7 +115,13 @@ def _checked_name(name: str, what: str) -> str:
 
 # -- upload --------------------------------------------------------------------------------------
 
-def _upload_prepare(o: SendOptions, link: LinkChoice) -> Outcome:
+@dataclass
+class _End:
+    bindings: Any  # the link's dialect
+    signing: Any
+
+
+def _upload_prepare(o: SendOptions, link: LinkChoice, side: _End) -> Outcome:
     from ..proto.storage import FileSource, StorageError
 
     spec = parse_endpoint(o.to or "", "udpout")
@@ -123,23 +131,31 @@ def _upload_prepare(o: SendOptions, link: LinkChoice) -> Outcome:
     except StorageError as e:
         raise Fail(str(e)) from None
     try:
-        return asyncio.run(_upload(o, spec, link, src, name))
+        return asyncio.run(_upload(o, side, spec, link, src, name))
     finally:
         src.close()
 
 
-async def _open_end(o: SendOptions, spec: Any, link: LinkChoice, bar: Bar, **endpoint: Any) -> tuple[Any, Any]:
+async def _open_end(o: SendOptions, side: _End, spec: Any, link: LinkChoice, bar: Bar,
+                    **endpoint: Any) -> tuple[Any, Any]:
     """This end of a send-file or fetch: its endpoint and runner, started (Fail, with the bar
     stopped, if the transport cannot open)."""
-    from ..ends.runtime import Runner
+    from ..ends.runtime import Runner, unknown_note
     from ..link.transport import make_transport
     from ..proto.endpoint import Endpoint
     from ..proto.transfer import TransferConfig
 
+    given = endpoint.pop("on_event", None)
+
+    def on_event(what: str, obj: Any) -> None:
+        if what == "unknown-message":
+            bar.log(unknown_note(side.bindings, obj))
+        elif given is not None:
+            given(what, obj)
+
     transport = make_transport(spec, log=bar.log)
-    ep = Endpoint(o.sysid, o.compid, mtu=transport.mtu, rate_Bps=link.pace_Bps,
-                  config=TransferConfig(give_up_after=o.timeout), signing=load_signing(o.key, o.accept_unsigned),
-                  **endpoint)
+    ep = Endpoint(side.bindings, o.sysid, o.compid, mtu=transport.mtu, rate_Bps=link.pace_Bps,
+                  config=TransferConfig(give_up_after=o.timeout), signing=side.signing, on_event=on_event, **endpoint)
     runner = Runner(ep, transport, quiet=link.quiet)
     try:
         await start(runner)
@@ -149,12 +165,12 @@ async def _open_end(o: SendOptions, spec: Any, link: LinkChoice, bar: Bar, **end
     return ep, runner
 
 
-async def _upload(o: SendOptions, spec: Any, link: LinkChoice, src: Any, name: str) -> Outcome:
+async def _upload(o: SendOptions, side: _End, spec: Any, link: LinkChoice, src: Any, name: str) -> Outcome:
     loop = asyncio.get_running_loop()
     wake = asyncio.Event()
     target = (o.target_sysid, o.target_compid)
     bar = Bar(f"{name} → {who(target)}", src.size)
-    ep, runner = await _open_end(o, spec, link, bar)
+    ep, runner = await _open_end(o, side, spec, link, bar)
     transport = runner.transport
     sigs = Signals(loop, wake)
     sender = None
@@ -220,7 +236,7 @@ async def _upload(o: SendOptions, spec: Any, link: LinkChoice, src: Any, name: s
 
 # -- download ------------------------------------------------------------------------------------
 
-def _download_prepare(o: SendOptions, link: LinkChoice) -> Outcome:
+def _download_prepare(o: SendOptions, link: LinkChoice, side: _End) -> Outcome:
     from ..proto.storage import ReceiveDir, StorageError
 
     spec = parse_endpoint(o.from_ or "", "udpout")
@@ -240,10 +256,10 @@ def _download_prepare(o: SendOptions, link: LinkChoice) -> Outcome:
         raise Fail(f"cannot fetch into {folder}: {e.reason}", 1) from None
     if local.exists() or local.is_symlink():
         raise Fail(f"{folder / name} exists here: remove it first, or fetch into another --dir", 1)
-    return asyncio.run(_download(o, spec, link, store, name))
+    return asyncio.run(_download(o, side, spec, link, store, name))
 
 
-async def _download(o: SendOptions, spec: Any, link: LinkChoice, store: Any, name: str) -> Outcome:
+async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, store: Any, name: str) -> Outcome:
     from ..proto.storage import StorageError
     from ..proto.transfer import result_name
 
@@ -268,7 +284,7 @@ async def _download(o: SendOptions, spec: Any, link: LinkChoice, store: Any, nam
         wake.set()
 
     bar = Bar(f"{name} ← {peer}", 0)
-    ep, runner = await _open_end(o, spec, link, bar, receive_dir=store, on_event=on_event, unsolicited=False)
+    ep, runner = await _open_end(o, side, spec, link, bar, receive_dir=store, on_event=on_event, unsolicited=False)
     transport = runner.transport
     try:
         store.prepare()

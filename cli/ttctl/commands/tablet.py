@@ -5,12 +5,13 @@ from __future__ import annotations
 import asyncio
 import json
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from ..errors import Fail
 from .common import ONBOARD, Signals, err, link_choice, load_signing, parse_endpoint
+from .dialect import load_bindings
 
 HELP = ("takeoff [ALT] | land | hover | return | goto N E ALT | move DN DE DALT | fly FILE | send FILE | "
         "fetch NAME | wait SECONDS | wait until FIELD OP VALUE [timeout S] | status | watch [SECONDS] | quit")
@@ -30,6 +31,9 @@ class TabletOptions:
     key: Path | None = None
     accept_unsigned: bool = False
     profile_file: Path | None = None
+    dialect: Path | None = None
+    include_dirs: list[Path] = field(default_factory=list)
+    plugins: list[str] = field(default_factory=list)
 
 
 def _prompt_step(line: str) -> Any:
@@ -68,6 +72,7 @@ def emulate_tablet(o: TabletOptions) -> int:
 
     spec = parse_endpoint(o.to, "udpout")
     link = link_choice(o.rate, o.profile, o.distance, 255, o.profile_file)
+    b = load_bindings(o.dialect, o.include_dirs)
     steps = None
     if o.script is not None:
         try:
@@ -79,12 +84,12 @@ def emulate_tablet(o: TabletOptions) -> int:
         except StepError as e:
             raise Fail(f"--script {o.script}: {e}") from None
     try:
-        return asyncio.run(_run(o, spec, link, steps))
+        return asyncio.run(_run(o, b, spec, link, steps))
     except KeyboardInterrupt:
         return 130
 
 
-async def _run(o: TabletOptions, spec: Any, link: Any, steps: Any) -> int:
+async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any) -> int:
     from ..ends.tablet.session import TabletSession
     from ..ends.tablet.steps import StepError, run_step
     from ..link.transport import TransportError
@@ -99,8 +104,8 @@ async def _run(o: TabletOptions, spec: Any, link: Any, steps: Any) -> int:
     loop = asyncio.get_running_loop()
     wake = asyncio.Event()
     sigs = Signals(loop, wake)
-    s = TabletSession(spec, (o.target_sysid, ONBOARD[1]), rate_Bps=link.pace_Bps, inbox=o.dir, on_event=event,
-                      log=err, signing=load_signing(o.key, o.accept_unsigned))
+    s = TabletSession(b, spec, (o.target_sysid, ONBOARD[1]), rate_Bps=link.pace_Bps, inbox=o.dir, on_event=event,
+                      log=err, signing=load_signing(o.key, o.accept_unsigned, b))
     try:
         try:
             await s.start()

@@ -387,6 +387,12 @@ class _Loader:
         return df
 
 
+def resolve_include(includer: str, name: str, include_dirs: list[str]) -> str | None:
+    """Where `<include>name</include>` in the file `includer` leads (a path), or None: the rule
+    the loader follows, for a caller that checks that an earlier resolution still holds."""
+    return _Loader(include_dirs, Reporter(), False).resolve(includer, name)
+
+
 def _short_dir(d: str) -> str:
     from .diagnostics import display_path
 

@@ -1,10 +1,14 @@
-"""ttctl's plugin system: handlers bound to message classes, several per msgid.
+"""ttctl's plugin system: handlers bound to messages, several per msgid.
 
-A plugin is a class deriving from Plugin whose methods are marked with @handles(MsgClass, ...).
-`ttctl gen` writes a skeleton of one (python/handlers/<dialect>_onboard.py). The onboard end
-loads plugin modules, instantiates their Plugin classes, and dispatches every received
-message to every handler bound to its msgid, in registration order. A handler that raises is
-reported and does not stop the others.
+A plugin is a class deriving from Plugin whose methods are marked with @handles(...): message
+classes of the generated bindings (`@handles(m.KrMotorControl)`), or MAVLink names
+(`@handles("KR_MOTOR_CONTROL")`). `ttctl gen` writes a skeleton of one
+(python/handlers/<dialect>_onboard.py). An end (onboard or tablet) loads plugin modules,
+instantiates their Plugin classes, checks every handled message against the dialect it speaks
+(a message it does not know, or knows with another definition, is refused before anything
+starts: such a handler could never fire), and dispatches every received message to every
+handler bound to its msgid, in registration order. A handler that raises is reported and does
+not stop the others.
 """
 
 from __future__ import annotations
@@ -16,20 +20,25 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any, TypeVar
 
+from ..wire.bindings import Bindings
+
 Handler = Callable[[Any, "Context"], None]
 
 
 class Context:
-    """What a handler gets besides the message: a way to answer the tablet (`send`) and to tell
-    the ground stations (`send_gcs`), to log, to run something every so often (`every(seconds,
-    fn)`), the vehicle (`vehicle.snapshot()` for its state) when the end has one, and `shared`,
-    a dict plugins read each other's results from (the orbit camera puts its latest `Camera`
-    under "orbit_camera")."""
+    """What a handler gets besides the message: a way to send any message of the dialect to the
+    other end of the link (`send`: the onboard end answers the tablet, the tablet's plugins talk to
+    the vehicle) and to tell the ground stations (`send_gcs`, onboard), to log, to run something
+    every so often (`every(seconds, fn)`), the dialect itself (`dialect`: its message classes and
+    enums, `ctx.dialect.MyPong(...)`), the vehicle (`vehicle.snapshot()` for its state) when the
+    end has one, and `shared`, a dict plugins read each other's results from (the orbit camera
+    puts its latest `Camera` under "orbit_camera")."""
 
-    def __init__(self, send: Callable[[Any], None] | None = None, log: Callable[[str], None] | None = None,
+    def __init__(self, send: Callable[..., None] | None = None, log: Callable[[str], None] | None = None,
                  sysid: int = 1, compid: int = 240, vehicle: Any = None,
                  every: Callable[[float, Callable[[], None]], None] | None = None,
-                 send_gcs: Callable[[Any], None] | None = None) -> None:
+                 send_gcs: Callable[[Any], None] | None = None, dialect: Bindings | None = None) -> None:
+        self.dialect: Any = dialect
         self._send = send
         self._send_gcs = send_gcs
         self._log = log
@@ -48,16 +57,30 @@ class Context:
             raise ValueError("every() wants a positive number of seconds")
         self._every(seconds, fn)
 
-    def send(self, msg: Any) -> None:
+    def send(self, msg: Any, urgent: bool = False) -> None:
+        """Queue `msg` for the other end of the link: with telemetry (ahead of file data), or
+        with `urgent` ahead of telemetry too, as commands and acks go. ValueError for a message
+        the link's dialect lacks."""
         if self._send is None:
             raise RuntimeError("this context cannot send")
-        self._send(msg)
+        self._check(msg)
+        self._send(msg, urgent)
 
     def send_gcs(self, msg: Any) -> None:
         """Send to every ground station (as the autopilot component)."""
         if self._send_gcs is None:
             raise RuntimeError("this context has no ground-station link")
+        self._check(msg)
         self._send_gcs(msg)
+
+    def _check(self, msg: Any) -> None:
+        """A message the link's dialect lacks (or defines otherwise) would be refused by every
+        peer that speaks it: say so to the plugin now (ValueError), not by silence later."""
+        if self.dialect is None:
+            return
+        problem = mismatch(self.dialect, type(msg))
+        if problem:
+            raise ValueError(problem)
 
     def log(self, text: str) -> None:
         self.logged.append(text)
@@ -68,16 +91,38 @@ class Context:
 F = TypeVar("F", bound=Callable[..., None])
 
 
-def handles(*classes: type) -> Callable[[F], F]:
-    """Mark a plugin method as the handler of these message classes."""
-    if not classes:
-        raise TypeError("@handles needs at least one message class")
+class PluginError(Exception):
+    pass
+
+
+def handles(*messages: type | str) -> Callable[[F], F]:
+    """Mark a plugin method as the handler of these messages: generated message classes, or
+    MAVLink message names ("KR_MOTOR_CONTROL")."""
+    if not messages:
+        raise TypeError("@handles needs at least one message class or name")
+    for m in messages:
+        if not isinstance(m, str) and not isinstance(getattr(m, "MSG_ID", None), int):
+            raise TypeError(f"@handles takes message classes or names, not {m!r}")
 
     def mark(fn: F) -> F:
-        fn.__ttctl_handles__ = tuple(classes)  # type: ignore[attr-defined]
+        fn.__ttctl_handles__ = tuple(messages)  # type: ignore[attr-defined]
         return fn
 
     return mark
+
+
+def mismatch(dialect: Bindings, cls: Any) -> str | None:
+    """Why messages of class `cls` cannot travel on a link of `dialect`, or None."""
+    name = getattr(cls, "NAME", getattr(cls, "__name__", repr(cls)))
+    info = dialect.registry.get(getattr(cls, "MSG_ID", -1))
+    if info is None:
+        return (f"{name} (id {getattr(cls, 'MSG_ID', '?')}) is not in the dialect this end speaks "
+                f"({dialect.name}): start it with --dialect naming the dialect that defines it")
+    if info.crc_extra != getattr(cls, "CRC_EXTRA", None) or name != info.cls.NAME:
+        return (f"{name} (id {cls.MSG_ID}, CRC_EXTRA {getattr(cls, 'CRC_EXTRA', '?')}) is defined otherwise in "
+                f"the dialect this end speaks ({dialect.name}: {info.cls.NAME}, CRC_EXTRA {info.crc_extra}): "
+                "regenerate the bindings the plugin imports, or start the end with the plugin's dialect")
+    return None
 
 
 class Plugin:
@@ -89,10 +134,26 @@ class Plugin:
     def stop(self) -> None:
         pass
 
-    def handlers(self) -> list[tuple[int, Handler]]:
+    def handlers(self, dialect: Bindings | None = None) -> list[tuple[int, Handler]]:
+        """(msgid, bound method) per handled message. With `dialect`, names are looked up in it
+        and every message is checked against it (PluginError if one could never arrive)."""
         out: list[tuple[int, Handler]] = []
         for _, method in inspect.getmembers(self, predicate=inspect.ismethod):
-            for cls in getattr(method, "__ttctl_handles__", ()):
+            for m in getattr(method, "__ttctl_handles__", ()):
+                where = owner(method)
+                if isinstance(m, str):
+                    if dialect is None:
+                        raise PluginError(f"{where} handles {m} by name: it needs the end's dialect")
+                    try:
+                        cls: Any = dialect.message(m)
+                    except KeyError as e:
+                        raise PluginError(f"{where}: {e.args[0]}") from None
+                else:
+                    cls = m
+                    if dialect is not None:
+                        problem = mismatch(dialect, cls)
+                        if problem:
+                            raise PluginError(f"{where} handles {problem}")
                 out.append((cls.MSG_ID, method))
         return out
 
@@ -105,9 +166,12 @@ def owner(handler: Handler) -> str:
 
 
 class Dispatcher:
-    """msgid -> handlers, in registration order."""
+    """msgid -> handlers, in registration order. With `dialect`, plugins are checked against it
+    as they are added (Plugin.handlers)."""
 
-    def __init__(self, on_error: Callable[[Any, BaseException, str], None] | None = None) -> None:
+    def __init__(self, on_error: Callable[[Any, BaseException, str], None] | None = None,
+                 dialect: Bindings | None = None) -> None:
+        self.dialect = dialect
         self._table: dict[int, list[Handler]] = {}
         self.on_error = on_error
         self.errors = 0
@@ -116,7 +180,7 @@ class Dispatcher:
         self._table.setdefault(msgid, []).append(handler)
 
     def add(self, plugin: Plugin) -> None:
-        for msgid, handler in plugin.handlers():
+        for msgid, handler in plugin.handlers(self.dialect):
             self.bind(msgid, handler)
 
     def handlers_for(self, msgid: int) -> list[Handler]:
@@ -133,10 +197,6 @@ class Dispatcher:
                 if self.on_error is not None:
                     self.on_error(msg, e, owner(h))
         return len(handlers)
-
-
-class PluginError(Exception):
-    pass
 
 
 def load_plugins(paths: Iterable[str | Path]) -> list[Plugin]:

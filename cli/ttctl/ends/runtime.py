@@ -19,7 +19,7 @@ from collections.abc import Callable, Hashable
 from dataclasses import dataclass
 from typing import Any
 
-from ..link.transport import Transport
+from ..link.transport import Transport, addr_text
 from ..proto.endpoint import Endpoint
 
 BURST = 16  # packets sent without yielding to the loop (receives and timers get their turn)
@@ -219,4 +219,22 @@ class Runner:
                 handle.cancel()
 
 
-__all__ = ["Runner", "RunnerStats"]
+def hello(sysid: int, spec: Any, b: Any) -> Callable[[], Any] | None:
+    """For an end that reaches out over UDP: a HEARTBEAT each second until the peer is heard,
+    so that a peer listening with udpin learns where to answer (`b`: the link's Bindings;
+    sysid 255 is the tablet, a ground station; anything else an onboard controller)."""
+    if spec.kind != "udpout":
+        return None
+    kind = b.MavType.MAV_TYPE_GCS if sysid == 255 else b.MavType.MAV_TYPE_ONBOARD_CONTROLLER
+    return lambda: b.Heartbeat(type=int(kind), autopilot=int(b.MavAutopilot.MAV_AUTOPILOT_INVALID))
+
+
+def unknown_note(b: Any, event: tuple[Any, int, tuple[int, int]]) -> str:
+    """The words for an "unknown-message" event: once per msgid, never an error."""
+    source, msgid, (sysid, compid) = event
+    where = f" at {addr_text(source)}" if source is not None else ""
+    return (f"{sysid}/{compid}{where} sends msgid {msgid}, which dialect {b.name} does not have: counted and "
+            "ignored (do both ends use the same --dialect?)")
+
+
+__all__ = ["Runner", "RunnerStats", "hello", "unknown_note"]

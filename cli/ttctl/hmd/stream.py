@@ -23,41 +23,40 @@ from collections import deque
 from dataclasses import dataclass
 from typing import Any
 
-import ttapi
-
+from ..wire.bindings import Bindings
+from ..wire.contract import TtVrButtons, TtVrDevice, TtVrPoseFlags, TtVrRole
 from .model import BUTTONS, ControllerSample, PoseSample, Sample
 
-T = ttapi
-KIND_CODES = {"hmd": T.TtVrDevice.TT_VR_DEVICE_HMD, "controller": T.TtVrDevice.TT_VR_DEVICE_CONTROLLER,
-              "tracker": T.TtVrDevice.TT_VR_DEVICE_TRACKER,
-              "base_station": T.TtVrDevice.TT_VR_DEVICE_TRACKING_REFERENCE}
-ROLE_CODES = {"none": T.TtVrRole.TT_VR_ROLE_NONE, "left": T.TtVrRole.TT_VR_ROLE_LEFT,
-              "right": T.TtVrRole.TT_VR_ROLE_RIGHT}
-BUTTON_BITS = {"trigger_click": T.TtVrButtons.TT_VR_BUTTONS_TRIGGER,
-               "pad_touched": T.TtVrButtons.TT_VR_BUTTONS_PAD_TOUCHED,
-               "pad_pressed": T.TtVrButtons.TT_VR_BUTTONS_PAD_PRESSED, "menu": T.TtVrButtons.TT_VR_BUTTONS_MENU,
-               "grip": T.TtVrButtons.TT_VR_BUTTONS_GRIP}
+KIND_CODES = {"hmd": TtVrDevice.TT_VR_DEVICE_HMD, "controller": TtVrDevice.TT_VR_DEVICE_CONTROLLER,
+              "tracker": TtVrDevice.TT_VR_DEVICE_TRACKER,
+              "base_station": TtVrDevice.TT_VR_DEVICE_TRACKING_REFERENCE}
+ROLE_CODES = {"none": TtVrRole.TT_VR_ROLE_NONE, "left": TtVrRole.TT_VR_ROLE_LEFT,
+              "right": TtVrRole.TT_VR_ROLE_RIGHT}
+BUTTON_BITS = {"trigger_click": TtVrButtons.TT_VR_BUTTONS_TRIGGER,
+               "pad_touched": TtVrButtons.TT_VR_BUTTONS_PAD_TOUCHED,
+               "pad_pressed": TtVrButtons.TT_VR_BUTTONS_PAD_PRESSED, "menu": TtVrButtons.TT_VR_BUTTONS_MENU,
+               "grip": TtVrButtons.TT_VR_BUTTONS_GRIP}
 WEIGHT = {"hmd": 1.0, "controller": 2.0, "tracker": 2.0}  # relative interval: the headset most often
 STATIC_INTERVAL = 5.0  # s between two sends of a base station's pose
 
 
-def pose_message(s: PoseSample) -> ttapi.TtVrPose:
-    flags = (T.TtVrPoseFlags.TT_VR_POSE_FLAGS_VALID if s.valid else 0) | \
-        (T.TtVrPoseFlags.TT_VR_POSE_FLAGS_CONNECTED if s.connected else 0)
-    return ttapi.TtVrPose(time_usec=int(s.t * 1e6), device=int(KIND_CODES[s.device.kind]),
-                          role=int(ROLE_CODES.get(s.device.role, 0)), index=s.device.index & 0xFF, flags=int(flags),
-                          position=list(s.position), orientation=list(s.orientation), velocity=list(s.velocity),
-                          angular_velocity=list(s.angular_velocity))
+def pose_message(b: Bindings, s: PoseSample) -> Any:
+    flags = (TtVrPoseFlags.TT_VR_POSE_FLAGS_VALID if s.valid else 0) | \
+        (TtVrPoseFlags.TT_VR_POSE_FLAGS_CONNECTED if s.connected else 0)
+    return b.TtVrPose(time_usec=int(s.t * 1e6), device=int(KIND_CODES[s.device.kind]),
+                      role=int(ROLE_CODES.get(s.device.role, 0)), index=s.device.index & 0xFF, flags=int(flags),
+                      position=list(s.position), orientation=list(s.orientation), velocity=list(s.velocity),
+                      angular_velocity=list(s.angular_velocity))
 
 
 def button_bits(s: ControllerSample) -> int:
     return sum(int(BUTTON_BITS[b]) for b in BUTTONS if s.buttons.get(b))
 
 
-def controller_message(s: ControllerSample) -> ttapi.TtVrController:
-    return ttapi.TtVrController(time_usec=int(s.t * 1e6), packet_num=s.packet & 0xFFFFFFFF,
-                                index=s.device.index & 0xFF, role=int(ROLE_CODES.get(s.device.role, 0)),
-                                trigger=s.trigger, pad_x=s.pad_x, pad_y=s.pad_y, buttons=button_bits(s))
+def controller_message(b: Bindings, s: ControllerSample) -> Any:
+    return b.TtVrController(time_usec=int(s.t * 1e6), packet_num=s.packet & 0xFFFFFFFF,
+                            index=s.device.index & 0xFF, role=int(ROLE_CODES.get(s.device.role, 0)),
+                            trigger=s.trigger, pad_x=s.pad_x, pad_y=s.pad_y, buttons=button_bits(s))
 
 
 @dataclass
@@ -85,9 +84,10 @@ class _Slot:
 class PoseStream:
     """Newest-wins pose streaming, pulled by the link's scheduler (see the module's docstring)."""
 
-    def __init__(self, max_hz: float = 30.0) -> None:
+    def __init__(self, bindings: Bindings, max_hz: float = 30.0) -> None:
         if not max_hz > 0:
             raise ValueError("max_hz must be positive")
+        self.b = bindings
         self.min_interval = 1.0 / max_hz
         self.stats = StreamStats()
         self._slots: dict[tuple[str, int], _Slot] = {}
@@ -137,7 +137,7 @@ class PoseStream:
             s = self._buttons.popleft()
             self.stats.sent += 1
             self.stats.buttons += 1
-            return controller_message(s)
+            return controller_message(self.b, s)
         best: _Slot | None = None
         for slot in self._slots.values():
             if slot.pending is not None and now >= slot.last_sent + slot.interval and \
@@ -150,4 +150,4 @@ class PoseStream:
         best.last_sent = now
         best.virtual += best.weight
         self.stats.sent += 1
-        return pose_message(held) if isinstance(held, PoseSample) else controller_message(held)
+        return pose_message(self.b, held) if isinstance(held, PoseSample) else controller_message(self.b, held)

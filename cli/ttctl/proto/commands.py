@@ -19,16 +19,17 @@ import time
 from collections import OrderedDict
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any
 
-import ttapi
-from ttapi import TtResult
+from ..wire.bindings import Bindings
+from ..wire.contract import TtResult
 
 FINAL_OK = {TtResult.TT_RESULT_ACCEPTED, TtResult.TT_RESULT_IN_PROGRESS, TtResult.TT_RESULT_DONE}
 
 
 @dataclass
 class Command:
-    msg: ttapi.TtActionCommand
+    msg: Any  # the dialect's TtActionCommand
     target: tuple[int, int]
     retries: int = 3
     timeout: float = 1.5  # first wait for the ack; doubles per retry
@@ -38,7 +39,7 @@ class Command:
     submitted_at: float = 0.0
     sent_at: list[float] = field(default_factory=list)
     acked_at: float | None = None
-    ack: ttapi.TtCommandAck | None = None
+    ack: Any = None  # the TtCommandAck that ended it
     error: str | None = None
     _due: float = 0.0
     _wait: float = 0.0
@@ -85,8 +86,8 @@ class CommandClient:
         self.pending[cmd.id] = cmd
         return cmd
 
-    def control(self, now: float) -> list[ttapi.Message]:
-        out: list[ttapi.Message] = []
+    def control(self, now: float) -> list[Any]:
+        out: list[Any] = []
         for cmd in list(self.pending.values()):
             if now < cmd._due:
                 continue
@@ -99,7 +100,7 @@ class CommandClient:
             out.append(cmd.msg)
         return out
 
-    def on_ack(self, now: float, ack: ttapi.TtCommandAck) -> Command | None:
+    def on_ack(self, now: float, ack: Any) -> Command | None:
         if (ack.target_system, ack.target_component) not in ((self.sysid, self.compid), (self.sysid, 0), (0, 0)):
             return None
         cmd = self.pending.get(ack.command_id)
@@ -134,21 +135,23 @@ class CommandClient:
         return min((c._due for c in self.pending.values()), default=None)
 
 
-Action = Callable[[ttapi.TtActionCommand], int]
+Action = Callable[[Any], int]
 """Runs an action; returns a TtResult value."""
 
 
 class CommandServer:
-    def __init__(self, sysid: int, compid: int, action: Action | None = None, memory: int = 512) -> None:
+    def __init__(self, bindings: Bindings, sysid: int, compid: int, action: Action | None = None,
+                 memory: int = 512) -> None:
+        self.b = bindings
         self.sysid = sysid
         self.compid = compid
         self.action = action or (lambda msg: int(TtResult.TT_RESULT_ACCEPTED))
         self.memory = memory
-        self.done: OrderedDict[tuple[int, int, int, int], ttapi.TtCommandAck] = OrderedDict()
+        self.done: OrderedDict[tuple[int, int, int, int], Any] = OrderedDict()
         self.executed = 0
         self.duplicates = 0
 
-    def on_command(self, msg: ttapi.TtActionCommand) -> ttapi.TtCommandAck | None:
+    def on_command(self, msg: Any) -> Any:
         if msg.target_system not in (self.sysid, 0) or msg.target_component not in (self.compid, 0):
             return None
         key = (msg.get_srcSystem(), msg.get_srcComponent(), msg.command_id, msg.time_usec)
@@ -162,8 +165,8 @@ class CommandServer:
         except Exception:
             result = int(TtResult.TT_RESULT_FAILED)
         self.executed += 1
-        ack = ttapi.TtCommandAck(target_system=key[0], target_component=key[1], command_id=msg.command_id,
-                                 action=msg.action, result=result, progress=100 if result != 1 else 0)
+        ack = self.b.TtCommandAck(target_system=key[0], target_component=key[1], command_id=msg.command_id,
+                                  action=msg.action, result=result, progress=100 if result != 1 else 0)
         self.done[key] = ack
         if len(self.done) > self.memory:
             self.done.popitem(last=False)

@@ -18,9 +18,8 @@ from collections.abc import Callable, Hashable
 from pathlib import Path
 from typing import Any
 
-import ttapi
-from ttapi import TtFileResult as R
-
+from ..wire.bindings import Bindings
+from ..wire.contract import TtFileResult as R
 from ..wire.packets import PacketReceiver
 from .commands import Command, CommandClient, CommandServer
 from .names import Refused, check_name, encoded
@@ -39,8 +38,9 @@ MAX_SOURCES = 64  # packet receivers kept for distinct sources (the least recent
 class Request:
     """A download we asked for."""
 
-    def __init__(self, request_id: int, name: str, target: tuple[int, int], now: float,
+    def __init__(self, bindings: Bindings, request_id: int, name: str, target: tuple[int, int], now: float,
                  config: TransferConfig) -> None:
+        self.b = bindings
         self.id = request_id
         self.name = name
         self.raw = encoded(name)
@@ -57,10 +57,10 @@ class Request:
         self._refusal: tuple[str, float] | None = None
         self.key: tuple[int, int, int] | None = None
 
-    def messages(self) -> list[ttapi.Message]:
-        return [ttapi.TtFileRequest(target_system=self.target[0], target_component=self.target[1],
-                                    request_id=self.id, name_length=len(self.raw), name_offset=off,
-                                    name=self.raw[off:off + REQUEST_PART])
+    def messages(self) -> list[Any]:
+        return [self.b.TtFileRequest(target_system=self.target[0], target_component=self.target[1],
+                                     request_id=self.id, name_length=len(self.raw), name_offset=off,
+                                     name=self.raw[off:off + REQUEST_PART])
                 for off in range(0, len(self.raw), REQUEST_PART)]
 
 
@@ -72,23 +72,28 @@ class _ServedRequest:
 
 
 class Endpoint:
-    def __init__(self, sysid: int, compid: int, *, mtu: int = 100, rate_Bps: float | None = None,
+    """`bindings`: the dialect on the link (its parser decodes what arrives; its classes are
+    what the runtime makes). `signing`: MAVLink 2 signing (a Signing of any package: frames are
+    signed against this dialect's registry)."""
+
+    def __init__(self, bindings: Bindings, sysid: int, compid: int, *, mtu: int = 100, rate_Bps: float | None = None,
                  receive_dir: ReceiveDir | None = None, serve_dir: str | None = None,
-                 config: TransferConfig | None = None, signing: ttapi.Signing | None = None,
-                 action: Callable[[ttapi.TtActionCommand], int] | None = None,
+                 config: TransferConfig | None = None, signing: Any = None,
+                 action: Callable[[Any], int] | None = None,
                  on_message: Callable[[float, Any], None] | None = None,
                  on_event: Callable[[str, Any], None] | None = None, accept_commands: bool = True,
                  unsolicited: bool = True, rng: random.Random | None = None) -> None:
+        self.b = bindings
         self.sysid = sysid
         self.compid = compid
         self.cfg = config or TransferConfig()
         self.signing = signing
-        self.encoder = ttapi.Encoder(sysid, compid)  # unsigned: the scheduler signs frames as they leave
+        self.encoder = bindings.encoder(sysid, compid)  # unsigned: the scheduler signs frames as they leave
         self._rxs: OrderedDict[Hashable, PacketReceiver] = OrderedDict()
-        self._streams: OrderedDict[Hashable, ttapi.Parser] = OrderedDict()  # byte-stream links (TCP)
+        self._streams: OrderedDict[Hashable, Any] = OrderedDict()  # byte-stream links (TCP): parsers
         self._last_rx: dict[Hashable, float] = {}
-        self.scheduler = Scheduler(mtu, rate_Bps, sign=signing.sign if signing is not None else None)
-        self.receiver = (FileReceiver(receive_dir, sysid, compid, self.cfg, on_event=self._file_event,
+        self.scheduler = Scheduler(mtu, rate_Bps, sign=bindings.sign(signing) if signing is not None else None)
+        self.receiver = (FileReceiver(bindings, receive_dir, sysid, compid, self.cfg, on_event=self._file_event,
                                       unsolicited=unsolicited)
                          if receive_dir is not None else None)
         if self.receiver is not None and rate_Bps:
@@ -105,7 +110,7 @@ class Endpoint:
         # transfer, request and first command ids are random (seeded in simulations): never reused by accident
         self._rng = rng or random.SystemRandom()
         self.commands = CommandClient(sysid, compid, first_id=self._rng.randint(1, 65535))
-        self.server = CommandServer(sysid, compid, action) if accept_commands else None
+        self.server = CommandServer(bindings, sysid, compid, action) if accept_commands else None
         self.on_message = on_message
         self.on_event = on_event
         self.now = 0.0
@@ -113,6 +118,8 @@ class Endpoint:
         self.peers: dict[tuple[int, int], float] = {}  # who we heard from, when
         self._streams_out: list[Any] = []  # newest-wins sources (add_stream)
         self._refused_sources: set[Hashable] = set()  # reported once each (signing)
+        self.unknown = 0  # frames of messages this dialect lacks (the peer speaks another one)
+        self._unknown_told: set[int] = set()  # msgids reported (once each)
 
     # -- node interface -----------------------------------------------------------------------
     def receive(self, now: float, packet: bytes, source: Hashable = None) -> set[tuple[int, int]]:
@@ -121,7 +128,9 @@ class Endpoint:
         self.now = now
         rx = self._rxs.get(source)
         if rx is None:
-            rx = self._rxs[source] = PacketReceiver(signing=self.signing, on_bad=self._refused_by_signing(source))
+            rx = self._rxs[source] = PacketReceiver(self.b, signing=self.signing,
+                                                    on_bad=self._refused_by_signing(source),
+                                                    on_unknown=self._unknown_from(source))
             if len(self._rxs) > MAX_SOURCES:
                 old, _ = self._rxs.popitem(last=False)
                 self._last_rx.pop(old, None)
@@ -135,7 +144,7 @@ class Endpoint:
         self.now = now
         parser = self._streams.get(source)
         if parser is None:
-            parser = self._streams[source] = ttapi.Parser(signing=self.signing)
+            parser = self._streams[source] = self.b.parser(self.signing)
             if len(self._streams) > MAX_SOURCES:
                 self._streams.popitem(last=False)
         self._last_rx[source] = now
@@ -186,7 +195,7 @@ class Endpoint:
         return min(times) if times else None
 
     # -- what the user asks for ------------------------------------------------------------------
-    def send_message(self, msg: ttapi.Message, priority: int = TELEMETRY) -> None:
+    def send_message(self, msg: Any, priority: int = TELEMETRY) -> None:
         self.scheduler.send(self.encoder.encode(msg), priority)
 
     def send_file(self, path: str | Path, target: tuple[int, int], name: str | None = None,
@@ -195,7 +204,7 @@ class Endpoint:
         """Start sending a file (ValueError for a name no receiver would take, StorageError for
         a file that cannot be sent)."""
         src = source if source is not None else FileSource(path)
-        sender = FileSender(self._new_id, src, name or Path(path).name, target, self.cfg, request_id, overwrite,
+        sender = FileSender(self.b, self._new_id, src, name or Path(path).name, target, self.cfg, request_id, overwrite,
                             self.now, on_progress)
         sender.owns_source = source is None
         rate = self.scheduler.pacer.rate
@@ -213,12 +222,12 @@ class Endpoint:
         if self.receiver is None:
             raise ValueError("this end has no receive directory")
         rid = self._new_id()
-        req = Request(rid, name, target, self.now, self.cfg)
+        req = Request(self.b, rid, name, target, self.now, self.cfg)
         self.requests[rid] = req
         self.receiver.expect(target, rid, name)
         return req
 
-    def command(self, msg: ttapi.TtActionCommand, target: tuple[int, int], retries: int = 3,
+    def command(self, msg: Any, target: tuple[int, int], retries: int = 3,
                 timeout: float = 1.5, on_success: Callable[[Command], None] | None = None,
                 on_failure: Callable[[Command], None] | None = None) -> Command:
         return self.commands.submit(Command(msg, target, retries, timeout, on_success, on_failure), self.now)
@@ -308,6 +317,16 @@ class Endpoint:
                                              else "frames whose signatures do not verify"))
         return bad
 
+    def _unknown_from(self, source: Hashable) -> Callable[[int, int, int], None]:
+        """A frame of a message this dialect lacks: counted, and reported once per msgid as an
+        "unknown-message" event with (source, msgid, (sysid, compid)); never an error."""
+        def unknown(msgid: int, sysid: int, compid: int) -> None:
+            self.unknown += 1
+            if msgid not in self._unknown_told and len(self._unknown_told) < 256:
+                self._unknown_told.add(msgid)
+                self._event("unknown-message", (source, msgid, (sysid, compid)))
+        return unknown
+
     def _event(self, what: str, obj: Any) -> None:
         if self.on_event is not None:
             self.on_event(what, obj)
@@ -337,31 +356,32 @@ class Endpoint:
 
     def _handle(self, now: float, msg: Any) -> None:
         self.peers[(msg.get_srcSystem(), msg.get_srcComponent())] = now
-        if isinstance(msg, (ttapi.TtFileData, ttapi.TtFileDataWide)):
+        b = self.b
+        if isinstance(msg, (b.TtFileData, b.TtFileDataWide)):
             if self.receiver is not None:
-                self.receiver.on_data(now, msg, WIDE if isinstance(msg, ttapi.TtFileDataWide) else NARROW)
+                self.receiver.on_data(now, msg, WIDE if isinstance(msg, b.TtFileDataWide) else NARROW)
             return
         if not self._for_us(msg):
             self.ignored += 1
             return
-        if isinstance(msg, ttapi.TtFileOffer):
+        if isinstance(msg, b.TtFileOffer):
             self._on_offer(now, msg)
-        elif isinstance(msg, ttapi.TtFileStatus):
+        elif isinstance(msg, b.TtFileStatus):
             self._on_status(now, msg)
-        elif isinstance(msg, ttapi.TtFileReason):
+        elif isinstance(msg, b.TtFileReason):
             self._on_reason(now, msg)
-        elif isinstance(msg, ttapi.TtFileRequest):
+        elif isinstance(msg, b.TtFileRequest):
             self._on_request(now, msg)
-        elif isinstance(msg, ttapi.TtCommandAck):
+        elif isinstance(msg, b.TtCommandAck):
             self.commands.on_ack(now, msg)
-        elif isinstance(msg, ttapi.TtActionCommand) and self.server is not None:
+        elif isinstance(msg, b.TtActionCommand) and self.server is not None:
             ack = self.server.on_command(msg)
             if ack is not None:
                 self.scheduler.send(self.encoder.encode(ack), CONTROL)
         if self.on_message is not None:
             self.on_message(now, msg)
 
-    def _on_offer(self, now: float, msg: ttapi.TtFileOffer) -> None:
+    def _on_offer(self, now: float, msg: Any) -> None:
         if self.receiver is None:
             self.ignored += 1
             return
@@ -373,7 +393,7 @@ class Endpoint:
                 req.key = (src[0], src[1], msg.transfer_id)
         self.receiver.on_offer(now, msg)
 
-    def _on_status(self, now: float, msg: ttapi.TtFileStatus) -> None:
+    def _on_status(self, now: float, msg: Any) -> None:
         src = (msg.get_srcSystem(), msg.get_srcComponent())
         if msg.result in (R.TT_FILE_RESULT_NOT_FOUND, R.TT_FILE_RESULT_REQUEST_REFUSED):
             req = self.requests.get(msg.transfer_id)
@@ -392,7 +412,7 @@ class Endpoint:
                 self.senders.pop(msg.transfer_id, None)
                 self.senders[sender.id] = sender
 
-    def _on_reason(self, now: float, msg: ttapi.TtFileReason) -> None:
+    def _on_reason(self, now: float, msg: Any) -> None:
         src = (msg.get_srcSystem(), msg.get_srcComponent())
         req = self.requests.get(msg.transfer_id)
         if req is not None and req.target == src and not req.answered:
@@ -409,7 +429,7 @@ class Endpoint:
         req.error = req.reason or RESULT_TEXT.get(code, "refused")
         self._event("request-failed", req)
 
-    def _on_request(self, now: float, msg: ttapi.TtFileRequest) -> None:
+    def _on_request(self, now: float, msg: Any) -> None:
         if msg.request_id == 0:
             return
         src = (msg.get_srcSystem(), msg.get_srcComponent())
@@ -463,10 +483,10 @@ class Endpoint:
         return path, name
 
     def _refuse_request(self, src: tuple[int, int], request_id: int, result: R, reason: str) -> None:
-        why = ttapi.TtFileReason(target_system=src[0], target_component=src[1], transfer_id=request_id,
-                                 result=int(result), text=reason_fit(reason))
-        status = ttapi.TtFileStatus(target_system=src[0], target_component=src[1], transfer_id=request_id,
-                                    result=int(result))
+        why = self.b.TtFileReason(target_system=src[0], target_component=src[1], transfer_id=request_id,
+                                  result=int(result), text=reason_fit(reason))
+        status = self.b.TtFileStatus(target_system=src[0], target_component=src[1], transfer_id=request_id,
+                                     result=int(result))
         self.scheduler.send(self.encoder.encode(why), CONTROL, key=("request-reason", src, request_id))
         self.scheduler.send(self.encoder.encode(status), CONTROL, key=("request-status", src, request_id))
 

@@ -13,10 +13,11 @@ from __future__ import annotations
 
 from collections import OrderedDict
 from collections.abc import Callable
+from typing import Any
 
-import ttapi
-from ttapi import TtFileResult as R
-
+from ..wire.bindings import Bindings
+from ..wire.contract import TtFileFlags
+from ..wire.contract import TtFileResult as R
 from .names import SHA_LEN, Refused, check_name
 from .ranges import RangeSet
 from .storage import DiskFull, Partial, ReceiveDir, StorageError, partial_key
@@ -78,16 +79,17 @@ class Incoming:
 
     @property
     def overwrite(self) -> bool:
-        return bool(self.flags & ttapi.TtFileFlags.TT_FILE_FLAGS_OVERWRITE)
+        return bool(self.flags & TtFileFlags.TT_FILE_FLAGS_OVERWRITE)
 
 
 class FileReceiver:
     """Every incoming transfer of an endpoint; files land in `store`. `unsolicited=False` takes
     only files this end asked for (`expect()`), as a download does."""
 
-    def __init__(self, store: ReceiveDir, sysid: int, compid: int, config: TransferConfig | None = None,
-                 max_transfers: int = 8, on_event: Callable[[str, Incoming], None] | None = None,
-                 unsolicited: bool = True) -> None:
+    def __init__(self, bindings: Bindings, store: ReceiveDir, sysid: int, compid: int,
+                 config: TransferConfig | None = None, max_transfers: int = 8,
+                 on_event: Callable[[str, Incoming], None] | None = None, unsolicited: bool = True) -> None:
+        self.b = bindings
         self.store = store
         self.sysid = sysid
         self.compid = compid
@@ -110,7 +112,7 @@ class FileReceiver:
                 if t.group is not None and t.partial is not None and now - t.last_activity < self.cfg.live_window}
 
     # -- offers ---------------------------------------------------------------------------------
-    def on_offer(self, now: float, msg: ttapi.TtFileOffer) -> None:
+    def on_offer(self, now: float, msg: Any) -> None:
         if msg.transfer_id == 0 or msg.meta_length == 0:
             return
         key = (msg.get_srcSystem(), msg.get_srcComponent(), msg.transfer_id)
@@ -225,7 +227,7 @@ class FileReceiver:
         return None
 
     # -- data -----------------------------------------------------------------------------------
-    def on_data(self, now: float, msg: ttapi.TtFileData | ttapi.TtFileDataWide, cap: int) -> None:
+    def on_data(self, now: float, msg: Any, cap: int) -> None:
         key = (msg.get_srcSystem(), msg.get_srcComponent(), msg.transfer_id)
         t = self.transfers.get(key)
         if t is None:
@@ -356,7 +358,7 @@ class FileReceiver:
         t.status_due = now
 
     # -- statuses -------------------------------------------------------------------------------
-    def statuses(self, t: Incoming) -> list[ttapi.TtFileStatus]:
+    def statuses(self, t: Incoming) -> list[Any]:
         """One status, or a burst describing successive regions when there are more gaps than
         one status holds."""
         if t.partial is None:
@@ -379,24 +381,24 @@ class FileReceiver:
         return out
 
     def _status(self, t: Incoming, rc: int, region: int, re: int,
-                gaps: list[tuple[int, int]]) -> ttapi.TtFileStatus:
+                gaps: list[tuple[int, int]]) -> Any:
         flat = [x for gap in gaps for x in gap]
-        return ttapi.TtFileStatus(
+        return self.b.TtFileStatus(
             target_system=t.key[0], target_component=t.key[1], transfer_id=t.key[2], result=int(t.result),
             received_contiguous=rc, region_start=region, received_end=re, last_offset=t.last_offset,
             hold_ms=min(65535, int(1000 * (self.now - t.last_data))) if t.last_data is not None else 65535,
             range_count=len(gaps), meta_check=t.check, ranges=flat + [0] * (2 * MAX_RANGES - len(flat)))
 
-    def reason_message(self, t: Incoming) -> ttapi.TtFileReason:
-        return ttapi.TtFileReason(target_system=t.key[0], target_component=t.key[1], transfer_id=t.key[2],
+    def reason_message(self, t: Incoming) -> Any:
+        return self.b.TtFileReason(target_system=t.key[0], target_component=t.key[1], transfer_id=t.key[2],
                                   result=int(t.result), text=reason_fit(t.reason))
 
-    def control(self, now: float) -> list[tuple[ttapi.Message, object]]:
+    def control(self, now: float) -> list[tuple[Any, object]]:
         """Statuses due now (each after the reason for a refusal or failure), each with a key
         under which a newer one replaces it while it waits to be sent; forget silent transfers.
         Partial state is saved before the statuses that report it leave."""
         self.now = now
-        out: list[tuple[ttapi.Message, object]] = []
+        out: list[tuple[Any, object]] = []
         for t in list(self.transfers.values()):
             if now - t.last_activity >= self.cfg.idle_timeout:
                 self._close(t)
@@ -415,7 +417,7 @@ class FileReceiver:
                        and t.last_data is not None and now - t.last_data < self.cfg.status_interval)
             t.status_due = now + self.cfg.status_interval if flowing else None
         for key in self._unknown_due:
-            out.append((ttapi.TtFileStatus(target_system=key[0], target_component=key[1], transfer_id=key[2],
+            out.append((self.b.TtFileStatus(target_system=key[0], target_component=key[1], transfer_id=key[2],
                                            result=int(R.TT_FILE_RESULT_UNKNOWN_TRANSFER)), ("unknown", key)))
         self._unknown_due.clear()
         return out

@@ -11,9 +11,9 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-import ttapi
-from ttapi import TtFileResult as R
-
+from ..wire.bindings import Bindings
+from ..wire.contract import TtFileFlags
+from ..wire.contract import TtFileResult as R
 from .names import Refused, check_name, encoded
 from .ranges import RangeSet
 from .transfer import (
@@ -39,13 +39,14 @@ class FileSender:
     """One outgoing transfer. `new_id()` draws a fresh transfer id (the endpoint's, so that it
     is unique among its transfers); the transfer takes a new one when it starts again."""
 
-    def __init__(self, new_id: Callable[[], int], source: Any, name: str, target: tuple[int, int],
+    def __init__(self, bindings: Bindings, new_id: Callable[[], int], source: Any, name: str, target: tuple[int, int],
                  config: TransferConfig | None = None, request_id: int = 0, overwrite: bool = False,
                  now: float = 0.0, on_progress: Callable[[FileSender], None] | None = None) -> None:
         try:
             check_name(name)
         except Refused as e:
             raise ValueError(e.reason) from None
+        self.b = bindings
         self.new_id = new_id
         self.id = new_id()
         self.source = source
@@ -55,7 +56,7 @@ class FileSender:
         self.target = target
         self.cfg = config or TransferConfig()
         self.request_id = request_id
-        self.flags = int(ttapi.TtFileFlags.TT_FILE_FLAGS_OVERWRITE) if overwrite else 0
+        self.flags = int(TtFileFlags.TT_FILE_FLAGS_OVERWRITE) if overwrite else 0
         self.meta = source.sha256 + encoded(name)
         self.check = meta_check(self.meta)
         self.result: TransferResult | None = None
@@ -121,16 +122,16 @@ class FileSender:
         self._begin(now)
 
     # -- offers -------------------------------------------------------------------------------
-    def offer_messages(self) -> list[ttapi.Message]:
-        parts: list[ttapi.Message] = []
+    def offer_messages(self) -> list[Any]:
+        parts: list[Any] = []
         for off in range(0, len(self.meta), META_PART):
-            parts.append(ttapi.TtFileOffer(
+            parts.append(self.b.TtFileOffer(
                 target_system=self.target[0], target_component=self.target[1], transfer_id=self.id,
                 request_id=self.request_id, size=self.size, flags=self.flags, meta_length=len(self.meta),
                 meta_offset=off, meta=self.meta[off:off + META_PART]))
         return parts
 
-    def control(self, now: float) -> list[ttapi.Message]:
+    def control(self, now: float) -> list[Any]:
         """Offers due now (the first, retries, or a poll when the receiver has gone quiet)."""
         if self.done:
             return []
@@ -210,7 +211,7 @@ class FileSender:
             return self.mode  # hysteresis
         return better
 
-    def next_data(self, now: float, space: int) -> ttapi.Message | None:
+    def next_data(self, now: float, space: int) -> Any:
         if self.state != "sending":
             return None
         mode = self.mode
@@ -251,10 +252,10 @@ class FileSender:
             self.stats.data_started = now
         if mode == "wide":
             self.stats.wide_frames += 1
-            msg: ttapi.Message = ttapi.TtFileDataWide(transfer_id=self.id, offset=offset, data=data)
+            msg: Any = self.b.TtFileDataWide(transfer_id=self.id, offset=offset, data=data)
         else:
             self.stats.narrow_frames += 1
-            msg = ttapi.TtFileData(transfer_id=self.id, offset=offset, data=data)
+            msg = self.b.TtFileData(transfer_id=self.id, offset=offset, data=data)
         if self.cfg.frame_mode == "auto" and self.stats.narrow_frames >= self.cfg.probe_frames:
             self.mode = self._choose_mode()
         if not self.has_data(now) and self._probe_due is None:
@@ -291,7 +292,7 @@ class FileSender:
         self._sent = sent
 
     # -- answers ------------------------------------------------------------------------------
-    def on_reason(self, now: float, msg: ttapi.TtFileReason) -> None:
+    def on_reason(self, now: float, msg: Any) -> None:
         """The receiver's words for a refusal or failure (they come just before its status)."""
         if self.done or msg.transfer_id != self.id:
             return
@@ -303,7 +304,7 @@ class FileSender:
         if self._refusal is not None:
             self._refuse(now, self._refusal[0])
 
-    def on_status(self, now: float, msg: ttapi.TtFileStatus) -> None:
+    def on_status(self, now: float, msg: Any) -> None:
         if self.done or msg.transfer_id != self.id:
             return
         code = msg.result
@@ -368,7 +369,7 @@ class FileSender:
         if self.on_progress:
             self.on_progress(self)
 
-    def _rtt_from_echo(self, now: float, msg: ttapi.TtFileStatus) -> None:
+    def _rtt_from_echo(self, now: float, msg: Any) -> None:
         """A round-trip sample from the status's echo of the latest frame it saw (Karn: only
         frames sent once)."""
         sent = self._sends.get(msg.last_offset)
@@ -382,7 +383,7 @@ class FileSender:
         else:
             self.rtt = 0.8 * self.rtt + 0.2 * sample
 
-    def _apply_status(self, now: float, msg: ttapi.TtFileStatus) -> None:
+    def _apply_status(self, now: float, msg: Any) -> None:
         rc = min(msg.received_contiguous, self.size)
         region = max(rc, min(msg.region_start, self.size))
         re = max(region, min(msg.received_end, self.size))

@@ -29,8 +29,7 @@ import hashlib
 import math
 from dataclasses import dataclass, field
 
-from ttapi import TtFileResult as R
-
+from ..wire.contract import TtFileResult as R
 from .names import MAX_NAME_BYTES, SHA_LEN
 
 NARROW = 80  # file bytes in a TT_FILE_DATA frame (100 bytes: one packet)

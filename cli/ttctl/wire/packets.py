@@ -23,17 +23,11 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from typing import Any
 
-from ttapi.mavlink import (
-    INCOMPAT_SIGNED,
-    MAGIC,
-    REGISTRY,
-    SIGNATURE_LENGTH,
-    DecodeError,
-    Message,
-    MessageInfo,
-    Signing,
-    decode,
-)
+from .bindings import Bindings
+
+MAGIC = 0xFD
+INCOMPAT_SIGNED = 0x01
+SIGNATURE_LENGTH = 13
 
 DTT_MTU = 100
 
@@ -94,10 +88,11 @@ def packetize(frames: Iterable[bytes], mtu: int = DTT_MTU) -> list[bytes]:
 
 
 class ReceiverStats:
-    __slots__ = ("bad_frames", "carries_dropped", "frames", "packets", "rescans")
+    __slots__ = ("bad_frames", "carries_dropped", "frames", "packets", "rescans", "unknown")
 
     def __init__(self) -> None:
         self.packets = 0
+        self.unknown = 0  # whole frames of a message this dialect does not have (see PacketReceiver)
         self.frames = 0
         self.bad_frames = 0  # complete frames that failed CRC, signature or decoding
         self.carries_dropped = 0  # spanning frames whose continuation never came
@@ -110,11 +105,22 @@ class ReceiverStats:
 class PacketReceiver:
     """Frames out of DTT packets; see the module documentation."""
 
-    def __init__(self, registry: dict[int, MessageInfo] | None = None, signing: Signing | None = None,
-                 on_bad: Callable[[bytes, str], None] | None = None) -> None:
-        self.registry = REGISTRY if registry is None else registry
+    def __init__(self, bindings: Bindings, signing: Any = None,
+                 on_bad: Callable[[bytes, str], None] | None = None,
+                 on_unknown: Callable[[int, int, int], None] | None = None,
+                 registry: dict[int, Any] | None = None) -> None:
+        """`registry`: decode these messages instead of the dialect's (msgid -> MessageInfo of
+        the generated framing code: the benchmarks' other protocols)."""
+        self.registry = bindings.registry if registry is None else registry
+        self._decode_frame = bindings.mavlink.decode
+        self._decode_error = bindings.mavlink.DecodeError
         self.signing = signing
         self.on_bad = on_bad
+        # (msgid, sysid, compid) of a frame whose message the dialect does not know: its header
+        # is where the packing rule puts a frame (at the packet's start or right after a frame)
+        # and its length ends it at the packet's end or at the next magic byte. The scan goes on
+        # as before (the runtimes decide identically): this only counts and tells.
+        self.on_unknown = on_unknown
         self.stats = ReceiverStats()
         self._carry = b""  # a frame begun in an earlier packet, with its continuation so far
         self._origin = b""  # the part of the carry that came from its first packet
@@ -124,24 +130,24 @@ class PacketReceiver:
     def pending(self) -> int:
         return len(self._carry)
 
-    def feed(self, packet: bytes) -> list[Message]:
+    def feed(self, packet: bytes) -> list[Any]:
         """Messages completed by this packet."""
         self.stats.packets += 1
-        out: list[Message] = []
+        out: list[Any] = []
         if packet:  # DJI ignores 0-byte packets; so do we
             self._feed(packet, out)
         self.stats.frames += len(out)
         return out
 
-    def flush(self) -> list[Message]:
+    def flush(self) -> list[Any]:
         """The link went quiet: give up on a frame still waiting for its continuation and
         return what the packets taken for it hold on their own."""
-        out: list[Message] = []
+        out: list[Any] = []
         self._give_up(out)
         self.stats.frames += len(out)
         return out
 
-    def _feed(self, packet: bytes, out: list[Message]) -> None:
+    def _feed(self, packet: bytes, out: list[Any]) -> None:
         pos = 0
         if self._carry:
             buf = self._carry + packet
@@ -178,21 +184,21 @@ class PacketReceiver:
         total = self._total(packet, 0)
         return total is not None and total <= len(packet) and self._try(packet[:total], peek=True) is not None
 
-    def _try(self, frame: bytes, peek: bool = False) -> Message | None:
+    def _try(self, frame: bytes, peek: bool = False) -> Any:
         """The frame's message, or None. A `peek` leaves the signing's replay state alone: the
         frame is decoded for real when its packet is scanned."""
         try:
-            return decode(frame, self.registry, self.signing, peek)
-        except DecodeError:
+            return self._decode_frame(frame, self.registry, self.signing, peek)
+        except self._decode_error:
             return None
 
-    def _give_up(self, out: list[Message]) -> None:
+    def _give_up(self, out: list[Any]) -> None:
         """Drop the frame being assembled for good: replaying the packets it took may begin
         another, which is given up too, so that every frame in those packets comes out."""
         while self._carry:
             self._drop_carry(out)
 
-    def _drop_carry(self, out: list[Message], then: bytes | None = None) -> None:
+    def _drop_carry(self, out: list[Any], then: bytes | None = None) -> None:
         """The frame being assembled was not one. Give the next candidate head inside its first
         packet a chance, and replay the packets it had taken (and `then`) so that frames in
         them, and a long frame starting in them, live."""
@@ -234,19 +240,20 @@ class PacketReceiver:
             return None
         return 12 + plen + (SIGNATURE_LENGTH if incompat else 0)
 
-    def _decode(self, frame: bytes) -> Message | None:
+    def _decode(self, frame: bytes) -> Any:
         try:
-            return decode(frame, self.registry, self.signing)
-        except DecodeError as e:
+            return self._decode_frame(frame, self.registry, self.signing)
+        except self._decode_error as e:
             self.stats.bad_frames += 1
             if self.on_bad is not None:
                 self.on_bad(frame, str(e))
             return None
 
-    def _scan(self, pkt: bytes, pos: int, out: list[Message]) -> None:
+    def _scan(self, pkt: bytes, pos: int, out: list[Any]) -> None:
         head = -1  # a frame that runs past the end of this packet
         i = pos
         n = len(pkt)
+        boundary = pos  # where the packing rule would begin the next frame
         while True:
             j = pkt.find(b"\xfd", i)
             if j < 0:
@@ -257,6 +264,8 @@ class PacketReceiver:
                 break
             total = self._total(pkt, j)
             if total is None:
+                if j == boundary:
+                    self._unknown(pkt, j)
                 i = j + 1
                 continue
             if j + total <= n:
@@ -264,7 +273,7 @@ class PacketReceiver:
                 if msg is not None:
                     out.append(msg)
                     head = -1  # a complete frame after it: that head was false
-                    i = j + total
+                    i = boundary = j + total
                 else:
                     i = j + 1
                 continue
@@ -275,6 +284,19 @@ class PacketReceiver:
             self._give_up(out)  # a newer long frame began: the old one is gone
             self._carry = self._origin = pkt[head:]
             self._taken = []
+
+    def _unknown(self, pkt: bytes, j: int) -> None:
+        """Count a frame at a frame boundary whose msgid this dialect lacks (see on_unknown)."""
+        if pkt[j + 2] & ~INCOMPAT_SIGNED:
+            return
+        msgid = pkt[j + 7] | pkt[j + 8] << 8 | pkt[j + 9] << 16
+        if msgid in self.registry:
+            return  # known, but longer than its definition allows: not a frame
+        end = j + 12 + pkt[j + 1] + (SIGNATURE_LENGTH if pkt[j + 2] else 0)
+        if end == len(pkt) or (end < len(pkt) and pkt[end] == MAGIC) or (j == 0 and end > len(pkt)):
+            self.stats.unknown += 1
+            if self.on_unknown is not None:
+                self.on_unknown(msgid, pkt[j + 5], pkt[j + 6])
 
 
 def describe(msg: Any) -> str:

@@ -7,6 +7,8 @@ from __future__ import annotations
 import sys
 from typing import Any
 
+import ttapi  # the freshly generated one, first on PYTHONPATH
+from ttctl.wire.bindings import Bindings
 from ttctl.wire.packets import Packetizer, PacketReceiver
 
 
@@ -29,7 +31,7 @@ def messages(ms: list[Any]) -> str:
 
 
 def receive(t: list[str]) -> str:
-    rx = PacketReceiver()
+    rx = PacketReceiver(Bindings(ttapi))
     toks = []
     for h in t[1:]:
         got = rx.feed(b"" if h == "-" else bytes.fromhex(h))

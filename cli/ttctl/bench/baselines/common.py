@@ -21,14 +21,15 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-import ttapi
-from ttapi.mavlink import Message, MessageInfo
-
 from ...link.model import Channel, Profile
 from ...link.sim import Simulation
 from ...proto.scheduler import Pacer
 from ...wire.packets import PacketReceiver, packetize
+from ..shipped import bindings
 from ..transfer import ONBOARD, TABLET, Case, channels, pace
+
+Message = Any  # a message of the generated bindings
+MessageInfo = Any
 
 Ids = tuple[int, int]
 
@@ -40,8 +41,8 @@ class End:
 
     def __init__(self, ids: Ids, rate_Bps: float | None, mtu: int, registry: dict[int, MessageInfo]) -> None:
         self.ids = ids
-        self.encoder = ttapi.Encoder(*ids)
-        self.rx = PacketReceiver(registry)
+        self.encoder = bindings().encoder(*ids)
+        self.rx = PacketReceiver(bindings(), registry=registry)
         self.pacer = Pacer(rate_Bps)
         self.mtu = mtu
         self.fifo: deque[bytes] = deque()

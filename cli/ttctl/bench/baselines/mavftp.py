@@ -30,12 +30,10 @@ from dataclasses import dataclass
 from types import ModuleType
 from typing import Any
 
-import ttapi
-from ttapi.mavlink import REGISTRY, Message
-
 from ...link.model import Profile
+from ..shipped import bindings
 from ..transfer import Case
-from .common import BaselineRun, End, Ids, realised_loss, simulate
+from .common import BaselineRun, End, Ids, Message, realised_loss, simulate
 
 # -- MAVLink FTP: pymavlink's client in virtual time, an ArduPilot-like server --------------------
 
@@ -93,7 +91,7 @@ class MavftpClient(End):
 
     def __init__(self, ids: Ids, peer: Ids, data: bytes, rate_Bps: float | None, mtu: int = 100,
                  name: str = "bench.bin", settings: dict[str, Any] | None = None, max_attempts: int = 50) -> None:
-        super().__init__(ids, rate_Bps, mtu, REGISTRY)
+        super().__init__(ids, rate_Bps, mtu, bindings().registry)
         self.peer = peer
         self.data = data
         self.name = name
@@ -134,7 +132,7 @@ class MavftpClient(End):
         p = bytes(payload)
         op = p[3]
         self.ops_sent[op] = self.ops_sent.get(op, 0) + 1
-        sent = self.send(ttapi.FileTransferProtocol(target_network=target_network, target_system=target_system,
+        sent = self.send(bindings().FileTransferProtocol(target_network=target_network, target_system=target_system,
                                                     target_component=target_component, payload=p))
         if op == self.mod.OP_WriteFile:
             self.writes_sent += 1
@@ -200,7 +198,7 @@ class MavftpClient(End):
 
     # -- node hooks ------------------------------------------------------------------------------
     def on_message(self, now: float, msg: Message) -> None:
-        if isinstance(msg, ttapi.FileTransferProtocol) and msg.target_system == self.ids[0]:
+        if isinstance(msg, bindings().FileTransferProtocol) and msg.target_system == self.ids[0]:
             self._inbox.append(msg)
 
     def on_time(self, now: float) -> None:
@@ -237,7 +235,7 @@ class FtpServer(End):
     moment the file holds exactly those bytes is recorded in complete_at."""
 
     def __init__(self, ids: Ids, rate_Bps: float | None, expect: bytes, mtu: int = 100) -> None:
-        super().__init__(ids, rate_Bps, mtu, REGISTRY)
+        super().__init__(ids, rate_Bps, mtu, bindings().registry)
         from pymavlink import mavftp_op as op  # type: ignore[import-untyped]
 
         self.op = op
@@ -263,12 +261,12 @@ class FtpServer(End):
     def _push(self, now: float, r: _Reply) -> None:
         payload = FTP_HEADER.pack(r.seq & 0xFFFF, r.session & 0xFF, r.opcode, r.size, r.req_opcode, 0, 0,
                                   r.offset) + r.data
-        self.send(ttapi.FileTransferProtocol(target_network=0, target_system=r.sysid, target_component=r.compid,
+        self.send(bindings().FileTransferProtocol(target_network=0, target_system=r.sysid, target_component=r.compid,
                                              payload=payload.ljust(251, b"\x00")))
         self.last_send = now
 
     def on_message(self, now: float, msg: Message) -> None:
-        if not isinstance(msg, ttapi.FileTransferProtocol) or msg.target_system != self.ids[0]:
+        if not isinstance(msg, bindings().FileTransferProtocol) or msg.target_system != self.ids[0]:
             return
         p = bytes(msg.payload)
         seq, session, opcode, size, _req, _burst, _pad, offset = FTP_HEADER.unpack_from(p)

@@ -23,9 +23,10 @@ from functools import lru_cache
 from importlib import resources
 from typing import TYPE_CHECKING, Any, ClassVar
 
-from ttapi.mavlink import REGISTRY, Message, MessageInfo
+from ttapi.mavlink import Message, MessageInfo  # the generated framing runtime, under the thesis's messages
 
 from ...link.model import Profile
+from ..shipped import bindings
 from ..transfer import Case
 from .common import BaselineRun, End, Ids, realised_loss, simulate, targets
 
@@ -135,7 +136,7 @@ def thesis_dialect() -> ThesisDialect:
     by_name = {m.name: m for m in d.messages}
     names = ("DJI_FTP_REQUEST", "DJI_FTP_REQUEST_ACK", "DJI_FTP", "DJI_FTP_REQUEST_RESEND")
     classes = [_message_class(by_name[n]) for n in names]
-    registry = dict(REGISTRY)  # common.xml comes from ttapi; 50000+ are the thesis's here
+    registry = dict(bindings().registry)  # common.xml comes from ttapi; 50000+ are the thesis's here
     registry.update({c.MSG_ID: MessageInfo(c) for c in classes})
     return ThesisDialect(request=classes[0], ack=classes[1], part=classes[2], resend=classes[3], registry=registry)
 

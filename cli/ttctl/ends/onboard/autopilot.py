@@ -10,7 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from .missions import Missions, ends_with, waypoints
+from ...wire.bindings import Bindings
+from .missions import Missions
 from .params import Param, Parameters, default_params
 from .vehicle import Refused, SimVehicle, Snapshot, State, Vehicle
 
@@ -19,12 +20,13 @@ INFO, WARNING, CRITICAL = 6, 4, 2
 
 
 class Autopilot:
-    def __init__(self, vehicle: Vehicle, sysid: int = 1, say: Say | None = None,
+    def __init__(self, bindings: Bindings, vehicle: Vehicle, sysid: int = 1, say: Say | None = None,
                  params: list[Param] | None = None) -> None:
+        self.b = bindings
         self.vehicle = vehicle
         self.sysid = sysid
         self.say = say or (lambda severity, text: None)
-        self.params = Parameters(params or default_params(), on_change=self._param_changed)
+        self.params = Parameters(bindings, params or default_params(), on_change=self._param_changed)
         self.params.params[self.params.index["MAV_SYS_ID"]].value = float(sysid)
         self.missions: Missions | None = None  # set by the ground-station side, which speaks the protocol
         self._mission_after_takeoff = False
@@ -56,7 +58,8 @@ class Autopilot:
         if not items:
             raise Refused("no mission uploaded")
         s = self.vehicle.snapshot()
-        route = waypoints(items, s.home, (s.n, s.e, s.alt_rel))
+        assert self.missions is not None
+        route = self.missions.waypoints(items, s.home, (s.n, s.e, s.alt_rel))
         if not route:
             raise Refused("the mission has no waypoint to fly")
         if self.vehicle.state is State.LANDED:
@@ -98,7 +101,7 @@ class Autopilot:
             self._last_state = state
 
     def _mission_done(self) -> None:
-        end = ends_with(self.missions.mission()) if self.missions is not None else None
+        end = self.missions.ends_with(self.missions.mission()) if self.missions is not None else None
         try:
             if end == "land":
                 self.vehicle.land()

@@ -15,15 +15,12 @@ import math
 from collections.abc import Callable, Hashable
 from typing import Any
 
-import ttapi
-
+from ...wire.bindings import Bindings
 from . import modes, telemetry
 from .autopilot import INFO, WARNING, Autopilot
 from .missions import Missions
 from .vehicle import Refused, Snapshot, State
 
-C = ttapi.MavCmd
-A = ttapi.MavResult
 TARGETED = ("target_system",)
 
 
@@ -33,8 +30,9 @@ def _arg(x: float, default: float) -> float:
 
 
 class GroundStations:
-    def __init__(self, ap: Autopilot, sysid: int, compid: int = 1, boot: float = 0.0,
+    def __init__(self, bindings: Bindings, ap: Autopilot, sysid: int, compid: int = 1, boot: float = 0.0,
                  unix: Callable[[float], float] | None = None, log: Callable[[str], None] | None = None) -> None:
+        self.b = b = bindings
         self.ap = ap
         self.sysid, self.compid = sysid, compid
         self.boot = boot
@@ -42,21 +40,21 @@ class GroundStations:
         self.log = log or (lambda text: None)
         self.out: list[tuple[Any, Hashable]] = []
         self._peer_links: dict[tuple[int, int], Hashable] = {}
-        ap.missions = Missions(sysid, compid, self._to_peer, self.log)
+        ap.missions = Missions(b, sysid, compid, self._to_peer, self.log)
         self.builders: dict[int, Callable[[Snapshot], Any]] = {
-            ttapi.Heartbeat.MSG_ID: telemetry.heartbeat,
-            ttapi.SysStatus.MSG_ID: telemetry.sys_status,
-            ttapi.GlobalPositionInt.MSG_ID: lambda s: telemetry.global_position_int(s, self._boot_ms(s)),
-            ttapi.LocalPositionNed.MSG_ID: lambda s: telemetry.local_position_ned(s, self._boot_ms(s)),
-            ttapi.Attitude.MSG_ID: lambda s: telemetry.attitude(s, self._boot_ms(s)),
-            ttapi.GpsRawInt.MSG_ID: lambda s: telemetry.gps_raw_int(s, self._unix_us(s)),
-            ttapi.HomePosition.MSG_ID: lambda s: telemetry.home_position(s, self._unix_us(s)),
-            ttapi.ExtendedSysState.MSG_ID: telemetry.extended_sys_state,
-            ttapi.BatteryStatus.MSG_ID: telemetry.battery_status,
-            ttapi.VfrHud.MSG_ID: telemetry.vfr_hud,
-            ttapi.MissionCurrent.MSG_ID: lambda s: telemetry.mission_current(s, len(self._mission())),
+            b.Heartbeat.MSG_ID: lambda s: telemetry.heartbeat(b, s),
+            b.SysStatus.MSG_ID: lambda s: telemetry.sys_status(b, s),
+            b.GlobalPositionInt.MSG_ID: lambda s: telemetry.global_position_int(b, s, self._boot_ms(s)),
+            b.LocalPositionNed.MSG_ID: lambda s: telemetry.local_position_ned(b, s, self._boot_ms(s)),
+            b.Attitude.MSG_ID: lambda s: telemetry.attitude(b, s, self._boot_ms(s)),
+            b.GpsRawInt.MSG_ID: lambda s: telemetry.gps_raw_int(b, s, self._unix_us(s)),
+            b.HomePosition.MSG_ID: lambda s: telemetry.home_position(b, s, self._unix_us(s)),
+            b.ExtendedSysState.MSG_ID: lambda s: telemetry.extended_sys_state(b, s),
+            b.BatteryStatus.MSG_ID: lambda s: telemetry.battery_status(b, s),
+            b.VfrHud.MSG_ID: lambda s: telemetry.vfr_hud(b, s),
+            b.MissionCurrent.MSG_ID: lambda s: telemetry.mission_current(b, s, len(self._mission())),
         }
-        self.rates = telemetry.Rates(self.builders)
+        self.rates = telemetry.Rates(b, self.builders)
         self.now = boot
 
     def _mission(self) -> list[Any]:
@@ -73,7 +71,7 @@ class GroundStations:
         self.out.append((msg, self._peer_links.get(peer)))
 
     def say(self, severity: int, text: str) -> None:
-        self.out.append((ttapi.Statustext(severity=severity, text=text.encode()[:50].decode("utf-8", "ignore")), None))
+        self.out.append((self.b.Statustext(severity=severity, text=text.encode()[:50].decode("utf-8", "ignore")), None))
 
     # -- in ---------------------------------------------------------------------------------------
     def _for_us(self, msg: Any) -> bool:
@@ -86,39 +84,41 @@ class GroundStations:
         peer = (msg.get_srcSystem(), msg.get_srcComponent())
         if peer[0] == self.sysid:
             return  # ourselves (or our own onboard computer), echoed
+        b = self.b
         self._peer_links[peer] = link
-        if isinstance(msg, ttapi.Ping):
+        if isinstance(msg, b.Ping):
             if msg.target_system == 0 and msg.target_component == 0:  # a request: answer it
-                self._to_peer(ttapi.Ping(time_usec=msg.time_usec, seq=msg.seq, target_system=peer[0],
+                self._to_peer(b.Ping(time_usec=msg.time_usec, seq=msg.seq, target_system=peer[0],
                                          target_component=peer[1]), peer)
             return
         if not self._for_us(msg):
             return
-        if isinstance(msg, (ttapi.CommandLong, ttapi.CommandInt)):
+        if isinstance(msg, (b.CommandLong, b.CommandInt)):
             result, extra = self._command(now, msg)
-            self._to_peer(ttapi.CommandAck(command=msg.command, result=int(result), target_system=peer[0],
+            self._to_peer(b.CommandAck(command=msg.command, result=int(result), target_system=peer[0],
                                            target_component=peer[1]), peer)
             for m in extra:
                 self._to_peer(m, peer)
-        elif isinstance(msg, ttapi.ParamRequestList):
+        elif isinstance(msg, b.ParamRequestList):
             for m in self.ap.params.all():
                 self._to_peer(m, peer)
-        elif isinstance(msg, ttapi.ParamRequestRead):
+        elif isinstance(msg, b.ParamRequestRead):
             for m in self.ap.params.read(msg):
                 self._to_peer(m, peer)
-        elif isinstance(msg, ttapi.ParamSet):
+        elif isinstance(msg, b.ParamSet):
             answers, complaint = self.ap.params.set(msg)
             if complaint:
                 self.log(complaint)
                 self.say(WARNING, complaint)
             for m in answers:
                 self.out.append((m, None))  # every ground station learns the new value
-        elif isinstance(msg, ttapi.RequestDataStream):
+        elif isinstance(msg, b.RequestDataStream):
             self.rates.set_all(msg.req_message_rate if msg.start_stop else 0)
         elif self.ap.missions is not None and type(msg).__name__.startswith("Mission"):
             self.ap.missions.on_message(now, msg)
 
-    def _command(self, now: float, msg: Any) -> tuple[A, list[Any]]:
+    def _command(self, now: float, msg: Any) -> tuple[int, list[Any]]:
+        C, A = self.b.MavCmd, self.b.MavResult
         cmd = msg.command
         p = [msg.param1, msg.param2, msg.param3, msg.param4]
         v = self.ap.vehicle
@@ -130,7 +130,7 @@ class GroundStations:
                     v.disarm()
                 return A.MAV_RESULT_ACCEPTED, []
             if cmd == C.MAV_CMD_NAV_TAKEOFF:
-                alt = _arg(msg.param7 if isinstance(msg, ttapi.CommandLong) else msg.z, 0.0)
+                alt = _arg(msg.param7 if isinstance(msg, self.b.CommandLong) else msg.z, 0.0)
                 v.takeoff(alt if alt > 0 else None)
                 return A.MAV_RESULT_ACCEPTED, []
             if cmd == C.MAV_CMD_NAV_LAND:
@@ -151,8 +151,8 @@ class GroundStations:
                 return (A.MAV_RESULT_ACCEPTED if ok else A.MAV_RESULT_UNSUPPORTED), []
             if cmd in (C.MAV_CMD_REQUEST_MESSAGE, C.MAV_CMD_GET_HOME_POSITION,
                        C.MAV_CMD_REQUEST_AUTOPILOT_CAPABILITIES):
-                msgid = {C.MAV_CMD_GET_HOME_POSITION: ttapi.HomePosition.MSG_ID,
-                         C.MAV_CMD_REQUEST_AUTOPILOT_CAPABILITIES: ttapi.AutopilotVersion.MSG_ID
+                msgid = {C.MAV_CMD_GET_HOME_POSITION: self.b.HomePosition.MSG_ID,
+                         C.MAV_CMD_REQUEST_AUTOPILOT_CAPABILITIES: self.b.AutopilotVersion.MSG_ID
                          }.get(cmd, int(_arg(p[0], -1)))
                 reply = self._requested(msgid)
                 return (A.MAV_RESULT_ACCEPTED, [reply]) if reply is not None else (A.MAV_RESULT_UNSUPPORTED, [])
@@ -163,14 +163,15 @@ class GroundStations:
         return A.MAV_RESULT_UNSUPPORTED, []
 
     def _requested(self, msgid: int) -> Any | None:
-        if msgid == ttapi.AutopilotVersion.MSG_ID:
-            return telemetry.autopilot_version(self.sysid)
+        if msgid == self.b.AutopilotVersion.MSG_ID:
+            return telemetry.autopilot_version(self.b, self.sysid)
         build = self.builders.get(msgid)
         return build(self.ap.snapshot()) if build is not None else None
 
-    def _set_mode(self, p: list[float]) -> A:
+    def _set_mode(self, p: list[float]) -> int:
+        A = self.b.MavResult
         base = int(_arg(p[0], 0))
-        if not base & int(ttapi.MavModeFlag.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED):
+        if not base & int(self.b.MavModeFlag.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED):
             return A.MAV_RESULT_UNSUPPORTED
         main, sub = int(_arg(p[1], 0)), int(_arg(p[2], 0))
         v = self.ap.vehicle
@@ -192,12 +193,13 @@ class GroundStations:
             return A.MAV_RESULT_UNSUPPORTED
         return A.MAV_RESULT_ACCEPTED
 
-    def _reposition(self, msg: Any) -> A:
+    def _reposition(self, msg: Any) -> int:
+        b, A = self.b, self.b.MavResult
         s = self.ap.snapshot()
-        if isinstance(msg, ttapi.CommandInt):
+        if isinstance(msg, b.CommandInt):
             lat, lon, z = msg.x / 1e7, msg.y / 1e7, msg.z
-            relative = msg.frame in (int(ttapi.MavFrame.MAV_FRAME_GLOBAL_RELATIVE_ALT),
-                                     int(ttapi.MavFrame.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT))
+            relative = msg.frame in (int(b.MavFrame.MAV_FRAME_GLOBAL_RELATIVE_ALT),
+                                     int(b.MavFrame.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT))
         else:
             lat, lon, z = _arg(msg.param5, s.lat), _arg(msg.param6, s.lon), msg.param7
             relative = False

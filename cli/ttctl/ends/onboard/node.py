@@ -16,20 +16,19 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import ttapi
-
 from ...link.transport import Spec, Transport, UdpTransport, addr_text, make_transport
 from ...proto.endpoint import CONTROL, TELEMETRY, Endpoint
 from ...proto.storage import ReceiveDir
+from ...wire.bindings import Bindings
+from ...wire.contract import TtAction as TT
+from ...wire.contract import TtResult as RES
 from ..plugins import Context, Dispatcher, Plugin
-from ..runtime import Runner
+from ..runtime import Runner, unknown_note
 from .autopilot import Autopilot
 from .gcs import GroundStations
 from .trajectory import TrajectoryError, parse_trajectory
 from .vehicle import Home, Refused, SimVehicle, State
 
-TT = ttapi.TtAction
-RES = ttapi.TtResult
 ONBOARD_COMPID = 240
 AUTOPILOT_COMPID = 1
 STEP = 0.02  # s of wall clock between vehicle steps in the air
@@ -48,22 +47,27 @@ class OnboardConfig:
     rate_Bps: float | None = None  # pacing of the DTT downlink
     telemetry_hz: float = 2.0  # TT_NAV_SAT_FIX and TT_ODOMETRY to the tablet
     orbit_hz: float = 10.0  # the orbit camera's publishing rate while head poses arrive (0: no orbit camera)
-    signing: Any = None  # ttapi.Signing for the DTT link (None: unsigned, signed frames unverified)
+    signing: Any = None  # Signing for the DTT link (None: unsigned, signed frames unverified)
 
 
 class OnboardNode:
-    def __init__(self, cfg: OnboardConfig, plugins: list[Plugin] | None = None,
+    """`bindings`: the dialect on every link (the tablet's and the ground stations'): plugins'
+    handlers get its classes, and what it lacks is counted and told once, never a crash.
+    Plugins whose messages the dialect lacks are refused here (PluginError)."""
+
+    def __init__(self, bindings: Bindings, cfg: OnboardConfig, plugins: list[Plugin] | None = None,
                  log: Callable[[str], None] | None = None) -> None:
+        self.b = bindings
         self.cfg = cfg
         self.log = log or (lambda text: None)
         self.vehicle = SimVehicle(home=cfg.home)
-        self.ap = Autopilot(self.vehicle, cfg.sysid, say=self._say)
+        self.ap = Autopilot(bindings, self.vehicle, cfg.sysid, say=self._say)
         self.started = 0.0
-        self.gcs = GroundStations(self.ap, cfg.sysid, AUTOPILOT_COMPID, unix=self._unix, log=self.log)
-        self.gcs_encoder = ttapi.Encoder(cfg.sysid, AUTOPILOT_COMPID)
+        self.gcs = GroundStations(bindings, self.ap, cfg.sysid, AUTOPILOT_COMPID, unix=self._unix, log=self.log)
+        self.gcs_encoder = bindings.encoder(cfg.sysid, AUTOPILOT_COMPID)
         self.gcs_links: list[UdpTransport] = []
-        self._gcs_parsers: dict[Hashable, ttapi.Parser] = {}
-        self.dispatcher = Dispatcher(on_error=self._plugin_error)
+        self._gcs_parsers: dict[Hashable, Any] = {}
+        self.dispatcher = Dispatcher(on_error=self._plugin_error, dialect=bindings)
         from .orbit_camera import OrbitCameraPlugin
 
         builtin: list[Plugin] = [OrbitCameraPlugin(cfg.orbit_hz)] if cfg.orbit_hz > 0 else []
@@ -82,7 +86,7 @@ class OnboardNode:
         self._timers: list[list[Any]] = []  # [due, period, fn]
         self._ctx = Context(send=self._send_dtt, log=self.log, sysid=cfg.sysid, compid=ONBOARD_COMPID,
                             vehicle=self.vehicle, every=self._every,
-                            send_gcs=lambda msg: self._send_gcs([(msg, None)]))
+                            send_gcs=lambda msg: self._send_gcs([(msg, None)]), dialect=bindings)
 
     # -- wiring ---------------------------------------------------------------------------------
     def _unix(self, now: float) -> float:
@@ -94,7 +98,7 @@ class OnboardNode:
         self.log(text)
         self.gcs.say(severity, text)
         if self.endpoint is not None:
-            for msg in log_chunks(text, severity, int(self.vehicle_time * 1000), self._next_log_id()):
+            for msg in log_chunks(self.b, text, severity, int(self.vehicle_time * 1000), self._next_log_id()):
                 self.endpoint.send_message(msg, CONTROL if urgent else TELEMETRY)
 
     def _next_log_id(self) -> int:
@@ -120,12 +124,12 @@ class OnboardNode:
                 except Exception as e:
                     self.log(f"plugin timer {getattr(fn, '__qualname__', fn)} failed: {type(e).__name__}: {e}")
 
-    def _send_dtt(self, msg: Any) -> None:
+    def _send_dtt(self, msg: Any, urgent: bool = False) -> None:
         if self.endpoint is not None:
-            self.endpoint.send_message(msg)
+            self.endpoint.send_message(msg, CONTROL if urgent else TELEMETRY)
 
     # -- the tablet's commands ------------------------------------------------------------------
-    def tablet_action(self, msg: ttapi.TtActionCommand) -> int:
+    def tablet_action(self, msg: Any) -> int:
         v = self.vehicle
         p0 = float(msg.param[0]) if msg.param else 0.0
         try:
@@ -180,7 +184,7 @@ class OnboardNode:
 
     def _on_tablet_message(self, now: float, msg: Any) -> None:
         self.ap.heard_tablet(self.vehicle_time)
-        if isinstance(msg, ttapi.DjiPoseStamped) and msg.topic_name == ttapi.DjiTopicName.DJI_TOPIC_NAME_SETPOINT:
+        if isinstance(msg, self.b.DjiPoseStamped) and msg.topic_name == self.b.DjiTopicName.DJI_TOPIC_NAME_SETPOINT:
             x, y, z = msg.position
             try:
                 self.vehicle.goto(float(x), float(y), float(z))
@@ -194,12 +198,13 @@ class OnboardNode:
             return
         s = self.vehicle.snapshot()
         unix_us = int(time.time() * 1e6)
-        fix = ttapi.TtNavSatFix(time_usec=unix_us, latitude=round(s.lat * 1e7), longitude=round(s.lon * 1e7),
-                                altitude=s.alt_msl, position_covariance=[0.64, 0, 0, 0, 0.64, 0, 0, 0, 1.44],
-                                status=int(ttapi.TtFixType.TT_FIX_TYPE_FIX),
-                                service=int(ttapi.TtGnssService.TT_GNSS_SERVICE_GPS),
-                                covariance_type=int(ttapi.TtCovarianceType.TT_COVARIANCE_TYPE_DIAGONAL_KNOWN),
-                                satellites=14)
+        b = self.b
+        fix = b.TtNavSatFix(time_usec=unix_us, latitude=round(s.lat * 1e7), longitude=round(s.lon * 1e7),
+                            altitude=s.alt_msl, position_covariance=[0.64, 0, 0, 0, 0.64, 0, 0, 0, 1.44],
+                            status=int(b.TtFixType.TT_FIX_TYPE_FIX),
+                            service=int(b.TtGnssService.TT_GNSS_SERVICE_GPS),
+                            covariance_type=int(b.TtCovarianceType.TT_COVARIANCE_TYPE_DIAGONAL_KNOWN),
+                            satellites=14)
         import math
 
         cy, sy = math.cos(s.yaw / 2), math.sin(s.yaw / 2)
@@ -207,10 +212,10 @@ class OnboardNode:
         cr, sr = math.cos(s.roll / 2), math.sin(s.roll / 2)
         q = [sr * cp * cy - cr * sp * sy, cr * sp * cy + sr * cp * sy, cr * cp * sy - sr * sp * cy,
              cr * cp * cy + sr * sp * sy]  # x, y, z, w of the NED (FRD) attitude
-        odo = ttapi.TtOdometry(time_usec=unix_us, frame_id=int(ttapi.TtFrame.TT_FRAME_WORLD_NED),
-                               child_frame_id=int(ttapi.TtFrame.TT_FRAME_WORLD_NED), position=[s.n, s.e, s.d],
-                               orientation=q, linear=[s.vn, s.ve, s.vd], angular=[0.0, 0.0, s.yaw_rate],
-                               pose_variance=[0.25, 0.25, 0.5, 0.01, 0.01, 0.02])
+        odo = b.TtOdometry(time_usec=unix_us, frame_id=int(b.TtFrame.TT_FRAME_WORLD_NED),
+                           child_frame_id=int(b.TtFrame.TT_FRAME_WORLD_NED), position=[s.n, s.e, s.d],
+                           orientation=q, linear=[s.vn, s.ve, s.vd], angular=[0.0, 0.0, s.yaw_rate],
+                           pose_variance=[0.25, 0.25, 0.5, 0.01, 0.01, 0.02])
         self.endpoint.send_message(fix, TELEMETRY)
         self.endpoint.send_message(odo, TELEMETRY)
 
@@ -227,8 +232,9 @@ class OnboardNode:
         if self.cfg.dtt is not None:
             store = ReceiveDir(self.cfg.inbox) if self.cfg.inbox is not None else None
             transport: Transport = make_transport(self.cfg.dtt, log=lambda text: self.log(f"dtt: {text}"))
-            self.endpoint = Endpoint(self.cfg.sysid, ONBOARD_COMPID, mtu=transport.mtu, rate_Bps=self.cfg.rate_Bps,
-                                     receive_dir=store, serve_dir=str(self.cfg.serve) if self.cfg.serve else None,
+            self.endpoint = Endpoint(self.b, self.cfg.sysid, ONBOARD_COMPID, mtu=transport.mtu,
+                                     rate_Bps=self.cfg.rate_Bps, receive_dir=store,
+                                     serve_dir=str(self.cfg.serve) if self.cfg.serve else None,
                                      action=self.tablet_action, on_message=self._on_tablet_message,
                                      on_event=self._file_event, signing=self.cfg.signing)
             self.runner = Runner(self.endpoint, transport, probes=self._probes(transport))
@@ -264,11 +270,15 @@ class OnboardNode:
     def _file_event(self, what: str, t: Any) -> None:
         if what == "link-refused":
             self.log(f"dtt: ignoring {addr_text(t[0])}: {t[1]} (the same --key at both ends?)")
+        elif what == "unknown-message":
+            self.log(f"dtt: {unknown_note(self.b, t)}")
         elif what == "file-complete":
             self._say(6, f"received {t.name} ({t.size} bytes)")
 
     def _from_gcs(self, link: UdpTransport, data: bytes, source: Hashable) -> None:
-        parser = self._gcs_parsers.setdefault((link, source), ttapi.Parser())
+        parser = self._gcs_parsers.get((link, source))
+        if parser is None:
+            parser = self._gcs_parsers[(link, source)] = self.b.parser()
         now = self.vehicle_time
         for msg in parser.feed(data):
             link.confirm(source, {(msg.get_srcSystem(), msg.get_srcComponent())})  # a udpin link learns its peers
@@ -295,7 +305,7 @@ class OnboardNode:
             self._send_gcs(self.gcs.tick(self.vehicle_time))
             if self.endpoint is not None:
                 if self.vehicle_time >= self._hb_due:
-                    self.endpoint.send_message(telemetry_heartbeat(self.vehicle.snapshot()))
+                    self.endpoint.send_message(telemetry_heartbeat(self.b, self.vehicle.snapshot()))
                     self._hb_due = self.vehicle_time + 1.0
                 if self.cfg.telemetry_hz > 0 and self.vehicle_time >= self._tele_due:
                     self._tablet_telemetry()
@@ -327,26 +337,26 @@ class OnboardNode:
             t.close()
 
 
-def log_chunks(text: str, severity: int, boot_ms: int, line_id: int) -> list[ttapi.TtLog]:
+def log_chunks(b: Bindings, text: str, severity: int, boot_ms: int, line_id: int) -> list[Any]:
     """A TT_LOG line: one message (id 0) if it fits 80 bytes with room for its NUL, else chunks of
     80 bytes with one id and rising chunk_seq, the last one NUL-terminated (an empty one if the
     text divides evenly)."""
     raw = text.encode("utf-8")
     if len(raw) < 80:
-        return [ttapi.TtLog(time_boot_ms=boot_ms & 0xFFFFFFFF, id=0, severity=severity, chunk_seq=0, text=text)]
+        return [b.TtLog(time_boot_ms=boot_ms & 0xFFFFFFFF, id=0, severity=severity, chunk_seq=0, text=text)]
     pieces = [raw[i:i + 80] for i in range(0, len(raw), 80)]
     if len(pieces[-1]) == 80:
         pieces.append(b"")
-    return [ttapi.TtLog(time_boot_ms=boot_ms & 0xFFFFFFFF, id=line_id, severity=severity, chunk_seq=k,
-                        text=piece.decode("utf-8", "surrogateescape")) for k, piece in enumerate(pieces[:256])]
+    return [b.TtLog(time_boot_ms=boot_ms & 0xFFFFFFFF, id=line_id, severity=severity, chunk_seq=k,
+                    text=piece.decode("utf-8", "surrogateescape")) for k, piece in enumerate(pieces[:256])]
 
 
-def telemetry_heartbeat(s: Any) -> ttapi.Heartbeat:
+def telemetry_heartbeat(b: Bindings, s: Any) -> Any:
     from .telemetry import heartbeat
 
-    hb = heartbeat(s)
-    hb.type = int(ttapi.MavType.MAV_TYPE_ONBOARD_CONTROLLER)
-    hb.autopilot = int(ttapi.MavAutopilot.MAV_AUTOPILOT_INVALID)
+    hb = heartbeat(b, s)
+    hb.type = int(b.MavType.MAV_TYPE_ONBOARD_CONTROLLER)
+    hb.autopilot = int(b.MavAutopilot.MAV_AUTOPILOT_INVALID)
     return hb
 
 

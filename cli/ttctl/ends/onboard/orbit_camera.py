@@ -18,14 +18,14 @@ import math
 import time
 from typing import Any
 
-import ttapi
-
 from ...hmd.orbit import Camera, OrbitCamera, OrbitParams
+from ...wire.bindings import Bindings
+from ...wire.contract import TtVrDevice, TtVrPoseFlags
 from ..plugins import Context, Plugin, handles
 from .vehicle import EARTH_RADIUS
 
-HMD = int(ttapi.TtVrDevice.TT_VR_DEVICE_HMD)
-VALID = int(ttapi.TtVrPoseFlags.TT_VR_POSE_FLAGS_VALID)
+HMD = int(TtVrDevice.TT_VR_DEVICE_HMD)
+VALID = int(TtVrPoseFlags.TT_VR_POSE_FLAGS_VALID)
 
 
 class OrbitCameraPlugin(Plugin):
@@ -54,8 +54,8 @@ class OrbitCameraPlugin(Plugin):
         speed = math.sqrt(s.vn * s.vn + s.ve * s.ve + s.vd * s.vd)
         return self.orbit.update(now, (s.n, s.e, s.d), s.yaw, speed)
 
-    @handles(ttapi.TtVrPose)
-    def on_pose(self, msg: ttapi.TtVrPose, ctx: Context) -> None:
+    @handles("TT_VR_POSE")
+    def on_pose(self, msg: Any, ctx: Context) -> None:
         if msg.device != HMD or not msg.flags & VALID:
             return
         q = tuple(float(c) for c in msg.orientation)
@@ -82,11 +82,12 @@ class OrbitCameraPlugin(Plugin):
         ctx.shared["orbit_camera"] = cam
         unix = time.time()
         x, y, z, w = cam.orientation
-        ctx.send(ttapi.DjiPoseStamped(target_system=255, sec=int(unix), nsec=int((unix % 1) * 1e9),
-                                      topic_name=int(ttapi.DjiTopicName.DJI_TOPIC_NAME_ORBIT_CAMERA),
-                                      position=list(cam.position), orientation=[x, y, z, w]))
+        b = ctx.dialect
+        ctx.send(b.DjiPoseStamped(target_system=255, sec=int(unix), nsec=int((unix % 1) * 1e9),
+                                  topic_name=int(b.DjiTopicName.DJI_TOPIC_NAME_ORBIT_CAMERA),
+                                  position=list(cam.position), orientation=[x, y, z, w]))
         if ctx.vehicle is not None:
-            ctx.send_gcs(fov_status(cam, ctx.vehicle.snapshot().home, int(now * 1000), self.orbit.p))
+            ctx.send_gcs(fov_status(b, cam, ctx.vehicle.snapshot().home, int(now * 1000), self.orbit.p))
         self.published += 1
 
 
@@ -97,14 +98,14 @@ def geodetic(home: Any, ned: tuple[float, float, float]) -> tuple[int, int, int]
     return round(lat * 1e7), round(lon * 1e7), round((home.alt - ned[2]) * 1000)
 
 
-def fov_status(cam: Camera, home: Any, boot_ms: int, p: OrbitParams) -> ttapi.CameraFovStatus:
+def fov_status(b: Bindings, cam: Camera, home: Any, boot_ms: int, p: OrbitParams) -> Any:
     lat_c, lon_c, alt_c = geodetic(home, cam.position)
     lat_i, lon_i, alt_i = geodetic(home, cam.target)
     x, y, z, w = cam.orientation
-    return ttapi.CameraFovStatus(time_boot_ms=boot_ms & 0xFFFFFFFF, lat_camera=lat_c, lon_camera=lon_c,
-                                 alt_camera=alt_c, lat_image=lat_i, lon_image=lon_i, alt_image=alt_i,
-                                 q=[w, x, y, z], hfov=math.degrees(p.hfov), vfov=math.degrees(p.vfov),
-                                 camera_device_id=0)
+    return b.CameraFovStatus(time_boot_ms=boot_ms & 0xFFFFFFFF, lat_camera=lat_c, lon_camera=lon_c,
+                             alt_camera=alt_c, lat_image=lat_i, lon_image=lon_i, alt_image=alt_i,
+                             q=[w, x, y, z], hfov=math.degrees(p.hfov), vfov=math.degrees(p.vfov),
+                             camera_device_id=0)
 
 
 __all__ = ["OrbitCameraPlugin", "fov_status", "geodetic"]

@@ -13,11 +13,12 @@ import math
 import struct
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
-import ttapi
+from ...wire.bindings import Bindings
 
-INT32 = int(ttapi.MavParamType.MAV_PARAM_TYPE_INT32)
-REAL32 = int(ttapi.MavParamType.MAV_PARAM_TYPE_REAL32)
+INT32 = 6  # MAV_PARAM_TYPE_INT32 (common.xml; tests check it against the dialect)
+REAL32 = 9  # MAV_PARAM_TYPE_REAL32
 
 
 @dataclass
@@ -56,8 +57,9 @@ def default_params() -> list[Param]:
 
 
 class Parameters:
-    def __init__(self, params: list[Param], on_change: Callable[[Param], None] | None = None,
+    def __init__(self, bindings: Bindings, params: list[Param], on_change: Callable[[Param], None] | None = None,
                  read_only: tuple[str, ...] = ("MAV_SYS_ID",)) -> None:
+        self.b = bindings
         self.params = params
         self.index = {p.name: i for i, p in enumerate(params)}
         self.on_change = on_change
@@ -66,21 +68,21 @@ class Parameters:
     def __getitem__(self, name: str) -> float:
         return self.params[self.index[name]].value
 
-    def value_msg(self, i: int) -> ttapi.ParamValue:
+    def value_msg(self, i: int) -> Any:
         p = self.params[i]
-        return ttapi.ParamValue(param_id=p.name, param_value=p.encoded(), param_type=p.kind,
-                                param_count=len(self.params), param_index=i)
+        return self.b.ParamValue(param_id=p.name, param_value=p.encoded(), param_type=p.kind,
+                                 param_count=len(self.params), param_index=i)
 
-    def all(self) -> list[ttapi.ParamValue]:
+    def all(self) -> list[Any]:
         return [self.value_msg(i) for i in range(len(self.params))]
 
-    def read(self, msg: ttapi.ParamRequestRead) -> list[ttapi.ParamValue]:
+    def read(self, msg: Any) -> list[Any]:
         if msg.param_index >= 0:
             return [self.value_msg(msg.param_index)] if msg.param_index < len(self.params) else []
         i = self.index.get(msg.param_id.rstrip("\x00"))
         return [] if i is None else [self.value_msg(i)]
 
-    def set(self, msg: ttapi.ParamSet) -> tuple[list[ttapi.ParamValue], str | None]:
+    def set(self, msg: Any) -> tuple[list[Any], str | None]:
         """The PARAM_VALUE to answer with, and a complaint to log if the value was refused."""
         name = msg.param_id.rstrip("\x00")
         i = self.index.get(name)

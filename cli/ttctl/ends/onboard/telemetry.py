@@ -10,111 +10,113 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import ClassVar
+from typing import Any, ClassVar
 
-import ttapi
-
+from ...wire.bindings import Bindings
 from . import modes
 from .vehicle import Snapshot, State
 
-S = ttapi.MavSysStatusSensor
-SENSORS = int(S.MAV_SYS_STATUS_SENSOR_3D_GYRO | S.MAV_SYS_STATUS_SENSOR_3D_ACCEL | S.MAV_SYS_STATUS_SENSOR_3D_MAG
-              | S.MAV_SYS_STATUS_SENSOR_ABSOLUTE_PRESSURE | S.MAV_SYS_STATUS_SENSOR_GPS
-              | S.MAV_SYS_STATUS_SENSOR_BATTERY)
-CAPABILITIES = int(ttapi.MavProtocolCapability.MAV_PROTOCOL_CAPABILITY_MAVLINK2
-                   | ttapi.MavProtocolCapability.MAV_PROTOCOL_CAPABILITY_MISSION_INT
-                   | ttapi.MavProtocolCapability.MAV_PROTOCOL_CAPABILITY_COMMAND_INT
-                   | ttapi.MavProtocolCapability.MAV_PROTOCOL_CAPABILITY_PARAM_ENCODE_BYTEWISE)
 INT16_MAX, UINT16_MAX = 32767, 65535
+
+
+def _sensors(b: Bindings) -> int:
+    S = b.MavSysStatusSensor
+    return int(S.MAV_SYS_STATUS_SENSOR_3D_GYRO | S.MAV_SYS_STATUS_SENSOR_3D_ACCEL | S.MAV_SYS_STATUS_SENSOR_3D_MAG
+               | S.MAV_SYS_STATUS_SENSOR_ABSOLUTE_PRESSURE | S.MAV_SYS_STATUS_SENSOR_GPS
+               | S.MAV_SYS_STATUS_SENSOR_BATTERY)
+
+
+def capabilities(b: Bindings) -> int:
+    C = b.MavProtocolCapability
+    return int(C.MAV_PROTOCOL_CAPABILITY_MAVLINK2 | C.MAV_PROTOCOL_CAPABILITY_MISSION_INT
+               | C.MAV_PROTOCOL_CAPABILITY_COMMAND_INT | C.MAV_PROTOCOL_CAPABILITY_PARAM_ENCODE_BYTEWISE)
 
 
 def _deg7(x: float) -> int:
     return round(x * 1e7)
 
 
-def heartbeat(s: Snapshot) -> ttapi.Heartbeat:
-    flags = ttapi.MavModeFlag
+def heartbeat(b: Bindings, s: Snapshot) -> Any:
+    flags = b.MavModeFlag
     base = int(flags.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED | flags.MAV_MODE_FLAG_STABILIZE_ENABLED
                | flags.MAV_MODE_FLAG_GUIDED_ENABLED)
     if s.armed:
         base |= int(flags.MAV_MODE_FLAG_SAFETY_ARMED)
-    status = ttapi.MavState.MAV_STATE_ACTIVE if s.armed else ttapi.MavState.MAV_STATE_STANDBY
-    return ttapi.Heartbeat(type=int(ttapi.MavType.MAV_TYPE_QUADROTOR),
-                           autopilot=int(ttapi.MavAutopilot.MAV_AUTOPILOT_GENERIC), base_mode=base,
+    status = b.MavState.MAV_STATE_ACTIVE if s.armed else b.MavState.MAV_STATE_STANDBY
+    return b.Heartbeat(type=int(b.MavType.MAV_TYPE_QUADROTOR),
+                           autopilot=int(b.MavAutopilot.MAV_AUTOPILOT_GENERIC), base_mode=base,
                            custom_mode=modes.custom_mode(s.state), system_status=int(status), mavlink_version=3)
 
 
-PREARM = int(S.MAV_SYS_STATUS_PREARM_CHECK)
-
-
-def sys_status(s: Snapshot) -> ttapi.SysStatus:
+def sys_status(b: Bindings, s: Snapshot) -> Any:
     # the pre-arm check (MAVSDK's is_armable) passes while the battery allows arming
-    health = SENSORS | (PREARM if s.battery_pct >= 10.0 and not s.state.airborne else 0)
-    health |= int(S.MAV_SYS_STATUS_GEOFENCE)  # no fence, so none breached (MAVProxy says so otherwise)
-    return ttapi.SysStatus(onboard_control_sensors_present=SENSORS | PREARM,
-                           onboard_control_sensors_enabled=SENSORS | PREARM,
+    sensors, prearm = _sensors(b), int(b.MavSysStatusSensor.MAV_SYS_STATUS_PREARM_CHECK)
+    health = sensors | (prearm if s.battery_pct >= 10.0 and not s.state.airborne else 0)
+    health |= int(b.MavSysStatusSensor.MAV_SYS_STATUS_GEOFENCE)  # no fence, none breached (MAVProxy says so otherwise)
+    return b.SysStatus(onboard_control_sensors_present=sensors | prearm,
+                           onboard_control_sensors_enabled=sensors | prearm,
                            onboard_control_sensors_health=health, load=150,
                            voltage_battery=int(s.battery_v * 1000), current_battery=int(s.current_a * 100),
                            battery_remaining=round(s.battery_pct))
 
 
-def global_position_int(s: Snapshot, boot_ms: int) -> ttapi.GlobalPositionInt:
-    return ttapi.GlobalPositionInt(time_boot_ms=boot_ms, lat=_deg7(s.lat), lon=_deg7(s.lon),
+def global_position_int(b: Bindings, s: Snapshot, boot_ms: int) -> Any:
+    return b.GlobalPositionInt(time_boot_ms=boot_ms, lat=_deg7(s.lat), lon=_deg7(s.lon),
                                    alt=round(s.alt_msl * 1000), relative_alt=round(s.alt_rel * 1000),
                                    vx=round(s.vn * 100), vy=round(s.ve * 100), vz=round(s.vd * 100),
                                    hdg=round(s.heading_deg * 100) % 36000)
 
 
-def local_position_ned(s: Snapshot, boot_ms: int) -> ttapi.LocalPositionNed:
-    return ttapi.LocalPositionNed(time_boot_ms=boot_ms, x=s.n, y=s.e, z=s.d, vx=s.vn, vy=s.ve, vz=s.vd)
+def local_position_ned(b: Bindings, s: Snapshot, boot_ms: int) -> Any:
+    return b.LocalPositionNed(time_boot_ms=boot_ms, x=s.n, y=s.e, z=s.d, vx=s.vn, vy=s.ve, vz=s.vd)
 
 
-def attitude(s: Snapshot, boot_ms: int) -> ttapi.Attitude:
-    return ttapi.Attitude(time_boot_ms=boot_ms, roll=s.roll, pitch=s.pitch, yaw=s.yaw, yawspeed=s.yaw_rate)
+def attitude(b: Bindings, s: Snapshot, boot_ms: int) -> Any:
+    return b.Attitude(time_boot_ms=boot_ms, roll=s.roll, pitch=s.pitch, yaw=s.yaw, yawspeed=s.yaw_rate)
 
 
-def gps_raw_int(s: Snapshot, unix_us: int) -> ttapi.GpsRawInt:
+def gps_raw_int(b: Bindings, s: Snapshot, unix_us: int) -> Any:
     cog = round(math.degrees(math.atan2(s.ve, s.vn)) % 360 * 100) if s.ground_speed > 0.2 else UINT16_MAX
-    return ttapi.GpsRawInt(time_usec=unix_us, fix_type=int(ttapi.GpsFixType.GPS_FIX_TYPE_3D_FIX), lat=_deg7(s.lat),
+    return b.GpsRawInt(time_usec=unix_us, fix_type=int(b.GpsFixType.GPS_FIX_TYPE_3D_FIX), lat=_deg7(s.lat),
                            lon=_deg7(s.lon), alt=round(s.alt_msl * 1000), eph=80, epv=120,
                            vel=round(s.ground_speed * 100), cog=cog, satellites_visible=14)
 
 
-def home_position(s: Snapshot, unix_us: int) -> ttapi.HomePosition:
-    return ttapi.HomePosition(latitude=_deg7(s.home.lat), longitude=_deg7(s.home.lon),
+def home_position(b: Bindings, s: Snapshot, unix_us: int) -> Any:
+    return b.HomePosition(latitude=_deg7(s.home.lat), longitude=_deg7(s.home.lon),
                               altitude=round(s.home.alt * 1000), q=[1.0, 0.0, 0.0, 0.0], time_usec=unix_us)
 
 
-def extended_sys_state(s: Snapshot) -> ttapi.ExtendedSysState:
-    L = ttapi.MavLandedState
+def extended_sys_state(b: Bindings, s: Snapshot) -> Any:
+    L = b.MavLandedState
     landed = {State.LANDED: L.MAV_LANDED_STATE_ON_GROUND, State.TAKING_OFF: L.MAV_LANDED_STATE_TAKEOFF,
               State.LANDING: L.MAV_LANDED_STATE_LANDING}.get(s.state, L.MAV_LANDED_STATE_IN_AIR)
-    return ttapi.ExtendedSysState(vtol_state=0, landed_state=int(landed))
+    return b.ExtendedSysState(vtol_state=0, landed_state=int(landed))
 
 
-def battery_status(s: Snapshot) -> ttapi.BatteryStatus:
+def battery_status(b: Bindings, s: Snapshot) -> Any:
     cell = int(s.battery_v / 4 * 1000)
     used_mah = int((100.0 - s.battery_pct) / 100.0 * 4000)
-    return ttapi.BatteryStatus(id=0, battery_function=int(ttapi.MavBatteryFunction.MAV_BATTERY_FUNCTION_ALL),
-                               type=int(ttapi.MavBatteryType.MAV_BATTERY_TYPE_LIPO), temperature=INT16_MAX,
+    return b.BatteryStatus(id=0, battery_function=int(b.MavBatteryFunction.MAV_BATTERY_FUNCTION_ALL),
+                               type=int(b.MavBatteryType.MAV_BATTERY_TYPE_LIPO), temperature=INT16_MAX,
                                voltages=[cell] * 4 + [UINT16_MAX] * 6, current_battery=int(s.current_a * 100),
                                current_consumed=used_mah, energy_consumed=-1,
                                battery_remaining=round(s.battery_pct))
 
 
-def vfr_hud(s: Snapshot) -> ttapi.VfrHud:
+def vfr_hud(b: Bindings, s: Snapshot) -> Any:
     throttle = 50 if s.state is not State.LANDED else 0
-    return ttapi.VfrHud(airspeed=s.ground_speed, groundspeed=s.ground_speed, heading=int(s.heading_deg) % 360,
+    return b.VfrHud(airspeed=s.ground_speed, groundspeed=s.ground_speed, heading=int(s.heading_deg) % 360,
                         throttle=throttle, alt=s.alt_msl, climb=-s.vd)
 
 
-def autopilot_version(sysid: int) -> ttapi.AutopilotVersion:
-    return ttapi.AutopilotVersion(capabilities=CAPABILITIES, flight_sw_version=0x01000000, vendor_id=0,
+def autopilot_version(b: Bindings, sysid: int) -> Any:
+    return b.AutopilotVersion(capabilities=capabilities(b), flight_sw_version=0x01000000, vendor_id=0,
                                   product_id=0, uid=0x7474_6374_6C00 + sysid)
 
 
-def mission_current(s: Snapshot, total: int) -> ttapi.MissionCurrent:
-    return ttapi.MissionCurrent(seq=max(0, s.waypoint), total=total)
+def mission_current(b: Bindings, s: Snapshot, total: int) -> Any:
+    return b.MissionCurrent(seq=max(0, s.waypoint), total=total)
 
 
 class Rates:
@@ -126,10 +128,10 @@ class Rates:
         "HOME_POSITION": 2.0, "EXTENDED_SYS_STATE": 1.0, "BATTERY_STATUS": 1.0, "VFR_HUD": 0.5,
         "LOCAL_POSITION_NED": 0.5, "MISSION_CURRENT": 1.0}
 
-    def __init__(self, builders: dict[int, Callable[[Snapshot], ttapi.Message]],
+    def __init__(self, b: Bindings, builders: dict[int, Callable[[Snapshot], Any]],
                  defaults: dict[str, float] | None = None) -> None:
         self.builders = builders
-        names = {cls.MSG_ID: cls.NAME for cls in ttapi.ALL}
+        names = {mid: info.cls.NAME for mid, info in b.registry.items()}
         table = defaults or self.DEFAULTS
         self.default: dict[int, float | None] = {mid: table.get(names.get(mid, ""), None) for mid in builders}
         self.interval: dict[int, float | None] = dict(self.default)
@@ -150,7 +152,7 @@ class Rates:
 
     def set_all(self, hz: float) -> None:
         """REQUEST_DATA_STREAM(ALL): everything but the heartbeat at `hz` (0: stop)."""
-        heartbeat_id = ttapi.Heartbeat.MSG_ID
+        heartbeat_id = 0  # HEARTBEAT
         for mid in self.builders:
             if mid != heartbeat_id:
                 self.interval[mid] = 1.0 / hz if hz > 0 else None

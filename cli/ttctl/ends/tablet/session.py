@@ -14,12 +14,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import ttapi
-
 from ...link.transport import Spec, make_transport
 from ...proto.endpoint import CONTROL, Endpoint
 from ...proto.storage import ReceiveDir
 from ...proto.transfer import TransferConfig
+from ...wire.bindings import Bindings
+from ...wire.contract import TtAction
 from ..runtime import Runner
 
 TABLET = (255, 190)
@@ -58,10 +58,13 @@ class LinkView:
 
 
 class TabletSession:
-    def __init__(self, spec: Spec, target: tuple[int, int] = (1, 240), rate_Bps: float | None = None,
-                 inbox: Path | None = None, timeout: float = 60.0,
+    """`bindings`: the dialect on the link (the vehicle's messages arrive as its classes)."""
+
+    def __init__(self, bindings: Bindings, spec: Spec, target: tuple[int, int] = (1, 240),
+                 rate_Bps: float | None = None, inbox: Path | None = None, timeout: float = 60.0,
                  on_event: Callable[[str, dict[str, Any]], None] | None = None,
                  log: Callable[[str], None] | None = None, signing: Any = None) -> None:
+        self.b = bindings
         self.spec = spec
         self.target = target
         self.vehicle = VehicleView()
@@ -70,7 +73,7 @@ class TabletSession:
         self.log = log or (lambda text: None)
         self.store = ReceiveDir(inbox) if inbox is not None else None
         self.transport = make_transport(spec, log=lambda text: self.log(f"{spec.kind}: {text}"))
-        self.ep = Endpoint(*TABLET, mtu=self.transport.mtu, rate_Bps=rate_Bps, receive_dir=self.store,
+        self.ep = Endpoint(bindings, *TABLET, mtu=self.transport.mtu, rate_Bps=rate_Bps, receive_dir=self.store,
                            config=TransferConfig(give_up_after=timeout), on_message=self._on_message,
                            on_event=self._on_file_event, accept_commands=False, unsolicited=False,
                            signing=signing)
@@ -93,8 +96,9 @@ class TabletSession:
         """A HEARTBEAT a second: the vehicle's link-loss watch hears the tablet by it."""
         while True:
             self.runner.sync()
-            self.ep.send_message(ttapi.Heartbeat(type=int(ttapi.MavType.MAV_TYPE_GCS),
-                                                 autopilot=int(ttapi.MavAutopilot.MAV_AUTOPILOT_INVALID)), CONTROL)
+            b = self.b
+            self.ep.send_message(b.Heartbeat(type=int(b.MavType.MAV_TYPE_GCS),
+                                             autopilot=int(b.MavAutopilot.MAV_AUTOPILOT_INVALID)), CONTROL)
             self.runner.kick()
             await asyncio.sleep(1.0)
 
@@ -113,27 +117,28 @@ class TabletSession:
             return
         v.heard = now
         self.link.frames += 1
-        if isinstance(msg, ttapi.Heartbeat):
+        b = self.b
+        if isinstance(msg, b.Heartbeat):
             self.heartbeats += 1
             main, sub = (msg.custom_mode >> 16) & 0xFF, (msg.custom_mode >> 24) & 0xFF
-            armed = bool(msg.base_mode & ttapi.MavModeFlag.MAV_MODE_FLAG_SAFETY_ARMED)
+            armed = bool(msg.base_mode & b.MavModeFlag.MAV_MODE_FLAG_SAFETY_ARMED)
             state = STATES.get((main, sub), f"mode {main}/{sub}")
             if (state, armed) != (v.state, v.armed):
                 v.state, v.armed = state, armed
                 self.on_event("state", {"state": state, "armed": armed})
-        elif isinstance(msg, ttapi.TtOdometry):
+        elif isinstance(msg, b.TtOdometry):
             v.n, v.e, v.altitude = float(msg.position[0]), float(msg.position[1]), -float(msg.position[2])
             v.speed = math.hypot(float(msg.linear[0]), float(msg.linear[1]))
-        elif isinstance(msg, ttapi.TtNavSatFix):
+        elif isinstance(msg, b.TtNavSatFix):
             v.lat, v.lon = msg.latitude / 1e7, msg.longitude / 1e7
-        elif isinstance(msg, ttapi.TtLog):
+        elif isinstance(msg, b.TtLog):
             text = self._log_line(msg)
             if text is not None:
                 v.log.append(text)
                 self.on_event("log", {"text": text, "severity": msg.severity})
         self._changed.set()
 
-    def _log_line(self, msg: ttapi.TtLog) -> str | None:
+    def _log_line(self, msg: Any) -> str | None:
         """A whole TT_LOG line, once its last chunk is in (chunks of one id, by chunk_seq)."""
         raw = msg.text.encode("utf-8", "surrogateescape")
         if msg.id == 0:
@@ -170,7 +175,7 @@ class TabletSession:
                       retries: int = 4, timeout: float = 1.5) -> tuple[bool, str]:
         """Send a TT_ACTION_COMMAND and wait for its ack: (ok, words)."""
         p = (list(params or []) + [0.0] * 4)[:4]
-        msg = ttapi.TtActionCommand(action=action, param=p, argument=argument.encode("utf-8")[:48].decode(
+        msg = self.b.TtActionCommand(action=action, param=p, argument=argument.encode("utf-8")[:48].decode(
             "utf-8", "ignore"))
         done = asyncio.get_running_loop().create_future()
 
@@ -185,7 +190,7 @@ class TabletSession:
         self.runner.kick()
         await done
         self.link.rtt_ms = (time.monotonic() - t0) * 1000 if cmd.ok else self.link.rtt_ms
-        name = ttapi.TtAction(action).name.removeprefix("TT_ACTION_").lower()
+        name = TtAction(action).name.removeprefix("TT_ACTION_").lower()
         if cmd.ok:
             return True, f"{name}: accepted"
         return False, f"{name}: {cmd.error}"
@@ -194,10 +199,10 @@ class TabletSession:
         """A DJI_POSE_STAMPED set-point (position north, east, altitude above home)."""
         now = time.time()
         self.runner.sync()
-        self.ep.send_message(ttapi.DjiPoseStamped(target_system=self.target[0], sec=int(now),
-                                                  nsec=int((now % 1) * 1e9),
-                                                  topic_name=int(ttapi.DjiTopicName.DJI_TOPIC_NAME_SETPOINT),
-                                                  position=[n, e, alt], orientation=[0.0, 0.0, 0.0, 1.0]), CONTROL)
+        b = self.b
+        self.ep.send_message(b.DjiPoseStamped(target_system=self.target[0], sec=int(now), nsec=int((now % 1) * 1e9),
+                                              topic_name=int(b.DjiTopicName.DJI_TOPIC_NAME_SETPOINT),
+                                              position=[n, e, alt], orientation=[0.0, 0.0, 0.0, 1.0]), CONTROL)
         self.runner.kick()
 
     async def send_file(self, path: Path, name: str | None = None, overwrite: bool = True) -> tuple[bool, str]:

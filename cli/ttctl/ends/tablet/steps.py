@@ -32,11 +32,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import ttapi
-
+from ...wire.contract import TtAction as A
 from .session import TabletSession
 
-A = ttapi.TtAction
 NAMES = ("takeoff", "land", "hover", "return", "goto", "move", "fly", "send", "fetch", "wait", "status", "watch")
 FIELDS = ("state", "armed", "altitude", "n", "e", "speed")
 _COND = re.compile(r"^\s*(\w+)\s*(>=|<=|==|!=|>|<)\s*(.+?)\s*$")
