@@ -1,16 +1,19 @@
 """The generated Python package for dialects unlike ttapi.xml (no enums, no arrays, fields named
 like digits, nothing the onboard end receives): it imports, passes ruff's defaults and mypy
---strict."""
+--strict; and uint8_t[N] fields take what pymavlink takes, encoding the same bytes."""
 
 from __future__ import annotations
 
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+from pymavlink.dialects.v20 import common as pm
 
+import ttapi
 from conftest import run_ttctl
 
 BIN = Path(sys.executable).parent
@@ -88,3 +91,55 @@ def test_odd_dialect_packages_pass_ruff_defaults_and_mypy_strict(odd_packages: P
 def test_ambiguous_field_names_stay_as_in_the_xml(odd_packages: Path) -> None:
     text = (odd_packages / "ambiguous_names" / "messages.py").read_text()
     assert "self.I = I" in text and "self.l = l" in text and "self.O = O" in text
+
+
+# --- uint8_t[N]: bytes, bytearray or a sequence of ints, as pymavlink takes them ------------
+
+def _pm_ftp(payload: object) -> bytes:
+    mav = pm.MAVLink(None, srcSystem=1, srcComponent=1)
+    return bytes(pm.MAVLink_file_transfer_protocol_message(0, 1, 2, payload).pack(mav))
+
+
+@pytest.mark.parametrize("kind", ["bytes", "bytearray", "list", "tuple", "range"])
+def test_uint8_array_takes_what_pymavlink_takes_and_encodes_the_same(kind: str) -> None:
+    values = [(i * 37) % 256 for i in range(251)]
+    given: object = {"bytes": bytes(values), "bytearray": bytearray(values), "list": values,
+                     "tuple": tuple(values), "range": range(251)}[kind]
+    if kind == "range":
+        values = list(range(251))
+    ours = ttapi.FileTransferProtocol(target_network=0, target_system=1, target_component=2,
+                                      payload=given)  # type: ignore[arg-type]
+    assert ours.pack(0, 1, 1) == _pm_ftp(values)
+    assert ours.payload == bytes(values) and ttapi.decode(ours.pack()) == ours
+
+
+def test_uint8_array_list_with_a_zero_tail_truncates_as_pymavlink() -> None:
+    values = [1, 2, 3] + [0] * 248
+    frame = ttapi.FileTransferProtocol(target_system=1, target_component=2, payload=values).pack(0, 1, 1)
+    assert frame == _pm_ftp(values) and frame[1] == 6  # 3 header bytes + 3 payload bytes kept
+
+
+@pytest.mark.parametrize(("given", "needle"), [
+    ([1, 256], "FILE_TRANSFER_PROTOCOL.payload: uint8_t[251] takes bytes or integers 0..255, not 256"),
+    ([-1], "not -1"),
+    ([1.5], "not 1.5"),
+    (["a"], "not 'a'"),
+    ("text", "not a str"),
+    (7, "not an int"),
+])
+def test_uint8_array_bad_values_are_clear_value_errors(given: object, needle: str) -> None:
+    with pytest.raises(ValueError, match=re.escape(needle)):
+        ttapi.FileTransferProtocol(payload=given).pack()  # type: ignore[arg-type]
+
+
+def test_uint8_array_assigned_after_construction_is_checked_when_packed() -> None:
+    msg = ttapi.TtFileData(transfer_id=1, offset=2)
+    msg.data = [9] * 80  # type: ignore[assignment]
+    assert msg.pack() == ttapi.TtFileData(transfer_id=1, offset=2, data=bytes([9] * 80)).pack()
+    msg.data = [300]  # type: ignore[assignment]
+    with pytest.raises(ValueError, match=re.escape("TT_FILE_DATA.data: uint8_t[80] takes bytes or integers 0..255, "
+                                                   "not 300")):
+        msg.pack()
+    msg.data = [1] * 81  # type: ignore[assignment]
+    with pytest.raises(ValueError, match=re.escape("TT_FILE_DATA.data: 81 bytes do not fit uint8_t[80]")):
+        msg.pack()

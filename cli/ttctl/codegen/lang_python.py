@@ -70,6 +70,19 @@ def py_type(f: Field) -> str:
     return f"Sequence[{base}]" if f.array_length else base
 
 
+def init_type(f: Field) -> str:
+    """Annotation of the constructor parameter: what the attribute holds, and for uint8_t
+    arrays also what pymavlink takes (a bytearray, a sequence of ints), converted to bytes."""
+    return "bytes | bytearray | Sequence[int]" if is_bytes(f) else py_type(f)
+
+
+def init_value(m: Message, f: Field) -> str:
+    """The constructor's expression assigning parameter `f` to its attribute."""
+    if is_bytes(f):  # the length is checked when packed, as for bytes
+        return f'_ubytes({f.name}, {f.array_length}, "{m.name}.{f.name}", False)'
+    return f.name
+
+
 # Names pycodestyle finds ambiguous (E741: l, O, I look like 1 and 0). A field keeps its XML
 # name (users and pymavlink spell it so), so the lines binding it as a name silence E741; and
 # RUF100 too, which ruff's newer default rule set (without E741) would raise on that noqa.
@@ -85,10 +98,11 @@ def message_imports(messages: list[Message]) -> dict[str, bool]:
     """Which helpers the messages module needs (unused imports fail ruff's F401)."""
     fields = [f for m in messages for f in m.fields]
     return {
-        "Sequence": any(is_seq(f) for f in fields),
+        "Sequence": any(is_seq(f) or is_bytes(f) for f in fields),
         "_array": any(is_seq(f) for f in fields),
-        "_cbytes": any(is_text(f) or is_bytes(f) for f in fields),
+        "_cbytes": any(is_text(f) for f in fields),
         "_cstr": any(is_text(f) for f in fields),
+        "_ubytes": any(is_bytes(f) for f in fields),
     }
 
 
@@ -115,7 +129,7 @@ def pack_arg(m: Message, f: Field) -> str:
     if is_text(f):
         return f"_cbytes(self.{f.name}, {size}, {where})"
     if is_bytes(f):
-        return f"_cbytes(self.{f.name}, {size}, {where})"
+        return f"_ubytes(self.{f.name}, {size}, {where})"
     if f.array_length:
         return f"*_array(self.{f.name}, {f.array_length}, {where})"
     return f"self.{f.name}"
@@ -244,6 +258,8 @@ class _Python:
             "is_text": is_text,
             "is_bytes": is_bytes,
             "is_seq": is_seq,
+            "init_type": init_type,
+            "init_value": init_value,
             "noqa": noqa,
             "message_imports": message_imports,
             "enum_imports": enum_imports,
