@@ -19,21 +19,18 @@ from .model import (
     frame_length,
 )
 from .names import (
+    C_MACROS,
     GENERATED_MESSAGE_MEMBERS,
     IDENTIFIER_RE,
     JAVA_RESERVED_TYPES,
-    LANGUAGE_KEYWORDS,
+    RESERVED_WORDS,
     RUNTIME_TYPE_NAMES,
     camel,
     keyword_hits,
     lower_camel,
     reserved_identifier,
+    spelled,
 )
-
-_LOWER_KEYWORDS: dict[str, list[str]] = {}
-for _lang, _words in LANGUAGE_KEYWORDS.items():
-    for _w in _words:
-        _LOWER_KEYWORDS.setdefault(_w.lower(), []).append(_lang)
 
 
 class CheckOptions(NamedTuple):
@@ -98,37 +95,34 @@ def _duplicates(d: Dialect, rep: Reporter) -> None:
                     values[vkey] = (entry.name, entry.loc)
 
 
-_ALL_KEYWORDS = frozenset(_LOWER_KEYWORDS) | frozenset(w for ws in LANGUAGE_KEYWORDS.values() for w in ws)
-
-
 def _plainly_fine(name: str) -> bool:
-    """Fast pre-check for the common case; names failing it get the full treatment."""
-    return (IDENTIFIER_RE.match(name) is not None and name not in _ALL_KEYWORDS
-            and name.lower() not in _ALL_KEYWORDS and reserved_identifier(name) is None
-            and keyword_hits(name) == [])
+    """Fast pre-check for a field or entry name (spelled as written); names failing it get
+    the full treatment."""
+    return (IDENTIFIER_RE.match(name) is not None and name not in RESERVED_WORDS
+            and reserved_identifier(name) is None)
 
 
 def _identifier(loc: Loc, kind: str, name: str, rep: Reporter, fold_case: bool) -> bool:
-    """Valid identifier, not a keyword, not reserved. Returns False if the name is unusable."""
+    """Valid identifier, not a keyword, not reserved, as the generators spell it (`fold_case`:
+    a message or enum name, which they CamelCase). Returns False if the name is unusable."""
     if not IDENTIFIER_RE.match(name):
         rep.error(loc, "NAME-INVALID",
                   f"{kind} name '{name}' is not a valid identifier in C, C++, Java and Python "
                   "(ASCII letters, digits and '_', not starting with a digit)", name)
         return False
-    hits = keyword_hits(name)
-    spelled = name
-    if not hits and fold_case:
-        # message and enum names appear lower-cased and CamelCased in generated code
-        for variant in (name.lower(), camel(name)):
-            found = keyword_hits(variant) or _LOWER_KEYWORDS.get(variant, [])
-            if found:
-                hits, spelled = list(dict.fromkeys(found)), variant
-                break
+    ident = spelled(name, fold_case)
+    hits = keyword_hits(ident)
     if hits:
-        where = f" (as '{spelled}')" if spelled != name else ""
+        where = f" (as '{ident}')" if ident != name else ""
         rep.error(loc, "KEYWORD",
                   f"{kind} name '{name}'{where} is a reserved word in {', '.join(hits)}; generated code "
                   "would not compile", name)
+        return False
+    macro = C_MACROS.get(ident)
+    if macro:
+        rep.error(loc, "RESERVED-NAME",
+                  f"{kind} name '{name}' is {macro}, so it cannot name anything in C++ (the macro replaces it)",
+                  name)
         return False
     why = reserved_identifier(name)
     if why:
