@@ -291,6 +291,6 @@ def _enum(e: Enum, rep: Reporter) -> None:
         if x.value > INTEGER_RANGES["uint64_t"][1]:
             rep.error(x.loc, "ENUM-VALUE-RANGE",
                       f"{e.name}.{x.name} = {x.value} does not fit in 64 bits", x.name)
-        elif e.bitmask and (x.value <= 0 or x.value & (x.value - 1)):
+        elif e.bitmask and x.value & (x.value - 1):  # 0, "no flags", is fine (MAV_BOOL_FALSE...)
             rep.warning(x.loc, "BITMASK-VALUE",
                         f"{e.name} is a bitmask but {x.name} = {x.value} is not a power of two", x.name)

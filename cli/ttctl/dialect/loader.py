@@ -149,9 +149,11 @@ class _FileReader:
                 else:
                     parsed = parse_enum_value(raw)
                     if parsed is None:
-                        self.error(child, "value", "ENUM-VALUE",
-                                   f"enum entry {ename}: value '{raw}' is not an integer "
-                                   "(decimal, 0x hex, 0b binary or 2**N)", ename)
+                        bare = raw.strip()
+                        why = ("is negative; the schema (mavschema.xsd) allows enum values from 0 up"
+                               if bare[:1] == "-" and parse_enum_value(bare[1:]) is not None else
+                               "is not an integer (decimal, 0x hex, 0b binary or 2**N)")
+                        self.error(child, "value", "ENUM-VALUE", f"enum entry {ename}: value '{raw}' {why}", ename)
                         continue
                     value, auto = parsed, False
                 highest = max(highest, value)
