@@ -15,6 +15,7 @@ from .model import (
     Dialect,
     Enum,
     EnumEntry,
+    Field,
     Message,
     frame_length,
 )
@@ -44,8 +45,18 @@ def check_dialect(d: Dialect, rep: Reporter, opts: CheckOptions | None = None) -
     _names(d, rep)
     own = {id(m) for m in d.root.messages}  # a set: a list test per message made validation quadratic
     misfits: dict[tuple[str, str], list[EnumEntry]] = {}  # per (enum, field type): once, not once per field
+    # with an include missing, references to undefined enums are one error, not a flood
+    undefined: list[tuple[Message, Field]] | None = [] if d.incomplete else None
     for m in d.messages:
-        _message(d, m, rep, opts, own=id(m) in own, misfits=misfits)
+        _message(d, m, rep, opts, own=id(m) in own, misfits=misfits, undefined=undefined)
+    if undefined:
+        m, f = undefined[0]
+        more = sorted({g.enum or "" for _, g in undefined})
+        shown = ", ".join(more[:5]) + (" ..." if len(more) > 5 else "")
+        rep.error(f.loc.at("enum"), "UNDEFINED-ENUM",
+                  f"{m.name}.{f.name} refers to enum {f.enum}, which is not defined here or in any include; so do "
+                  f"{len(undefined) - 1} more fields (enums {shown}), perhaps defined in the missing include(s)",
+                  f.enum)
     for e in d.enums:
         _enum(e, rep)
 
@@ -225,7 +236,7 @@ def _names(d: Dialect, rep: Reporter) -> None:
 
 
 def _message(d: Dialect, m: Message, rep: Reporter, opts: CheckOptions, own: bool,
-             misfits: dict[tuple[str, str], list[EnumEntry]]) -> None:
+             misfits: dict[tuple[str, str], list[EnumEntry]], undefined: list[tuple[Message, Field]] | None) -> None:
     if m.complete and m.payload_length > MAX_PAYLOAD:
         ext = sum(f.wire_length for f in m.extension_fields)
         detail = f" ({m.min_length} B base + {ext} B extensions)" if ext else ""
@@ -241,6 +252,9 @@ def _message(d: Dialect, m: Message, rep: Reporter, opts: CheckOptions, own: boo
             continue
         e = d.enums_by_name.get(f.enum)
         if e is None:
+            if undefined is not None:
+                undefined.append((m, f))
+                continue
             rep.error(f.loc.at("enum"), "UNDEFINED-ENUM",
                       f"{m.name}.{f.name} refers to enum {f.enum}, which is not defined here or in any include",
                       f.enum)
