@@ -86,7 +86,8 @@ LANGUAGE_KEYWORDS: dict[str, frozenset[str]] = {
 # C++ namespace): a message or enum whose CamelCase name is one of these would clash.
 RUNTIME_TYPE_NAMES = _words(
     """Message MessageInfo Parser ParserStats Encoder Signing DecodeError BasicPacketizer DecodeStatus
-    Dispatcher Frame IsBitmask Packetizer Plugin Sha256 SignatureCheck PacketReceiver ReceiverStats"""
+    Dispatcher Frame IsBitmask Packetizer Plugin Sha256 SignatureCheck PacketReceiver ReceiverStats
+    Outbox NullOutbox"""
 )
 
 # Members every generated message class/struct defines; a field of the same name would
