@@ -150,7 +150,7 @@ def test_hidden_pymavlink_warnings_can_be_shown() -> None:
     quiet = run_ttctl("validate", str(TTAPI))
     loud = run_ttctl("validate", str(TTAPI), "--all-warnings")
     assert "hidden (--all-warnings)" in quiet.stdout
-    assert "[BITMASK-VALUE]" in loud.stdout and "[BITMASK-VALUE]" not in quiet.stdout
+    assert "[ENUM-VALUE-RANGE]" in loud.stdout and "[ENUM-VALUE-RANGE]" not in quiet.stdout
 
 
 def test_unwritable_stdout_does_not_traceback(tmp_path: Path) -> None:

@@ -1,4 +1,4 @@
-"""The broken-dialect corpus: each offending line carries `<!-- expect: SEVERITY CODE -->`,
+"""The broken-dialect corpus: each offending line carries `<!-- expect: error|warning|note CODE -->`,
 and validation must report exactly those diagnostics (code, severity, file, line)."""
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from conftest import ROOT, run_ttctl
 from ttctl.validate import load_and_check
 
 CORPUS = ROOT / "tests" / "dialects" / "broken"
-EXPECT_RE = re.compile(r"<!--\s*expect:\s*(error|warning)\s+([A-Z0-9-]+)\s*-->")
+EXPECT_RE = re.compile(r"<!--\s*expect:\s*(error|warning|note)\s+([A-Z0-9-]+)\s*-->")
 
 
 def cases() -> list[Path]:

@@ -9,7 +9,7 @@ import sys
 from pathlib import Path
 
 from .codegen.engine import LANGUAGES, Names, language, render, write_tree
-from .dialect.names import C_RESERVED, CPP_KEYWORDS, IDENTIFIER_RE, JAVA_KEYWORDS, PYTHON_KEYWORDS
+from .dialect.names import C_RESERVED, CPP_KEYWORDS, IDENTIFIER_RE, JAVA_CONTEXTUAL, JAVA_KEYWORDS, PYTHON_KEYWORDS
 from .validate import include_dir_problem, load_and_check, user_warnings
 
 DEFAULT_DIALECT = "dialects/ttapi.xml"
@@ -41,8 +41,6 @@ _CPP_MACROS = frozenset({"linux", "unix", "errno", "math_errhandling", "sched_pr
 # for the namespace) and `main` are global names of cpp/conformance.cpp.
 _CPP_TAKEN = frozenset({"std", "detail", "onboard"})
 _CPP_TOP_TAKEN = frozenset({"mav", "main"})
-# Contextual words that are Java keywords only as type names: fine as a package name.
-_JAVA_CONTEXTUAL = frozenset({"var", "yield", "record", "sealed", "permits"})
 # Variables in scope where the generated Registry and Conformance name the package in full: a
 # first package segment of one of these names would be read as the variable.
 _JAVA_LOCALS = frozenset({"all", "doc", "fields", "frame", "hex", "id", "info", "len", "m", "messageName",
@@ -85,7 +83,7 @@ def java_package_problem(name: str) -> str | None:
     for seg in parts:
         if not IDENTIFIER_RE.match(seg):
             return f"'{seg}' is not a Java identifier" if seg else "not a Java package (a or a.b.c)"
-        if seg in JAVA_KEYWORDS and seg not in _JAVA_CONTEXTUAL:
+        if seg in JAVA_KEYWORDS and seg not in JAVA_CONTEXTUAL:
             return f"'{seg}' is a Java keyword or literal"
     first = parts[0]
     if first == "java":

@@ -67,7 +67,7 @@ def run_validate(path: str, include_dirs: list[str], mtu: int, signed: bool, fmt
     hidden = 0
     if not all_warnings and not _in_pymavlink(path):
         # warnings inside the definitions pymavlink ships are not the user's to fix
-        kept = [d for d in diags if d.severity == "error" or not _in_pymavlink(d.path)]
+        kept = [d for d in diags if d.severity != "warning" or not _in_pymavlink(d.path)]
         hidden = len(diags) - len(kept)
         diags = kept
     code = EXIT_ERRORS if rep.errors else EXIT_OK
@@ -77,7 +77,7 @@ def run_validate(path: str, include_dirs: list[str], mtu: int, signed: bool, fmt
 
 def _emit(diags: list[Diagnostic], fmt: str, path: str, dialect: Dialect | None, code: int, hidden: int) -> None:
     errors = sum(d.severity == "error" for d in diags)
-    warnings = len(diags) - errors
+    warnings = sum(d.severity == "warning" for d in diags)
     out = sys.stdout
     if fmt == "json":
         import json
@@ -87,6 +87,7 @@ def _emit(diags: list[Diagnostic], fmt: str, path: str, dialect: Dialect | None,
             "ok": errors == 0 and code != EXIT_UNREADABLE,
             "errors": errors,
             "warnings": warnings,
+            "notes": len(diags) - errors - warnings,
             "hidden_warnings": hidden,
             "diagnostics": [d.as_json() for d in diags],
         }

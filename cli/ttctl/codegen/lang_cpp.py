@@ -3,7 +3,7 @@ a conformance program, and an onboard handler-plugin skeleton.
 
 Layout under the output root (<ident>: the dialect's identifier; with --cpp-namespace a::b the
 headers go to cpp/a/b/ instead of cpp/<ident>/):
-  cpp/<ident>/runtime.hpp     CRC, little-endian helpers, framing, Parser, Dispatcher, Plugin
+  cpp/<ident>/runtime.hpp     CRC, little-endian helpers, framing, Parser, Outbox, Dispatcher, Plugin
   cpp/<ident>/signing.hpp     SHA-256 and MAVLink 2 signing (included by runtime.hpp)
   cpp/<ident>/packets.hpp     Packetizer and the packet-aware PacketReceiver (included by runtime.hpp)
   cpp/<ident>/enums.hpp       one `enum class` per enum
@@ -140,6 +140,19 @@ def handler_name(m: Message) -> str:
     return f"on_{m.name.lower()}"
 
 
+def handler_fields(m: Message, indent: int = 4) -> str:
+    """A handler's comment lines listing the message's fields: name (type, units, enum) and
+    description, in XML order."""
+    lines = [" " * indent + "/// Fields of msg:"]
+    for f in m.fields:
+        notes = [f.declared_type, *([f.units] if f.units else []), *([f"enum {camel(f.enum)}"] if f.enum else []),
+                 *(["extension"] if f.extension else [])]
+        head = f"- {f.name} ({', '.join(notes)})"
+        text = _clean(f.description)
+        lines.extend(comment(f"{head}: {text}" if text else head, indent, prefix="///   ").split("\n"))
+    return "\n".join(lines)
+
+
 def field_kind(f: Field) -> str:
     """How the conformance program presents a field: text (char), float, int; arrays are
     lists of those (except char arrays, which are text)."""
@@ -197,6 +210,7 @@ class _Cpp:
             "comment": comment,
             "field_comment": field_comment,
             "handler_name": handler_name,
+            "handler_fields": handler_fields,
             "local": local,
             "field_kind": field_kind,
         }

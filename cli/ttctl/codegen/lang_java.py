@@ -23,7 +23,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from ..dialect.model import Dialect, Enum, Field, Message
+from ..dialect.model import INTEGER_RANGES, Dialect, Enum, Field, Message
 from ..dialect.names import JAVA_KEYWORDS, JAVA_RESERVED_TYPES, camel
 from .engine import Output, dialect_ident, receives, sends
 from .text import wrap
@@ -410,6 +410,50 @@ def expected_reply(m: Message, d: Dialect) -> tuple[Message, list[str]] | None:
     return reply, fields
 
 
+# Java types narrower than an enum's constants (int, or long past int): a field of such a type
+# typed by an enum takes the constants' type in a Send skeleton, range-checked into the field.
+_WIDTH = {"byte": 1, "short": 2, "int": 4, "long": 8}
+
+
+def ctor_type(f: Field, d: Dialect) -> str:
+    """The type of a Send skeleton's constructor parameter for field f: the field's Java type,
+    or for a scalar typed by an enum whose constants are wider (a byte field, int constants)
+    the constants' type, so that `new SendX(SomeEnum.ENTRY)` compiles without a cast."""
+    e = d.enums_by_name.get(f.enum) if f.enum and not f.array_length else None
+    own = java_type(f)
+    if e is None or own not in _WIDTH:
+        return own
+    wider = enum_type(e)
+    return wider if _WIDTH[wider] > _WIDTH[own] else own
+
+
+def ctor_assign(m: Message, f: Field, d: Dialect) -> str:
+    """The expression a Send skeleton's constructor assigns to field f: the argument, range
+    checked and narrowed when ctor_type widened it; a copy of an array (a retry must pack the
+    values given, whatever the caller does with its array afterwards)."""
+    if f.array_length:
+        return f"{f.name} == null ? null : {f.name}.clone()"
+    own = java_type(f)
+    if ctor_type(f, d) == own:
+        return f.name
+    lo, hi = (str(v) + ("L" if abs(v) >= 2**31 else "") for v in INTEGER_RANGES[f.type])
+    return f'({own}) Wire.checkRange({f.name}, {lo}, {hi}, "{m.name}.{f.name}", "{f.type}")'
+
+
+def ctor_doc(m: Message, d: Dialect) -> str:
+    """The Javadoc of a Send skeleton's constructor."""
+    text = "The values to send, packed anew on every try."
+    narrowed = [f for f in m.fields if ctor_type(f, d) != java_type(f)]
+    if narrowed:
+        one = len(narrowed) == 1
+        names = ", ".join(f"{f.name} ({f.declared_type})" for f in narrowed)
+        text += (f" {names} take{'s' * one} the constants of {'its enum' if one else 'their enums'} as they are and "
+                 f"{'is' if one else 'are'} range-checked into the field{'' if one else 's'}.")
+    if any(f.array_length for f in m.fields):
+        text += " Arrays are copied: changing yours afterwards changes nothing sent."
+    return text
+
+
 def scalar_target(m: Message) -> bool:
     f = m.field("target_system")
     return bool(f and not f.array_length and f.type == "uint8_t")
@@ -511,6 +555,10 @@ class _Java:
             "expected_reply": lambda m: expected_reply(m, d),
             "reply_conditions": lambda m: reply_conditions(m, d),
             "scalar_target": scalar_target,
+            "ctor_type": lambda f: ctor_type(f, d),
+            "narrowed": lambda m: [f.name for f in m.fields if ctor_type(f, d) != java_type(f)],
+            "ctor_doc": lambda m: ctor_doc(m, d),
+            "ctor_assign": lambda m, f: refs.qualify(ctor_assign(m, f, d)),
             "type_mapping": TYPE_MAPPING,
             "rt": refs.rt,
             "rt_imports": refs.rt_imports,

@@ -70,6 +70,47 @@ def py_type(f: Field) -> str:
     return f"Sequence[{base}]" if f.array_length else base
 
 
+def init_type(f: Field) -> str:
+    """Annotation of the constructor parameter: what the attribute holds, and for uint8_t
+    arrays also what pymavlink takes (a bytearray, a sequence of ints), converted to bytes."""
+    return "bytes | bytearray | Sequence[int]" if is_bytes(f) else py_type(f)
+
+
+def init_value(m: Message, f: Field) -> str:
+    """The constructor's expression assigning parameter `f` to its attribute."""
+    if is_bytes(f):  # the length is checked when packed, as for bytes
+        return f'_ubytes({f.name}, {f.array_length}, "{m.name}.{f.name}", False)'
+    return f.name
+
+
+# Names pycodestyle finds ambiguous (E741: l, O, I look like 1 and 0). A field keeps its XML
+# name (users and pymavlink spell it so), so the lines binding it as a name silence E741; and
+# RUF100 too, which ruff's newer default rule set (without E741) would raise on that noqa.
+_AMBIGUOUS = frozenset({"l", "O", "I"})
+
+
+def noqa(f: Field) -> str:
+    """A targeted noqa for a line that binds field `f` as a name, if it needs one."""
+    return "  # noqa: E741, RUF100" if f.name in _AMBIGUOUS else ""
+
+
+def message_imports(messages: list[Message]) -> dict[str, bool]:
+    """Which helpers the messages module needs (unused imports fail ruff's F401)."""
+    fields = [f for m in messages for f in m.fields]
+    return {
+        "Sequence": any(is_seq(f) or is_bytes(f) for f in fields),
+        "_array": any(is_seq(f) for f in fields),
+        "_cbytes": any(is_text(f) for f in fields),
+        "_cstr": any(is_text(f) for f in fields),
+        "_ubytes": any(is_bytes(f) for f in fields),
+    }
+
+
+def enum_imports(enums: list[Enum]) -> list[str]:
+    """The enum base classes the enums module uses."""
+    return sorted({enum_base(e) for e in enums})
+
+
 def default(f: Field, d: Dialect) -> str:
     if f.mavlink_version:
         return str(d.version)
@@ -88,7 +129,7 @@ def pack_arg(m: Message, f: Field) -> str:
     if is_text(f):
         return f"_cbytes(self.{f.name}, {size}, {where})"
     if is_bytes(f):
-        return f"_cbytes(self.{f.name}, {size}, {where})"
+        return f"_ubytes(self.{f.name}, {size}, {where})"
     if f.array_length:
         return f"*_array(self.{f.name}, {f.array_length}, {where})"
     return f"self.{f.name}"
@@ -144,10 +185,10 @@ def _natural(s: str) -> list[Any]:
 
 def isort_sorted(names: list[str]) -> list[str]:
     """The order ruff's RUF022 wants for __all__: SCREAMING_CASE, then CamelCase, then the
-    rest, each in natural order."""
+    rest, each in natural order. A single capital (an enum named F) counts as CamelCase."""
 
     def key(n: str) -> tuple[int, list[Any]]:
-        if n.isupper() or (n.upper() == n and any(c.isalpha() for c in n)):
+        if len(n) > 1 and n.upper() == n and any(c.isalpha() for c in n):
             group = 0
         elif n[:1].isupper():
             group = 1
@@ -159,13 +200,12 @@ def isort_sorted(names: list[str]) -> list[str]:
 
 
 def import_sorted(names: list[str]) -> list[str]:
-    """isort's order of names in `from x import (...)`: CONSTANTS, Classes, functions, each
-    case-insensitively."""
+    """isort's order of names in `from x import (...)`: CONSTANTS (two characters or more),
+    Classes, functions, each case-insensitively in natural order (F2A before F13)."""
 
-    def key(n: str) -> tuple[int, str]:
-        if n.upper() == n:
-            return 0, n
-        return (1 if n[:1].isupper() else 2), n.lower()
+    def key(n: str) -> tuple[int, list[Any]]:
+        group = 0 if len(n) > 1 and n.upper() == n else (1 if n[:1].isupper() else 2)
+        return group, _natural(n.lower())
 
     return sorted(names, key=key)
 
@@ -217,6 +257,11 @@ class _Python:
             "is_text": is_text,
             "is_bytes": is_bytes,
             "is_seq": is_seq,
+            "init_type": init_type,
+            "init_value": init_value,
+            "noqa": noqa,
+            "message_imports": message_imports,
+            "enum_imports": enum_imports,
         }
 
 

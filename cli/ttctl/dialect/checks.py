@@ -15,25 +15,23 @@ from .model import (
     Dialect,
     Enum,
     EnumEntry,
+    Field,
     Message,
     frame_length,
 )
 from .names import (
+    C_MACROS,
     GENERATED_MESSAGE_MEMBERS,
     IDENTIFIER_RE,
     JAVA_RESERVED_TYPES,
-    LANGUAGE_KEYWORDS,
+    RESERVED_WORDS,
     RUNTIME_TYPE_NAMES,
     camel,
     keyword_hits,
     lower_camel,
     reserved_identifier,
+    spelled,
 )
-
-_LOWER_KEYWORDS: dict[str, list[str]] = {}
-for _lang, _words in LANGUAGE_KEYWORDS.items():
-    for _w in _words:
-        _LOWER_KEYWORDS.setdefault(_w.lower(), []).append(_lang)
 
 
 class CheckOptions(NamedTuple):
@@ -47,8 +45,18 @@ def check_dialect(d: Dialect, rep: Reporter, opts: CheckOptions | None = None) -
     _names(d, rep)
     own = {id(m) for m in d.root.messages}  # a set: a list test per message made validation quadratic
     misfits: dict[tuple[str, str], list[EnumEntry]] = {}  # per (enum, field type): once, not once per field
+    # with an include missing, references to undefined enums are one error, not a flood
+    undefined: list[tuple[Message, Field]] | None = [] if d.incomplete else None
     for m in d.messages:
-        _message(d, m, rep, opts, own=id(m) in own, misfits=misfits)
+        _message(d, m, rep, opts, own=id(m) in own, misfits=misfits, undefined=undefined)
+    if undefined:
+        m, f = undefined[0]
+        more = sorted({g.enum or "" for _, g in undefined})
+        shown = ", ".join(more[:5]) + (" ..." if len(more) > 5 else "")
+        rep.error(f.loc.at("enum"), "UNDEFINED-ENUM",
+                  f"{m.name}.{f.name} refers to enum {f.enum}, which is not defined here or in any include; so do "
+                  f"{len(undefined) - 1} more fields (enums {shown}), perhaps defined in the missing include(s)",
+                  f.enum)
     for e in d.enums:
         _enum(e, rep)
 
@@ -98,37 +106,34 @@ def _duplicates(d: Dialect, rep: Reporter) -> None:
                     values[vkey] = (entry.name, entry.loc)
 
 
-_ALL_KEYWORDS = frozenset(_LOWER_KEYWORDS) | frozenset(w for ws in LANGUAGE_KEYWORDS.values() for w in ws)
-
-
 def _plainly_fine(name: str) -> bool:
-    """Fast pre-check for the common case; names failing it get the full treatment."""
-    return (IDENTIFIER_RE.match(name) is not None and name not in _ALL_KEYWORDS
-            and name.lower() not in _ALL_KEYWORDS and reserved_identifier(name) is None
-            and keyword_hits(name) == [])
+    """Fast pre-check for a field or entry name (spelled as written); names failing it get
+    the full treatment."""
+    return (IDENTIFIER_RE.match(name) is not None and name not in RESERVED_WORDS
+            and reserved_identifier(name) is None)
 
 
 def _identifier(loc: Loc, kind: str, name: str, rep: Reporter, fold_case: bool) -> bool:
-    """Valid identifier, not a keyword, not reserved. Returns False if the name is unusable."""
+    """Valid identifier, not a keyword, not reserved, as the generators spell it (`fold_case`:
+    a message or enum name, which they CamelCase). Returns False if the name is unusable."""
     if not IDENTIFIER_RE.match(name):
         rep.error(loc, "NAME-INVALID",
                   f"{kind} name '{name}' is not a valid identifier in C, C++, Java and Python "
                   "(ASCII letters, digits and '_', not starting with a digit)", name)
         return False
-    hits = keyword_hits(name)
-    spelled = name
-    if not hits and fold_case:
-        # message and enum names appear lower-cased and CamelCased in generated code
-        for variant in (name.lower(), camel(name)):
-            found = keyword_hits(variant) or _LOWER_KEYWORDS.get(variant, [])
-            if found:
-                hits, spelled = list(dict.fromkeys(found)), variant
-                break
+    ident = spelled(name, fold_case)
+    hits = keyword_hits(ident)
     if hits:
-        where = f" (as '{spelled}')" if spelled != name else ""
+        where = f" (as '{ident}')" if ident != name else ""
         rep.error(loc, "KEYWORD",
                   f"{kind} name '{name}'{where} is a reserved word in {', '.join(hits)}; generated code "
                   "would not compile", name)
+        return False
+    macro = C_MACROS.get(ident)
+    if macro:
+        rep.error(loc, "RESERVED-NAME",
+                  f"{kind} name '{name}' is {macro}, so it cannot name anything in C++ (the macro replaces it)",
+                  name)
         return False
     why = reserved_identifier(name)
     if why:
@@ -231,7 +236,7 @@ def _names(d: Dialect, rep: Reporter) -> None:
 
 
 def _message(d: Dialect, m: Message, rep: Reporter, opts: CheckOptions, own: bool,
-             misfits: dict[tuple[str, str], list[EnumEntry]]) -> None:
+             misfits: dict[tuple[str, str], list[EnumEntry]], undefined: list[tuple[Message, Field]] | None) -> None:
     if m.complete and m.payload_length > MAX_PAYLOAD:
         ext = sum(f.wire_length for f in m.extension_fields)
         detail = f" ({m.min_length} B base + {ext} B extensions)" if ext else ""
@@ -247,6 +252,9 @@ def _message(d: Dialect, m: Message, rep: Reporter, opts: CheckOptions, own: boo
             continue
         e = d.enums_by_name.get(f.enum)
         if e is None:
+            if undefined is not None:
+                undefined.append((m, f))
+                continue
             rep.error(f.loc.at("enum"), "UNDEFINED-ENUM",
                       f"{m.name}.{f.name} refers to enum {f.enum}, which is not defined here or in any include",
                       f.enum)
@@ -297,6 +305,6 @@ def _enum(e: Enum, rep: Reporter) -> None:
         if x.value > INTEGER_RANGES["uint64_t"][1]:
             rep.error(x.loc, "ENUM-VALUE-RANGE",
                       f"{e.name}.{x.name} = {x.value} does not fit in 64 bits", x.name)
-        elif e.bitmask and (x.value <= 0 or x.value & (x.value - 1)):
+        elif e.bitmask and x.value & (x.value - 1):  # 0, "no flags", is fine (MAV_BOOL_FALSE...)
             rep.warning(x.loc, "BITMASK-VALUE",
                         f"{e.name} is a bitmask but {x.name} = {x.value} is not a power of two", x.name)

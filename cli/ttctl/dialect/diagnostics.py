@@ -1,4 +1,5 @@
-"""Diagnostics: `path:line:col: error|warning: [CODE] message`, and their JSON form."""
+"""Diagnostics: `path:line:col: error|warning|note: [CODE] message`, and their JSON form. A note
+informs (which shipped file an include used, say): it is neither an error nor a warning."""
 
 from __future__ import annotations
 
@@ -6,7 +7,7 @@ import os
 import re
 from typing import Literal, NamedTuple
 
-Severity = Literal["error", "warning"]
+Severity = Literal["error", "warning", "note"]
 
 
 class SourceText:
@@ -125,6 +126,9 @@ class Reporter:
     def warning(self, loc: Loc, code: str, message: str, name: str | None = None) -> None:
         self.add(loc, "warning", code, message, name)
 
+    def note(self, loc: Loc, code: str, message: str, name: str | None = None) -> None:
+        self.add(loc, "note", code, message, name)
+
     def raw(self, path: str, line: int, col: int, severity: Severity, code: str, message: str,
             name: str | None = None) -> None:
         self.items.append(Diagnostic(path, line, col, severity, code, message, name))
@@ -136,6 +140,10 @@ class Reporter:
     @property
     def warnings(self) -> int:
         return sum(1 for d in self.items if d.severity == "warning")
+
+    @property
+    def notes(self) -> int:
+        return sum(1 for d in self.items if d.severity == "note")
 
     def sorted(self, file_order: list[str]) -> list[Diagnostic]:
         rank = {p: i for i, p in enumerate(file_order)}

@@ -1,8 +1,12 @@
 """From dialect files to the model: includes, element walking, enum merging.
 
-Includes are resolved relative to the including file, then each `-I` directory, then the
-dialect definitions pymavlink ships. Enums split across files are merged as mavgen merges
-them. Problems go to the Reporter; loading continues so that one run shows all of them.
+Includes are resolved relative to the including file, then each `-I` directory; a bare file
+name (no folder part) found in neither is ttctl's shipped copy, else pymavlink's, with a note
+saying which (a copy next to the including file wins, as with mavgen). A file name is loaded
+once when one of its copies is shipped: pymavlink's loweheiser.xml including its minimal.xml
+beside the user's own minimal.xml gets the user's. Enums split across files are merged as
+mavgen merges them. Problems go to the Reporter; loading continues so that one run shows all
+of them.
 """
 
 from __future__ import annotations
@@ -11,7 +15,7 @@ import os
 import re
 from typing import Any, NamedTuple
 
-from .diagnostics import Loc, Reporter, SourceText
+from .diagnostics import Loc, Reporter, SourceText, display_path
 from .model import (
     BASE_TYPES,
     MAX_MSG_ID,
@@ -24,7 +28,16 @@ from .model import (
     Field,
     Message,
 )
-from .source import ParsedFile, Unreadable, parse_file, pymavlink_dialects_dir, schema_check
+from .source import (
+    ParsedFile,
+    Unreadable,
+    is_shipped,
+    parse_file,
+    pymavlink_dialects_dir,
+    schema_check,
+    shipped_dirs,
+    ttctl_dialects_dir,
+)
 
 MAX_INCLUDE_DEPTH = 32
 _TYPE_RE = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d+)\])?\Z")
@@ -149,9 +162,11 @@ class _FileReader:
                 else:
                     parsed = parse_enum_value(raw)
                     if parsed is None:
-                        self.error(child, "value", "ENUM-VALUE",
-                                   f"enum entry {ename}: value '{raw}' is not an integer "
-                                   "(decimal, 0x hex, 0b binary or 2**N)", ename)
+                        bare = raw.strip()
+                        why = ("is negative; the schema (mavschema.xsd) allows enum values from 0 up"
+                               if bare[:1] == "-" and parse_enum_value(bare[1:]) is not None else
+                               "is not an integer (decimal, 0x hex, 0b binary or 2**N)")
+                        self.error(child, "value", "ENUM-VALUE", f"enum entry {ename}: value '{raw}' {why}", ename)
                         continue
                     value, auto = parsed, False
                 highest = max(highest, value)
@@ -322,35 +337,45 @@ class _Loader:
         self.files: dict[str, DialectFile | None] = {}  # realpath -> file (None: unreadable)
         self.order: list[DialectFile] = []  # post-order: dependencies first
         self.shown: dict[str, str] = {}  # realpath -> path as the user will see it
+        self.by_name: dict[str, str] = {}  # file name (case-folded) -> realpath of the first loaded
+        self.incomplete = False  # an include is missing or unreadable
 
     def search_path(self, includer: str) -> list[str]:
-        dirs = [os.path.dirname(includer)] + self.include_dirs
-        pm = pymavlink_dialects_dir()
-        if pm:
-            dirs.append(pm)
-        return dirs
+        return [os.path.dirname(includer), *self.include_dirs]
 
-    def resolve(self, includer: str, name: str) -> str | None:
+    def resolve(self, includer: str, name: str) -> tuple[str, str | None] | None:
+        """Where an include is, and whose shipped copy it is (None: the user's own)."""
         for d in self.search_path(includer):
             cand = os.path.normpath(os.path.join(d, name))
             if os.path.isfile(cand):
-                return cand
-        pm = pymavlink_dialects_dir()
-        if pm and os.path.basename(name) != name:
-            cand = os.path.join(pm, os.path.basename(name))
-            if os.path.isfile(cand):
-                return cand
+                return cand, None
+        if _bare(name):
+            for d, whose in shipped_dirs():
+                cand = os.path.join(d, name)
+                if os.path.isfile(cand):
+                    return cand, whose
         return None
+
+    def missing(self, includer: str, name: str, loc: Loc) -> None:
+        self.incomplete = True
+        looked = ", ".join(_short_dir(d) for d in self.search_path(includer))
+        if _bare(name):
+            looked = ", ".join([looked, *(_short_dir(d) for d, _ in shipped_dirs())])
+        else:
+            looked += "; a path with a folder part is not looked up among the shipped dialects"
+        self.rep.error(loc, "INCLUDE-MISSING", f"cannot find included file '{name}' (looked in {looked})", name)
 
     def load(self, path: str, stack: list[str], at: Loc | None) -> DialectFile | None:
         real = os.path.realpath(path)
         if real in self.files:
             return self.files[real]
         self.shown[real] = path
+        self.by_name.setdefault(os.path.basename(real).casefold(), real)
         try:
             pf = parse_file(path)
         except Unreadable as e:
             self.files[real] = None
+            self.incomplete = True
             if at is None:
                 raise LoadError(path, e.code, e.message, e.line, e.col) from None
             self.rep.raw(path, e.line, e.col, "error", e.code, e.message)
@@ -365,13 +390,20 @@ class _Loader:
             if not name:
                 self.rep.error(loc, "INCLUDE-MISSING", "empty <include>")
                 continue
-            target = self.resolve(path, name)
-            if target is None:
-                looked = ", ".join(_short_dir(d) for d in self.search_path(path))
-                self.rep.error(loc, "INCLUDE-MISSING", f"cannot find included file '{name}' (looked in {looked})",
-                               name)
+            found = self.resolve(path, name)
+            if found is None:
+                self.missing(path, name, loc)
                 continue
+            target, whose = found
             treal = os.path.realpath(target)
+            first = self.by_name.get(os.path.basename(treal).casefold(), treal)
+            if first != treal and (is_shipped(first) or is_shipped(treal)):
+                self.rep.note(loc, "INCLUDE-SHIPPED", f"'{name}' is already loaded from "
+                              f"{display_path(self.shown[first])}; that copy is used, not {display_path(target)}",
+                              name)
+                target, treal = self.shown[first], first
+            elif whose is not None:
+                self.rep.note(loc, "INCLUDE-SHIPPED", f"'{name}' is {whose} copy ({display_path(target)})", name)
             if treal in stack:
                 chain = stack[stack.index(treal):] + [treal]
                 shown = " -> ".join(os.path.basename(self.shown.get(p, p)) for p in chain)
@@ -390,15 +422,20 @@ class _Loader:
 def resolve_include(includer: str, name: str, include_dirs: list[str]) -> str | None:
     """Where `<include>name</include>` in the file `includer` leads (a path), or None: the rule
     the loader follows, for a caller that checks that an earlier resolution still holds."""
-    return _Loader(include_dirs, Reporter(), False).resolve(includer, name)
+    found = _Loader(include_dirs, Reporter(), False).resolve(includer, name)
+    return found[0] if found is not None else None
+
+
+def _bare(name: str) -> bool:
+    """A file name without a folder part: only such a name is looked up among the shipped dialects."""
+    return name == os.path.basename(name) and "\\" not in name and name not in (".", "..")
 
 
 def _short_dir(d: str) -> str:
-    from .diagnostics import display_path
-
-    pm = pymavlink_dialects_dir()
-    if pm and os.path.realpath(d) == os.path.realpath(pm):
-        return "pymavlink's dialects"
+    for shipped, label in ((pymavlink_dialects_dir(), "pymavlink's dialects"),
+                           (ttctl_dialects_dir(), "ttctl's shipped dialects")):
+        if shipped and os.path.realpath(d) == os.path.realpath(shipped):
+            return label
     return display_path(d) or "."
 
 
@@ -515,6 +552,7 @@ def load_dialect(path: str, include_dirs: list[str] | None = None, schema: bool 
     enums = merge_enums(files, rep)
     messages = [m for f in files for m in f.messages]
     dialect = Dialect(root, files, messages, enums)
+    dialect.incomplete = loader.incomplete
     order = [f.path for f in reversed(files)]
     for shown in loader.shown.values():
         if shown not in order:

@@ -400,6 +400,7 @@ class Dialect:
         self.messages = messages
         self.enums = enums
         self.enums_by_name = {e.name: e for e in enums}
+        self.incomplete = False  # an include could not be found or read (see the loader)
         self.messages_by_id: dict[int, Message] = {}
         self.messages_by_name: dict[str, Message] = {}
         for m in messages:

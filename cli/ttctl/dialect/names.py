@@ -21,14 +21,6 @@ PYTHON_KEYWORDS = _words(
     with yield"""
 )
 
-C_KEYWORDS = _words(
-    """auto break case char const continue default do double else enum extern float for goto if
-    inline int long register restrict return short signed sizeof static struct switch typedef
-    union unsigned void volatile while _Alignas _Alignof _Atomic _Bool _Complex _Generic
-    _Imaginary _Noreturn _Static_assert _Thread_local alignas alignof bool constexpr false
-    nullptr static_assert thread_local true typeof typeof_unqual"""
-)
-
 CPP_KEYWORDS = _words(
     """alignas alignof and and_eq asm auto bitand bitor bool break case catch char char8_t
     char16_t char32_t class compl concept const consteval constexpr constinit const_cast
@@ -48,28 +40,54 @@ JAVA_KEYWORDS = _words(
     null _ var yield record sealed permits"""
 )
 
-# Names that are not keywords but that break generated code when used verbatim: C library
-# macros that a header we include may define, and Java's implicit java.lang types that a
-# generated class of the same name would shadow inside the generated package.
-C_RESERVED = _words("NULL EOF errno assert offsetof stdin stdout stderr")
+# g++ compiles C++ as its GNU dialect unless told -std=c++NN: these are keywords there too.
+GNU_CPP_KEYWORDS = _words("typeof")
+
+# Java's contextual keywords: type names they cannot be, but fields, parameters and constants
+# they can (javac --release 8, 11 and 17 accept `int var`, `this.yield = yield`...).
+JAVA_CONTEXTUAL = _words("var yield record sealed permits")
+
+# Names that are not keywords but that break generated C++ when used verbatim: object-like
+# macros of the C library headers the generated code (or its conformance program) includes, and
+# of g++ itself in its default GNU modes. (Function-like macros such as assert and offsetof
+# expand only before a '(', which never follows a field or entry name in generated code.)
+C_MACROS: dict[str, str] = {
+    "NULL": "a macro of <cstddef> and <cstring>, which the generated C++ includes",
+    "errno": "a macro of <cerrno>, which the generated C++ includes",
+    "EOF": "a macro of <cstdio>, which the generated conformance program includes",
+    "stdin": "a macro of <cstdio> (an expression in most C libraries), which the generated conformance "
+             "program includes",
+    "stdout": "a macro of <cstdio> (an expression in most C libraries), which the generated conformance "
+              "program includes",
+    "stderr": "a macro of <cstdio> (an expression in most C libraries), which the generated conformance "
+              "program includes",
+    "linux": "a macro g++ predefines (as 1) in its default GNU modes",
+    "unix": "a macro g++ predefines (as 1) in its default GNU modes",
+}
+C_RESERVED = frozenset(C_MACROS)
+# Java's implicit java.lang types that a generated class of the same name would shadow inside
+# the generated package.
 JAVA_RESERVED_TYPES = _words(
     """Object String Class Integer Long Short Byte Float Double Boolean Character Math System
     Thread Runnable Override Deprecated Exception RuntimeException Error Enum Record Iterable
     Number Void"""
 )
 
+# What each generated language refuses as an identifier (the generators emit Python, C++ and
+# Java; a name is checked as they spell it, see spelled()).
 LANGUAGE_KEYWORDS: dict[str, frozenset[str]] = {
     "Python": PYTHON_KEYWORDS,
-    "C": C_KEYWORDS,
     "C++": CPP_KEYWORDS,
-    "Java": JAVA_KEYWORDS,
+    "C++ as g++ compiles it by default (-std=gnu++17)": GNU_CPP_KEYWORDS - CPP_KEYWORDS,
+    "Java": JAVA_KEYWORDS - JAVA_CONTEXTUAL,
 }
 
 # Types the generated runtimes define next to the message and enum types (Python package,
 # C++ namespace): a message or enum whose CamelCase name is one of these would clash.
 RUNTIME_TYPE_NAMES = _words(
     """Message MessageInfo Parser ParserStats Encoder Signing DecodeError BasicPacketizer DecodeStatus
-    Dispatcher Frame IsBitmask Packetizer Plugin Sha256 SignatureCheck PacketReceiver ReceiverStats"""
+    Dispatcher Frame IsBitmask Packetizer Plugin Sha256 SignatureCheck PacketReceiver ReceiverStats
+    Outbox NullOutbox"""
 )
 
 # Members every generated message class/struct defines; a field of the same name would
@@ -99,15 +117,21 @@ _KEYWORD_LANGS: dict[str, list[str]] = {}
 for _lang, _kws in LANGUAGE_KEYWORDS.items():
     for _w in _kws:
         _KEYWORD_LANGS.setdefault(_w, []).append(_lang)
-for _w in C_RESERVED:
-    _KEYWORD_LANGS.setdefault(_w, [])
-    if "C" not in _KEYWORD_LANGS[_w]:
-        _KEYWORD_LANGS[_w].append("C")
+
+# Every word that keyword_hits() or C_MACROS refuses: a name outside it needs no closer look.
+RESERVED_WORDS = frozenset(_KEYWORD_LANGS) | C_RESERVED
 
 
 def keyword_hits(name: str) -> list[str]:
-    """Languages in which `name` (exactly as written) is a keyword or reserved."""
+    """Generated languages in which `name` (exactly as written) is a keyword."""
     return _KEYWORD_LANGS.get(name, [])
+
+
+def spelled(name: str, type_name: bool) -> str:
+    """The identifier the generators emit for a name: message and enum names become CamelCase
+    types (GPS_RAW_INT -> GpsRawInt in Python, C++ and Java); fields and enum entries keep their
+    XML spelling. (The handlers' on_<name> methods are prefixed: never a keyword.)"""
+    return camel(name) if type_name else name
 
 
 def reserved_identifier(name: str) -> str | None:

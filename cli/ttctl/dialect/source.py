@@ -53,6 +53,31 @@ def pymavlink_dialects_dir() -> str | None:
     return d if os.path.isdir(d) else None
 
 
+@lru_cache(maxsize=1)
+def ttctl_dialects_dir() -> str | None:
+    """ttctl's shipped dialects (dialects/ in a checkout, ttctl/_data/dialects in the wheel)."""
+    from ..resources import data_dir
+
+    try:
+        return str(data_dir("dialects"))
+    except FileNotFoundError:
+        return None
+
+
+def shipped_dirs() -> list[tuple[str, str]]:
+    """(folder, whose copy it is) of the dialects ttctl and pymavlink ship, in the order a bare
+    include name is looked up there."""
+    return [(d, whose) for d, whose in ((ttctl_dialects_dir(), "ttctl's shipped"),
+                                        (pymavlink_dialects_dir(), "pymavlink's")) if d is not None]
+
+
+@lru_cache(maxsize=256)
+def is_shipped(path: str) -> bool:
+    """Whether a dialect file is one of the shipped copies."""
+    folder = os.path.dirname(os.path.realpath(path))
+    return any(folder == os.path.realpath(d) for d, _ in shipped_dirs())
+
+
 def read_bytes(path: str) -> bytes:
     try:
         st = os.stat(path)

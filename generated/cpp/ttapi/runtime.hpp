@@ -2,9 +2,9 @@
 //
 // MAVLink 2 runtime of the ttapi dialect (C++17, header-only): CRC-16/MCRF4XX,
 // little-endian field helpers, frame encoding and decoding, message signing (signing.hpp,
-// included from here), a stream Parser, a Dispatcher, a Packetizer for links with a small MTU
-// and its PacketReceiver (packets.hpp, included at the end), and the Plugin interface of
-// onboard handlers.
+// included from here), a stream Parser, a Dispatcher, the Outbox through which handlers send,
+// a Packetizer for links with a small MTU and its PacketReceiver (packets.hpp, included at the
+// end), and the Plugin interface of onboard handlers.
 //
 // Frames: magic 0xFD, len, incompat_flags, compat_flags, seq, sysid, compid, msgid (3 bytes,
 // little endian), payload (trailing zero bytes truncated, at least one byte kept), CRC-16/MCRF4XX
@@ -571,6 +571,21 @@ public:
         return n;
     }
 
+    /// The same for a payload packed already (what an Outbox's send_payload() gets): `n`
+    /// payload bytes of the message `info` describes.
+    std::size_t encode_payload(const MessageInfo& info, const std::uint8_t* payload, std::size_t n,
+                               std::uint8_t* buf, std::size_t cap) noexcept
+    {
+        std::size_t len = encode_frame(buf, cap, info.msgid, info.crc_extra, payload, n, seq_, sysid_, compid_);
+        if (len != 0 && signing_ != nullptr) {
+            len = signing_->sign(buf, len, cap, Signing::now());
+        }
+        if (len != 0) {
+            ++seq_;
+        }
+        return len;
+    }
+
     void set_signing(Signing* signing) noexcept { signing_ = signing; }
 
     std::uint8_t next_seq() const noexcept { return seq_; }
@@ -951,16 +966,72 @@ private:
     ParserStats stats_;
 };
 
+// --- sending from handlers ---------------------------------------------------------------
+
+/// Where handlers send messages: replies, or any other message of the dialect. Implement
+/// send_payload() once, wired to your link (an Encoder frames the payload with
+/// encode_payload(), a Packetizer cuts the frames into the link's packets); send(msg) packs a
+/// message on the stack and hands it over. Nothing allocates. A Dispatcher passes its Outbox to
+/// every handler that takes an `Outbox&`.
+class Outbox {
+public:
+    virtual ~Outbox() = default;
+
+    /// Pack `msg` and hand it to send_payload(); whether it was taken.
+    template <class M>
+    bool send(const M& msg)
+    {
+        std::uint8_t payload[M::PAYLOAD_LENGTH > 0 ? M::PAYLOAD_LENGTH : 1];
+        const std::size_t n = msg.pack_payload(payload);
+        return send_payload(*message_info(M::MSG_ID), payload, n);
+    }
+
+    /// One packed message: `info` names it (msgid, CRC_EXTRA), `payload` holds its `n` bytes
+    /// (MAVLink 2 truncated). Frame it and send or queue it; return whether it was taken. Called
+    /// from handlers: do not block for long.
+    virtual bool send_payload(const MessageInfo& info, const std::uint8_t* payload, std::size_t n) = 0;
+};
+
+/// The Outbox of a Dispatcher given none: it takes nothing (send() returns false).
+class NullOutbox final : public Outbox {
+public:
+    bool send_payload(const MessageInfo& /*info*/, const std::uint8_t* /*payload*/, std::size_t /*n*/) override
+    {
+        return false;
+    }
+};
+
 // --- dispatching --------------------------------------------------------------------------
 
 /// Binds handlers to msgids; several handlers may share one msgid (called in the order they
-/// were registered). Registration allocates; dispatch does not.
+/// were registered). Handlers that take an `Outbox&` get the dispatcher's, to send replies.
+/// Registration allocates; dispatch does not.
 class Dispatcher {
 public:
     using Handler = std::function<void(const Frame&)>;
+    /// A handler of raw frames that may send: handler(const Frame&, Outbox&).
+    using SendingHandler = std::function<void(const Frame&, Outbox&)>;
+
+    /// A dispatcher whose handlers' sends go nowhere (a NullOutbox).
+    Dispatcher() noexcept = default;
+
+    /// A dispatcher whose handlers send through `outbox`, which must outlive it.
+    explicit Dispatcher(Outbox& outbox) noexcept : outbox_(&outbox) {}
+
+    void set_outbox(Outbox& outbox) noexcept { outbox_ = &outbox; }
+
+    Outbox& outbox() const noexcept { return outbox_ != nullptr ? *outbox_ : null_outbox(); }
 
     /// A handler of raw frames of one msgid.
     Dispatcher& on(std::uint32_t msgid, Handler handler)
+    {
+        return on(msgid, SendingHandler([handler = std::move(handler)](const Frame& frame, Outbox& /*out*/) {
+            handler(frame);
+        }));
+    }
+
+    /// A handler of raw frames of one msgid that may send.
+    Dispatcher& on(std::uint32_t msgid, SendingHandler handler)
     {
         auto at = std::upper_bound(entries_.begin(), entries_.end(), msgid,
                                    [](std::uint32_t id, const Entry& e) { return id < e.msgid; });
@@ -968,18 +1039,23 @@ public:
         return *this;
     }
 
-    /// A handler of decoded messages: `handler(const M&, const Frame&)` or `handler(const M&)`.
+    /// A handler of decoded messages: `handler(const M&, const Frame&, Outbox&)`,
+    /// `handler(const M&, const Frame&)` or `handler(const M&)`.
     template <class M, class F>
     Dispatcher& on(F handler)
     {
-        return on(M::MSG_ID, [handler = std::move(handler)](const Frame& frame) mutable {
+        return on(M::MSG_ID, SendingHandler([handler = std::move(handler)](const Frame& frame, Outbox& out) mutable {
             const M msg = frame.as<M>();
-            if constexpr (std::is_invocable_v<F&, const M&, const Frame&>) {
+            if constexpr (std::is_invocable_v<F&, const M&, const Frame&, Outbox&>) {
+                handler(msg, frame, out);
+            } else if constexpr (std::is_invocable_v<F&, const M&, const Frame&>) {
+                (void)out;
                 handler(msg, frame);
             } else {
+                (void)out;
                 handler(msg);
             }
-        });
+        }));
     }
 
     /// Called for frames no handler is bound to.
@@ -995,8 +1071,9 @@ public:
         auto at = std::lower_bound(entries_.begin(), entries_.end(), frame.msgid,
                                    [](const Entry& e, std::uint32_t id) { return e.msgid < id; });
         std::size_t called = 0;
+        Outbox& out = outbox();
         for (; at != entries_.end() && at->msgid == frame.msgid; ++at) {
-            at->handler(frame);
+            at->handler(frame, out);
             ++called;
         }
         if (called == 0 && unhandled_) {
@@ -1020,11 +1097,18 @@ public:
 private:
     struct Entry {
         std::uint32_t msgid;
-        Handler handler;
+        SendingHandler handler;
     };
+
+    static Outbox& null_outbox() noexcept
+    {
+        static NullOutbox none;
+        return none;
+    }
 
     std::vector<Entry> entries_;  // sorted by msgid, registration order within one msgid
     Handler unhandled_;
+    Outbox* outbox_ = nullptr;
 };
 
 /// What an onboard handler plugin implements (the role ROS pluginlib plugins had): it binds

@@ -12,9 +12,10 @@ from __future__ import annotations
 import hashlib
 import hmac
 import math
+import operator
 import struct
 import time
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from typing import Any, ClassVar, Self
 
 try:
@@ -173,6 +174,40 @@ def _cbytes(s: str | bytes, size: int, where: str) -> bytes:
     if len(b) > size:
         raise ValueError(f"{where}: {len(b)} bytes do not fit char[{size}]")
     return b
+
+
+def _ubytes(v: bytes | bytearray | Sequence[int], size: int, where: str, fit: bool = True) -> bytes:
+    """A uint8_t[N] value as bytes: bytes, or as pymavlink takes them a bytearray or a sequence
+    of integers 0..255; with `fit`, at most `size` of them (fewer are zero-padded on the wire)."""
+    if type(v) is not bytes:
+        try:
+            if isinstance(v, (int, str)):
+                raise TypeError  # bytes(7) would be seven zeros, bytes("7") wants an encoding
+            v = bytes(v)
+        except (TypeError, ValueError):
+            raise ValueError(f"{where}: uint8_t[{size}] takes bytes or integers 0..255, not {_not_u8(v)}") from None
+    if fit and len(v) > size:
+        raise ValueError(f"{where}: {len(v)} bytes do not fit uint8_t[{size}]")
+    return v
+
+
+def _not_u8(v: Any) -> str:
+    """What in `v` is not a uint8_t array, for the error message."""
+    if isinstance(v, str):
+        return "a str"
+    if isinstance(v, int):
+        return "an int"
+    try:
+        for x in v:
+            try:
+                if 0 <= operator.index(x) <= 255:
+                    continue
+            except TypeError:
+                pass
+            return repr(x)
+    except TypeError:
+        pass
+    return f"a {type(v).__name__}"
 
 
 def _array(v: Any, size: int, where: str) -> Any:

@@ -29,14 +29,21 @@ public class SendDjiPoseStamped extends SendCommand {
     /** Orientation quaternion x, y, z, w. (double[4]) */
     public final double[] orientation;
 
+    /**
+     * The values to send, packed anew on every try. Arrays are copied: changing yours afterwards
+     * changes nothing sent.
+     */
     public SendDjiPoseStamped(int target_system, long sec, long nsec, int topic_name, double[] position, double[] orientation) {
-        super(DEFAULT_PRIORITY, 0, 0, 1.0);
+        super(DEFAULT_PRIORITY,  // its place in the command queue
+              0,  // no retries: it awaits no reply, so it succeeds once sent
+              0,  // no reply timeout, for the same reason
+              1.0);  // no backoff between retries, there are none
         this.target_system = target_system;
         this.sec = sec;
         this.nsec = nsec;
         this.topic_name = topic_name;
-        this.position = position;
-        this.orientation = orientation;
+        this.position = position == null ? null : position.clone();
+        this.orientation = orientation == null ? null : orientation.clone();
     }
 
     @Override
@@ -46,8 +53,8 @@ public class SendDjiPoseStamped extends SendCommand {
         msg.sec = this.sec;
         msg.nsec = this.nsec;
         msg.topic_name = this.topic_name;
-        msg.position = this.position;
-        msg.orientation = this.orientation;
+        msg.position = this.position == null ? null : this.position.clone();
+        msg.orientation = this.orientation == null ? null : this.orientation.clone();
         return msg;
     }
 

@@ -34,15 +34,22 @@ public class SendTtActionCommand extends SendCommand {
     /** Action argument, e.g. the mission file of FLY_TRAJECTORY. (char[48]) */
     public final byte[] argument;
 
+    /**
+     * The values to send, packed anew on every try. Arrays are copied: changing yours afterwards
+     * changes nothing sent.
+     */
     public SendTtActionCommand(int target_system, int target_component, int command_id, int action, long time_usec, float[] param, byte[] argument) {
-        super(DEFAULT_PRIORITY, 3, 500, 2.0);
+        super(DEFAULT_PRIORITY,  // its place in the command queue
+              3,  // retries after the first try when no reply comes in time
+              500,  // milliseconds the first try waits for the reply
+              2.0);  // each retry waits this many times longer than the one before
         this.target_system = target_system;
         this.target_component = target_component;
         this.command_id = command_id;
         this.action = action;
         this.time_usec = time_usec;
-        this.param = param;
-        this.argument = argument;
+        this.param = param == null ? null : param.clone();
+        this.argument = argument == null ? null : argument.clone();
     }
 
     @Override
@@ -53,8 +60,8 @@ public class SendTtActionCommand extends SendCommand {
         msg.command_id = this.command_id;
         msg.action = this.action;
         msg.time_usec = this.time_usec;
-        msg.param = this.param;
-        msg.argument = this.argument;
+        msg.param = this.param == null ? null : this.param.clone();
+        msg.argument = this.argument == null ? null : this.argument.clone();
         return msg;
     }
 

@@ -27,13 +27,20 @@ public class SendTtLog extends SendCommand {
     /** UTF-8 text, NUL-terminated if shorter than 80 bytes. (char[80]) */
     public final byte[] text;
 
+    /**
+     * The values to send, packed anew on every try. Arrays are copied: changing yours afterwards
+     * changes nothing sent.
+     */
     public SendTtLog(long time_boot_ms, int id, int severity, int chunk_seq, byte[] text) {
-        super(DEFAULT_PRIORITY, 0, 0, 1.0);
+        super(DEFAULT_PRIORITY,  // its place in the command queue
+              0,  // no retries: it awaits no reply, so it succeeds once sent
+              0,  // no reply timeout, for the same reason
+              1.0);  // no backoff between retries, there are none
         this.time_boot_ms = time_boot_ms;
         this.id = id;
         this.severity = severity;
         this.chunk_seq = chunk_seq;
-        this.text = text;
+        this.text = text == null ? null : text.clone();
     }
 
     @Override
@@ -43,7 +50,7 @@ public class SendTtLog extends SendCommand {
         msg.id = this.id;
         msg.severity = this.severity;
         msg.chunk_seq = this.chunk_seq;
-        msg.text = this.text;
+        msg.text = this.text == null ? null : this.text.clone();
         return msg;
     }
 

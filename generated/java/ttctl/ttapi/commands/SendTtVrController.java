@@ -33,8 +33,12 @@ public class SendTtVrController extends SendCommand {
     /** Buttons held. (uint16_t; enum {@link ttctl.ttapi.enums.TtVrButtons}) */
     public final int buttons;
 
+    /** The values to send, packed anew on every try. */
     public SendTtVrController(long time_usec, long packet_num, int index, int role, float trigger, float pad_x, float pad_y, int buttons) {
-        super(DEFAULT_PRIORITY, 0, 0, 1.0);
+        super(DEFAULT_PRIORITY,  // its place in the command queue
+              0,  // no retries: it awaits no reply, so it succeeds once sent
+              0,  // no reply timeout, for the same reason
+              1.0);  // no backoff between retries, there are none
         this.time_usec = time_usec;
         this.packet_num = packet_num;
         this.index = index;

@@ -38,17 +38,24 @@ public class SendTtVrPose extends SendCommand {
     /** Angular velocity x, y, z. [rad/s] (float[3]) */
     public final float[] angular_velocity;
 
+    /**
+     * The values to send, packed anew on every try. Arrays are copied: changing yours afterwards
+     * changes nothing sent.
+     */
     public SendTtVrPose(long time_usec, int device, int role, int index, int flags, float[] position, float[] orientation, float[] velocity, float[] angular_velocity) {
-        super(DEFAULT_PRIORITY, 0, 0, 1.0);
+        super(DEFAULT_PRIORITY,  // its place in the command queue
+              0,  // no retries: it awaits no reply, so it succeeds once sent
+              0,  // no reply timeout, for the same reason
+              1.0);  // no backoff between retries, there are none
         this.time_usec = time_usec;
         this.device = device;
         this.role = role;
         this.index = index;
         this.flags = flags;
-        this.position = position;
-        this.orientation = orientation;
-        this.velocity = velocity;
-        this.angular_velocity = angular_velocity;
+        this.position = position == null ? null : position.clone();
+        this.orientation = orientation == null ? null : orientation.clone();
+        this.velocity = velocity == null ? null : velocity.clone();
+        this.angular_velocity = angular_velocity == null ? null : angular_velocity.clone();
     }
 
     @Override
@@ -59,10 +66,10 @@ public class SendTtVrPose extends SendCommand {
         msg.role = this.role;
         msg.index = this.index;
         msg.flags = this.flags;
-        msg.position = this.position;
-        msg.orientation = this.orientation;
-        msg.velocity = this.velocity;
-        msg.angular_velocity = this.angular_velocity;
+        msg.position = this.position == null ? null : this.position.clone();
+        msg.orientation = this.orientation == null ? null : this.orientation.clone();
+        msg.velocity = this.velocity == null ? null : this.velocity.clone();
+        msg.angular_velocity = this.angular_velocity == null ? null : this.angular_velocity.clone();
         return msg;
     }
 

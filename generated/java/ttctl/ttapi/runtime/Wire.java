@@ -84,6 +84,17 @@ public final class Wire {
         }
     }
 
+    /**
+     * Returns v if it is in lo..hi, else refuses it: a value given in a wider type (an enum's int
+     * constant for an int8_t field, say) before it is narrowed to the field's type.
+     */
+    public static long checkRange(long v, long lo, long hi, String where, String type) {
+        if (v < lo || v > hi) {
+            throw new IllegalArgumentException(where + ": " + v + " does not fit " + type + " (" + lo + ".." + hi + ")");
+        }
+        return v;
+    }
+
     /** Checks the length of an array field (-1: null). */
     public static void checkLength(int len, int n, String where) {
         if (len != n) {
