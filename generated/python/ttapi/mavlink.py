@@ -81,6 +81,8 @@ class Message:
     """Field names in XML order."""
     ENUMS: ClassVar[dict[str, str]] = {}
     """Field name -> enum name, for fields that take an enum."""
+    TYPES: ClassVar[tuple[str, ...]] = ()
+    """The MAVLink type of each field, in FIELDS order ("uint8_t", "float[4]", "char[16]")."""
     _IDB: ClassVar[bytes] = b""
     _XB: ClassVar[bytes] = b""
 

@@ -28,6 +28,7 @@ class Heartbeat(Message):
     MIN_LENGTH: ClassVar[int] = 9
     FIELDS: ClassVar[tuple[str, ...]] = ("type", "autopilot", "base_mode", "custom_mode", "system_status", "mavlink_version",)
     ENUMS: ClassVar[dict[str, str]] = {"type": "MAV_TYPE", "autopilot": "MAV_AUTOPILOT", "base_mode": "MAV_MODE_FLAG", "system_status": "MAV_STATE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "uint32_t", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x00\x00\x00'
     _XB: ClassVar[bytes] = b'2'
     _S: ClassVar[struct.Struct] = struct.Struct("<IBBBBB")
@@ -105,6 +106,7 @@ class SysStatus(Message):
     MIN_LENGTH: ClassVar[int] = 31
     FIELDS: ClassVar[tuple[str, ...]] = ("onboard_control_sensors_present", "onboard_control_sensors_enabled", "onboard_control_sensors_health", "load", "voltage_battery", "current_battery", "battery_remaining", "drop_rate_comm", "errors_comm", "errors_count1", "errors_count2", "errors_count3", "errors_count4", "onboard_control_sensors_present_extended", "onboard_control_sensors_enabled_extended", "onboard_control_sensors_health_extended",)
     ENUMS: ClassVar[dict[str, str]] = {"onboard_control_sensors_present": "MAV_SYS_STATUS_SENSOR", "onboard_control_sensors_enabled": "MAV_SYS_STATUS_SENSOR", "onboard_control_sensors_health": "MAV_SYS_STATUS_SENSOR", "onboard_control_sensors_present_extended": "MAV_SYS_STATUS_SENSOR_EXTENDED", "onboard_control_sensors_enabled_extended": "MAV_SYS_STATUS_SENSOR_EXTENDED", "onboard_control_sensors_health_extended": "MAV_SYS_STATUS_SENSOR_EXTENDED"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint32_t", "uint32_t", "uint16_t", "uint16_t", "int16_t", "int8_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint32_t", "uint32_t", "uint32_t",)
     _IDB: ClassVar[bytes] = b'\x01\x00\x00'
     _XB: ClassVar[bytes] = b'|'
     _S: ClassVar[struct.Struct] = struct.Struct("<IIIHHhHHHHHHbIII")
@@ -252,6 +254,7 @@ class SystemTime(Message):
     MIN_LENGTH: ClassVar[int] = 12
     FIELDS: ClassVar[tuple[str, ...]] = ("time_unix_usec", "time_boot_ms",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint32_t",)
     _IDB: ClassVar[bytes] = b'\x02\x00\x00'
     _XB: ClassVar[bytes] = b'\x89'
     _S: ClassVar[struct.Struct] = struct.Struct("<QI")
@@ -301,6 +304,7 @@ class Ping(Message):
     MIN_LENGTH: ClassVar[int] = 14
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "seq", "target_system", "target_component",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint32_t", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x04\x00\x00'
     _XB: ClassVar[bytes] = b'\xed'
     _S: ClassVar[struct.Struct] = struct.Struct("<QIBB")
@@ -364,6 +368,7 @@ class ChangeOperatorControl(Message):
     MIN_LENGTH: ClassVar[int] = 28
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "control_request", "version", "passkey",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "char[25]",)
     _IDB: ClassVar[bytes] = b'\x05\x00\x00'
     _XB: ClassVar[bytes] = b'\xd9'
     _S: ClassVar[struct.Struct] = struct.Struct("<BBB25s")
@@ -426,6 +431,7 @@ class ChangeOperatorControlAck(Message):
     MIN_LENGTH: ClassVar[int] = 3
     FIELDS: ClassVar[tuple[str, ...]] = ("gcs_system_id", "control_request", "ack",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x06\x00\x00'
     _XB: ClassVar[bytes] = b'h'
     _S: ClassVar[struct.Struct] = struct.Struct("<BBB")
@@ -482,6 +488,7 @@ class AuthKey(Message):
     MIN_LENGTH: ClassVar[int] = 32
     FIELDS: ClassVar[tuple[str, ...]] = ("key",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("char[32]",)
     _IDB: ClassVar[bytes] = b'\x07\x00\x00'
     _XB: ClassVar[bytes] = b'w'
     _S: ClassVar[struct.Struct] = struct.Struct("<32s")
@@ -523,6 +530,7 @@ class SetMode(Message):
     MIN_LENGTH: ClassVar[int] = 6
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "base_mode", "custom_mode",)
     ENUMS: ClassVar[dict[str, str]] = {"base_mode": "MAV_MODE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint32_t",)
     _IDB: ClassVar[bytes] = b'\x0b\x00\x00'
     _XB: ClassVar[bytes] = b'Y'
     _S: ClassVar[struct.Struct] = struct.Struct("<IBB")
@@ -579,6 +587,7 @@ class ParamRequestRead(Message):
     MIN_LENGTH: ClassVar[int] = 20
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "param_id", "param_index",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "char[16]", "int16_t",)
     _IDB: ClassVar[bytes] = b'\x14\x00\x00'
     _XB: ClassVar[bytes] = b'\xd6'
     _S: ClassVar[struct.Struct] = struct.Struct("<hBB16s")
@@ -641,6 +650,7 @@ class ParamRequestList(Message):
     MIN_LENGTH: ClassVar[int] = 2
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x15\x00\x00'
     _XB: ClassVar[bytes] = b'\x9f'
     _S: ClassVar[struct.Struct] = struct.Struct("<BB")
@@ -690,6 +700,7 @@ class ParamValue(Message):
     MIN_LENGTH: ClassVar[int] = 25
     FIELDS: ClassVar[tuple[str, ...]] = ("param_id", "param_value", "param_type", "param_count", "param_index",)
     ENUMS: ClassVar[dict[str, str]] = {"param_type": "MAV_PARAM_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("char[16]", "float", "uint8_t", "uint16_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'\x16\x00\x00'
     _XB: ClassVar[bytes] = b'\xdc'
     _S: ClassVar[struct.Struct] = struct.Struct("<fHH16sB")
@@ -759,6 +770,7 @@ class ParamSet(Message):
     MIN_LENGTH: ClassVar[int] = 23
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "param_id", "param_value", "param_type",)
     ENUMS: ClassVar[dict[str, str]] = {"param_type": "MAV_PARAM_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "char[16]", "float", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x17\x00\x00'
     _XB: ClassVar[bytes] = b'\xa8'
     _S: ClassVar[struct.Struct] = struct.Struct("<fBB16sB")
@@ -828,6 +840,7 @@ class GpsRawInt(Message):
     MIN_LENGTH: ClassVar[int] = 30
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "fix_type", "lat", "lon", "alt", "eph", "epv", "vel", "cog", "satellites_visible", "alt_ellipsoid", "h_acc", "v_acc", "vel_acc", "hdg_acc", "yaw",)
     ENUMS: ClassVar[dict[str, str]] = {"fix_type": "GPS_FIX_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "int32_t", "int32_t", "int32_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint8_t", "int32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'\x18\x00\x00'
     _XB: ClassVar[bytes] = b'\x18'
     _S: ClassVar[struct.Struct] = struct.Struct("<QiiiHHHHBBiIIIIH")
@@ -975,6 +988,7 @@ class GpsStatus(Message):
     MIN_LENGTH: ClassVar[int] = 101
     FIELDS: ClassVar[tuple[str, ...]] = ("satellites_visible", "satellite_prn", "satellite_used", "satellite_elevation", "satellite_azimuth", "satellite_snr",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t[20]", "uint8_t[20]", "uint8_t[20]", "uint8_t[20]", "uint8_t[20]",)
     _IDB: ClassVar[bytes] = b'\x19\x00\x00'
     _XB: ClassVar[bytes] = b'\x17'
     _S: ClassVar[struct.Struct] = struct.Struct("<B20s20s20s20s20s")
@@ -1052,6 +1066,7 @@ class ScaledImu(Message):
     MIN_LENGTH: ClassVar[int] = 22
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "xacc", "yacc", "zacc", "xgyro", "ygyro", "zgyro", "xmag", "ymag", "zmag", "temperature",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t",)
     _IDB: ClassVar[bytes] = b'\x1a\x00\x00'
     _XB: ClassVar[bytes] = b'\xaa'
     _S: ClassVar[struct.Struct] = struct.Struct("<Ihhhhhhhhhh")
@@ -1164,6 +1179,7 @@ class RawImu(Message):
     MIN_LENGTH: ClassVar[int] = 26
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "xacc", "yacc", "zacc", "xgyro", "ygyro", "zgyro", "xmag", "ymag", "zmag", "id", "temperature",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "uint8_t", "int16_t",)
     _IDB: ClassVar[bytes] = b'\x1b\x00\x00'
     _XB: ClassVar[bytes] = b'\x90'
     _S: ClassVar[struct.Struct] = struct.Struct("<QhhhhhhhhhBh")
@@ -1283,6 +1299,7 @@ class RawPressure(Message):
     MIN_LENGTH: ClassVar[int] = 16
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "press_abs", "press_diff1", "press_diff2", "temperature",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "int16_t", "int16_t", "int16_t", "int16_t",)
     _IDB: ClassVar[bytes] = b'\x1c\x00\x00'
     _XB: ClassVar[bytes] = b'C'
     _S: ClassVar[struct.Struct] = struct.Struct("<Qhhhh")
@@ -1353,6 +1370,7 @@ class ScaledPressure(Message):
     MIN_LENGTH: ClassVar[int] = 14
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "press_abs", "press_diff", "temperature", "temperature_press_diff",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "float", "float", "int16_t", "int16_t",)
     _IDB: ClassVar[bytes] = b'\x1d\x00\x00'
     _XB: ClassVar[bytes] = b's'
     _S: ClassVar[struct.Struct] = struct.Struct("<Iffhh")
@@ -1423,6 +1441,7 @@ class Attitude(Message):
     MIN_LENGTH: ClassVar[int] = 28
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "roll", "pitch", "yaw", "rollspeed", "pitchspeed", "yawspeed",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'\x1e\x00\x00'
     _XB: ClassVar[bytes] = b"'"
     _S: ClassVar[struct.Struct] = struct.Struct("<Iffffff")
@@ -1507,6 +1526,7 @@ class AttitudeQuaternion(Message):
     MIN_LENGTH: ClassVar[int] = 32
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "q1", "q2", "q3", "q4", "rollspeed", "pitchspeed", "yawspeed", "repr_offset_q",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "float", "float", "float", "float", "float", "float", "float", "float[4]",)
     _IDB: ClassVar[bytes] = b'\x1f\x00\x00'
     _XB: ClassVar[bytes] = b'\xf6'
     _S: ClassVar[struct.Struct] = struct.Struct("<Ifffffffffff")
@@ -1604,6 +1624,7 @@ class LocalPositionNed(Message):
     MIN_LENGTH: ClassVar[int] = 28
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "x", "y", "z", "vx", "vy", "vz",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b' \x00\x00'
     _XB: ClassVar[bytes] = b'\xb9'
     _S: ClassVar[struct.Struct] = struct.Struct("<Iffffff")
@@ -1688,6 +1709,7 @@ class GlobalPositionInt(Message):
     MIN_LENGTH: ClassVar[int] = 28
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "lat", "lon", "alt", "relative_alt", "vx", "vy", "vz", "hdg",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "int32_t", "int32_t", "int32_t", "int32_t", "int16_t", "int16_t", "int16_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'!\x00\x00'
     _XB: ClassVar[bytes] = b'h'
     _S: ClassVar[struct.Struct] = struct.Struct("<IiiiihhhH")
@@ -1786,6 +1808,7 @@ class RcChannelsScaled(Message):
     MIN_LENGTH: ClassVar[int] = 22
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "port", "chan1_scaled", "chan2_scaled", "chan3_scaled", "chan4_scaled", "chan5_scaled", "chan6_scaled", "chan7_scaled", "chan8_scaled", "rssi",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'"\x00\x00'
     _XB: ClassVar[bytes] = b'\xed'
     _S: ClassVar[struct.Struct] = struct.Struct("<IhhhhhhhhBB")
@@ -1898,6 +1921,7 @@ class RcChannelsRaw(Message):
     MIN_LENGTH: ClassVar[int] = 22
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "port", "chan1_raw", "chan2_raw", "chan3_raw", "chan4_raw", "chan5_raw", "chan6_raw", "chan7_raw", "chan8_raw", "rssi",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'#\x00\x00'
     _XB: ClassVar[bytes] = b'\xf4'
     _S: ClassVar[struct.Struct] = struct.Struct("<IHHHHHHHHBB")
@@ -2010,6 +2034,7 @@ class ServoOutputRaw(Message):
     MIN_LENGTH: ClassVar[int] = 21
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "port", "servo1_raw", "servo2_raw", "servo3_raw", "servo4_raw", "servo5_raw", "servo6_raw", "servo7_raw", "servo8_raw", "servo9_raw", "servo10_raw", "servo11_raw", "servo12_raw", "servo13_raw", "servo14_raw", "servo15_raw", "servo16_raw",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'$\x00\x00'
     _XB: ClassVar[bytes] = b'\xde'
     _S: ClassVar[struct.Struct] = struct.Struct("<IHHHHHHHHBHHHHHHHH")
@@ -2171,6 +2196,7 @@ class MissionRequestPartialList(Message):
     MIN_LENGTH: ClassVar[int] = 6
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "start_index", "end_index", "mission_type",)
     ENUMS: ClassVar[dict[str, str]] = {"mission_type": "MAV_MISSION_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "int16_t", "int16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'%\x00\x00'
     _XB: ClassVar[bytes] = b'\xd4'
     _S: ClassVar[struct.Struct] = struct.Struct("<hhBBB")
@@ -2241,6 +2267,7 @@ class MissionWritePartialList(Message):
     MIN_LENGTH: ClassVar[int] = 6
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "start_index", "end_index", "mission_type",)
     ENUMS: ClassVar[dict[str, str]] = {"mission_type": "MAV_MISSION_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "int16_t", "int16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'&\x00\x00'
     _XB: ClassVar[bytes] = b'\t'
     _S: ClassVar[struct.Struct] = struct.Struct("<hhBBB")
@@ -2311,6 +2338,7 @@ class MissionItem(Message):
     MIN_LENGTH: ClassVar[int] = 37
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "seq", "frame", "command", "current", "autocontinue", "param1", "param2", "param3", "param4", "x", "y", "z", "mission_type",)
     ENUMS: ClassVar[dict[str, str]] = {"frame": "MAV_FRAME", "command": "MAV_CMD", "mission_type": "MAV_MISSION_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint8_t", "uint16_t", "uint8_t", "uint8_t", "float", "float", "float", "float", "float", "float", "float", "uint8_t",)
     _IDB: ClassVar[bytes] = b"'\x00\x00"
     _XB: ClassVar[bytes] = b'\xfe'
     _S: ClassVar[struct.Struct] = struct.Struct("<fffffffHHBBBBBB")
@@ -2451,6 +2479,7 @@ class MissionRequest(Message):
     MIN_LENGTH: ClassVar[int] = 4
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "seq", "mission_type",)
     ENUMS: ClassVar[dict[str, str]] = {"mission_type": "MAV_MISSION_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'(\x00\x00'
     _XB: ClassVar[bytes] = b'\xe6'
     _S: ClassVar[struct.Struct] = struct.Struct("<HBBB")
@@ -2514,6 +2543,7 @@ class MissionSetCurrent(Message):
     MIN_LENGTH: ClassVar[int] = 4
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "seq",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b')\x00\x00'
     _XB: ClassVar[bytes] = b'\x1c'
     _S: ClassVar[struct.Struct] = struct.Struct("<HBB")
@@ -2570,6 +2600,7 @@ class MissionCurrent(Message):
     MIN_LENGTH: ClassVar[int] = 2
     FIELDS: ClassVar[tuple[str, ...]] = ("seq", "total", "mission_state", "mission_mode",)
     ENUMS: ClassVar[dict[str, str]] = {"mission_state": "MISSION_STATE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint16_t", "uint16_t", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'*\x00\x00'
     _XB: ClassVar[bytes] = b'\x1c'
     _S: ClassVar[struct.Struct] = struct.Struct("<HHBB")
@@ -2633,6 +2664,7 @@ class MissionRequestList(Message):
     MIN_LENGTH: ClassVar[int] = 2
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "mission_type",)
     ENUMS: ClassVar[dict[str, str]] = {"mission_type": "MAV_MISSION_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'+\x00\x00'
     _XB: ClassVar[bytes] = b'\x84'
     _S: ClassVar[struct.Struct] = struct.Struct("<BBB")
@@ -2689,6 +2721,7 @@ class MissionCount(Message):
     MIN_LENGTH: ClassVar[int] = 4
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "count", "mission_type",)
     ENUMS: ClassVar[dict[str, str]] = {"mission_type": "MAV_MISSION_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b',\x00\x00'
     _XB: ClassVar[bytes] = b'\xdd'
     _S: ClassVar[struct.Struct] = struct.Struct("<HBBB")
@@ -2752,6 +2785,7 @@ class MissionClearAll(Message):
     MIN_LENGTH: ClassVar[int] = 2
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "mission_type",)
     ENUMS: ClassVar[dict[str, str]] = {"mission_type": "MAV_MISSION_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'-\x00\x00'
     _XB: ClassVar[bytes] = b'\xe8'
     _S: ClassVar[struct.Struct] = struct.Struct("<BBB")
@@ -2808,6 +2842,7 @@ class MissionItemReached(Message):
     MIN_LENGTH: ClassVar[int] = 2
     FIELDS: ClassVar[tuple[str, ...]] = ("seq",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint16_t",)
     _IDB: ClassVar[bytes] = b'.\x00\x00'
     _XB: ClassVar[bytes] = b'\x0b'
     _S: ClassVar[struct.Struct] = struct.Struct("<H")
@@ -2850,6 +2885,7 @@ class MissionAck(Message):
     MIN_LENGTH: ClassVar[int] = 3
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "type", "mission_type",)
     ENUMS: ClassVar[dict[str, str]] = {"type": "MAV_MISSION_RESULT", "mission_type": "MAV_MISSION_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'/\x00\x00'
     _XB: ClassVar[bytes] = b'\x99'
     _S: ClassVar[struct.Struct] = struct.Struct("<BBBB")
@@ -2913,6 +2949,7 @@ class SetGpsGlobalOrigin(Message):
     MIN_LENGTH: ClassVar[int] = 13
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "latitude", "longitude", "altitude", "time_usec",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "int32_t", "int32_t", "int32_t", "uint64_t",)
     _IDB: ClassVar[bytes] = b'0\x00\x00'
     _XB: ClassVar[bytes] = b')'
     _S: ClassVar[struct.Struct] = struct.Struct("<iiiBQ")
@@ -2983,6 +3020,7 @@ class GpsGlobalOrigin(Message):
     MIN_LENGTH: ClassVar[int] = 12
     FIELDS: ClassVar[tuple[str, ...]] = ("latitude", "longitude", "altitude", "time_usec",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("int32_t", "int32_t", "int32_t", "uint64_t",)
     _IDB: ClassVar[bytes] = b'1\x00\x00'
     _XB: ClassVar[bytes] = b"'"
     _S: ClassVar[struct.Struct] = struct.Struct("<iiiQ")
@@ -3046,6 +3084,7 @@ class ParamMapRc(Message):
     MIN_LENGTH: ClassVar[int] = 37
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "param_id", "param_index", "parameter_rc_channel_index", "param_value0", "scale", "param_value_min", "param_value_max",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "char[16]", "int16_t", "uint8_t", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'2\x00\x00'
     _XB: ClassVar[bytes] = b'N'
     _S: ClassVar[struct.Struct] = struct.Struct("<ffffhBB16sB")
@@ -3143,6 +3182,7 @@ class MissionRequestInt(Message):
     MIN_LENGTH: ClassVar[int] = 4
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "seq", "mission_type",)
     ENUMS: ClassVar[dict[str, str]] = {"mission_type": "MAV_MISSION_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'3\x00\x00'
     _XB: ClassVar[bytes] = b'\xc4'
     _S: ClassVar[struct.Struct] = struct.Struct("<HBBB")
@@ -3206,6 +3246,7 @@ class SafetySetAllowedArea(Message):
     MIN_LENGTH: ClassVar[int] = 27
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "frame", "p1x", "p1y", "p1z", "p2x", "p2y", "p2z",)
     ENUMS: ClassVar[dict[str, str]] = {"frame": "MAV_FRAME"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'6\x00\x00'
     _XB: ClassVar[bytes] = b'\x0f'
     _S: ClassVar[struct.Struct] = struct.Struct("<ffffffBBB")
@@ -3304,6 +3345,7 @@ class SafetyAllowedArea(Message):
     MIN_LENGTH: ClassVar[int] = 25
     FIELDS: ClassVar[tuple[str, ...]] = ("frame", "p1x", "p1y", "p1z", "p2x", "p2y", "p2z",)
     ENUMS: ClassVar[dict[str, str]] = {"frame": "MAV_FRAME"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'7\x00\x00'
     _XB: ClassVar[bytes] = b'\x03'
     _S: ClassVar[struct.Struct] = struct.Struct("<ffffffB")
@@ -3388,6 +3430,7 @@ class AttitudeQuaternionCov(Message):
     MIN_LENGTH: ClassVar[int] = 72
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "q", "rollspeed", "pitchspeed", "yawspeed", "covariance",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float[4]", "float", "float", "float", "float[9]",)
     _IDB: ClassVar[bytes] = b'=\x00\x00'
     _XB: ClassVar[bytes] = b'\xa7'
     _S: ClassVar[struct.Struct] = struct.Struct("<Qffffffffffffffff")
@@ -3464,6 +3507,7 @@ class NavControllerOutput(Message):
     MIN_LENGTH: ClassVar[int] = 26
     FIELDS: ClassVar[tuple[str, ...]] = ("nav_roll", "nav_pitch", "nav_bearing", "target_bearing", "wp_dist", "alt_error", "aspd_error", "xtrack_error",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("float", "float", "int16_t", "int16_t", "uint16_t", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'>\x00\x00'
     _XB: ClassVar[bytes] = b'\xb7'
     _S: ClassVar[struct.Struct] = struct.Struct("<fffffhhH")
@@ -3555,6 +3599,7 @@ class GlobalPositionIntCov(Message):
     MIN_LENGTH: ClassVar[int] = 181
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "estimator_type", "lat", "lon", "alt", "relative_alt", "vx", "vy", "vz", "covariance",)
     ENUMS: ClassVar[dict[str, str]] = {"estimator_type": "MAV_ESTIMATOR_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "int32_t", "int32_t", "int32_t", "int32_t", "float", "float", "float", "float[36]",)
     _IDB: ClassVar[bytes] = b'?\x00\x00'
     _XB: ClassVar[bytes] = b'w'
     _S: ClassVar[struct.Struct] = struct.Struct("<QiiiifffffffffffffffffffffffffffffffffffffffB")
@@ -3659,6 +3704,7 @@ class LocalPositionNedCov(Message):
     MIN_LENGTH: ClassVar[int] = 225
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "estimator_type", "x", "y", "z", "vx", "vy", "vz", "ax", "ay", "az", "covariance",)
     ENUMS: ClassVar[dict[str, str]] = {"estimator_type": "MAV_ESTIMATOR_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float[45]",)
     _IDB: ClassVar[bytes] = b'@\x00\x00'
     _XB: ClassVar[bytes] = b'\xbf'
     _S: ClassVar[struct.Struct] = struct.Struct("<QffffffffffffffffffffffffffffffffffffffffffffffffffffffB")
@@ -3777,6 +3823,7 @@ class RcChannels(Message):
     MIN_LENGTH: ClassVar[int] = 42
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "chancount", "chan1_raw", "chan2_raw", "chan3_raw", "chan4_raw", "chan5_raw", "chan6_raw", "chan7_raw", "chan8_raw", "chan9_raw", "chan10_raw", "chan11_raw", "chan12_raw", "chan13_raw", "chan14_raw", "chan15_raw", "chan16_raw", "chan17_raw", "chan18_raw", "rssi",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'A\x00\x00'
     _XB: ClassVar[bytes] = b'v'
     _S: ClassVar[struct.Struct] = struct.Struct("<IHHHHHHHHHHHHHHHHHHBB")
@@ -3959,6 +4006,7 @@ class RequestDataStream(Message):
     MIN_LENGTH: ClassVar[int] = 6
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "req_stream_id", "req_message_rate", "start_stop",)
     ENUMS: ClassVar[dict[str, str]] = {"req_stream_id": "MAV_DATA_STREAM"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "uint16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'B\x00\x00'
     _XB: ClassVar[bytes] = b'\x94'
     _S: ClassVar[struct.Struct] = struct.Struct("<HBBBB")
@@ -4029,6 +4077,7 @@ class DataStream(Message):
     MIN_LENGTH: ClassVar[int] = 4
     FIELDS: ClassVar[tuple[str, ...]] = ("stream_id", "message_rate", "on_off",)
     ENUMS: ClassVar[dict[str, str]] = {"stream_id": "MAV_DATA_STREAM"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'C\x00\x00'
     _XB: ClassVar[bytes] = b'\x15'
     _S: ClassVar[struct.Struct] = struct.Struct("<HBB")
@@ -4085,6 +4134,7 @@ class ManualControl(Message):
     MIN_LENGTH: ClassVar[int] = 11
     FIELDS: ClassVar[tuple[str, ...]] = ("target", "x", "y", "z", "r", "buttons", "buttons2", "enabled_extensions", "s", "t", "aux1", "aux2", "aux3", "aux4", "aux5", "aux6",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "int16_t", "int16_t", "int16_t", "int16_t", "uint16_t", "uint16_t", "uint8_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t",)
     _IDB: ClassVar[bytes] = b'E\x00\x00'
     _XB: ClassVar[bytes] = b'\xf3'
     _S: ClassVar[struct.Struct] = struct.Struct("<hhhhHBHBhhhhhhhh")
@@ -4232,6 +4282,7 @@ class RcChannelsOverride(Message):
     MIN_LENGTH: ClassVar[int] = 18
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "chan1_raw", "chan2_raw", "chan3_raw", "chan4_raw", "chan5_raw", "chan6_raw", "chan7_raw", "chan8_raw", "chan9_raw", "chan10_raw", "chan11_raw", "chan12_raw", "chan13_raw", "chan14_raw", "chan15_raw", "chan16_raw", "chan17_raw", "chan18_raw",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'F\x00\x00'
     _XB: ClassVar[bytes] = b'|'
     _S: ClassVar[struct.Struct] = struct.Struct("<HHHHHHHHBBHHHHHHHHHH")
@@ -4407,6 +4458,7 @@ class MissionItemInt(Message):
     MIN_LENGTH: ClassVar[int] = 37
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "seq", "frame", "command", "current", "autocontinue", "param1", "param2", "param3", "param4", "x", "y", "z", "mission_type",)
     ENUMS: ClassVar[dict[str, str]] = {"frame": "MAV_FRAME", "command": "MAV_CMD", "mission_type": "MAV_MISSION_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint8_t", "uint16_t", "uint8_t", "uint8_t", "float", "float", "float", "float", "int32_t", "int32_t", "float", "uint8_t",)
     _IDB: ClassVar[bytes] = b'I\x00\x00'
     _XB: ClassVar[bytes] = b'&'
     _S: ClassVar[struct.Struct] = struct.Struct("<ffffiifHHBBBBBB")
@@ -4547,6 +4599,7 @@ class VfrHud(Message):
     MIN_LENGTH: ClassVar[int] = 20
     FIELDS: ClassVar[tuple[str, ...]] = ("airspeed", "groundspeed", "heading", "throttle", "alt", "climb",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("float", "float", "int16_t", "uint16_t", "float", "float",)
     _IDB: ClassVar[bytes] = b'J\x00\x00'
     _XB: ClassVar[bytes] = b'\x14'
     _S: ClassVar[struct.Struct] = struct.Struct("<ffffhH")
@@ -4624,6 +4677,7 @@ class CommandInt(Message):
     MIN_LENGTH: ClassVar[int] = 35
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "frame", "command", "current", "autocontinue", "param1", "param2", "param3", "param4", "x", "y", "z",)
     ENUMS: ClassVar[dict[str, str]] = {"frame": "MAV_FRAME", "command": "MAV_CMD"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "uint16_t", "uint8_t", "uint8_t", "float", "float", "float", "float", "int32_t", "int32_t", "float",)
     _IDB: ClassVar[bytes] = b'K\x00\x00'
     _XB: ClassVar[bytes] = b'\x9e'
     _S: ClassVar[struct.Struct] = struct.Struct("<ffffiifHBBBBB")
@@ -4750,6 +4804,7 @@ class CommandLong(Message):
     MIN_LENGTH: ClassVar[int] = 33
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "command", "confirmation", "param1", "param2", "param3", "param4", "param5", "param6", "param7",)
     ENUMS: ClassVar[dict[str, str]] = {"command": "MAV_CMD"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint8_t", "float", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'L\x00\x00'
     _XB: ClassVar[bytes] = b'\x98'
     _S: ClassVar[struct.Struct] = struct.Struct("<fffffffHBBB")
@@ -4862,6 +4917,7 @@ class CommandAck(Message):
     MIN_LENGTH: ClassVar[int] = 3
     FIELDS: ClassVar[tuple[str, ...]] = ("command", "result", "progress", "result_param2", "target_system", "target_component",)
     ENUMS: ClassVar[dict[str, str]] = {"command": "MAV_CMD", "result": "MAV_RESULT"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint16_t", "uint8_t", "uint8_t", "int32_t", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'M\x00\x00'
     _XB: ClassVar[bytes] = b'\x8f'
     _S: ClassVar[struct.Struct] = struct.Struct("<HBBiBB")
@@ -4939,6 +4995,7 @@ class ManualSetpoint(Message):
     MIN_LENGTH: ClassVar[int] = 22
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "roll", "pitch", "yaw", "thrust", "mode_switch", "manual_override_switch",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "float", "float", "float", "float", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'Q\x00\x00'
     _XB: ClassVar[bytes] = b'j'
     _S: ClassVar[struct.Struct] = struct.Struct("<IffffBB")
@@ -5023,6 +5080,7 @@ class SetAttitudeTarget(Message):
     MIN_LENGTH: ClassVar[int] = 39
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "target_system", "target_component", "type_mask", "q", "body_roll_rate", "body_pitch_rate", "body_yaw_rate", "thrust",)
     ENUMS: ClassVar[dict[str, str]] = {"type_mask": "ATTITUDE_TARGET_TYPEMASK"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "uint8_t", "uint8_t", "float[4]", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'R\x00\x00'
     _XB: ClassVar[bytes] = b'1'
     _S: ClassVar[struct.Struct] = struct.Struct("<IffffffffBBB")
@@ -5120,6 +5178,7 @@ class AttitudeTarget(Message):
     MIN_LENGTH: ClassVar[int] = 37
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "type_mask", "q", "body_roll_rate", "body_pitch_rate", "body_yaw_rate", "thrust",)
     ENUMS: ClassVar[dict[str, str]] = {"type_mask": "ATTITUDE_TARGET_TYPEMASK"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "float[4]", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'S\x00\x00'
     _XB: ClassVar[bytes] = b'\x16'
     _S: ClassVar[struct.Struct] = struct.Struct("<IffffffffB")
@@ -5203,6 +5262,7 @@ class SetPositionTargetLocalNed(Message):
     MIN_LENGTH: ClassVar[int] = 53
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "target_system", "target_component", "coordinate_frame", "type_mask", "x", "y", "z", "vx", "vy", "vz", "afx", "afy", "afz", "yaw", "yaw_rate",)
     ENUMS: ClassVar[dict[str, str]] = {"coordinate_frame": "MAV_FRAME", "type_mask": "POSITION_TARGET_TYPEMASK"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "uint8_t", "uint8_t", "uint16_t", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'T\x00\x00'
     _XB: ClassVar[bytes] = b'\x8f'
     _S: ClassVar[struct.Struct] = struct.Struct("<IfffffffffffHBBB")
@@ -5350,6 +5410,7 @@ class PositionTargetLocalNed(Message):
     MIN_LENGTH: ClassVar[int] = 51
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "coordinate_frame", "type_mask", "x", "y", "z", "vx", "vy", "vz", "afx", "afy", "afz", "yaw", "yaw_rate",)
     ENUMS: ClassVar[dict[str, str]] = {"coordinate_frame": "MAV_FRAME", "type_mask": "POSITION_TARGET_TYPEMASK"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "uint16_t", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'U\x00\x00'
     _XB: ClassVar[bytes] = b'\x8c'
     _S: ClassVar[struct.Struct] = struct.Struct("<IfffffffffffHB")
@@ -5483,6 +5544,7 @@ class SetPositionTargetGlobalInt(Message):
     MIN_LENGTH: ClassVar[int] = 53
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "target_system", "target_component", "coordinate_frame", "type_mask", "lat_int", "lon_int", "alt", "vx", "vy", "vz", "afx", "afy", "afz", "yaw", "yaw_rate",)
     ENUMS: ClassVar[dict[str, str]] = {"coordinate_frame": "MAV_FRAME", "type_mask": "POSITION_TARGET_TYPEMASK"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "uint8_t", "uint8_t", "uint16_t", "int32_t", "int32_t", "float", "float", "float", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'V\x00\x00'
     _XB: ClassVar[bytes] = b'\x05'
     _S: ClassVar[struct.Struct] = struct.Struct("<IiifffffffffHBBB")
@@ -5630,6 +5692,7 @@ class PositionTargetGlobalInt(Message):
     MIN_LENGTH: ClassVar[int] = 51
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "coordinate_frame", "type_mask", "lat_int", "lon_int", "alt", "vx", "vy", "vz", "afx", "afy", "afz", "yaw", "yaw_rate",)
     ENUMS: ClassVar[dict[str, str]] = {"coordinate_frame": "MAV_FRAME", "type_mask": "POSITION_TARGET_TYPEMASK"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "uint16_t", "int32_t", "int32_t", "float", "float", "float", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'W\x00\x00'
     _XB: ClassVar[bytes] = b'\x96'
     _S: ClassVar[struct.Struct] = struct.Struct("<IiifffffffffHB")
@@ -5763,6 +5826,7 @@ class LocalPositionNedSystemGlobalOffset(Message):
     MIN_LENGTH: ClassVar[int] = 28
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "x", "y", "z", "roll", "pitch", "yaw",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'Y\x00\x00'
     _XB: ClassVar[bytes] = b'\xe7'
     _S: ClassVar[struct.Struct] = struct.Struct("<Iffffff")
@@ -5847,6 +5911,7 @@ class HilState(Message):
     MIN_LENGTH: ClassVar[int] = 56
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "roll", "pitch", "yaw", "rollspeed", "pitchspeed", "yawspeed", "lat", "lon", "alt", "vx", "vy", "vz", "xacc", "yacc", "zacc",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float", "float", "float", "float", "float", "float", "int32_t", "int32_t", "int32_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t",)
     _IDB: ClassVar[bytes] = b'Z\x00\x00'
     _XB: ClassVar[bytes] = b'\xb7'
     _S: ClassVar[struct.Struct] = struct.Struct("<Qffffffiiihhhhhh")
@@ -5994,6 +6059,7 @@ class HilControls(Message):
     MIN_LENGTH: ClassVar[int] = 42
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "roll_ailerons", "pitch_elevator", "yaw_rudder", "throttle", "aux1", "aux2", "aux3", "aux4", "mode", "nav_mode",)
     ENUMS: ClassVar[dict[str, str]] = {"mode": "MAV_MODE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float", "float", "float", "float", "float", "float", "float", "float", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'[\x00\x00'
     _XB: ClassVar[bytes] = b'?'
     _S: ClassVar[struct.Struct] = struct.Struct("<QffffffffBB")
@@ -6106,6 +6172,7 @@ class HilRcInputsRaw(Message):
     MIN_LENGTH: ClassVar[int] = 33
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "chan1_raw", "chan2_raw", "chan3_raw", "chan4_raw", "chan5_raw", "chan6_raw", "chan7_raw", "chan8_raw", "chan9_raw", "chan10_raw", "chan11_raw", "chan12_raw", "rssi",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\\\x00\x00'
     _XB: ClassVar[bytes] = b'6'
     _S: ClassVar[struct.Struct] = struct.Struct("<QHHHHHHHHHHHHB")
@@ -6239,6 +6306,7 @@ class HilActuatorControls(Message):
     MIN_LENGTH: ClassVar[int] = 81
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "controls", "mode", "flags",)
     ENUMS: ClassVar[dict[str, str]] = {"mode": "MAV_MODE_FLAG", "flags": "HIL_ACTUATOR_CONTROLS_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float[16]", "uint8_t", "uint64_t",)
     _IDB: ClassVar[bytes] = b']\x00\x00'
     _XB: ClassVar[bytes] = b'/'
     _S: ClassVar[struct.Struct] = struct.Struct("<QQffffffffffffffffB")
@@ -6301,6 +6369,7 @@ class OpticalFlow(Message):
     MIN_LENGTH: ClassVar[int] = 26
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "sensor_id", "flow_x", "flow_y", "flow_comp_m_x", "flow_comp_m_y", "quality", "ground_distance", "flow_rate_x", "flow_rate_y",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "int16_t", "int16_t", "float", "float", "uint8_t", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'd\x00\x00'
     _XB: ClassVar[bytes] = b'\xaf'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffhhBBff")
@@ -6406,6 +6475,7 @@ class GlobalVisionPositionEstimate(Message):
     MIN_LENGTH: ClassVar[int] = 32
     FIELDS: ClassVar[tuple[str, ...]] = ("usec", "x", "y", "z", "roll", "pitch", "yaw", "covariance", "reset_counter",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float", "float", "float", "float", "float", "float", "float[21]", "uint8_t",)
     _IDB: ClassVar[bytes] = b'e\x00\x00'
     _XB: ClassVar[bytes] = b'f'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffffffffffffffffffffffffffB")
@@ -6503,6 +6573,7 @@ class VisionPositionEstimate(Message):
     MIN_LENGTH: ClassVar[int] = 32
     FIELDS: ClassVar[tuple[str, ...]] = ("usec", "x", "y", "z", "roll", "pitch", "yaw", "covariance", "reset_counter",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float", "float", "float", "float", "float", "float", "float[21]", "uint8_t",)
     _IDB: ClassVar[bytes] = b'f\x00\x00'
     _XB: ClassVar[bytes] = b'\x9e'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffffffffffffffffffffffffffB")
@@ -6600,6 +6671,7 @@ class VisionSpeedEstimate(Message):
     MIN_LENGTH: ClassVar[int] = 20
     FIELDS: ClassVar[tuple[str, ...]] = ("usec", "x", "y", "z", "covariance", "reset_counter",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float", "float", "float", "float[9]", "uint8_t",)
     _IDB: ClassVar[bytes] = b'g\x00\x00'
     _XB: ClassVar[bytes] = b'\xd0'
     _S: ClassVar[struct.Struct] = struct.Struct("<QffffffffffffB")
@@ -6676,6 +6748,7 @@ class ViconPositionEstimate(Message):
     MIN_LENGTH: ClassVar[int] = 32
     FIELDS: ClassVar[tuple[str, ...]] = ("usec", "x", "y", "z", "roll", "pitch", "yaw", "covariance",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float", "float", "float", "float", "float", "float", "float[21]",)
     _IDB: ClassVar[bytes] = b'h\x00\x00'
     _XB: ClassVar[bytes] = b'8'
     _S: ClassVar[struct.Struct] = struct.Struct("<Qfffffffffffffffffffffffffff")
@@ -6766,6 +6839,7 @@ class HighresImu(Message):
     MIN_LENGTH: ClassVar[int] = 62
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "xacc", "yacc", "zacc", "xgyro", "ygyro", "zgyro", "xmag", "ymag", "zmag", "abs_pressure", "diff_pressure", "pressure_alt", "temperature", "fields_updated", "id",)
     ENUMS: ClassVar[dict[str, str]] = {"fields_updated": "HIGHRES_IMU_UPDATED_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "uint16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'i\x00\x00'
     _XB: ClassVar[bytes] = b']'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffffffffffffHB")
@@ -6913,6 +6987,7 @@ class OpticalFlowRad(Message):
     MIN_LENGTH: ClassVar[int] = 44
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "sensor_id", "integration_time_us", "integrated_x", "integrated_y", "integrated_xgyro", "integrated_ygyro", "integrated_zgyro", "temperature", "quality", "time_delta_distance_us", "distance",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "uint32_t", "float", "float", "float", "float", "float", "int16_t", "uint8_t", "uint32_t", "float",)
     _IDB: ClassVar[bytes] = b'j\x00\x00'
     _XB: ClassVar[bytes] = b'\x8a'
     _S: ClassVar[struct.Struct] = struct.Struct("<QIfffffIfhBB")
@@ -7032,6 +7107,7 @@ class HilSensor(Message):
     MIN_LENGTH: ClassVar[int] = 64
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "xacc", "yacc", "zacc", "xgyro", "ygyro", "zgyro", "xmag", "ymag", "zmag", "abs_pressure", "diff_pressure", "pressure_alt", "temperature", "fields_updated", "id",)
     ENUMS: ClassVar[dict[str, str]] = {"fields_updated": "HIL_SENSOR_UPDATED_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "uint32_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'k\x00\x00'
     _XB: ClassVar[bytes] = b'l'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffffffffffffIB")
@@ -7179,6 +7255,7 @@ class SimState(Message):
     MIN_LENGTH: ClassVar[int] = 84
     FIELDS: ClassVar[tuple[str, ...]] = ("q1", "q2", "q3", "q4", "roll", "pitch", "yaw", "xacc", "yacc", "zacc", "xgyro", "ygyro", "zgyro", "lat", "lon", "alt", "std_dev_horz", "std_dev_vert", "vn", "ve", "vd", "lat_int", "lon_int",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "int32_t", "int32_t",)
     _IDB: ClassVar[bytes] = b'l\x00\x00'
     _XB: ClassVar[bytes] = b' '
     _S: ClassVar[struct.Struct] = struct.Struct("<fffffffffffffffffffffii")
@@ -7375,6 +7452,7 @@ class RadioStatus(Message):
     MIN_LENGTH: ClassVar[int] = 9
     FIELDS: ClassVar[tuple[str, ...]] = ("rssi", "remrssi", "txbuf", "noise", "remnoise", "rxerrors", "fixed",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "uint16_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'm\x00\x00'
     _XB: ClassVar[bytes] = b'\xb9'
     _S: ClassVar[struct.Struct] = struct.Struct("<HHBBBBB")
@@ -7459,6 +7537,7 @@ class FileTransferProtocol(Message):
     MIN_LENGTH: ClassVar[int] = 254
     FIELDS: ClassVar[tuple[str, ...]] = ("target_network", "target_system", "target_component", "payload",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "uint8_t[251]",)
     _IDB: ClassVar[bytes] = b'n\x00\x00'
     _XB: ClassVar[bytes] = b'T'
     _S: ClassVar[struct.Struct] = struct.Struct("<BBB251s")
@@ -7522,6 +7601,7 @@ class Timesync(Message):
     MIN_LENGTH: ClassVar[int] = 16
     FIELDS: ClassVar[tuple[str, ...]] = ("tc1", "ts1",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("int64_t", "int64_t",)
     _IDB: ClassVar[bytes] = b'o\x00\x00'
     _XB: ClassVar[bytes] = b'"'
     _S: ClassVar[struct.Struct] = struct.Struct("<qq")
@@ -7571,6 +7651,7 @@ class CameraTrigger(Message):
     MIN_LENGTH: ClassVar[int] = 12
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "seq",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint32_t",)
     _IDB: ClassVar[bytes] = b'p\x00\x00'
     _XB: ClassVar[bytes] = b'\xae'
     _S: ClassVar[struct.Struct] = struct.Struct("<QI")
@@ -7620,6 +7701,7 @@ class HilGps(Message):
     MIN_LENGTH: ClassVar[int] = 36
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "fix_type", "lat", "lon", "alt", "eph", "epv", "vel", "vn", "ve", "vd", "cog", "satellites_visible", "id", "yaw",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "int32_t", "int32_t", "int32_t", "uint16_t", "uint16_t", "uint16_t", "int16_t", "int16_t", "int16_t", "uint16_t", "uint8_t", "uint8_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'q\x00\x00'
     _XB: ClassVar[bytes] = b'|'
     _S: ClassVar[struct.Struct] = struct.Struct("<QiiiHHHhhhHBBBH")
@@ -7760,6 +7842,7 @@ class HilOpticalFlow(Message):
     MIN_LENGTH: ClassVar[int] = 44
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "sensor_id", "integration_time_us", "integrated_x", "integrated_y", "integrated_xgyro", "integrated_ygyro", "integrated_zgyro", "temperature", "quality", "time_delta_distance_us", "distance",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "uint32_t", "float", "float", "float", "float", "float", "int16_t", "uint8_t", "uint32_t", "float",)
     _IDB: ClassVar[bytes] = b'r\x00\x00'
     _XB: ClassVar[bytes] = b'\xed'
     _S: ClassVar[struct.Struct] = struct.Struct("<QIfffffIfhBB")
@@ -7879,6 +7962,7 @@ class HilStateQuaternion(Message):
     MIN_LENGTH: ClassVar[int] = 64
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "attitude_quaternion", "rollspeed", "pitchspeed", "yawspeed", "lat", "lon", "alt", "vx", "vy", "vz", "ind_airspeed", "true_airspeed", "xacc", "yacc", "zacc",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float[4]", "float", "float", "float", "int32_t", "int32_t", "int32_t", "int16_t", "int16_t", "int16_t", "uint16_t", "uint16_t", "int16_t", "int16_t", "int16_t",)
     _IDB: ClassVar[bytes] = b's\x00\x00'
     _XB: ClassVar[bytes] = b'\x04'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffffffiiihhhHHhhh")
@@ -8025,6 +8109,7 @@ class ScaledImu2(Message):
     MIN_LENGTH: ClassVar[int] = 22
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "xacc", "yacc", "zacc", "xgyro", "ygyro", "zgyro", "xmag", "ymag", "zmag", "temperature",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t",)
     _IDB: ClassVar[bytes] = b't\x00\x00'
     _XB: ClassVar[bytes] = b'L'
     _S: ClassVar[struct.Struct] = struct.Struct("<Ihhhhhhhhhh")
@@ -8137,6 +8222,7 @@ class LogRequestList(Message):
     MIN_LENGTH: ClassVar[int] = 6
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "start", "end",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'u\x00\x00'
     _XB: ClassVar[bytes] = b'\x80'
     _S: ClassVar[struct.Struct] = struct.Struct("<HHBB")
@@ -8200,6 +8286,7 @@ class LogEntry(Message):
     MIN_LENGTH: ClassVar[int] = 14
     FIELDS: ClassVar[tuple[str, ...]] = ("id", "num_logs", "last_log_num", "time_utc", "size",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint16_t", "uint16_t", "uint16_t", "uint32_t", "uint32_t",)
     _IDB: ClassVar[bytes] = b'v\x00\x00'
     _XB: ClassVar[bytes] = b'8'
     _S: ClassVar[struct.Struct] = struct.Struct("<IIHHH")
@@ -8270,6 +8357,7 @@ class LogRequestData(Message):
     MIN_LENGTH: ClassVar[int] = 12
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "id", "ofs", "count",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint32_t", "uint32_t",)
     _IDB: ClassVar[bytes] = b'w\x00\x00'
     _XB: ClassVar[bytes] = b't'
     _S: ClassVar[struct.Struct] = struct.Struct("<IIHBB")
@@ -8340,6 +8428,7 @@ class LogData(Message):
     MIN_LENGTH: ClassVar[int] = 97
     FIELDS: ClassVar[tuple[str, ...]] = ("id", "ofs", "count", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint16_t", "uint32_t", "uint8_t", "uint8_t[90]",)
     _IDB: ClassVar[bytes] = b'x\x00\x00'
     _XB: ClassVar[bytes] = b'\x86'
     _S: ClassVar[struct.Struct] = struct.Struct("<IHB90s")
@@ -8403,6 +8492,7 @@ class LogErase(Message):
     MIN_LENGTH: ClassVar[int] = 2
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'y\x00\x00'
     _XB: ClassVar[bytes] = b'\xed'
     _S: ClassVar[struct.Struct] = struct.Struct("<BB")
@@ -8452,6 +8542,7 @@ class LogRequestEnd(Message):
     MIN_LENGTH: ClassVar[int] = 2
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'z\x00\x00'
     _XB: ClassVar[bytes] = b'\xcb'
     _S: ClassVar[struct.Struct] = struct.Struct("<BB")
@@ -8501,6 +8592,7 @@ class GpsInjectData(Message):
     MIN_LENGTH: ClassVar[int] = 113
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "len", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "uint8_t[110]",)
     _IDB: ClassVar[bytes] = b'{\x00\x00'
     _XB: ClassVar[bytes] = b'\xfa'
     _S: ClassVar[struct.Struct] = struct.Struct("<BBB110s")
@@ -8564,6 +8656,7 @@ class Gps2Raw(Message):
     MIN_LENGTH: ClassVar[int] = 35
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "fix_type", "lat", "lon", "alt", "eph", "epv", "vel", "cog", "satellites_visible", "dgps_numch", "dgps_age", "yaw", "alt_ellipsoid", "h_acc", "v_acc", "vel_acc", "hdg_acc",)
     ENUMS: ClassVar[dict[str, str]] = {"fix_type": "GPS_FIX_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "int32_t", "int32_t", "int32_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint8_t", "uint8_t", "uint32_t", "uint16_t", "int32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t",)
     _IDB: ClassVar[bytes] = b'|\x00\x00'
     _XB: ClassVar[bytes] = b'W'
     _S: ClassVar[struct.Struct] = struct.Struct("<QiiiIHHHHBBBHiIIII")
@@ -8725,6 +8818,7 @@ class PowerStatus(Message):
     MIN_LENGTH: ClassVar[int] = 6
     FIELDS: ClassVar[tuple[str, ...]] = ("Vcc", "Vservo", "flags",)
     ENUMS: ClassVar[dict[str, str]] = {"flags": "MAV_POWER_STATUS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint16_t", "uint16_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'}\x00\x00'
     _XB: ClassVar[bytes] = b'\xcb'
     _S: ClassVar[struct.Struct] = struct.Struct("<HHH")
@@ -8781,6 +8875,7 @@ class SerialControl(Message):
     MIN_LENGTH: ClassVar[int] = 79
     FIELDS: ClassVar[tuple[str, ...]] = ("device", "flags", "timeout", "baudrate", "count", "data",)
     ENUMS: ClassVar[dict[str, str]] = {"device": "SERIAL_CONTROL_DEV", "flags": "SERIAL_CONTROL_FLAG"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint32_t", "uint8_t", "uint8_t[70]",)
     _IDB: ClassVar[bytes] = b'~\x00\x00'
     _XB: ClassVar[bytes] = b'\xdc'
     _S: ClassVar[struct.Struct] = struct.Struct("<IHBBB70s")
@@ -8858,6 +8953,7 @@ class GpsRtk(Message):
     MIN_LENGTH: ClassVar[int] = 35
     FIELDS: ClassVar[tuple[str, ...]] = ("time_last_baseline_ms", "rtk_receiver_id", "wn", "tow", "rtk_health", "rtk_rate", "nsats", "baseline_coords_type", "baseline_a_mm", "baseline_b_mm", "baseline_c_mm", "accuracy", "iar_num_hypotheses",)
     ENUMS: ClassVar[dict[str, str]] = {"baseline_coords_type": "RTK_BASELINE_COORDINATE_SYSTEM"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "uint16_t", "uint32_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "int32_t", "int32_t", "int32_t", "uint32_t", "int32_t",)
     _IDB: ClassVar[bytes] = b'\x7f\x00\x00'
     _XB: ClassVar[bytes] = b'\x19'
     _S: ClassVar[struct.Struct] = struct.Struct("<IIiiiIiHBBBBB")
@@ -8984,6 +9080,7 @@ class Gps2Rtk(Message):
     MIN_LENGTH: ClassVar[int] = 35
     FIELDS: ClassVar[tuple[str, ...]] = ("time_last_baseline_ms", "rtk_receiver_id", "wn", "tow", "rtk_health", "rtk_rate", "nsats", "baseline_coords_type", "baseline_a_mm", "baseline_b_mm", "baseline_c_mm", "accuracy", "iar_num_hypotheses",)
     ENUMS: ClassVar[dict[str, str]] = {"baseline_coords_type": "RTK_BASELINE_COORDINATE_SYSTEM"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "uint16_t", "uint32_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "int32_t", "int32_t", "int32_t", "uint32_t", "int32_t",)
     _IDB: ClassVar[bytes] = b'\x80\x00\x00'
     _XB: ClassVar[bytes] = b'\xe2'
     _S: ClassVar[struct.Struct] = struct.Struct("<IIiiiIiHBBBBB")
@@ -9110,6 +9207,7 @@ class ScaledImu3(Message):
     MIN_LENGTH: ClassVar[int] = 22
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "xacc", "yacc", "zacc", "xgyro", "ygyro", "zgyro", "xmag", "ymag", "zmag", "temperature",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t",)
     _IDB: ClassVar[bytes] = b'\x81\x00\x00'
     _XB: ClassVar[bytes] = b'.'
     _S: ClassVar[struct.Struct] = struct.Struct("<Ihhhhhhhhhh")
@@ -9222,6 +9320,7 @@ class DataTransmissionHandshake(Message):
     MIN_LENGTH: ClassVar[int] = 13
     FIELDS: ClassVar[tuple[str, ...]] = ("type", "size", "width", "height", "packets", "payload", "jpg_quality",)
     ENUMS: ClassVar[dict[str, str]] = {"type": "MAVLINK_DATA_STREAM_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint32_t", "uint16_t", "uint16_t", "uint16_t", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x82\x00\x00'
     _XB: ClassVar[bytes] = b'\x1d'
     _S: ClassVar[struct.Struct] = struct.Struct("<IHHHBBB")
@@ -9306,6 +9405,7 @@ class EncapsulatedData(Message):
     MIN_LENGTH: ClassVar[int] = 255
     FIELDS: ClassVar[tuple[str, ...]] = ("seqnr", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint16_t", "uint8_t[253]",)
     _IDB: ClassVar[bytes] = b'\x83\x00\x00'
     _XB: ClassVar[bytes] = b'\xdf'
     _S: ClassVar[struct.Struct] = struct.Struct("<H253s")
@@ -9355,6 +9455,7 @@ class DistanceSensor(Message):
     MIN_LENGTH: ClassVar[int] = 14
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "min_distance", "max_distance", "current_distance", "type", "id", "orientation", "covariance", "horizontal_fov", "vertical_fov", "quaternion", "signal_quality",)
     ENUMS: ClassVar[dict[str, str]] = {"type": "MAV_DISTANCE_SENSOR", "orientation": "MAV_SENSOR_ORIENTATION"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint16_t", "uint16_t", "uint16_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "float", "float", "float[4]", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x84\x00\x00'
     _XB: ClassVar[bytes] = b'U'
     _S: ClassVar[struct.Struct] = struct.Struct("<IHHHBBBBffffffB")
@@ -9473,6 +9574,7 @@ class TerrainRequest(Message):
     MIN_LENGTH: ClassVar[int] = 18
     FIELDS: ClassVar[tuple[str, ...]] = ("lat", "lon", "grid_spacing", "mask",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("int32_t", "int32_t", "uint16_t", "uint64_t",)
     _IDB: ClassVar[bytes] = b'\x85\x00\x00'
     _XB: ClassVar[bytes] = b'\x06'
     _S: ClassVar[struct.Struct] = struct.Struct("<QiiH")
@@ -9536,6 +9638,7 @@ class TerrainData(Message):
     MIN_LENGTH: ClassVar[int] = 43
     FIELDS: ClassVar[tuple[str, ...]] = ("lat", "lon", "grid_spacing", "gridbit", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("int32_t", "int32_t", "uint16_t", "uint8_t", "int16_t[16]",)
     _IDB: ClassVar[bytes] = b'\x86\x00\x00'
     _XB: ClassVar[bytes] = b'\xe5'
     _S: ClassVar[struct.Struct] = struct.Struct("<iiHhhhhhhhhhhhhhhhhB")
@@ -9605,6 +9708,7 @@ class TerrainCheck(Message):
     MIN_LENGTH: ClassVar[int] = 8
     FIELDS: ClassVar[tuple[str, ...]] = ("lat", "lon",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("int32_t", "int32_t",)
     _IDB: ClassVar[bytes] = b'\x87\x00\x00'
     _XB: ClassVar[bytes] = b'\xcb'
     _S: ClassVar[struct.Struct] = struct.Struct("<ii")
@@ -9654,6 +9758,7 @@ class TerrainReport(Message):
     MIN_LENGTH: ClassVar[int] = 22
     FIELDS: ClassVar[tuple[str, ...]] = ("lat", "lon", "spacing", "terrain_height", "current_height", "pending", "loaded",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("int32_t", "int32_t", "uint16_t", "float", "float", "uint16_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'\x88\x00\x00'
     _XB: ClassVar[bytes] = b'\x01'
     _S: ClassVar[struct.Struct] = struct.Struct("<iiffHHH")
@@ -9738,6 +9843,7 @@ class ScaledPressure2(Message):
     MIN_LENGTH: ClassVar[int] = 14
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "press_abs", "press_diff", "temperature", "temperature_press_diff",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "float", "float", "int16_t", "int16_t",)
     _IDB: ClassVar[bytes] = b'\x89\x00\x00'
     _XB: ClassVar[bytes] = b'\xc3'
     _S: ClassVar[struct.Struct] = struct.Struct("<Iffhh")
@@ -9808,6 +9914,7 @@ class AttPosMocap(Message):
     MIN_LENGTH: ClassVar[int] = 36
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "q", "x", "y", "z", "covariance",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float[4]", "float", "float", "float", "float[21]",)
     _IDB: ClassVar[bytes] = b'\x8a\x00\x00'
     _XB: ClassVar[bytes] = b'm'
     _S: ClassVar[struct.Struct] = struct.Struct("<Qffffffffffffffffffffffffffff")
@@ -9884,6 +9991,7 @@ class SetActuatorControlTarget(Message):
     MIN_LENGTH: ClassVar[int] = 43
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "group_mlx", "target_system", "target_component", "controls",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "uint8_t", "uint8_t", "float[8]",)
     _IDB: ClassVar[bytes] = b'\x8b\x00\x00'
     _XB: ClassVar[bytes] = b'\xa8'
     _S: ClassVar[struct.Struct] = struct.Struct("<QffffffffBBB")
@@ -9953,6 +10061,7 @@ class ActuatorControlTarget(Message):
     MIN_LENGTH: ClassVar[int] = 41
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "group_mlx", "controls",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "float[8]",)
     _IDB: ClassVar[bytes] = b'\x8c\x00\x00'
     _XB: ClassVar[bytes] = b'\xb5'
     _S: ClassVar[struct.Struct] = struct.Struct("<QffffffffB")
@@ -10008,6 +10117,7 @@ class Altitude(Message):
     MIN_LENGTH: ClassVar[int] = 32
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "altitude_monotonic", "altitude_amsl", "altitude_local", "altitude_relative", "altitude_terrain", "bottom_clearance",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'\x8d\x00\x00'
     _XB: ClassVar[bytes] = b'/'
     _S: ClassVar[struct.Struct] = struct.Struct("<Qffffff")
@@ -10092,6 +10202,7 @@ class ResourceRequest(Message):
     MIN_LENGTH: ClassVar[int] = 243
     FIELDS: ClassVar[tuple[str, ...]] = ("request_id", "uri_type", "uri", "transfer_type", "storage",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t[120]", "uint8_t", "uint8_t[120]",)
     _IDB: ClassVar[bytes] = b'\x8e\x00\x00'
     _XB: ClassVar[bytes] = b'H'
     _S: ClassVar[struct.Struct] = struct.Struct("<BB120sB120s")
@@ -10162,6 +10273,7 @@ class ScaledPressure3(Message):
     MIN_LENGTH: ClassVar[int] = 14
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "press_abs", "press_diff", "temperature", "temperature_press_diff",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "float", "float", "int16_t", "int16_t",)
     _IDB: ClassVar[bytes] = b'\x8f\x00\x00'
     _XB: ClassVar[bytes] = b'\x83'
     _S: ClassVar[struct.Struct] = struct.Struct("<Iffhh")
@@ -10232,6 +10344,7 @@ class FollowTarget(Message):
     MIN_LENGTH: ClassVar[int] = 93
     FIELDS: ClassVar[tuple[str, ...]] = ("timestamp", "est_capabilities", "lat", "lon", "alt", "vel", "acc", "attitude_q", "rates", "position_cov", "custom_state",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "int32_t", "int32_t", "float", "float[3]", "float[3]", "float[4]", "float[3]", "float[3]", "uint64_t",)
     _IDB: ClassVar[bytes] = b'\x90\x00\x00'
     _XB: ClassVar[bytes] = b'\x7f'
     _S: ClassVar[struct.Struct] = struct.Struct("<QQiifffffffffffffffffB")
@@ -10343,6 +10456,7 @@ class ControlSystemState(Message):
     MIN_LENGTH: ClassVar[int] = 100
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "x_acc", "y_acc", "z_acc", "x_vel", "y_vel", "z_vel", "x_pos", "y_pos", "z_pos", "airspeed", "vel_variance", "pos_variance", "q", "roll_rate", "pitch_rate", "yaw_rate",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float[3]", "float[3]", "float[4]", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'\x92\x00\x00'
     _XB: ClassVar[bytes] = b'g'
     _S: ClassVar[struct.Struct] = struct.Struct("<Qfffffffffffffffffffffff")
@@ -10496,6 +10610,7 @@ class BatteryStatus(Message):
     MIN_LENGTH: ClassVar[int] = 36
     FIELDS: ClassVar[tuple[str, ...]] = ("id", "battery_function", "type", "temperature", "voltages", "current_battery", "current_consumed", "energy_consumed", "battery_remaining", "time_remaining", "charge_state", "voltages_ext", "mode", "fault_bitmask",)
     ENUMS: ClassVar[dict[str, str]] = {"battery_function": "MAV_BATTERY_FUNCTION", "type": "MAV_BATTERY_TYPE", "charge_state": "MAV_BATTERY_CHARGE_STATE", "mode": "MAV_BATTERY_MODE", "fault_bitmask": "MAV_BATTERY_FAULT"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "int16_t", "uint16_t[10]", "int16_t", "int32_t", "int32_t", "int8_t", "int32_t", "uint8_t", "uint16_t[4]", "uint8_t", "uint32_t",)
     _IDB: ClassVar[bytes] = b'\x93\x00\x00'
     _XB: ClassVar[bytes] = b'\x9a'
     _S: ClassVar[struct.Struct] = struct.Struct("<iihHHHHHHHHHHhBBBbiBHHHHBI")
@@ -10628,6 +10743,7 @@ class AutopilotVersion(Message):
     MIN_LENGTH: ClassVar[int] = 60
     FIELDS: ClassVar[tuple[str, ...]] = ("capabilities", "flight_sw_version", "middleware_sw_version", "os_sw_version", "board_version", "flight_custom_version", "middleware_custom_version", "os_custom_version", "vendor_id", "product_id", "uid", "uid2",)
     ENUMS: ClassVar[dict[str, str]] = {"capabilities": "MAV_PROTOCOL_CAPABILITY"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint8_t[8]", "uint8_t[8]", "uint8_t[8]", "uint16_t", "uint16_t", "uint64_t", "uint8_t[18]",)
     _IDB: ClassVar[bytes] = b'\x94\x00\x00'
     _XB: ClassVar[bytes] = b'\xb2'
     _S: ClassVar[struct.Struct] = struct.Struct("<QQIIIIHH8s8s8s18s")
@@ -10747,6 +10863,7 @@ class LandingTarget(Message):
     MIN_LENGTH: ClassVar[int] = 30
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "target_num", "frame", "angle_x", "angle_y", "distance", "size_x", "size_y", "x", "y", "z", "q", "type", "position_valid",)
     ENUMS: ClassVar[dict[str, str]] = {"frame": "MAV_FRAME", "type": "LANDING_TARGET_TYPE", "position_valid": "MAV_BOOL"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "uint8_t", "float", "float", "float", "float", "float", "float", "float", "float", "float[4]", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x95\x00\x00'
     _XB: ClassVar[bytes] = b'\xc8'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffffBBfffffffBB")
@@ -10879,6 +10996,7 @@ class FenceStatus(Message):
     MIN_LENGTH: ClassVar[int] = 8
     FIELDS: ClassVar[tuple[str, ...]] = ("breach_status", "breach_count", "breach_type", "breach_time", "breach_mitigation",)
     ENUMS: ClassVar[dict[str, str]] = {"breach_type": "FENCE_BREACH", "breach_mitigation": "FENCE_MITIGATE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint16_t", "uint8_t", "uint32_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\xa2\x00\x00'
     _XB: ClassVar[bytes] = b'\xbd'
     _S: ClassVar[struct.Struct] = struct.Struct("<IHBBB")
@@ -10949,6 +11067,7 @@ class MagCalReport(Message):
     MIN_LENGTH: ClassVar[int] = 44
     FIELDS: ClassVar[tuple[str, ...]] = ("compass_id", "cal_mask", "cal_status", "autosaved", "fitness", "ofs_x", "ofs_y", "ofs_z", "diag_x", "diag_y", "diag_z", "offdiag_x", "offdiag_y", "offdiag_z", "orientation_confidence", "old_orientation", "new_orientation", "scale_factor",)
     ENUMS: ClassVar[dict[str, str]] = {"cal_status": "MAG_CAL_STATUS", "old_orientation": "MAV_SENSOR_ORIENTATION", "new_orientation": "MAV_SENSOR_ORIENTATION"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "uint8_t", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "uint8_t", "uint8_t", "float",)
     _IDB: ClassVar[bytes] = b'\xc0\x00\x00'
     _XB: ClassVar[bytes] = b'$'
     _S: ClassVar[struct.Struct] = struct.Struct("<ffffffffffBBBBfBBf")
@@ -11110,6 +11229,7 @@ class EfiStatus(Message):
     MIN_LENGTH: ClassVar[int] = 65
     FIELDS: ClassVar[tuple[str, ...]] = ("health", "ecu_index", "rpm", "fuel_consumed", "fuel_flow", "engine_load", "throttle_position", "spark_dwell_time", "barometric_pressure", "intake_manifold_pressure", "intake_manifold_temperature", "cylinder_head_temperature", "ignition_timing", "injection_time", "exhaust_gas_temperature", "throttle_out", "pt_compensation", "ignition_voltage", "fuel_pressure",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'\xe1\x00\x00'
     _XB: ClassVar[bytes] = b'\xd0'
     _S: ClassVar[struct.Struct] = struct.Struct("<ffffffffffffffffBff")
@@ -11278,6 +11398,7 @@ class EstimatorStatus(Message):
     MIN_LENGTH: ClassVar[int] = 42
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "flags", "vel_ratio", "pos_horiz_ratio", "pos_vert_ratio", "mag_ratio", "hagl_ratio", "tas_ratio", "pos_horiz_accuracy", "pos_vert_accuracy",)
     ENUMS: ClassVar[dict[str, str]] = {"flags": "ESTIMATOR_STATUS_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint16_t", "float", "float", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'\xe6\x00\x00'
     _XB: ClassVar[bytes] = b'\xa3'
     _S: ClassVar[struct.Struct] = struct.Struct("<QffffffffH")
@@ -11383,6 +11504,7 @@ class WindCov(Message):
     MIN_LENGTH: ClassVar[int] = 40
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "wind_x", "wind_y", "wind_z", "var_horiz", "var_vert", "wind_alt", "horiz_accuracy", "vert_accuracy",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float", "float", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'\xe7\x00\x00'
     _XB: ClassVar[bytes] = b'i'
     _S: ClassVar[struct.Struct] = struct.Struct("<Qffffffff")
@@ -11481,6 +11603,7 @@ class GpsInput(Message):
     MIN_LENGTH: ClassVar[int] = 63
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "gps_id", "ignore_flags", "time_week_ms", "time_week", "fix_type", "lat", "lon", "alt", "hdop", "vdop", "vn", "ve", "vd", "speed_accuracy", "horiz_accuracy", "vert_accuracy", "satellites_visible", "yaw",)
     ENUMS: ClassVar[dict[str, str]] = {"ignore_flags": "GPS_INPUT_IGNORE_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "uint16_t", "uint32_t", "uint16_t", "uint8_t", "int32_t", "int32_t", "float", "float", "float", "float", "float", "float", "float", "float", "float", "uint8_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'\xe8\x00\x00'
     _XB: ClassVar[bytes] = b'\x97'
     _S: ClassVar[struct.Struct] = struct.Struct("<QIiifffffffffHHBBBH")
@@ -11649,6 +11772,7 @@ class GpsRtcmData(Message):
     MIN_LENGTH: ClassVar[int] = 182
     FIELDS: ClassVar[tuple[str, ...]] = ("flags", "len", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t[180]",)
     _IDB: ClassVar[bytes] = b'\xe9\x00\x00'
     _XB: ClassVar[bytes] = b'#'
     _S: ClassVar[struct.Struct] = struct.Struct("<BB180s")
@@ -11705,6 +11829,7 @@ class HighLatency(Message):
     MIN_LENGTH: ClassVar[int] = 40
     FIELDS: ClassVar[tuple[str, ...]] = ("base_mode", "custom_mode", "landed_state", "roll", "pitch", "heading", "throttle", "heading_sp", "latitude", "longitude", "altitude_amsl", "altitude_sp", "airspeed", "airspeed_sp", "groundspeed", "climb_rate", "gps_nsat", "gps_fix_type", "battery_remaining", "temperature", "temperature_air", "failsafe", "wp_num", "wp_distance",)
     ENUMS: ClassVar[dict[str, str]] = {"base_mode": "MAV_MODE_FLAG", "landed_state": "MAV_LANDED_STATE", "gps_fix_type": "GPS_FIX_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint32_t", "uint8_t", "int16_t", "int16_t", "uint16_t", "int8_t", "int16_t", "int32_t", "int32_t", "int16_t", "int16_t", "uint8_t", "uint8_t", "uint8_t", "int8_t", "uint8_t", "uint8_t", "uint8_t", "int8_t", "int8_t", "uint8_t", "uint8_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'\xea\x00\x00'
     _XB: ClassVar[bytes] = b'\x96'
     _S: ClassVar[struct.Struct] = struct.Struct("<IiihhHhhhHBBbBBBbBBBbbBB")
@@ -11908,6 +12033,7 @@ class HighLatency2(Message):
     MIN_LENGTH: ClassVar[int] = 42
     FIELDS: ClassVar[tuple[str, ...]] = ("timestamp", "type", "autopilot", "custom_mode", "latitude", "longitude", "altitude", "target_altitude", "heading", "target_heading", "target_distance", "throttle", "airspeed", "airspeed_sp", "groundspeed", "windspeed", "wind_heading", "eph", "epv", "temperature_air", "climb_rate", "battery", "wp_num", "failure_flags", "custom0", "custom1", "custom2",)
     ENUMS: ClassVar[dict[str, str]] = {"type": "MAV_TYPE", "autopilot": "MAV_AUTOPILOT", "failure_flags": "HL_FAILURE_FLAG"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "uint8_t", "uint16_t", "int32_t", "int32_t", "int16_t", "int16_t", "uint8_t", "uint8_t", "uint16_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "int8_t", "int8_t", "int8_t", "uint16_t", "uint16_t", "int8_t", "int8_t", "int8_t",)
     _IDB: ClassVar[bytes] = b'\xeb\x00\x00'
     _XB: ClassVar[bytes] = b'\xb3'
     _S: ClassVar[struct.Struct] = struct.Struct("<IiiHhhHHHBBBBBBBBBBBBbbbbbb")
@@ -12132,6 +12258,7 @@ class Vibration(Message):
     MIN_LENGTH: ClassVar[int] = 32
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "vibration_x", "vibration_y", "vibration_z", "clipping_0", "clipping_1", "clipping_2",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float", "float", "float", "uint32_t", "uint32_t", "uint32_t",)
     _IDB: ClassVar[bytes] = b'\xf1\x00\x00'
     _XB: ClassVar[bytes] = b'Z'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffIII")
@@ -12216,6 +12343,7 @@ class HomePosition(Message):
     MIN_LENGTH: ClassVar[int] = 52
     FIELDS: ClassVar[tuple[str, ...]] = ("latitude", "longitude", "altitude", "x", "y", "z", "q", "approach_x", "approach_y", "approach_z", "time_usec",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("int32_t", "int32_t", "int32_t", "float", "float", "float", "float[4]", "float", "float", "float", "uint64_t",)
     _IDB: ClassVar[bytes] = b'\xf2\x00\x00'
     _XB: ClassVar[bytes] = b'h'
     _S: ClassVar[struct.Struct] = struct.Struct("<iiiffffffffffQ")
@@ -12327,6 +12455,7 @@ class SetHomePosition(Message):
     MIN_LENGTH: ClassVar[int] = 53
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "latitude", "longitude", "altitude", "x", "y", "z", "q", "approach_x", "approach_y", "approach_z", "time_usec",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "int32_t", "int32_t", "int32_t", "float", "float", "float", "float[4]", "float", "float", "float", "uint64_t",)
     _IDB: ClassVar[bytes] = b'\xf3\x00\x00'
     _XB: ClassVar[bytes] = b'U'
     _S: ClassVar[struct.Struct] = struct.Struct("<iiiffffffffffBQ")
@@ -12445,6 +12574,7 @@ class MessageInterval(Message):
     MIN_LENGTH: ClassVar[int] = 6
     FIELDS: ClassVar[tuple[str, ...]] = ("message_id", "interval_us",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint16_t", "int32_t",)
     _IDB: ClassVar[bytes] = b'\xf4\x00\x00'
     _XB: ClassVar[bytes] = b'_'
     _S: ClassVar[struct.Struct] = struct.Struct("<iH")
@@ -12494,6 +12624,7 @@ class ExtendedSysState(Message):
     MIN_LENGTH: ClassVar[int] = 2
     FIELDS: ClassVar[tuple[str, ...]] = ("vtol_state", "landed_state",)
     ENUMS: ClassVar[dict[str, str]] = {"vtol_state": "MAV_VTOL_STATE", "landed_state": "MAV_LANDED_STATE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\xf5\x00\x00'
     _XB: ClassVar[bytes] = b'\x82'
     _S: ClassVar[struct.Struct] = struct.Struct("<BB")
@@ -12543,6 +12674,7 @@ class AdsbVehicle(Message):
     MIN_LENGTH: ClassVar[int] = 38
     FIELDS: ClassVar[tuple[str, ...]] = ("ICAO_address", "lat", "lon", "altitude_type", "altitude", "heading", "hor_velocity", "ver_velocity", "callsign", "emitter_type", "tslc", "flags", "squawk",)
     ENUMS: ClassVar[dict[str, str]] = {"altitude_type": "ADSB_ALTITUDE_TYPE", "emitter_type": "ADSB_EMITTER_TYPE", "flags": "ADSB_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "int32_t", "int32_t", "uint8_t", "int32_t", "uint16_t", "uint16_t", "int16_t", "char[9]", "uint8_t", "uint8_t", "uint16_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'\xf6\x00\x00'
     _XB: ClassVar[bytes] = b'\xb8'
     _S: ClassVar[struct.Struct] = struct.Struct("<IiiiHHhHHB9sBB")
@@ -12668,6 +12800,7 @@ class Collision(Message):
     MIN_LENGTH: ClassVar[int] = 19
     FIELDS: ClassVar[tuple[str, ...]] = ("src", "id", "action", "threat_level", "time_to_minimum_delta", "altitude_minimum_delta", "horizontal_minimum_delta",)
     ENUMS: ClassVar[dict[str, str]] = {"src": "MAV_COLLISION_SRC", "action": "MAV_COLLISION_ACTION", "threat_level": "MAV_COLLISION_THREAT_LEVEL"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint32_t", "uint8_t", "uint8_t", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'\xf7\x00\x00'
     _XB: ClassVar[bytes] = b'Q'
     _S: ClassVar[struct.Struct] = struct.Struct("<IfffBBB")
@@ -12752,6 +12885,7 @@ class V2Extension(Message):
     MIN_LENGTH: ClassVar[int] = 254
     FIELDS: ClassVar[tuple[str, ...]] = ("target_network", "target_system", "target_component", "message_type", "payload",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "uint16_t", "uint8_t[249]",)
     _IDB: ClassVar[bytes] = b'\xf8\x00\x00'
     _XB: ClassVar[bytes] = b'\x08'
     _S: ClassVar[struct.Struct] = struct.Struct("<HBBB249s")
@@ -12822,6 +12956,7 @@ class MemoryVect(Message):
     MIN_LENGTH: ClassVar[int] = 36
     FIELDS: ClassVar[tuple[str, ...]] = ("address", "ver", "type", "value",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint16_t", "uint8_t", "uint8_t", "int8_t[32]",)
     _IDB: ClassVar[bytes] = b'\xf9\x00\x00'
     _XB: ClassVar[bytes] = b'\xcc'
     _S: ClassVar[struct.Struct] = struct.Struct("<HBBbbbbbbbbbbbbbbbbbbbbbbbbbbbbbbbb")
@@ -12884,6 +13019,7 @@ class DebugVect(Message):
     MIN_LENGTH: ClassVar[int] = 30
     FIELDS: ClassVar[tuple[str, ...]] = ("name", "time_usec", "x", "y", "z",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("char[10]", "uint64_t", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'\xfa\x00\x00'
     _XB: ClassVar[bytes] = b'1'
     _S: ClassVar[struct.Struct] = struct.Struct("<Qfff10s")
@@ -12953,6 +13089,7 @@ class NamedValueFloat(Message):
     MIN_LENGTH: ClassVar[int] = 18
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "name", "value",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "char[10]", "float",)
     _IDB: ClassVar[bytes] = b'\xfb\x00\x00'
     _XB: ClassVar[bytes] = b'\xaa'
     _S: ClassVar[struct.Struct] = struct.Struct("<If10s")
@@ -13008,6 +13145,7 @@ class NamedValueInt(Message):
     MIN_LENGTH: ClassVar[int] = 18
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "name", "value",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "char[10]", "int32_t",)
     _IDB: ClassVar[bytes] = b'\xfc\x00\x00'
     _XB: ClassVar[bytes] = b','
     _S: ClassVar[struct.Struct] = struct.Struct("<Ii10s")
@@ -13063,6 +13201,7 @@ class Statustext(Message):
     MIN_LENGTH: ClassVar[int] = 51
     FIELDS: ClassVar[tuple[str, ...]] = ("severity", "text", "id", "chunk_seq",)
     ENUMS: ClassVar[dict[str, str]] = {"severity": "MAV_SEVERITY"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "char[50]", "uint16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\xfd\x00\x00'
     _XB: ClassVar[bytes] = b'S'
     _S: ClassVar[struct.Struct] = struct.Struct("<B50sHB")
@@ -13125,6 +13264,7 @@ class Debug(Message):
     MIN_LENGTH: ClassVar[int] = 9
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "ind", "value",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "float",)
     _IDB: ClassVar[bytes] = b'\xfe\x00\x00'
     _XB: ClassVar[bytes] = b'.'
     _S: ClassVar[struct.Struct] = struct.Struct("<IfB")
@@ -13181,6 +13321,7 @@ class SetupSigning(Message):
     MIN_LENGTH: ClassVar[int] = 42
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "secret_key", "initial_timestamp",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t[32]", "uint64_t",)
     _IDB: ClassVar[bytes] = b'\x00\x01\x00'
     _XB: ClassVar[bytes] = b'G'
     _S: ClassVar[struct.Struct] = struct.Struct("<QBB32s")
@@ -13244,6 +13385,7 @@ class ButtonChange(Message):
     MIN_LENGTH: ClassVar[int] = 9
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "last_change_ms", "state",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint32_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x01\x01\x00'
     _XB: ClassVar[bytes] = b'\x83'
     _S: ClassVar[struct.Struct] = struct.Struct("<IIB")
@@ -13300,6 +13442,7 @@ class PlayTune(Message):
     MIN_LENGTH: ClassVar[int] = 32
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "tune", "tune2",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "char[30]", "char[200]",)
     _IDB: ClassVar[bytes] = b'\x02\x01\x00'
     _XB: ClassVar[bytes] = b'\xbb'
     _S: ClassVar[struct.Struct] = struct.Struct("<BB30s200s")
@@ -13362,6 +13505,7 @@ class CameraInformation(Message):
     MIN_LENGTH: ClassVar[int] = 235
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "vendor_name", "model_name", "firmware_version", "focal_length", "sensor_size_h", "sensor_size_v", "resolution_h", "resolution_v", "lens_id", "flags", "cam_definition_version", "cam_definition_uri", "gimbal_device_id", "camera_device_id",)
     ENUMS: ClassVar[dict[str, str]] = {"flags": "CAMERA_CAP_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t[32]", "uint8_t[32]", "uint32_t", "float", "float", "float", "uint16_t", "uint16_t", "uint8_t", "uint32_t", "uint16_t", "char[140]", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x03\x01\x00'
     _XB: ClassVar[bytes] = b'\\'
     _S: ClassVar[struct.Struct] = struct.Struct("<IIfffIHHH32s32sB140sBB")
@@ -13501,6 +13645,7 @@ class CameraSettings(Message):
     MIN_LENGTH: ClassVar[int] = 5
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "mode_id", "zoomLevel", "focusLevel", "camera_device_id",)
     ENUMS: ClassVar[dict[str, str]] = {"mode_id": "CAMERA_MODE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "float", "float", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x04\x01\x00'
     _XB: ClassVar[bytes] = b'\x92'
     _S: ClassVar[struct.Struct] = struct.Struct("<IBffB")
@@ -13571,6 +13716,7 @@ class StorageInformation(Message):
     MIN_LENGTH: ClassVar[int] = 27
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "storage_id", "storage_count", "status", "total_capacity", "used_capacity", "available_capacity", "read_speed", "write_speed", "type", "name", "storage_usage",)
     ENUMS: ClassVar[dict[str, str]] = {"status": "STORAGE_STATUS", "type": "STORAGE_TYPE", "storage_usage": "STORAGE_USAGE_FLAG"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "uint8_t", "uint8_t", "float", "float", "float", "float", "float", "uint8_t", "char[32]", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x05\x01\x00'
     _XB: ClassVar[bytes] = b'\xb3'
     _S: ClassVar[struct.Struct] = struct.Struct("<IfffffBBBB32sB")
@@ -13689,6 +13835,7 @@ class CameraCaptureStatus(Message):
     MIN_LENGTH: ClassVar[int] = 18
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "image_status", "video_status", "image_interval", "recording_time_ms", "available_capacity", "image_count", "camera_device_id",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "uint8_t", "float", "uint32_t", "float", "int32_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x06\x01\x00'
     _XB: ClassVar[bytes] = b'\x0c'
     _S: ClassVar[struct.Struct] = struct.Struct("<IfIfBBiB")
@@ -13780,6 +13927,7 @@ class CameraImageCaptured(Message):
     MIN_LENGTH: ClassVar[int] = 255
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "time_utc", "camera_id", "lat", "lon", "alt", "relative_alt", "q", "image_index", "capture_result", "file_url",)
     ENUMS: ClassVar[dict[str, str]] = {"capture_result": "MAV_BOOL"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint64_t", "uint8_t", "int32_t", "int32_t", "int32_t", "int32_t", "float[4]", "int32_t", "int8_t", "char[205]",)
     _IDB: ClassVar[bytes] = b'\x07\x01\x00'
     _XB: ClassVar[bytes] = b'\x85'
     _S: ClassVar[struct.Struct] = struct.Struct("<QIiiiiffffiBb205s")
@@ -13891,6 +14039,7 @@ class FlightInformation(Message):
     MIN_LENGTH: ClassVar[int] = 28
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "arming_time_utc", "takeoff_time_utc", "flight_uuid", "landing_time",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint64_t", "uint64_t", "uint64_t", "uint32_t",)
     _IDB: ClassVar[bytes] = b'\x08\x01\x00'
     _XB: ClassVar[bytes] = b'1'
     _S: ClassVar[struct.Struct] = struct.Struct("<QQQII")
@@ -13961,6 +14110,7 @@ class MountOrientation(Message):
     MIN_LENGTH: ClassVar[int] = 16
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "roll", "pitch", "yaw", "yaw_absolute",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'\t\x01\x00'
     _XB: ClassVar[bytes] = b'\x1a'
     _S: ClassVar[struct.Struct] = struct.Struct("<Iffff")
@@ -14031,6 +14181,7 @@ class LoggingData(Message):
     MIN_LENGTH: ClassVar[int] = 255
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "sequence", "length", "first_message_offset", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint8_t", "uint8_t", "uint8_t[249]",)
     _IDB: ClassVar[bytes] = b'\n\x01\x00'
     _XB: ClassVar[bytes] = b'\xc1'
     _S: ClassVar[struct.Struct] = struct.Struct("<HBBBB249s")
@@ -14108,6 +14259,7 @@ class LoggingDataAcked(Message):
     MIN_LENGTH: ClassVar[int] = 255
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "sequence", "length", "first_message_offset", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint8_t", "uint8_t", "uint8_t[249]",)
     _IDB: ClassVar[bytes] = b'\x0b\x01\x00'
     _XB: ClassVar[bytes] = b'#'
     _S: ClassVar[struct.Struct] = struct.Struct("<HBBBB249s")
@@ -14185,6 +14337,7 @@ class LoggingAck(Message):
     MIN_LENGTH: ClassVar[int] = 4
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "sequence",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'\x0c\x01\x00'
     _XB: ClassVar[bytes] = b'\x0e'
     _S: ClassVar[struct.Struct] = struct.Struct("<HBB")
@@ -14241,6 +14394,7 @@ class VideoStreamInformation(Message):
     MIN_LENGTH: ClassVar[int] = 213
     FIELDS: ClassVar[tuple[str, ...]] = ("stream_id", "count", "type", "flags", "framerate", "resolution_h", "resolution_v", "bitrate", "rotation", "hfov", "name", "uri", "encoding", "camera_device_id",)
     ENUMS: ClassVar[dict[str, str]] = {"type": "VIDEO_STREAM_TYPE", "flags": "VIDEO_STREAM_STATUS_FLAGS", "encoding": "VIDEO_STREAM_ENCODING"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "uint16_t", "float", "uint16_t", "uint16_t", "uint32_t", "uint16_t", "uint16_t", "char[32]", "char[160]", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\r\x01\x00'
     _XB: ClassVar[bytes] = b'm'
     _S: ClassVar[struct.Struct] = struct.Struct("<fIHHHHHBBB32s160sBB")
@@ -14373,6 +14527,7 @@ class VideoStreamStatus(Message):
     MIN_LENGTH: ClassVar[int] = 19
     FIELDS: ClassVar[tuple[str, ...]] = ("stream_id", "flags", "framerate", "resolution_h", "resolution_v", "bitrate", "rotation", "hfov", "camera_device_id",)
     ENUMS: ClassVar[dict[str, str]] = {"flags": "VIDEO_STREAM_STATUS_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint16_t", "float", "uint16_t", "uint16_t", "uint32_t", "uint16_t", "uint16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x0e\x01\x00'
     _XB: ClassVar[bytes] = b';'
     _S: ClassVar[struct.Struct] = struct.Struct("<fIHHHHHBB")
@@ -14471,6 +14626,7 @@ class CameraFovStatus(Message):
     MIN_LENGTH: ClassVar[int] = 52
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "lat_camera", "lon_camera", "alt_camera", "lat_image", "lon_image", "alt_image", "q", "hfov", "vfov", "camera_device_id",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "int32_t", "int32_t", "int32_t", "int32_t", "int32_t", "int32_t", "float[4]", "float", "float", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x0f\x01\x00'
     _XB: ClassVar[bytes] = b'\x16'
     _S: ClassVar[struct.Struct] = struct.Struct("<IiiiiiiffffffB")
@@ -14582,6 +14738,7 @@ class CameraTrackingImageStatus(Message):
     MIN_LENGTH: ClassVar[int] = 31
     FIELDS: ClassVar[tuple[str, ...]] = ("tracking_status", "tracking_mode", "target_data", "point_x", "point_y", "radius", "rec_top_x", "rec_top_y", "rec_bottom_x", "rec_bottom_y", "camera_device_id",)
     ENUMS: ClassVar[dict[str, str]] = {"tracking_status": "CAMERA_TRACKING_STATUS_FLAGS", "tracking_mode": "CAMERA_TRACKING_MODE", "target_data": "CAMERA_TRACKING_TARGET_DATA"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "float", "float", "float", "float", "float", "float", "float", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x13\x01\x00'
     _XB: ClassVar[bytes] = b'~'
     _S: ClassVar[struct.Struct] = struct.Struct("<fffffffBBBB")
@@ -14694,6 +14851,7 @@ class CameraTrackingGeoStatus(Message):
     MIN_LENGTH: ClassVar[int] = 49
     FIELDS: ClassVar[tuple[str, ...]] = ("tracking_status", "lat", "lon", "alt", "h_acc", "v_acc", "vel_n", "vel_e", "vel_d", "vel_acc", "dist", "hdg", "hdg_acc", "camera_device_id",)
     ENUMS: ClassVar[dict[str, str]] = {"tracking_status": "CAMERA_TRACKING_STATUS_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "int32_t", "int32_t", "float", "float", "float", "float", "float", "float", "float", "float", "float", "float", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x14\x01\x00'
     _XB: ClassVar[bytes] = b'\x12'
     _S: ClassVar[struct.Struct] = struct.Struct("<iiffffffffffBB")
@@ -14827,6 +14985,7 @@ class CameraThermalRange(Message):
     MIN_LENGTH: ClassVar[int] = 30
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "stream_id", "camera_device_id", "max", "max_point_x", "max_point_y", "min", "min_point_x", "min_point_y",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint8_t", "uint8_t", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'\x15\x01\x00'
     _XB: ClassVar[bytes] = b'>'
     _S: ClassVar[struct.Struct] = struct.Struct("<IffffffBB")
@@ -14925,6 +15084,7 @@ class GimbalManagerInformation(Message):
     MIN_LENGTH: ClassVar[int] = 33
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "cap_flags", "gimbal_device_id", "roll_min", "roll_max", "pitch_min", "pitch_max", "yaw_min", "yaw_max",)
     ENUMS: ClassVar[dict[str, str]] = {"cap_flags": "GIMBAL_MANAGER_CAP_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint32_t", "uint8_t", "float", "float", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'\x18\x01\x00'
     _XB: ClassVar[bytes] = b'F'
     _S: ClassVar[struct.Struct] = struct.Struct("<IIffffffB")
@@ -15023,6 +15183,7 @@ class GimbalManagerStatus(Message):
     MIN_LENGTH: ClassVar[int] = 13
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "flags", "gimbal_device_id", "primary_control_sysid", "primary_control_compid", "secondary_control_sysid", "secondary_control_compid",)
     ENUMS: ClassVar[dict[str, str]] = {"flags": "GIMBAL_MANAGER_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint32_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x19\x01\x00'
     _XB: ClassVar[bytes] = b'0'
     _S: ClassVar[struct.Struct] = struct.Struct("<IIBBBBB")
@@ -15107,6 +15268,7 @@ class GimbalManagerSetAttitude(Message):
     MIN_LENGTH: ClassVar[int] = 35
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "flags", "gimbal_device_id", "q", "angular_velocity_x", "angular_velocity_y", "angular_velocity_z",)
     ENUMS: ClassVar[dict[str, str]] = {"flags": "GIMBAL_MANAGER_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint32_t", "uint8_t", "float[4]", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'\x1a\x01\x00'
     _XB: ClassVar[bytes] = b'{'
     _S: ClassVar[struct.Struct] = struct.Struct("<IfffffffBBB")
@@ -15197,6 +15359,7 @@ class GimbalDeviceInformation(Message):
     MIN_LENGTH: ClassVar[int] = 144
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "vendor_name", "model_name", "custom_name", "firmware_version", "hardware_version", "uid", "cap_flags", "custom_cap_flags", "roll_min", "roll_max", "pitch_min", "pitch_max", "yaw_min", "yaw_max", "gimbal_device_id", "cap_flags2",)
     ENUMS: ClassVar[dict[str, str]] = {"cap_flags": "GIMBAL_DEVICE_CAP_FLAGS", "cap_flags2": "GIMBAL_DEVICE_CAP_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "char[32]", "char[32]", "char[32]", "uint32_t", "uint32_t", "uint64_t", "uint16_t", "uint16_t", "float", "float", "float", "float", "float", "float", "uint8_t", "uint32_t",)
     _IDB: ClassVar[bytes] = b'\x1b\x01\x00'
     _XB: ClassVar[bytes] = b'J'
     _S: ClassVar[struct.Struct] = struct.Struct("<QIIIffffffHH32s32s32sBI")
@@ -15350,6 +15513,7 @@ class GimbalDeviceSetAttitude(Message):
     MIN_LENGTH: ClassVar[int] = 32
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "flags", "q", "angular_velocity_x", "angular_velocity_y", "angular_velocity_z",)
     ENUMS: ClassVar[dict[str, str]] = {"flags": "GIMBAL_DEVICE_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "float[4]", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'\x1c\x01\x00'
     _XB: ClassVar[bytes] = b'c'
     _S: ClassVar[struct.Struct] = struct.Struct("<fffffffHBB")
@@ -15433,6 +15597,7 @@ class GimbalDeviceAttitudeStatus(Message):
     MIN_LENGTH: ClassVar[int] = 40
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "time_boot_ms", "flags", "q", "angular_velocity_x", "angular_velocity_y", "angular_velocity_z", "failure_flags", "delta_yaw", "delta_yaw_velocity", "gimbal_device_id",)
     ENUMS: ClassVar[dict[str, str]] = {"flags": "GIMBAL_DEVICE_FLAGS", "failure_flags": "GIMBAL_DEVICE_ERROR_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint32_t", "uint16_t", "float[4]", "float", "float", "float", "uint32_t", "float", "float", "uint8_t",)
     _IDB: ClassVar[bytes] = b'\x1d\x01\x00'
     _XB: ClassVar[bytes] = b'\x89'
     _S: ClassVar[struct.Struct] = struct.Struct("<IfffffffIHBBffB")
@@ -15551,6 +15716,7 @@ class AutopilotStateForGimbalDevice(Message):
     MIN_LENGTH: ClassVar[int] = 53
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "time_boot_us", "q", "q_estimated_delay_us", "vx", "vy", "vz", "v_estimated_delay_us", "feed_forward_angular_velocity_z", "estimator_status", "landed_state", "angular_velocity_z",)
     ENUMS: ClassVar[dict[str, str]] = {"estimator_status": "ESTIMATOR_STATUS_FLAGS", "landed_state": "MAV_LANDED_STATE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint64_t", "float[4]", "uint32_t", "float", "float", "float", "uint32_t", "float", "uint16_t", "uint8_t", "float",)
     _IDB: ClassVar[bytes] = b'\x1e\x01\x00'
     _XB: ClassVar[bytes] = b'\xd2'
     _S: ClassVar[struct.Struct] = struct.Struct("<QffffIfffIfHBBBf")
@@ -15676,6 +15842,7 @@ class GimbalManagerSetPitchyaw(Message):
     MIN_LENGTH: ClassVar[int] = 23
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "flags", "gimbal_device_id", "pitch", "yaw", "pitch_rate", "yaw_rate",)
     ENUMS: ClassVar[dict[str, str]] = {"flags": "GIMBAL_MANAGER_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint32_t", "uint8_t", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'\x1f\x01\x00'
     _XB: ClassVar[bytes] = b'\x01'
     _S: ClassVar[struct.Struct] = struct.Struct("<IffffBBB")
@@ -15767,6 +15934,7 @@ class GimbalManagerSetManualControl(Message):
     MIN_LENGTH: ClassVar[int] = 23
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "flags", "gimbal_device_id", "pitch", "yaw", "pitch_rate", "yaw_rate",)
     ENUMS: ClassVar[dict[str, str]] = {"flags": "GIMBAL_MANAGER_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint32_t", "uint8_t", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b' \x01\x00'
     _XB: ClassVar[bytes] = b'\x14'
     _S: ClassVar[struct.Struct] = struct.Struct("<IffffBBB")
@@ -15858,6 +16026,7 @@ class Airspeed(Message):
     MIN_LENGTH: ClassVar[int] = 12
     FIELDS: ClassVar[tuple[str, ...]] = ("id", "airspeed", "temperature", "raw_press", "flags",)
     ENUMS: ClassVar[dict[str, str]] = {"flags": "AIRSPEED_SENSOR_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "float", "int16_t", "float", "uint8_t",)
     _IDB: ClassVar[bytes] = b"'\x01\x00"
     _XB: ClassVar[bytes] = b'\xea'
     _S: ClassVar[struct.Struct] = struct.Struct("<ffhBB")
@@ -15928,6 +16097,7 @@ class GlobalPositionSensor(Message):
     MIN_LENGTH: ClassVar[int] = 41
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "id", "time_usec", "processing_time", "source", "flags", "lat", "lon", "alt_ellipsoid", "alt", "eph", "epv",)
     ENUMS: ClassVar[dict[str, str]] = {"source": "GLOBAL_POSITION_SRC", "flags": "GLOBAL_POSITION_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "uint64_t", "uint32_t", "uint8_t", "uint8_t", "int32_t", "int32_t", "float", "float", "float", "float",)
     _IDB: ClassVar[bytes] = b'(\x01\x00'
     _XB: ClassVar[bytes] = b'\x9e'
     _S: ClassVar[struct.Struct] = struct.Struct("<QIiiffffBBBBB")
@@ -16054,6 +16224,7 @@ class WifiConfigAp(Message):
     MIN_LENGTH: ClassVar[int] = 96
     FIELDS: ClassVar[tuple[str, ...]] = ("ssid", "password",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("char[32]", "char[64]",)
     _IDB: ClassVar[bytes] = b'+\x01\x00'
     _XB: ClassVar[bytes] = b'\x13'
     _S: ClassVar[struct.Struct] = struct.Struct("<32s64s")
@@ -16102,6 +16273,7 @@ class AisVessel(Message):
     MIN_LENGTH: ClassVar[int] = 58
     FIELDS: ClassVar[tuple[str, ...]] = ("MMSI", "lat", "lon", "COG", "heading", "velocity", "turn_rate", "navigational_status", "type", "dimension_bow", "dimension_stern", "dimension_port", "dimension_starboard", "callsign", "name", "tslc", "flags",)
     ENUMS: ClassVar[dict[str, str]] = {"navigational_status": "AIS_NAV_STATUS", "type": "AIS_TYPE", "flags": "AIS_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "int32_t", "int32_t", "uint16_t", "uint16_t", "uint16_t", "int8_t", "uint8_t", "uint8_t", "uint16_t", "uint16_t", "uint8_t", "uint8_t", "char[7]", "char[20]", "uint16_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'-\x01\x00'
     _XB: ClassVar[bytes] = b'\xf3'
     _S: ClassVar[struct.Struct] = struct.Struct("<IiiHHHHHHHbBBBB7s20s")
@@ -16255,6 +16427,7 @@ class UavcanNodeStatus(Message):
     MIN_LENGTH: ClassVar[int] = 17
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "uptime_sec", "health", "mode", "sub_mode", "vendor_specific_status_code",)
     ENUMS: ClassVar[dict[str, str]] = {"health": "UAVCAN_NODE_HEALTH", "mode": "UAVCAN_NODE_MODE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint32_t", "uint8_t", "uint8_t", "uint8_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'6\x01\x00'
     _XB: ClassVar[bytes] = b'\x1c'
     _S: ClassVar[struct.Struct] = struct.Struct("<QIHBBB")
@@ -16332,6 +16505,7 @@ class UavcanNodeInfo(Message):
     MIN_LENGTH: ClassVar[int] = 116
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "uptime_sec", "name", "hw_version_major", "hw_version_minor", "hw_unique_id", "sw_version_major", "sw_version_minor", "sw_vcs_commit",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint32_t", "char[80]", "uint8_t", "uint8_t", "uint8_t[16]", "uint8_t", "uint8_t", "uint32_t",)
     _IDB: ClassVar[bytes] = b'7\x01\x00'
     _XB: ClassVar[bytes] = b'_'
     _S: ClassVar[struct.Struct] = struct.Struct("<QII80sBB16sBB")
@@ -16429,6 +16603,7 @@ class ParamExtRequestRead(Message):
     MIN_LENGTH: ClassVar[int] = 20
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "param_id", "param_index",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "char[16]", "int16_t",)
     _IDB: ClassVar[bytes] = b'@\x01\x00'
     _XB: ClassVar[bytes] = b'\xf3'
     _S: ClassVar[struct.Struct] = struct.Struct("<hBB16s")
@@ -16491,6 +16666,7 @@ class ParamExtRequestList(Message):
     MIN_LENGTH: ClassVar[int] = 2
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'A\x01\x00'
     _XB: ClassVar[bytes] = b'X'
     _S: ClassVar[struct.Struct] = struct.Struct("<BB")
@@ -16540,6 +16716,7 @@ class ParamExtValue(Message):
     MIN_LENGTH: ClassVar[int] = 149
     FIELDS: ClassVar[tuple[str, ...]] = ("param_id", "param_value", "param_type", "param_count", "param_index",)
     ENUMS: ClassVar[dict[str, str]] = {"param_type": "MAV_PARAM_EXT_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("char[16]", "char[128]", "uint8_t", "uint16_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'B\x01\x00'
     _XB: ClassVar[bytes] = b'\xf3'
     _S: ClassVar[struct.Struct] = struct.Struct("<HH16s128sB")
@@ -16609,6 +16786,7 @@ class ParamExtSet(Message):
     MIN_LENGTH: ClassVar[int] = 147
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "param_id", "param_value", "param_type",)
     ENUMS: ClassVar[dict[str, str]] = {"param_type": "MAV_PARAM_EXT_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "char[16]", "char[128]", "uint8_t",)
     _IDB: ClassVar[bytes] = b'C\x01\x00'
     _XB: ClassVar[bytes] = b'N'
     _S: ClassVar[struct.Struct] = struct.Struct("<BB16s128sB")
@@ -16678,6 +16856,7 @@ class ParamExtAck(Message):
     MIN_LENGTH: ClassVar[int] = 146
     FIELDS: ClassVar[tuple[str, ...]] = ("param_id", "param_value", "param_type", "param_result",)
     ENUMS: ClassVar[dict[str, str]] = {"param_type": "MAV_PARAM_EXT_TYPE", "param_result": "PARAM_ACK"}
+    TYPES: ClassVar[tuple[str, ...]] = ("char[16]", "char[128]", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'D\x01\x00'
     _XB: ClassVar[bytes] = b'\x84'
     _S: ClassVar[struct.Struct] = struct.Struct("<16s128sBB")
@@ -16740,6 +16919,7 @@ class ObstacleDistance(Message):
     MIN_LENGTH: ClassVar[int] = 158
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "sensor_type", "distances", "increment", "min_distance", "max_distance", "increment_f", "angle_offset", "frame",)
     ENUMS: ClassVar[dict[str, str]] = {"sensor_type": "MAV_DISTANCE_SENSOR", "frame": "MAV_FRAME"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "uint16_t[72]", "uint8_t", "uint16_t", "uint16_t", "float", "float", "uint8_t",)
     _IDB: ClassVar[bytes] = b'J\x01\x00'
     _XB: ClassVar[bytes] = b'\x17'
     _S: ClassVar[struct.Struct] = struct.Struct("<QHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHHBBffB")
@@ -16837,6 +17017,7 @@ class Odometry(Message):
     MIN_LENGTH: ClassVar[int] = 230
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "frame_id", "child_frame_id", "x", "y", "z", "q", "vx", "vy", "vz", "rollspeed", "pitchspeed", "yawspeed", "pose_covariance", "velocity_covariance", "reset_counter", "estimator_type", "quality",)
     ENUMS: ClassVar[dict[str, str]] = {"frame_id": "MAV_FRAME", "child_frame_id": "MAV_FRAME", "estimator_type": "MAV_ESTIMATOR_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "uint8_t", "float", "float", "float", "float[4]", "float", "float", "float", "float", "float", "float", "float[21]", "float[21]", "uint8_t", "uint8_t", "int8_t",)
     _IDB: ClassVar[bytes] = b'K\x01\x00'
     _XB: ClassVar[bytes] = b'['
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffffffffffffffffffffffffffffffffffffffffffffffffffffffBBBBb")
@@ -16997,6 +17178,7 @@ class TrajectoryRepresentationWaypoints(Message):
     MIN_LENGTH: ClassVar[int] = 239
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "valid_points", "pos_x", "pos_y", "pos_z", "vel_x", "vel_y", "vel_z", "acc_x", "acc_y", "acc_z", "pos_yaw", "vel_yaw", "command",)
     ENUMS: ClassVar[dict[str, str]] = {"command": "MAV_CMD"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "float[5]", "float[5]", "float[5]", "float[5]", "float[5]", "float[5]", "float[5]", "float[5]", "float[5]", "float[5]", "float[5]", "uint16_t[5]",)
     _IDB: ClassVar[bytes] = b'L\x01\x00'
     _XB: ClassVar[bytes] = b'\xec'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffffffffffffffffffffffffffffffffffffffffffffffffffffffHHHHHB")
@@ -17129,6 +17311,7 @@ class TrajectoryRepresentationBezier(Message):
     MIN_LENGTH: ClassVar[int] = 109
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "valid_points", "pos_x", "pos_y", "pos_z", "delta", "pos_yaw",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "float[5]", "float[5]", "float[5]", "float[5]", "float[5]",)
     _IDB: ClassVar[bytes] = b'M\x01\x00'
     _XB: ClassVar[bytes] = b'\xe7'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffffffffffffffffffffffffB")
@@ -17212,6 +17395,7 @@ class IsbdLinkStatus(Message):
     MIN_LENGTH: ClassVar[int] = 24
     FIELDS: ClassVar[tuple[str, ...]] = ("timestamp", "last_heartbeat", "failed_sessions", "successful_sessions", "signal_quality", "ring_pending", "tx_session_pending", "rx_session_pending",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint64_t", "uint16_t", "uint16_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'O\x01\x00'
     _XB: ClassVar[bytes] = b'\xe1'
     _S: ClassVar[struct.Struct] = struct.Struct("<QQHHBBBB")
@@ -17303,6 +17487,7 @@ class RawRpm(Message):
     MIN_LENGTH: ClassVar[int] = 5
     FIELDS: ClassVar[tuple[str, ...]] = ("index", "frequency",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "float",)
     _IDB: ClassVar[bytes] = b'S\x01\x00'
     _XB: ClassVar[bytes] = b'\xc7'
     _S: ClassVar[struct.Struct] = struct.Struct("<fB")
@@ -17352,6 +17537,7 @@ class UtmGlobalPosition(Message):
     MIN_LENGTH: ClassVar[int] = 70
     FIELDS: ClassVar[tuple[str, ...]] = ("time", "uas_id", "lat", "lon", "alt", "relative_alt", "vx", "vy", "vz", "h_acc", "v_acc", "vel_acc", "next_lat", "next_lon", "next_alt", "update_rate", "flight_state", "flags",)
     ENUMS: ClassVar[dict[str, str]] = {"flight_state": "UTM_FLIGHT_STATE", "flags": "UTM_DATA_AVAIL_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t[18]", "int32_t", "int32_t", "int32_t", "int32_t", "int16_t", "int16_t", "int16_t", "uint16_t", "uint16_t", "uint16_t", "int32_t", "int32_t", "int32_t", "uint16_t", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'T\x01\x00'
     _XB: ClassVar[bytes] = b'c'
     _S: ClassVar[struct.Struct] = struct.Struct("<QiiiiiiihhhHHHH18sBB")
@@ -17513,6 +17699,7 @@ class ParamError(Message):
     MIN_LENGTH: ClassVar[int] = 21
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "param_id", "param_index", "error",)
     ENUMS: ClassVar[dict[str, str]] = {"error": "MAV_PARAM_ERROR"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "char[16]", "int16_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'Y\x01\x00'
     _XB: ClassVar[bytes] = b'\xd1'
     _S: ClassVar[struct.Struct] = struct.Struct("<hBB16sB")
@@ -17582,6 +17769,7 @@ class DebugFloatArray(Message):
     MIN_LENGTH: ClassVar[int] = 20
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "name", "array_id", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "char[10]", "uint16_t", "float[58]",)
     _IDB: ClassVar[bytes] = b'^\x01\x00'
     _XB: ClassVar[bytes] = b'\xe8'
     _S: ClassVar[struct.Struct] = struct.Struct("<QH10sffffffffffffffffffffffffffffffffffffffffffffffffffffffffff")
@@ -17644,6 +17832,7 @@ class OrbitExecutionStatus(Message):
     MIN_LENGTH: ClassVar[int] = 25
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "radius", "frame", "x", "y", "z",)
     ENUMS: ClassVar[dict[str, str]] = {"frame": "MAV_FRAME"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float", "uint8_t", "int32_t", "int32_t", "float",)
     _IDB: ClassVar[bytes] = b'h\x01\x00'
     _XB: ClassVar[bytes] = b'\x0b'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfiifB")
@@ -17721,6 +17910,7 @@ class SmartBatteryInfo(Message):
     MIN_LENGTH: ClassVar[int] = 87
     FIELDS: ClassVar[tuple[str, ...]] = ("id", "battery_function", "type", "capacity_full_specification", "capacity_full", "cycle_count", "serial_number", "device_name", "weight", "discharge_minimum_voltage", "charging_minimum_voltage", "resting_minimum_voltage", "charging_maximum_voltage", "cells_in_series", "discharge_maximum_current", "discharge_maximum_burst_current", "manufacture_date",)
     ENUMS: ClassVar[dict[str, str]] = {"battery_function": "MAV_BATTERY_FUNCTION", "type": "MAV_BATTERY_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "int32_t", "int32_t", "uint16_t", "char[16]", "char[50]", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint16_t", "uint8_t", "uint32_t", "uint32_t", "char[11]",)
     _IDB: ClassVar[bytes] = b'r\x01\x00'
     _XB: ClassVar[bytes] = b'K'
     _S: ClassVar[struct.Struct] = struct.Struct("<iiHHHHHBBB16s50sHBII11s")
@@ -17874,6 +18064,7 @@ class GeneratorStatus(Message):
     MIN_LENGTH: ClassVar[int] = 42
     FIELDS: ClassVar[tuple[str, ...]] = ("status", "generator_speed", "battery_current", "load_current", "power_generated", "bus_voltage", "rectifier_temperature", "bat_current_setpoint", "generator_temperature", "runtime", "time_until_maintenance",)
     ENUMS: ClassVar[dict[str, str]] = {"status": "MAV_GENERATOR_STATUS_FLAG"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint16_t", "float", "float", "float", "float", "int16_t", "float", "int16_t", "uint32_t", "int32_t",)
     _IDB: ClassVar[bytes] = b'u\x01\x00'
     _XB: ClassVar[bytes] = b'u'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffffIiHhh")
@@ -17986,6 +18177,7 @@ class ActuatorOutputStatus(Message):
     MIN_LENGTH: ClassVar[int] = 140
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "active", "actuator",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint32_t", "float[32]",)
     _IDB: ClassVar[bytes] = b'w\x01\x00'
     _XB: ClassVar[bytes] = b'\xfb'
     _S: ClassVar[struct.Struct] = struct.Struct("<QIffffffffffffffffffffffffffffffff")
@@ -18041,6 +18233,7 @@ class RelayStatus(Message):
     MIN_LENGTH: ClassVar[int] = 8
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "on", "present",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint16_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'x\x01\x00'
     _XB: ClassVar[bytes] = b'\xc7'
     _S: ClassVar[struct.Struct] = struct.Struct("<IHH")
@@ -18097,6 +18290,7 @@ class Tunnel(Message):
     MIN_LENGTH: ClassVar[int] = 133
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "payload_type", "payload_length", "payload",)
     ENUMS: ClassVar[dict[str, str]] = {"payload_type": "MAV_TUNNEL_PAYLOAD_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint8_t", "uint8_t[128]",)
     _IDB: ClassVar[bytes] = b'\x81\x01\x00'
     _XB: ClassVar[bytes] = b'\x93'
     _S: ClassVar[struct.Struct] = struct.Struct("<HBBB128s")
@@ -18167,6 +18361,7 @@ class CanFrame(Message):
     MIN_LENGTH: ClassVar[int] = 16
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "bus", "len", "id", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "uint8_t", "uint32_t", "uint8_t[8]",)
     _IDB: ClassVar[bytes] = b'\x82\x01\x00'
     _XB: ClassVar[bytes] = b'\x84'
     _S: ClassVar[struct.Struct] = struct.Struct("<IBBBB8s")
@@ -18244,6 +18439,7 @@ class CanfdFrame(Message):
     MIN_LENGTH: ClassVar[int] = 72
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "bus", "len", "id", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "uint8_t", "uint32_t", "uint8_t[64]",)
     _IDB: ClassVar[bytes] = b'\x83\x01\x00'
     _XB: ClassVar[bytes] = b'\x04'
     _S: ClassVar[struct.Struct] = struct.Struct("<IBBBB64s")
@@ -18321,6 +18517,7 @@ class CanFilterModify(Message):
     MIN_LENGTH: ClassVar[int] = 37
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "bus", "operation", "num_ids", "ids",)
     ENUMS: ClassVar[dict[str, str]] = {"operation": "CAN_FILTER_OP"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "uint16_t[16]",)
     _IDB: ClassVar[bytes] = b'\x84\x01\x00'
     _XB: ClassVar[bytes] = b'\x08'
     _S: ClassVar[struct.Struct] = struct.Struct("<HHHHHHHHHHHHHHHHBBBBB")
@@ -18397,6 +18594,7 @@ class OnboardComputerStatus(Message):
     MIN_LENGTH: ClassVar[int] = 238
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "uptime", "type", "cpu_cores", "cpu_combined", "gpu_cores", "gpu_combined", "temperature_board", "temperature_core", "fan_speed", "ram_usage", "ram_total", "storage_type", "storage_usage", "storage_total", "link_type", "link_tx_rate", "link_rx_rate", "link_tx_max", "link_rx_max", "status_flags",)
     ENUMS: ClassVar[dict[str, str]] = {"status_flags": "COMPUTER_STATUS_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint32_t", "uint8_t", "uint8_t[8]", "uint8_t[10]", "uint8_t[4]", "uint8_t[10]", "int8_t", "int8_t[8]", "int16_t[4]", "uint32_t", "uint32_t", "uint32_t[4]", "uint32_t[4]", "uint32_t[4]", "uint32_t[6]", "uint32_t[6]", "uint32_t[6]", "uint32_t[6]", "uint32_t[6]", "uint16_t",)
     _IDB: ClassVar[bytes] = b'\x86\x01\x00'
     _XB: ClassVar[bytes] = b'\x9c'
     _S: ClassVar[struct.Struct] = struct.Struct("<QIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIIhhhhB8s10s4s10sbbbbbbbbbH")
@@ -18578,6 +18776,7 @@ class WheelDistance(Message):
     MIN_LENGTH: ClassVar[int] = 137
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "count", "distance",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "double[16]",)
     _IDB: ClassVar[bytes] = b'(#\x00'
     _XB: ClassVar[bytes] = b'q'
     _S: ClassVar[struct.Struct] = struct.Struct("<QddddddddddddddddB")
@@ -18633,6 +18832,7 @@ class WinchStatus(Message):
     MIN_LENGTH: ClassVar[int] = 34
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "line_length", "speed", "tension", "voltage", "current", "temperature", "status",)
     ENUMS: ClassVar[dict[str, str]] = {"status": "MAV_WINCH_STATUS_FLAG"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "float", "float", "float", "float", "float", "int16_t", "uint32_t",)
     _IDB: ClassVar[bytes] = b'-#\x00'
     _XB: ClassVar[bytes] = b'u'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffffIh")
@@ -18724,6 +18924,7 @@ class OpenDroneIdBasicId(Message):
     MIN_LENGTH: ClassVar[int] = 44
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "id_or_mac", "id_type", "ua_type", "uas_id",)
     ENUMS: ClassVar[dict[str, str]] = {"id_type": "MAV_ODID_ID_TYPE", "ua_type": "MAV_ODID_UA_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t[20]", "uint8_t", "uint8_t", "uint8_t[20]",)
     _IDB: ClassVar[bytes] = b'd2\x00'
     _XB: ClassVar[bytes] = b'r'
     _S: ClassVar[struct.Struct] = struct.Struct("<BB20sBB20s")
@@ -18801,6 +19002,7 @@ class OpenDroneIdLocation(Message):
     MIN_LENGTH: ClassVar[int] = 59
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "id_or_mac", "status", "direction", "speed_horizontal", "speed_vertical", "latitude", "longitude", "altitude_barometric", "altitude_geodetic", "height_reference", "height", "horizontal_accuracy", "vertical_accuracy", "barometer_accuracy", "speed_accuracy", "timestamp", "timestamp_accuracy",)
     ENUMS: ClassVar[dict[str, str]] = {"status": "MAV_ODID_STATUS", "height_reference": "MAV_ODID_HEIGHT_REF", "horizontal_accuracy": "MAV_ODID_HOR_ACC", "vertical_accuracy": "MAV_ODID_VER_ACC", "barometer_accuracy": "MAV_ODID_VER_ACC", "speed_accuracy": "MAV_ODID_SPEED_ACC", "timestamp_accuracy": "MAV_ODID_TIME_ACC"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t[20]", "uint8_t", "uint16_t", "uint16_t", "int16_t", "int32_t", "int32_t", "float", "float", "uint8_t", "float", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "float", "uint8_t",)
     _IDB: ClassVar[bytes] = b'e2\x00'
     _XB: ClassVar[bytes] = b'\xfe'
     _S: ClassVar[struct.Struct] = struct.Struct("<iiffffHHhBB20sBBBBBBB")
@@ -18969,6 +19171,7 @@ class OpenDroneIdAuthentication(Message):
     MIN_LENGTH: ClassVar[int] = 53
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "id_or_mac", "authentication_type", "data_page", "last_page_index", "length", "timestamp", "authentication_data",)
     ENUMS: ClassVar[dict[str, str]] = {"authentication_type": "MAV_ODID_AUTH_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t[20]", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "uint32_t", "uint8_t[23]",)
     _IDB: ClassVar[bytes] = b'f2\x00'
     _XB: ClassVar[bytes] = b'\x8c'
     _S: ClassVar[struct.Struct] = struct.Struct("<IBB20sBBBB23s")
@@ -19067,6 +19270,7 @@ class OpenDroneIdSelfId(Message):
     MIN_LENGTH: ClassVar[int] = 46
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "id_or_mac", "description_type", "description",)
     ENUMS: ClassVar[dict[str, str]] = {"description_type": "MAV_ODID_DESC_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t[20]", "uint8_t", "char[23]",)
     _IDB: ClassVar[bytes] = b'g2\x00'
     _XB: ClassVar[bytes] = b'\xf9'
     _S: ClassVar[struct.Struct] = struct.Struct("<BB20sB23s")
@@ -19136,6 +19340,7 @@ class OpenDroneIdSystem(Message):
     MIN_LENGTH: ClassVar[int] = 54
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "id_or_mac", "operator_location_type", "classification_type", "operator_latitude", "operator_longitude", "area_count", "area_radius", "area_ceiling", "area_floor", "category_eu", "class_eu", "operator_altitude_geo", "timestamp",)
     ENUMS: ClassVar[dict[str, str]] = {"operator_location_type": "MAV_ODID_OPERATOR_LOCATION_TYPE", "classification_type": "MAV_ODID_CLASSIFICATION_TYPE", "category_eu": "MAV_ODID_CATEGORY_EU", "class_eu": "MAV_ODID_CLASS_EU"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t[20]", "uint8_t", "uint8_t", "int32_t", "int32_t", "uint16_t", "uint16_t", "float", "float", "uint8_t", "uint8_t", "float", "uint32_t",)
     _IDB: ClassVar[bytes] = b'h2\x00'
     _XB: ClassVar[bytes] = b'M'
     _S: ClassVar[struct.Struct] = struct.Struct("<iifffIHHBB20sBBBB")
@@ -19276,6 +19481,7 @@ class OpenDroneIdOperatorId(Message):
     MIN_LENGTH: ClassVar[int] = 43
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "id_or_mac", "operator_id_type", "operator_id",)
     ENUMS: ClassVar[dict[str, str]] = {"operator_id_type": "MAV_ODID_OPERATOR_ID_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t[20]", "uint8_t", "char[20]",)
     _IDB: ClassVar[bytes] = b'i2\x00'
     _XB: ClassVar[bytes] = b'1'
     _S: ClassVar[struct.Struct] = struct.Struct("<BB20sB20s")
@@ -19345,6 +19551,7 @@ class OpenDroneIdMessagePack(Message):
     MIN_LENGTH: ClassVar[int] = 249
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "id_or_mac", "single_message_size", "msg_pack_size", "messages",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint8_t[20]", "uint8_t", "uint8_t", "uint8_t[225]",)
     _IDB: ClassVar[bytes] = b's2\x00'
     _XB: ClassVar[bytes] = b'^'
     _S: ClassVar[struct.Struct] = struct.Struct("<BB20sBB225s")
@@ -19422,6 +19629,7 @@ class OpenDroneIdArmStatus(Message):
     MIN_LENGTH: ClassVar[int] = 51
     FIELDS: ClassVar[tuple[str, ...]] = ("status", "error",)
     ENUMS: ClassVar[dict[str, str]] = {"status": "MAV_ODID_ARM_STATUS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "char[50]",)
     _IDB: ClassVar[bytes] = b'v2\x00'
     _XB: ClassVar[bytes] = b'\x8b'
     _S: ClassVar[struct.Struct] = struct.Struct("<B50s")
@@ -19470,6 +19678,7 @@ class OpenDroneIdSystemUpdate(Message):
     MIN_LENGTH: ClassVar[int] = 18
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "operator_latitude", "operator_longitude", "operator_altitude_geo", "timestamp",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "int32_t", "int32_t", "float", "uint32_t",)
     _IDB: ClassVar[bytes] = b'w2\x00'
     _XB: ClassVar[bytes] = b'\x07'
     _S: ClassVar[struct.Struct] = struct.Struct("<iifIBB")
@@ -19547,6 +19756,7 @@ class HygrometerSensor(Message):
     MIN_LENGTH: ClassVar[int] = 5
     FIELDS: ClassVar[tuple[str, ...]] = ("id", "temperature", "humidity",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "int16_t", "uint16_t",)
     _IDB: ClassVar[bytes] = b'x2\x00'
     _XB: ClassVar[bytes] = b'\x14'
     _S: ClassVar[struct.Struct] = struct.Struct("<hHB")
@@ -19603,6 +19813,7 @@ class TtFileOffer(Message):
     MIN_LENGTH: ClassVar[int] = 88
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "transfer_id", "request_id", "size", "flags", "meta_length", "meta_offset", "meta",)
     ENUMS: ClassVar[dict[str, str]] = {"flags": "TT_FILE_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint32_t", "uint32_t", "uint32_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t[71]",)
     _IDB: ClassVar[bytes] = b'P\xc3\x00'
     _XB: ClassVar[bytes] = b'X'
     _S: ClassVar[struct.Struct] = struct.Struct("<IIIBBBBB71s")
@@ -19701,6 +19912,7 @@ class TtFileStatus(Message):
     MIN_LENGTH: ClassVar[int] = 30
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "transfer_id", "result", "received_contiguous", "region_start", "received_end", "last_offset", "hold_ms", "range_count", "meta_check", "ranges",)
     ENUMS: ClassVar[dict[str, str]] = {"result": "TT_FILE_RESULT"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint32_t", "uint8_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint16_t", "uint8_t", "uint32_t", "uint32_t[14]",)
     _IDB: ClassVar[bytes] = b'Q\xc3\x00'
     _XB: ClassVar[bytes] = b'\xc1'
     _S: ClassVar[struct.Struct] = struct.Struct("<IIIIIIHBBBBIIIIIIIIIIIIII")
@@ -19819,6 +20031,7 @@ class TtFileData(Message):
     MIN_LENGTH: ClassVar[int] = 88
     FIELDS: ClassVar[tuple[str, ...]] = ("transfer_id", "offset", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint32_t", "uint8_t[80]",)
     _IDB: ClassVar[bytes] = b'R\xc3\x00'
     _XB: ClassVar[bytes] = b'\xcb'
     _S: ClassVar[struct.Struct] = struct.Struct("<II80s")
@@ -19875,6 +20088,7 @@ class TtFileRequest(Message):
     MIN_LENGTH: ClassVar[int] = 88
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "request_id", "name_length", "name_offset", "name",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint32_t", "uint8_t", "uint8_t", "uint8_t[80]",)
     _IDB: ClassVar[bytes] = b'S\xc3\x00'
     _XB: ClassVar[bytes] = b'\x81'
     _S: ClassVar[struct.Struct] = struct.Struct("<IBBBB80s")
@@ -19952,6 +20166,7 @@ class DjiPoseStamped(Message):
     MIN_LENGTH: ClassVar[int] = 66
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "sec", "nsec", "topic_name", "position", "orientation",)
     ENUMS: ClassVar[dict[str, str]] = {"topic_name": "DJI_TOPIC_NAME"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint32_t", "uint32_t", "uint8_t", "double[3]", "double[4]",)
     _IDB: ClassVar[bytes] = b'T\xc3\x00'
     _XB: ClassVar[bytes] = b'F'
     _S: ClassVar[struct.Struct] = struct.Struct("<dddddddIIBB")
@@ -20028,6 +20243,7 @@ class TtActionCommand(Message):
     MIN_LENGTH: ClassVar[int] = 77
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "command_id", "action", "time_usec", "param", "argument",)
     ENUMS: ClassVar[dict[str, str]] = {"action": "TT_ACTION"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint8_t", "uint64_t", "float[4]", "char[48]",)
     _IDB: ClassVar[bytes] = b'U\xc3\x00'
     _XB: ClassVar[bytes] = b'\xa0'
     _S: ClassVar[struct.Struct] = struct.Struct("<QffffHBBB48s")
@@ -20111,6 +20327,7 @@ class TtNavSatFix(Message):
     MIN_LENGTH: ClassVar[int] = 61
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "latitude", "longitude", "altitude", "position_covariance", "status", "service", "covariance_type", "satellites",)
     ENUMS: ClassVar[dict[str, str]] = {"status": "TT_FIX_TYPE", "service": "TT_GNSS_SERVICE", "covariance_type": "TT_COVARIANCE_TYPE"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "int32_t", "int32_t", "float", "float[9]", "uint8_t", "uint16_t", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'V\xc3\x00'
     _XB: ClassVar[bytes] = b'\xa4'
     _S: ClassVar[struct.Struct] = struct.Struct("<QiiffffffffffHBBB")
@@ -20208,6 +20425,7 @@ class TtOdometry(Message):
     MIN_LENGTH: ClassVar[int] = 86
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "frame_id", "child_frame_id", "position", "orientation", "linear", "angular", "pose_variance",)
     ENUMS: ClassVar[dict[str, str]] = {"frame_id": "TT_FRAME", "child_frame_id": "TT_FRAME"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "uint8_t", "float[3]", "float[4]", "float[3]", "float[3]", "float[6]",)
     _IDB: ClassVar[bytes] = b'W\xc3\x00'
     _XB: ClassVar[bytes] = b'|'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffffffffffffffffffBB")
@@ -20298,6 +20516,7 @@ class TtLog(Message):
     MIN_LENGTH: ClassVar[int] = 88
     FIELDS: ClassVar[tuple[str, ...]] = ("time_boot_ms", "id", "severity", "chunk_seq", "text",)
     ENUMS: ClassVar[dict[str, str]] = {"severity": "MAV_SEVERITY"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint16_t", "uint8_t", "uint8_t", "char[80]",)
     _IDB: ClassVar[bytes] = b'X\xc3\x00'
     _XB: ClassVar[bytes] = b'\xd7'
     _S: ClassVar[struct.Struct] = struct.Struct("<IHBB80s")
@@ -20367,6 +20586,7 @@ class TtFileDataWide(Message):
     MIN_LENGTH: ClassVar[int] = 255
     FIELDS: ClassVar[tuple[str, ...]] = ("transfer_id", "offset", "data",)
     ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint32_t", "uint8_t[247]",)
     _IDB: ClassVar[bytes] = b'Y\xc3\x00'
     _XB: ClassVar[bytes] = b'd'
     _S: ClassVar[struct.Struct] = struct.Struct("<II247s")
@@ -20423,6 +20643,7 @@ class TtCommandAck(Message):
     MIN_LENGTH: ClassVar[int] = 7
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "command_id", "action", "result", "progress",)
     ENUMS: ClassVar[dict[str, str]] = {"action": "TT_ACTION", "result": "TT_RESULT"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint16_t", "uint8_t", "uint8_t", "uint8_t",)
     _IDB: ClassVar[bytes] = b'Z\xc3\x00'
     _XB: ClassVar[bytes] = b'\xd1'
     _S: ClassVar[struct.Struct] = struct.Struct("<HBBBBB")
@@ -20500,6 +20721,7 @@ class TtVrPose(Message):
     MIN_LENGTH: ClassVar[int] = 64
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "device", "role", "index", "flags", "position", "orientation", "velocity", "angular_velocity",)
     ENUMS: ClassVar[dict[str, str]] = {"device": "TT_VR_DEVICE", "role": "TT_VR_ROLE", "flags": "TT_VR_POSE_FLAGS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "float[3]", "float[4]", "float[3]", "float[3]",)
     _IDB: ClassVar[bytes] = b'[\xc3\x00'
     _XB: ClassVar[bytes] = b'\xe6'
     _S: ClassVar[struct.Struct] = struct.Struct("<QfffffffffffffBBBB")
@@ -20597,6 +20819,7 @@ class TtVrController(Message):
     MIN_LENGTH: ClassVar[int] = 28
     FIELDS: ClassVar[tuple[str, ...]] = ("time_usec", "packet_num", "index", "role", "trigger", "pad_x", "pad_y", "buttons",)
     ENUMS: ClassVar[dict[str, str]] = {"role": "TT_VR_ROLE", "buttons": "TT_VR_BUTTONS"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint64_t", "uint32_t", "uint8_t", "uint8_t", "float", "float", "float", "uint16_t",)
     _IDB: ClassVar[bytes] = b'\\\xc3\x00'
     _XB: ClassVar[bytes] = b'\xe5'
     _S: ClassVar[struct.Struct] = struct.Struct("<QIfffHBB")
@@ -20688,6 +20911,7 @@ class TtFileReason(Message):
     MIN_LENGTH: ClassVar[int] = 87
     FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "transfer_id", "result", "text",)
     ENUMS: ClassVar[dict[str, str]] = {"result": "TT_FILE_RESULT"}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint32_t", "uint8_t", "char[80]",)
     _IDB: ClassVar[bytes] = b']\xc3\x00'
     _XB: ClassVar[bytes] = b'\xd2'
     _S: ClassVar[struct.Struct] = struct.Struct("<IBBB80s")
