@@ -102,13 +102,15 @@ def _index_path(root: Path, path: str, include_dirs: list[str]) -> Path:
     return root / "index" / (hashlib.sha256(key.encode()).hexdigest()[:32] + ".json")
 
 
-def package_problem(name: str) -> str | None:
-    """Why the bindings' package cannot be imported under `name` beside ttctl, or None."""
-    from ..gen import python_package_problem
+def package_problem(name: str, full: bool = True) -> str | None:
+    """Why the bindings' package cannot be imported under `name` beside ttctl, or None. Without
+    `full`, only what can change after the entry was made (what this process imported)."""
+    if full:
+        from ..gen import python_package_problem
 
-    why = python_package_problem(name)
-    if why:
-        return why
+        why = python_package_problem(name)
+        if why:
+            return why
     if name in _TAKEN or (name in sys.modules and not getattr(sys.modules[name], "__ttctl_cached__", False)):
         return f"'{name}' is a module ttctl or its plugins already use, which the package would hide"
     return None
@@ -149,7 +151,7 @@ def python_bindings(path: str, include_dirs: list[str], check: Callable[[Any], s
     found = _warm(index, include_dirs)
     if found is not None:
         package, entry = found
-        problem = package_problem(package)
+        problem = package_problem(package, full=False)
         if problem:
             raise DialectRefused(f"{path}: its Python package {package}: {problem}; rename the dialect file")
         return CachedBindings(package, entry, entry, built=False)
@@ -163,7 +165,8 @@ def _load(path: str, include_dirs: list[str]) -> Any:
     try:
         dialect, rep, order = load_and_check(path, include_dirs)
     except LoadError as e:
-        raise DialectRefused(f"{e.path}:{e.line}:{e.col}: error: [{e.code}] {e.message}") from None
+        where = f"{e.path}:{e.line}:{e.col}" if (e.line, e.col) != (1, 1) else e.path
+        raise DialectRefused(f"{where}: {e.message} [{e.code}]") from None
     if rep.errors:
         lines = [d.text() for d in rep.sorted(order) if d.severity == "error"]
         raise DialectRefused(f"{path}: {rep.errors} error(s) in the dialect; nothing started", lines)

@@ -32,12 +32,9 @@ def load_bindings(dialect: Path | None, include_dirs: list[Path] | None = None) 
         import ttapi
 
         return Bindings(ttapi)
-    from ..validate import include_dir_problem
-
     for d in include:
-        problem = include_dir_problem(d)
-        if problem:
-            raise Fail(problem)
+        if not os.path.isdir(d):
+            raise Fail(f"-I {d}: {'not a directory' if os.path.exists(d) else 'no such directory'}")
     shown = str(dialect)
     if os.path.isfile(shown) and _same_file(shown, _shipped("ttapi")):
         import ttapi

@@ -91,9 +91,14 @@ def emulate_tablet_cmd(
     accept_unsigned: AcceptUnsignedOpt = False,
     dialect: DialectOpt = None,
     include: DialectIncludeOpt = None,
+    plugin: Annotated[list[str] | None, typer.Option("--plugin", help="path/to/plugin.py or module:attr "
+                                                                      "(repeatable): handlers of the vehicle's "
+                                                                      "messages, as on the onboard end.",
+                                                     show_default=False)] = None,
 ) -> None:
     """The tablet's end: commands (take-off, land, hover, return, set-points, trajectories),
-    files both ways and the vehicle's state, from a prompt (history, completion) or a --script.
+    files both ways, any message of the --dialect (msg NAME field=value) and the vehicle's state
+    and messages, from a prompt (history, completion) or a --script.
 
     Example: ttctl emulate tablet --to udpout:127.0.0.1:14560 --script flight.yaml
     """
@@ -102,4 +107,4 @@ def emulate_tablet_cmd(
     raise typer.Exit(emulate_tablet(TabletOptions(to, script, json_out, folder, rate, profile, distance,
                                                   target_sysid, key=key, accept_unsigned=accept_unsigned,
                                                   profile_file=profile_file, dialect=dialect,
-                                                  include_dirs=include or [])))
+                                                  include_dirs=include or [], plugins=plugin or [])))

@@ -14,7 +14,8 @@ from .common import ONBOARD, Signals, err, link_choice, load_signing, parse_endp
 from .dialect import load_bindings
 
 HELP = ("takeoff [ALT] | land | hover | return | goto N E ALT | move DN DE DALT | fly FILE | send FILE | "
-        "fetch NAME | wait SECONDS | wait until FIELD OP VALUE [timeout S] | status | watch [SECONDS] | quit")
+        "fetch NAME | msg MESSAGE field=value... | wait SECONDS | wait until FIELD OP VALUE [timeout S] "
+        "(FIELD: state, armed, altitude, n, e, speed or MESSAGE.field) | status | watch [SECONDS] | quit")
 
 
 @dataclass
@@ -36,15 +37,17 @@ class TabletOptions:
     plugins: list[str] = field(default_factory=list)
 
 
-def _prompt_step(line: str) -> Any:
-    """A prompt line as a step (StepError if it is not one)."""
+def _prompt_step(line: str, b: Any = None) -> Any:
+    """A prompt line as a step (StepError if it is not one); `b`: the link's dialect."""
     from ..ends.tablet.steps import StepError, check_step
 
     words = line.split()
     name, rest = words[0].lower(), words[1:]
     try:
-        if name in ("goto", "move"):
-            arg: Any = [float(x) for x in rest]
+        if name == "msg":
+            arg: Any = line.strip()[len(words[0]):].strip()
+        elif name in ("goto", "move"):
+            arg = [float(x) for x in rest]
         elif name == "takeoff":
             arg = float(rest[0]) if rest else None
         elif name == "wait" and rest and rest[0] == "until":
@@ -64,15 +67,22 @@ def _prompt_step(line: str) -> Any:
             arg = None if not rest else " ".join(rest)
     except (ValueError, IndexError):
         raise StepError(f"cannot read {line!r}: {HELP}") from None
-    return check_step(name, arg, "prompt")
+    return check_step(name, arg, "prompt", b)
 
 
 def emulate_tablet(o: TabletOptions) -> int:
+    from ..ends.plugins import PluginError, load_plugin
     from ..ends.tablet.steps import StepError, parse_script
 
     spec = parse_endpoint(o.to, "udpout")
     link = link_choice(o.rate, o.profile, o.distance, 255, o.profile_file)
-    b = load_bindings(o.dialect, o.include_dirs)
+    b = load_bindings(o.dialect, o.include_dirs)  # before the plugins: they import its package
+    plugins = []
+    try:
+        for p in o.plugins:
+            plugins.extend(load_plugin(p))
+    except PluginError as e:
+        raise Fail(f"--plugin {e}") from None
     steps = None
     if o.script is not None:
         try:
@@ -80,16 +90,16 @@ def emulate_tablet(o: TabletOptions) -> int:
         except (OSError, UnicodeDecodeError) as e:
             raise Fail(f"--script {o.script}: {getattr(e, 'strerror', None) or e}") from None
         try:
-            steps = parse_script(text)
+            steps = parse_script(text, b)
         except StepError as e:
             raise Fail(f"--script {o.script}: {e}") from None
     try:
-        return asyncio.run(_run(o, b, spec, link, steps))
+        return asyncio.run(_run(o, b, spec, link, steps, plugins))
     except KeyboardInterrupt:
         return 130
 
 
-async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any) -> int:
+async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any, plugins: list[Any]) -> int:
     from ..ends.tablet.session import TabletSession
     from ..ends.tablet.steps import StepError, run_step
     from ..link.transport import TransportError
@@ -104,8 +114,14 @@ async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any) -> in
     loop = asyncio.get_running_loop()
     wake = asyncio.Event()
     sigs = Signals(loop, wake)
-    s = TabletSession(b, spec, (o.target_sysid, ONBOARD[1]), rate_Bps=link.pace_Bps, inbox=o.dir, on_event=event,
-                      log=err, signing=load_signing(o.key, o.accept_unsigned, b))
+    from ..ends.plugins import PluginError
+
+    try:
+        s = TabletSession(b, spec, (o.target_sysid, ONBOARD[1]), rate_Bps=link.pace_Bps, inbox=o.dir,
+                          on_event=event, log=err, signing=load_signing(o.key, o.accept_unsigned, b),
+                          plugins=plugins)
+    except PluginError as e:
+        raise Fail(f"--plugin {e}") from None
     try:
         try:
             await s.start()
@@ -137,15 +153,46 @@ async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any) -> in
                 else:
                     print(f"step {i} {step.describe()}: {words}", flush=True)
             return 0
-        return await _prompt(s, sigs, base)
+        return await _prompt(s, sigs, base, b)
     finally:
         sigs.remove()
         await s.close()
 
 
-async def _prompt(s: Any, sigs: Signals, base: Path) -> int:
+def completions(b: Any, line: str, text: str) -> list[str]:
+    """What may follow at the prompt: step names first, then a message of the dialect after
+    `msg` and its field=, or FIELD and MESSAGE.field after `wait until`."""
+    from ..ends.tablet.steps import FIELDS, NAMES
+
+    words = line[: len(line) - len(text)].split()
+    if not words:
+        return [n for n in (*NAMES, "quit") if n.startswith(text)]
+    names = sorted(b.by_name) if b is not None else []
+    if words[0] == "msg":
+        if len(words) == 1:
+            return [n for n in names if n.startswith(text.upper())] if text else names
+        try:
+            cls = b.message(words[1])
+        except KeyError:
+            return []
+        return [f"{f}=" for f in cls.FIELDS if f.startswith(text)]
+    if words[:2] == ["wait", "until"] or (words[0] == "wait" and "until".startswith(text) and len(words) == 1):
+        if len(words) == 1:
+            return ["until"]
+        if "." in text:
+            head, _, tail = text.partition(".")
+            try:
+                cls = b.message(head)
+            except KeyError:
+                return []
+            return [f"{cls.NAME}.{f}" for f in cls.FIELDS if f.startswith(tail)]
+        return [f for f in FIELDS if f.startswith(text)] + [f"{n}." for n in names if n.startswith(text.upper())]
+    return []
+
+
+async def _prompt(s: Any, sigs: Signals, base: Path, b: Any = None) -> int:
     """Commands from the terminal (history and completion with readline) or from piped lines."""
-    from ..ends.tablet.steps import NAMES, StepError, run_step
+    from ..ends.tablet.steps import StepError, run_step
 
     interactive = sys.stdin.isatty()
     if interactive:
@@ -153,7 +200,8 @@ async def _prompt(s: Any, sigs: Signals, base: Path) -> int:
             import readline
 
             readline.parse_and_bind("tab: complete")
-            readline.set_completer(lambda text, i: ([n for n in (*NAMES, "quit") if n.startswith(text)] + [None])[i])
+            readline.set_completer_delims(" \t")
+            readline.set_completer(lambda text, i: (completions(b, readline.get_line_buffer(), text) + [None])[i])
         except ImportError:
             pass
         print(f"commands: {HELP}", file=sys.stderr)
@@ -169,7 +217,7 @@ async def _prompt(s: Any, sigs: Signals, base: Path) -> int:
         if line in ("quit", "exit"):
             return 0
         try:
-            step = _prompt_step(line)
+            step = _prompt_step(line, b)
             print(await run_step(s, step, base), flush=True)
         except StepError as e:
             print(f"ttctl: {e}", file=sys.stderr, flush=True)

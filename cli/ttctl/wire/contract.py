@@ -129,7 +129,8 @@ class TtVrPoseFlags(IntFlag):
 def problem(messages: dict[str, tuple[int, int]], dialect: str) -> str | None:
     """Why a dialect (its messages: name -> (id, CRC_EXTRA)) cannot carry ttctl's runtime, or
     None. `dialect` names it in the answer."""
-    missing = [name for name in RUNTIME_MESSAGES if name not in messages]
+    missing = sorted((name for name in RUNTIME_MESSAGES if name not in messages),
+                     key=lambda n: (RUNTIME_MESSAGES[n][0] < 50000, RUNTIME_MESSAGES[n][0]))  # ttapi's own first
     changed = [name for name, want in RUNTIME_MESSAGES.items() if name in messages and messages[name] != want]
     if missing:
         shown = ", ".join(missing[:4]) + (f" and {len(missing) - 4} more" if len(missing) > 4 else "")

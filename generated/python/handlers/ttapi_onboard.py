@@ -3,8 +3,15 @@
 A skeleton written by ttctl gen from ttapi.xml: it is yours to edit, and `ttctl gen` will not
 overwrite it (unless --force-skeletons). One method per message the onboard end receives
 (messages tagged [sender: tablet] or [sender: any]); several
-plugins, or several methods, may handle the same message. Load it into the onboard end with
-ttctl's plugin system (`ttctl.ends.plugins.load_plugins`).
+plugins, or several methods, may handle the same message. Run it in the onboard end, which
+speaks this dialect and puts its bindings (ttapi) on the import path; from the folder
+`ttctl gen` wrote into:
+
+    ttctl emulate onboard --dialect path/to/ttapi.xml --plugin python/handlers/ttapi_onboard.py
+
+A handler answers with `ctx.send(m.SomeMessage(...))` (any message of the dialect, to the
+tablet), tells ground stations with `ctx.send_gcs(...)`, logs with `ctx.log(...)`, and
+`ctx.every(seconds, fn)` in `start(self, ctx)` runs something periodically.
 """
 
 from __future__ import annotations

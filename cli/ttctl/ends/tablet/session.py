@@ -15,11 +15,12 @@ from pathlib import Path
 from typing import Any
 
 from ...link.transport import Spec, make_transport
-from ...proto.endpoint import CONTROL, Endpoint
+from ...proto.endpoint import CONTROL, TELEMETRY, Endpoint
 from ...proto.storage import ReceiveDir
 from ...proto.transfer import TransferConfig
 from ...wire.bindings import Bindings
-from ...wire.contract import TtAction
+from ...wire.contract import RUNTIME_MESSAGES, TtAction
+from ..plugins import Context, Dispatcher, Plugin
 from ..runtime import Runner
 
 TABLET = (255, 190)
@@ -58,12 +59,15 @@ class LinkView:
 
 
 class TabletSession:
-    """`bindings`: the dialect on the link (the vehicle's messages arrive as its classes)."""
+    """`bindings`: the dialect on the link (the vehicle's messages arrive as its classes; the
+    latest of each type is kept in `latest`). `plugins` get every message from the vehicle, as
+    the onboard end's plugins get the tablet's, and may send any message of the dialect."""
 
     def __init__(self, bindings: Bindings, spec: Spec, target: tuple[int, int] = (1, 240),
                  rate_Bps: float | None = None, inbox: Path | None = None, timeout: float = 60.0,
                  on_event: Callable[[str, dict[str, Any]], None] | None = None,
-                 log: Callable[[str], None] | None = None, signing: Any = None) -> None:
+                 log: Callable[[str], None] | None = None, signing: Any = None,
+                 plugins: list[Plugin] | None = None) -> None:
         self.b = bindings
         self.spec = spec
         self.target = target
@@ -83,6 +87,15 @@ class TabletSession:
         self._log_parts: dict[int, dict[int, bytes]] = {}
         self.heartbeats = 0
         self._hb_task: asyncio.Task[None] | None = None
+        self.latest: dict[str, Any] = {}  # the latest message of each type from the vehicle, by name
+        self.latest_at: dict[str, float] = {}  # ... and when it came (loop time)
+        self.plugins = list(plugins or [])
+        self.dispatcher = Dispatcher(on_error=self._plugin_error, dialect=bindings)
+        for p in self.plugins:
+            self.dispatcher.add(p)  # PluginError for a message the dialect lacks, before anything starts
+        self.ctx = Context(send=self.send_message, log=self.log, sysid=TABLET[0], compid=TABLET[1],
+                           vehicle=self.vehicle, every=self._every, dialect=bindings)
+        self._timers: list[list[asyncio.TimerHandle]] = []
 
     # -- life --------------------------------------------------------------------------------------
     async def start(self) -> None:
@@ -91,6 +104,11 @@ class TabletSession:
             self.store.prepare()
         self.link.started = asyncio.get_running_loop().time()
         self._hb_task = asyncio.get_running_loop().create_task(self._heartbeats())
+        for p in self.plugins:
+            try:
+                p.start(self.ctx)
+            except Exception as e:
+                self.log(f"plugin {type(p).__name__} failed to start: {type(e).__name__}: {e}")
 
     async def _heartbeats(self) -> None:
         """A HEARTBEAT a second: the vehicle's link-loss watch hears the tablet by it."""
@@ -103,6 +121,11 @@ class TabletSession:
             await asyncio.sleep(1.0)
 
     async def close(self) -> None:
+        for slot in self._timers:
+            slot[0].cancel()
+        for p in self.plugins:
+            with contextlib.suppress(Exception):
+                p.stop()
         if self._hb_task is not None:
             self._hb_task.cancel()
         self.ep.close()
@@ -117,6 +140,8 @@ class TabletSession:
             return
         v.heard = now
         self.link.frames += 1
+        self.latest[msg.NAME] = msg
+        self.latest_at[msg.NAME] = now
         b = self.b
         if isinstance(msg, b.Heartbeat):
             self.heartbeats += 1
@@ -136,7 +161,31 @@ class TabletSession:
             if text is not None:
                 v.log.append(text)
                 self.on_event("log", {"text": text, "severity": msg.severity})
+        if self.plugins:
+            self.dispatcher.dispatch(msg, self.ctx)
         self._changed.set()
+
+    def user_messages(self) -> list[str]:
+        """Names of the messages heard from the vehicle that the tablet's own view does not show
+        (the user's, and any the runtime does not use), in the order first heard."""
+        return [name for name in self.latest if name not in RUNTIME_MESSAGES]
+
+    # -- plugins ----------------------------------------------------------------------------------
+    def _plugin_error(self, msg: Any, e: BaseException, where: str) -> None:
+        self.log(f"plugin {where} failed on {msg.NAME}: {type(e).__name__}: {e} (the tablet keeps running)")
+
+    def _every(self, seconds: float, fn: Callable[[], None]) -> None:
+        loop = asyncio.get_running_loop()
+
+        def tick() -> None:
+            try:
+                fn()
+            except Exception as e:
+                self.log(f"plugin timer {getattr(fn, '__qualname__', fn)} failed: {type(e).__name__}: {e}")
+            slot[0] = loop.call_later(seconds, tick)
+
+        slot = [loop.call_later(seconds, tick)]  # the timer's next call, replaced as it runs
+        self._timers.append(slot)
 
     def _log_line(self, msg: Any) -> str | None:
         """A whole TT_LOG line, once its last chunk is in (chunks of one id, by chunk_seq)."""
@@ -194,6 +243,14 @@ class TabletSession:
         if cmd.ok:
             return True, f"{name}: accepted"
         return False, f"{name}: {cmd.error}"
+
+    def send_message(self, msg: Any, urgent: bool = True) -> None:
+        """Queue any message of the dialect for the vehicle (urgent: ahead of telemetry and files,
+        as commands go; else behind telemetry). Sent once: the link may lose it, and nothing but
+        an answer of the vehicle's says it arrived."""
+        self.runner.sync()
+        self.ep.send_message(msg, CONTROL if urgent else TELEMETRY)
+        self.runner.kick()
 
     async def setpoint(self, n: float, e: float, alt: float) -> None:
         """A DJI_POSE_STAMPED set-point (position north, east, altitude above home)."""

@@ -16,9 +16,13 @@ A script is a YAML list; each item is one step, a name with its argument:
     - wait: 2                       # seconds
     - status
     - watch: 10                     # a live view of the vehicle and the link for 10 s
+    - msg: KR_MOTOR_CONTROL dir=FORWARD speed=40   # any message of the dialect (ttctl.ends.tablet.usermsg)
+    - wait: {until: KR_MOTOR_STATUS.seq == 7, timeout: 30}
 
 `until` is one or more `FIELD OP VALUE` joined by `and`; fields: state, armed, altitude, n, e,
-speed; operators >=, <=, >, <, ==, !=. A step fails with a reason; the script stops at the first
+speed, and MESSAGE.field (or MESSAGE.field[i]) of the latest such message from the vehicle
+(false until one came); operators >=, <=, >, <, ==, !=. Every step is checked against the
+dialect before the first one runs. A step fails with a reason; the script stops at the first
 failure.
 """
 
@@ -34,10 +38,12 @@ from typing import Any
 
 from ...wire.contract import TtAction as A
 from .session import TabletSession
+from .usermsg import MessageError, Operand, build, compare, describe, operand
 
-NAMES = ("takeoff", "land", "hover", "return", "goto", "move", "fly", "send", "fetch", "wait", "status", "watch")
+NAMES = ("takeoff", "land", "hover", "return", "goto", "move", "fly", "send", "fetch", "wait", "status", "watch",
+         "msg")
 FIELDS = ("state", "armed", "altitude", "n", "e", "speed")
-_COND = re.compile(r"^\s*(\w+)\s*(>=|<=|==|!=|>|<)\s*(.+?)\s*$")
+_COND = re.compile(r"^\s*([\w.\[\]]+)\s*(>=|<=|==|!=|>|<)\s*(.+?)\s*$")
 
 
 class StepError(Exception):
@@ -73,13 +79,32 @@ def _numbers(arg: Any, n: int, what: str) -> list[float]:
     return out
 
 
-def check_condition(text: str) -> list[tuple[str, str, str]]:
-    parts = []
+Clause = tuple[str | Operand, str, Any]  # (field or MESSAGE.field, operator, the value compared with)
+
+
+def check_condition(text: str, b: Any = None) -> list[Clause]:
+    """The clauses of a `wait until` condition, every name and value checked (StepError);
+    MESSAGE.field operands need the dialect `b`."""
+    parts: list[Clause] = []
     for clause in re.split(r"\s+and\s+", str(text).strip()):
         m = _COND.match(clause)
-        if m is None or m.group(1) not in FIELDS:
-            raise StepError(f"cannot read condition {clause!r}: FIELD OP VALUE, FIELD one of {', '.join(FIELDS)}")
+        if m is None:
+            raise StepError(f"cannot read condition {clause!r}: FIELD OP VALUE, FIELD one of {', '.join(FIELDS)} "
+                            "or MESSAGE.field")
         name, op, raw = m.group(1), m.group(2), m.group(3)
+        try:
+            lhs = operand(b, name) if b is not None else None
+            if lhs is not None:
+                want = lhs.target(raw)
+                if isinstance(want, str) and op not in ("==", "!="):
+                    raise MessageError(f"{name} is text: compare it with == or !=")
+                parts.append((lhs, op, want))
+                continue
+        except MessageError as e:
+            raise StepError(f"cannot read condition {clause!r}: {e}") from None
+        if name not in FIELDS:
+            raise StepError(f"cannot read condition {clause!r}: FIELD OP VALUE, FIELD one of {', '.join(FIELDS)} "
+                            "or MESSAGE.field")
         if name in ("state", "armed") and op not in ("==", "!="):
             raise StepError(f"cannot read condition {clause!r}: {name} can only be compared with == or !=")
         if name not in ("state", "armed"):
@@ -91,8 +116,13 @@ def check_condition(text: str) -> list[tuple[str, str, str]]:
     return parts
 
 
-def holds(parts: list[tuple[str, str, str]], fields: dict[str, Any]) -> bool:
+def holds(parts: list[Clause], fields: dict[str, Any], latest: dict[str, Any] | None = None) -> bool:
     for name, op, raw in parts:
+        if isinstance(name, Operand):
+            have = name.value(latest or {})
+            if have is None or not compare(have, op, raw):
+                return False
+            continue
         have = fields[name]
         if isinstance(have, (bool, str)):
             want: Any = raw.lower() in ("true", "yes", "1") if isinstance(have, bool) else raw.replace("_", " ")
@@ -111,8 +141,23 @@ def holds(parts: list[tuple[str, str, str]], fields: dict[str, Any]) -> bool:
     return True
 
 
-def parse_script(text: str) -> list[Step]:
-    """The steps of a script, every one checked before any runs (StepError names the line)."""
+def _heard(s: TabletSession, parts: list[Clause]) -> str:
+    """What the vehicle last said of the messages a condition names, for a timeout's words."""
+    out = []
+    loop = asyncio.get_running_loop()
+    for name, _, _ in parts:
+        if isinstance(name, Operand):
+            n = name.cls.NAME
+            if n not in s.latest:
+                out.append(f"no {n} heard")
+            else:
+                out.append(f"{name.text} = {name.value(s.latest)!r} {loop.time() - s.latest_at[n]:.1f} s ago")
+    return "; ".join(dict.fromkeys(out))
+
+
+def parse_script(text: str, b: Any = None) -> list[Step]:
+    """The steps of a script, every one checked (against the dialect `b`, for messages) before
+    any runs (StepError names the line)."""
     import yaml
 
     try:
@@ -134,13 +179,13 @@ def parse_script(text: str) -> list[Step]:
         else:
             raise StepError(f"{where}: a step is one name, or one name: argument")
         try:
-            steps.append(check_step(str(name), arg, where))
+            steps.append(check_step(str(name), arg, where, b))
         except StepError as e:
             raise StepError(f"{where}: {e}") from None
     return steps
 
 
-def check_step(name: str, arg: Any, where: str = "") -> Step:
+def check_step(name: str, arg: Any, where: str = "", b: Any = None) -> Step:
     if name not in NAMES:
         raise StepError(f"unknown step {name!r} (one of {', '.join(NAMES)})")
     if name == "takeoff" and arg is not None:
@@ -154,7 +199,7 @@ def check_step(name: str, arg: Any, where: str = "") -> Step:
             if not 0 <= float(arg) <= 86400:
                 raise StepError("wait wants 0..86400 seconds")
         elif isinstance(arg, dict) and "until" in arg and set(arg) <= {"until", "timeout"}:
-            check_condition(arg["until"])
+            check_condition(arg["until"], b)
             if "timeout" in arg:
                 _numbers([arg["timeout"]], 1, "timeout")
         else:
@@ -163,6 +208,15 @@ def check_step(name: str, arg: Any, where: str = "") -> Step:
         raise StepError("watch wants 1..3600 seconds")
     elif name in ("land", "hover", "return", "status") and arg not in (None, {}):
         raise StepError(f"{name} takes no argument")
+    elif name == "msg":
+        if not isinstance(arg, str) or not arg.strip():
+            raise StepError("msg wants a message of the dialect: NAME field=value ...")
+        if b is None:
+            raise StepError("msg needs the link's dialect")
+        try:
+            build(b, arg, (1, 240))
+        except MessageError as e:
+            raise StepError(str(e)) from None
     return Step(name, arg, where)
 
 
@@ -203,16 +257,24 @@ async def run_step(s: TabletSession, step: Step, base: Path) -> str:
         if not isinstance(arg, dict):
             await asyncio.sleep(float(arg))
             return f"waited {float(arg):g} s"
-        parts = check_condition(arg["until"])
+        parts = check_condition(arg["until"], s.b)
         timeout = float(arg.get("timeout", 60))
         end = time.monotonic() + timeout
-        while not holds(parts, s.vehicle.fields()):
+        while not holds(parts, s.vehicle.fields(), s.latest):
             if time.monotonic() >= end:
                 v = s.vehicle
-                raise StepError(f"{arg['until']} not reached within {timeout:g} s (state {v.state}, altitude "
-                                f"{v.altitude:.1f} m)")
+                said = _heard(s, parts)
+                raise StepError(f"{arg['until']} not reached within {timeout:g} s (" + (
+                    said if said else f"state {v.state}, altitude {v.altitude:.1f} m") + ")")
             await s.changed(0.25)
         return f"{arg['until']}"
+    if name == "msg":
+        try:
+            msg = build(s.b, str(arg), s.target)
+        except MessageError as e:
+            raise StepError(str(e)) from None
+        s.send_message(msg)
+        return f"sent {describe(msg, b=s.b)}"
     if name == "status":
         return status_line(s)
     if name == "watch":
@@ -243,6 +305,8 @@ async def watch(s: TabletSession, seconds: float) -> str:
         transfers = [f"{x.name}: {x.acked_bytes}/{x.size} B" for x in s.ep.senders.values() if not x.done]
         t.add_row("transfers", ", ".join(transfers) or "none")
         t.add_row("last log", v.log[-1] if v.log else "")
+        for name in s.user_messages():
+            t.add_row(name, f"{describe(s.latest[name], b=s.b)} ({loop.time() - s.latest_at[name]:.1f} s ago)")
         return t
 
     end = asyncio.get_running_loop().time() + seconds
@@ -255,6 +319,8 @@ async def watch(s: TabletSession, seconds: float) -> str:
         while asyncio.get_running_loop().time() < end:
             await asyncio.sleep(min(1.0, max(0.0, end - asyncio.get_running_loop().time())))
             print(status_line(s), flush=True)
+            for name in s.user_messages():
+                print(f"  {describe(s.latest[name], b=s.b)}", flush=True)
     return status_line(s)
 
 

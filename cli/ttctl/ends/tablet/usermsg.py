@@ -15,6 +15,8 @@ has them, default to the vehicle's ids. Each refusal names the message, the fiel
 
 from __future__ import annotations
 
+import contextlib
+import difflib
 import math
 import re
 import shlex
@@ -162,6 +164,12 @@ def convert(cls: Any, f: FieldSpec, raw: Any) -> Any:
     return bytes(values) if f.base == "uint8_t" else values
 
 
+def _no_field(cls: Any, key: str, specs: dict[str, FieldSpec]) -> str:
+    close = difflib.get_close_matches(key, list(specs), n=1)
+    hint = f"did you mean {close[0]}? " if close else ""
+    return f"{cls.NAME} has no field {key!r} ({hint}its fields: {', '.join(specs)})"
+
+
 def build(b: Any, text: str, target: tuple[int, int]) -> Any:
     """The message `text` describes ("NAME field=value ..."), checked in full (MessageError)."""
     try:
@@ -182,7 +190,7 @@ def build(b: Any, text: str, target: tuple[int, int]) -> Any:
             raise MessageError(f"{cls.NAME}: {word!r} is not field=value")
         f = specs.get(key)
         if f is None:
-            raise MessageError(f"{cls.NAME} has no field {key!r} (its fields: {', '.join(specs)})")
+            raise MessageError(_no_field(cls, key, specs))
         if key in values:
             raise MessageError(f"{cls.NAME}.{key} is given twice")
         values[key] = convert(cls, f, raw)
@@ -197,11 +205,16 @@ def build(b: Any, text: str, target: tuple[int, int]) -> Any:
     return msg
 
 
-def describe(msg: Any, limit: int = 6) -> str:
-    """A message in one short line: NAME a=1 b=2 ..."""
+def describe(msg: Any, limit: int = 6, b: Any = None) -> str:
+    """A message in one short line: NAME a=1 b=2 ... (enum values by name, given the dialect `b`)."""
     parts = []
+    enums = getattr(getattr(b, "enums", None), "BY_NAME", {}) if b is not None else {}
     for name in msg.FIELDS[:limit]:
         v = getattr(msg, name)
+        e = enums.get(msg.ENUMS.get(name, ""))
+        if e is not None and isinstance(v, int) and not isinstance(v, bool):
+            with contextlib.suppress(ValueError):
+                v = e(v).name or v
         if isinstance(v, float):
             v = f"{v:.4g}"
         elif isinstance(v, (bytes, bytearray)):
@@ -260,7 +273,7 @@ def operand(b: Any, text: str) -> Operand | None:
     specs = {f.name: f for f in fields_of(b, cls)}
     f = specs.get(field)
     if f is None:
-        raise MessageError(f"{cls.NAME} has no field {field!r} (its fields: {', '.join(specs)})")
+        raise MessageError(_no_field(cls, field, specs))
     i = int(index) if index is not None else None
     if i is not None and (not f.length or i >= f.length or f.base == "char"):
         raise MessageError(f"{cls.NAME}.{field}[{i}]: {field} is {f.describe()}")
