@@ -14,7 +14,8 @@ from .common import ONBOARD, Signals, err, link_choice, load_signing, parse_endp
 from .dialect import load_bindings
 
 HELP = ("takeoff [ALT] | land | hover | return | goto N E ALT | move DN DE DALT | fly FILE | send FILE | "
-        "fetch NAME | msg MESSAGE field=value... | wait SECONDS | wait until FIELD OP VALUE [timeout S] "
+        "fetch NAME | msg MESSAGE field=value... [until CONDITION [every S] [timeout S]] | wait SECONDS | "
+        "wait until FIELD OP VALUE [timeout S] "
         "(FIELD: state, armed, altitude, n, e, speed or MESSAGE.field) | status | watch [SECONDS] | quit")
 
 
@@ -37,6 +38,20 @@ class TabletOptions:
     plugins: list[str] = field(default_factory=list)
 
 
+def _prompt_msg(text: str) -> Any:
+    """`msg NAME field=value ... [until CONDITION [every S] [timeout S]]` as the step's argument."""
+    body, sep, cond = text.partition(" until ")
+    if not sep:
+        return text
+    arg: dict[str, Any] = {"send": body.strip()}
+    for key in ("timeout", "every"):
+        if f" {key} " in f" {cond} ":
+            cond, _, value = cond.rpartition(f" {key} ")
+            arg[key] = float(value)
+    arg["until"] = cond.strip()
+    return arg
+
+
 def _prompt_step(line: str, b: Any = None) -> Any:
     """A prompt line as a step (StepError if it is not one); `b`: the link's dialect."""
     from ..ends.tablet.steps import StepError, check_step
@@ -45,7 +60,7 @@ def _prompt_step(line: str, b: Any = None) -> Any:
     name, rest = words[0].lower(), words[1:]
     try:
         if name == "msg":
-            arg: Any = line.strip()[len(words[0]):].strip()
+            arg: Any = _prompt_msg(line.strip()[len(words[0]):].strip())
         elif name in ("goto", "move"):
             arg = [float(x) for x in rest]
         elif name == "takeoff":

@@ -216,6 +216,9 @@ def load_plugins(paths: Iterable[str | Path]) -> list[Plugin]:
         module = importlib.util.module_from_spec(spec)
         try:
             spec.loader.exec_module(module)
+        except ModuleNotFoundError as e:
+            raise PluginError(f"{raw}: {type(e).__name__}: {e} (the bindings of a dialect? start the end with "
+                              "--dialect FILE.xml)") from None
         except Exception as e:
             raise PluginError(f"{raw}: {type(e).__name__}: {e}") from None
         found = [obj for obj in vars(module).values()

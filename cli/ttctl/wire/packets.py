@@ -265,7 +265,7 @@ class PacketReceiver:
             total = self._total(pkt, j)
             if total is None:
                 if j == boundary:
-                    self._unknown(pkt, j)
+                    boundary = self._unknown(pkt, j)
                 i = j + 1
                 continue
             if j + total <= n:
@@ -285,18 +285,21 @@ class PacketReceiver:
             self._carry = self._origin = pkt[head:]
             self._taken = []
 
-    def _unknown(self, pkt: bytes, j: int) -> None:
-        """Count a frame at a frame boundary whose msgid this dialect lacks (see on_unknown)."""
+    def _unknown(self, pkt: bytes, j: int) -> int:
+        """Count a frame at a frame boundary whose msgid this dialect lacks (see on_unknown);
+        the next boundary: where such a frame ends (-1 if it was not one)."""
         if pkt[j + 2] & ~INCOMPAT_SIGNED:
-            return
+            return -1
         msgid = pkt[j + 7] | pkt[j + 8] << 8 | pkt[j + 9] << 16
         if msgid in self.registry:
-            return  # known, but longer than its definition allows: not a frame
+            return -1  # known, but longer than its definition allows: not a frame
         end = j + 12 + pkt[j + 1] + (SIGNATURE_LENGTH if pkt[j + 2] else 0)
         if end == len(pkt) or (end < len(pkt) and pkt[end] == MAGIC) or (j == 0 and end > len(pkt)):
             self.stats.unknown += 1
             if self.on_unknown is not None:
                 self.on_unknown(msgid, pkt[j + 5], pkt[j + 6])
+            return end
+        return -1
 
 
 def describe(msg: Any) -> str:

@@ -16,8 +16,10 @@ A script is a YAML list; each item is one step, a name with its argument:
     - wait: 2                       # seconds
     - status
     - watch: 10                     # a live view of the vehicle and the link for 10 s
-    - msg: KR_MOTOR_CONTROL dir=FORWARD speed=40   # any message of the dialect (ttctl.ends.tablet.usermsg)
+    - msg: KR_MOTOR_CONTROL dir=FORWARD speed=40   # any message of the dialect (ttctl.ends.tablet.usermsg), once
     - wait: {until: KR_MOTOR_STATUS.seq == 7, timeout: 30}
+    - msg: {send: KR_MOTOR_CONTROL seq=8 dir=STOP, until: KR_MOTOR_STATUS.seq == 8, every: 1, timeout: 30}
+                                    # again every second until the vehicle's answer says it arrived
 
 `until` is one or more `FIELD OP VALUE` joined by `and`; fields: state, armed, altitude, n, e,
 speed, and MESSAGE.field (or MESSAGE.field[i]) of the latest such message from the vehicle
@@ -61,7 +63,8 @@ class Step:
             return self.name
         if isinstance(self.arg, dict):
             timeout = f" (timeout {self.arg['timeout']:g} s)" if "timeout" in self.arg else ""
-            return f"{self.name} until {self.arg['until']}{timeout}"
+            send = f" {self.arg['send']}" if "send" in self.arg else ""
+            return f"{self.name}{send} until {self.arg['until']}{timeout}"
         if isinstance(self.arg, list):
             return f"{self.name} {' '.join(f'{x:g}' for x in self.arg)}"
         return f"{self.name} {self.arg}"
@@ -209,15 +212,32 @@ def check_step(name: str, arg: Any, where: str = "", b: Any = None) -> Step:
     elif name in ("land", "hover", "return", "status") and arg not in (None, {}):
         raise StepError(f"{name} takes no argument")
     elif name == "msg":
-        if not isinstance(arg, str) or not arg.strip():
-            raise StepError("msg wants a message of the dialect: NAME field=value ...")
-        if b is None:
-            raise StepError("msg needs the link's dialect")
-        try:
-            build(b, arg, (1, 240))
-        except MessageError as e:
-            raise StepError(str(e)) from None
+        _check_msg(arg, b)
     return Step(name, arg, where)
+
+
+MSG_FORMS = ("msg wants a message of the dialect, NAME field=value ..., or {send: NAME field=value ..., "
+             "until: CONDITION, every: SECONDS, timeout: SECONDS}")
+
+
+def _check_msg(arg: Any, b: Any) -> None:
+    if b is None:
+        raise StepError("msg needs the link's dialect")
+    if isinstance(arg, dict):
+        if not {"send", "until"} <= set(arg) <= {"send", "until", "every", "timeout"}:
+            raise StepError(MSG_FORMS)
+        check_condition(arg["until"], b)
+        every = _numbers([arg.get("every", 1.0)], 1, "every")[0]
+        timeout = _numbers([arg.get("timeout", 30.0)], 1, "timeout")[0]
+        if not 0.05 <= every <= 3600 or not 0 < timeout <= 86400:
+            raise StepError("msg: every wants 0.05..3600 s and timeout 0..86400 s")
+        arg = arg["send"]
+    if not isinstance(arg, str) or not arg.strip():
+        raise StepError(MSG_FORMS)
+    try:
+        build(b, arg, (1, 240))
+    except MessageError as e:
+        raise StepError(str(e)) from None
 
 
 async def run_step(s: TabletSession, step: Step, base: Path) -> str:
@@ -269,17 +289,45 @@ async def run_step(s: TabletSession, step: Step, base: Path) -> str:
             await s.changed(0.25)
         return f"{arg['until']}"
     if name == "msg":
-        try:
-            msg = build(s.b, str(arg), s.target)
-        except MessageError as e:
-            raise StepError(str(e)) from None
-        s.send_message(msg)
-        return f"sent {describe(msg, b=s.b)}"
+        return await _send(s, arg)
     if name == "status":
         return status_line(s)
     if name == "watch":
         return await watch(s, float(arg) if arg is not None else 10.0)
     raise StepError(f"unknown step {name!r}")
+
+
+async def _send(s: TabletSession, arg: Any) -> str:
+    """`msg`: send once ("sent": the link may lose it), or with `until` send again every `every`
+    seconds until the condition holds on messages that arrived since the first send (a stale
+    answer does not count), so that the answer is the proof of delivery."""
+    text = arg["send"] if isinstance(arg, dict) else str(arg)
+    try:
+        msg = build(s.b, text, s.target)
+    except MessageError as e:
+        raise StepError(str(e)) from None
+    if not isinstance(arg, dict):
+        s.send_message(msg)
+        return f"sent {describe(msg, b=s.b)}"
+    parts = check_condition(arg["until"], s.b)
+    every, timeout = float(arg.get("every", 1.0)), float(arg.get("timeout", 30.0))
+    loop = asyncio.get_running_loop()
+    since = loop.time()
+    end, sends = since + timeout, 0
+    while True:
+        s.send_message(msg)
+        sends += 1
+        again = min(end, loop.time() + every)
+        while loop.time() < again:
+            fresh = {n: m for n, m in s.latest.items() if s.latest_at.get(n, 0.0) >= since}
+            if holds(parts, s.vehicle.fields(), fresh):
+                tries = f" (sent {sends} times)" if sends > 1 else ""
+                return f"{describe(msg, b=s.b)}: {arg['until']}{tries}"
+            await s.changed(min(0.25, max(0.0, again - loop.time())))
+        if loop.time() >= end:
+            said = _heard(s, parts)
+            raise StepError(f"{arg['until']} not reached within {timeout:g} s of sending {msg.NAME} ({sends} times)"
+                            + (f"; {said}" if said else ""))
 
 
 async def watch(s: TabletSession, seconds: float) -> str:
