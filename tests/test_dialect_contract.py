@@ -18,7 +18,7 @@ import pytest
 
 from conftest import ROOT, shipped
 
-OWN = ROOT / "tests" / "dialects" / "own" / "robolab.xml"
+OWN = ROOT / "dialects" / "examples" / "robolab.xml"
 LINK_LAYER = ("wire", "proto", "ends")
 
 

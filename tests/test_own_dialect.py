@@ -1,5 +1,5 @@
 """The user's own dialect end to end, as real processes on loopback: a dialect that includes
-ttapi.xml and adds two messages (tests/dialects/own/robolab.xml), its generated skeleton and a
+ttapi.xml and adds two messages (dialects/examples/robolab.xml), its generated skeleton and a
 filled-in handler loaded into `ttctl emulate onboard --dialect`, `ttctl emulate tablet --dialect`
 sending the user's message through `ttctl link relay --profile m100` at 10 % loss and waiting for
 the answer, files between ends of that dialect, a Java tablet built from the generated Java, and
@@ -18,7 +18,7 @@ import pytest
 from conftest import ROOT, assert_no_traceback, run_ttctl
 from e2e_lib import LOCAL, Proc, free_port, relay
 
-OWN = ROOT / "tests" / "dialects" / "own"
+OWN = ROOT / "dialects" / "examples"
 
 
 @pytest.fixture(scope="session")

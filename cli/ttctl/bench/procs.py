@@ -36,10 +36,20 @@ def console_script(name: str, module: str) -> list[str]:
     return [found] if found else [sys.executable, "-m", module]
 
 
-def run_once(cmd: list[str], cwd: str | None = None) -> float:
+def run_once(cmd: list[str], cwd: str | None = None, env: dict[str, str] | None = None,
+             expect: tuple[int, str] | None = None) -> float:
+    """Seconds the command took. Exit 0 or 1 (validate's errors) is success, anything else a
+    RuntimeError; `expect` (status, words on stderr) names the one outcome accepted instead."""
     t0 = time.perf_counter()
-    proc = subprocess.run(cmd, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, check=False)
+    proc = subprocess.run(cmd, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, check=False, env=env)
     elapsed = time.perf_counter() - t0
+    if expect is not None:
+        text = proc.stderr.decode(errors="replace")
+        if proc.returncode != expect[0] or expect[1] not in text:
+            last = text.strip().splitlines()
+            raise RuntimeError(f"{' '.join(cmd[:3])} ... ended {proc.returncode} ({last[-1] if last else ''}), "
+                               f"not {expect[0]} with {expect[1]!r}")
+        return elapsed
     if proc.returncode not in (0, 1):  # validate exits 1 on errors; anything else is a failure
         err = proc.stderr.decode(errors="replace").strip().splitlines()
         raise RuntimeError(f"{' '.join(cmd[:3])} ... failed ({proc.returncode}): {err[-1] if err else ''}")

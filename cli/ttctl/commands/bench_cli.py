@@ -42,6 +42,20 @@ def bench_gen(
     run(str(dialect) if dialect else None, runs, json_out)
 
 
+@bench_app.command("dialect")
+def bench_dialect(
+    dialect: Annotated[Path | None, typer.Argument(help="Dialect XML (default: the robolab example ttctl "
+                                                        "ships).")] = None,
+    runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=100)] = 11,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+) -> None:
+    """What --dialect adds to a link command's start, whole process: shipped dialect against the
+    user's with a warm and a cold bindings cache (and `gen --lang python` for scale)."""
+    from ..bench.dialect import run
+
+    run(str(dialect) if dialect else None, runs, json_out)
+
+
 @bench_app.command("codec")
 def bench_codec(
     seconds: Annotated[float, typer.Option(help="Approximate time budget per measurement.", min=0.05)] = 0.5,
