@@ -321,8 +321,7 @@ async def _send(s: TabletSession, arg: Any) -> str:
         while loop.time() < again:
             fresh = {n: m for n, m in s.latest.items() if s.latest_at.get(n, 0.0) >= since}
             if holds(parts, s.vehicle.fields(), fresh):
-                tries = f" (sent {sends} times)" if sends > 1 else ""
-                return f"{describe(msg, b=s.b)}: {arg['until']}{tries}"
+                return f"answered after {sends} send{'s' * (sends > 1)} in {loop.time() - since:.1f} s"
             await s.changed(min(0.25, max(0.0, again - loop.time())))
         if loop.time() >= end:
             said = _heard(s, parts)
