@@ -97,3 +97,68 @@ def test_ctrl_c_at_any_moment_is_one_quiet_line(tmp_path: Path, args: list[str])
             assert not (tmp_path / "out").exists()
         if args[0] == "recv-file" and p.returncode == 0:
             assert "stopped" in err
+
+
+def _command_paths(group: object, prefix: tuple[str, ...] = ()) -> list[tuple[str, ...]]:
+    import click
+
+    out = [prefix]
+    if isinstance(group, click.Group):
+        for name in group.list_commands(click.Context(group)):
+            out += _command_paths(group.commands[name], (*prefix, name))
+    return out
+
+
+def test_lazy_command_tree_is_typers_tree() -> None:
+    """The command line runs a tree built on demand (commands/lazy.py); every command's help,
+    and the errors for a typo, are exactly what typer's whole tree gives."""
+    import typer.main
+    from click.testing import CliRunner
+
+    from ttctl.app import app
+    from ttctl.commands.lazy import lazy_command
+
+    full, lazy = typer.main.get_command(app), lazy_command(app)
+    paths = _command_paths(full)
+    assert len(paths) > 20 and ("emulate", "onboard") in paths and ("bench", "validate") in paths
+    assert _command_paths(lazy) == paths
+    runner = CliRunner()
+    for p in paths:
+        a = runner.invoke(full, [*p, "--help"], prog_name="ttctl", terminal_width=100)
+        b = runner.invoke(lazy, [*p, "--help"], prog_name="ttctl", terminal_width=100)
+        assert (a.exit_code, a.output) == (b.exit_code, b.output), p
+    for argv in (["valdate"], ["bench", "transfr"], ["emulate", "onboard", "--bogus"]):
+        a = runner.invoke(full, argv, prog_name="ttctl")
+        b = runner.invoke(lazy, argv, prog_name="ttctl")
+        assert (a.exit_code, str(a.exception), a.output) == (b.exit_code, str(b.exception), b.output), argv
+
+
+def test_lazy_command_tree_builds_only_what_runs() -> None:
+    import click
+
+    from ttctl.app import app
+    from ttctl.commands.lazy import LazyCommands, lazy_command
+
+    root = lazy_command(app)
+    ctx = root.make_context("ttctl", ["bench", "validate", "--help"], resilient_parsing=True)
+    root.resolve_command(ctx, ["bench"])
+    assert isinstance(root.commands, LazyCommands)
+    built = {k for k, v in dict.items(root.commands) if v is not None}
+    assert built == {"bench"}
+    bench = root.commands["bench"]
+    assert isinstance(bench, click.Group) and isinstance(bench.commands, LazyCommands)
+    assert {k for k, v in dict.items(bench.commands) if v is not None} == set()
+
+
+def test_bench_times_tools_as_installed(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Whole-process benchmarks run ttctl and mavgen alike from byte-code: under
+    PYTHONDONTWRITEBYTECODE ttctl's editable install would compile its modules on every run
+    and pip-compiled mavgen would not."""
+    from ttctl.bench.procs import bytecode_note, installed_env
+
+    monkeypatch.setenv("PYTHONDONTWRITEBYTECODE", "1")
+    monkeypatch.setenv("TTCTL_DIALECT", "x.xml")
+    env = installed_env(drop=("TTCTL_DIALECT",))
+    assert "PYTHONDONTWRITEBYTECODE" not in env and "TTCTL_DIALECT" not in env and env["PATH"]
+    note = bytecode_note()
+    assert note is None or "compiled on every run" in note

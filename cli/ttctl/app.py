@@ -261,8 +261,10 @@ def _interrupted(signum: int, frame: object) -> None:
 
 def _run() -> int:
     """Run the command line; returns the exit status, having printed any failure as one line."""
+    from .commands.lazy import lazy_command
+
     try:
-        code = app(standalone_mode=False)
+        code = lazy_command(app)(standalone_mode=False)
     except ClickException as e:
         # usage errors as one line, not a box; always `ttctl: error:` (click would start them
         # with the command path), the subcommand in the hint

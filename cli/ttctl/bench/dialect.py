@@ -16,7 +16,7 @@ import os
 import shutil
 import tempfile
 
-from .procs import console_script, machine, median, run_once
+from .procs import console_script, installed_env, machine, median, run_once
 
 FLOOR_MS = 50.0  # issue: a warm start adds at most 50 ms
 
@@ -34,7 +34,7 @@ def run(dialect: str | None, runs: int, as_json: bool) -> None:
     if not os.path.isfile(dialect):
         raise Fail(f"{dialect}: no such file")
     ttctl = console_script("ttctl", "ttctl")
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONDONTWRITEBYTECODE", "TTCTL_DIALECT")}
+    env = installed_env(drop=("TTCTL_DIALECT",))
     missing = "ttctl-bench-no-such-file.bin"
     send = [*ttctl, "send-file", missing, "--to", "udpout:127.0.0.1:9"]
     with tempfile.TemporaryDirectory(prefix="ttctl-bench-dialect-") as tmp:

@@ -7,7 +7,7 @@ import json
 import os
 import tempfile
 
-from .procs import benchmark_dialect, console_script, machine, median, time_interleaved
+from .procs import benchmark_dialect, bytecode_note, console_script, machine, median, time_interleaved
 
 FLOOR = 0.5  # issue: at most half the summed mavgen time
 
@@ -35,13 +35,14 @@ def run(dialect: str | None, runs: int, as_json: bool) -> None:
             times = time_interleaved(cmds, runs, warmup=1)  # type: ignore[arg-type]
         except RuntimeError as e:
             raise Fail(str(e)) from None
+        note = bytecode_note()
     med = {k: median(v) for k, v in times.items()}
     ours = med["ttctl gen (python,cpp,java)"]
     peers = sum(v for k, v in med.items() if k.startswith("mavgen"))
     ratio = ours / peers
     result = {"dialect": dialect, "runs": runs, "median_s": {k: round(v, 3) for k, v in med.items()},
               "mavgen_sum_s": round(peers, 3), "ratio": round(ratio, 3), "floor": FLOOR, "ok": ratio <= FLOOR,
-              "machine": machine()}
+              "machine": machine(), "bytecode_note": note}
     if as_json:
         print(json.dumps(result, indent=2))
         return
@@ -56,5 +57,7 @@ def run(dialect: str | None, runs: int, as_json: bool) -> None:
     table.add_row("mavgen, sum of the three", f"{peers:.3f}")
     console = Console()
     console.print(table)
+    if note:
+        console.print(f"[yellow]note:[/] {note}")
     verdict = "[green]meets[/]" if ratio <= FLOOR else "[red]misses[/]"
     console.print(f"ratio ttctl/mavgen-sum = [bold]{ratio:.2f}[/] ({verdict} the {FLOOR}x floor)")

@@ -61,20 +61,45 @@ Command = list[str] | Callable[[int], list[str]]
 
 def time_interleaved(cmds: dict[str, Command], runs: int, warmup: int = 2,
                      cwd: str | None = None) -> dict[str, list[float]]:
-    """Run each command `warmup` times untimed, then `runs` times, round-robin. A command may
-    be a function of the run number (e.g. to write into a fresh directory each time)."""
+    """Run each command `warmup` times untimed, then `runs` times, round-robin, in the
+    environment of `installed_env`. A command may be a function of the run number (e.g. to
+    write into a fresh directory each time)."""
+    env = installed_env()
 
     def at(cmd: Command, i: int) -> list[str]:
         return cmd(i) if callable(cmd) else cmd
 
     for w in range(warmup):
         for cmd in cmds.values():
-            run_once(at(cmd, -1 - w), cwd)
+            run_once(at(cmd, -1 - w), cwd, env)
     times: dict[str, list[float]] = {k: [] for k in cmds}
     for i in range(runs):
         for key, cmd in cmds.items():
-            times[key].append(run_once(at(cmd, i), cwd))
+            times[key].append(run_once(at(cmd, i), cwd, env))
     return times
+
+
+def installed_env(drop: tuple[str, ...] = ()) -> dict[str, str]:
+    """The environment for timing Python tools as installed: without PYTHONDONTWRITEBYTECODE.
+    pip byte-compiles what it installs (mavgen's pymavlink), while an editable install writes
+    its byte-code on first use; under PYTHONDONTWRITEBYTECODE ttctl's own modules would be
+    compiled from source on every run and mavgen's not, which times the compiler, not the tools.
+    The warm-up runs write the byte-code; `bytecode_note` says if they could not."""
+    skip = ("PYTHONDONTWRITEBYTECODE", *drop)
+    return {k: v for k, v in os.environ.items() if k not in skip}
+
+
+def bytecode_note() -> str | None:
+    """None when ttctl's modules run from byte-code, else why the timing includes compiling them."""
+    import importlib.util
+
+    from .. import validate
+
+    cached = importlib.util.cache_from_source(validate.__file__)
+    if os.path.exists(cached):
+        return None
+    return (f"ttctl's byte-code could not be written ({os.path.dirname(cached)} missing or read-only): "
+            "its modules are compiled on every run, mavgen's are not")
 
 
 def median(xs: list[float]) -> float:

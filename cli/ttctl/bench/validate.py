@@ -6,7 +6,7 @@ import json
 import os
 import tempfile
 
-from .procs import Command, benchmark_dialect, console_script, machine, median, time_interleaved
+from .procs import Command, benchmark_dialect, bytecode_note, console_script, machine, median, time_interleaved
 
 FLOOR = 0.75  # at most 0.75x mavgen's time on a real dialect (all.xml)
 SYNTHETIC_FLOOR = 3.0  # at most 3x on a made-up dialect of tens of thousands of messages: time grows linearly
@@ -39,6 +39,7 @@ def run(dialect: str | None, runs: int, as_json: bool, synthetic: int | None = N
             times = time_interleaved(cmds, runs, warmup=warmup)
         except RuntimeError as e:
             raise Fail(str(e)) from None
+        note = bytecode_note()
     med = {k: median(v) for k, v in times.items()}
     ratio = med["ttctl validate"] / med["mavgen Python3"]
     result = {
@@ -49,7 +50,7 @@ def run(dialect: str | None, runs: int, as_json: bool, synthetic: int | None = N
         "ratio": round(ratio, 3),
         "floor": floor,
         "ok": ratio <= floor,
-        "machine": machine(),
+        "machine": machine(), "bytecode_note": note,
     }
     if as_json:
         print(json.dumps(result, indent=2))
@@ -67,5 +68,7 @@ def run(dialect: str | None, runs: int, as_json: bool, synthetic: int | None = N
         table.add_row(k, f"{med[k]:.3f}", f"{min(times[k]):.3f}")
     console = Console()
     console.print(table)
+    if note:
+        console.print(f"[yellow]note:[/] {note}")
     verdict = "[green]meets[/]" if ratio <= floor else "[red]misses[/]"
     console.print(f"ratio ttctl/mavgen = [bold]{ratio:.2f}[/] ({verdict} the {floor}x floor)")
