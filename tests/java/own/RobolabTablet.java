@@ -32,7 +32,7 @@ public final class RobolabTablet {
         } catch (Exception e) {
             System.out.println("FAILED " + e);
         } finally {
-            cq.shutdown();
+            cq.close();
             sched.close();
             udp.close();
         }

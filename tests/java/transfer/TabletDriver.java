@@ -188,7 +188,7 @@ public final class TabletDriver {
                 .put("app_thread_errors", APP_THREAD_ERRORS.get()).put("uncaught", UNCAUGHT.get())
                 .put("ignored", files.ignored());
         files.close();
-        cq.shutdown();
+        cq.close();
         sched.close();
         link.close();
         if (sdk != null) {
