@@ -86,12 +86,12 @@ RUNTIME_FILES = [
     "DecodeException", "Frame", "Parser", "Dispatcher", "Link", "UdpLink", "CommandContext",
     "CommandException", "Command", "MessageMatcher", "SendCommand", "ReceiveCommand", "CommandQueue",
     "LinkScheduler", "DjiLink",
-    "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks",
+    "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
 ]
 RUNTIME_CLASSES = frozenset(RUNTIME_FILES)
 # File transfer (package <root>.transfer), for dialects that have ttctl's file messages.
 TRANSFER_FILES = ["RangeSet", "Names", "TransferConfig", "TransferResult", "Transfer", "LossEstimate", "FileSender",
-                  "FileFetch", "FileTransfers"]
+                  "ReceiveDir", "Partial", "FileReceiver", "FileFetch", "FileTransfers"]
 TRANSFER_MESSAGES = {"TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_REASON", "TT_FILE_DATA", "TT_FILE_DATA_WIDE",
                      "TT_FILE_REQUEST"}
 

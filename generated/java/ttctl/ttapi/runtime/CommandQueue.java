@@ -72,6 +72,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         boolean armed; // replies are looked for
         boolean finished; // taken out of the queue: its end is decided
         int made;
+        long startedAt; // System.nanoTime() of its first try
         long due; // System.nanoTime() of the next try or of giving up
         MavlinkMessage reply;
 
@@ -135,6 +136,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
     private boolean paused;
     private boolean closed;
     private Thread worker;
+    private volatile long lastHeard = System.nanoTime() - TimeUnit.DAYS.toNanos(1);
 
     /** A queue sending over {@code link} as {@code sysId}/{@code compId}; call {@link #start()}. */
     public CommandQueue(Link link, int sysId, int compId) {
@@ -264,6 +266,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
     /** Incoming message: a command in flight takes it if it is what it waits for. */
     @Override
     public void accept(MavlinkMessage msg) {
+        lastHeard = System.nanoTime();
         List<Job> waiting;
         lock.lock();
         try {
@@ -492,8 +495,10 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                                     @Override
                                     public void run() {
                                         String problem = linkProblem();
+                                        boolean silent = lastHeard - j.startedAt < 0;
                                         fail(j, new CommandException(CommandException.Reason.TIMEOUT, j.command.describe()
                                                 + ": no reply after " + made + " tr" + (made == 1 ? "y" : "ies")
+                                                + (silent ? ", nothing received from the link meanwhile" : "")
                                                 + (problem != null ? "; " + problem : ""), made, null));
                                     }
                                 });
@@ -511,6 +516,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                         }
                         j.commandId = takeId();
                         j.issuedUsec = takeIssueTime();
+                        j.startedAt = now;
                         j.sending = true;
                         inFlight.add(j);
                         work.add(new Runnable() {
