@@ -31,8 +31,9 @@ import ttctl.ttapi.runtime.MavlinkMessage;
  * <p>A transfer is known by (sender sysid, sender compid, transfer id). Transfers of the same
  * file under the same name share one partial file. A status only ever reports bytes saved to
  * disk before it was built. Floods are bounded: at most {@value #MAX_PENDING_OFFERS} offers
- * whose metadata is still arriving, {@value #MAX_KNOWN} transfers remembered, and answers to
- * data of unknown transfers at most once per offer interval each. Not thread-safe:
+ * whose metadata is still arriving (beyond that the one heard least recently is forgotten, so a
+ * flood of them never locks a real sender out), {@value #MAX_KNOWN} transfers remembered, and
+ * answers to data of unknown transfers at most once per offer interval each. Not thread-safe:
  * {@link FileTransfers} calls it under its lock; times are its seconds.
  */
 final class FileReceiver {
@@ -200,12 +201,19 @@ final class FileReceiver {
         Incoming t = transfers.get(key);
         if (t == null) {
             int undecided = 0;
+            Incoming stalest = null;
             for (Incoming x : transfers.values()) {
-                undecided += x.decided ? 0 : 1;
+                if (!x.decided) {
+                    undecided++;
+                    stalest = stalest == null || x.lastActivity < stalest.lastActivity ? x : stalest;
+                }
             }
             if (undecided >= MAX_PENDING_OFFERS) {
+                // a flood of offers whose metadata never completes: the stalest goes, so that it
+                // cannot lock real senders out until it is forgotten (the Python receiver drops
+                // the new offer instead, for idle_timeout seconds: see the report of issue 18)
+                close(stalest);
                 dropped++;
-                return;
             }
             if (transfers.size() >= MAX_KNOWN && !forgetOne()) {
                 dropped++;
