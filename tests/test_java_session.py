@@ -273,6 +273,12 @@ def test_a_wrong_key_is_named(classes: Path, tmp_path: Path, start: Start) -> No
         else:
             assert r["unsigned"] > 0, r
         node.kill()
+    # the DjiLink (the app's link) names it the same way, to its state listener, and clears it
+    # when frames verify again
+    r = Java(classes, tmp_path, "key-dji", "djikey", key=key).finish(30)
+    told = "ignoring the onboard end: frames whose signatures do not verify (the same --key at both ends?)"
+    assert r["problem"] == told and r["states"][0] == "problem: " + told, r
+    assert r["problem_after"] == "null" and r["states_after"][-1] == "ok: frames from the onboard end verify again", r
 
 
 def test_a_slow_listener_does_not_delay_acks(classes: Path, tmp_path: Path, start: Start) -> None:

@@ -46,6 +46,8 @@ import ttctl.ttapi.transfer.TransferResult;
  *     "The product is not connected" for MS ms, then forwards them to the onboard end.
  * wrongkey key=HEX                            UdpLink verifying with that key; waits for frames
  *     from the onboard end (udpout to our PORT), then a command.
+ * djikey key=HEX                              DjiLink verifying with that key, fed frames signed
+ *     with another, then with it.
  * inbox port=LISTEN dir=DIR serve=DIR secs=S  takes pushed files, serves fetches, for S seconds.
  * listener port=ONBOARD n=N                   a 400 ms handler on telemetry; N commands meanwhile.
  */
@@ -82,6 +84,9 @@ public final class SessionDriver {
                 break;
             case "wrongkey":
                 wrongKey(a, out);
+                break;
+            case "djikey":
+                djiKey(a, out);
                 break;
             case "inbox":
                 inbox(a, out);
@@ -338,6 +343,34 @@ public final class SessionDriver {
         out.put("command", r).put("problem", String.valueOf(s.problem())).put("bad_frames", udp.stats().badFrames())
                 .put("bad_signatures", udp.stats().badSignatures()).put("unsigned", udp.stats().unsignedRefused());
         s.close();
+    }
+
+    /** DjiLink verifying with one key, fed frames signed with another (as the drone would send them). */
+    static void djiKey(Map<String, String> a, Json out) throws Exception {
+        Signing ours = new Signing(unhex(a.get("key")), 1, false);
+        Signing theirs = new Signing(Signing.keyFromPassphrase("not the tablet's key"), 1, false);
+        final List<String> states = Collections.synchronizedList(new ArrayList<String>());
+        DjiLink dji = new DjiLink((p, done) -> done.done(null), new PacketReceiver(Ttapi.INSTANCE, ours));
+        dji.setStateListener((bad, why) -> states.add((bad ? "problem: " : "ok: ") + why));
+        for (int i = 0; i < 5; i++) {
+            dji.onDataFromOnboard(theirs.sign(new TtOdometry().pack(i, 1, 240)));
+            Thread.sleep(20);
+        }
+        long t0 = System.nanoTime();
+        while (states.isEmpty() && ms(t0) < 3000) {
+            Thread.sleep(10);
+        }
+        out.put("problem", String.valueOf(dji.problem())).put("states", states);
+        for (int i = 0; i < 3; i++) { // the right key after all
+            dji.onDataFromOnboard(ours.sign(new TtOdometry().pack(10 + i, 1, 240)));
+            Thread.sleep(20);
+        }
+        t0 = System.nanoTime();
+        while (states.size() < 2 && ms(t0) < 3000) {
+            Thread.sleep(10);
+        }
+        out.put("problem_after", String.valueOf(dji.problem())).put("states_after", states);
+        dji.close();
     }
 
     // -- the inbox and the served folder -----------------------------------------------------------
