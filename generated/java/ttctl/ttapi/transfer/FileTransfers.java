@@ -753,7 +753,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
     }
 
     /** Under the lock: the end of a pushed file's transfer, once it has one. */
-    private TransferResult incomingResult(double now, Transfer tr, FileReceiver.Incoming t) {
+    private TransferResult incomingResult(double now, Transfer tr, FileReceiver.Incoming t, String problem) {
         int r = t.result;
         long resumed = Math.max(0, t.resumed);
         String from = " from " + t.who();
@@ -777,7 +777,8 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
                 receiver.close(t); // its partial file stays: the sender's next offer resumes it
             }
             return new TransferResult(false, "TIMEOUT", t.name + from + ": nothing heard for "
-                    + Names.secs(now - t.lastActivity) + (t.held() > 0 ? " (what arrived is kept for a resume)" : ""),
+                    + Names.secs(Math.floor(now - t.lastActivity)) + (problem != null ? "; " + problem : "")
+                    + (t.held() > 0 ? " (what arrived is kept for a resume)" : ""),
                     t.name, t.size, now - t.started, 0, 0, resumed, Math.max(0, t.held() - resumed), false, null);
         }
         return null;
@@ -902,7 +903,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
             Transfer tr = e.getKey();
             FileReceiver.Incoming t = e.getValue();
             if (!tr.isDone()) {
-                TransferResult r = incomingResult(now, tr, t);
+                TransferResult r = incomingResult(now, tr, t, problem);
                 progress(tr, t.held(), t.size, r, calls);
                 if (r == null) {
                     next = min(next, t.lastActivity + cfg.giveUpAfter);
