@@ -219,7 +219,9 @@ def test_an_urgent_land_is_not_held_behind_an_unanswered_hover(classes: Path, tm
                                   "land_ms": [round(x, 1) for x in r["land_ms"]], "bound_ms": round(bound, 1)}))
     assert len(r["idle_ms"]) == 6 and not r["errors"] and len(r["land_ms"]) == 3, r["_text"][-3000:]
     assert all(r["hover_pending"]), r
-    assert max(r["land_ms"]) <= bound + 30, (r["land_ms"], bound)  # 30 ms for the JVM's and relay's scheduling
+    # 100 ms for the JVM's and the relay's scheduling on a busy machine: still half a packet time,
+    # and far from the 7.5 s the LAND waited behind the HOVER before
+    assert max(r["land_ms"]) <= bound + 100, (r["land_ms"], bound)
 
 
 def test_sdk_refusals_reach_the_user_and_the_link_backs_off(classes: Path, tmp_path: Path, start: Start) -> None:
@@ -253,8 +255,9 @@ def test_sdk_refusals_reach_the_user_and_the_link_backs_off(classes: Path, tmp_p
 def test_a_wrong_key_is_named(classes: Path, tmp_path: Path, start: Start) -> None:
     """The onboard end signs with another key (and sends to the tablet, as the DJI downlink
     does, whoever listens): the tablet's command fails, and its reason, like problem(), names
-    the cause in the Python ends' words; the onboard end names it too. Then the same against an
-    onboard end that does not sign at all: "unsigned frames"."""
+    the cause in the Python ends' words. (Frames that do not verify never become the UdpLink's
+    return address, so the tablet's commands do not reach that onboard end.) Then the same
+    against an onboard end that does not sign at all: "unsigned frames"."""
     key = random.Random(2).randbytes(32).hex()
     (tmp_path / "other.key").write_text("not the tablet's key\n")
     for case, extra in (("wrong", ["--key", str(tmp_path / "other.key")]), ("unsigned", [])):
@@ -269,7 +272,6 @@ def test_a_wrong_key_is_named(classes: Path, tmp_path: Path, start: Start) -> No
         assert r["command"].startswith("failed") and words in r["command"], r
         if case == "wrong":
             assert r["bad_signatures"] > 0, r
-            node.wait_for("frames whose signatures do not verify (the same --key at both ends?)")
         else:
             assert r["unsigned"] > 0, r
         node.kill()
@@ -499,11 +501,13 @@ for i in range(400):
     tx(TtFileOffer(target_system=255, target_component=190, transfer_id=1000 + i, request_id=0, size=10, flags=0,
                    meta_length=200, meta_offset=0, meta=b"\x01" * 71))
     time.sleep(0.0002)
+flood_start = time.monotonic()
 for i in range(2000):
     tx(TtFileData(transfer_id=5000 + (i % 50), offset=80 * i, data=bytes(80)))
     time.sleep(0.0002)
+flood = time.monotonic() - flood_start
 drain(2.0)
-print(json.dumps({str(k): v for k, v in answers.items()}), flush=True)
+print(json.dumps({"flood_seconds": flood, **{str(k): v for k, v in answers.items()}}), flush=True)
 '''
 
 
@@ -530,7 +534,9 @@ def test_hostile_offers_are_refused_or_dropped_never_written_outside(classes: Pa
     proc = subprocess.run([sys.executable, "-c", HOSTILE, str(ROOT / "generated" / "python"), str(port)],
                           capture_output=True, text=True, timeout=60)
     assert proc.returncode == 0, proc.stderr
-    answers = {int(k): v for k, v in json.loads(proc.stdout.strip().splitlines()[-1]).items()}
+    report = json.loads(proc.stdout.strip().splitlines()[-1])
+    flood_seconds = report.pop("flood_seconds")
+    answers = {int(k): v for k, v in report.items()}
 
     def reason(tid: int) -> str:
         texts = [x["text"] for x in answers.get(tid, []) if x["type"] == "TtFileReason"]
@@ -549,9 +555,11 @@ def test_hostile_offers_are_refused_or_dropped_never_written_outside(classes: Pa
     for rid in (9001, 9003):
         assert answers[rid][0]["type"] == "TtFileReason" and answers[rid][0]["result"] == 12, answers[rid]
     assert "leads outside the served folder" in reason(9002)
-    # the unknown transfers' data: each told UNKNOWN_TRANSFER at most once per offer interval
+    # the unknown transfers' data (40 frames each): each told UNKNOWN_TRANSFER at most once per
+    # offer interval (0.5 s) while its frames come
     unknown = [tid for tid in range(5000, 5050) if answers.get(tid)]
-    assert unknown and all(len(answers[t]) <= 4 for t in unknown), {t: len(answers[t]) for t in unknown}
+    most = flood_seconds / 0.5 + 2
+    assert unknown and all(len(answers[t]) <= most for t in unknown), ({t: len(answers[t]) for t in unknown}, most)
     # a real file after all that
     data = tmp_path / "after.bin"
     data.write_bytes(random.Random(6).randbytes(5000))

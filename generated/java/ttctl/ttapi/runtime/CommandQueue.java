@@ -498,7 +498,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                                         boolean silent = lastHeard - j.startedAt < 0;
                                         fail(j, new CommandException(CommandException.Reason.TIMEOUT, j.command.describe()
                                                 + ": no reply after " + made + " tr" + (made == 1 ? "y" : "ies")
-                                                + (silent ? ", nothing received from the link meanwhile" : "")
+                                                + (silent ? ", no message received from the link meanwhile" : "")
                                                 + (problem != null ? "; " + problem : ""), made, null));
                                     }
                                 });

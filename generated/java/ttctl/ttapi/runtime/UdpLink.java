@@ -23,7 +23,8 @@ import java.util.function.Consumer;
  * {@link Signing}, incoming frames are verified (refused ones are counted in
  * {@link PacketReceiver.Stats#badFrames()} and dropped); {@link #send} sends bytes as given, so
  * sign outgoing frames with {@link Signing#sign}. Frames are sent to the given remote address,
- * or, without one, to the sender of the last datagram received. Frames that arrive unsigned or
+ * or, without one, to the sender of the last datagram that held a valid frame (verified, with a
+ * Signing): garbage, or frames that do not verify, never move it. Frames that arrive unsigned or
  * whose signatures do not verify are named in {@link #problem()} ("ignoring 127.0.0.1:14560:
  * frames whose signatures do not verify (the same --key at both ends?)") until frames verify
  * again. Listeners run on the reader thread: keep them quick (a {@link Dispatcher} hands the
@@ -218,17 +219,18 @@ public final class UdpLink implements Link {
                 }
                 continue; // e.g. ICMP port unreachable reported on the socket: keep reading
             }
-            if (learnsRemote) {
-                remote = packet.getSocketAddress();
-            }
+            long before = receiver.stats().frames();
             receiver.feed(buf, packet.getOffset(), packet.getLength(), deliver);
+            if (learnsRemote && receiver.stats().frames() > before) {
+                remote = packet.getSocketAddress(); // a valid (and verified) frame: garbage never moves it
+            }
             watchSignatures(packet.getSocketAddress());
         }
     }
 
     /**
-     * Whether to send to the sender of the last datagram received (the default when no remote
-     * address was given).
+     * Whether to send to the sender of the last datagram that held a valid frame (the default
+     * when no remote address was given).
      */
     public UdpLink setLearnsRemote(boolean learn) {
         this.learnsRemote = learn;
