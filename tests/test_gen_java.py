@@ -12,6 +12,7 @@ import re
 import shutil
 import subprocess
 import sys
+import time
 from pathlib import Path
 from typing import Any
 
@@ -90,7 +91,9 @@ def test_tree(out: Path) -> None:
     assert {"SendTtActionCommand", "ReceiveTtCommandAck"} <= cmds
     assert "SendTtCommandAck" not in cmds and "ReceiveTtActionCommand" not in cmds  # sender tags
     skel = (root / "commands" / "SendTtActionCommand.java").read_text()
-    assert "TtCommandAck.MSG_ID" in skel and "reply.command_id == this.command_id" in skel
+    assert "TtCommandAck.MSG_ID" in skel
+    assert "reply.command_id == (this.command_id != 0 ? this.command_id : ctx.commandId())" in skel
+    assert "msg.time_usec = this.time_usec != 0 ? this.time_usec : ctx.issuedUsec();" in skel
     cls = (root / "msg" / "TtActionCommand.java").read_text()
     assert "public static final int MSG_ID = 50005;" in cls
     assert "public long time_usec;" in cls and "public byte[] argument = new byte[48];" in cls
@@ -207,6 +210,7 @@ from ttapi.messages import TtActionCommand, TtCommandAck
 
 DROP = {1: 2}  # command_id -> tries to drop before answering
 log = []
+tries = []
 silent_count = [0]
 lock = threading.Lock()
 resp = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
@@ -224,11 +228,13 @@ def serve():
                 continue
             with lock:
                 log.append(msg.command_id)
+                tries.append([msg.command_id, msg.action, msg.time_usec])
             seen[msg.command_id] = n = seen.get(msg.command_id, 0) + 1
-            if n <= DROP.get(msg.command_id, 0):
-                continue
+            if n <= DROP.get(msg.command_id, 0) or msg.action == 3 or (msg.action == 5 and n == 1):
+                continue  # HOVER: never answered; RETURN_HOME: its first try dropped
             ack = TtCommandAck(target_system=msg.get_srcSystem(), target_component=msg.get_srcComponent(),
-                               command_id=msg.command_id, action=msg.action, result=0, progress=100)
+                               command_id=msg.command_id, action=msg.action, result=4 if msg.action == 4 else 0,
+                               progress=100)
             resp.sendto(enc.encode(ack), addr)
 
 
@@ -245,7 +251,7 @@ print(json.dumps({"port": resp.getsockname()[1], "silent": silent.getsockname()[
       flush=True)
 sys.stdin.read()
 with lock:
-    print(json.dumps({"log": log, "silent": silent_count[0]}), flush=True)
+    print(json.dumps({"log": log, "tries": tries, "silent": silent_count[0]}), flush=True)
 '''
 
 
@@ -271,8 +277,16 @@ def test_command_queue_over_udp(out: Path, classes: Path) -> None:
     assert 30 not in log and 50 not in log  # unpackable, cancelled: never sent
     assert result["silent"] >= 3  # the never-answered command's three tries
     for check in ("retries", "no answer", "priorities", "receive: times out", "send failures", "shutdown",
-                  "every one of"):
+                  "ids", "refused", "pre-emption", "every one of"):
         assert f"ok {check}" in stdout, stdout
+    # the ids the queue chose: the RETURN_HOME's two tries, and the TAKE_OFF after it, carry the
+    # same id and issue time on every try; the issue times are the wall clock's, increasing
+    ids = [int(x) for x in re.search(r"^IDS (\d+) (\d+)$", stdout, re.M).groups()]  # type: ignore[union-attr]
+    by_id = {i: [t for t in result["tries"] if t[0] == i] for i in ids}
+    assert len(by_id[ids[0]]) == 2 and len({tuple(t) for t in by_id[ids[0]]}) == 1, by_id
+    assert len(by_id[ids[1]]) == 1, by_id
+    t1, t2 = by_id[ids[0]][0][2], by_id[ids[1]][0][2]
+    assert 0 < t1 < t2 and abs(t2 / 1e6 - time.time()) < 120, (t1, t2)
 
 
 NASTY = """<?xml version="1.0"?>

@@ -7,6 +7,7 @@ every refusal: one line, exit 2, nothing started, nothing written."""
 
 from __future__ import annotations
 
+import re
 import shutil
 import subprocess
 import time
@@ -102,6 +103,16 @@ def test_a_java_tablet_from_the_generated_skeleton_talks_to_the_onboard_end(own:
     assert gen.returncode == 0, gen.stderr
     sources = sorted(str(p) for p in (own / "gen" / "java").rglob("*.java"))
     sources.append(str(ROOT / "tests" / "java" / "own" / "RobolabTablet.java"))
+    # the README's few lines of the same app compile too (pasted into a method)
+    readme = (ROOT / "README.md").read_text().split("## Your own messages", 1)[1].split("\n## ", 1)[0]
+    (block,) = re.findall(r"```java\n(.+?)```", readme, re.S)
+    snippet = own / "ReadmeRobolab.java"
+    snippet.write_text("import java.util.concurrent.TimeUnit;\nimport ttctl.robolab.Robolab;\n"
+                       "import ttctl.robolab.commands.SendKrMotorControl;\nimport ttctl.robolab.enums.KrVehicleDir;\n"
+                       "import ttctl.robolab.msg.KrMotorStatus;\nimport ttctl.robolab.runtime.*;\n"
+                       "final class ReadmeRobolab {\n    static Object run() throws Exception {\n" + block
+                       + "        return st;\n    }\n}\n")
+    sources.append(str(snippet))
     classes = own / "classes"
     javac = subprocess.run(["javac", "--release", "11", "-Xlint:all", "-Werror", "-encoding", "UTF-8", "-d",
                             str(classes), *sources], capture_output=True, text=True, timeout=600)

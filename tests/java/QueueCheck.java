@@ -8,6 +8,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
 
 import ttctl.ttapi.Ttapi;
 import ttctl.ttapi.commands.ReceiveTtCommandAck;
@@ -23,8 +24,9 @@ import ttctl.ttapi.runtime.UdpLink;
 /**
  * End-to-end CommandQueue check over real loopback UDP (run by tests/test_gen_java.py against a
  * Python responder that answers TT_ACTION_COMMAND with TT_COMMAND_ACK, dropping the first two
- * tries of command_id 1). Arguments: responder port, port of a peer that never answers.
- * Prints one "ok" line per check; exits 1 on the first failure.
+ * tries of command_id 1 and the first try of every RETURN_HOME, never answering HOVER, and
+ * answering SYNC_TIME with DENIED). Arguments: responder port, port of a peer that never
+ * answers. Prints one "ok" line per check; exits 1 on the first failure.
  */
 public final class QueueCheck {
     static final int SYSID = 255;
@@ -96,6 +98,34 @@ public final class QueueCheck {
         return (System.nanoTime() - t0) / 1000000L;
     }
 
+    /** Callbacks run on the queue's listener thread after the future completed: wait for them. */
+    static boolean eventually(BooleanSupplier condition) throws InterruptedException {
+        long t0 = System.nanoTime();
+        while (!condition.getAsBoolean()) {
+            if (millisSince(t0) > 2000) {
+                return false;
+            }
+            Thread.sleep(2);
+        }
+        return true;
+    }
+
+    /** TT_ACTION_COMMAND with command_id and time_usec left to the queue. */
+    static final class Plain extends SendTtActionCommand {
+        final AtomicInteger failures = new AtomicInteger();
+        final AtomicReference<Throwable> failure = new AtomicReference<>();
+
+        Plain(int action) {
+            super(1, 1, action, new float[4], new byte[48]);
+        }
+
+        @Override
+        protected void onFailure(Throwable error) {
+            failures.incrementAndGet();
+            failure.set(error);
+        }
+    }
+
     public static void main(String[] args) throws Exception {
         int port = Integer.parseInt(args[0]);
         int silentPort = Integer.parseInt(args[1]);
@@ -114,7 +144,7 @@ public final class QueueCheck {
         long took = millisSince(t0);
         check(reply instanceof TtCommandAck && ((TtCommandAck) reply).command_id == 1, "reply " + reply);
         check(((TtCommandAck) reply).target_system == SYSID, "ack addressed to us");
-        check(done.equals(Arrays.asList(1)) && c1.failures.get() == 0, "onSuccess ran once: " + done);
+        check(eventually(() -> done.equals(Arrays.asList(1))) && c1.failures.get() == 0, "onSuccess ran once: " + done);
         check(took >= 150 + 225 && took < 3000, "two timeouts (150 ms, then 225 ms) before the reply: " + took);
         ok("retries: succeeds on the third try after 150 + 225 ms timeouts; onSuccess ran (" + took + " ms)");
 
@@ -131,7 +161,8 @@ public final class QueueCheck {
         CommandException e2 = failureOf(submit(silent, c2), 10);
         took = millisSince(t0);
         check(e2.reason() == CommandException.Reason.TIMEOUT && e2.tries() == 3, "timeout after 3 tries: " + e2);
-        check(c2.failures.get() == 1 && c2.failure.get() == e2 && silentDone.isEmpty(), "onFailure ran once");
+        check(eventually(() -> c2.failures.get() == 1) && c2.failure.get() == e2 && silentDone.isEmpty(),
+                "onFailure ran once");
         check(took >= 100 + 200 + 400 && took < 5000, "waited 100 + 200 + 400 ms: " + took);
         ok("no answer: fails with TIMEOUT after 3 tries (" + took + " ms), onFailure ran, future exceptional");
 
@@ -150,7 +181,7 @@ public final class QueueCheck {
         for (CompletableFuture<MavlinkMessage> f : batch) {
             f.get(10, TimeUnit.SECONDS);
         }
-        check(done.equals(Arrays.asList(11, 13, 12, 10, 14)), "priority order " + done);
+        check(eventually(() -> done.size() == 5) && done.equals(Arrays.asList(11, 13, 12, 10, 14)), "priority order " + done);
         ok("priorities: sent and acknowledged in order 11, 13 (prio 5), 12 (prio 2), 10, 14 (prio 0)");
 
         // 4. a ReceiveCommand that gets nothing times out, and its future completes
@@ -188,7 +219,7 @@ public final class QueueCheck {
         Action bad = new Action(300, 30, done); // target_system 300 does not fit uint8_t
         CommandException e7 = failureOf(submit(q, bad), 5);
         check(e7.reason() == CommandException.Reason.SEND_FAILED && e7.getCause() instanceof IllegalArgumentException
-                && bad.failures.get() == 1, "pack failure: " + e7);
+                && eventually(() -> bad.failures.get() == 1), "pack failure: " + e7);
         UdpLink closed = UdpLink.open("127.0.0.1", 0, "127.0.0.1", port, Ttapi.INSTANCE);
         closed.close();
         CommandQueue dead = new CommandQueue(closed, SYSID, COMPID).start();
@@ -197,7 +228,7 @@ public final class QueueCheck {
                 "closed link: " + e7b);
         ok("send failures: packing and I/O errors fail the command at once with SEND_FAILED");
 
-        // 8. shutdown completes the command in flight, the pending ones and later submissions
+        // 8. closing completes the command in flight, the pending ones and later submissions
         CommandQueue stopping = new CommandQueue(silentLink, SYSID, COMPID);
         silentLink.addListener(stopping);
         stopping.start();
@@ -208,15 +239,15 @@ public final class QueueCheck {
         CompletableFuture<MavlinkMessage> f8c = submit(stopping, new ReceiveTtCommandAck(5000));
         Thread.sleep(100);
         t0 = System.nanoTime();
-        stopping.shutdown();
+        stopping.close();
         CompletableFuture<MavlinkMessage> f8d = submit(stopping, new Action(1, 42, silentDone));
         for (CompletableFuture<MavlinkMessage> f : Arrays.asList(f8a, f8b, f8c, f8d)) {
             CommandException e = failureOf(f, 5);
-            check(e.reason() == CommandException.Reason.SHUTDOWN, "shutdown: " + e);
+            check(e.reason() == CommandException.Reason.SHUTDOWN, "close: " + e);
         }
-        check(millisSince(t0) < 2000, "shutdown is prompt");
+        check(millisSince(t0) < 2000, "close is prompt");
         check(stopping.awaitTermination(2, TimeUnit.SECONDS), "queue thread ended");
-        ok("shutdown: in-flight, pending and later commands complete with SHUTDOWN");
+        ok("shutdown: close() completes in-flight, pending and later commands with SHUTDOWN");
 
         // 9. a cancelled future: the queue skips the command and still reports it
         q.pause();
@@ -226,7 +257,7 @@ public final class QueueCheck {
         q.resume();
         Action after = new Action(1, 51, done);
         submit(q, after).get(5, TimeUnit.SECONDS);
-        check(f9.isCancelled() && skipped.failures.get() == 1, "cancelled command reported to onFailure");
+        check(f9.isCancelled() && eventually(() -> skipped.failures.get() == 1), "cancelled command reported to onFailure");
         Action waiting = new Action(1, 52, silentDone);
         waiting.setTimeoutMillis(10000).setMaxRetries(0);
         CompletableFuture<MavlinkMessage> f9b = submit(silent, waiting);
@@ -236,20 +267,63 @@ public final class QueueCheck {
         Action next = new Action(1, 53, silentDone);
         next.setTimeoutMillis(50).setMaxRetries(0);
         failureOf(submit(silent, next), 5);
-        check(millisSince(t0) < 2000 && waiting.failures.get() == 1
+        check(millisSince(t0) < 2000 && eventually(() -> waiting.failures.get() == 1)
                 && ((CommandException) waiting.failure.get()).reason() == CommandException.Reason.CANCELLED,
                 "cancelling the command in flight frees the queue at once");
         ok("cancel: a cancelled command is skipped (or stops waiting) and its onFailure told");
+
+        // 10. ids and issue times chosen by the queue: distinct, non-zero, kept by retries
+        Plain r1 = new Plain(TtAction.TT_ACTION_RETURN_HOME); // its first try is dropped: a retry
+        Plain r2 = new Plain(TtAction.TT_ACTION_TAKE_OFF);
+        r1.setTimeoutMillis(150).setMaxRetries(3);
+        TtCommandAck a1 = (TtCommandAck) submit(q, r1).get(5, TimeUnit.SECONDS);
+        TtCommandAck a2 = (TtCommandAck) submit(q, r2).get(5, TimeUnit.SECONDS);
+        check(a1.command_id != 0 && a2.command_id != 0 && a1.command_id != a2.command_id,
+                "queue-chosen ids " + a1.command_id + ", " + a2.command_id);
+        check(a2.command_id == a1.command_id % 65535 + 1, "ids count up: " + a1.command_id + ", " + a2.command_id);
+        System.out.println("IDS " + a1.command_id + " " + a2.command_id);
+        ok("ids: the queue numbers commands left at 0 (" + a1.command_id + ", " + a2.command_id
+                + ") and stamps their issue time; a retry repeats both");
+
+        // 11. a DENIED ack is a refusal: the future fails with REFUSED and the ack, onFailure runs
+        Plain denied = new Plain(TtAction.TT_ACTION_SYNC_TIME);
+        CommandException e11 = failureOf(submit(q, denied), 5);
+        check(e11.reason() == CommandException.Reason.REFUSED && e11.reply() instanceof TtCommandAck
+                && !((TtCommandAck) e11.reply()).ok() && e11.getMessage().endsWith("refused: DENIED")
+                && e11.tries() == 1, "refused: " + e11 + " " + e11.reply());
+        check(eventually(() -> denied.failures.get() == 1) && denied.failure.get() == e11, "onFailure of the refusal");
+        ok("refused: a DENIED ack fails the future with REFUSED (" + e11.getMessage() + "), never a success");
+
+        // 12. pre-emption: an urgent LAND is not held behind a HOVER that gets no answer
+        Plain hover = new Plain(TtAction.TT_ACTION_HOVER);
+        hover.setTimeoutMillis(400).setBackoff(1.0).setMaxRetries(2);
+        CompletableFuture<MavlinkMessage> fh = submit(q, hover);
+        Thread.sleep(50); // the HOVER is in flight
+        Plain land = new Plain(TtAction.TT_ACTION_LAND);
+        land.setPriority(ttctl.ttapi.runtime.Command.URGENT_PRIORITY);
+        Plain later = new Plain(TtAction.TT_ACTION_TAKE_OFF); // default priority: waits for the HOVER
+        t0 = System.nanoTime();
+        CompletableFuture<MavlinkMessage> fl = submit(q, land);
+        CompletableFuture<MavlinkMessage> fx = submit(q, later);
+        TtCommandAck landAck = (TtCommandAck) fl.get(5, TimeUnit.SECONDS);
+        long landMs = millisSince(t0);
+        check(landAck.ok() && !fh.isDone() && !fx.isDone() && landMs < 300, "LAND acked in " + landMs + " ms, HOVER "
+                + fh.isDone() + ", later " + fx.isDone());
+        CommandException eh = failureOf(fh, 5);
+        check(eh.reason() == CommandException.Reason.TIMEOUT && eh.tries() == 3, "hover " + eh);
+        fx.get(5, TimeUnit.SECONDS);
+        ok("pre-emption: an URGENT LAND behind an unanswered HOVER acked in " + landMs
+                + " ms; a later command of the HOVER's priority waited for it");
 
         // every future completed
         for (CompletableFuture<MavlinkMessage> f : ALL) {
             check(f.isDone(), "a future never completed");
         }
         ok("every one of the " + ALL.size() + " futures completed");
-        q.shutdown();
-        watcher.shutdown();
-        silent.shutdown();
-        dead.shutdown();
+        q.close();
+        watcher.close();
+        silent.close();
+        dead.close();
         link.close();
         silentLink.close();
         System.out.println("DONE " + checks + " checks");

@@ -249,8 +249,8 @@ public final class RuntimeCheck {
         ok("parser: stale heads wait only until flush(); junk and unknown ids are skipped and counted");
     }
 
-    static void dispatcher() {
-        Dispatcher d = new Dispatcher();
+    static void dispatcher() throws InterruptedException {
+        Dispatcher d = new Dispatcher(Runnable::run); // handlers on the caller's thread
         final List<String> calls = new ArrayList<>();
         final List<Throwable> errors = new ArrayList<>();
         d.setErrorListener(new Dispatcher.ErrorListener() {
@@ -298,6 +298,29 @@ public final class RuntimeCheck {
         d.accept(new SystemTime());
         check(calls.equals(Arrays.asList("any:SYSTEM_TIME")), "other id " + calls);
         ok("dispatcher: two handlers on one msgid in order, a throwing one does not stop the other");
+
+        // the default: accept() hands messages to the dispatcher's own thread, in order
+        Dispatcher own = new Dispatcher();
+        final List<String> seen = java.util.Collections.synchronizedList(new ArrayList<String>());
+        final Thread caller = Thread.currentThread();
+        own.onAny(new Dispatcher.Handler<MavlinkMessage>() {
+            @Override
+            public void handle(MavlinkMessage msg) throws InterruptedException {
+                Thread.sleep(100); // a slow handler
+                seen.add(msg.name() + (Thread.currentThread() == caller ? "@caller" : ""));
+            }
+        });
+        long t0 = System.nanoTime();
+        own.accept(hb);
+        own.accept(new SystemTime());
+        long took = (System.nanoTime() - t0) / 1000000;
+        check(took < 50 && seen.isEmpty(), "accept returned at once: " + took + " ms " + seen);
+        while (seen.size() < 2 && (System.nanoTime() - t0) / 1000000 < 3000) {
+            Thread.sleep(5);
+        }
+        check(seen.equals(Arrays.asList("HEARTBEAT", "SYSTEM_TIME")), "handled in order, off the caller: " + seen);
+        own.close();
+        ok("dispatcher: accept() returns at once, handlers run on the dispatcher's thread in order");
     }
 
     static void frameErrors() {
@@ -386,7 +409,7 @@ public final class RuntimeCheck {
         ok("helpers: Unsigned, enum lookups, text helpers, range checks, matcher, registry");
     }
 
-    public static void main(String[] args) {
+    public static void main(String[] args) throws InterruptedException {
         parserSplits();
         parserLostChunks();
         parserCorruptedChunks();

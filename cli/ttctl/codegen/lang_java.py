@@ -86,12 +86,12 @@ RUNTIME_FILES = [
     "DecodeException", "Frame", "Parser", "Dispatcher", "Link", "UdpLink", "CommandContext",
     "CommandException", "Command", "MessageMatcher", "SendCommand", "ReceiveCommand", "CommandQueue",
     "LinkScheduler", "DjiLink",
-    "Packetizer", "PacketReceiver", "Signing", "UdpForward",
+    "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
 ]
 RUNTIME_CLASSES = frozenset(RUNTIME_FILES)
 # File transfer (package <root>.transfer), for dialects that have ttctl's file messages.
 TRANSFER_FILES = ["RangeSet", "Names", "TransferConfig", "TransferResult", "Transfer", "LossEstimate", "FileSender",
-                  "FileFetch", "FileTransfers"]
+                  "ReceiveDir", "Partial", "FileReceiver", "FileFetch", "FileTransfers"]
 TRANSFER_MESSAGES = {"TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_REASON", "TT_FILE_DATA", "TT_FILE_DATA_WIDE",
                      "TT_FILE_REQUEST"}
 
@@ -248,7 +248,9 @@ def reply_conditions(m: Message, d: Dialect) -> list[str]:
     if r is None:
         return []
     reply, fields = r
-    conds = [f"reply.{f} == this.{f}" for f in fields]
+    stamped = stamped_fields(m)
+    conds = [f"reply.{f} == this.{f}" if f not in stamped else f"reply.{f} == (this.{f} != 0 ? this.{f} : {stamped[f]})"
+             for f in fields]
     if scalar_target(reply):
         conds.append("(reply.target_system == 0 || reply.target_system == ctx.sysId())")
     return conds
@@ -454,6 +456,40 @@ def ctor_doc(m: Message, d: Dialect) -> str:
     return text
 
 
+# Fields of a contract message the runtime itself reads or fills (dialects/ttapi.xml): the runtime
+# uses the message only if the dialect has it with these fields (the generated runtime of a
+# dialect without ttapi.xml, such as common.xml, still compiles).
+CONTRACT_FIELDS = {
+    "TT_ACTION_COMMAND": ("command_id", "time_usec"),
+    "TT_COMMAND_ACK": ("command_id", "result"),
+}
+
+
+def has_contract(d: Dialect, name: str) -> bool:
+    """Whether the dialect has the contract message `name` (complete, with the fields the
+    runtime uses, as scalars)."""
+    m = d.messages_by_name.get(name)
+    if m is None or not m.complete:
+        return False
+    return all((f := m.field(n)) is not None and not f.array_length and not f.is_float and f.type != "char"
+               for n in CONTRACT_FIELDS[name])
+
+
+def stamped_fields(m: Message) -> dict[str, str]:
+    """The fields of a sent message the command queue fills when the app leaves them 0: a scalar
+    `command_id` (uint16_t or uint32_t) gets the queue's id for the submission, and then a
+    `time_usec` (uint64_t) the time it was submitted (so an (id, time) pair is never reused,
+    even by an app that restarts and numbers its commands afresh). Name -> what fills it."""
+    cid = m.field("command_id")
+    if cid is None or cid.array_length or cid.type not in ("uint16_t", "uint32_t"):
+        return {}
+    out = {"command_id": "ctx.commandId()"}
+    t = m.field("time_usec")
+    if t is not None and not t.array_length and t.type == "uint64_t":
+        out["time_usec"] = "ctx.issuedUsec()"
+    return out
+
+
 def scalar_target(m: Message) -> bool:
     f = m.field("target_system")
     return bool(f and not f.array_length and f.type == "uint8_t")
@@ -555,6 +591,9 @@ class _Java:
             "expected_reply": lambda m: expected_reply(m, d),
             "reply_conditions": lambda m: reply_conditions(m, d),
             "scalar_target": scalar_target,
+            "stamped_fields": stamped_fields,
+            "has_contract": lambda name: has_contract(d, name),
+            "has_transfers": TRANSFER_MESSAGES.issubset(m.name for m in d.messages if m.complete),
             "ctor_type": lambda f: ctor_type(f, d),
             "narrowed": lambda m: [f.name for f in m.fields if ctor_type(f, d) != java_type(f)],
             "ctor_doc": lambda m: ctor_doc(m, d),

@@ -20,6 +20,7 @@ import java.util.concurrent.atomic.AtomicLong;
 
 import ttctl.ttapi.Ttapi;
 import ttctl.ttapi.commands.SendTtActionCommand;
+import ttctl.ttapi.enums.TtAction;
 import ttctl.ttapi.msg.TtCommandAck;
 import ttctl.ttapi.msg.TtFileData;
 import ttctl.ttapi.msg.TtFileStatus;
@@ -49,7 +50,6 @@ public final class TabletDriver {
     static final int COMP = 190;
     static final AtomicInteger APP_THREAD_ERRORS = new AtomicInteger();
     static final AtomicInteger UNCAUGHT = new AtomicInteger();
-    static final AtomicInteger commandId = new AtomicInteger(new Random().nextInt(30000) + 1);
 
     public static void main(String[] argv) throws Exception {
         Map<String, String> a = new HashMap<>();
@@ -188,7 +188,7 @@ public final class TabletDriver {
                 .put("app_thread_errors", APP_THREAD_ERRORS.get()).put("uncaught", UNCAUGHT.get())
                 .put("ignored", files.ignored());
         files.close();
-        cq.shutdown();
+        cq.close();
         sched.close();
         link.close();
         if (sdk != null) {
@@ -208,9 +208,12 @@ public final class TabletDriver {
         return true;
     }
 
+    /**
+     * SYNC_TIME: an action the onboard end always accepts (a TAKE_OFF repeated while flying is
+     * DENIED, and a DENIED ack is a failure); command_id and time_usec left to the queue.
+     */
     static SendTtActionCommand action() {
-        return new SendTtActionCommand(1, 240, commandId.getAndIncrement() & 0xFFFF, 0, 0, new float[4],
-                new byte[48]);
+        return new SendTtActionCommand(1, 240, TtAction.TT_ACTION_SYNC_TIME, new float[4], new byte[48]);
     }
 
     /** One command's round trip in ms, or -1 if it failed. */
@@ -249,11 +252,10 @@ public final class TabletDriver {
             out.put(what + "_ok", false).put(what + "_code", "HANG");
             return;
         }
-        long moved = Math.max(0, r.size - (r.ok ? r.resumedBytes : 0));
         out.put(what + "_ok", r.ok).put(what + "_code", r.code).put(what + "_message", r.message)
-                .put(what + "_bytes", r.size).put(what + "_seconds", r.seconds)
+                .put(what + "_bytes", r.size).put(what + "_seconds", r.seconds).put(what + "_moved", r.bytesMoved)
                 .put(what + "_retransmitted", r.bytesRetransmitted).put(what + "_resumed", r.resumedBytes)
-                .put(what + "_efficiency", r.ok && r.seconds > 0 ? moved / r.seconds / rate : null);
+                .put(what + "_efficiency", r.ok && r.seconds > 0 ? r.goodput() / rate : null);
     }
 
     static byte[] sha(File f) throws Exception {

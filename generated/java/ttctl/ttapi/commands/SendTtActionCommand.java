@@ -23,16 +23,29 @@ public class SendTtActionCommand extends SendCommand {
     public final int target_system;
     /** Receiver component id. (uint8_t) */
     public final int target_component;
-    /** Sender-chosen id, repeated on retries. (uint16_t) */
+    /**
+     * Sender-chosen id, repeated on retries. (uint16_t) 0 (the default): the command queue's id for
+     * this submission, the same on every retry.
+     */
     public final int command_id;
     /** What to do. (uint8_t; enum {@link ttctl.ttapi.enums.TtAction}) */
     public final int action;
-    /** Sender's clock (UNIX epoch) when the command was issued. [us] (uint64_t) */
+    /**
+     * Sender's clock (UNIX epoch) when the command was issued. [us] (uint64_t) 0 (the default): the
+     * time the command was submitted, the same on every retry.
+     */
     public final long time_usec;
     /** Action parameters, see TT_ACTION. (float[4]) */
     public final float[] param;
     /** Action argument, e.g. the mission file of FLY_TRAJECTORY. (char[48]) */
     public final byte[] argument;
+
+    /**
+     * The values to send, command_id and time_usec chosen by the command queue (see the fields).
+     */
+    public SendTtActionCommand(int target_system, int target_component, int action, float[] param, byte[] argument) {
+        this(target_system, target_component, 0, action, 0, param, argument);
+    }
 
     /**
      * The values to send, packed anew on every try. Arrays are copied: changing yours afterwards
@@ -57,9 +70,9 @@ public class SendTtActionCommand extends SendCommand {
         TtActionCommand msg = new TtActionCommand();
         msg.target_system = this.target_system;
         msg.target_component = this.target_component;
-        msg.command_id = this.command_id;
+        msg.command_id = this.command_id != 0 ? this.command_id : ctx.commandId();
         msg.action = this.action;
-        msg.time_usec = this.time_usec;
+        msg.time_usec = this.time_usec != 0 ? this.time_usec : ctx.issuedUsec();
         msg.param = this.param == null ? null : this.param.clone();
         msg.argument = this.argument == null ? null : this.argument.clone();
         return msg;
@@ -68,7 +81,7 @@ public class SendTtActionCommand extends SendCommand {
     @Override
     protected MessageMatcher expectedReply(final CommandContext ctx) {
         return MessageMatcher.of(TtCommandAck.MSG_ID, TtCommandAck.class,
-            reply -> reply.command_id == this.command_id
+            reply -> reply.command_id == (this.command_id != 0 ? this.command_id : ctx.commandId())
                 && (reply.target_system == 0 || reply.target_system == ctx.sysId()));
     }
 

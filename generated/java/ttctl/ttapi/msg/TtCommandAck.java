@@ -118,6 +118,29 @@ public final class TtCommandAck extends MavlinkMessage {
         return m;
     }
 
+    /**
+     * Whether the onboard end took the command: result ACCEPTED, IN_PROGRESS or DONE. Anything
+     * else (FAILED, DENIED, UNSUPPORTED, BUSY) is a refusal, and a command queue fails the
+     * command with {@code CommandException.Reason.REFUSED}.
+     */
+    public boolean ok() {
+        return result == 0 || result == 1 || result == 2;
+    }
+
+    /** The result's name without its prefix (ACCEPTED, DENIED...), or RESULT_n for an unknown one. */
+    public String resultName() {
+        switch (result) {
+            case 0: return "ACCEPTED";
+            case 1: return "IN_PROGRESS";
+            case 2: return "DONE";
+            case 3: return "FAILED";
+            case 4: return "DENIED";
+            case 5: return "UNSUPPORTED";
+            case 6: return "BUSY";
+            default: return "RESULT_" + result;
+        }
+    }
+
     @Override
     public String toString() {
         return "TT_COMMAND_ACK{"

@@ -7,14 +7,22 @@ package ttctl.ttapi.runtime;
  *
  * <p>Try {@code k} (0-based) waits {@code timeoutMillis * backoff^k} ms (at most
  * {@link #maxTimeoutMillis()}) for the reply, then tries again, up to {@code maxRetries} times
- * after the first try. The queue calls {@link #onSuccess} or {@link #onFailure} exactly once per
- * submission, on its thread, before it completes the submission's future; keep them short.
+ * after the first try. The queue completes the submission's future, then calls
+ * {@link #onSuccess} or {@link #onFailure} exactly once per submission on its listener executor
+ * (see {@link Callbacks}): never on the link's thread, and a slow callback delays no other
+ * command.
  *
  * <p>Subclass {@link SendCommand} or {@link ReceiveCommand} rather than this class.
  */
 public abstract class Command {
     /** Priority of commands that do not say. Higher priorities run first. */
     public static final int DEFAULT_PRIORITY = 0;
+    /**
+     * A priority for commands that must not wait (LAND, HOVER in an emergency): a command of a
+     * higher priority than every command in flight is sent at once, beside them (see
+     * {@link CommandQueue}).
+     */
+    public static final int URGENT_PRIORITY = 100;
 
     private volatile int priority;
     private volatile int maxRetries;
@@ -33,7 +41,11 @@ public abstract class Command {
         return priority;
     }
 
-    /** Higher runs first; equal priorities run in submission order. Read when submitted. */
+    /**
+     * Higher runs first, and a command of a higher priority than every command in flight starts
+     * at once without waiting for them; equal priorities run one at a time, in submission order.
+     * Read when submitted.
+     */
     public Command setPriority(int priority) {
         this.priority = priority;
         return this;
@@ -108,14 +120,34 @@ public abstract class Command {
     /** Whether a try waits for a message; if not, the command succeeds once a try returns. */
     protected abstract boolean awaitsReply();
 
-    /** Whether {@code msg} is what this command waits for. Called on the link's reader thread. */
+    /**
+     * Whether {@code msg} is what this command waits for. Called on the link's reader thread:
+     * keep it short (compare fields), and do the work in {@link #onSuccess}.
+     */
     protected abstract boolean accept(MavlinkMessage msg, CommandContext ctx);
 
-    /** Called once on success with the awaited message (null if none is awaited). */
+    /**
+     * Why the reply {@code reply} says no, in words, or null if it is a success. The queue
+     * completes the future normally only with a reply this returns null for; otherwise the
+     * command fails with {@link CommandException.Reason#REFUSED}. Default: null (any awaited
+     * reply is a success); {@link SendCommand} refuses acks that are not ACCEPTED, IN_PROGRESS
+     * or DONE.
+     */
+    protected String refusal(MavlinkMessage reply) {
+        return null;
+    }
+
+    /**
+     * Called once on success with the awaited message (null if none is awaited), after the
+     * future completed, on the queue's listener executor.
+     */
     protected void onSuccess(MavlinkMessage reply) {
     }
 
-    /** Called once on failure; {@code error} is usually a {@link CommandException}. */
+    /**
+     * Called once on failure (also a refusal: see {@link #refusal}), after the future completed,
+     * on the queue's listener executor; {@code error} is usually a {@link CommandException}.
+     */
     protected void onFailure(Throwable error) {
     }
 

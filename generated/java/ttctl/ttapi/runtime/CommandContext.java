@@ -3,7 +3,10 @@ package ttctl.ttapi.runtime;
 
 import java.io.IOException;
 
-/** What a command sees while it runs: who we are on the link, and how to send. */
+/**
+ * What a command sees while it runs: who we are on the link, how to send, and the command id
+ * and issue time its queue gave this submission.
+ */
 public interface CommandContext {
     /** Our MAVLink system id. */
     int sysId();
@@ -13,4 +16,23 @@ public interface CommandContext {
 
     /** Packs {@code msg} with our ids and the next sequence number, and sends it over the link. */
     void send(MavlinkMessage msg) throws IOException;
+
+    /**
+     * The command id (1..65535) the queue gave this submission: the same for every retry, never
+     * the same as another command in flight; ids start at random for every queue, so an app
+     * that restarts does not number its commands as it did before. 0 outside a command.
+     */
+    default int commandId() {
+        return 0;
+    }
+
+    /**
+     * When this submission was issued, wall clock, microseconds since 1970 (UNIX epoch): the
+     * same for every retry, increasing from one submission to the next. 0 outside a command.
+     * The onboard end executes a (peer, command id, issue time) once, so a command stamped with
+     * it can never be taken for one of an earlier run.
+     */
+    default long issuedUsec() {
+        return 0;
+    }
 }

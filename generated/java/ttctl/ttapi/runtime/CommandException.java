@@ -7,11 +7,16 @@ public class CommandException extends Exception {
 
     /** The kinds of failure. */
     public enum Reason {
-        /** No (matching) reply within the timeouts of every try. */
+        /** No (matching) reply within the timeouts of every try; the message says what the link knows. */
         TIMEOUT,
+        /**
+         * The reply came and says no (a TT_COMMAND_ACK that is not ACCEPTED, IN_PROGRESS or DONE:
+         * DENIED, FAILED, UNSUPPORTED, BUSY); {@link #reply()} is that reply.
+         */
+        REFUSED,
         /** Packing or sending failed (the cause says why); not retried. */
         SEND_FAILED,
-        /** The queue was shut down before the command finished. */
+        /** The queue was closed before the command finished. */
         SHUTDOWN,
         /** The command's future was cancelled. */
         CANCELLED
@@ -19,11 +24,17 @@ public class CommandException extends Exception {
 
     private final Reason reason;
     private final int tries;
+    private final transient MavlinkMessage reply;
 
     public CommandException(Reason reason, String message, int tries, Throwable cause) {
+        this(reason, message, tries, cause, null);
+    }
+
+    public CommandException(Reason reason, String message, int tries, Throwable cause, MavlinkMessage reply) {
         super(message, cause);
         this.reason = reason;
         this.tries = tries;
+        this.reply = reply;
     }
 
     public Reason reason() {
@@ -33,5 +44,10 @@ public class CommandException extends Exception {
     /** How many times the command was tried (sent) before it failed. */
     public int tries() {
         return tries;
+    }
+
+    /** The reply that refused the command (REFUSED), else null. */
+    public MavlinkMessage reply() {
+        return reply;
     }
 }

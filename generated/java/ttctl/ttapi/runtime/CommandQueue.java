@@ -2,44 +2,78 @@
 package ttctl.ttapi.runtime;
 
 import java.io.IOException;
+import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.Iterator;
 import java.util.List;
 import java.util.PriorityQueue;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.Executor;
+import java.util.concurrent.ExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.BiConsumer;
 import java.util.function.Consumer;
 
 /**
- * Runs {@link Command}s one at a time on ONE background thread: highest priority first, FIFO
- * within a priority. A command is tried, waits for its reply, and is retried with backoff on
- * timeout; the next command starts when it has succeeded or failed.
+ * Runs {@link Command}s with retries and replies, driven by one background thread that never
+ * waits on a command: it sends tries, notes replies and keeps every command's deadline.
  *
- * <p>Every {@link #submit} returns a future that always completes: with the reply (null for a
- * command that awaits none), or exceptionally with a {@link CommandException} -- TIMEOUT after
- * the last try, SEND_FAILED when packing or sending throws (the cause; not retried), SHUTDOWN
- * when the queue stops first (also for submissions after {@link #shutdown}), CANCELLED when the
- * future was cancelled. The command's {@code onSuccess}/{@code onFailure} runs before the future
- * completes, on the queue thread.
+ * <p><b>Order and pre-emption.</b> Highest priority first, submission order within a priority.
+ * A command starts when nothing is in flight, or when its priority is higher than that of every
+ * command in flight: it is sent at once, and the commands it overtook go on waiting for their
+ * replies (and retrying) beside it. So a LAND at {@link Command#URGENT_PRIORITY} behind a HOVER
+ * whose ack is lost leaves within the packet on the air, not after the HOVER's retries. Commands
+ * of equal priority run one at a time; a lower priority waits until the higher ones in flight
+ * have finished.
  *
- * <p>Feed incoming messages to {@link #accept} (e.g. {@code link.addListener(queue)}); the
- * command in flight checks them. Also a {@link CommandContext}: {@link #send} packs a message
- * with this queue's ids and sequence numbers and sends it at once, outside the queue.
+ * <p><b>Ids and issue times.</b> Each submission gets a command id (1..65535; the first is drawn
+ * at random for every queue, then counting up, skipping ids in flight) and an issue time (wall
+ * clock, microseconds since 1970, increasing), the same for all its retries:
+ * {@link CommandContext#commandId()} and {@link CommandContext#issuedUsec()}. The generated
+ * command skeletons send them in command_id and time_usec unless the app set those fields. The
+ * onboard end executes each (peer, command id, issue time) once and answers a retry with the
+ * recorded ack, so a retry never runs an action twice and a restarted app's commands are never
+ * taken for those of its earlier run.
+ *
+ * <p><b>Results.</b> Every {@link #submit} returns a future that always completes. Normally, with
+ * the reply (null for a command that awaits none), only when the reply is a success (for acks:
+ * ACCEPTED, IN_PROGRESS or DONE, see {@link Command#refusal}). Otherwise exceptionally with a
+ * {@link CommandException}: REFUSED (the reply said no; {@link CommandException#reply()}),
+ * TIMEOUT after the last try (with what the link knows: an SDK that refuses packets, frames that
+ * do not verify), SEND_FAILED when packing or sending throws (not retried), SHUTDOWN when the
+ * queue closes first (also for submissions after {@link #close}), CANCELLED when the future was
+ * cancelled. The future completes first; the command's {@code onSuccess}/{@code onFailure} then
+ * runs on the listener executor (see {@link Callbacks}).
+ *
+ * <p>Feed incoming messages to {@link #accept} (a {@link Session} does; or
+ * {@code link.addListener(queue)}): it only compares them with the commands in flight, on the
+ * caller's thread. Also a {@link CommandContext}: {@link #send} packs a message with this queue's
+ * ids and sequence numbers and sends it at once, outside the queue.
  *
  * <p>Built on a {@link LinkScheduler}, the queue's frames go through it at CONTROL priority
  * (ahead of telemetry and file data, signed by its signer); built on a plain {@link Link}, each
  * frame is sent as a packet of its own.
  */
-public final class CommandQueue implements CommandContext, Consumer<MavlinkMessage> {
-    private static final class Job {
+public final class CommandQueue implements CommandContext, Consumer<MavlinkMessage>, AutoCloseable {
+    private final class Job implements CommandContext {
         final Command command;
         final CompletableFuture<MavlinkMessage> future;
         final int priority;
         final long order;
-        boolean armed;
+        int commandId;
+        long issuedUsec;
+        int tries;
+        boolean awaits;
+        boolean sending; // a try is being sent, outside the lock
+        boolean armed; // replies are looked for
+        boolean finished; // taken out of the queue: its end is decided
+        int made;
+        long startedAt; // System.nanoTime() of its first try
+        long due; // System.nanoTime() of the next try or of giving up
         MavlinkMessage reply;
 
         Job(Command command, CompletableFuture<MavlinkMessage> future, long order) {
@@ -47,6 +81,31 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
             this.future = future;
             this.priority = command.priority();
             this.order = order;
+        }
+
+        @Override
+        public int sysId() {
+            return sysId;
+        }
+
+        @Override
+        public int compId() {
+            return compId;
+        }
+
+        @Override
+        public void send(MavlinkMessage msg) throws IOException {
+            CommandQueue.this.send(msg);
+        }
+
+        @Override
+        public int commandId() {
+            return commandId;
+        }
+
+        @Override
+        public long issuedUsec() {
+            return issuedUsec;
         }
     }
 
@@ -64,28 +123,24 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
     private final LinkScheduler scheduler;
     private final int sysId;
     private final int compId;
+    private final Executor listeners;
+    private final ExecutorService ownListeners;
     private final AtomicInteger seq = new AtomicInteger();
     private final ReentrantLock lock = new ReentrantLock();
     private final Condition changed = lock.newCondition();
     private final PriorityQueue<Job> pending = new PriorityQueue<>(16, ORDER);
+    private final List<Job> inFlight = new ArrayList<>();
     private long submitted;
-    private Job current;
+    private int nextId;
+    private long lastIssued;
     private boolean paused;
-    private boolean shutdown;
+    private boolean closed;
     private Thread worker;
+    private volatile long lastHeard = System.nanoTime() - TimeUnit.DAYS.toNanos(1);
 
     /** A queue sending over {@code link} as {@code sysId}/{@code compId}; call {@link #start()}. */
     public CommandQueue(Link link, int sysId, int compId) {
-        if (link == null) {
-            throw new NullPointerException("link");
-        }
-        if ((sysId & ~0xFF) != 0 || (compId & ~0xFF) != 0) {
-            throw new IllegalArgumentException("sysid and compid are 0..255");
-        }
-        this.link = link;
-        this.scheduler = null;
-        this.sysId = sysId;
-        this.compId = compId;
+        this(link, null, sysId, compId, null);
     }
 
     /**
@@ -93,23 +148,46 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
      * {@code compId}; call {@link #start()} (and the scheduler's).
      */
     public CommandQueue(LinkScheduler scheduler, int sysId, int compId) {
-        if (scheduler == null) {
-            throw new NullPointerException("scheduler");
+        this(null, scheduler, sysId, compId, null);
+    }
+
+    /**
+     * As {@link #CommandQueue(LinkScheduler, int, int)}, with the commands' callbacks run on
+     * {@code listeners} (null: a thread of the queue's own).
+     */
+    public CommandQueue(LinkScheduler scheduler, int sysId, int compId, Executor listeners) {
+        this(null, scheduler, sysId, compId, listeners);
+    }
+
+    /**
+     * As {@link #CommandQueue(Link, int, int)}, with the commands' callbacks run on
+     * {@code listeners} (null: a thread of the queue's own).
+     */
+    public CommandQueue(Link link, int sysId, int compId, Executor listeners) {
+        this(link, null, sysId, compId, listeners);
+    }
+
+    private CommandQueue(Link link, LinkScheduler scheduler, int sysId, int compId, Executor listeners) {
+        if (link == null && scheduler == null) {
+            throw new NullPointerException(scheduler == null ? "link" : "scheduler");
         }
         if ((sysId & ~0xFF) != 0 || (compId & ~0xFF) != 0) {
             throw new IllegalArgumentException("sysid and compid are 0..255");
         }
-        this.link = scheduler.link();
+        this.link = scheduler != null ? scheduler.link() : link;
         this.scheduler = scheduler;
         this.sysId = sysId;
         this.compId = compId;
+        this.ownListeners = listeners == null ? Callbacks.newThread("ttctl-command-callbacks") : null;
+        this.listeners = listeners != null ? listeners : ownListeners;
+        this.nextId = new SecureRandom().nextInt(65535) + 1;
     }
 
-    /** Starts the queue thread (once); commands submitted before wait for it. */
+    /** Starts the queue's thread (once); commands submitted before wait for it. */
     public CommandQueue start() {
         lock.lock();
         try {
-            if (worker == null && !shutdown) {
+            if (worker == null && !closed) {
                 Thread t = new Thread(new Runnable() {
                     @Override
                     public void run() {
@@ -157,7 +235,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         lock.lock();
         try {
             job = new Job(command, future, submitted++);
-            refused = shutdown;
+            refused = closed;
             if (!refused) {
                 pending.add(job);
                 changed.signalAll();
@@ -167,10 +245,10 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         }
         if (refused) {
             fail(job, new CommandException(CommandException.Reason.SHUTDOWN, command.describe()
-                    + ": the command queue is shut down", 0, null));
+                    + ": the command queue is closed", 0, null));
         } else {
-            // a cancelled future wakes the queue thread if its command is waiting for a reply
-            future.whenComplete(new java.util.function.BiConsumer<MavlinkMessage, Throwable>() {
+            // a cancelled future wakes the queue's thread: the command stops waiting at once
+            future.whenComplete(new BiConsumer<MavlinkMessage, Throwable>() {
                 @Override
                 public void accept(MavlinkMessage reply, Throwable error) {
                     lock.lock();
@@ -185,40 +263,48 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         return future;
     }
 
-    /** Incoming message: the command in flight gets it if it is what it waits for. */
+    /** Incoming message: a command in flight takes it if it is what it waits for. */
     @Override
     public void accept(MavlinkMessage msg) {
-        Job job;
+        lastHeard = System.nanoTime();
+        List<Job> waiting;
         lock.lock();
         try {
-            job = current;
-            if (job == null || !job.armed || job.reply != null) {
+            if (inFlight.isEmpty()) {
                 return;
             }
-        } finally {
-            lock.unlock();
-        }
-        boolean match;
-        try {
-            match = job.command.accept(msg, this);
-        } catch (RuntimeException e) {
-            match = false;
-        }
-        if (!match) {
-            return;
-        }
-        lock.lock();
-        try {
-            if (current == job && job.armed && job.reply == null) {
-                job.reply = msg;
-                changed.signalAll();
+            waiting = new ArrayList<>(inFlight.size());
+            for (Job j : inFlight) {
+                if (j.armed && j.reply == null && !j.finished) {
+                    waiting.add(j);
+                }
             }
         } finally {
             lock.unlock();
+        }
+        for (Job job : waiting) {
+            boolean match;
+            try {
+                match = job.command.accept(msg, job);
+            } catch (RuntimeException e) {
+                match = false;
+            }
+            if (!match) {
+                continue;
+            }
+            lock.lock();
+            try {
+                if (!job.finished && job.reply == null) {
+                    job.reply = msg;
+                    changed.signalAll();
+                }
+            } finally {
+                lock.unlock();
+            }
         }
     }
 
-    /** Stops starting commands (the one in flight goes on) until {@link #resume()}. */
+    /** Stops starting commands (those in flight go on) until {@link #resume()}. */
     public void pause() {
         lock.lock();
         try {
@@ -238,7 +324,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         }
     }
 
-    /** Commands waiting to run (not counting the one in flight). */
+    /** Commands waiting to start (not counting those in flight). */
     public int pendingCount() {
         lock.lock();
         try {
@@ -248,29 +334,54 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         }
     }
 
-    /**
-     * Stops the queue: pending commands and the one in flight fail with SHUTDOWN, later
-     * submissions too. Returns at once; see {@link #awaitTermination}.
-     */
-    public void shutdown() {
-        List<Job> dropped;
+    /** Commands sent and not finished. */
+    public int inFlightCount() {
         lock.lock();
         try {
-            shutdown = true;
-            dropped = new ArrayList<>(pending);
+            return inFlight.size();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * Closes the queue: pending commands and those in flight fail with SHUTDOWN, later
+     * submissions too; their callbacks still run. Returns at once; see {@link #awaitTermination}.
+     */
+    @Override
+    public void close() {
+        List<Job> dropped = new ArrayList<>();
+        lock.lock();
+        try {
+            closed = true;
+            for (Job j : inFlight) {
+                if (!j.finished) {
+                    j.finished = true;
+                    dropped.add(j);
+                }
+            }
+            inFlight.clear();
+            List<Job> waiting = new ArrayList<>(pending);
+            waiting.sort(ORDER);
             pending.clear();
+            for (Job j : waiting) {
+                j.finished = true;
+                dropped.add(j);
+            }
             changed.signalAll();
         } finally {
             lock.unlock();
         }
-        dropped.sort(ORDER);
         for (Job job : dropped) {
             fail(job, new CommandException(CommandException.Reason.SHUTDOWN, job.command.describe()
-                    + ": the command queue was shut down", 0, null));
+                    + ": the command queue was closed", job.made, null));
+        }
+        if (ownListeners != null) {
+            ownListeners.shutdown(); // the callbacks queued run first
         }
     }
 
-    /** Waits for the queue thread to end after {@link #shutdown}; true if it did. */
+    /** Waits for the queue's thread to end after {@link #close}; true if it did. */
     public boolean awaitTermination(long timeout, TimeUnit unit) throws InterruptedException {
         Thread t;
         lock.lock();
@@ -286,162 +397,292 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         return !t.isAlive();
     }
 
-    public boolean isShutdown() {
+    public boolean isClosed() {
         lock.lock();
         try {
-            return shutdown;
+            return closed;
         } finally {
             lock.unlock();
         }
     }
 
+    /** What the link says is wrong (for failure messages), or null. */
+    private String linkProblem() {
+        try {
+            return scheduler != null ? scheduler.linkProblem() : link.problem();
+        } catch (RuntimeException e) {
+            return null;
+        }
+    }
+
+    // -- the queue's thread -----------------------------------------------------------------
+    private boolean eligible(Job head) {
+        for (Job j : inFlight) {
+            if (j.priority >= head.priority) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private int takeId() {
+        for (int n = 0; n < 65535; n++) {
+            int id = nextId;
+            nextId = nextId % 65535 + 1;
+            boolean used = false;
+            for (Job j : inFlight) {
+                used |= j.commandId == id;
+            }
+            if (!used) {
+                return id;
+            }
+        }
+        return nextId; // 65535 commands in flight: not reached
+    }
+
+    private long takeIssueTime() {
+        long us = System.currentTimeMillis() * 1000L;
+        lastIssued = us > lastIssued ? us : lastIssued + 1;
+        return lastIssued;
+    }
+
     private void loop() {
+        List<Runnable> work = new ArrayList<>();
         while (true) {
-            Job job = null;
-            boolean interrupted = false;
+            work.clear();
             lock.lock();
             try {
-                while (!shutdown && (paused || pending.isEmpty())) {
-                    changed.await();
-                }
-                if (!shutdown) {
-                    job = pending.poll();
-                    current = job;
+                while (true) {
+                    if (closed) {
+                        return;
+                    }
+                    long now = System.nanoTime();
+                    long next = Long.MAX_VALUE;
+                    for (Iterator<Job> it = inFlight.iterator(); it.hasNext();) {
+                        final Job j = it.next();
+                        if (j.sending) {
+                            continue;
+                        }
+                        if (j.reply != null) {
+                            it.remove();
+                            j.finished = true;
+                            final MavlinkMessage reply = j.reply;
+                            work.add(new Runnable() {
+                                @Override
+                                public void run() {
+                                    replied(j, reply);
+                                }
+                            });
+                        } else if (j.future.isDone()) {
+                            it.remove();
+                            j.finished = true;
+                            work.add(failing(j, cancelled(j.command, j.made)));
+                        } else if (now - j.due >= 0) {
+                            if (j.made < j.tries) {
+                                j.sending = true;
+                                final int attempt = j.made;
+                                work.add(new Runnable() {
+                                    @Override
+                                    public void run() {
+                                        sendTry(j, attempt);
+                                    }
+                                });
+                            } else {
+                                it.remove();
+                                j.finished = true;
+                                final int made = j.made;
+                                work.add(new Runnable() {
+                                    @Override
+                                    public void run() {
+                                        String problem = linkProblem();
+                                        boolean silent = lastHeard - j.startedAt < 0;
+                                        fail(j, new CommandException(CommandException.Reason.TIMEOUT, j.command.describe()
+                                                + ": no reply after " + made + " tr" + (made == 1 ? "y" : "ies")
+                                                + (silent ? ", no message received from the link meanwhile" : "")
+                                                + (problem != null ? "; " + problem : ""), made, null));
+                                    }
+                                });
+                            }
+                        } else {
+                            next = Math.min(next, j.due - now);
+                        }
+                    }
+                    while (!paused && !pending.isEmpty() && eligible(pending.peek())) {
+                        final Job j = pending.poll();
+                        j.finished = j.future.isDone();
+                        if (j.finished) {
+                            work.add(failing(j, cancelled(j.command, 0)));
+                            continue;
+                        }
+                        j.commandId = takeId();
+                        j.issuedUsec = takeIssueTime();
+                        j.startedAt = now;
+                        j.sending = true;
+                        inFlight.add(j);
+                        work.add(new Runnable() {
+                            @Override
+                            public void run() {
+                                begin(j);
+                            }
+                        });
+                    }
+                    if (!work.isEmpty()) {
+                        break;
+                    }
+                    if (next == Long.MAX_VALUE) {
+                        changed.await();
+                    } else {
+                        changed.awaitNanos(next);
+                    }
                 }
             } catch (InterruptedException e) {
-                interrupted = true;
-            } finally {
                 lock.unlock();
-            }
-            if (job == null) {
-                if (interrupted) {
-                    shutdown();
-                }
+                close();
                 return;
-            }
-            try {
-                run(job);
-            } catch (InterruptedException e) {
-                fail(job, new CommandException(CommandException.Reason.SHUTDOWN, job.command.describe()
-                        + ": the queue thread was interrupted", 0, e));
-                shutdown();
-                return;
-            } catch (RuntimeException e) {
-                fail(job, new CommandException(CommandException.Reason.SEND_FAILED, job.command.describe() + ": "
-                        + e, 0, e));
-            } catch (Error e) {
-                fail(job, new CommandException(CommandException.Reason.SHUTDOWN, job.command.describe() + ": "
-                        + e, 0, e));
-                shutdown();
-                throw e;
             } finally {
-                lock.lock();
-                try {
-                    current = null;
-                } finally {
+                if (lock.isHeldByCurrentThread()) {
                     lock.unlock();
+                }
+            }
+            for (Runnable r : work) {
+                try {
+                    r.run();
+                } catch (RuntimeException e) {
+                    System.err.println("ttctl CommandQueue: " + e);
                 }
             }
         }
     }
 
-    private void run(Job job) throws InterruptedException {
+    /** The first try of a command just taken in flight (its sending flag set). */
+    private void begin(Job job) {
         Command c = job.command;
-        if (job.future.isDone()) {
-            fail(job, cancelled(c, 0));
-            return;
-        }
-        int tries = c.maxRetries() + 1;
-        int made = 0;
+        boolean awaits;
+        int tries;
         try {
-            c.begin(this);
-        } catch (RuntimeException e) {
-            fail(job, new CommandException(CommandException.Reason.SEND_FAILED, c.describe() + ": " + e, 0, e));
+            c.begin(job);
+            awaits = c.awaitsReply();
+            tries = c.maxRetries() + 1;
+        } catch (RuntimeException | LinkageError | AssertionError e) {
+            abort(job, new CommandException(CommandException.Reason.SEND_FAILED, c.describe() + ": " + e, 0, e));
             return;
         }
-        for (int attempt = 0; attempt < tries; attempt++) {
-            boolean awaits = c.awaitsReply();
-            lock.lock();
-            try {
-                if (shutdown) {
-                    fail(job, shutdownError(c, made));
-                    return;
-                }
-                job.reply = null;
-                job.armed = awaits;
-            } finally {
-                lock.unlock();
-            }
-            made++;
-            try {
-                c.attempt(this, attempt);
-            } catch (Exception | LinkageError | AssertionError e) {
-                fail(job, new CommandException(CommandException.Reason.SEND_FAILED, c.describe() + ": try "
-                        + made + " failed: " + e, made, e));
-                return;
-            }
-            if (!awaits) {
-                succeed(job, null);
-                return;
-            }
-            long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(c.timeoutForAttempt(attempt));
-            MavlinkMessage reply;
-            boolean stop;
-            lock.lock();
-            try {
-                long left = deadline - System.nanoTime();
-                while (job.reply == null && !shutdown && !job.future.isDone() && left > 0) {
-                    left = changed.awaitNanos(left);
-                }
-                reply = job.reply;
-                job.armed = false;
-                stop = shutdown;
-            } finally {
-                lock.unlock();
-            }
-            if (reply != null) {
-                succeed(job, reply);
-                return;
-            }
-            if (job.future.isDone()) {
-                fail(job, cancelled(c, made));
-                return;
-            }
-            if (stop) {
-                fail(job, shutdownError(c, made));
-                return;
-            }
+        lock.lock();
+        try {
+            job.awaits = awaits;
+            job.armed = awaits;
+            job.tries = tries;
+        } finally {
+            lock.unlock();
         }
-        fail(job, new CommandException(CommandException.Reason.TIMEOUT, c.describe() + ": no reply after " + made
-                + " tr" + (made == 1 ? "y" : "ies"), made, null));
+        sendTry(job, 0);
+    }
+
+    /** Try {@code attempt} of a command in flight (its sending flag set). */
+    private void sendTry(Job job, int attempt) {
+        lock.lock();
+        try {
+            if (job.finished) {
+                job.sending = false;
+                return;
+            }
+        } finally {
+            lock.unlock();
+        }
+        Command c = job.command;
+        try {
+            c.attempt(job, attempt);
+        } catch (Exception | LinkageError | AssertionError e) {
+            abort(job, new CommandException(CommandException.Reason.SEND_FAILED, c.describe() + ": try "
+                    + (attempt + 1) + " failed: " + e, attempt + 1, e));
+            return;
+        }
+        boolean done = false;
+        lock.lock();
+        try {
+            job.sending = false;
+            job.made = attempt + 1;
+            if (!job.finished) {
+                if (!job.awaits) {
+                    inFlight.remove(job);
+                    job.finished = true;
+                    done = true;
+                } else {
+                    job.due = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(c.timeoutForAttempt(attempt));
+                }
+            }
+            changed.signalAll();
+        } finally {
+            lock.unlock();
+        }
+        if (done) {
+            succeed(job, null);
+        }
+    }
+
+    /** Takes a command in flight out with {@code error}, unless its end is decided already. */
+    private void abort(Job job, CommandException error) {
+        boolean mine;
+        lock.lock();
+        try {
+            job.sending = false;
+            mine = !job.finished;
+            job.finished = true;
+            inFlight.remove(job);
+            changed.signalAll();
+        } finally {
+            lock.unlock();
+        }
+        if (mine) {
+            fail(job, error);
+        }
+    }
+
+    private void replied(Job job, MavlinkMessage reply) {
+        String why;
+        try {
+            why = job.command.refusal(reply);
+        } catch (RuntimeException e) {
+            why = "its reply could not be read: " + e;
+        }
+        if (why == null) {
+            succeed(job, reply);
+        } else {
+            fail(job, new CommandException(CommandException.Reason.REFUSED, job.command.describe() + ": " + why,
+                    job.made, null, reply));
+        }
+    }
+
+    private Runnable failing(final Job job, final Throwable error) {
+        return new Runnable() {
+            @Override
+            public void run() {
+                fail(job, error);
+            }
+        };
     }
 
     private static CommandException cancelled(Command c, int made) {
         return new CommandException(CommandException.Reason.CANCELLED, c.describe() + ": cancelled", made, null);
     }
 
-    private static CommandException shutdownError(Command c, int made) {
-        return new CommandException(CommandException.Reason.SHUTDOWN, c.describe()
-                + ": the command queue was shut down", made, null);
+    private void succeed(final Job job, final MavlinkMessage reply) {
+        job.future.complete(reply);
+        Callbacks.run(listeners, new Runnable() {
+            @Override
+            public void run() {
+                job.command.onSuccess(reply);
+            }
+        }, "onSuccess of " + job.command.describe());
     }
 
-    private static void succeed(Job job, MavlinkMessage reply) {
-        try {
-            job.command.onSuccess(reply);
-        } catch (RuntimeException | LinkageError | AssertionError e) {
-            System.err.println("ttctl CommandQueue: onSuccess of " + job.command.describe() + " failed: " + e);
-        } finally {
-            job.future.complete(reply);
-        }
-    }
-
-    private static void fail(Job job, Throwable error) {
-        try {
-            job.command.onFailure(error);
-        } catch (RuntimeException | LinkageError | AssertionError e) {
-            System.err.println("ttctl CommandQueue: onFailure of " + job.command.describe() + " failed: " + e);
-        } finally {
-            job.future.completeExceptionally(error);
-        }
+    private void fail(final Job job, final Throwable error) {
+        job.future.completeExceptionally(error);
+        Callbacks.run(listeners, new Runnable() {
+            @Override
+            public void run() {
+                job.command.onFailure(error);
+            }
+        }, "onFailure of " + job.command.describe());
     }
 }

@@ -3,6 +3,8 @@ package ttctl.ttapi.runtime;
 
 import java.util.List;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Executor;
+import java.util.concurrent.ExecutorService;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
@@ -13,9 +15,13 @@ import java.util.function.Consumer;
  * to the error listener (default: printed to System.err) and is counted. Thread-safe: handlers
  * may be added and removed while messages are dispatched.
  *
- * <p>Wire it to a link: {@code link.addListener(dispatcher)}.
+ * <p>Wire it to a link: {@code link.addListener(dispatcher)} (a {@link Session} does). Messages
+ * given to {@link #accept} (the link's listener call) are handed to the dispatcher's executor and
+ * the handlers run there, one message after another in the order they came: a slow handler
+ * delays later handlers, never the link's reader thread, so acks and file statuses are not held
+ * up. {@link #dispatch} calls the handlers at once, on the caller's thread.
  */
-public final class Dispatcher implements Consumer<MavlinkMessage> {
+public final class Dispatcher implements Consumer<MavlinkMessage>, AutoCloseable {
     /** Handles one message type. */
     public interface Handler<M extends MavlinkMessage> {
         void handle(M msg) throws Exception;
@@ -34,6 +40,22 @@ public final class Dispatcher implements Consumer<MavlinkMessage> {
     private final ConcurrentHashMap<Integer, List<Handler<MavlinkMessage>>> byId = new ConcurrentHashMap<>();
     private final List<Handler<MavlinkMessage>> any = new CopyOnWriteArrayList<>();
     private final AtomicLong errors = new AtomicLong();
+    private final Executor executor;
+    private final ExecutorService own;
+
+    /** A dispatcher whose handlers run on a thread of its own (started on demand). */
+    public Dispatcher() {
+        this(null);
+    }
+
+    /**
+     * A dispatcher whose handlers run on {@code handlers} (one message at a time, in order, even
+     * on a pool); null: a thread of its own.
+     */
+    public Dispatcher(Executor handlers) {
+        this.own = handlers == null ? Callbacks.newThread("ttctl-dispatcher") : null;
+        this.executor = handlers == null ? own : Callbacks.serial(handlers);
+    }
     private volatile ErrorListener errorListener = new ErrorListener() {
         @Override
         public void onError(MavlinkMessage msg, Throwable error) {
@@ -120,9 +142,26 @@ public final class Dispatcher implements Consumer<MavlinkMessage> {
         return called;
     }
 
+    /** Hands {@code msg} to the executor, where its handlers run (see the class comment). */
     @Override
-    public void accept(MavlinkMessage msg) {
-        dispatch(msg);
+    public void accept(final MavlinkMessage msg) {
+        if (msg == null) {
+            return;
+        }
+        Callbacks.run(executor, new Runnable() {
+            @Override
+            public void run() {
+                dispatch(msg);
+            }
+        }, "dispatching " + msg.name());
+    }
+
+    /** Stops the dispatcher's own thread after the messages handed to it (not a given executor). */
+    @Override
+    public void close() {
+        if (own != null) {
+            own.shutdown();
+        }
     }
 
     private void call(Handler<MavlinkMessage> h, MavlinkMessage msg) {

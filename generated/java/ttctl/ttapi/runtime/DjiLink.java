@@ -2,8 +2,12 @@
 package ttctl.ttapi.runtime;
 
 import java.io.IOException;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.Executor;
+import java.util.concurrent.ExecutorService;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.ThreadFactory;
@@ -21,6 +25,16 @@ import java.util.function.Consumer;
  * it asks {@link #awaitReady} before building each packet, so a command waits at most for the
  * packet on the air.
  *
+ * <p>Refusals: a completion with an error (the SDK's {@code DJIError}, e.g. "The product is not
+ * connected") means the packet did not go. The link keeps the SDK's words: after
+ * {@value #REFUSING_AFTER} in a row it reports them ({@link #isRefusing()}, {@link #problem()},
+ * the {@link StateListener}), and every command or transfer that fails meanwhile says them in
+ * its reason. It backs off while the SDK refuses: the next packet waits
+ * {@value #BACKOFF_FIRST_MILLIS} ms after the first refusal, twice as long after each further
+ * one, at most {@value #BACKOFF_MAX_MILLIS} ms (so at most one packet a second is offered to an
+ * SDK that refuses everything), and goes at once again when a completion succeeds, or when
+ * packets arrive from the drone (then the product is connected: the next packet tries at once).
+ *
  * <p>Stalls: a completion that does not come within the completion timeout (default
  * {@value #DEFAULT_COMPLETION_TIMEOUT_MILLIS} ms) is counted ({@link #timeouts()}) and the
  * link carries on with the next packet (the SDK may have lost the callback, not the packet).
@@ -31,8 +45,12 @@ import java.util.function.Consumer;
  *
  * <p>Receiving: feed what DJI's {@code setOnboardSDKDeviceDataCallback} delivers to
  * {@link #onDataFromOnboard}. It returns at once (the bytes are copied and parsed on the link's
- * own thread, by a {@link PacketReceiver}); messages go to the listeners on that thread. No
- * exception ever reaches the SDK's threads.
+ * own thread, by a {@link PacketReceiver}); messages go to the listeners on that thread, so
+ * listeners must be quick: the runtime's own ({@link CommandQueue}, the file transfers) are, and
+ * a {@link Dispatcher} hands the app's handlers to its executor. With a {@link Signing}, frames
+ * that arrive unsigned or whose signatures do not verify are named once ("ignoring the onboard
+ * end: frames whose signatures do not verify (the same --key at both ends?)") in
+ * {@link #problem()} and to the state listener. No exception ever reaches the SDK's threads.
  */
 public final class DjiLink implements Link {
     public static final long DEFAULT_COMPLETION_TIMEOUT_MILLIS = 2000;
@@ -42,6 +60,14 @@ public final class DjiLink implements Link {
     public static final long IDLE_FLUSH_MILLIS = 200;
     /** Packets received but not yet parsed, at most; more are dropped (and counted). */
     public static final int RECEIVE_BACKLOG = 4096;
+    /** Refusals (completions with an error) in a row after which the link reports them. */
+    public static final int REFUSING_AFTER = 2;
+    /** After the first refusal, the next packet waits this long; the wait doubles per refusal. */
+    public static final long BACKOFF_FIRST_MILLIS = 25;
+    /** The longest wait between packets while the SDK refuses them. */
+    public static final long BACKOFF_MAX_MILLIS = 1000;
+    /** What the onboard end is called in the link's messages. */
+    static final String PEER = "the onboard end";
 
     /** DJI's {@code CommonCallbacks.CompletionCallback}, reduced: null for success, else the error. */
     public interface Completion {
@@ -57,7 +83,12 @@ public final class DjiLink implements Link {
         void send(byte[] packet, Completion done) throws Exception;
     }
 
-    /** Told when the link stalls and when it recovers (on the link's own thread). */
+    /**
+     * Told when the link gets a problem and when it is over (on the listener executor, see
+     * {@link #setListenerExecutor}): {@code stalled} true with the problem in words (the SDK
+     * stopped confirming packets, the SDK refuses them with its own words, frames do not
+     * verify), false with what recovered.
+     */
     public interface StateListener {
         void onLinkState(boolean stalled, String why);
     }
@@ -71,6 +102,8 @@ public final class DjiLink implements Link {
     private final ScheduledThreadPoolExecutor exec;
     private final AtomicInteger backlog = new AtomicInteger();
     private volatile StateListener stateListener;
+    private volatile Executor listenerExecutor;
+    private final ExecutorService ownListeners = Callbacks.newThread("ttctl-dji-link-state");
     private long completionTimeoutNanos = TimeUnit.MILLISECONDS.toNanos(DEFAULT_COMPLETION_TIMEOUT_MILLIS);
     private double rateCap; // bytes per second, 0: none
     private long nextAllowed = System.nanoTime();
@@ -79,6 +112,15 @@ public final class DjiLink implements Link {
     private long lastConfirmed = System.nanoTime();
     private int consecutiveTimeouts;
     private boolean stalled;
+    private int consecutiveErrors;
+    private volatile boolean refusalsSeen; // consecutiveErrors > 0, read without the lock
+    private boolean refusing;
+    private long firstErrorAt;
+    private long backoffUntil;
+    private volatile String keyProblem;
+    private long seenUnsigned;
+    private long seenBadSignatures;
+    private long seenFrames;
     private volatile boolean closed;
     private long sent;
     private long completed;
@@ -150,8 +192,18 @@ public final class DjiLink implements Link {
         return this;
     }
 
+    /** Who is told when the link gets a problem and when it is over (see {@link StateListener}). */
     public DjiLink setStateListener(StateListener listener) {
         this.stateListener = listener;
+        return this;
+    }
+
+    /**
+     * Where the state listener runs (null: a thread of the link's own, the default); never the
+     * link's reader thread or the SDK's.
+     */
+    public DjiLink setListenerExecutor(Executor executor) {
+        this.listenerExecutor = executor == null ? null : Callbacks.serial(executor);
         return this;
     }
 
@@ -192,6 +244,15 @@ public final class DjiLink implements Link {
         try {
             if (data == null || data.length == 0 || closed) {
                 return;
+            }
+            if (refusalsSeen) {
+                lock.lock();
+                try {
+                    backoffUntil = System.nanoTime(); // the drone is heard: the product is connected, try now
+                    ready.signalAll();
+                } finally {
+                    lock.unlock();
+                }
             }
             if (backlog.incrementAndGet() > RECEIVE_BACKLOG) {
                 backlog.decrementAndGet();
@@ -242,6 +303,7 @@ public final class DjiLink implements Link {
         } catch (RuntimeException e) {
             listenerErrors++;
         }
+        watchSignatures();
         try {
             exec.schedule(new Runnable() {
                 @Override
@@ -252,11 +314,37 @@ public final class DjiLink implements Link {
                         } catch (RuntimeException e) {
                             listenerErrors++;
                         }
+                        watchSignatures();
                     }
                 }
             }, IDLE_FLUSH_MILLIS, TimeUnit.MILLISECONDS);
         } catch (RejectedExecutionException e) {
             // closed
+        }
+    }
+
+    /** On the link's thread, after each packet: frames refused for their signature are named once. */
+    private void watchSignatures() {
+        PacketReceiver.Stats st = receiver.stats();
+        long u = st.unsignedRefused();
+        long b = st.badSignatures();
+        long f = st.frames();
+        String kp = PacketReceiver.keyProblem(PEER, u - seenUnsigned, b - seenBadSignatures);
+        String told = null;
+        boolean bad = false;
+        if (kp != null && keyProblem == null) {
+            keyProblem = kp;
+            told = kp;
+            bad = true;
+        } else if (kp == null && keyProblem != null && f > seenFrames) {
+            keyProblem = null;
+            told = "frames from " + PEER + " verify again";
+        }
+        seenUnsigned = u;
+        seenBadSignatures = b;
+        seenFrames = f;
+        if (told != null) {
+            notifyState(bad, told);
         }
     }
 
@@ -295,32 +383,61 @@ public final class DjiLink implements Link {
     }
 
     private void complete(Object token, String error) {
-        String recovered = null;
+        List<String> recovered = new ArrayList<>(2);
+        String refused = null;
         lock.lock();
         try {
+            long now = System.nanoTime();
             if (token == inFlight) {
                 inFlight = null;
                 completed++;
             } else {
                 lateCompletions++; // after its timeout, or a second call
             }
-            if (error != null) {
-                failed++;
-                lastSendError = error;
-            }
-            lastConfirmed = System.nanoTime();
+            lastConfirmed = now;
             consecutiveTimeouts = 0;
             if (stalled) {
                 stalled = false;
-                recovered = "the DJI SDK confirms packets again";
+                recovered.add("the DJI SDK confirms packets again");
+            }
+            if (error != null) {
+                failed++;
+                lastSendError = error;
+                if (consecutiveErrors++ == 0) {
+                    firstErrorAt = now;
+                }
+                refusalsSeen = true;
+                long wait = Math.min(BACKOFF_MAX_MILLIS, BACKOFF_FIRST_MILLIS << Math.min(consecutiveErrors - 1, 20));
+                backoffUntil = now + TimeUnit.MILLISECONDS.toNanos(wait);
+                if (!refusing && consecutiveErrors >= REFUSING_AFTER) {
+                    refusing = true;
+                    refused = refusalLocked(now);
+                }
+            } else {
+                consecutiveErrors = 0;
+                refusalsSeen = false;
+                backoffUntil = now;
+                if (refusing) {
+                    refusing = false;
+                    recovered.add("the DJI SDK takes packets again");
+                }
             }
             ready.signalAll();
         } finally {
             lock.unlock();
         }
-        if (recovered != null) {
-            notifyState(false, recovered);
+        if (refused != null) {
+            notifyState(true, refused);
         }
+        for (String r : recovered) {
+            notifyState(false, r);
+        }
+    }
+
+    private String refusalLocked(long now) {
+        return String.format(Locale.ROOT, "the DJI SDK refuses packets: %s (%d in a row over %.1f s; one is offered "
+                + "every %.1f s until it takes one)", lastSendError, consecutiveErrors, (now - firstErrorAt) / 1e9,
+                Math.min(BACKOFF_MAX_MILLIS, BACKOFF_FIRST_MILLIS << Math.min(consecutiveErrors - 1, 20)) / 1000.0);
     }
 
     @Override
@@ -353,6 +470,8 @@ public final class DjiLink implements Link {
                 long wait;
                 if (inFlight != null) {
                     wait = sentAt + completionTimeoutNanos - now;
+                } else if (consecutiveErrors > 0 && backoffUntil - now > 0) {
+                    wait = backoffUntil - now; // the SDK refuses packets: offer the next one later
                 } else if (rateCap > 0 && nextAllowed > now) {
                     wait = nextAllowed - now;
                 } else {
@@ -380,20 +499,13 @@ public final class DjiLink implements Link {
         if (l == null) {
             return;
         }
-        try {
-            exec.execute(new Runnable() {
-                @Override
-                public void run() {
-                    try {
-                        l.onLinkState(isStalled, why);
-                    } catch (RuntimeException e) {
-                        System.err.println("ttctl DjiLink: state listener failed: " + e);
-                    }
-                }
-            });
-        } catch (RejectedExecutionException e) {
-            // closed
-        }
+        Executor e = listenerExecutor;
+        Callbacks.run(e != null ? e : ownListeners, new Runnable() {
+            @Override
+            public void run() {
+                l.onLinkState(isStalled, why);
+            }
+        }, "the DjiLink state listener");
     }
 
     private String problemLocked(long now) {
@@ -402,11 +514,44 @@ public final class DjiLink implements Link {
                 (now - lastConfirmed) / 1e9, timeouts);
     }
 
-    /** Why the link is stalled, or null while the SDK confirms packets. */
+    /**
+     * What is wrong, in words, or null: the SDK refuses packets (its own words), has stopped
+     * confirming them, or frames from the drone do not verify.
+     */
+    @Override
     public String problem() {
+        List<String> parts = new ArrayList<>(3);
         lock.lock();
         try {
-            return stalled ? problemLocked(System.nanoTime()) : null;
+            long now = System.nanoTime();
+            if (refusing) {
+                parts.add(refusalLocked(now));
+            }
+            if (stalled) {
+                parts.add(problemLocked(now));
+            }
+        } finally {
+            lock.unlock();
+        }
+        String kp = keyProblem;
+        if (kp != null) {
+            parts.add(kp);
+        }
+        if (parts.isEmpty()) {
+            return null;
+        }
+        StringBuilder b = new StringBuilder();
+        for (String p : parts) {
+            b.append(b.length() > 0 ? "; " : "").append(p);
+        }
+        return b.toString();
+    }
+
+    /** Whether the SDK refuses packets (completions with an error, {@value #REFUSING_AFTER} or more in a row). */
+    public boolean isRefusing() {
+        lock.lock();
+        try {
+            return refusing;
         } finally {
             lock.unlock();
         }
@@ -500,5 +645,6 @@ public final class DjiLink implements Link {
             lock.unlock();
         }
         exec.shutdownNow();
+        ownListeners.shutdown();
     }
 }

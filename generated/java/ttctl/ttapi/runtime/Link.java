@@ -26,4 +26,14 @@ public interface Link extends Closeable {
     default boolean awaitReady(long timeoutNanos) throws InterruptedException {
         return true;
     }
+
+    /**
+     * What is wrong with the link right now, in words for people, or null: {@link DjiLink} says
+     * when the SDK refuses packets (with the SDK's own words) or stops confirming them, and
+     * both {@link DjiLink} and {@link UdpLink} when frames arrive unsigned or with signatures
+     * that do not verify. Commands and transfers that fail add it to their reason.
+     */
+    default String problem() {
+        return null;
+    }
 }

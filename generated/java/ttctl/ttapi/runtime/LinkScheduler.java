@@ -31,7 +31,7 @@ import java.util.function.UnaryOperator;
  * check would then refuse). All methods are thread-safe; one worker thread (daemon)
  * sends. An exception from the link is counted ({@link #sendErrors()}) and never escapes.
  */
-public final class LinkScheduler {
+public final class LinkScheduler implements AutoCloseable {
     /** Priority of commands, acks and file-transfer control: never dropped. */
     public static final int CONTROL = 0;
     /** Priority of telemetry: the oldest is dropped when {@link #TELEMETRY_LIMIT} wait. */
@@ -83,6 +83,7 @@ public final class LinkScheduler {
     private long sendErrors;
     private long droppedTelemetry;
     private volatile String lastError;
+    private volatile long lastErrorAt;
 
     /**
      * A scheduler in front of {@code link}, packets of at most {@code mtu} bytes (DJI: 100),
@@ -294,15 +295,21 @@ public final class LinkScheduler {
         }
     }
 
-    /** What is wrong with the link, if it says ({@link DjiLink#problem()}), else null. */
+    /**
+     * What is wrong with the link if it says ({@link Link#problem()}), else the last send error
+     * if the link refused a packet within the last few seconds, else null.
+     */
     public String linkProblem() {
-        if (link instanceof DjiLink) {
-            return ((DjiLink) link).problem();
+        String p = link.problem();
+        if (p != null) {
+            return p;
         }
-        return lastError;
+        String e = lastError;
+        return e != null && System.nanoTime() - lastErrorAt < TimeUnit.SECONDS.toNanos(10) ? "sending failed: " + e : null;
     }
 
     /** Stops the worker (what is queued is dropped); does not close the link. */
+    @Override
     public void close() {
         Thread t;
         lock.lock();
@@ -385,6 +392,7 @@ public final class LinkScheduler {
                 try {
                     link.send(packet);
                 } catch (IOException | RuntimeException e) {
+                    lastErrorAt = System.nanoTime();
                     lastError = e.toString();
                     lock.lock();
                     try {

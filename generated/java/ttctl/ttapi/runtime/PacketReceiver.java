@@ -35,6 +35,9 @@ public final class PacketReceiver {
         volatile long badFrames;
         volatile long carriesDropped;
         volatile long rescans;
+        volatile long unsignedRefused;
+        volatile long badSignatures;
+        volatile long replayed;
 
         /** Packets fed (empty ones included). */
         public long packets() {
@@ -61,10 +64,26 @@ public final class PacketReceiver {
             return rescans;
         }
 
+        /** Of the bad frames: unsigned ones refused (the {@link Signing} takes only signed ones). */
+        public long unsignedRefused() {
+            return unsignedRefused;
+        }
+
+        /** Of the bad frames: signed ones whose signature does not verify (another key, a changed byte). */
+        public long badSignatures() {
+            return badSignatures;
+        }
+
+        /** Of the bad frames: validly signed ones whose timestamp was not new (a duplicated packet, a replay). */
+        public long replayed() {
+            return replayed;
+        }
+
         @Override
         public String toString() {
             return "Stats(packets=" + packets + ", frames=" + frames + ", badFrames=" + badFrames
-                    + ", carriesDropped=" + carriesDropped + ", rescans=" + rescans + ")";
+                    + ", carriesDropped=" + carriesDropped + ", rescans=" + rescans + ", unsignedRefused="
+                    + unsignedRefused + ", badSignatures=" + badSignatures + ", replayed=" + replayed + ")";
         }
     }
 
@@ -102,6 +121,21 @@ public final class PacketReceiver {
     /** The signing that verifies incoming frames, or null. */
     public Signing signing() {
         return signing;
+    }
+
+    /**
+     * The words ttctl's ends use when frames from {@code source} are refused for their signature
+     * (told once per peer), or null if none were: "ignoring SOURCE: unsigned frames (the same
+     * --key at both ends?)", or "...: frames whose signatures do not verify (...)". Counts are
+     * {@link Stats#unsignedRefused()} and {@link Stats#badSignatures()} since the caller last looked;
+     * replays (duplicated packets) are not a key problem and are not named.
+     */
+    public static String keyProblem(String source, long unsignedFrames, long badSignatures) {
+        if (unsignedFrames <= 0 && badSignatures <= 0) {
+            return null;
+        }
+        return "ignoring " + source + ": " + (unsignedFrames > 0 ? "unsigned frames" : "frames whose signatures do not verify")
+                + " (the same --key at both ends?)";
     }
 
     /** Bytes of a frame spanning packets still waiting for its continuation. */
@@ -284,8 +318,20 @@ public final class PacketReceiver {
     private MavlinkMessage decode(byte[] buf, int off, int len, boolean commit) {
         try {
             Frame f = Frame.parse(buf, off, len, dialect);
-            if (signing != null && signing.check(buf, off, len, commit) != Signing.Result.OK) {
-                return null;
+            if (signing != null) {
+                Signing.Result r = signing.check(buf, off, len, commit);
+                if (r != Signing.Result.OK) {
+                    if (commit) {
+                        if (r == Signing.Result.UNSIGNED_REFUSED) {
+                            stats.unsignedRefused++;
+                        } else if (r == Signing.Result.REPLAYED) {
+                            stats.replayed++;
+                        } else {
+                            stats.badSignatures++;
+                        }
+                    }
+                    return null;
+                }
             }
             return f.toMessage(dialect);
         } catch (DecodeException | RuntimeException e) {

@@ -5,6 +5,14 @@ package ttctl.ttapi.runtime;
  * Sends a message, packed anew on every try ({@link #createMessage} is called each time, so the
  * command keeps the values, not the frame), and optionally waits for a reply
  * ({@link #expectedReply}). Without an expected reply the command succeeds once sent.
+ *
+ * <p>A TT_ACTION_COMMAND whose command_id or time_usec is 0 when it is sent gets the queue's
+ * id and issue time for this submission ({@link CommandContext#commandId()},
+ * {@link CommandContext#issuedUsec()}), the same on every retry: the onboard end executes each
+ * (peer, id, time) once, and no command of an earlier run of the app has that pair.
+ *
+ * <p>A TT_COMMAND_ACK reply that is not ACCEPTED, IN_PROGRESS or DONE fails the command with
+ * {@link CommandException.Reason#REFUSED} (see {@link #refusal}).
  */
 public abstract class SendCommand extends Command {
     /** A command that retries 3 times, waiting 500 ms, then 1, 2 and 4 s for its reply. */
@@ -28,7 +36,17 @@ public abstract class SendCommand extends Command {
 
     @Override
     protected void attempt(CommandContext ctx, int attempt) throws Exception {
-        ctx.send(createMessage(ctx, attempt));
+        MavlinkMessage msg = createMessage(ctx, attempt);
+        if (msg instanceof ttctl.ttapi.msg.TtActionCommand) {
+            ttctl.ttapi.msg.TtActionCommand c = (ttctl.ttapi.msg.TtActionCommand) msg;
+            if (c.command_id == 0) {
+                c.command_id = ctx.commandId();
+            }
+            if (c.time_usec == 0) {
+                c.time_usec = ctx.issuedUsec();
+            }
+        }
+        ctx.send(msg);
     }
 
     @Override
@@ -45,5 +63,15 @@ public abstract class SendCommand extends Command {
     protected boolean accept(MavlinkMessage msg, CommandContext ctx) {
         MessageMatcher m = matcher;
         return m != null && m.matches(msg);
+    }
+
+    /** A TT_COMMAND_ACK that is not ACCEPTED, IN_PROGRESS or DONE: "refused: DENIED" and so on. */
+    @Override
+    protected String refusal(MavlinkMessage reply) {
+        if (reply instanceof ttctl.ttapi.msg.TtCommandAck) {
+            ttctl.ttapi.msg.TtCommandAck ack = (ttctl.ttapi.msg.TtCommandAck) reply;
+            return ack.ok() ? null : "refused: " + ack.resultName();
+        }
+        return null;
     }
 }

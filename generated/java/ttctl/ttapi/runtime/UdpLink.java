@@ -23,7 +23,12 @@ import java.util.function.Consumer;
  * {@link Signing}, incoming frames are verified (refused ones are counted in
  * {@link PacketReceiver.Stats#badFrames()} and dropped); {@link #send} sends bytes as given, so
  * sign outgoing frames with {@link Signing#sign}. Frames are sent to the given remote address,
- * or, without one, to the sender of the last datagram received.
+ * or, without one, to the sender of the last datagram that held a valid frame (verified, with a
+ * Signing): garbage, or frames that do not verify, never move it. Frames that arrive unsigned or
+ * whose signatures do not verify are named in {@link #problem()} ("ignoring 127.0.0.1:14560:
+ * frames whose signatures do not verify (the same --key at both ends?)") until frames verify
+ * again. Listeners run on the reader thread: keep them quick (a {@link Dispatcher} hands the
+ * app's handlers to its own executor).
  */
 public final class UdpLink implements Link {
     /** How long the link waits for more bytes before giving up on an incomplete frame. */
@@ -35,6 +40,10 @@ public final class UdpLink implements Link {
     private volatile SocketAddress remote;
     private volatile boolean closed;
     private volatile boolean learnsRemote;
+    private volatile String keyProblem;
+    private long seenUnsigned;
+    private long seenBadSignatures;
+    private long seenFrames;
     private Thread reader;
 
     /** A link on an existing socket; remote may be null (answer whoever sent last). */
@@ -131,6 +140,33 @@ public final class UdpLink implements Link {
         socket.send(new DatagramPacket(packet, packet.length, to));
     }
 
+    /** Frames refused for their signature, in words (see the class comment), or null. */
+    @Override
+    public String problem() {
+        return keyProblem;
+    }
+
+    private void watchSignatures(SocketAddress from) {
+        PacketReceiver.Stats st = receiver.stats();
+        long u = st.unsignedRefused();
+        long b = st.badSignatures();
+        long f = st.frames();
+        String who = from instanceof InetSocketAddress
+                ? ((InetSocketAddress) from).getAddress().getHostAddress() + ":" + ((InetSocketAddress) from).getPort()
+                : String.valueOf(from);
+        String kp = PacketReceiver.keyProblem(who, u - seenUnsigned, b - seenBadSignatures);
+        if (kp != null) {
+            if (keyProblem == null) {
+                keyProblem = kp;
+            }
+        } else if (f > seenFrames) {
+            keyProblem = null;
+        }
+        seenUnsigned = u;
+        seenBadSignatures = b;
+        seenFrames = f;
+    }
+
     @Override
     public void close() {
         closed = true;
@@ -183,16 +219,18 @@ public final class UdpLink implements Link {
                 }
                 continue; // e.g. ICMP port unreachable reported on the socket: keep reading
             }
-            if (learnsRemote) {
-                remote = packet.getSocketAddress();
-            }
+            long before = receiver.stats().frames();
             receiver.feed(buf, packet.getOffset(), packet.getLength(), deliver);
+            if (learnsRemote && receiver.stats().frames() > before) {
+                remote = packet.getSocketAddress(); // a valid (and verified) frame: garbage never moves it
+            }
+            watchSignatures(packet.getSocketAddress());
         }
     }
 
     /**
-     * Whether to send to the sender of the last datagram received (the default when no remote
-     * address was given).
+     * Whether to send to the sender of the last datagram that held a valid frame (the default
+     * when no remote address was given).
      */
     public UdpLink setLearnsRemote(boolean learn) {
         this.learnsRemote = learn;

@@ -142,8 +142,10 @@ final class FileSender {
             return;
         }
         state = ok ? "complete" : "failed";
+        long resumed = ok ? Math.min(resumedBytes, size) : resumedBytes;
+        long moved = Math.max(0, (ok ? size : acked.total()) - resumed);
         result = new TransferResult(ok, code, message, name, size, now - started, bytesSent, bytesRetransmitted,
-                ok ? Math.min(resumedBytes, size) : resumedBytes, nothingSent);
+                resumed, moved, nothingSent, null);
         try {
             raf.close();
         } catch (IOException e) {

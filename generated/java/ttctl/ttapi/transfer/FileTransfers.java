@@ -7,13 +7,11 @@ import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.Iterator;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.Executor;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.LinkedBlockingQueue;
-import java.util.concurrent.ThreadFactory;
-import java.util.concurrent.ThreadPoolExecutor;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Consumer;
@@ -24,33 +22,68 @@ import ttctl.ttapi.msg.TtFileData;
 import ttctl.ttapi.msg.TtFileDataWide;
 import ttctl.ttapi.msg.TtFileOffer;
 import ttctl.ttapi.msg.TtFileReason;
+import ttctl.ttapi.msg.TtFileRequest;
 import ttctl.ttapi.msg.TtFileStatus;
+import ttctl.ttapi.runtime.Callbacks;
 import ttctl.ttapi.runtime.LinkScheduler;
 import ttctl.ttapi.runtime.MavlinkMessage;
 
 /**
  * Reliable file transfer over the DTT link, both ways, several at once: the protocol of ttctl
  * (dialects/ttapi.xml, cli/ttctl/proto), byte-compatible with {@code ttctl recv-file},
- * {@code ttctl send-file} and the onboard end.
+ * {@code ttctl send-file} and the onboard end, in all four roles:
+ *
+ * <ul>
+ * <li>{@link #send}: upload a file (as {@code ttctl send-file --to});
+ * <li>{@link #fetch}: download a file the peer serves (as {@code ttctl send-file --from});
+ * <li>{@link #acceptInto}: take files the peer pushes into an inbox folder (as
+ * {@code ttctl recv-file --dir}: the same name rules, jail, quotas, partial files and records,
+ * resume, SHA-256 check and rename, the same answers);
+ * <li>{@link #serve}: let the peer fetch files from a folder (as {@code recv-file --serve}).
+ * </ul>
  *
  * <pre>
- * LinkScheduler sched = new LinkScheduler(link, 0).start();
- * FileTransfers files = new FileTransfers(sched, 255, 190).start();
- * link.addListener(files);                     // incoming messages
+ * FileTransfers files = session.files();         // or new FileTransfers(sched, 255, 190).start()
  * Transfer up = files.send(new File(path), "plan.json", 1, 240, false, listener);
  * Transfer down = files.fetch("log.bin", new File(dir), 1, 240, listener);
- * TransferResult r = up.future().get();         // ok, code, message
+ * files.acceptInto(new File(getFilesDir(), "inbox")).serve(new File(getFilesDir(), "outbox"));
+ * files.setIncomingListener(t -&gt; listener);      // files pushed here, and fetched from here
+ * TransferResult r = up.future().get();          // ok, code, message, bytesMoved, goodput()
  * </pre>
  *
  * <p>File data is pulled by the scheduler (bulk priority, round-robin between transfers);
  * offers, statuses and requests go at control priority. A transfer that hears nothing useful for
- * {@link TransferConfig#giveUpAfter} seconds fails with TIMEOUT and says why (and, on a
- * {@code DjiLink}, whether the SDK has stalled). One thread (daemon) keeps time; listeners run
- * on another, so they may block briefly but never hold up the link. Thread-safe.
+ * {@link TransferConfig#giveUpAfter} seconds fails with TIMEOUT and says why, with what the link
+ * knows ({@link ttctl.ttapi.runtime.Link#problem()}: an SDK that refuses packets, frames that do
+ * not verify). One thread (daemon) keeps time; listeners run on the listener executor (given,
+ * or a thread of its own), never on the link's or the SDK's threads. Thread-safe.
  */
-public final class FileTransfers implements Consumer<MavlinkMessage> {
+public final class FileTransfers implements Consumer<MavlinkMessage>, AutoCloseable {
     /** How long a finished transfer still answers late frames of its peer. */
     static final double LINGER = 30.0;
+    /** Requests whose name is still arriving, at most (a flood of them is dropped, oldest first). */
+    static final int MAX_SERVED_REQUESTS = 64;
+    /** Files sent to fetching peers at once, at most; more requests are refused as busy. */
+    static final int MAX_SERVING = 8;
+    static final long DEFAULT_MAX_FILE_BYTES = 1L << 30;
+    static final long DEFAULT_MAX_DIR_BYTES = 8L << 30;
+    private static final int STATUS_BYTES = 60;
+
+    /** Told about transfers the peer starts: a file pushed into the inbox, or fetched from the served folder. */
+    public interface IncomingListener {
+        /**
+         * A transfer the peer started: accepted into the inbox (or found there already, or
+         * refused: then it has ended), or a file the peer fetches. Return the listener of its
+         * progress and end, or null. Runs on the listener executor.
+         */
+        Transfer.Listener onIncoming(Transfer transfer);
+    }
+
+    private static final class ServedRequest {
+        byte[] name = new byte[0];
+        final RangeSet have = new RangeSet();
+        int length;
+    }
 
     private final LinkScheduler scheduler;
     private final int sysId;
@@ -61,20 +94,36 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
     private final Map<Transfer, FileSender> senders = new HashMap<>();
     private final Map<Transfer, LinkScheduler.BulkSource> pulls = new HashMap<>();
     private final Map<Transfer, FileFetch> fetches = new HashMap<>();
+    private final Map<Transfer, FileReceiver.Incoming> incoming = new LinkedHashMap<>();
+    private final Map<FileReceiver.Key, ServedRequest> served = new LinkedHashMap<>();
+    private final List<Transfer> announce = new ArrayList<>();
+    private final FileReceiver receiver;
     private final SecureRandom random = new SecureRandom();
     private final long t0 = System.nanoTime();
-    private final ExecutorService callbacks;
+    private final Executor listeners;
+    private final ExecutorService ownListeners;
+    private volatile IncomingListener incomingListener;
+    private File serveDir;
     private int seq;
     private boolean closed;
     private Thread timer;
     private long ignored;
+    private long servedRefused;
 
     public FileTransfers(LinkScheduler scheduler, int sysId, int compId) {
-        this(scheduler, sysId, compId, new TransferConfig());
+        this(scheduler, sysId, compId, new TransferConfig(), null);
     }
 
     /** Transfers as {@code sysId}/{@code compId} through {@code scheduler}; call {@link #start()}. */
     public FileTransfers(LinkScheduler scheduler, int sysId, int compId, TransferConfig config) {
+        this(scheduler, sysId, compId, config, null);
+    }
+
+    /**
+     * As {@link #FileTransfers(LinkScheduler, int, int, TransferConfig)}, with the listeners run on
+     * {@code listeners} (in order; null: a thread of its own).
+     */
+    public FileTransfers(LinkScheduler scheduler, int sysId, int compId, TransferConfig config, Executor listeners) {
         if (scheduler == null) {
             throw new NullPointerException("scheduler");
         }
@@ -84,16 +133,15 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
         this.scheduler = scheduler;
         this.sysId = sysId;
         this.compId = compId;
-        this.cfg = config.copy();
-        this.callbacks = new ThreadPoolExecutor(1, 1, 0, TimeUnit.MILLISECONDS, new LinkedBlockingQueue<Runnable>(),
-                new ThreadFactory() {
-                    @Override
-                    public Thread newThread(Runnable r) {
-                        Thread t = new Thread(r, "ttctl-transfer-callbacks");
-                        t.setDaemon(true);
-                        return t;
-                    }
-                });
+        this.cfg = (config != null ? config : new TransferConfig()).copy();
+        this.ownListeners = listeners == null ? Callbacks.newThread("ttctl-transfer-callbacks") : null;
+        this.listeners = listeners == null ? ownListeners : Callbacks.serial(listeners);
+        this.receiver = new FileReceiver(receiverConfig(scheduler.rate()), 8, new FileReceiver.Events() {
+            @Override
+            public void event(String what, FileReceiver.Incoming t) {
+                onReceiverEvent(what, t);
+            }
+        });
     }
 
     /** Starts the timer thread (once). */
@@ -158,6 +206,12 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
             throw new IllegalArgumentException("the rate is 0 (the scheduler's) or positive");
         }
         linkRate = bytesPerSecond;
+        lock.lock();
+        try {
+            receiver.cfg = receiverConfig(rate());
+        } finally {
+            lock.unlock();
+        }
         return this;
     }
 
@@ -166,9 +220,72 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
         return r > 0 ? r : scheduler.rate();
     }
 
+    /** Statuses go back over our own link: on a slow one, fewer of them (as ttctl's endpoint). */
+    private TransferConfig receiverConfig(double r) {
+        TransferConfig c = cfg.copy();
+        if (r > 0) {
+            c.statusMinInterval = Math.max(c.statusMinInterval, 3.0 * STATUS_BYTES / r);
+            c.statusTailInterval = Math.max(c.statusTailInterval, 1.2 * STATUS_BYTES / r);
+        }
+        return c;
+    }
+
     private double byteTime() {
         double r = rate();
         return r > 0 ? 1.0 / r : 0.0;
+    }
+
+    /**
+     * Takes files the peer pushes into {@code dir} (created when a file needs it), by the rules
+     * of {@code ttctl recv-file}: at most 1 GiB per file and 8 GiB under the folder, partial
+     * files included; an existing file is never replaced. IOException if the folder cannot be
+     * used. Files the peer pushes before this (or without it) are refused with "this end takes
+     * only the files it asks for".
+     */
+    public FileTransfers acceptInto(File dir) throws IOException {
+        return acceptInto(dir, DEFAULT_MAX_FILE_BYTES, DEFAULT_MAX_DIR_BYTES, false);
+    }
+
+    /**
+     * As {@link #acceptInto(File)}, with the quotas (bytes per file, bytes under the folder) and
+     * whether an existing file may be replaced when the sender asks to overwrite.
+     */
+    public FileTransfers acceptInto(File dir, long maxFileBytes, long maxDirBytes, boolean overwrite)
+            throws IOException {
+        ReceiveDir store = new ReceiveDir(dir, maxFileBytes, maxDirBytes, overwrite);
+        store.check();
+        lock.lock();
+        try {
+            receiver.inbox = store;
+        } finally {
+            lock.unlock();
+        }
+        return this;
+    }
+
+    /**
+     * Lets the peer fetch the regular files under {@code dir} (TT_FILE_REQUEST; names by the
+     * rules both ends share, never a path leading outside the folder, symbolic links followed
+     * and checked). IOException if it is not a folder.
+     */
+    public FileTransfers serve(File dir) throws IOException {
+        if (!dir.isDirectory()) {
+            throw new IOException(dir + " is not a directory");
+        }
+        File canonical = dir.getCanonicalFile();
+        lock.lock();
+        try {
+            serveDir = canonical;
+        } finally {
+            lock.unlock();
+        }
+        return this;
+    }
+
+    /** Who is told about transfers the peer starts (see {@link IncomingListener}). */
+    public FileTransfers setIncomingListener(IncomingListener listener) {
+        this.incomingListener = listener;
+        return this;
     }
 
     /**
@@ -188,25 +305,15 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
             throw new IOException(file + " is not a readable file");
         }
         byte[] sha = Names.sha256(file, -1);
-        final Transfer t = new Transfer(this, n, true, file.length(), listener);
-        double byteTime = byteTime();
-        LinkScheduler.BulkSource pull = new LinkScheduler.BulkSource() {
-            @Override
-            public byte[] pull(int space) {
-                return pullData(t, space);
-            }
-        };
+        Transfer t = new Transfer(this, n, true, false, targetSys + "/" + targetComp, file.length(), file, listener);
+        LinkScheduler.BulkSource pull;
         // lock order: the scheduler's, then ours (it pulls under its lock); never the other way
         lock.lock();
         try {
             if (closed) {
                 throw new IOException("file transfers are closed");
             }
-            FileSender s = new FileSender(newId, file, sha, n, targetSys, targetComp, cfg, 0, overwrite, now());
-            s.byteTime = byteTime;
-            senders.put(t, s);
-            pulls.put(t, pull);
-            changed.signalAll();
+            pull = startSender(t, new FileSender(newId, file, sha, n, targetSys, targetComp, cfg, 0, overwrite, now()));
         } finally {
             lock.unlock();
         }
@@ -214,9 +321,24 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
         return t;
     }
 
+    /** Under the lock: a sender and its puller (the caller adds the puller to the scheduler, unlocked). */
+    private LinkScheduler.BulkSource startSender(final Transfer t, FileSender s) {
+        s.byteTime = byteTime();
+        senders.put(t, s);
+        LinkScheduler.BulkSource pull = new LinkScheduler.BulkSource() {
+            @Override
+            public byte[] pull(int space) {
+                return pullData(t, space);
+            }
+        };
+        pulls.put(t, pull);
+        changed.signalAll();
+        return pull;
+    }
+
     /**
      * Fetches {@code remoteName} from the folder the peer serves into {@code dir} (the same
-     * relative name), via a temporary file, SHA-256 check and rename. An earlier interrupted
+     * relative name), via a partial file, SHA-256 check and rename. An earlier interrupted
      * fetch of the same file resumes. IOException if the file exists here already or the folder
      * cannot be used.
      */
@@ -226,26 +348,27 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
         if (why != null) {
             throw new IllegalArgumentException(why);
         }
-        if (!dir.isDirectory() && !dir.mkdirs()) {
-            throw new IOException("cannot create " + dir);
+        ReceiveDir store = new ReceiveDir(dir, Long.MAX_VALUE, Long.MAX_VALUE, false);
+        store.check();
+        File target;
+        try {
+            target = store.finalPath(remoteName);
+            store.checkParents(remoteName);
+        } catch (ReceiveDir.Refused e) {
+            throw new IOException("cannot fetch into " + dir + ": " + e.reason);
         }
-        File target = new File(dir, remoteName);
         if (target.exists()) {
-            throw new IOException(target + " exists here: remove it first, or fetch into another folder");
+            throw new IOException(new File(dir, remoteName) + " exists here: remove it first, or fetch into another folder");
         }
-        Transfer t = new Transfer(this, remoteName, false, -1, listener);
-        double r = rate();
+        Transfer t = new Transfer(this, remoteName, false, false, targetSys + "/" + targetComp, -1, target, listener);
         lock.lock();
         try {
             if (closed) {
                 throw new IOException("file transfers are closed");
             }
-            TransferConfig c = cfg.copy();
-            if (r > 0) { // statuses go back over our own link: on a slow one, fewer of them
-                c.statusMinInterval = Math.max(c.statusMinInterval, 3 * 60 / r);
-                c.statusTailInterval = Math.max(c.statusTailInterval, 1.2 * 60 / r);
-            }
-            fetches.put(t, new FileFetch(newId.getAsLong(), remoteName, targetSys, targetComp, dir, c, now()));
+            FileFetch f = new FileFetch(newId.getAsLong(), remoteName, targetSys, targetComp, store, cfg, now());
+            fetches.put(t, f);
+            receiver.expect(targetSys, targetComp, f.requestId, remoteName, store);
             changed.signalAll();
         } finally {
             lock.unlock();
@@ -256,18 +379,30 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
     void cancel(Transfer t) {
         lock.lock();
         try {
+            double now = now();
             FileSender s = senders.get(t);
             if (s != null) {
-                s.cancel(now());
+                s.cancel(now);
             }
             FileFetch f = fetches.get(t);
-            if (f != null) {
-                f.cancel(now());
+            if (f != null && !f.done()) {
+                f.cancel(now);
+                if (f.incoming != null && !finalResult(f.incoming.result)) {
+                    receiver.cancel(f.incoming, now);
+                }
+            }
+            FileReceiver.Incoming in = incoming.get(t);
+            if (in != null && !finalResult(in.result)) {
+                receiver.cancel(in, now);
             }
             changed.signalAll();
         } finally {
             lock.unlock();
         }
+    }
+
+    private static boolean finalResult(int r) {
+        return r != TtFileResult.TT_FILE_RESULT_IN_PROGRESS && r != TtFileResult.TT_FILE_RESULT_REFUSED_BUSY;
     }
 
     /** Transfers running (not finished). */
@@ -281,6 +416,9 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
             for (FileFetch f : fetches.values()) {
                 n += f.done() ? 0 : 1;
             }
+            for (Transfer t : incoming.keySet()) {
+                n += t.isDone() ? 0 : 1;
+            }
             return n;
         } finally {
             lock.unlock();
@@ -292,6 +430,29 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
         lock.lock();
         try {
             return ignored;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Offers refused (by the inbox's rules) and fetch requests refused (by the served folder's), so far. */
+    public long refused() {
+        lock.lock();
+        try {
+            return receiver.refused + servedRefused;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * Frames dropped unanswered: offers and requests beyond the bounds on what is remembered
+     * (a flood), data of unknown transfers beyond one answer per offer interval.
+     */
+    public long dropped() {
+        lock.lock();
+        try {
+            return receiver.dropped;
         } finally {
             lock.unlock();
         }
@@ -333,10 +494,11 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
     @Override
     public void accept(MavlinkMessage msg) {
         boolean wake = false;
+        List<LinkScheduler.BulkSource> added = new ArrayList<>();
         lock.lock();
         try {
-            if (msg.sysId() == sysId && msg.compId() == compId) {
-                return; // our own frames, echoed
+            if (closed || (msg.sysId() == sysId && msg.compId() == compId)) {
+                return; // closed, or our own frames, echoed
             }
             double now = now();
             if (msg instanceof TtFileData || msg instanceof TtFileDataWide) {
@@ -344,12 +506,9 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
                 long id = wide ? ((TtFileDataWide) msg).transfer_id : ((TtFileData) msg).transfer_id;
                 long off = wide ? ((TtFileDataWide) msg).offset : ((TtFileData) msg).offset;
                 byte[] data = wide ? ((TtFileDataWide) msg).data : ((TtFileData) msg).data;
-                for (FileFetch f : fetches.values()) {
-                    if (f.transferId == id && f.targetSys == msg.sysId() && f.targetComp == msg.compId()) {
-                        f.onData(now, id, off, data, wide ? FileSender.WIDE : FileSender.NARROW);
-                        wake = true;
-                    }
-                }
+                receiver.onData(now, msg.sysId(), msg.compId(), id, off, data,
+                        wide ? FileSender.WIDE : FileSender.NARROW);
+                wake = true;
             } else if (msg instanceof TtFileStatus) {
                 TtFileStatus s = (TtFileStatus) msg;
                 if (forUs(s.target_system, s.target_component)) {
@@ -362,13 +521,18 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
                 }
             } else if (msg instanceof TtFileOffer) {
                 TtFileOffer o = (TtFileOffer) msg;
-                if (forUs(o.target_system, o.target_component) && o.request_id != 0) {
-                    for (FileFetch f : fetches.values()) {
-                        if (f.requestId == o.request_id && f.targetSys == msg.sysId() && f.targetComp == msg.compId()) {
-                            f.onOffer(now, o);
-                            wake = true;
-                        }
+                if (forUs(o.target_system, o.target_component)) {
+                    onOffer(now, o);
+                    wake = true;
+                }
+            } else if (msg instanceof TtFileRequest) {
+                TtFileRequest r = (TtFileRequest) msg;
+                if (forUs(r.target_system, r.target_component)) {
+                    LinkScheduler.BulkSource p = onRequest(now, r);
+                    if (p != null) {
+                        added.add(p);
                     }
+                    wake = true;
                 }
             }
             if (wake) {
@@ -378,6 +542,9 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
             ignored++;
         } finally {
             lock.unlock();
+        }
+        for (LinkScheduler.BulkSource p : added) {
+            scheduler.addSource(p);
         }
         if (wake) {
             scheduler.wake();
@@ -390,6 +557,25 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
             ignored++;
         }
         return ok;
+    }
+
+    private void onOffer(double now, TtFileOffer o) {
+        FileFetch fetch = null;
+        if (o.request_id != 0) {
+            for (FileFetch f : fetches.values()) {
+                if (f.requestId == o.request_id && f.targetSys == o.sysId() && f.targetComp == o.compId() && !f.done()
+                        && (f.incoming == null || f.incoming.key.id == o.transfer_id)) {
+                    fetch = f;
+                }
+            }
+        }
+        receiver.onOffer(now, o.sysId(), o.compId(), o);
+        if (fetch != null && fetch.incoming == null) {
+            FileReceiver.Incoming t = receiver.transfers.get(new FileReceiver.Key(o.sysId(), o.compId(), o.transfer_id));
+            if (t != null) {
+                fetch.attach(now, t);
+            }
+        }
     }
 
     private boolean onStatus(double now, TtFileStatus s) {
@@ -427,6 +613,177 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
         return false;
     }
 
+    // -- serving -----------------------------------------------------------------------------
+    /** A part of a fetch request (ttctl's endpoint _on_request); a new sender's puller, or null. */
+    private LinkScheduler.BulkSource onRequest(double now, TtFileRequest msg) {
+        if (msg.request_id == 0) {
+            return null;
+        }
+        int ss = msg.sysId();
+        int sc = msg.compId();
+        for (FileSender s : senders.values()) {
+            if (s.requestId == msg.request_id && s.targetSys == ss && s.targetComp == sc && !s.done()) {
+                return null; // already serving it: the offers repeat on their own
+            }
+        }
+        FileReceiver.Key key = new FileReceiver.Key(ss, sc, msg.request_id);
+        ServedRequest part = served.get(key);
+        if (part == null) {
+            if (served.size() >= MAX_SERVED_REQUESTS) {
+                Iterator<FileReceiver.Key> it = served.keySet().iterator();
+                it.next();
+                it.remove();
+                receiver.dropped++;
+            }
+            part = new ServedRequest();
+            served.put(key, part);
+        }
+        if (part.length == 0) {
+            part.length = msg.name_length;
+            part.name = new byte[msg.name_length];
+        }
+        int off = msg.name_offset;
+        int n = Math.max(0, Math.min(msg.name.length, part.length - off));
+        if (n > 0) {
+            System.arraycopy(msg.name, 0, part.name, off, n);
+            part.have.add(off, off + n);
+        }
+        if (part.length == 0 || !part.have.covers(0, part.length)) {
+            return null;
+        }
+        served.remove(key);
+        String name = Names.strictUtf8(part.name);
+        File path;
+        try {
+            path = servable(name);
+        } catch (ReceiveDir.Refused e) {
+            refuseRequest(ss, sc, msg.request_id, "NOT_FOUND".equals(e.code) ? TtFileResult.TT_FILE_RESULT_NOT_FOUND
+                    : TtFileResult.TT_FILE_RESULT_REQUEST_REFUSED, e.reason);
+            return null;
+        }
+        int serving = 0;
+        for (FileSender s : senders.values()) {
+            serving += s.requestId != 0 && !s.done() ? 1 : 0;
+        }
+        if (serving >= MAX_SERVING) {
+            refuseRequest(ss, sc, msg.request_id, TtFileResult.TT_FILE_RESULT_REQUEST_REFUSED,
+                    MAX_SERVING + " files are being fetched from here; ask again later");
+            return null;
+        }
+        Transfer t = new Transfer(this, name, true, true, ss + "/" + sc, path.length(), path, null);
+        LinkScheduler.BulkSource pull;
+        try {
+            FileSender s = new FileSender(newId, path, Names.sha256(path, -1), name, ss, sc, cfg, msg.request_id,
+                    false, now);
+            pull = startSender(t, s);
+        } catch (IOException e) {
+            refuseRequest(ss, sc, msg.request_id, TtFileResult.TT_FILE_RESULT_REQUEST_REFUSED, name + ": "
+                    + e.getMessage());
+            return null;
+        }
+        announce.add(t);
+        return pull;
+    }
+
+    /** The served file a request names, or Refused (NOT_FOUND, REQUEST_REFUSED) with the reason. */
+    private File servable(String name) throws ReceiveDir.Refused {
+        if (name == null) {
+            throw new ReceiveDir.Refused("REQUEST_REFUSED", "the name is not valid UTF-8");
+        }
+        if (serveDir == null) {
+            throw new ReceiveDir.Refused("REQUEST_REFUSED", "this end serves no files");
+        }
+        String why = Names.problem(name);
+        if (why != null) {
+            throw new ReceiveDir.Refused("REQUEST_REFUSED", why);
+        }
+        File path;
+        try {
+            path = new File(serveDir, name).getCanonicalFile();
+        } catch (IOException e) {
+            throw new ReceiveDir.Refused("REQUEST_REFUSED", name + ": " + e.getMessage());
+        }
+        String root = serveDir.getPath().endsWith(File.separator) ? serveDir.getPath()
+                : serveDir.getPath() + File.separator;
+        if (!path.getPath().startsWith(root)) {
+            throw new ReceiveDir.Refused("REQUEST_REFUSED", name + " leads outside the served folder");
+        }
+        if (!path.exists()) {
+            throw new ReceiveDir.Refused("NOT_FOUND", "there is no " + name + " in the served folder");
+        }
+        if (!path.isFile()) {
+            throw new ReceiveDir.Refused("REQUEST_REFUSED", name + " is " + ReceiveDir.kindOf(path) + ", not a file");
+        }
+        if (!path.canRead()) {
+            throw new ReceiveDir.Refused("REQUEST_REFUSED", name + ": permission denied");
+        }
+        return path;
+    }
+
+    private final List<byte[]> queued = new ArrayList<>();
+
+    private void refuseRequest(int ss, int sc, long requestId, int result, String reason) {
+        servedRefused++;
+        TtFileReason why = new TtFileReason();
+        why.target_system = ss;
+        why.target_component = sc;
+        why.transfer_id = requestId;
+        why.result = result;
+        why.text = java.util.Arrays.copyOf(Names.fit(reason, 80), 80);
+        TtFileStatus status = new TtFileStatus();
+        status.target_system = ss;
+        status.target_component = sc;
+        status.transfer_id = requestId;
+        status.result = result;
+        queued.add(encode(why));
+        queued.add(encode(status));
+    }
+
+    // -- the inbox ---------------------------------------------------------------------------
+    /** Under the lock, from the receiver: a transfer the peer pushes gets its Transfer when decided. */
+    private void onReceiverEvent(String what, FileReceiver.Incoming t) {
+        if (t.requestId != 0 || t.transfer != null || "busy".equals(what)) {
+            return; // a download (its fetch follows it), one told already, or one still waiting
+        }
+        File where = t.store != null ? new File(t.store.root, t.name) : null;
+        Transfer tr = new Transfer(this, t.name, false, true, t.who(), t.size, where, null);
+        t.transfer = tr;
+        incoming.put(tr, t);
+        announce.add(tr);
+    }
+
+    /** Under the lock: the end of a pushed file's transfer, once it has one. */
+    private TransferResult incomingResult(double now, Transfer tr, FileReceiver.Incoming t, String problem) {
+        int r = t.result;
+        long resumed = Math.max(0, t.resumed);
+        String from = " from " + t.who();
+        if (r == TtFileResult.TT_FILE_RESULT_COMPLETE) {
+            String how = t.identical ? "already here (the same SHA-256)"
+                    : t.nothingSent ? "already received (a whole partial file), verified" : "received and verified";
+            return new TransferResult(true, "COMPLETE", t.name + ": " + t.size + " bytes" + from + ", " + how + " -> "
+                    + t.finalPath, t.name, t.size, now - t.started, 0, 0, resumed, Math.max(0, t.size - resumed),
+                    t.nothingSent, t.finalPath);
+        }
+        boolean live = receiver.transfers.get(t.key) == t;
+        if (finalResult(r)) {
+            String code = Names.resultName(r);
+            String text = code.startsWith("REFUSED") ? "refused " + t.name + from + ": " + t.reason
+                    : t.name + from + " failed: " + (t.reason.isEmpty() ? Names.resultText(code, "failed") : t.reason);
+            return new TransferResult(false, code, text, t.name, t.size, now - t.started, 0, 0, resumed,
+                    Math.max(0, t.held() - resumed), false, null);
+        }
+        if (!live || now - t.lastActivity >= cfg.giveUpAfter) {
+            if (live) {
+                receiver.close(t); // its partial file stays: the sender's next offer resumes it
+            }
+            return new TransferResult(false, "TIMEOUT", t.name + from + ": nothing heard for "
+                    + Names.secs(Math.floor(now - t.lastActivity)) + (problem != null ? "; " + problem : "")
+                    + (t.held() > 0 ? " (what arrived is kept for a resume)" : ""),
+                    t.name, t.size, now - t.started, 0, 0, resumed, Math.max(0, t.held() - resumed), false, null);
+        }
+        return null;
+    }
+
     // -- the timer thread --------------------------------------------------------------------
     private void loop() {
         while (true) {
@@ -446,8 +803,8 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
                 }
                 if (out.isEmpty() && calls.isEmpty() && retired.isEmpty()) {
                     try {
-                        if (senders.isEmpty() && fetches.isEmpty()) {
-                            changed.await(); // idle: woken by send, fetch or close
+                        if (senders.isEmpty() && fetches.isEmpty() && incoming.isEmpty() && receiver.transfers.isEmpty()) {
+                            changed.await(); // idle: woken by send, fetch, a message or close
                         } else {
                             double wait = Double.isNaN(next) ? 1.0 : Math.max(0.001, Math.min(1.0, next - now));
                             changed.awaitNanos((long) (wait * 1e9));
@@ -475,11 +832,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
                 scheduler.wake();
             }
             for (Runnable r : calls) {
-                try {
-                    callbacks.execute(r);
-                } catch (RuntimeException e) {
-                    // closed
-                }
+                Callbacks.run(listeners, r, "a transfer listener");
             }
         }
     }
@@ -488,6 +841,20 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
     private double tick(double now, List<byte[]> out, List<Runnable> calls, List<LinkScheduler.BulkSource> retired) {
         String problem = scheduler.linkProblem();
         double next = Double.NaN;
+        out.addAll(queued);
+        queued.clear();
+        for (final Transfer t : announce) {
+            final IncomingListener il = incomingListener;
+            calls.add(new Runnable() {
+                @Override
+                public void run() {
+                    if (il != null) {
+                        t.listener = il.onIncoming(t);
+                    }
+                }
+            });
+        }
+        announce.clear();
         Iterator<Map.Entry<Transfer, FileSender>> it = senders.entrySet().iterator();
         while (it.hasNext()) {
             Map.Entry<Transfer, FileSender> e = it.next();
@@ -515,11 +882,35 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
             for (MavlinkMessage m : f.control(now, problem)) {
                 out.add(encode(m));
             }
-            progress(e.getKey(), f.have(), f.size, f.result, calls);
+            if (f.done() && f.incoming != null && !finalResult(f.incoming.result)
+                    && receiver.transfers.get(f.incoming.key) == f.incoming) {
+                receiver.close(f.incoming); // gave up: the partial file stays for the next fetch
+            }
+            progress(e.getKey(), f.have, f.size(), f.result, calls);
             if (f.done() && now - f.finishedAt > LINGER) {
+                receiver.unexpect(f.targetSys, f.targetComp, f.requestId);
                 jt.remove();
             }
             next = min(next, f.deadline(now));
+        }
+        for (MavlinkMessage m : receiver.control(now)) {
+            out.add(encode(m));
+        }
+        next = min(next, receiver.deadline());
+        Iterator<Map.Entry<Transfer, FileReceiver.Incoming>> kt = incoming.entrySet().iterator();
+        while (kt.hasNext()) {
+            Map.Entry<Transfer, FileReceiver.Incoming> e = kt.next();
+            Transfer tr = e.getKey();
+            FileReceiver.Incoming t = e.getValue();
+            if (!tr.isDone()) {
+                TransferResult r = incomingResult(now, tr, t, problem);
+                progress(tr, t.held(), t.size, r, calls);
+                if (r == null) {
+                    next = min(next, t.lastActivity + cfg.giveUpAfter);
+                }
+            } else if (now - (t.started + tr.result().seconds) > LINGER) {
+                kt.remove();
+            }
         }
         return next;
     }
@@ -532,35 +923,31 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
         boolean moved = done != t.done || size != t.size;
         t.done = done;
         t.size = size;
-        final Transfer.Listener l = t.listener;
-        if (moved && l != null) {
+        if (moved) {
             calls.add(new Runnable() {
                 @Override
                 public void run() {
-                    try {
+                    Transfer.Listener l = t.listener;
+                    if (l != null) {
                         l.onProgress(t, done, size);
-                    } catch (RuntimeException e) {
-                        System.err.println("ttctl FileTransfers: onProgress failed: " + e);
                     }
                 }
             });
         }
         if (result != null) {
+            if (result.file != null) {
+                t.file = result.file;
+            }
+            t.future.complete(result); // visible at once; the listener follows on the listener executor
             calls.add(new Runnable() {
                 @Override
                 public void run() {
-                    try {
-                        if (l != null) {
-                            l.onComplete(t, result);
-                        }
-                    } catch (RuntimeException e) {
-                        System.err.println("ttctl FileTransfers: onComplete failed: " + e);
-                    } finally {
-                        t.future.complete(result);
+                    Transfer.Listener l = t.listener;
+                    if (l != null) {
+                        l.onComplete(t, result);
                     }
                 }
             });
-            t.future.complete(result); // visible at once; the listener follows on the callback thread
         }
     }
 
@@ -568,12 +955,19 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
         return Double.isNaN(a) ? b : Double.isNaN(b) ? a : Math.min(a, b);
     }
 
-    /** Stops everything: running transfers end CANCELLED (partial data stays for a resume). */
+    /**
+     * Stops everything: running transfers end CANCELLED (partial data stays for a resume, here
+     * and at the peer); their listeners are still told.
+     */
+    @Override
     public void close() {
         List<Runnable> calls = new ArrayList<>();
         List<LinkScheduler.BulkSource> retired = new ArrayList<>();
         lock.lock();
         try {
+            if (closed) {
+                return;
+            }
             double now = now();
             for (Map.Entry<Transfer, FileSender> e : senders.entrySet()) {
                 e.getValue().cancel(now);
@@ -581,8 +975,15 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
             }
             for (Map.Entry<Transfer, FileFetch> e : fetches.entrySet()) {
                 e.getValue().cancel(now);
-                progress(e.getKey(), e.getValue().have(), e.getValue().size, e.getValue().result, calls);
+                progress(e.getKey(), e.getValue().have, e.getValue().size(), e.getValue().result, calls);
             }
+            for (Map.Entry<Transfer, FileReceiver.Incoming> e : incoming.entrySet()) {
+                FileReceiver.Incoming t = e.getValue();
+                progress(e.getKey(), t.held(), t.size, new TransferResult(false, "CANCELLED", t.name + " from " + t.who()
+                        + ": cancelled (what arrived is kept for a resume)", t.name, t.size, now - t.started, 0, 0,
+                        Math.max(0, t.resumed), Math.max(0, t.held() - Math.max(0, t.resumed)), false, null), calls);
+            }
+            receiver.closeAll();
             retired.addAll(pulls.values());
             pulls.clear();
             closed = true;
@@ -594,12 +995,10 @@ public final class FileTransfers implements Consumer<MavlinkMessage> {
             scheduler.removeSource(p);
         }
         for (Runnable r : calls) {
-            try {
-                callbacks.execute(r);
-            } catch (RuntimeException e) {
-                // already shut down
-            }
+            Callbacks.run(listeners, r, "a transfer listener");
         }
-        callbacks.shutdown();
+        if (ownListeners != null) {
+            ownListeners.shutdown();
+        }
     }
 }

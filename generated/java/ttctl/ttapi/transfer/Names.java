@@ -106,6 +106,26 @@ public final class Names {
         return md.digest();
     }
 
+    /** Lower-case hex digits of {@code b}. */
+    static String hex(byte[] b) {
+        StringBuilder s = new StringBuilder(2 * b.length);
+        for (byte x : b) {
+            s.append(Character.forDigit((x >> 4) & 0xF, 16)).append(Character.forDigit(x & 0xF, 16));
+        }
+        return s.toString();
+    }
+
+    /** The UTF-8 text of {@code raw}, or null if it is not valid UTF-8. */
+    static String strictUtf8(byte[] raw) {
+        try {
+            return UTF8.newDecoder().onMalformedInput(java.nio.charset.CodingErrorAction.REPORT)
+                    .onUnmappableCharacter(java.nio.charset.CodingErrorAction.REPORT)
+                    .decode(java.nio.ByteBuffer.wrap(raw)).toString();
+        } catch (java.nio.charset.CharacterCodingException e) {
+            return null;
+        }
+    }
+
     /** TT_FILE_STATUS.meta_check of an offer's metadata: SHA-256's first 4 bytes, little-endian, never 0. */
     public static long metaCheck(byte[] meta) {
         byte[] d = sha256().digest(meta);

@@ -31,6 +31,10 @@ public final class TransferConfig {
     public int checksumRestarts = 2;
     /** Wait this long for the words of a refusal before giving the code's. */
     public double reasonWait = 1.0;
+    /** Receiver: forget a silent transfer after this long (its partial file stays). */
+    public double idleTimeout = 120.0;
+    /** Receiver: a transfer heard from within this is running (another sender of its name waits). */
+    public double liveWindow = 15.0;
 
     public TransferConfig copy() {
         TransferConfig c = new TransferConfig();
@@ -47,6 +51,8 @@ public final class TransferConfig {
         c.probeFrames = probeFrames;
         c.checksumRestarts = checksumRestarts;
         c.reasonWait = reasonWait;
+        c.idleTimeout = idleTimeout;
+        c.liveWindow = liveWindow;
         return c;
     }
 }

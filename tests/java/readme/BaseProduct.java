@@ -1,0 +1,3 @@
+/** Stand-in for dji.sdk.base.BaseProduct (DJI Mobile SDK v4). */
+public class BaseProduct {
+}
