@@ -399,3 +399,59 @@ def test_a_signed_link_loses_nothing_to_its_own_reordering(tmp_path: Path) -> No
         stats = [rx.stats for rx in ep._rxs.values()]
         assert stats and sum(st.frames for st in stats) > 100
         assert sum(st.bad_frames for st in stats) == 0, [st.as_dict() for st in stats]
+
+
+def test_a_flood_of_incomplete_offers_does_not_lock_real_senders_out(tmp_path: Path) -> None:
+    """Offers whose metadata never completes take at most MAX_PENDING_OFFERS places, the stalest
+    going first: a real sender right after a flood of 400 is answered (it used to be dropped
+    until the flood was forgotten, 120 s later)."""
+    from ttctl.proto.receiver import MAX_PENDING_OFFERS
+
+    on = tmp_path / "on"
+    w = World(tmp_path, onboard_dir=on)
+    enc = ttapi.Encoder(*TABLET)
+    for i in range(400):
+        w.onboard.receive(0.0, enc.encode(ttapi.TtFileOffer(
+            target_system=ONBOARD[0], target_component=ONBOARD[1], transfer_id=1000 + i, size=10,
+            meta_length=200, meta_offset=0, meta=b"\x01" * 71)))
+    rx = w.onboard.receiver
+    assert rx is not None and sum(not t.decided for t in rx.transfers.values()) <= MAX_PENDING_OFFERS
+    assert rx.evicted == 400 - MAX_PENDING_OFFERS
+    s = w.tablet.send_file("real.bin", ONBOARD, source=BytesSource(b"after the flood", "real.bin"))
+    w.run(10, stop=lambda: s.done)
+    assert s.result is not None and s.result.ok and (on / "real.bin").read_bytes() == b"after the flood"
+
+
+def test_a_flood_of_incomplete_requests_is_bounded(tmp_path: Path) -> None:
+    """TT_FILE_REQUEST names that never complete are kept for at most MAX_PARTIAL_REQUESTS
+    requests (memory grew with every one), and a real request after them is served."""
+    from ttctl.proto.endpoint import MAX_PARTIAL_REQUESTS
+
+    serve = tmp_path / "serve"
+    serve.mkdir()
+    (serve / "log.txt").write_bytes(b"served")
+    w = World(tmp_path, tablet_dir=tmp_path / "tab", serve=serve)
+    enc = ttapi.Encoder(*TABLET)
+    for i in range(2000):
+        w.onboard.receive(0.0, enc.encode(ttapi.TtFileRequest(
+            target_system=ONBOARD[0], target_component=ONBOARD[1], request_id=1 + i, name_length=200,
+            name_offset=0, name=b"x" * 80)))
+    assert len(w.onboard._served) <= MAX_PARTIAL_REQUESTS
+    got = tmp_path / "tab" / "log.txt"
+    w.tablet.request_file("log.txt", ONBOARD)
+    w.run(10, stop=got.exists)
+    assert got.read_bytes() == b"served"
+
+
+def test_a_duplicated_signed_packet_is_not_called_a_wrong_key(tmp_path: Path) -> None:
+    """A replayed timestamp (a duplicated packet, a replay) is refused but is not reported as
+    'frames whose signatures do not verify' (the same --key at both ends?); another key is."""
+    key = bytes(range(32))
+    w = World(tmp_path, onboard_dir=tmp_path / "on", key=key)
+    frame = ttapi.Encoder(*TABLET, signing=ttapi.Signing(key)).encode(ttapi.Heartbeat())
+    w.onboard.receive(0.0, frame, source="a")
+    w.onboard.receive(0.0, frame, source="a")  # the same packet again
+    assert not w.event("link-refused")
+    other = ttapi.Encoder(*TABLET, signing=ttapi.Signing(bytes(32))).encode(ttapi.Heartbeat())
+    w.onboard.receive(0.0, other, source="b")
+    assert w.event("link-refused") == [("b", "frames whose signatures do not verify")]

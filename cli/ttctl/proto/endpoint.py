@@ -33,6 +33,7 @@ from .transfer import NARROW, REQUEST_PART, RESULT_TEXT, WIDE, TransferConfig, r
 TARGETED = "target_system"
 STATUS_BYTES = 60  # typical TT_FILE_STATUS frame
 MAX_SOURCES = 64  # packet receivers kept for distinct sources (the least recently heard goes first)
+MAX_PARTIAL_REQUESTS = 64  # TT_FILE_REQUEST names still arriving, kept at once (the stalest goes first)
 
 
 class Request:
@@ -65,10 +66,11 @@ class Request:
 
 
 class _ServedRequest:
-    def __init__(self) -> None:
+    def __init__(self, now: float) -> None:
         self.name = bytearray()
         self.have = RangeSet()
         self.length = 0
+        self.last = now  # when a part last came
 
 
 class Endpoint:
@@ -310,8 +312,8 @@ class Endpoint:
             return None
 
         def bad(frame: bytes, reason: str) -> None:
-            if reason in ("unsigned frame refused", "bad signature or replayed timestamp") \
-                    and source not in self._refused_sources:
+            # a replayed timestamp is a duplicated packet or a replay, not another key
+            if reason in ("unsigned frame refused", "bad signature") and source not in self._refused_sources:
                 self._refused_sources.add(source)
                 self._event("link-refused", (source, "unsigned frames" if reason.startswith("unsigned")
                                              else "frames whose signatures do not verify"))
@@ -437,7 +439,14 @@ class Endpoint:
         for s in self.senders.values():
             if s.request_id == msg.request_id and s.target == src and not s.done:
                 return  # already serving it: the offers repeat on their own
-        part = self._served.setdefault(key, _ServedRequest())
+        part = self._served.get(key)
+        if part is None:
+            if len(self._served) >= MAX_PARTIAL_REQUESTS:
+                # a flood of request names that never complete: the stalest goes (a real
+                # requester's name is whole in one or two messages, and repeated until answered)
+                del self._served[min(self._served, key=lambda k: self._served[k].last)]
+            part = self._served[key] = _ServedRequest(now)
+        part.last = now
         if not part.length:
             part.length = msg.name_length
             part.name = bytearray(msg.name_length)

@@ -103,6 +103,7 @@ class FileReceiver:
         self.expected: dict[tuple[int, int, int], str] = {}  # (peer sysid, compid, request id) -> name asked for
         self._unknown: OrderedDict[Key, float] = OrderedDict()  # told 'unknown transfer', when
         self._unknown_due: list[Key] = []
+        self.evicted = 0  # offers forgotten before their metadata was whole, to make room in a flood
 
     def expect(self, peer: tuple[int, int], request_id: int, name: str) -> None:
         self.expected[(peer[0], peer[1], request_id)] = name
@@ -118,8 +119,13 @@ class FileReceiver:
         key = (msg.get_srcSystem(), msg.get_srcComponent(), msg.transfer_id)
         t = self.transfers.get(key)
         if t is None:
-            if sum(1 for x in self.transfers.values() if not x.decided) >= MAX_PENDING_OFFERS:
-                return
+            undecided = [x for x in self.transfers.values() if not x.decided]
+            if len(undecided) >= MAX_PENDING_OFFERS:
+                # a flood of offers whose metadata never completes: the stalest goes, so that it
+                # cannot lock real senders out until it is forgotten (a real sender's offer is
+                # whole in one or two messages, and repeated until answered)
+                self._close(min(undecided, key=lambda x: x.last_activity))
+                self.evicted += 1
             if len(self.transfers) >= MAX_KNOWN and not self._forget_one():
                 return
             t = self.transfers[key] = Incoming(key, now)

@@ -274,24 +274,30 @@ class Signing:
     def verify(self, frame: bytes | memoryview, sysid: int, compid: int, record: bool = True) -> bool:
         """`frame` is a whole signed frame. With `record` False nothing is remembered (a probe:
         the same frame still verifies afterwards)."""
+        return self.check(frame, sysid, compid, record) is None
+
+    def check(self, frame: bytes | memoryview, sysid: int, compid: int, record: bool = True) -> str | None:
+        """None if `frame` (a whole signed frame) verifies, else why not: "bad signature" (another
+        key, or damage), "replayed timestamp" (not newer than the last from its stream: a
+        duplicate, or a replay) or "timestamp too old" (a new stream more than a minute behind)."""
         frame = bytes(frame)
         body, sig = frame[:-SIGNATURE_LENGTH], frame[-SIGNATURE_LENGTH:]
         link_id = sig[0]
         ts = int.from_bytes(sig[1:7], "little")
         expected = self.signature(body, link_id, ts)
         if not hmac.compare_digest(expected, sig):
-            return False
+            return "bad signature"
         key = (link_id, sysid, compid)
         last = self.streams.get(key)
         if last is None:
             if ts + self.REPLAY_WINDOW < self.timestamp:
-                return False
+                return "timestamp too old"
         elif ts <= last:
-            return False
+            return "replayed timestamp"
         if record:
             self.streams[key] = ts
             self.timestamp = max(self.timestamp, ts)
-        return True
+        return None
 
     def sign(self, frame: bytes, registry: dict[int, MessageInfo] | None = None) -> bytes:
         """An unsigned frame, signed now (the signed flag set, the CRC redone, the signature
@@ -359,8 +365,10 @@ def decode(frame: bytes | bytearray | memoryview, registry: dict[int, MessageInf
     end = HEADER_LENGTH + plen
     if crc16(info.extra, crc16(buf[1:end])) != _CRC.unpack_from(buf, end)[0]:
         raise DecodeError("bad CRC")
-    if signed and signing is not None and not signing.verify(buf, sysid, compid, not peek):
-        raise DecodeError("bad signature or replayed timestamp")
+    if signed and signing is not None:
+        why = signing.check(buf, sysid, compid, not peek)
+        if why is not None:
+            raise DecodeError(why)
     if not signed and signing is not None and not signing.allow_unsigned:
         raise DecodeError("unsigned frame refused")
     if plen < info.length:

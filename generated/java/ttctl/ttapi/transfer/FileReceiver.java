@@ -210,8 +210,7 @@ final class FileReceiver {
             }
             if (undecided >= MAX_PENDING_OFFERS) {
                 // a flood of offers whose metadata never completes: the stalest goes, so that it
-                // cannot lock real senders out until it is forgotten (the Python receiver drops
-                // the new offer instead, for idle_timeout seconds: see the report of issue 18)
+                // cannot lock real senders out until it is forgotten (as the Python receiver)
                 close(stalest);
                 dropped++;
             }
