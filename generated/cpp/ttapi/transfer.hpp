@@ -2121,7 +2121,10 @@ public:
         Incoming* t = at >= 0 ? &tr(at) : nullptr;
         if (t == nullptr) {
             if (pending_offers() >= TransferLimits::MAX_PENDING_OFFERS) {
-                return;
+                // Offers whose metadata never completes (a flood, or a peer gone quiet): the one
+                // heard from least recently makes room. (ttctl's Python receiver drops the new
+                // offer instead, so 64 such offers lock out every sender until they time out.)
+                forget_oldest_pending();
             }
             if (count_ >= TransferLimits::MAX_KNOWN && !forget_one()) {
                 return;
@@ -2453,6 +2456,19 @@ private:
         t.used = false;
         t.prev = t.next = -1;
         --count_;
+    }
+
+    void forget_oldest_pending() noexcept
+    {
+        int oldest = -1;
+        for (int i = head_; i >= 0; i = tr(i).next) {
+            if (!tr(i).decided && (oldest < 0 || tr(i).last_activity < tr(oldest).last_activity)) {
+                oldest = i;
+            }
+        }
+        if (oldest >= 0) {
+            close_transfer(oldest);
+        }
     }
 
     // Room for one more: forget the transfer heard from least recently among those not

@@ -20,6 +20,8 @@
 //   --rate B/s     the pace of what it sends (default 6700: the M100's downlink); 0: unpaced
 //   --max-file     per-file quota of the inbox (default 1 GiB)
 //   --send FILE    upload FILE to SYS/COMP once started (ttctl recv-file takes it)
+//   --print-name-rules  print the code points a file name may not hold (ranges "lo hi", hex) and
+//                  exit: the name rules' character table, for comparing with Python's unicodedata
 //
 // Output: one JSON object per line on stdout, flushed: {"event": "ready", "port": N} first,
 // then file events (accepted, busy, refused, complete, failed), serving/served/serve-failed,
@@ -44,21 +46,26 @@ std::atomic<bool> g_stop{false};
 
 void on_signal(int /*sig*/) { g_stop.store(true); }
 
-// JSON string of bytes that may not be UTF-8 (each byte >= 0x80 of a bad sequence as \u00XX).
+// JSON string of bytes that may not be UTF-8 (a byte of a bad sequence as \u00XX).
 std::string json(std::string_view s)
 {
     std::string out = "\"";
-    for (unsigned char c : s) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += static_cast<char>(c);
-        } else if (c < 0x20 || c == 0x7F) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", c);
+    const auto* p = reinterpret_cast<const std::uint8_t*>(s.data());
+    for (std::size_t i = 0; i < s.size();) {
+        std::uint32_t cp = 0;
+        const std::size_t k = ttapi::link::impl::utf8_char(p, s.size(), i, cp);
+        char buf[8];
+        if (k == 0 || cp < 0x20 || cp == 0x7F) {
+            std::snprintf(buf, sizeof buf, "\\u%04x", k == 0 ? static_cast<unsigned>(p[i]) : static_cast<unsigned>(cp));
             out += buf;
-        } else {
-            out += static_cast<char>(c);
+            i += k == 0 ? 1 : k;
+            continue;
         }
+        if (cp == '"' || cp == '\\') {
+            out += '\\';
+        }
+        out.append(s.data() + i, k);
+        i += k;
     }
     out += '"';
     return out;
@@ -163,6 +170,42 @@ int main(int argc, char** argv)
             cfg.quota.overwrite = true;
         } else if (a == "--heartbeat") {
             cfg.heartbeat_interval = number();
+        } else if (a == "--print-name-rules") {
+            std::uint32_t lo = 0;
+            bool in = false;
+            for (std::uint32_t cp = 1; cp <= 0x110000; ++cp) {
+                bool refused = false;
+                if (cp < 0x110000 && (cp < 0xD800 || cp > 0xDFFF)) {
+                    std::uint8_t raw[5] = {'x'};
+                    std::size_t n = 1;
+                    if (cp < 0x80) {
+                        raw[n++] = static_cast<std::uint8_t>(cp);
+                    } else if (cp < 0x800) {
+                        raw[n++] = static_cast<std::uint8_t>(0xC0 | (cp >> 6));
+                        raw[n++] = static_cast<std::uint8_t>(0x80 | (cp & 0x3F));
+                    } else if (cp < 0x10000) {
+                        raw[n++] = static_cast<std::uint8_t>(0xE0 | (cp >> 12));
+                        raw[n++] = static_cast<std::uint8_t>(0x80 | ((cp >> 6) & 0x3F));
+                        raw[n++] = static_cast<std::uint8_t>(0x80 | (cp & 0x3F));
+                    } else {
+                        raw[n++] = static_cast<std::uint8_t>(0xF0 | (cp >> 18));
+                        raw[n++] = static_cast<std::uint8_t>(0x80 | ((cp >> 12) & 0x3F));
+                        raw[n++] = static_cast<std::uint8_t>(0x80 | ((cp >> 6) & 0x3F));
+                        raw[n++] = static_cast<std::uint8_t>(0x80 | (cp & 0x3F));
+                    }
+                    ttapi::link::Words why;
+                    refused = ttapi::link::name_problem(raw, n, why)
+                              && why.view() == "the name contains control or undecodable characters";
+                }
+                if (refused && !in) {
+                    lo = cp;
+                    in = true;
+                } else if (!refused && in) {
+                    std::printf("%x %x\n", lo, cp - 1);
+                    in = false;
+                }
+            }
+            return 0;
         } else if (a == "--send") {
             send_path = value();
         } else if (a == "--send-name") {
@@ -199,6 +242,7 @@ int main(int argc, char** argv)
         switch (e.kind) {
         case K::file:
             line = std::string("{\"event\": \"") + file_event_name(e.file) + "\", \"name\": " + json(e.name)
+                   + ", \"transfer_id\": " + std::to_string(e.transfer != nullptr ? e.transfer->id : 0)
                    + ", \"bytes\": " + std::to_string(e.size) + ", \"peer\": \"" + peer + "\", \"reason\": "
                    + json(e.reason) + ", \"resumed_bytes\": " + std::to_string(e.resumed_bytes)
                    + ", \"identical\": " + (e.identical ? "true" : "false") + ", \"seconds\": "
