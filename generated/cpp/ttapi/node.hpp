@@ -282,7 +282,7 @@ public:
 /// See the header comment.
 class Node final : public IdSource {
 public:
-    static constexpr std::size_t MAX_SOURCES = 16;  // packet receivers kept for distinct sources
+    static constexpr std::size_t MAX_SOURCES = 64;  // packet receivers kept for distinct sources (as Python's)
     static constexpr std::size_t MAX_SENDERS = 8;  // files served (or sent) at once
     static constexpr std::size_t MAX_REQUESTS = 16;  // fetch requests whose name is still arriving
     static constexpr double RETIRE_AFTER = 30.0;  // a finished sender still answers late statuses this long
