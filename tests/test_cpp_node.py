@@ -51,6 +51,7 @@ pytestmark = pytest.mark.skipif(shutil.which("g++") is None, reason="needs g++")
 
 WARN = ["-std=c++17", "-Wall", "-Wextra", "-Wpedantic", "-Werror"]
 PROGRAM = ROOT / "tests" / "cpp" / "node" / "onboard_node.cpp"
+SCHEDULER = ROOT / "tests" / "cpp" / "node" / "scheduler_driver.cpp"
 NAMES = json.loads((ROOT / "tests" / "data" / "names.json").read_text(encoding="utf-8"))["names"]
 RATE = 8000  # B/s both ways in the efficiency runs: the relay's and both ends' pace
 TABLET = (255, 190)
@@ -95,11 +96,12 @@ def bins(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
         text = text.replace(old, new)
     skeleton.write_text(text)
     inc = ["-I", str(out / "cpp"), "-I", str(skeleton.parent)]
-    exes = {"plain": tmp / "onboard_node", "asan": tmp / "onboard_node_asan"}
+    exes = {"plain": tmp / "onboard_node", "asan": tmp / "onboard_node_asan", "scheduler": tmp / "scheduler_driver"}
     with ThreadPoolExecutor(max_workers=2) as pool:
         jobs = [pool.submit(gxx, *WARN, "-O2", *inc, str(PROGRAM), "-o", str(exes["plain"])),
                 pool.submit(gxx, *WARN, "-O1", "-g", "-fsanitize=address,undefined", "-fno-sanitize-recover=all",
-                            "-fno-omit-frame-pointer", *inc, str(PROGRAM), "-o", str(exes["asan"]))]
+                            "-fno-omit-frame-pointer", *inc, str(PROGRAM), "-o", str(exes["asan"])),
+                pool.submit(gxx, *WARN, "-O1", *inc, str(SCHEDULER), "-o", str(exes["scheduler"]))]
         for job in jobs:
             job.result()
     return exes
@@ -253,6 +255,103 @@ def test_name_rules_refuse_the_characters_python_refuses(bins: dict[str, Path]) 
         else:
             want.append([cp, cp])
     assert got == [tuple(w) for w in want]
+
+
+# -- the scheduler: Python's decisions -----------------------------------------------------------
+
+def scheduler_script(rng: random.Random) -> list[str]:
+    """Random work for a scheduler: control frames (some keyed, as statuses are), telemetry,
+    bulk sources of narrow (100-byte) and wide (267-byte) data frames coming and going, and
+    packets asked for at rising times."""
+    enc = ttapi.Encoder(sysid=1, compid=240)
+    ops: list[str] = []
+    live: list[int] = []
+    now = 0.0
+    queued = 0
+    for _ in range(600):
+        r = rng.random()
+        if r < 0.15 and queued < 40:
+            msg = rng.choice([ttapi.TtCommandAck(command_id=rng.randrange(65536), result=0, progress=100),
+                              ttapi.TtFileStatus(transfer_id=rng.randrange(1, 4), result=0,
+                                                 received_contiguous=rng.randrange(10**6), range_count=1,
+                                                 ranges=[rng.randrange(100), 200] + [0] * 12),
+                              ttapi.TtLog(id=0, severity=6, text="x" * rng.randint(1, 79))])
+            key = rng.choice([0, 0, 1, 2, 3])
+            ops.append(f"C {enc.encode(msg).hex()} {key}")
+            queued += 1
+        elif r < 0.25:
+            msg = rng.choice([ttapi.Heartbeat(type=18, custom_mode=rng.randrange(2**32)),
+                              ttapi.TtOdometry(time_usec=rng.randrange(2**40), position=[rng.random(), 0, 1])])
+            ops.append(f"T {enc.encode(msg).hex()} 0")  # (Python's telemetry has no keys: the C++ one's are extra)
+        elif r < 0.3 and len(live) < 3:
+            sid = rng.randrange(1000)
+            if sid not in live:
+                live.append(sid)
+                ops.append(f"S {sid}")
+        elif r < 0.32 and live:
+            ops.append(f"R {live.pop(rng.randrange(len(live)))}")
+        elif r < 0.5 and live:
+            sid = rng.choice(live)
+            data = ttapi.TtFileDataWide(transfer_id=sid, offset=rng.randrange(10**6), data=rng.randbytes(247)) \
+                if rng.random() < 0.4 else ttapi.TtFileData(transfer_id=sid, offset=rng.randrange(10**6),
+                                                            data=rng.randbytes(80))
+            ops.append(f"B {sid} {enc.encode(data).hex()}")
+        else:
+            now += rng.choice([0.0, 0.001, 0.005, 0.015, 0.05])
+            ops.append(f"P {now!r}")
+            queued = max(0, queued - 3)
+    return ops
+
+
+def python_packets(ops: list[str], mtu: int, rate: float) -> list[str]:
+    from collections import deque
+
+    from ttctl.proto.scheduler import CONTROL, TELEMETRY, Scheduler
+
+    sched = Scheduler(mtu, rate)
+    sources: dict[int, tuple[deque[bytes], Any]] = {}
+    out = []
+    for op in ops:
+        parts = op.split()
+        if parts[0] in ("C", "T"):
+            key = int(parts[2])
+            sched.send(bytes.fromhex(parts[1]), CONTROL if parts[0] == "C" else TELEMETRY, key=key or None)
+        elif parts[0] == "S":
+            q: deque[bytes] = deque()
+
+            def pull(now: float, space: int, q: deque[bytes] = q) -> bytes | None:
+                if not q or (len(q[0]) == 100 and space < 100):
+                    return None
+                return q.popleft()
+
+            sources[int(parts[1])] = (q, pull)
+            sched.add_source(pull)
+        elif parts[0] == "R":
+            sched.remove_source(sources[int(parts[1])][1])
+        elif parts[0] == "B":
+            sources[int(parts[1])][0].append(bytes.fromhex(parts[2]))
+        else:
+            pkt = sched.next_packet(float(parts[1]))
+            out.append(pkt.hex() if pkt else "-")
+    return out
+
+
+@pytest.mark.parametrize("mtu,rate", [(100, 6700.0), (100, 0.0), (64, 500.0)])
+def test_the_scheduler_builds_the_packets_pythons_builds(bins: dict[str, Path], mtu: int, rate: float) -> None:
+    """On seeded random work (control frames keyed and not, telemetry, bulk sources coming and
+    going, narrow and wide data frames, packets asked for at paced times), the C++ scheduler
+    builds byte for byte the packets ttctl's Python one builds, at the same moments."""
+    for seed in range(4):
+        ops = scheduler_script(random.Random(seed))
+        run = subprocess.run([str(bins["scheduler"]), str(mtu), str(rate)], input="\n".join(ops) + "\n",
+                             capture_output=True, text=True, timeout=60)
+        assert run.returncode == 0, run.stderr
+        got = run.stdout.splitlines()
+        want = python_packets(ops, mtu, rate)
+        assert len(got) == len(want)
+        for i, (g, w) in enumerate(zip(got, want, strict=True)):
+            assert g == w, (seed, i, g, w)
+        assert sum(p != "-" for p in want) > 30  # packets were built, not just refused
 
 
 # -- against the emulated tablet ----------------------------------------------------------------

@@ -110,6 +110,25 @@ def test_name_rules_shared_vectors(case: dict[str, Any]) -> None:
     assert said == case["refused"]
 
 
+def test_a_keyed_control_frame_replaces_only_a_queued_frame_of_its_key() -> None:
+    """A newer status replaces the one of its key still waiting, and nothing else. (Keys once
+    tracked the queued frame's id(): once a keyed frame had left and been freed, CPython could
+    give its id to a new, unrelated frame, an ack say, which the next frame of that key then
+    replaced. Found by the C++ scheduler's differential test; an object queued twice shows it.)"""
+    from ttctl.proto.scheduler import CONTROL, Scheduler
+
+    s = Scheduler(100)
+    status = bytes(30)
+    s.send(status, CONTROL, key=("status", 1))
+    assert s.next_packet(0.0) == status
+    s.send(status, CONTROL)  # the same object, unkeyed now: its id is the one the key saw
+    s.send(b"\x01" * 30, CONTROL, key=("status", 1))
+    assert s.next_packet(0.0) == status + b"\x01" * 30
+    s.send(b"\x02" * 20, CONTROL, key=("status", 2))
+    s.send(b"\x03" * 20, CONTROL, key=("status", 2))  # replaces the queued one of its key
+    assert s.next_packet(0.0) == b"\x03" * 20
+
+
 def test_no_silent_overwrite(tmp_path: Path) -> None:
     on = tmp_path / "on"
     on.mkdir()
