@@ -52,6 +52,7 @@ pytestmark = pytest.mark.skipif(shutil.which("g++") is None, reason="needs g++")
 WARN = ["-std=c++17", "-Wall", "-Wextra", "-Wpedantic", "-Werror"]
 PROGRAM = ROOT / "tests" / "cpp" / "node" / "onboard_node.cpp"
 SCHEDULER = ROOT / "tests" / "cpp" / "node" / "scheduler_driver.cpp"
+NODE_DRIVER = ROOT / "tests" / "cpp" / "node" / "node_driver.cpp"
 NAMES = json.loads((ROOT / "tests" / "data" / "names.json").read_text(encoding="utf-8"))["names"]
 RATE = 8000  # B/s both ways in the efficiency runs: the relay's and both ends' pace
 TABLET = (255, 190)
@@ -96,12 +97,14 @@ def bins(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
         text = text.replace(old, new)
     skeleton.write_text(text)
     inc = ["-I", str(out / "cpp"), "-I", str(skeleton.parent)]
-    exes = {"plain": tmp / "onboard_node", "asan": tmp / "onboard_node_asan", "scheduler": tmp / "scheduler_driver"}
+    exes = {"plain": tmp / "onboard_node", "asan": tmp / "onboard_node_asan", "scheduler": tmp / "scheduler_driver",
+            "driver": tmp / "node_driver"}
     with ThreadPoolExecutor(max_workers=2) as pool:
         jobs = [pool.submit(gxx, *WARN, "-O2", *inc, str(PROGRAM), "-o", str(exes["plain"])),
                 pool.submit(gxx, *WARN, "-O1", "-g", "-fsanitize=address,undefined", "-fno-sanitize-recover=all",
                             "-fno-omit-frame-pointer", *inc, str(PROGRAM), "-o", str(exes["asan"])),
-                pool.submit(gxx, *WARN, "-O1", *inc, str(SCHEDULER), "-o", str(exes["scheduler"]))]
+                pool.submit(gxx, *WARN, "-O1", *inc, str(SCHEDULER), "-o", str(exes["scheduler"])),
+                pool.submit(gxx, *WARN, "-O1", *inc, str(NODE_DRIVER), "-o", str(exes["driver"]))]
         for job in jobs:
             job.result()
     return exes
@@ -352,6 +355,148 @@ def test_the_scheduler_builds_the_packets_pythons_builds(bins: dict[str, Path], 
         for i, (g, w) in enumerate(zip(got, want, strict=True)):
             assert g == w, (seed, i, g, w)
         assert sum(p != "-" for p in want) > 30  # packets were built, not just refused
+
+
+# -- the node: the Python endpoint's decisions ----------------------------------------------------
+
+def receiving_script(tmp: Path, seed: int, loss: float, size: int) -> tuple[list[str], list[str]]:
+    """A Python tablet (Endpoint 255/190, seeded) uploads a file and sends commands to a Python
+    onboard Endpoint (1/240, paced at 6700 B/s) over a channel that loses `loss` of the packets
+    either way, in virtual time (5 ms steps). Returns the onboard end's input as a node_driver
+    script, and what it sent at each poll."""
+    from ttctl.proto.endpoint import Endpoint
+    from ttctl.proto.storage import BytesSource, ReceiveDir
+
+    b = shipped_bindings()
+    rng = random.Random(seed)
+    tx = Endpoint(b, *TABLET, rate_Bps=500.0, rng=random.Random(seed))
+    rx = Endpoint(b, 1, 240, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp / "python"))
+    data = random.Random(seed + 1).randbytes(size)
+    sender = tx.send_file("f.bin", (1, 240), source=BytesSource(data, "f.bin"))
+    script: list[str] = []
+    sent: list[str] = []
+    now = 0.0
+    commands = 0
+    while not sender.done and now < 300:
+        if commands < 6 and rng.random() < 0.01:
+            tx.command(b.TtActionCommand(action=commands % 5), (1, 240))
+            commands += 1
+        while (pkt := tx.poll(now)) is not None:
+            if rng.random() >= loss:
+                script.append(f"R {now!r} {pkt.hex()}")
+                rx.receive(now, pkt)
+        out = []
+        while (pkt := rx.poll(now)) is not None:
+            out.append(pkt)
+        script.append(f"P {now!r}")
+        sent.append(" ".join(p.hex() for p in out) or "-")
+        for pkt in out:
+            if rng.random() >= loss:
+                tx.receive(now, pkt)
+        now = round(now + 0.005, 6)
+    assert sender.result is not None and sender.result.ok, sender.result
+    assert (tmp / "python" / "f.bin").read_bytes() == data
+    return script, sent
+
+
+def shipped_bindings() -> Any:
+    from conftest import shipped
+
+    return shipped()
+
+
+@pytest.mark.parametrize("seed,loss", [(1, 0.1), (2, 0.25)])
+def test_the_node_answers_what_pythons_endpoint_answers(bins: dict[str, Path], tmp_path: Path, seed: int,
+                                                        loss: float) -> None:
+    """The C++ node and ttctl's Python Endpoint, as the onboard end of an upload with commands
+    over a lossy channel in virtual time, given the same packets at the same moments, send the
+    same packets byte for byte at the same moments: the same statuses (when, how many, which
+    gaps, hold times), the same acks, the same pacing; and store the same file."""
+    script, want = receiving_script(tmp_path, seed, loss, 20_000)
+    run = subprocess.run([str(bins["driver"]), str(tmp_path / "cpp"), "-", "6700"], input="\n".join(script) + "\n",
+                         capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr
+    got = run.stdout.splitlines()
+    assert len(got) == len(want)
+    polls = [line for line in script if line.startswith("P")]
+    for i, (g, w) in enumerate(zip(got, want, strict=True)):
+        assert g == w, (i, polls[i], g, w)
+    assert (tmp_path / "cpp" / "f.bin").read_bytes() == (tmp_path / "python" / "f.bin").read_bytes()
+    assert sum(w != "-" for w in want) > 20
+
+
+@pytest.mark.parametrize("seed,loss", [(3, 0.02), (4, 0.1), (5, 0.25)])
+def test_the_node_serves_what_pythons_endpoint_serves(bins: dict[str, Path], tmp_path: Path, seed: int,
+                                                      loss: float) -> None:
+    """Two worlds in virtual time, alike but for the onboard end: a Python tablet fetches a file
+    (TT_FILE_REQUEST) over a channel that loses `loss` of the packets either way, from ttctl's
+    Python Endpoint in one world and from the C++ node (drawing the same transfer ids) in the
+    other. At every 5 ms step both onboard ends send the same packets byte for byte: the same
+    offers, the same narrow and wide data frames chosen from the same loss estimates, the same
+    repeats, at the same pace; and both fetches complete."""
+    from ttctl.proto.endpoint import Endpoint
+    from ttctl.proto.storage import ReceiveDir
+
+    b = shipped_bindings()
+    serve = write(tmp_path / "serve" / "s.bin", 30_000, seed).parent
+    onboard_seed = seed + 100
+    draws = random.Random(onboard_seed)
+    draws.randint(1, 65535)  # the endpoint's first command id: its first draw
+    ids = [draws.getrandbits(32) for _ in range(8)]
+    drv = subprocess.Popen([str(bins["driver"]), str(tmp_path / "cpp_in"), str(serve), "6700"], stdin=subprocess.PIPE,
+                           stdout=subprocess.PIPE, text=True)
+    assert drv.stdin is not None and drv.stdout is not None
+    for i in ids:
+        drv.stdin.write(f"I {i}\n")
+    onboard = Endpoint(b, 1, 240, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp_path / "py_in"), serve_dir=str(serve),
+                       rng=random.Random(onboard_seed))
+    worlds = []
+    for name in ("python", "cpp"):
+        done: list[bool] = []
+        tab = Endpoint(b, *TABLET, rate_Bps=500.0, receive_dir=ReceiveDir(tmp_path / f"tablet_{name}"),
+                       unsolicited=False, accept_commands=False, rng=random.Random(seed),
+                       on_event=lambda what, obj, done=done: done.append(True) if what == "file-complete" else None)
+        tab.request_file("s.bin", (1, 240))
+        worlds.append((name, tab, random.Random(seed), done))
+    now = 0.0
+    steps = sent = wide = 0
+    try:
+        while not all(w[3] for w in worlds) and now < 120:
+            outs = {}
+            for name, tab, lose, _ in worlds:
+                while (pkt := tab.poll(now)) is not None:
+                    if lose.random() >= loss:
+                        if name == "python":
+                            onboard.receive(now, pkt)
+                        else:
+                            drv.stdin.write(f"R {now!r} {pkt.hex()}\n")
+                if name == "python":
+                    out = []
+                    while (pkt := onboard.poll(now)) is not None:
+                        out.append(pkt)
+                else:
+                    drv.stdin.write(f"P {now!r}\n")
+                    drv.stdin.flush()
+                    line = drv.stdout.readline().strip()
+                    out = [] if line == "-" else [bytes.fromhex(h) for h in line.split()]
+                outs[name] = out
+                for pkt in out:
+                    if lose.random() >= loss:
+                        tab.receive(now, pkt)
+            assert outs["cpp"] == outs["python"], (now, [p.hex() for p in outs["cpp"]],
+                                                   [p.hex() for p in outs["python"]])
+            sent += len(outs["python"])
+            wide += sum(p.count(bytes.fromhex("59c300")) for p in outs["python"])  # TT_FILE_DATA_WIDE's msgid
+            steps += 1
+            now = round(now + 0.005, 6)
+    finally:
+        drv.stdin.close()
+        drv.wait(20)
+    assert all(w[3] for w in worlds), "a fetch did not complete"
+    for name in ("python", "cpp"):
+        assert (tmp_path / f"tablet_{name}" / "s.bin").read_bytes() == (serve / "s.bin").read_bytes()
+    assert sent > 300 and steps > 300
+    assert (wide > 20) == (loss < 0.05), wide  # little loss: wide frames (the choice is the same too)
 
 
 # -- against the emulated tablet ----------------------------------------------------------------

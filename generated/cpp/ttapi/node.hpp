@@ -186,6 +186,9 @@ struct NodeConfig {
     /// Seconds of silence after which a half-received frame spanning packets is given up and
     /// what the packets held is delivered (0: three times the usual gap between packets).
     double quiet = 0.0;
+    /// Where transfer ids come from (empty: 32 random bits from std::random_device's seed). For
+    /// tests that replay another end's choices; a 0 or an id in use is drawn again.
+    std::function<std::uint32_t()> new_id;
 };
 
 /// Something a node's user may want to know (log it, count it).
@@ -599,7 +602,7 @@ public:
     std::uint32_t new_id() override
     {
         for (;;) {
-            const auto n = static_cast<std::uint32_t>(rng_());
+            const auto n = cfg_.new_id ? cfg_.new_id() : static_cast<std::uint32_t>(rng_());
             bool taken = n == 0;
             for (std::size_t i = 0; i < MAX_SENDERS && !taken; ++i) {
                 taken = senders_[i].active() && senders_[i].id() == n;
