@@ -95,7 +95,7 @@ def sha(path: Path) -> str:
 def test_the_osdk_program_against_the_emulated_tablet(built: dict[str, Path], tmp_path: Path, start: Start) -> None:
     (tmp_path / "outbox").mkdir()
     served = tmp_path / "outbox" / "log.bin"
-    served.write_bytes(random.Random(1).randbytes(12_000))
+    served.write_bytes(random.Random(1).randbytes(5000))
     up = tmp_path / "up.bin"
     up.write_bytes(random.Random(2).randbytes(1200))
     b = free_port()
