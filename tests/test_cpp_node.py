@@ -949,3 +949,81 @@ def test_hostile_input_under_asan(bins: dict[str, Path], tmp_path: Path, start: 
     escaped = [p for p in tmp_path.rglob("*") if p.is_file() and inbox not in p.parents
                and p.suffix not in (".out", ".err", ".bin")]
     assert escaped == [], escaped
+
+
+# -- a user's dialect ------------------------------------------------------------------------------
+
+ROBOLAB_MAIN = r"""#include <atomic>
+#include <csignal>
+#include <cstdio>
+
+#include "onboard/robolab_plugin.hpp"
+#include "robolab/udp_link.hpp"
+
+static std::atomic<bool> stop{false};
+
+int main(int argc, char** argv)
+{
+    robolab::link::NodeConfig cfg;
+    cfg.inbox = "inbox";
+    robolab::link::Node node(cfg);
+    robolab::onboard::RobolabPlugin plugin;
+    node.add(plugin);
+    robolab::link::Words why;
+    robolab::link::UdpLink udp(node);
+    if (argc != 2 || !node.start(why) || !udp.open(argv[1], why)) {
+        std::fprintf(stderr, "%s\n", why.c_str());
+        return 1;
+    }
+    std::printf("%u\n", static_cast<unsigned>(udp.local_port()));
+    std::fflush(stdout);
+    std::signal(SIGTERM, [](int) { stop = true; });
+    udp.run(stop);
+    return 0;
+}
+"""
+ROBOLAB_REPLY = ("        // TODO: handle KR_MOTOR_CONTROL (from system frame.sysid, component frame.compid); "
+                 "ctx.send(...) replies",
+                 """        KrMotorStatus st;
+        st.target_system = frame.sysid;
+        st.seq = msg.seq;
+        st.dir = msg.dir;
+        st.speed = msg.speed;
+        st.rpm = 12.5f * static_cast<float>(msg.speed);
+        ctx.send(st);""")
+
+
+def test_a_users_dialect_that_includes_ttapi_gets_the_node(tmp_path: Path) -> None:
+    """dialects/examples/robolab.xml (ttapi.xml included, messages of its own): the node is
+    generated in its namespace, the skeleton's KR_MOTOR_CONTROL handler answers with
+    KR_MOTOR_STATUS, and the emulated tablet with --dialect gets the answer and sends a file."""
+    xml = ROOT / "dialects" / "examples" / "robolab.xml"
+    out = tmp_path / "out"
+    proc = run_ttctl("gen", str(xml), "--lang", "cpp", "-o", str(out), timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    cpp = out / "cpp"
+    assert (cpp / "robolab" / "node.hpp").is_file()
+    skeleton = cpp / "onboard" / "robolab_plugin.hpp"
+    text = skeleton.read_text()
+    assert ROBOLAB_REPLY[0] in text
+    skeleton.write_text(text.replace(*ROBOLAB_REPLY))
+    (tmp_path / "main.cpp").write_text(ROBOLAB_MAIN)
+    gxx(*WARN, "-O1", "-I", str(cpp), str(tmp_path / "main.cpp"), "-o", str(tmp_path / "robolab_node"))
+    prog = subprocess.Popen([str(tmp_path / "robolab_node"), f"udpin:{LOCAL}:0"], cwd=tmp_path, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+    try:
+        assert prog.stdout is not None
+        port = int(prog.stdout.readline())
+        (tmp_path / "up.bin").write_bytes(random.Random(1).randbytes(3000))
+        (tmp_path / "drive.yaml").write_text(
+            "- msg: {send: KR_MOTOR_CONTROL seq=1 dir=FORWARD speed=40, until: KR_MOTOR_STATUS.seq == 1, timeout: 20}\n"
+            "- wait: {until: KR_MOTOR_STATUS.rpm >= 500, timeout: 5}\n"
+            "- send: up.bin\n")
+        run = run_ttctl("emulate", "tablet", "--dialect", str(xml), "--to", f"udpout:{LOCAL}:{port}", "--rate", "8000",
+                        "--script", "drive.yaml", cwd=tmp_path, timeout=90)
+        assert run.returncode == 0, run.stdout + run.stderr
+        assert "answered after" in run.stdout and "up.bin: 3000 bytes delivered and verified" in run.stdout
+        assert (tmp_path / "inbox" / "up.bin").read_bytes() == (tmp_path / "up.bin").read_bytes()
+    finally:
+        prog.send_signal(signal.SIGTERM)
+        assert prog.wait(20) == 0
