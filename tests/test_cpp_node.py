@@ -843,19 +843,26 @@ def test_garbage_and_strangers_change_nothing_and_memory_stays_bounded(bins: dic
 
 
 def test_a_signed_link_works_and_a_wrong_key_is_refused(bins: dict[str, Path], tmp_path: Path, nodes: Any) -> None:
-    """The node with --key and `send-file --key` with the same passphrase: the upload works, its
-    frames signed. Another key, or none: nothing is accepted, the node counts the refused
-    frames and says once that it refuses that peer."""
+    """The node with --key and `send-file --key` with the same passphrase: an upload and a fetch
+    work, every frame signed both ways. Another key, or none: nothing is accepted, the node
+    counts the refused frames and says once that it refuses that peer."""
     (tmp_path / "key").write_text("our secret\n")
     (tmp_path / "other").write_text("not our secret\n")
     inbox = tmp_path / "inbox"
     src = write(tmp_path / "s.bin", 12_000, 8)
-    node = nodes(bins["plain"], tmp_path, "node", "--listen", f"udpin:{LOCAL}:0", "--inbox", str(inbox), "--key",
-                 str(tmp_path / "key"))
+    served = write(tmp_path / "serve" / "d.bin", 12_000, 9)
+    node = nodes(bins["plain"], tmp_path, "node", "--listen", f"udpin:{LOCAL}:0", "--inbox", str(inbox), "--serve",
+                 str(served.parent), "--key", str(tmp_path / "key"), "--rate", "8000")
     to = f"udpout:{LOCAL}:{node.port}"
     proc, r = send(str(src), "--to", to, "--rate", "8000", "--key", str(tmp_path / "key"), timeout=60)
     assert proc.returncode == 0 and r["ok"], proc.stderr
     assert sha(inbox / "s.bin") == sha(src)
+    # served signed: 113-byte data frames span two packets, signed as they are placed, nothing between
+    (tmp_path / "got").mkdir()
+    proc, f = send("d.bin", "--from", to, "--dir", str(tmp_path / "got"), "--rate", "8000", "--key",
+                   str(tmp_path / "key"), timeout=60)
+    assert proc.returncode == 0 and f["ok"], proc.stderr
+    assert sha(tmp_path / "got" / "d.bin") == sha(served)
     for key in (["--key", str(tmp_path / "other")], []):
         proc, r = send(str(src), "--to", to, "--name", "t.bin", "--rate", "8000", "--timeout", "2", *key, timeout=60)
         assert proc.returncode == 1 and r["code"] == "TIMEOUT", proc.stderr
@@ -949,6 +956,30 @@ def test_hostile_input_under_asan(bins: dict[str, Path], tmp_path: Path, start: 
     escaped = [p for p in tmp_path.rglob("*") if p.is_file() and inbox not in p.parents
                and p.suffix not in (".out", ".err", ".bin")]
     assert escaped == [], escaped
+
+
+def test_several_transfers_at_once(bins: dict[str, Path], tmp_path: Path, start: Start, nodes: Any) -> None:
+    """Three uploads from three send-file processes (the same MAVLink ids, other transfer ids)
+    and a fetch, all at once: each arrives whole; the data of one never lands in another."""
+    inbox = tmp_path / "inbox"
+    served = write(tmp_path / "serve" / "d.bin", 16_000, 20)
+    node = nodes(bins["plain"], tmp_path, "node", "--listen", f"udpin:{LOCAL}:0", "--inbox", str(inbox), "--serve",
+                 str(served.parent), "--rate", "20000")
+    to = f"udpout:{LOCAL}:{node.port}"
+    srcs = [write(tmp_path / f"u{i}.bin", 16_000, 21 + i) for i in range(3)]
+    ups = [start(f"send{i}", "send-file", str(s), "--to", to, "--rate", "6000", "--json") for i, s in enumerate(srcs)]
+    (tmp_path / "got").mkdir()
+    fetch = start("fetch", "send-file", "d.bin", "--from", to, "--dir", str(tmp_path / "got"), "--rate", "6000",
+                  "--json")
+    for proc in [*ups, fetch]:
+        assert proc.wait(60) == 0, proc.stderr
+        assert json.loads(proc.stdout)["ok"]
+    for s in srcs:
+        assert sha(inbox / s.name) == sha(s)
+    assert sha(tmp_path / "got" / "d.bin") == sha(served)
+    accepted = node.events("accepted")
+    assert len({e["transfer_id"] for e in accepted}) == 3
+    node.stop()
 
 
 # -- a user's dialect ------------------------------------------------------------------------------

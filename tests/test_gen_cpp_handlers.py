@@ -5,10 +5,13 @@ the node's). Its comments list each message's fields and show the program around
 g++ -Werror as a user would edit it: the DJI_POSE_STAMPED handler echoes the pose, on_command
 accepts and counts; packets go through the node sans-IO (no socket) and what comes out is read
 back by ttctl's Python bindings: the ack (the same for a retry, the action run once), the echo,
-the heartbeat. Receiving, dispatching, replying and building packets allocate nothing."""
+the heartbeat; a file. Receiving, dispatching, replying, acking, storing file data, reporting it
+(statuses) and building packets allocate nothing (accepting an offer and completing a file may:
+paths, the folder's size for its quota)."""
 
 from __future__ import annotations
 
+import hashlib
 import shutil
 import subprocess
 from pathlib import Path
@@ -63,39 +66,48 @@ void* operator new(std::size_t n)
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
-int main()
+int main(int argc, char** argv)
 {
     ttapi::link::NodeConfig cfg;
     cfg.compid = 191;
+    cfg.inbox = argc > 1 ? argv[1] : "inbox";
     ttapi::link::Node node(cfg);
     ttapi::onboard::TtapiPlugin plugin;
     node.add(plugin);
-    static std::uint8_t input[64][128];
-    std::size_t sizes[64];
-    std::size_t count = 0;
-    std::string line;
-    while (count < 64 && std::getline(std::cin, line)) {
-        sizes[count] = line.size() / 2;
-        for (std::size_t i = 0; i < sizes[count]; ++i) {
-            input[count][i] = static_cast<std::uint8_t>(std::stoul(line.substr(2 * i, 2), nullptr, 16));
-        }
-        ++count;
+    ttapi::link::Words why;
+    if (!node.start(why)) {
+        std::fprintf(stderr, "%s\n", why.c_str());
+        return 1;
     }
-    static std::uint8_t out[256][100];
-    std::size_t out_len[256];
+    // Lines: a phase letter and a packet's hex. Phase A (commands, replies, data frames) is
+    // counted; phase S (an offer being accepted: paths, a look at the folder) and phase C (the
+    // file completing) are not.
+    static std::uint8_t out[1024][100];
+    static std::size_t out_len[1024];
     std::size_t sent = 0;
     std::size_t delivered = 0;
-    const std::size_t before = allocations;
-    for (std::size_t k = 0; k < count; ++k) {
-        delivered += node.receive(1.0, input[k], sizes[k]);
-    }
-    for (double t = 1.0; t < 2.0 && sent < 256; t += 0.01) {
-        while (sent < 256 && (out_len[sent] = node.poll(t, out[sent])) != 0) {
-            ++sent;
+    std::size_t counted = 0;
+    double t = 1.0;
+    std::string line;
+    std::uint8_t packet[128];
+    while (std::getline(std::cin, line)) {
+        const char phase = line[0];
+        const std::size_t n = (line.size() - 2) / 2;
+        for (std::size_t i = 0; i < n; ++i) {
+            packet[i] = static_cast<std::uint8_t>(std::stoul(line.substr(2 + 2 * i, 2), nullptr, 16));
+        }
+        const std::size_t before = allocations;
+        delivered += node.receive(t, packet, n);
+        for (double end = t + 0.3; t < end && sent < 1024; t += 0.01) {
+            while (sent < 1024 && (out_len[sent] = node.poll(t, out[sent])) != 0) {
+                ++sent;
+            }
+        }
+        if (phase == 'A') {
+            counted += allocations - before;
         }
     }
-    const std::size_t during = allocations - before;
-    std::printf("delivered %zu executed %d allocations %zu\n", delivered, plugin.executed, during);
+    std::printf("delivered %zu executed %d allocations %zu\n", delivered, plugin.executed, counted);
     for (std::size_t i = 0; i < sent; ++i) {
         for (std::size_t k = 0; k < out_len[i]; ++k) {
             std::printf("%02x", static_cast<unsigned>(out[i][k]));
@@ -150,12 +162,23 @@ def test_handlers_reply_and_commands_run_once_through_the_node(skeleton: Path, t
     stranger = ttapi.TtActionCommand(target_system=9, command_id=1)  # for another vehicle: ignored
     frames = (ttapi.encode(other, 0, 255, 190) + ttapi.encode(cmd, 1, 255, 190) + ttapi.encode(pose, 2, 255, 190)
               + ttapi.encode(cmd, 3, 255, 190) + ttapi.encode(stranger, 4, 255, 190))
-    packets = [frames[i:i + 100] for i in range(0, len(frames), 100)]
-    run = subprocess.run([str(exe)], input="".join(p.hex() + "\n" for p in packets), capture_output=True, text=True,
-                         timeout=60)
+    lines_in = ["A " + frames[i:i + 100].hex() for i in range(0, len(frames), 100)]
+    # a file: its offer accepted (not counted), its data stored and reported (counted), its end
+    payload = bytes(range(256)) * 8
+    meta = hashlib.sha256(payload).digest() + b"f.bin"
+    enc = ttapi.Encoder(sysid=255, compid=190)
+    lines_in.append("S " + enc.encode(ttapi.TtFileOffer(
+        target_system=1, target_component=191, transfer_id=77, size=len(payload), meta_length=len(meta),
+        meta_offset=0, meta=meta)).hex())  # one part: the name is short
+    chunks = [enc.encode(ttapi.TtFileData(transfer_id=77, offset=o, data=payload[o:o + 80]))
+              for o in range(0, len(payload), 80)]
+    lines_in += ["A " + c.hex() for c in chunks[:-1]] + ["C " + chunks[-1].hex()]
+    run = subprocess.run([str(exe), str(tmp_path / "inbox")], input="".join(x + "\n" for x in lines_in),
+                         capture_output=True, text=True, timeout=60)
     assert run.returncode == 0, run.stderr
     lines = run.stdout.splitlines()
-    assert lines[0] == "delivered 5 executed 1 allocations 0", lines
+    assert lines[0] == f"delivered {5 + 1 + len(chunks)} executed 1 allocations 0", lines
+    assert (tmp_path / "inbox" / "f.bin").read_bytes() == payload
     assert all(len(bytes.fromhex(p)) <= 100 for p in lines[1:])
     replies = ttapi.Parser().feed(b"".join(bytes.fromhex(p) for p in lines[1:]))
     acks = [m for m in replies if isinstance(m, ttapi.TtCommandAck)]
@@ -170,3 +193,6 @@ def test_handlers_reply_and_commands_run_once_through_the_node(skeleton: Path, t
     assert beats and beats[0].type == ttapi.MavType.MAV_TYPE_ONBOARD_CONTROLLER
     # control frames (acks, replies) leave ahead of telemetry (the heartbeat)
     assert replies.index(beats[0]) > replies.index(acks[0])
+    statuses = [m for m in replies if isinstance(m, ttapi.TtFileStatus)]
+    assert statuses[0].result == ttapi.TtFileResult.TT_FILE_RESULT_IN_PROGRESS
+    assert statuses[-1].result == ttapi.TtFileResult.TT_FILE_RESULT_COMPLETE
