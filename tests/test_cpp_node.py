@@ -921,6 +921,16 @@ def test_hostile_input_under_asan(bins: dict[str, Path], tmp_path: Path, start: 
                 assert reasons and reasons[0].text == reason_fit(case["refused"]), (case, reasons)
         for name in stored:
             assert (inbox / name).read_bytes() == b"data", name
+        # links someone left in the inbox: through a directory link, and a dangling file link
+        (inbox / "esc").symlink_to(jail / "outside", target_is_directory=True)
+        (inbox / "dangling.bin").symlink_to(jail / "outside" / "planted.bin")
+        for tid, name, code in ((9101, b"esc/x.bin", ttapi.TtFileResult.TT_FILE_RESULT_REFUSED_NAME),
+                                (9102, b"dangling.bin", ttapi.TtFileResult.TT_FILE_RESULT_REFUSED_EXISTS)):
+            raw.frames(*offer_frames(name, b"data", tid))
+            got = answer(tid)
+            assert [m.result for m in got if isinstance(m, ttapi.TtFileStatus) and m.transfer_id == tid][:1] == [code]
+        assert [m.text for m in got if isinstance(m, ttapi.TtFileReason)][:1] == [
+            "dangling.bin exists here and is a symbolic link"]
         # beyond the quota
         raw.frames(*offer_frames(b"big.bin", b"", 9001, size=100_001))
         got = answer(9001)
