@@ -5,8 +5,8 @@
 // command server (commands.hpp) and file transfer (transfer.hpp: receiving into a jail folder,
 // serving fetches) to one link, as ttctl's Python end (proto/endpoint.py) does, with the same
 // decisions. It also sends a HEARTBEAT every second (so that `ttctl emulate tablet` and ground
-// stations see the vehicle), runs your periodic work, and dispatches every other message to your
-// handlers, which reply through their NodeContext.
+// stations see the vehicle), runs your periodic work, and dispatches every message addressed to
+// this end to your handlers (after its own part), which reply through their NodeContext.
 //
 // A Node is sans-IO: receive() takes packets, poll() gives the next packet the pacer lets go,
 // wakeup() says when to call again. A driver owns the clock and the transport:
