@@ -66,24 +66,29 @@ def tree(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
 def test_headers_and_skeleton_compile_warning_free(tree: dict[str, Any]) -> None:
     out: Path = tree["out"]
     cpp = out / "cpp"
-    headers = [cpp / "ttapi" / h for h in ("runtime.hpp", "enums.hpp", "messages.hpp", "ttapi.hpp")]
+    headers = [cpp / "ttapi" / h for h in ("runtime.hpp", "enums.hpp", "messages.hpp", "ttapi.hpp", "sha256.hpp",
+                                           "scheduler.hpp", "commands.hpp", "transfer.hpp", "node.hpp",
+                                           "udp_link.hpp")]
     plugin = cpp / "onboard" / "ttapi_plugin.hpp"
     # each header on its own; stricter than required, as onboard code bases often are
     gxx(*WARN, "-Wshadow", "-Wconversion", "-Wsign-conversion", "-fsyntax-only", "-I", str(cpp), "-x", "c++",
         *map(str, [*headers, plugin]))
-    # the plugin binds exactly one handler per message the onboard end receives
+    # the plugin binds exactly one handler per message the onboard end receives, but for
+    # TT_ACTION_COMMAND: the node's command server runs the plugin's on_command() for it
     expected = receives(tree["model"], "onboard")
-    assert expected
-    checks = "\n".join(f"    ok = ok && d.handler_count({m.id}u) == 1;" for m in expected)
+    assert "TT_ACTION_COMMAND" in [m.name for m in expected]
+    checks = "\n".join(f"    ok = ok && d.handler_count({m.id}u) == {0 if m.name == 'TT_ACTION_COMMAND' else 1};"
+                       for m in expected)
     main = tree["tmp"] / "plugin_main.cpp"
     main.write_text(f"""#include "onboard/ttapi_plugin.hpp"
 
 int main()
 {{
-    ttapi::Dispatcher d;
+    ttapi::link::Node node(ttapi::link::NodeConfig{{}});
     ttapi::onboard::TtapiPlugin plugin;
-    ttapi::Plugin& base = plugin;
-    base.register_handlers(d);
+    ttapi::link::NodePlugin& base = plugin;
+    node.add(base);
+    const ttapi::Dispatcher& d = node.dispatcher();
     bool ok = true;
 {checks}
     return ok ? 0 : 1;
@@ -94,7 +99,8 @@ int main()
     assert subprocess.run([str(exe)], timeout=30).returncode == 0
     text = plugin.read_text()
     for m in expected:
-        assert f"void on_{m.name.lower()}(" in text
+        assert (f"void on_{m.name.lower()}(" in text) == (m.name != "TT_ACTION_COMMAND")
+    assert "link::CommandOutcome on_command(" in text
     assert "do not edit" not in text  # a skeleton is the user's
 
 
@@ -103,7 +109,8 @@ def test_generated_files_are_formatted(tree: dict[str, Any]) -> None:
     files = sorted(p for p in cpp.rglob("*") if p.is_file())
     assert {p.relative_to(cpp).as_posix() for p in files} == {
         "ttapi/runtime.hpp", "ttapi/enums.hpp", "ttapi/messages.hpp", "ttapi/ttapi.hpp", "ttapi/signing.hpp",
-        "ttapi/packets.hpp", "ttapi/udp_forward.hpp", "conformance.cpp", "onboard/ttapi_plugin.hpp"}
+        "ttapi/packets.hpp", "ttapi/udp_forward.hpp", "ttapi/sha256.hpp", "ttapi/scheduler.hpp", "ttapi/commands.hpp",
+        "ttapi/transfer.hpp", "ttapi/node.hpp", "ttapi/udp_link.hpp", "conformance.cpp", "onboard/ttapi_plugin.hpp"}
     for p in files:
         lines = p.read_text().split("\n")
         assert lines[-1] == "" and lines[-2] != "", p  # exactly one final newline

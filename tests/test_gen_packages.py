@@ -194,6 +194,7 @@ CPP_MAIN = r"""#include <cstdint>
 
 #include "myco/drone/ttapi.hpp"
 #include "myco/drone/udp_forward.hpp"  // compiles in the namespace too
+#include "myco/drone/udp_link.hpp"
 #include "onboard/ttapi_plugin.hpp"
 
 namespace {
@@ -217,10 +218,11 @@ int main()
         std::printf("%02x", static_cast<unsigned>(buf[i]));
     }
     std::printf("\n");
-    drone::Dispatcher dispatcher;
+    drone::link::Node node(drone::link::NodeConfig{});
     drone::onboard::TtapiPlugin plugin;
-    drone::Plugin& base = plugin;
-    base.register_handlers(dispatcher);
+    drone::link::NodePlugin& base = plugin;
+    node.add(base);
+    drone::Dispatcher dispatcher;
     int seen = 0;
     dispatcher.on<drone::TtCommandAck>([&seen](const drone::TtCommandAck& m, const drone::Frame&) {
         seen += m.command_id == 42 ? 1 : 0;
@@ -238,12 +240,17 @@ def test_cpp_namespace_builds_and_runs(tmp_path: Path) -> None:
     cpp = out / "cpp"
     assert {p.relative_to(cpp).as_posix() for p in cpp.rglob("*") if p.is_file()} == {
         "myco/drone/runtime.hpp", "myco/drone/enums.hpp", "myco/drone/messages.hpp", "myco/drone/ttapi.hpp",
-        "myco/drone/signing.hpp", "myco/drone/packets.hpp", "myco/drone/udp_forward.hpp", "conformance.cpp",
-        "onboard/ttapi_plugin.hpp"}
+        "myco/drone/signing.hpp", "myco/drone/packets.hpp", "myco/drone/udp_forward.hpp", "myco/drone/sha256.hpp",
+        "myco/drone/scheduler.hpp", "myco/drone/commands.hpp", "myco/drone/transfer.hpp", "myco/drone/node.hpp",
+        "myco/drone/udp_link.hpp", "conformance.cpp", "onboard/ttapi_plugin.hpp"}
     for name in ("runtime", "enums", "messages"):
         text = (cpp / "myco" / "drone" / f"{name}.hpp").read_text()
         assert f"#ifndef TTCTL_MYCO_DRONE_{name.upper()}_HPP" in text
         assert "namespace myco::drone {" in text and "namespace ttapi" not in text
+    for name in ("scheduler", "commands", "transfer", "node", "udp_link"):
+        text = (cpp / "myco" / "drone" / f"{name}.hpp").read_text()
+        assert f"#ifndef TTCTL_MYCO_DRONE_{name.upper()}_HPP" in text
+        assert "namespace myco::drone::link {" in text and "namespace ttapi" not in text
     assert "namespace myco::drone::onboard {" in (cpp / "onboard" / "ttapi_plugin.hpp").read_text()
     main = tmp_path / "main.cpp"
     main.write_text(CPP_MAIN)

@@ -4,6 +4,7 @@ double execution, failure after retries)."""
 
 from __future__ import annotations
 
+import json
 import os
 import random
 import shutil
@@ -14,10 +15,11 @@ from typing import Any
 import pytest
 
 import ttapi
-from conftest import shipped
+from conftest import ROOT, shipped
 from ttctl.link.model import Channel, Impairments, load_profile
 from ttctl.link.sim import Simulation
 from ttctl.proto.endpoint import Endpoint
+from ttctl.proto.names import Refused
 from ttctl.proto.storage import BytesSource, Quota, ReceiveDir, check_name
 from ttctl.proto.transfer import TransferConfig
 
@@ -83,6 +85,48 @@ def test_check_name_accepts_plain_relative_paths() -> None:
     assert check_name("missions/day1/route.yaml") == "missions/day1/route.yaml"
     assert check_name("ünïcode.txt") == "ünïcode.txt"
     assert check_name("x" * 223) == "x" * 223
+
+
+NAME_VECTORS = json.loads((ROOT / "tests" / "data" / "names.json").read_text(encoding="utf-8"))["names"]
+
+
+@pytest.mark.parametrize("case", NAME_VECTORS, ids=[c["what"] for c in NAME_VECTORS])
+def test_name_rules_shared_vectors(case: dict[str, Any]) -> None:
+    """tests/data/names.json, the name vectors every runtime's tests read (the C++ node's in
+    test_cpp_node.py): what the receiver decides of the name bytes an offer carries (strict
+    UTF-8, then check_name), in the same words."""
+    raw = bytes.fromhex(case["hex"])
+    try:
+        name = raw.decode("utf-8")
+    except UnicodeDecodeError:
+        assert case["refused"] == "the name is not valid UTF-8"
+        return
+    try:
+        check_name(name)
+        said = None
+    except Refused as e:
+        assert e.code == "NAME"
+        said = e.reason
+    assert said == case["refused"]
+
+
+def test_a_keyed_control_frame_replaces_only_a_queued_frame_of_its_key() -> None:
+    """A newer status replaces the one of its key still waiting, and nothing else. (Keys once
+    tracked the queued frame's id(): once a keyed frame had left and been freed, CPython could
+    give its id to a new, unrelated frame, an ack say, which the next frame of that key then
+    replaced. Found by the C++ scheduler's differential test; an object queued twice shows it.)"""
+    from ttctl.proto.scheduler import CONTROL, Scheduler
+
+    s = Scheduler(100)
+    status = bytes(30)
+    s.send(status, CONTROL, key=("status", 1))
+    assert s.next_packet(0.0) == status
+    s.send(status, CONTROL)  # the same object, unkeyed now: its id is the one the key saw
+    s.send(b"\x01" * 30, CONTROL, key=("status", 1))
+    assert s.next_packet(0.0) == status + b"\x01" * 30
+    s.send(b"\x02" * 20, CONTROL, key=("status", 2))
+    s.send(b"\x03" * 20, CONTROL, key=("status", 2))  # replaces the queued one of its key
+    assert s.next_packet(0.0) == b"\x03" * 20
 
 
 def test_no_silent_overwrite(tmp_path: Path) -> None:

@@ -4,8 +4,16 @@ a conformance program, and an onboard handler-plugin skeleton.
 Layout under the output root (<ident>: the dialect's identifier; with --cpp-namespace a::b the
 headers go to cpp/a/b/ instead of cpp/<ident>/):
   cpp/<ident>/runtime.hpp     CRC, little-endian helpers, framing, Parser, Outbox, Dispatcher, Plugin
-  cpp/<ident>/signing.hpp     SHA-256 and MAVLink 2 signing (included by runtime.hpp)
+  cpp/<ident>/sha256.hpp      SHA-256 (signing and the file transfer's checks)
+  cpp/<ident>/signing.hpp     MAVLink 2 signing (included by runtime.hpp)
   cpp/<ident>/packets.hpp     Packetizer and the packet-aware PacketReceiver (included by runtime.hpp)
+  cpp/<ident>/scheduler.hpp   link::Scheduler: paced priorities, frames signed as they are placed
+For a dialect that carries ttctl's runtime messages (it includes ttapi.xml), the onboard end of
+the link, in namespace <ns>::link:
+  cpp/<ident>/commands.hpp    the command server: each command executed once, acks recorded
+  cpp/<ident>/transfer.hpp    file transfer (POSIX): the jail folder, resume, serving fetches
+  cpp/<ident>/node.hpp        link::Node: all of it on one link, heartbeat, timers; DttLink (DJI OSDK 4)
+  cpp/<ident>/udp_link.hpp    link::UdpLink: a Node on UDP (POSIX)
   cpp/<ident>/enums.hpp       one `enum class` per enum
   cpp/<ident>/messages.hpp    one struct per message
   cpp/<ident>/<ident>.hpp     umbrella header
@@ -40,7 +48,23 @@ _CPP_TYPES = {
 
 # Types and namespaces the runtime defines beside the messages and enums of a dialect.
 RUNTIME_TYPES = RUNTIME_TYPE_NAMES  # the validator refuses those; checked here again for user templates
-_SUB_HEADERS = ("runtime", "enums", "messages", "signing", "packets")
+_SUB_HEADERS = ("runtime", "enums", "messages", "signing", "packets", "sha256", "scheduler", "commands", "transfer",
+                "node", "udp_link", "udp_forward")
+# What the onboard link runtime (commands.hpp, transfer.hpp, node.hpp) is written against: these
+# messages with ttctl's ids and CRC_EXTRA (ttctl.wire.contract), and these enums.
+LINK_MESSAGES = ("HEARTBEAT", "TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_DATA", "TT_FILE_REQUEST", "TT_ACTION_COMMAND",
+                 "TT_LOG", "TT_FILE_DATA_WIDE", "TT_COMMAND_ACK", "TT_FILE_REASON")
+LINK_ENUMS = ("TT_FILE_RESULT", "TT_FILE_FLAGS", "TT_RESULT")
+
+
+def carries_link(d: Dialect) -> bool:
+    """Whether the dialect has the runtime's messages (it includes ttapi.xml), so that the onboard
+    link runtime (the node, commands, file transfer) is generated for it."""
+    from ..wire.contract import RUNTIME_MESSAGES
+
+    have = {m.name: (m.id, m.crc_extra) for m in d.messages if m.complete}
+    enums = {e.name for e in d.enums}
+    return all(have.get(n) == RUNTIME_MESSAGES[n] for n in LINK_MESSAGES) and all(e in enums for e in LINK_ENUMS)
 
 
 def namespace(d: Dialect, override: str | None = None) -> str:
@@ -182,10 +206,19 @@ class _Cpp:
 
     def outputs(self, d: Dialect) -> list[Output]:
         ident = folder(d, self.override)  # the dialect's identifier, or a/b for --cpp-namespace a::b
+        link = [
+            Output(f"cpp/{ident}/commands.hpp", "cpp/commands.hpp.j2"),
+            Output(f"cpp/{ident}/transfer.hpp", "cpp/transfer.hpp.j2"),
+            Output(f"cpp/{ident}/node.hpp", "cpp/node.hpp.j2"),
+            Output(f"cpp/{ident}/udp_link.hpp", "cpp/udp_link.hpp.j2"),
+        ] if carries_link(d) else []
         return [
             Output(f"cpp/{ident}/runtime.hpp", "cpp/runtime.hpp.j2"),
+            Output(f"cpp/{ident}/sha256.hpp", "cpp/sha256.hpp.j2"),
             Output(f"cpp/{ident}/signing.hpp", "cpp/signing.hpp.j2"),
             Output(f"cpp/{ident}/packets.hpp", "cpp/packets.hpp.j2"),
+            Output(f"cpp/{ident}/scheduler.hpp", "cpp/scheduler.hpp.j2"),
+            *link,
             Output(f"cpp/{ident}/udp_forward.hpp", "cpp/udp_forward.hpp.j2"),
             Output(f"cpp/{ident}/enums.hpp", "cpp/enums.hpp.j2"),
             Output(f"cpp/{ident}/messages.hpp", "cpp/messages.hpp.j2"),
@@ -201,6 +234,8 @@ class _Cpp:
         check_names(d)
         return {
             "ns": namespace(d, self.override),
+            "link": carries_link(d),
+            "folder": folder(d, self.override),
             "umbrella": umbrella(d, self.override),
             "guard": lambda part: guard(d, part, self.override),
             "cpp_type": cpp_type,

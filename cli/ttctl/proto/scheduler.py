@@ -55,7 +55,7 @@ class Scheduler:
         self.sign = sign  # signs an unsigned frame as it is placed (MAVLink signing), or None
         self.pacer = Pacer(rate_Bps)
         self.control: deque[bytes] = deque()
-        self._keys: dict[object, int] = {}  # coalescing key -> id of the queued control frame
+        self._control_keys: deque[object] = deque()  # each queued control frame's coalescing key (None: none)
         self.telemetry: deque[bytes] = deque()
         self.telemetry_limit = telemetry_limit
         self.sources: list[BulkPull] = []
@@ -72,14 +72,14 @@ class Scheduler:
         the same key (a newer status makes an older one worthless)."""
         if priority == CONTROL:
             if key is not None:
-                old = self._keys.get(key)
-                for i, queued in enumerate(self.control):
-                    if id(queued) == old:
+                # (by key, not by the queued frame's id(): CPython reuses the id of a frame that
+                # was sent and freed, and a keyed frame then replaced an unrelated one, an ack say)
+                for i, queued_key in enumerate(self._control_keys):
+                    if queued_key == key:
                         self.control[i] = frame
-                        self._keys[key] = id(frame)
                         return
-                self._keys[key] = id(frame)
             self.control.append(frame)
+            self._control_keys.append(key)
         elif priority == TELEMETRY:
             if len(self.telemetry) >= self.telemetry_limit:
                 self.telemetry.popleft()  # stale telemetry goes first; control is never dropped
@@ -122,6 +122,7 @@ class Scheduler:
         if self._spill and self.control and len(self.control[0]) + over <= mtu and self.sign is None:
             while self.control and len(self.control[0]) <= mtu - len(pkt):  # urgent, in a packet of its own
                 pkt += self.control.popleft()
+                self._control_keys.popleft()
             return bytes(pkt)
         if self._spill:
             pkt += self._spill[:mtu]
@@ -133,7 +134,7 @@ class Scheduler:
             got = self._next_frame(now, space)  # (signed, a frame is `over` longer than its source thinks)
             if got is None:
                 break
-            frame, kind = got
+            frame, kind, key = got
             size = len(frame) + over
             if (size <= space or size > mtu) and self.sign is not None:
                 frame = self.sign(frame)  # placed now: signed now
@@ -146,6 +147,7 @@ class Scheduler:
             else:  # does not fit what is left: back to the head of its queue, for the next packet
                 if kind == CONTROL:
                     self.control.appendleft(frame)
+                    self._control_keys.appendleft(key)
                 elif kind == TELEMETRY:
                     self.telemetry.appendleft(frame)
                 else:
@@ -153,21 +155,21 @@ class Scheduler:
                 break
         return bytes(pkt)
 
-    def _next_frame(self, now: float, space: int) -> tuple[bytes, int] | None:
+    def _next_frame(self, now: float, space: int) -> tuple[bytes, int, object] | None:
         if self.control:
-            return self.control.popleft(), CONTROL
+            return self.control.popleft(), CONTROL, self._control_keys.popleft()
         if self.telemetry:
-            return self.telemetry.popleft(), TELEMETRY
+            return self.telemetry.popleft(), TELEMETRY, None
         if self._held is not None:
             frame, self._held = self._held, None
-            return frame, BULK
+            return frame, BULK, None
         n = len(self.sources)
         for k in range(n):
             i = (self._rr + k) % n
             pulled = self.sources[i](now, space)
             if pulled is not None:
                 self._rr = (i + 1) % n
-                return pulled, BULK
+                return pulled, BULK, None
         return None
 
     def wants_to_send(self, now: float) -> bool:

@@ -1,65 +1,84 @@
 // Onboard handlers for the ttapi dialect: fill these in.
 //
 // A skeleton written by ttctl gen from ttapi.xml: it is yours to edit, and `ttctl gen` will
-// not overwrite it (unless --force-skeletons). One handler per message the onboard end
-// receives (messages tagged [sender: tablet] or [sender: any]);
-// register_handlers() binds them to the Dispatcher of the link. Several plugins may handle the
-// same message. Each handler gets an Outbox to send any message of the dialect, a reply say:
-// out.send(ack). Wire the Outbox to your link once: its send_payload() frames the payload with
-// an Encoder and cuts the frame into DTT packets with a Packetizer, which you hand to the DJI
-// SDK. Packets that arrive go to a PacketReceiver (a frame may span packets; a Parser does not
-// know packet boundaries):
+// not overwrite it (unless --force-skeletons). It plugs into a link::Node (ttapi/node.hpp),
+// the onboard end of the link, which handles file transfer, command acks and the heartbeat
+// itself. Here: one handler per message the onboard end receives (those tagged
+// [sender: tablet] or [sender: any]), and on_command(), the action of TT_ACTION_COMMAND: the
+// node runs it once per command and sends the ack (a retry gets the recorded ack). Handlers
+// reply through their NodeContext: ctx.send(msg) at control priority, ctx.telemetry(msg)
+// behind it, ctx.log(text).
 //
-//     class LinkOutbox : public ttapi::Outbox {
-//     public:
-//         bool send_payload(const ttapi::MessageInfo& info, const std::uint8_t* payload,
-//                           std::size_t n) override
-//         {
-//             std::uint8_t frame[ttapi::MAX_FRAME];
-//             const std::size_t len = encoder.encode_payload(info, payload, n, frame, sizeof frame);
-//             packetizer.add(frame, len, send_packet);  // send_packet(const std::uint8_t*, std::size_t)
-//             packetizer.flush(send_packet);
-//             return len != 0;
-//         }
-//         ttapi::Encoder encoder{1, 191};  // this end's system and component id
-//         ttapi::Packetizer packetizer;  // packets of at most 100 bytes
-//     };
+// A program on UDP (ttctl's emulated radio, a laptop), with ttapi/udp_link.hpp:
 //
-//     LinkOutbox outbox;
-//     ttapi::Dispatcher dispatcher(outbox);
+//     ttapi::link::NodeConfig cfg;  // system 1, component 240, paced to the M100's downlink
+//     cfg.inbox = "inbox";  // files the tablet sends land here (a jail: nothing outside it)
+//     cfg.serve = "outbox";  // files the tablet may fetch
+//     ttapi::link::Node node(cfg);
 //     ttapi::onboard::TtapiPlugin plugin;
-//     plugin.register_handlers(dispatcher);
-//     ttapi::PacketReceiver receiver;
-//     receiver.feed(packet, n, dispatcher);  // for each DTT packet as it arrives
+//     node.add(plugin);
+//     ttapi::link::Words why;
+//     ttapi::link::UdpLink udp(node);
+//     if (!node.start(why) || !udp.open("udpin:0.0.0.0:14560", why)) {
+//         std::fprintf(stderr, "%s\n", why.c_str());
+//         return 1;
+//     }
+//     std::atomic<bool> stop{false};
+//     udp.run(stop);
+//
+// On the drone, DJI's Onboard SDK 4 carries the packets instead (see DttLink in node.hpp).
 #ifndef TTCTL_TTAPI_ONBOARD_PLUGIN_HPP
 #define TTCTL_TTAPI_ONBOARD_PLUGIN_HPP
 
-#include "ttapi/ttapi.hpp"
+#include "ttapi/node.hpp"
 
 namespace ttapi::onboard {
 
-/// What the onboard computer does with each message it receives.
-class TtapiPlugin : public Plugin {
+/// What the onboard computer does with each message it receives, and with commands.
+class TtapiPlugin : public link::NodePlugin {
 public:
     const char* name() const noexcept override { return "ttapi_onboard"; }
 
-    void register_handlers(Dispatcher& dispatcher) override
+    void attach(link::Node& node) override
     {
-        dispatcher.on<DjiPoseStamped>([this](const DjiPoseStamped& msg, const Frame& frame, Outbox& out) {
-            on_dji_pose_stamped(msg, frame, out);
+        node.on<DjiPoseStamped>([this](const DjiPoseStamped& msg, const Frame& frame, link::NodeContext& ctx) {
+            on_dji_pose_stamped(msg, frame, ctx);
         });
-        dispatcher.on<TtActionCommand>([this](const TtActionCommand& msg, const Frame& frame, Outbox& out) {
-            on_tt_action_command(msg, frame, out);
+        node.on<TtLog>([this](const TtLog& msg, const Frame& frame, link::NodeContext& ctx) {
+            on_tt_log(msg, frame, ctx);
         });
-        dispatcher.on<TtLog>([this](const TtLog& msg, const Frame& frame, Outbox& out) {
-            on_tt_log(msg, frame, out);
+        node.on<TtVrPose>([this](const TtVrPose& msg, const Frame& frame, link::NodeContext& ctx) {
+            on_tt_vr_pose(msg, frame, ctx);
         });
-        dispatcher.on<TtVrPose>([this](const TtVrPose& msg, const Frame& frame, Outbox& out) {
-            on_tt_vr_pose(msg, frame, out);
+        node.on<TtVrController>([this](const TtVrController& msg, const Frame& frame, link::NodeContext& ctx) {
+            on_tt_vr_controller(msg, frame, ctx);
         });
-        dispatcher.on<TtVrController>([this](const TtVrController& msg, const Frame& frame, Outbox& out) {
-            on_tt_vr_controller(msg, frame, out);
+        node.on_command([this](const TtActionCommand& cmd, const Frame& frame, link::NodeContext& ctx) {
+            return on_command(cmd, frame, ctx);
         });
+    }
+
+    /// TT_ACTION_COMMAND (id 50005): [sender: tablet] Ask the onboard computer to perform an
+    /// action. Answered by TT_COMMAND_ACK with the same command_id; a retry repeats command_id, so
+    /// the action runs once.
+    /// Run once per command: return TT_RESULT_ACCEPTED (or IN_PROGRESS, DONE) only for an action
+    /// this vehicle carries out; a refusal (DENIED, BUSY, UNSUPPORTED, FAILED) may say why in
+    /// words, which go to the tablet as a TT_LOG line ahead of the ack. Return quickly: start long
+    /// actions elsewhere (IN_PROGRESS) and report with ctx.log() or a message of your own.
+    ///
+    /// Fields of cmd:
+    ///   - target_system (uint8_t): Receiver system id.
+    ///   - target_component (uint8_t): Receiver component id.
+    ///   - command_id (uint16_t): Sender-chosen id, repeated on retries.
+    ///   - action (uint8_t, enum TtAction): What to do.
+    ///   - time_usec (uint64_t, us): Sender's clock (UNIX epoch) when the command was issued.
+    ///   - param (float[4]): Action parameters, see TT_ACTION.
+    ///   - argument (char[48]): Action argument, e.g. the mission file of FLY_TRAJECTORY.
+    link::CommandOutcome on_command([[maybe_unused]] const TtActionCommand& cmd, [[maybe_unused]] const Frame& frame,
+                                    [[maybe_unused]] link::NodeContext& ctx)
+    {
+        // TODO: carry out cmd.action (a TtAction) with cmd.param and cmd.argument, from system frame.sysid
+        return {TtResult::TT_RESULT_UNSUPPORTED, "not implemented on this vehicle yet"};
     }
 
     /// DJI_POSE_STAMPED (id 50004): [sender: any] A stamped pose, as in the original TTApi dialect
@@ -73,27 +92,9 @@ public:
     ///   - position (double[3], m): Position x, y, z.
     ///   - orientation (double[4]): Orientation quaternion x, y, z, w.
     void on_dji_pose_stamped([[maybe_unused]] const DjiPoseStamped& msg, [[maybe_unused]] const Frame& frame,
-            [[maybe_unused]] Outbox& out)
+            [[maybe_unused]] link::NodeContext& ctx)
     {
-        // TODO: handle DJI_POSE_STAMPED (from system frame.sysid, component frame.compid); out.send(...) replies
-    }
-
-    /// TT_ACTION_COMMAND (id 50005): [sender: tablet] Ask the onboard computer to perform an
-    /// action. Answered by TT_COMMAND_ACK with the same command_id; a retry repeats command_id, so
-    /// the action runs once.
-    ///
-    /// Fields of msg:
-    ///   - target_system (uint8_t): Receiver system id.
-    ///   - target_component (uint8_t): Receiver component id.
-    ///   - command_id (uint16_t): Sender-chosen id, repeated on retries.
-    ///   - action (uint8_t, enum TtAction): What to do.
-    ///   - time_usec (uint64_t, us): Sender's clock (UNIX epoch) when the command was issued.
-    ///   - param (float[4]): Action parameters, see TT_ACTION.
-    ///   - argument (char[48]): Action argument, e.g. the mission file of FLY_TRAJECTORY.
-    void on_tt_action_command([[maybe_unused]] const TtActionCommand& msg, [[maybe_unused]] const Frame& frame,
-            [[maybe_unused]] Outbox& out)
-    {
-        // TODO: handle TT_ACTION_COMMAND (from system frame.sysid, component frame.compid); out.send(...) replies
+        // TODO: handle DJI_POSE_STAMPED (from system frame.sysid, component frame.compid); ctx.send(...) replies
     }
 
     /// TT_LOG (id 50008): [sender: any] A log or status line. Text longer than 80 bytes continues
@@ -107,9 +108,9 @@ public:
     ///   - chunk_seq (uint8_t): Chunk number within the line, from 0.
     ///   - text (char[80]): UTF-8 text, NUL-terminated if shorter than 80 bytes.
     void on_tt_log([[maybe_unused]] const TtLog& msg, [[maybe_unused]] const Frame& frame,
-            [[maybe_unused]] Outbox& out)
+            [[maybe_unused]] link::NodeContext& ctx)
     {
-        // TODO: handle TT_LOG (from system frame.sysid, component frame.compid); out.send(...) replies
+        // TODO: handle TT_LOG (from system frame.sysid, component frame.compid); ctx.send(...) replies
     }
 
     /// TT_VR_POSE (id 50011): [sender: tablet] Pose of a tracked VR device, in ROS REP-103 axes (x
@@ -127,9 +128,9 @@ public:
     ///   - velocity (float[3], m/s): Linear velocity x, y, z.
     ///   - angular_velocity (float[3], rad/s): Angular velocity x, y, z.
     void on_tt_vr_pose([[maybe_unused]] const TtVrPose& msg, [[maybe_unused]] const Frame& frame,
-            [[maybe_unused]] Outbox& out)
+            [[maybe_unused]] link::NodeContext& ctx)
     {
-        // TODO: handle TT_VR_POSE (from system frame.sysid, component frame.compid); out.send(...) replies
+        // TODO: handle TT_VR_POSE (from system frame.sysid, component frame.compid); ctx.send(...) replies
     }
 
     /// TT_VR_CONTROLLER (id 50012): [sender: tablet] Controller input, sent when OpenVR's packet
@@ -145,9 +146,9 @@ public:
     ///   - pad_y (float): Trackpad y, -1..1.
     ///   - buttons (uint16_t, enum TtVrButtons): Buttons held.
     void on_tt_vr_controller([[maybe_unused]] const TtVrController& msg, [[maybe_unused]] const Frame& frame,
-            [[maybe_unused]] Outbox& out)
+            [[maybe_unused]] link::NodeContext& ctx)
     {
-        // TODO: handle TT_VR_CONTROLLER (from system frame.sysid, component frame.compid); out.send(...) replies
+        // TODO: handle TT_VR_CONTROLLER (from system frame.sysid, component frame.compid); ctx.send(...) replies
     }
 };
 

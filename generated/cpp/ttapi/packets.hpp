@@ -108,6 +108,7 @@ struct ReceiverStats {
     std::uint64_t packets = 0;  // packets fed (empty ones too)
     std::uint64_t frames = 0;  // frames delivered
     std::uint64_t bad_frames = 0;  // complete frames that failed CRC, signature or decoding
+    std::uint64_t bad_signatures = 0;  // of those: refused by the Signing (bad, replayed, unsigned)
     std::uint64_t carries_dropped = 0;  // spanning frames whose continuation never came
     std::uint64_t rescans = 0;  // packets taken for a continuation, scanned on their own after all
 };
@@ -213,7 +214,11 @@ private:
         if (signing_ == nullptr) {
             return true;
         }
-        return (commit ? signing_->verify(f, n) : signing_->check(f, n)) == SignatureCheck::ok;
+        const bool ok = (commit ? signing_->verify(f, n) : signing_->check(f, n)) == SignatureCheck::ok;
+        if (!ok && commit) {
+            ++stats_.bad_signatures;
+        }
+        return ok;
     }
 
     template <class OnFrame>

@@ -1,0 +1,94 @@
+// node_driver: a generated link::Node driven sans-IO, in virtual time, by a script on stdin, for
+// tests/test_cpp_node.py, which runs ttctl's Python Endpoint on the same input and compares what
+// each sends.
+//
+//     node_driver INBOX SERVE RATE < script
+//
+// The node is 1/240, paced at RATE B/s, receives into INBOX, serves SERVE ("-": nothing), sends
+// no heartbeat, and accepts every command (ACCEPTED, as the Python endpoint's default action
+// does). Script lines: `I ID` queues a transfer id for the node to draw (as the Python end's
+// seeded random numbers give it); `R NOW HEX` a packet arrives at NOW; `P NOW` the node is
+// polled at NOW until it has nothing more to send: the driver prints the packets' hex,
+// space-separated, or `-`, and flushes.
+#include <cstdint>
+#include <cstdio>
+#include <deque>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "ttapi/node.hpp"
+
+int main(int argc, char** argv)
+{
+    if (argc != 4) {
+        std::fprintf(stderr, "usage: node_driver INBOX SERVE RATE < script\n");
+        return 2;
+    }
+    std::deque<std::uint32_t> ids;
+    ttapi::link::NodeConfig cfg;
+    cfg.inbox = argv[1];
+    if (std::string(argv[2]) != "-") {
+        cfg.serve = argv[2];
+    }
+    cfg.rate_Bps = std::stod(argv[3]);
+    cfg.heartbeat_interval = 0;
+    cfg.new_id = [&ids]() -> std::uint32_t {
+        if (ids.empty()) {
+            return 0xDEADBEEF;
+        }
+        const std::uint32_t n = ids.front();
+        ids.pop_front();
+        return n;
+    };
+    ttapi::link::Node node(cfg);
+    node.on_command([](const ttapi::TtActionCommand&, const ttapi::Frame&, ttapi::link::NodeContext&) {
+        return ttapi::link::CommandOutcome(ttapi::TtResult::TT_RESULT_ACCEPTED);
+    });
+    ttapi::link::Words why;
+    if (!node.start(why)) {
+        std::fprintf(stderr, "%s\n", why.c_str());
+        return 1;
+    }
+    std::string line;
+    std::uint8_t pkt[280];
+    while (std::getline(std::cin, line)) {
+        std::istringstream in(line);
+        std::string op;
+        in >> op;
+        if (op == "I") {
+            unsigned long id = 0;
+            in >> id;
+            ids.push_back(static_cast<std::uint32_t>(id));
+            continue;
+        }
+        double now = 0;
+        in >> now;
+        if (op == "R") {
+            std::string hex;
+            in >> hex;
+            std::vector<std::uint8_t> data;
+            for (std::size_t i = 0; i + 1 < hex.size(); i += 2) {
+                data.push_back(static_cast<std::uint8_t>(std::stoul(hex.substr(i, 2), nullptr, 16)));
+            }
+            node.receive(now, data.data(), data.size());
+        } else if (op == "P") {
+            std::string out;
+            for (std::size_t n; (n = node.poll(now, pkt)) != 0;) {
+                if (!out.empty()) {
+                    out += ' ';
+                }
+                for (std::size_t i = 0; i < n; ++i) {
+                    char b[3];
+                    std::snprintf(b, sizeof b, "%02x", pkt[i]);
+                    out += b;
+                }
+            }
+            std::printf("%s\n", out.empty() ? "-" : out.c_str());
+            std::fflush(stdout);
+        }
+    }
+    node.close();
+    return 0;
+}
