@@ -26,6 +26,11 @@ from ttctl.proto.transfer import TransferConfig
 TABLET, ONBOARD = (255, 190), (1, 240)
 
 
+def accept(msg: Any) -> int:
+    """A vehicle that carries out every command (nothing to do in these tests)."""
+    return int(ttapi.TtResult.TT_RESULT_ACCEPTED)
+
+
 def data(n: int, seed: int = 1) -> bytes:
     return random.Random(seed).randbytes(n)
 
@@ -364,7 +369,7 @@ def test_commands_fail_after_retries_and_on_refusal(tmp_path: Path) -> None:
 
 
 def test_a_command_is_not_queued_behind_a_file(tmp_path: Path) -> None:
-    w = World(tmp_path, onboard_dir=tmp_path / "on")
+    w = World(tmp_path, onboard_dir=tmp_path / "on", action=accept)
     w.tablet.send_file("bulk.bin", ONBOARD, source=BytesSource(data(40_000), "bulk.bin"))
     w.run(30)
     cmd = w.tablet.command(ttapi.TtActionCommand(action=int(ttapi.TtAction.TT_ACTION_LAND)), ONBOARD)
@@ -425,7 +430,7 @@ def test_a_signed_link_loses_nothing_to_its_own_reordering(tmp_path: Path) -> No
     signed as it is placed, and nothing is slipped between a long frame's pieces, so the
     receiver's replay check never refuses one of ours."""
     key = bytes(range(32))
-    w = World(tmp_path, onboard_dir=tmp_path / "on", tablet_dir=tmp_path / "tab", key=key)
+    w = World(tmp_path, onboard_dir=tmp_path / "on", tablet_dir=tmp_path / "tab", key=key, action=accept)
     up, down = data(20_000, 3), data(30_000, 4)
     s1 = w.tablet.send_file("up.bin", ONBOARD, source=BytesSource(up, "up.bin"))
     s2 = w.onboard.send_file("down.bin", TABLET, source=BytesSource(down, "down.bin"))
@@ -499,3 +504,13 @@ def test_a_duplicated_signed_packet_is_not_called_a_wrong_key(tmp_path: Path) ->
     other = ttapi.Encoder(*TABLET, signing=ttapi.Signing(bytes(32))).encode(ttapi.Heartbeat())
     w.onboard.receive(0.0, other, source="b")
     assert w.event("link-refused") == [("b", "frames whose signatures do not verify")]
+
+
+def test_an_end_that_carries_out_no_commands_accepts_none(tmp_path: Path) -> None:
+    """Without an action (ttctl recv-file, send-file) a command is answered UNSUPPORTED: an
+    ACCEPTED would promise what nothing here does (it used to say ACCEPTED)."""
+    w = World(tmp_path)
+    c = w.tablet.command(ttapi.TtActionCommand(action=int(ttapi.TtAction.TT_ACTION_TAKE_OFF)), ONBOARD)
+    w.run(10, stop=lambda: c.done)
+    assert c.done and not c.ok and c.ack is not None
+    assert c.ack.result == int(ttapi.TtResult.TT_RESULT_UNSUPPORTED) and c.error == "refused: UNSUPPORTED"

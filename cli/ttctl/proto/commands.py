@@ -145,7 +145,8 @@ class CommandServer:
         self.b = bindings
         self.sysid = sysid
         self.compid = compid
-        self.action = action or (lambda msg: int(TtResult.TT_RESULT_ACCEPTED))
+        # no action: nothing here carries commands out, so none is acknowledged as accepted
+        self.action = action or (lambda msg: int(TtResult.TT_RESULT_UNSUPPORTED))
         self.memory = memory
         self.done: OrderedDict[tuple[int, int, int, int], Any] = OrderedDict()
         self.executed = 0

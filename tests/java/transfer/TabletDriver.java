@@ -24,6 +24,7 @@ import ttctl.ttapi.enums.TtAction;
 import ttctl.ttapi.msg.TtCommandAck;
 import ttctl.ttapi.msg.TtFileData;
 import ttctl.ttapi.msg.TtFileStatus;
+import ttctl.ttapi.runtime.CommandException;
 import ttctl.ttapi.runtime.CommandQueue;
 import ttctl.ttapi.runtime.DjiLink;
 import ttctl.ttapi.runtime.Link;
@@ -152,13 +153,18 @@ public final class TabletDriver {
                     fut.get(10, TimeUnit.SECONDS);
                     duringMs.add((System.nanoTime() - t0) / 1e6);
                 } catch (Exception e) {
-                    duringErrors.add(String.valueOf(e.getCause() != null ? e.getCause() : e));
+                    if (refusal(e)) {
+                        duringMs.add((System.nanoTime() - t0) / 1e6); // answered: a round trip all the same
+                    } else {
+                        duringErrors.add(String.valueOf(e.getCause() != null ? e.getCause() : e));
+                    }
                 }
             } else {
                 Thread.sleep(50);
             }
         }
         out.put("during_ms", duringMs).put("during_errors", duringErrors);
+        out.put("refused", REFUSED.get());
         if (up != null) {
             TransferResult r = up.await(1, TimeUnit.SECONDS);
             result(out, "send", r, rate);
@@ -179,6 +185,13 @@ public final class TabletDriver {
                 sdk.awaitRecovery();
                 double ms = command(cq, 8000);
                 out.put("after_stall_command_ms", ms);
+            }
+            // nothing more to send: every packet handed to the SDK is completed (or timed out)
+            // within the completion timeout, so none is counted while still on the air
+            sched.close();
+            long settle = System.nanoTime() + 3_000_000_000L;
+            while (dji.completed() + dji.timeouts() < dji.sent() && System.nanoTime() < settle) {
+                Thread.sleep(10);
             }
             out.put("dji_sent", dji.sent()).put("dji_completed", dji.completed()).put("dji_timeouts", dji.timeouts())
                     .put("dji_stalled", dji.isStalled()).put("dji_received", dji.received())
@@ -216,13 +229,32 @@ public final class TabletDriver {
         return new SendTtActionCommand(1, 240, TtAction.TT_ACTION_SYNC_TIME, new float[4], new byte[48]);
     }
 
-    /** One command's round trip in ms, or -1 if it failed. */
+    static final AtomicInteger REFUSED = new AtomicInteger();
+
+    /**
+     * Whether a command's failure is the onboard end's answer (an ack that is not a yes: ttctl
+     * recv-file carries out no commands and says UNSUPPORTED): a round trip all the same,
+     * counted in "refused".
+     */
+    static boolean refusal(Exception e) {
+        Throwable c = e.getCause();
+        if (c instanceof CommandException && ((CommandException) c).reason() == CommandException.Reason.REFUSED) {
+            REFUSED.incrementAndGet();
+            return true;
+        }
+        return false;
+    }
+
+    /** One command's round trip in ms (answered yes or no), or -1 if it got no answer. */
     static double command(CommandQueue cq, long waitMs) {
         long t0 = System.nanoTime();
         try {
             cq.submit(action()).get(waitMs, TimeUnit.MILLISECONDS);
             return (System.nanoTime() - t0) / 1e6;
         } catch (Exception e) {
+            if (refusal(e)) {
+                return (System.nanoTime() - t0) / 1e6;
+            }
             System.out.println("EVENT command failed: " + (e.getCause() != null ? e.getCause() : e));
             return -1;
         }
