@@ -5,8 +5,8 @@
 //     node_driver INBOX SERVE RATE < script
 //
 // The node is 1/240, paced at RATE B/s, receives into INBOX, serves SERVE ("-": nothing), sends
-// no heartbeat, and accepts every command (ACCEPTED, as the Python endpoint's default action
-// does). Script lines: `I ID` queues a transfer id for the node to draw (as the Python end's
+// no heartbeat, and answers every command UNSUPPORTED without words, as the Python endpoint
+// without an action answers it (a Node without an action adds a TT_LOG saying why). Script lines: `I ID` queues a transfer id for the node to draw (as the Python end's
 // seeded random numbers give it); `R NOW HEX` a packet arrives at NOW; `P NOW` the node is
 // polled at NOW until it has nothing more to send: the driver prints the packets' hex,
 // space-separated, or `-`, and flushes.
@@ -44,7 +44,7 @@ int main(int argc, char** argv)
     };
     ttapi::link::Node node(cfg);
     node.on_command([](const ttapi::TtActionCommand&, const ttapi::Frame&, ttapi::link::NodeContext&) {
-        return ttapi::link::CommandOutcome(ttapi::TtResult::TT_RESULT_ACCEPTED);
+        return ttapi::link::CommandOutcome(ttapi::TtResult::TT_RESULT_UNSUPPORTED);
     });
     ttapi::link::Words why;
     if (!node.start(why)) {
