@@ -370,7 +370,9 @@ def receiving_script(tmp: Path, seed: int, loss: float, size: int) -> tuple[list
     b = shipped_bindings()
     rng = random.Random(seed)
     tx = Endpoint(b, *TABLET, rate_Bps=500.0, rng=random.Random(seed))
-    rx = Endpoint(b, 1, 240, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp / "python"))
+    # an action that accepts every command, as node_driver's (without one, both ends answer UNSUPPORTED)
+    rx = Endpoint(b, 1, 240, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp / "python"),
+                  action=lambda msg: int(ttapi.TtResult.TT_RESULT_ACCEPTED))
     data = random.Random(seed + 1).randbytes(size)
     sender = tx.send_file("f.bin", (1, 240), source=BytesSource(data, "f.bin"))
     script: list[str] = []

@@ -5,8 +5,8 @@
 //     node_driver INBOX SERVE RATE < script
 //
 // The node is 1/240, paced at RATE B/s, receives into INBOX, serves SERVE ("-": nothing), sends
-// no heartbeat, and accepts every command (ACCEPTED, as the Python endpoint's default action
-// does). Script lines: `I ID` queues a transfer id for the node to draw (as the Python end's
+// no heartbeat, and accepts every command (ACCEPTED, as the Python endpoint it is compared with
+// is told to). Script lines: `I ID` queues a transfer id for the node to draw (as the Python end's
 // seeded random numbers give it); `R NOW HEX` a packet arrives at NOW; `P NOW` the node is
 // polled at NOW until it has nothing more to send: the driver prints the packets' hex,
 // space-separated, or `-`, and flushes.
