@@ -11,7 +11,9 @@ headers go to cpp/a/b/ instead of cpp/<ident>/):
 For a dialect that carries ttctl's runtime messages (it includes ttapi.xml), the onboard end of
 the link, in namespace <ns>::link:
   cpp/<ident>/commands.hpp    the command server: each command executed once, acks recorded
-  cpp/<ident>/transfer.hpp    file transfer (POSIX): the jail folder, resume, serving fetches
+  cpp/<ident>/transfer.hpp    file transfer (POSIX): the jail folder, resume, serving fetches; it
+                              includes its pieces (TRANSFER_HEADERS): the protocol's numbers and
+                              words, the name rules, byte ranges, storage, the receiver, the sender
   cpp/<ident>/node.hpp        link::Node: all of it on one link, heartbeat, timers; DttLink (DJI OSDK 4)
   cpp/<ident>/udp_link.hpp    link::UdpLink: a Node on UDP (POSIX)
   cpp/<ident>/enums.hpp       one `enum class` per enum
@@ -48,8 +50,13 @@ _CPP_TYPES = {
 
 # Types and namespaces the runtime defines beside the messages and enums of a dialect.
 RUNTIME_TYPES = RUNTIME_TYPE_NAMES  # the validator refuses those; checked here again for user templates
-_SUB_HEADERS = ("runtime", "enums", "messages", "signing", "packets", "sha256", "scheduler", "commands", "transfer",
-                "node", "udp_link", "udp_forward")
+# File transfer: transfer.hpp includes the others. The receiver's and the sender's headers include
+# their parts (receiver_*, sender_*) after the class.
+TRANSFER_HEADERS = ("transfer", "transfer_base", "file_names", "ranges", "posix_files", "json", "receive_dir",
+                    "partial", "file_source", "receiver", "receiver_offers", "receiver_data", "receiver_status",
+                    "sender", "sender_control", "sender_data", "sender_frame_size")
+_SUB_HEADERS = ("runtime", "enums", "messages", "signing", "packets", "sha256", "scheduler", "commands",
+                *TRANSFER_HEADERS, "node", "udp_link", "udp_forward")
 # What the onboard link runtime (commands.hpp, transfer.hpp, node.hpp) is written against: these
 # messages with ttctl's ids and CRC_EXTRA (ttctl.wire.contract), and these enums.
 LINK_MESSAGES = ("HEARTBEAT", "TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_DATA", "TT_FILE_REQUEST", "TT_ACTION_COMMAND",
@@ -198,6 +205,11 @@ def check_names(d: Dialect) -> None:
             "message or enum")
 
 
+def _headers(where: str, stems: tuple[str, ...]) -> list[Output]:
+    """A header per stem in cpp/<where>/, each from its template."""
+    return [Output(f"cpp/{where}/{h}.hpp", f"cpp/{h}.hpp.j2") for h in stems]
+
+
 class _Cpp:
     name = "cpp"
 
@@ -208,7 +220,7 @@ class _Cpp:
         ident = folder(d, self.override)  # the dialect's identifier, or a/b for --cpp-namespace a::b
         link = [
             Output(f"cpp/{ident}/commands.hpp", "cpp/commands.hpp.j2"),
-            Output(f"cpp/{ident}/transfer.hpp", "cpp/transfer.hpp.j2"),
+            *_headers(ident, TRANSFER_HEADERS),
             Output(f"cpp/{ident}/node.hpp", "cpp/node.hpp.j2"),
             Output(f"cpp/{ident}/udp_link.hpp", "cpp/udp_link.hpp.j2"),
         ] if carries_link(d) else []
