@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from conftest import TTAPI, assert_no_traceback, run_ttctl
-from ttctl.codegen.lang_cpp import TRANSFER_HEADERS
+from ttctl.codegen.lang_cpp import NODE_HEADERS, TRANSFER_HEADERS
 
 WARN = ["-std=c++17", "-Wall", "-Wextra", "-Wpedantic", "-Werror"]
 # TT_COMMAND_ACK as the README's conformance example encodes it (seq 7, from 1/240)
@@ -242,13 +242,14 @@ def test_cpp_namespace_builds_and_runs(tmp_path: Path) -> None:
     assert {p.relative_to(cpp).as_posix() for p in cpp.rglob("*") if p.is_file()} == {
         "myco/drone/runtime.hpp", "myco/drone/enums.hpp", "myco/drone/messages.hpp", "myco/drone/ttapi.hpp",
         "myco/drone/signing.hpp", "myco/drone/packets.hpp", "myco/drone/udp_forward.hpp", "myco/drone/sha256.hpp",
-        "myco/drone/scheduler.hpp", "myco/drone/commands.hpp", *(f"myco/drone/{h}.hpp" for h in TRANSFER_HEADERS),
-        "myco/drone/node.hpp", "myco/drone/udp_link.hpp", "conformance.cpp", "onboard/ttapi_plugin.hpp"}
+        "myco/drone/scheduler.hpp", "myco/drone/commands.hpp",
+        *(f"myco/drone/{h}.hpp" for h in (*TRANSFER_HEADERS, *NODE_HEADERS)), "myco/drone/udp_link.hpp",
+        "conformance.cpp", "onboard/ttapi_plugin.hpp"}
     for name in ("runtime", "enums", "messages"):
         text = (cpp / "myco" / "drone" / f"{name}.hpp").read_text()
         assert f"#ifndef TTCTL_MYCO_DRONE_{name.upper()}_HPP" in text
         assert "namespace myco::drone {" in text and "namespace ttapi" not in text
-    for name in ("scheduler", "commands", *TRANSFER_HEADERS, "node", "udp_link"):
+    for name in ("scheduler", "commands", *TRANSFER_HEADERS, *NODE_HEADERS, "udp_link"):
         text = (cpp / "myco" / "drone" / f"{name}.hpp").read_text()
         assert f"#ifndef TTCTL_MYCO_DRONE_{name.upper()}_HPP" in text and "namespace ttapi" not in text
         # transfer.hpp only includes its pieces

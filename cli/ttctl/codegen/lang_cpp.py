@@ -14,7 +14,9 @@ the link, in namespace <ns>::link:
   cpp/<ident>/transfer.hpp    file transfer (POSIX): the jail folder, resume, serving fetches; it
                               includes its pieces (TRANSFER_HEADERS): the protocol's numbers and
                               words, the name rules, byte ranges, storage, the receiver, the sender
-  cpp/<ident>/node.hpp        link::Node: all of it on one link, heartbeat, timers; DttLink (DJI OSDK 4)
+  cpp/<ident>/node.hpp        link::Node: all of it on one link, heartbeat, timers; DttLink (DJI OSDK 4);
+                              it includes its pieces (NODE_HEADERS): the config, receiving, files,
+                              NodePump, DttLink
   cpp/<ident>/udp_link.hpp    link::UdpLink: a Node on UDP (POSIX)
   cpp/<ident>/enums.hpp       one `enum class` per enum
   cpp/<ident>/messages.hpp    one struct per message
@@ -55,8 +57,10 @@ RUNTIME_TYPES = RUNTIME_TYPE_NAMES  # the validator refuses those; checked here 
 TRANSFER_HEADERS = ("transfer", "transfer_base", "file_names", "ranges", "posix_files", "json", "receive_dir",
                     "partial", "file_source", "receiver", "receiver_offers", "receiver_data", "receiver_status",
                     "sender", "sender_control", "sender_data", "sender_frame_size")
+# The node: node.hpp includes node_config.hpp first and its parts (the others) after the class.
+NODE_HEADERS = ("node", "node_config", "node_receive", "node_files", "node_pump", "dtt_link")
 _SUB_HEADERS = ("runtime", "enums", "messages", "signing", "packets", "sha256", "scheduler", "commands",
-                *TRANSFER_HEADERS, "node", "udp_link", "udp_forward")
+                *TRANSFER_HEADERS, *NODE_HEADERS, "udp_link", "udp_forward")
 # What the onboard link runtime (commands.hpp, transfer.hpp, node.hpp) is written against: these
 # messages with ttctl's ids and CRC_EXTRA (ttctl.wire.contract), and these enums.
 LINK_MESSAGES = ("HEARTBEAT", "TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_DATA", "TT_FILE_REQUEST", "TT_ACTION_COMMAND",
@@ -221,7 +225,7 @@ class _Cpp:
         link = [
             Output(f"cpp/{ident}/commands.hpp", "cpp/commands.hpp.j2"),
             *_headers(ident, TRANSFER_HEADERS),
-            Output(f"cpp/{ident}/node.hpp", "cpp/node.hpp.j2"),
+            *_headers(ident, NODE_HEADERS),
             Output(f"cpp/{ident}/udp_link.hpp", "cpp/udp_link.hpp.j2"),
         ] if carries_link(d) else []
         return [
