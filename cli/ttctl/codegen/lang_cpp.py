@@ -3,7 +3,9 @@ a conformance program, and an onboard handler-plugin skeleton.
 
 Layout under the output root (<ident>: the dialect's identifier; with --cpp-namespace a::b the
 headers go to cpp/a/b/ instead of cpp/<ident>/):
-  cpp/<ident>/runtime.hpp     CRC, little-endian helpers, framing, Parser, Outbox, Dispatcher, Plugin
+  cpp/<ident>/runtime.hpp     the runtime; it includes its pieces (RUNTIME_HEADERS): the frame's
+                              format, CRC, little-endian helpers, the message table, encoding,
+                              decoding, Parser, dispatch (Outbox, Dispatcher, Plugin)
   cpp/<ident>/sha256.hpp      SHA-256 (signing and the file transfer's checks)
   cpp/<ident>/signing.hpp     MAVLink 2 signing (included by runtime.hpp)
   cpp/<ident>/packets.hpp     Packetizer and the packet-aware PacketReceiver (included by runtime.hpp)
@@ -52,6 +54,9 @@ _CPP_TYPES = {
 
 # Types and namespaces the runtime defines beside the messages and enums of a dialect.
 RUNTIME_TYPES = RUNTIME_TYPE_NAMES  # the validator refuses those; checked here again for user templates
+# The runtime: runtime.hpp includes the others, signing.hpp and packets.hpp, each in its place.
+RUNTIME_HEADERS = ("runtime", "frame_format", "crc", "byte_order", "message_info", "encode", "decode", "parser",
+                   "dispatch")
 # File transfer: transfer.hpp includes the others. The receiver's and the sender's headers include
 # their parts (receiver_*, sender_*) after the class.
 TRANSFER_HEADERS = ("transfer", "transfer_base", "file_names", "ranges", "posix_files", "json", "receive_dir",
@@ -59,7 +64,7 @@ TRANSFER_HEADERS = ("transfer", "transfer_base", "file_names", "ranges", "posix_
                     "sender", "sender_control", "sender_data", "sender_frame_size")
 # The node: node.hpp includes node_config.hpp first and its parts (the others) after the class.
 NODE_HEADERS = ("node", "node_config", "node_receive", "node_files", "node_pump", "dtt_link")
-_SUB_HEADERS = ("runtime", "enums", "messages", "signing", "packets", "sha256", "scheduler", "commands",
+_SUB_HEADERS = (*RUNTIME_HEADERS, "enums", "messages", "signing", "packets", "sha256", "scheduler", "commands",
                 *TRANSFER_HEADERS, *NODE_HEADERS, "udp_link", "udp_forward")
 # What the onboard link runtime (commands.hpp, transfer.hpp, node.hpp) is written against: these
 # messages with ttctl's ids and CRC_EXTRA (ttctl.wire.contract), and these enums.
@@ -229,7 +234,7 @@ class _Cpp:
             Output(f"cpp/{ident}/udp_link.hpp", "cpp/udp_link.hpp.j2"),
         ] if carries_link(d) else []
         return [
-            Output(f"cpp/{ident}/runtime.hpp", "cpp/runtime.hpp.j2"),
+            *_headers(ident, RUNTIME_HEADERS),
             Output(f"cpp/{ident}/sha256.hpp", "cpp/sha256.hpp.j2"),
             Output(f"cpp/{ident}/signing.hpp", "cpp/signing.hpp.j2"),
             Output(f"cpp/{ident}/packets.hpp", "cpp/packets.hpp.j2"),
