@@ -1,5 +1,5 @@
 // node_driver: a generated link::Node driven sans-IO, in virtual time, by a script on stdin, for
-// tests/test_cpp_node.py, which runs ttctl's Python Endpoint on the same input and compares what
+// tests/test_cpp_node_parity.py, which runs ttctl's Python Endpoint on the same input and compares what
 // each sends.
 //
 //     node_driver INBOX SERVE RATE < script
