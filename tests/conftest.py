@@ -74,3 +74,32 @@ def start(tmp_path: Path) -> Iterator[Any]:
     finally:
         for p in procs:
             p.close()
+
+
+@pytest.fixture(scope="session")
+def cpp_node_bins(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
+    """The C++ onboard end's test programs (tests/cpp_node_lib.py): onboard_node plain ("plain")
+    and under the sanitizers ("asan"), scheduler_driver ("scheduler"), node_driver ("driver"),
+    generated and built once a session for all the test_cpp_node_* files."""
+    from cpp_node_lib import build
+
+    return build(tmp_path_factory.mktemp("cpp_node"))
+
+
+@pytest.fixture
+def cpp_nodes() -> Iterator[Any]:
+    """Start onboard_node processes (`cpp_nodes(exe, folder, name, *args)`: a cpp_node_lib.Node);
+    those still running when the test ends are killed."""
+    from cpp_node_lib import Node
+
+    started: list[Node] = []
+
+    def start(*args: Any, **kw: Any) -> Node:
+        n = Node(*args, **kw)
+        started.append(n)
+        return n
+
+    yield start
+    for n in started:
+        if n.p.poll() is None:
+            n.kill()

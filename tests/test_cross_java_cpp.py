@@ -8,7 +8,6 @@ the tablet retry. Then the same signed (MAVLink 2 signing, one key at both ends)
 
 from __future__ import annotations
 
-import hashlib
 import random
 import shutil
 from pathlib import Path
@@ -17,9 +16,9 @@ from typing import Any
 import pytest
 
 from conformance_lib import build_java
-from conftest import ROOT, TTAPI, run_ttctl
+from conftest import ROOT
+from cpp_node_lib import PROGRAM, WARN, Node, generate, gxx, sha
 from e2e_lib import LOCAL, Start, free_port, relay
-from test_cpp_node import EDITS, PROGRAM, WARN, Node, gxx
 
 pytestmark = pytest.mark.skipif(shutil.which("g++") is None or shutil.which("javac") is None,
                                 reason="needs g++ and a JDK")
@@ -32,23 +31,10 @@ SIZE = 24 * 1024
 def programs(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, Path]:
     """(the C++ node, the Java classes), each from a freshly generated tree."""
     tmp = tmp_path_factory.mktemp("cross")
-    out = tmp / "out"
-    proc = run_ttctl("gen", str(TTAPI), "--lang", "cpp", "-o", str(out), timeout=300)
-    assert proc.returncode == 0, proc.stdout + proc.stderr
-    skeleton = out / "cpp" / "onboard" / "ttapi_plugin.hpp"
-    text = skeleton.read_text()
-    for old, new in EDITS:
-        assert old in text, old
-        text = text.replace(old, new)
-    skeleton.write_text(text)
     exe = tmp / "onboard_node"
-    gxx(*WARN, "-O2", "-I", str(out / "cpp"), "-I", str(skeleton.parent), str(PROGRAM), "-o", str(exe))
+    gxx(*WARN, "-O2", *generate(tmp), str(PROGRAM), "-o", str(exe))
     classes, _ = build_java(tmp / "java", sorted((ROOT / "tests" / "java" / "transfer").glob("*.java")))
     return exe, classes
-
-
-def sha(path: Path) -> str:
-    return hashlib.sha256(path.read_bytes()).hexdigest()
 
 
 @pytest.mark.parametrize(("model", "signed"), [("random", False), ("burst", False), ("random", True)])

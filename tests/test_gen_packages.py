@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 
 from conftest import TTAPI, assert_no_traceback, run_ttctl
+from ttctl.codegen.lang_cpp import NODE_HEADERS, RUNTIME_HEADERS, TRANSFER_HEADERS
 
 WARN = ["-std=c++17", "-Wall", "-Wextra", "-Wpedantic", "-Werror"]
 # TT_COMMAND_ACK as the README's conformance example encodes it (seq 7, from 1/240)
@@ -239,18 +240,17 @@ def test_cpp_namespace_builds_and_runs(tmp_path: Path) -> None:
     out = gen_ok(tmp_path / "out", "--lang", "cpp", "--cpp-namespace", "myco::drone")
     cpp = out / "cpp"
     assert {p.relative_to(cpp).as_posix() for p in cpp.rglob("*") if p.is_file()} == {
-        "myco/drone/runtime.hpp", "myco/drone/enums.hpp", "myco/drone/messages.hpp", "myco/drone/ttapi.hpp",
-        "myco/drone/signing.hpp", "myco/drone/packets.hpp", "myco/drone/udp_forward.hpp", "myco/drone/sha256.hpp",
-        "myco/drone/scheduler.hpp", "myco/drone/commands.hpp", "myco/drone/transfer.hpp", "myco/drone/node.hpp",
-        "myco/drone/udp_link.hpp", "conformance.cpp", "onboard/ttapi_plugin.hpp"}
-    for name in ("runtime", "enums", "messages"):
-        text = (cpp / "myco" / "drone" / f"{name}.hpp").read_text()
-        assert f"#ifndef TTCTL_MYCO_DRONE_{name.upper()}_HPP" in text
-        assert "namespace myco::drone {" in text and "namespace ttapi" not in text
-    for name in ("scheduler", "commands", "transfer", "node", "udp_link"):
-        text = (cpp / "myco" / "drone" / f"{name}.hpp").read_text()
-        assert f"#ifndef TTCTL_MYCO_DRONE_{name.upper()}_HPP" in text
-        assert "namespace myco::drone::link {" in text and "namespace ttapi" not in text
+        "myco/drone/enums.hpp", "myco/drone/messages.hpp", "myco/drone/ttapi.hpp", "myco/drone/signing.hpp",
+        "myco/drone/packets.hpp", "myco/drone/udp_forward.hpp", "myco/drone/sha256.hpp", "myco/drone/scheduler.hpp",
+        "myco/drone/commands.hpp", "myco/drone/udp_link.hpp", "conformance.cpp", "onboard/ttapi_plugin.hpp",
+        *(f"myco/drone/{h}.hpp" for h in (*RUNTIME_HEADERS, *TRANSFER_HEADERS, *NODE_HEADERS))}
+    for names, ns in (((*RUNTIME_HEADERS, "enums", "messages"), "myco::drone"),
+                      (("scheduler", "commands", *TRANSFER_HEADERS, *NODE_HEADERS, "udp_link"), "myco::drone::link")):
+        for name in names:
+            text = (cpp / "myco" / "drone" / f"{name}.hpp").read_text()
+            assert f"#ifndef TTCTL_MYCO_DRONE_{name.upper()}_HPP" in text and "namespace ttapi" not in text
+            # runtime.hpp and transfer.hpp only include their pieces
+            assert f"namespace {ns} {{" in text or name in ("runtime", "transfer"), name
     assert "namespace myco::drone::onboard {" in (cpp / "onboard" / "ttapi_plugin.hpp").read_text()
     main = tmp_path / "main.cpp"
     main.write_text(CPP_MAIN)

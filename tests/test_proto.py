@@ -98,8 +98,8 @@ NAME_VECTORS = json.loads((ROOT / "tests" / "data" / "names.json").read_text(enc
 @pytest.mark.parametrize("case", NAME_VECTORS, ids=[c["what"] for c in NAME_VECTORS])
 def test_name_rules_shared_vectors(case: dict[str, Any]) -> None:
     """tests/data/names.json, the name vectors every runtime's tests read (the C++ node's in
-    test_cpp_node.py): what the receiver decides of the name bytes an offer carries (strict
-    UTF-8, then check_name), in the same words."""
+    test_cpp_node_hostile.py): what the receiver decides of the name bytes an offer carries
+    (strict UTF-8, then check_name), in the same words."""
     raw = bytes.fromhex(case["hex"])
     try:
         name = raw.decode("utf-8")

@@ -3,7 +3,9 @@ a conformance program, and an onboard handler-plugin skeleton.
 
 Layout under the output root (<ident>: the dialect's identifier; with --cpp-namespace a::b the
 headers go to cpp/a/b/ instead of cpp/<ident>/):
-  cpp/<ident>/runtime.hpp     CRC, little-endian helpers, framing, Parser, Outbox, Dispatcher, Plugin
+  cpp/<ident>/runtime.hpp     the runtime; it includes its pieces (RUNTIME_HEADERS): the frame's
+                              format, CRC, little-endian helpers, the message table, encoding,
+                              decoding, Parser, dispatch (Outbox, Dispatcher, Plugin)
   cpp/<ident>/sha256.hpp      SHA-256 (signing and the file transfer's checks)
   cpp/<ident>/signing.hpp     MAVLink 2 signing (included by runtime.hpp)
   cpp/<ident>/packets.hpp     Packetizer and the packet-aware PacketReceiver (included by runtime.hpp)
@@ -11,8 +13,12 @@ headers go to cpp/a/b/ instead of cpp/<ident>/):
 For a dialect that carries ttctl's runtime messages (it includes ttapi.xml), the onboard end of
 the link, in namespace <ns>::link:
   cpp/<ident>/commands.hpp    the command server: each command executed once, acks recorded
-  cpp/<ident>/transfer.hpp    file transfer (POSIX): the jail folder, resume, serving fetches
-  cpp/<ident>/node.hpp        link::Node: all of it on one link, heartbeat, timers; DttLink (DJI OSDK 4)
+  cpp/<ident>/transfer.hpp    file transfer (POSIX): the jail folder, resume, serving fetches; it
+                              includes its pieces (TRANSFER_HEADERS): the protocol's numbers and
+                              words, the name rules, byte ranges, storage, the receiver, the sender
+  cpp/<ident>/node.hpp        link::Node: all of it on one link, heartbeat, timers; DttLink (DJI OSDK 4);
+                              it includes its pieces (NODE_HEADERS): the config, receiving, files,
+                              NodePump, DttLink
   cpp/<ident>/udp_link.hpp    link::UdpLink: a Node on UDP (POSIX)
   cpp/<ident>/enums.hpp       one `enum class` per enum
   cpp/<ident>/messages.hpp    one struct per message
@@ -48,8 +54,18 @@ _CPP_TYPES = {
 
 # Types and namespaces the runtime defines beside the messages and enums of a dialect.
 RUNTIME_TYPES = RUNTIME_TYPE_NAMES  # the validator refuses those; checked here again for user templates
-_SUB_HEADERS = ("runtime", "enums", "messages", "signing", "packets", "sha256", "scheduler", "commands", "transfer",
-                "node", "udp_link", "udp_forward")
+# The runtime: runtime.hpp includes the others, signing.hpp and packets.hpp, each in its place.
+RUNTIME_HEADERS = ("runtime", "frame_format", "crc", "byte_order", "message_info", "encode", "decode", "parser",
+                   "dispatch")
+# File transfer: transfer.hpp includes the others. The receiver's and the sender's headers include
+# their parts (receiver_*, sender_*) after the class.
+TRANSFER_HEADERS = ("transfer", "transfer_base", "file_names", "ranges", "posix_files", "json", "receive_dir",
+                    "partial", "file_source", "receiver", "receiver_offers", "receiver_data", "receiver_status",
+                    "sender", "sender_control", "sender_data", "sender_frame_size")
+# The node: node.hpp includes node_config.hpp first and its parts (the others) after the class.
+NODE_HEADERS = ("node", "node_config", "node_receive", "node_files", "node_pump", "dtt_link")
+_SUB_HEADERS = (*RUNTIME_HEADERS, "enums", "messages", "signing", "packets", "sha256", "scheduler", "commands",
+                *TRANSFER_HEADERS, *NODE_HEADERS, "udp_link", "udp_forward")
 # What the onboard link runtime (commands.hpp, transfer.hpp, node.hpp) is written against: these
 # messages with ttctl's ids and CRC_EXTRA (ttctl.wire.contract), and these enums.
 LINK_MESSAGES = ("HEARTBEAT", "TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_DATA", "TT_FILE_REQUEST", "TT_ACTION_COMMAND",
@@ -198,6 +214,11 @@ def check_names(d: Dialect) -> None:
             "message or enum")
 
 
+def _headers(where: str, stems: tuple[str, ...]) -> list[Output]:
+    """A header per stem in cpp/<where>/, each from its template."""
+    return [Output(f"cpp/{where}/{h}.hpp", f"cpp/{h}.hpp.j2") for h in stems]
+
+
 class _Cpp:
     name = "cpp"
 
@@ -208,12 +229,12 @@ class _Cpp:
         ident = folder(d, self.override)  # the dialect's identifier, or a/b for --cpp-namespace a::b
         link = [
             Output(f"cpp/{ident}/commands.hpp", "cpp/commands.hpp.j2"),
-            Output(f"cpp/{ident}/transfer.hpp", "cpp/transfer.hpp.j2"),
-            Output(f"cpp/{ident}/node.hpp", "cpp/node.hpp.j2"),
+            *_headers(ident, TRANSFER_HEADERS),
+            *_headers(ident, NODE_HEADERS),
             Output(f"cpp/{ident}/udp_link.hpp", "cpp/udp_link.hpp.j2"),
         ] if carries_link(d) else []
         return [
-            Output(f"cpp/{ident}/runtime.hpp", "cpp/runtime.hpp.j2"),
+            *_headers(ident, RUNTIME_HEADERS),
             Output(f"cpp/{ident}/sha256.hpp", "cpp/sha256.hpp.j2"),
             Output(f"cpp/{ident}/signing.hpp", "cpp/signing.hpp.j2"),
             Output(f"cpp/{ident}/packets.hpp", "cpp/packets.hpp.j2"),

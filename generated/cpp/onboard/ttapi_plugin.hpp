@@ -26,7 +26,8 @@
 //     std::atomic<bool> stop{false};
 //     udp.run(stop);
 //
-// On the drone, DJI's Onboard SDK 4 carries the packets instead (see DttLink in node.hpp).
+// On the drone, DJI's Onboard SDK 4 carries the packets instead (see DttLink in dtt_link.hpp, which
+// node.hpp includes).
 #ifndef TTCTL_TTAPI_ONBOARD_PLUGIN_HPP
 #define TTCTL_TTAPI_ONBOARD_PLUGIN_HPP
 

@@ -10,7 +10,7 @@
 //
 // A Node is sans-IO: receive() takes packets, poll() gives the next packet the pacer lets go,
 // wakeup() says when to call again. A driver owns the clock and the transport:
-//  - DttLink (below): DJI's Onboard SDK 4 (MobileDevice::sendDataToMSDK and
+//  - DttLink (dtt_link.hpp): DJI's Onboard SDK 4 (MobileDevice::sendDataToMSDK and
 //    setFromMSDKCallback; packets from the SDK's thread are queued, copied, for the node's);
 //  - UdpLink (udp_link.hpp): UDP, for laptops, tests and ttctl's emulated radio.
 // Onboard nothing confirms a packet, so the node paces itself (NodeConfig::rate_Bps, the M100's
@@ -20,22 +20,28 @@
 // receiving a packet, dispatching, replying, building and sending packets, storing file data and
 // building statuses do not. Not thread-safe: drive a Node from one thread (DttLink::from_mobile()
 // is the one call made for other threads).
+//
+// The node is in pieces (this header includes them all):
+//   node_config.hpp    NodeConfig (how a node is set up), NodeEvent and NodeStats (what it reports)
+//   node.hpp           NodeContext, NodePlugin and the Node class: what the user binds, sending,
+//                      driving (poll, wakeup), periodic work
+//   node_receive.hpp   Node: packets in, per source; frames for this end, handled; commands run
+//   node_files.hpp     Node: uploads, fetches served from the serve folder, file transfer events
+//   node_pump.hpp      NodePump: drives a Node from a loop of your own
+//   dtt_link.hpp       DttLink: the node on DJI's Onboard SDK 4
 #ifndef TTCTL_TTAPI_NODE_HPP
 #define TTCTL_TTAPI_NODE_HPP
 
 #include <sys/stat.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <cmath>
-#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <functional>
 #include <limits>
-#include <mutex>
+#include <memory>
 #include <random>
 #include <string>
 #include <string_view>
@@ -45,6 +51,7 @@
 #include "commands.hpp"
 #include "enums.hpp"
 #include "messages.hpp"
+#include "node_config.hpp"
 #include "runtime.hpp"
 #include "scheduler.hpp"
 #include "transfer.hpp"
@@ -56,189 +63,6 @@ inline double monotonic_now() noexcept
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
-
-namespace impl {
-
-// Where a message's target_system and target_component are in its payload (255: none).
-struct TargetField {
-    std::uint32_t msgid;
-    std::uint8_t system;
-    std::uint8_t component;
-};
-
-inline constexpr TargetField TARGETS[] = {
-    {4, 12, 13},
-    {5, 0, 255},
-    {11, 4, 255},
-    {20, 2, 3},
-    {21, 0, 1},
-    {23, 4, 5},
-    {37, 4, 5},
-    {38, 4, 5},
-    {39, 32, 33},
-    {40, 2, 3},
-    {41, 2, 3},
-    {43, 0, 1},
-    {44, 2, 3},
-    {45, 0, 1},
-    {47, 0, 1},
-    {48, 12, 255},
-    {50, 18, 19},
-    {51, 2, 3},
-    {54, 24, 25},
-    {66, 2, 3},
-    {70, 16, 17},
-    {73, 32, 33},
-    {75, 30, 31},
-    {76, 30, 31},
-    {77, 8, 9},
-    {82, 36, 37},
-    {84, 50, 51},
-    {86, 50, 51},
-    {110, 1, 2},
-    {117, 4, 5},
-    {119, 10, 11},
-    {121, 0, 1},
-    {122, 0, 1},
-    {123, 0, 1},
-    {139, 41, 42},
-    {243, 52, 255},
-    {248, 3, 4},
-    {256, 8, 9},
-    {258, 0, 1},
-    {266, 2, 3},
-    {267, 2, 3},
-    {268, 2, 3},
-    {282, 32, 33},
-    {284, 30, 31},
-    {285, 38, 39},
-    {286, 50, 51},
-    {287, 20, 21},
-    {288, 20, 21},
-    {296, 36, 37},
-    {320, 2, 3},
-    {321, 0, 1},
-    {323, 0, 1},
-    {345, 2, 3},
-    {385, 2, 3},
-    {386, 4, 5},
-    {387, 4, 5},
-    {388, 32, 33},
-    {12900, 0, 1},
-    {12901, 30, 31},
-    {12902, 4, 5},
-    {12903, 0, 1},
-    {12904, 28, 29},
-    {12905, 0, 1},
-    {12915, 0, 1},
-    {12919, 16, 17},
-    {50000, 12, 13},
-    {50001, 26, 27},
-    {50003, 4, 5},
-    {50004, 64, 255},
-    {50005, 26, 27},
-    {50010, 2, 3},
-    {50013, 4, 5},
-    {0xFFFFFFFFu, 255, 255},
-};
-
-inline const TargetField* target_field(std::uint32_t msgid) noexcept
-{
-    const std::size_t n = sizeof TARGETS / sizeof TARGETS[0] - 1;
-    std::size_t lo = 0;
-    std::size_t hi = n;
-    while (lo < hi) {
-        const std::size_t mid = lo + (hi - lo) / 2;
-        if (TARGETS[mid].msgid < msgid) {
-            lo = mid + 1;
-        } else {
-            hi = mid;
-        }
-    }
-    return lo < n && TARGETS[lo].msgid == msgid ? &TARGETS[lo] : nullptr;
-}
-
-inline std::uint8_t payload_byte(const Frame& f, std::uint8_t at) noexcept
-{
-    return at < f.payload_length ? f.payload[at] : 0;  // truncated: zero
-}
-
-}  // namespace impl
-
-/// How a node is set up.
-struct NodeConfig {
-    static constexpr double M100_DOWNLINK_BPS = 6700.0;  // ttctl's m100 profile at 10 m
-
-    std::uint8_t sysid = 1;
-    std::uint8_t compid = 240;
-    /// What the node sends per second at most (the link's capacity in this direction): 0 sends
-    /// as fast as polled. Onboard nothing says what DJI's SDK could not queue, so give the
-    /// downlink's rate (the M100's by default).
-    double rate_Bps = M100_DOWNLINK_BPS;
-    std::size_t mtu = 100;  // DTT packets
-    std::string inbox;  // files received land here ("": this end takes no files)
-    std::string serve;  // files a peer may fetch ("": none)
-    Quota quota;  // of the inbox
-    TransferConfig transfer;
-    std::size_t max_transfers = 8;  // incoming transfers running at once (more are told BUSY)
-    double heartbeat_interval = 1.0;  // a HEARTBEAT every second (0: none)
-    Signing* signing = nullptr;  // MAVLink 2 signing of everything sent and received (it must outlive the node)
-    /// Seconds of silence after which a half-received frame spanning packets is given up and
-    /// what the packets held is delivered (0: three times the usual gap between packets).
-    double quiet = 0.0;
-    /// Where transfer ids come from (empty: 32 random bits from std::random_device's seed). For
-    /// tests that replay another end's choices; a 0 or an id in use is drawn again.
-    std::function<std::uint32_t()> new_id;
-};
-
-/// Something a node's user may want to know (log it, count it).
-struct NodeEvent {
-    enum class Kind : std::uint8_t {
-        file,  // an incoming transfer: see `file`
-        serving,  // a fetch is being served
-        served,  // a served fetch completed (verified by the peer)
-        serve_failed,  // a served fetch failed (`reason`)
-        request_refused,  // a fetch was refused (`result`, `reason`)
-        command,  // a command was executed (`repeated`: a retry answered from the record)
-        link_refused,  // frames from `source` refused for their signature (once per source)
-    };
-
-    Kind kind = Kind::file;
-    FileEvent file = FileEvent::accepted;
-    std::uint8_t sysid = 0;  // the peer
-    std::uint8_t compid = 0;
-    std::string_view name;  // the file (as offered: check it before you print it raw)
-    std::uint64_t size = 0;
-    std::string_view reason;
-    const char* path = nullptr;  // where a completed file is
-    double seconds = 0.0;
-    std::uint64_t resumed_bytes = 0;  // what the partial file held when a transfer was accepted
-    bool identical = false;  // complete because an identical file was there under the name
-    const std::uint8_t* sha256 = nullptr;
-    std::uint16_t command_id = 0;
-    std::uint8_t action = 0;
-    std::uint8_t result = 0;  // TtResult (command) or TtFileResult
-    bool repeated = false;
-    std::uint64_t source = 0;
-    const Incoming* transfer = nullptr;
-};
-
-struct NodeStats {
-    std::uint64_t packets_in = 0;
-    std::uint64_t packets_out = 0;
-    std::uint64_t bytes_out = 0;
-    std::uint64_t frames_in = 0;  // valid frames from peers
-    std::uint64_t echoes = 0;  // our own frames, heard back
-    std::uint64_t ignored = 0;  // frames for another system or component
-    std::uint64_t bad_frames = 0;  // whole frames refused (CRC, signature, decoding)
-    std::uint64_t refused_signature = 0;  // of those: refused by the Signing (bad, replayed, unsigned)
-    std::uint64_t sources_forgotten = 0;  // packet receivers dropped for newer sources
-    std::uint64_t requests_forgotten = 0;  // fetch requests whose name never came whole, dropped for newer ones
-    std::uint64_t files_received = 0;
-    std::uint64_t files_refused = 0;
-    std::uint64_t files_served = 0;
-};
-
 class Node;
 
 /// What a handler (and a timer, and a command's action) may do: send any message of the
@@ -447,30 +271,7 @@ public:
     /// files). False with words for a name no receiver takes, a file that cannot be sent, or no
     /// free sender. `id` gets the transfer id.
     bool send_file(const char* path, std::string_view name, std::uint8_t sysid, std::uint8_t compid, bool overwrite,
-                   Words& why, std::uint32_t request_id = 0)
-    {
-        FileSender* s = free_sender();
-        if (s == nullptr) {
-            why.clear();
-            why << static_cast<std::uint64_t>(MAX_SENDERS) << " files are being sent from here; ask again later";
-            return false;
-        }
-        if (!s->start(*this, encoder_, path, name, sysid, compid, cfg_.transfer, request_id, overwrite, now_, why)) {
-            return false;
-        }
-        s->set_byte_time(cfg_.rate_Bps > 0 ? 1.0 / cfg_.rate_Bps : 0.0);
-        scheduler_.add_source(s);
-        if (request_id != 0 && events_) {
-            NodeEvent e;
-            e.kind = NodeEvent::Kind::serving;
-            e.sysid = sysid;
-            e.compid = compid;
-            e.name = s->name();
-            e.size = s->size();
-            events_(e);
-        }
-        return true;
-    }
+                   Words& why, std::uint32_t request_id = 0);
 
     /// The senders (served fetches and uploads), for progress.
     template <class F>
@@ -487,20 +288,7 @@ public:
     /// A packet from `source` (an id the driver gives each peer address). Returns the number of
     /// valid frames in it from a peer (not our own echo): a listening transport answers an
     /// address only once it proved itself so.
-    std::size_t receive(double now, const std::uint8_t* packet, std::size_t n, std::uint64_t source = 0)
-    {
-        advance(now);
-        ++stats_.packets_in;
-        if (has_last_rx_) {
-            gap_ = 0.9 * gap_ + 0.1 * std::min(1.0, now - last_rx_);
-        }
-        has_last_rx_ = true;
-        last_rx_ = now;
-        Source& s = source_for(source);
-        s.last = now;
-        s.used_tick = ++tick_;
-        return feed(s, packet, n, false);
-    }
+    std::size_t receive(double now, const std::uint8_t* packet, std::size_t n, std::uint64_t source = 0);
 
     /// The next packet into `out` (mtu bytes) if the pacer lets one go now; returns its length,
     /// or 0. Does the periodic work that is due (statuses, offers, heartbeat, timers) first.
@@ -551,38 +339,14 @@ public:
     }
 
     /// When the quietest source holding half a frame last sent something; false if none does.
-    bool pending_since(double& when) const noexcept
-    {
-        bool any = false;
-        for (std::size_t i = 0; i < MAX_SOURCES; ++i) {
-            const Source& s = sources_[i];
-            if (s.used && s.rx.pending() != 0 && (!any || s.last < when)) {
-                when = s.last;
-                any = true;
-            }
-        }
-        return any;
-    }
+    bool pending_since(double& when) const noexcept;
 
     /// Sources quiet for `quiet` seconds: give up on their half-received long frames.
-    void flush(double now, double quiet)
-    {
-        advance(now);
-        for (std::size_t i = 0; i < MAX_SOURCES; ++i) {
-            Source& s = sources_[i];
-            if (s.used && s.rx.pending() != 0 && now - s.last >= quiet) {
-                feed(s, nullptr, 0, true);
-            }
-        }
-    }
+    void flush(double now, double quiet);
 
     /// The silence after which a half-received frame is given up: three packet times of what
     /// arrives (or NodeConfig::quiet), at least 20 ms and at most 2 s (unless configured longer).
-    double quiet() const noexcept
-    {
-        const double q = std::max({0.02, 3 * gap_, cfg_.quiet});
-        return std::min(q, std::max(2.0, cfg_.quiet));
-    }
+    double quiet() const noexcept;
 
     /// Forget transfers (partial files are saved for a resume) and let go of served files.
     void close()
@@ -599,19 +363,7 @@ public:
     }
 
     // IdSource: a transfer id, 32 random bits, never 0, not in use here.
-    std::uint32_t new_id() override
-    {
-        for (;;) {
-            const auto n = cfg_.new_id ? cfg_.new_id() : static_cast<std::uint32_t>(rng_());
-            bool taken = n == 0;
-            for (std::size_t i = 0; i < MAX_SENDERS && !taken; ++i) {
-                taken = senders_[i].active() && senders_[i].id() == n;
-            }
-            if (!taken) {
-                return n;
-            }
-        }
-    }
+    std::uint32_t new_id() override;
 
 private:
     static constexpr double STATUS_BYTES = 60.0;  // a typical TT_FILE_STATUS frame
@@ -655,385 +407,27 @@ private:
         now_ = std::max(now_, now);
     }
 
-    Source& source_for(std::uint64_t id)
-    {
-        Source* free = nullptr;
-        Source* oldest = nullptr;
-        for (std::size_t i = 0; i < MAX_SOURCES; ++i) {
-            Source& s = sources_[i];
-            if (s.used && s.id == id) {
-                return s;
-            }
-            if (!s.used) {
-                free = free != nullptr ? free : &s;
-            } else if (oldest == nullptr || s.used_tick < oldest->used_tick) {
-                oldest = &s;
-            }
-        }
-        Source* s = free;
-        if (s == nullptr) {
-            s = oldest;  // the least recently heard source goes, with its half-received frame
-            ++stats_.sources_forgotten;
-            s->rx = PacketReceiver(cfg_.signing);
-        }
-        s->used = true;
-        s->id = id;
-        s->told_refused = false;
-        return *s;
-    }
+    // -- packets in, frames for this end, commands (node_receive.hpp) ---------------------------
+    Source& source_for(std::uint64_t id);
+    std::size_t feed(Source& s, const std::uint8_t* packet, std::size_t n, bool flushing);
+    bool for_us(const Frame& f) const noexcept;
+    bool handle(const Frame& f);
+    void on_command(const Frame& f);
 
-    std::size_t feed(Source& s, const std::uint8_t* packet, std::size_t n, bool flushing)
-    {
-        const std::uint64_t bad_before = s.rx.stats().bad_frames;
-        const std::uint64_t sig_before = s.rx.stats().bad_signatures;
-        std::size_t peers = 0;
-        auto on_frame = [&](const Frame& f) { peers += handle(f) ? 1u : 0u; };
-        if (flushing) {
-            s.rx.flush(on_frame);
-        } else {
-            s.rx.feed(packet, n, on_frame);
-        }
-        stats_.bad_frames += s.rx.stats().bad_frames - bad_before;
-        const std::uint64_t refused = s.rx.stats().bad_signatures - sig_before;
-        stats_.refused_signature += refused;
-        if (refused != 0 && !s.told_refused) {
-            s.told_refused = true;
-            if (events_) {
-                NodeEvent e;
-                e.kind = NodeEvent::Kind::link_refused;
-                e.source = s.id;
-                events_(e);
-            }
-        }
-        return peers;
-    }
-
-    bool for_us(const Frame& f) const noexcept
-    {
-        const impl::TargetField* t = impl::target_field(f.msgid);
-        if (t == nullptr) {
-            return true;
-        }
-        const std::uint8_t sys = impl::payload_byte(f, t->system);
-        if (sys != 0 && sys != cfg_.sysid) {
-            return false;
-        }
-        if (t->component != 255) {
-            const std::uint8_t comp = impl::payload_byte(f, t->component);
-            if (comp != 0 && comp != cfg_.compid) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    // One valid frame; true if it came from a peer (not our own echo).
-    bool handle(const Frame& f)
-    {
-        if (f.sysid == cfg_.sysid && f.compid == cfg_.compid) {
-            ++stats_.echoes;  // our own frames, echoed
-            return false;
-        }
-        ++stats_.frames_in;
-        const double now = now_;
-        if (f.msgid == TtFileData::MSG_ID || f.msgid == TtFileDataWide::MSG_ID) {
-            if (receiver_) {
-                if (f.msgid == TtFileData::MSG_ID) {
-                    const TtFileData m = f.as<TtFileData>();
-                    receiver_->on_data(now, m.transfer_id, m.offset, m.data.data(), NARROW, f.sysid, f.compid);
-                } else {
-                    const TtFileDataWide m = f.as<TtFileDataWide>();
-                    receiver_->on_data(now, m.transfer_id, m.offset, m.data.data(), WIDE, f.sysid, f.compid);
-                }
-            }
-            return true;
-        }
-        if (!for_us(f)) {
-            ++stats_.ignored;
-            return true;
-        }
-        switch (f.msgid) {
-        case TtFileOffer::MSG_ID:
-            if (receiver_) {
-                receiver_->on_offer(now, f.as<TtFileOffer>(), f.sysid, f.compid);
-            } else {
-                ++stats_.ignored;
-            }
-            break;
-        case TtFileStatus::MSG_ID:
-            on_status(now, f.as<TtFileStatus>(), f.sysid, f.compid);
-            break;
-        case TtFileReason::MSG_ID: {
-            const TtFileReason m = f.as<TtFileReason>();
-            if (FileSender* s = sender_for(m.transfer_id, f.sysid, f.compid)) {
-                s->on_reason(now, m);
-            }
-            break;
-        }
-        case TtFileRequest::MSG_ID:
-            on_request(f.as<TtFileRequest>(), f.sysid, f.compid);
-            break;
-        case TtActionCommand::MSG_ID:
-            on_command(f);
-            break;
-        default:
-            break;
-        }
-        dispatcher_.dispatch(f);
-        return true;
-    }
-
-    FileSender* sender_for(std::uint32_t id, std::uint8_t sysid, std::uint8_t compid) noexcept
-    {
-        for (std::size_t i = 0; i < MAX_SENDERS; ++i) {
-            FileSender& s = senders_[i];
-            if (s.active() && s.id() == id && s.target_sysid() == sysid && s.target_compid() == compid) {
-                return &s;
-            }
-        }
-        return nullptr;
-    }
-
-    void on_status(double now, const TtFileStatus& m, std::uint8_t sysid, std::uint8_t compid)
-    {
-        if (m.result == static_cast<std::uint8_t>(TtFileResult::TT_FILE_RESULT_NOT_FOUND)
-            || m.result == static_cast<std::uint8_t>(TtFileResult::TT_FILE_RESULT_REQUEST_REFUSED)) {
-            return;  // answers to requests: this end makes none
-        }
-        FileSender* s = sender_for(m.transfer_id, sysid, compid);
-        if (s == nullptr) {
-            return;
-        }
-        const bool was_done = s->done();
-        s->on_status(now, m);
-        if (!was_done && s->done()) {
-            sender_finished(*s);
-        }
-    }
-
-    void on_command(const Frame& f)
-    {
-        const TtActionCommand cmd = f.as<TtActionCommand>();
-        TtCommandAck ack;
-        CommandOutcome outcome;
-        auto run = [&](const TtActionCommand& c) -> CommandOutcome {
-            if (!action_) {
-                return CommandOutcome(TtResult::TT_RESULT_UNSUPPORTED, "this vehicle runs no commands");
-            }
-            return action_(c, f, context_);
-        };
-        const auto verdict = server_.on_command(cmd, f.sysid, f.compid, run, ack, outcome);
-        if (verdict == CommandServer::Verdict::not_ours) {
-            return;
-        }
-        if (verdict == CommandServer::Verdict::executed && outcome.words[0] != '\0') {
-            // so that a refusal's words leave before the refusing ack
-            const std::uint8_t severity = outcome.severity != 0 ? outcome.severity : (outcome.ok() ? 6 : 4);
-            log(outcome.text(), severity, true);
-        }
-        send(ack, Priority::control);
-        if (events_) {
-            NodeEvent e;
-            e.kind = NodeEvent::Kind::command;
-            e.sysid = f.sysid;
-            e.compid = f.compid;
-            e.command_id = cmd.command_id;
-            e.action = cmd.action;
-            e.result = ack.result;
-            e.repeated = verdict == CommandServer::Verdict::repeated;
-            e.reason = outcome.text();
-            events_(e);
-        }
-    }
-
-    void on_request(const TtFileRequest& m, std::uint8_t sysid, std::uint8_t compid)
-    {
-        if (m.request_id == 0) {
-            return;
-        }
-        for (std::size_t i = 0; i < MAX_SENDERS; ++i) {
-            const FileSender& s = senders_[i];
-            if (s.active() && s.request_id() == m.request_id && s.target_sysid() == sysid
-                && s.target_compid() == compid && !s.done()) {
-                return;  // already serving it: the offers repeat on their own
-            }
-        }
-        Request* r = nullptr;
-        Request* free = nullptr;
-        Request* oldest = nullptr;
-        for (std::size_t i = 0; i < MAX_REQUESTS; ++i) {
-            Request& q = requests_[i];
-            if (q.used && q.sysid == sysid && q.compid == compid && q.id == m.request_id) {
-                r = &q;
-                break;
-            }
-            if (!q.used) {
-                free = free != nullptr ? free : &q;
-            } else if (oldest == nullptr || q.used_tick < oldest->used_tick) {
-                oldest = &q;
-            }
-        }
-        if (r == nullptr) {
-            r = free;
-            if (r == nullptr) {
-                r = oldest;
-                ++stats_.requests_forgotten;
-            }
-            std::memset(r, 0, sizeof *r);
-            r->used = true;
-            r->sysid = sysid;
-            r->compid = compid;
-            r->id = m.request_id;
-        }
-        r->used_tick = ++tick_;
-        if (r->length == 0) {
-            r->length = m.name_length;
-        }
-        const std::size_t off = m.name_offset;
-        const std::size_t chunk = off < r->length ? std::min<std::size_t>(m.name.size(), r->length - off) : 0;
-        std::memcpy(r->name + off, m.name.data(), chunk);
-        for (std::size_t i = off; i < off + chunk; ++i) {
-            r->have[i >> 3] = static_cast<std::uint8_t>(r->have[i >> 3] | 1u << (i & 7));
-        }
-        if (r->length == 0) {
-            return;
-        }
-        for (std::size_t i = 0; i < r->length; ++i) {
-            if ((r->have[i >> 3] >> (i & 7) & 1) == 0) {
-                return;
-            }
-        }
-        r->used = false;
-        Words why;
-        char path[PATH_MAX];
-        const std::string_view name(reinterpret_cast<const char*>(r->name), r->length);
-        const TtFileResult verdict = servable(name, path, why);
-        if (verdict == TtFileResult::TT_FILE_RESULT_IN_PROGRESS) {
-            if (send_file(path, name, sysid, compid, false, why, m.request_id)) {
-                return;
-            }
-            refuse_request(sysid, compid, m.request_id, TtFileResult::TT_FILE_RESULT_REQUEST_REFUSED, name, why.view());
-            return;
-        }
-        refuse_request(sysid, compid, m.request_id, verdict, name, why.view());
-    }
-
-    // The served file a request names (IN_PROGRESS, with its path), or the refusal with words.
-    TtFileResult servable(std::string_view name, char* path, Words& why) const
-    {
-        const auto* raw = reinterpret_cast<const std::uint8_t*>(name.data());
-        why.clear();
-        if (!valid_utf8(raw, name.size())) {
-            why << "the name is not valid UTF-8";
-            return TtFileResult::TT_FILE_RESULT_REQUEST_REFUSED;
-        }
-        if (serve_real_.empty()) {
-            why << "this end serves no files";
-            return TtFileResult::TT_FILE_RESULT_REQUEST_REFUSED;
-        }
-        if (name_problem(name, why)) {
-            return TtFileResult::TT_FILE_RESULT_REQUEST_REFUSED;
-        }
-        char joined[PATH_MAX];
-        if (!impl::join(joined, serve_real_, name) || !impl::resolve(joined, path)
-            || !impl::inside(serve_real_, path)) {
-            why.clear();
-            why << name << " leads outside the served folder";
-            return TtFileResult::TT_FILE_RESULT_REQUEST_REFUSED;
-        }
-        struct stat st {};
-        if (::stat(path, &st) != 0) {
-            const int err = errno;
-            if (err == ENOENT || err == ENOTDIR) {
-                why << "there is no " << name << " in the served folder";
-                return TtFileResult::TT_FILE_RESULT_NOT_FOUND;
-            }
-            why << name << ": " << std::strerror(err);
-            return TtFileResult::TT_FILE_RESULT_REQUEST_REFUSED;
-        }
-        if (!S_ISREG(st.st_mode)) {
-            why << name << " is " << impl::kind_of(st.st_mode) << ", not a file";
-            return TtFileResult::TT_FILE_RESULT_REQUEST_REFUSED;
-        }
-        return TtFileResult::TT_FILE_RESULT_IN_PROGRESS;
-    }
-
+    // -- files: uploads, served fetches, transfer events (node_files.hpp) -----------------------
+    FileSender* sender_for(std::uint32_t id, std::uint8_t sysid, std::uint8_t compid) noexcept;
+    void on_status(double now, const TtFileStatus& m, std::uint8_t sysid, std::uint8_t compid);
+    void on_request(const TtFileRequest& m, std::uint8_t sysid, std::uint8_t compid);
+    TtFileResult servable(std::string_view name, char* path, Words& why) const;
     void refuse_request(std::uint8_t sysid, std::uint8_t compid, std::uint32_t request_id, TtFileResult result,
-                        std::string_view name, std::string_view reason)
-    {
-        TtFileReason why;
-        why.target_system = sysid;
-        why.target_component = compid;
-        why.transfer_id = request_id;
-        why.result = static_cast<std::uint8_t>(result);
-        reason_fit(reason, why.text.data());
-        TtFileStatus status;
-        status.target_system = sysid;
-        status.target_component = compid;
-        status.transfer_id = request_id;
-        status.result = static_cast<std::uint8_t>(result);
-        send(why, Priority::control, FileReceiver::key_of(KEY_REQUEST_REASON, 0, sysid, compid, request_id));
-        send(status, Priority::control, FileReceiver::key_of(KEY_REQUEST_STATUS, 0, sysid, compid, request_id));
-        if (events_) {
-            NodeEvent e;
-            e.kind = NodeEvent::Kind::request_refused;
-            e.sysid = sysid;
-            e.compid = compid;
-            e.name = name;
-            e.result = static_cast<std::uint8_t>(result);
-            e.reason = reason;
-            events_(e);
-        }
-    }
+                        std::string_view name, std::string_view reason);
+    FileSender* free_sender() noexcept;
+    void retire(FileSender& s) noexcept;
+    void sender_finished(const FileSender& s);
+    static void file_event_thunk(void* user, FileEvent what, const Incoming& t, const char* final_path);
+    void file_event(FileEvent what, const Incoming& t, const char* final_path);
 
-    FileSender* free_sender() noexcept
-    {
-        for (std::size_t i = 0; i < MAX_SENDERS; ++i) {
-            if (!senders_[i].active()) {
-                return &senders_[i];
-            }
-        }
-        FileSender* oldest = nullptr;  // a finished one still answering late statuses makes room
-        for (std::size_t i = 0; i < MAX_SENDERS; ++i) {
-            FileSender& s = senders_[i];
-            if (s.done() && (oldest == nullptr || s.finished_at() < oldest->finished_at())) {
-                oldest = &s;
-            }
-        }
-        if (oldest != nullptr) {
-            retire(*oldest);
-        }
-        return oldest;
-    }
-
-    void retire(FileSender& s) noexcept
-    {
-        if (!s.active()) {
-            return;
-        }
-        scheduler_.remove_source(&s);
-        s.release();
-    }
-
-    void sender_finished(const FileSender& s)
-    {
-        const TransferResult& r = s.result();
-        if (r.ok) {
-            ++stats_.files_served;
-        }
-        if (events_) {
-            NodeEvent e;
-            e.kind = r.ok ? NodeEvent::Kind::served : NodeEvent::Kind::serve_failed;
-            e.sysid = s.target_sysid();
-            e.compid = s.target_compid();
-            e.name = s.name();
-            e.size = s.size();
-            e.seconds = r.seconds;
-            e.reason = r.message.view();
-            events_(e);
-        }
-    }
-
+    // -- periodic work --------------------------------------------------------------------------
     void tick(double now)
     {
         if (receiver_) {
@@ -1072,39 +466,6 @@ private:
 #endif
             }
         }
-    }
-
-    static void file_event_thunk(void* user, FileEvent what, const Incoming& t, const char* final_path)
-    {
-        static_cast<Node*>(user)->file_event(what, t, final_path);
-    }
-
-    void file_event(FileEvent what, const Incoming& t, const char* final_path)
-    {
-        if (what == FileEvent::complete && !t.identical) {
-            ++stats_.files_received;
-        } else if (what == FileEvent::refused) {
-            ++stats_.files_refused;
-        }
-        if (!events_) {
-            return;
-        }
-        NodeEvent e;
-        e.kind = NodeEvent::Kind::file;
-        e.file = what;
-        e.sysid = t.sysid;
-        e.compid = t.compid;
-        e.name = t.name();
-        e.size = t.size;
-        e.reason = std::string_view(t.reason);
-        e.path = final_path;
-        e.seconds = (t.finished ? t.finished_at : now_) - t.started;
-        e.resumed_bytes = t.resumed_bytes;
-        e.identical = t.identical;
-        e.sha256 = t.sha256();
-        e.result = t.result;
-        e.transfer = &t;
-        events_(e);
     }
 
     NodeConfig cfg_;
@@ -1166,163 +527,11 @@ inline double NodeContext::now() const noexcept { return node_.now(); }
 inline std::uint8_t NodeContext::sysid() const noexcept { return node_.config().sysid; }
 inline std::uint8_t NodeContext::compid() const noexcept { return node_.config().compid; }
 
-/// Drives a Node from a loop of your own, whatever the transport: `step()` sends what the node
-/// lets go now (at most BURST packets), gives up half-received frames after the quiet time,
-/// and returns when to call it next. A late wake-up by up to CATCH_UP keeps the pacer's
-/// schedule (timers are never exact), so the link is used at its rate.
-class NodePump {
-public:
-    static constexpr int BURST = 16;
-    static constexpr double CATCH_UP = 0.002;
-    static constexpr double SPIN_GUARD = 0.001;
-
-    explicit NodePump(Node& node) noexcept : node_(node) {}
-
-    template <class Send>
-    double step(double real, Send&& send)
-    {
-        double now = real;
-        if (has_target_ && target_ <= real && real < target_ + CATCH_UP) {
-            now = std::max(target_, node_.now());
-        }
-        for (;;) {
-            int sent = 0;
-            while (sent < BURST) {
-                const std::size_t n = node_.poll(now, packet_);
-                if (n == 0) {
-                    break;
-                }
-                send(static_cast<const std::uint8_t*>(packet_), n);
-                ++sent;
-            }
-            double since = 0.0;
-            double flush_at = std::numeric_limits<double>::infinity();
-            if (node_.pending_since(since)) {
-                flush_at = since + node_.quiet();
-                if (flush_at <= real) {
-                    node_.flush(std::max(now, real), node_.quiet());
-                    continue;  // send what the frames it released called for
-                }
-            }
-            if (sent >= BURST) {
-                has_target_ = false;
-                return real;  // more to send: come back at once (after the transport's turn)
-            }
-            double target = std::min(node_.wakeup(), flush_at);
-            if (target <= real && sent == 0) {
-                target = real + SPIN_GUARD;  // due but nothing to do: do not spin
-            }
-            has_target_ = std::isfinite(target);
-            target_ = target;
-            return target;
-        }
-    }
-
-private:
-    Node& node_;
-    std::uint8_t packet_[280];
-    bool has_target_ = false;
-    double target_ = 0.0;
-};
-
-/// The node on DJI's Onboard SDK 4 Data Transparent Transmission. Packets from the mobile
-/// device come on the SDK's thread: from_mobile() copies them into a fixed queue (QUEUE packets;
-/// more are dropped and counted) and returns at once. run() drives the node on the calling
-/// thread until stop() or `stop` is set, handing packets to `send`, which you wire to
-/// MobileDevice::sendDataToMSDK. Allocation-free after construction.
-class DttLink {
-public:
-    static constexpr std::size_t QUEUE = 64;
-    static constexpr std::size_t MTU = 100;
-    using Send = std::function<void(const std::uint8_t* data, std::size_t n)>;
-
-    DttLink(Node& node, Send send) : node_(node), send_(std::move(send)), pump_(node) {}
-    DttLink(const DttLink&) = delete;
-    DttLink& operator=(const DttLink&) = delete;
-
-    /// One packet from the mobile device (any thread; `n` as the SDK reports it: a length
-    /// outside 1..100 is dropped and counted).
-    void from_mobile(const std::uint8_t* data, long n) noexcept
-    {
-        if (data == nullptr || n <= 0 || n > static_cast<long>(MTU)) {
-            dropped_.fetch_add(1, std::memory_order_relaxed);
-            return;
-        }
-        {
-            std::lock_guard<std::mutex> lock(m_);
-            if (count_ == QUEUE) {
-                dropped_.fetch_add(1, std::memory_order_relaxed);
-                return;
-            }
-            Slot& s = queue_[(head_ + count_) % QUEUE];
-            std::memcpy(s.bytes, data, static_cast<std::size_t>(n));
-            s.len = static_cast<std::size_t>(n);
-            ++count_;
-        }
-        cv_.notify_one();
-    }
-
-    /// Drive the node until stop() (or `external` becomes true).
-    void run(const std::atomic<bool>* external = nullptr)
-    {
-        double next = monotonic_now();
-        while (!stop_.load() && (external == nullptr || !external->load())) {
-            Slot s;
-            bool got = false;
-            {
-                std::unique_lock<std::mutex> lock(m_);
-                if (count_ == 0) {
-                    const double wait = next - monotonic_now();
-                    if (wait > 0) {
-                        cv_.wait_for(lock, std::chrono::duration<double>(std::min(wait, 0.5)));
-                    }
-                }
-                if (count_ != 0) {
-                    s = queue_[head_];
-                    head_ = (head_ + 1) % QUEUE;
-                    --count_;
-                    got = true;
-                }
-            }
-            const double now = monotonic_now();
-            if (got) {
-                node_.receive(now, s.bytes, s.len, 0);
-            }
-            next = pump_.step(monotonic_now(), [this](const std::uint8_t* p, std::size_t n) {
-                send_(p, n);
-                sent_.fetch_add(1, std::memory_order_relaxed);
-            });
-        }
-    }
-
-    void stop() noexcept
-    {
-        stop_.store(true);
-        cv_.notify_all();
-    }
-
-    std::uint64_t dropped() const noexcept { return dropped_.load(); }
-    std::uint64_t sent() const noexcept { return sent_.load(); }
-
-private:
-    struct Slot {
-        std::uint8_t bytes[MTU];
-        std::size_t len;
-    };
-
-    Node& node_;
-    Send send_;
-    NodePump pump_;
-    std::mutex m_;
-    std::condition_variable cv_;
-    Slot queue_[QUEUE] = {};
-    std::size_t head_ = 0;
-    std::size_t count_ = 0;
-    std::atomic<bool> stop_{false};
-    std::atomic<std::uint64_t> dropped_{0};
-    std::atomic<std::uint64_t> sent_{0};
-};
-
 }  // namespace ttapi::link
+
+#include "node_receive.hpp"
+#include "node_files.hpp"
+#include "node_pump.hpp"
+#include "dtt_link.hpp"
 
 #endif  // TTCTL_TTAPI_NODE_HPP

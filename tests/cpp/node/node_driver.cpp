@@ -1,12 +1,12 @@
 // node_driver: a generated link::Node driven sans-IO, in virtual time, by a script on stdin, for
-// tests/test_cpp_node.py, which runs ttctl's Python Endpoint on the same input and compares what
+// tests/test_cpp_node_parity.py, which runs ttctl's Python Endpoint on the same input and compares what
 // each sends.
 //
 //     node_driver INBOX SERVE RATE < script
 //
 // The node is 1/240, paced at RATE B/s, receives into INBOX, serves SERVE ("-": nothing), sends
-// no heartbeat, and answers every command UNSUPPORTED without words, as the Python endpoint
-// without an action answers it (a Node without an action adds a TT_LOG saying why). Script lines: `I ID` queues a transfer id for the node to draw (as the Python end's
+// no heartbeat, and accepts every command (ACCEPTED, as the Python endpoint it is compared with
+// is told to). Script lines: `I ID` queues a transfer id for the node to draw (as the Python end's
 // seeded random numbers give it); `R NOW HEX` a packet arrives at NOW; `P NOW` the node is
 // polled at NOW until it has nothing more to send: the driver prints the packets' hex,
 // space-separated, or `-`, and flushes.
@@ -44,7 +44,7 @@ int main(int argc, char** argv)
     };
     ttapi::link::Node node(cfg);
     node.on_command([](const ttapi::TtActionCommand&, const ttapi::Frame&, ttapi::link::NodeContext&) {
-        return ttapi::link::CommandOutcome(ttapi::TtResult::TT_RESULT_UNSUPPORTED);
+        return ttapi::link::CommandOutcome(ttapi::TtResult::TT_RESULT_ACCEPTED);
     });
     ttapi::link::Words why;
     if (!node.start(why)) {

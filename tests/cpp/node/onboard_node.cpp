@@ -2,7 +2,7 @@
 // program, for tests that put it against ttctl's Python ends and the Java tablet.
 //
 // Built from the generated skeleton cpp/onboard/ttapi_plugin.hpp as a user would edit it (the
-// test fills in on_command() and the DJI_POSE_STAMPED handler; see tests/test_cpp_node.py):
+// test fills in on_command() and the DJI_POSE_STAMPED handler: EDITS in tests/cpp_node_lib.py):
 //
 //     g++ -std=c++17 -Wall -Wextra -Wpedantic -Werror -I OUT/cpp -I SKELETON_DIR onboard_node.cpp -o onboard_node
 //

@@ -1,5 +1,5 @@
 // scheduler_driver: the generated link::Scheduler (scheduler.hpp) driven by a script on stdin,
-// for tests/test_cpp_node.py, which runs ttctl's Python Scheduler (proto/scheduler.py) on the
+// for tests/test_cpp_node_parity.py, which runs ttctl's Python Scheduler (proto/scheduler.py) on the
 // same script and compares the packets.
 //
 //     scheduler_driver MTU RATE < script

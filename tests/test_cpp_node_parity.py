@@ -1,0 +1,291 @@
+"""The generated C++ onboard end makes the decisions ttctl's Python end makes, byte for byte, in
+virtual time (the programs: tests/cpp_node_lib.py):
+
+- the name rules' table of control and format characters is Python's unicodedata;
+- on seeded random work, the C++ scheduler builds the packets Python's Scheduler builds, at the
+  same moments;
+- the node (node_driver, sans-IO) receiving an upload with commands, and serving a fetch, over a
+  channel that loses 2 to 25 % of the packets, sends what Python's Endpoint sends at the same
+  moments.
+"""
+
+from __future__ import annotations
+
+import random
+import subprocess
+import unicodedata
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+import ttapi
+from cpp_node_lib import needs_gxx, write
+
+pytestmark = needs_gxx
+
+TABLET = (255, 190)
+
+
+# -- the name rules -----------------------------------------------------------------------------
+
+def test_name_rules_refuse_the_characters_python_refuses(cpp_node_bins: dict[str, Path]) -> None:
+    """The C++ table of control and format characters is Python's unicodedata (Cc, Cf): checked
+    for every code point when Python's Unicode is the table's (14.0.0)."""
+    run = subprocess.run([str(cpp_node_bins["plain"]), "--print-name-rules"], capture_output=True, text=True,
+                         timeout=60)
+    assert run.returncode == 0, run.stderr
+    got = [tuple(int(x, 16) for x in line.split()) for line in run.stdout.splitlines()]
+    if unicodedata.unidata_version != "14.0.0":
+        pytest.skip(f"Python's Unicode is {unicodedata.unidata_version}, the C++ table's 14.0.0")
+    want: list[list[int]] = []
+    for cp in range(1, 0x110000):
+        if 0xD800 <= cp <= 0xDFFF or unicodedata.category(chr(cp)) not in ("Cc", "Cf"):
+            continue
+        if want and want[-1][1] == cp - 1:
+            want[-1][1] = cp
+        else:
+            want.append([cp, cp])
+    assert got == [tuple(w) for w in want]
+
+
+# -- the scheduler: Python's decisions -----------------------------------------------------------
+
+def scheduler_script(rng: random.Random) -> list[str]:
+    """Random work for a scheduler: control frames (some keyed, as statuses are), telemetry,
+    bulk sources of narrow (100-byte) and wide (267-byte) data frames coming and going, and
+    packets asked for at rising times."""
+    enc = ttapi.Encoder(sysid=1, compid=240)
+    ops: list[str] = []
+    live: list[int] = []
+    now = 0.0
+    queued = 0
+    for _ in range(600):
+        r = rng.random()
+        if r < 0.15 and queued < 40:
+            msg = rng.choice([ttapi.TtCommandAck(command_id=rng.randrange(65536), result=0, progress=100),
+                              ttapi.TtFileStatus(transfer_id=rng.randrange(1, 4), result=0,
+                                                 received_contiguous=rng.randrange(10**6), range_count=1,
+                                                 ranges=[rng.randrange(100), 200] + [0] * 12),
+                              ttapi.TtLog(id=0, severity=6, text="x" * rng.randint(1, 79))])
+            key = rng.choice([0, 0, 1, 2, 3])
+            ops.append(f"C {enc.encode(msg).hex()} {key}")
+            queued += 1
+        elif r < 0.25:
+            msg = rng.choice([ttapi.Heartbeat(type=18, custom_mode=rng.randrange(2**32)),
+                              ttapi.TtOdometry(time_usec=rng.randrange(2**40), position=[rng.random(), 0, 1])])
+            ops.append(f"T {enc.encode(msg).hex()} 0")  # (Python's telemetry has no keys: the C++ one's are extra)
+        elif r < 0.3 and len(live) < 3:
+            sid = rng.randrange(1000)
+            if sid not in live:
+                live.append(sid)
+                ops.append(f"S {sid}")
+        elif r < 0.32 and live:
+            ops.append(f"R {live.pop(rng.randrange(len(live)))}")
+        elif r < 0.5 and live:
+            sid = rng.choice(live)
+            data = ttapi.TtFileDataWide(transfer_id=sid, offset=rng.randrange(10**6), data=rng.randbytes(247)) \
+                if rng.random() < 0.4 else ttapi.TtFileData(transfer_id=sid, offset=rng.randrange(10**6),
+                                                            data=rng.randbytes(80))
+            ops.append(f"B {sid} {enc.encode(data).hex()}")
+        else:
+            now += rng.choice([0.0, 0.001, 0.005, 0.015, 0.05])
+            ops.append(f"P {now!r}")
+            queued = max(0, queued - 3)
+    return ops
+
+
+def python_packets(ops: list[str], mtu: int, rate: float) -> list[str]:
+    from collections import deque
+
+    from ttctl.proto.scheduler import CONTROL, TELEMETRY, Scheduler
+
+    sched = Scheduler(mtu, rate)
+    sources: dict[int, tuple[deque[bytes], Any]] = {}
+    out = []
+    for op in ops:
+        parts = op.split()
+        if parts[0] in ("C", "T"):
+            key = int(parts[2])
+            sched.send(bytes.fromhex(parts[1]), CONTROL if parts[0] == "C" else TELEMETRY, key=key or None)
+        elif parts[0] == "S":
+            q: deque[bytes] = deque()
+
+            def pull(now: float, space: int, q: deque[bytes] = q) -> bytes | None:
+                if not q or (len(q[0]) == 100 and space < 100):
+                    return None
+                return q.popleft()
+
+            sources[int(parts[1])] = (q, pull)
+            sched.add_source(pull)
+        elif parts[0] == "R":
+            sched.remove_source(sources[int(parts[1])][1])
+        elif parts[0] == "B":
+            sources[int(parts[1])][0].append(bytes.fromhex(parts[2]))
+        else:
+            pkt = sched.next_packet(float(parts[1]))
+            out.append(pkt.hex() if pkt else "-")
+    return out
+
+
+@pytest.mark.parametrize("mtu,rate", [(100, 6700.0), (100, 0.0), (64, 500.0)])
+def test_the_scheduler_builds_the_packets_pythons_builds(cpp_node_bins: dict[str, Path], mtu: int, rate: float) -> None:
+    """On seeded random work (control frames keyed and not, telemetry, bulk sources coming and
+    going, narrow and wide data frames, packets asked for at paced times), the C++ scheduler
+    builds byte for byte the packets ttctl's Python one builds, at the same moments."""
+    for seed in range(4):
+        ops = scheduler_script(random.Random(seed))
+        run = subprocess.run([str(cpp_node_bins["scheduler"]), str(mtu), str(rate)], input="\n".join(ops) + "\n",
+                             capture_output=True, text=True, timeout=60)
+        assert run.returncode == 0, run.stderr
+        got = run.stdout.splitlines()
+        want = python_packets(ops, mtu, rate)
+        assert len(got) == len(want)
+        for i, (g, w) in enumerate(zip(got, want, strict=True)):
+            assert g == w, (seed, i, g, w)
+        assert sum(p != "-" for p in want) > 30  # packets were built, not just refused
+
+
+# -- the node: the Python endpoint's decisions ----------------------------------------------------
+
+def receiving_script(tmp: Path, seed: int, loss: float, size: int) -> tuple[list[str], list[str]]:
+    """A Python tablet (Endpoint 255/190, seeded) uploads a file and sends commands to a Python
+    onboard Endpoint (1/240, paced at 6700 B/s) over a channel that loses `loss` of the packets
+    either way, in virtual time (5 ms steps). Returns the onboard end's input as a node_driver
+    script, and what it sent at each poll."""
+    from ttctl.proto.endpoint import Endpoint
+    from ttctl.proto.storage import BytesSource, ReceiveDir
+
+    b = shipped_bindings()
+    rng = random.Random(seed)
+    tx = Endpoint(b, *TABLET, rate_Bps=500.0, rng=random.Random(seed))
+    # an action that accepts every command, as node_driver's (without one, both ends answer UNSUPPORTED)
+    rx = Endpoint(b, 1, 240, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp / "python"),
+                  action=lambda msg: int(ttapi.TtResult.TT_RESULT_ACCEPTED))
+    data = random.Random(seed + 1).randbytes(size)
+    sender = tx.send_file("f.bin", (1, 240), source=BytesSource(data, "f.bin"))
+    script: list[str] = []
+    sent: list[str] = []
+    now = 0.0
+    commands = 0
+    while not sender.done and now < 300:
+        if commands < 6 and rng.random() < 0.01:
+            tx.command(b.TtActionCommand(action=commands % 5), (1, 240))
+            commands += 1
+        while (pkt := tx.poll(now)) is not None:
+            if rng.random() >= loss:
+                script.append(f"R {now!r} {pkt.hex()}")
+                rx.receive(now, pkt)
+        out = []
+        while (pkt := rx.poll(now)) is not None:
+            out.append(pkt)
+        script.append(f"P {now!r}")
+        sent.append(" ".join(p.hex() for p in out) or "-")
+        for pkt in out:
+            if rng.random() >= loss:
+                tx.receive(now, pkt)
+        now = round(now + 0.005, 6)
+    assert sender.result is not None and sender.result.ok, sender.result
+    assert (tmp / "python" / "f.bin").read_bytes() == data
+    return script, sent
+
+
+def shipped_bindings() -> Any:
+    from conftest import shipped
+
+    return shipped()
+
+
+@pytest.mark.parametrize("seed,loss", [(1, 0.1), (2, 0.25)])
+def test_the_node_answers_what_pythons_endpoint_answers(cpp_node_bins: dict[str, Path], tmp_path: Path, seed: int,
+                                                        loss: float) -> None:
+    """The C++ node and ttctl's Python Endpoint, as the onboard end of an upload with commands
+    over a lossy channel in virtual time, given the same packets at the same moments, send the
+    same packets byte for byte at the same moments: the same statuses (when, how many, which
+    gaps, hold times), the same acks, the same pacing; and store the same file."""
+    script, want = receiving_script(tmp_path, seed, loss, 20_000)
+    run = subprocess.run([str(cpp_node_bins["driver"]), str(tmp_path / "cpp"), "-", "6700"],
+                         input="\n".join(script) + "\n", capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr
+    got = run.stdout.splitlines()
+    assert len(got) == len(want)
+    polls = [line for line in script if line.startswith("P")]
+    for i, (g, w) in enumerate(zip(got, want, strict=True)):
+        assert g == w, (i, polls[i], g, w)
+    assert (tmp_path / "cpp" / "f.bin").read_bytes() == (tmp_path / "python" / "f.bin").read_bytes()
+    assert sum(w != "-" for w in want) > 20
+
+
+@pytest.mark.parametrize("seed,loss", [(3, 0.02), (4, 0.1), (5, 0.25)])
+def test_the_node_serves_what_pythons_endpoint_serves(cpp_node_bins: dict[str, Path], tmp_path: Path, seed: int,
+                                                      loss: float) -> None:
+    """Two worlds in virtual time, alike but for the onboard end: a Python tablet fetches a file
+    (TT_FILE_REQUEST) over a channel that loses `loss` of the packets either way, from ttctl's
+    Python Endpoint in one world and from the C++ node (drawing the same transfer ids) in the
+    other. At every 5 ms step both onboard ends send the same packets byte for byte: the same
+    offers, the same narrow and wide data frames chosen from the same loss estimates, the same
+    repeats, at the same pace; and both fetches complete."""
+    from ttctl.proto.endpoint import Endpoint
+    from ttctl.proto.storage import ReceiveDir
+
+    b = shipped_bindings()
+    serve = write(tmp_path / "serve" / "s.bin", 30_000, seed).parent
+    onboard_seed = seed + 100
+    draws = random.Random(onboard_seed)
+    draws.randint(1, 65535)  # the endpoint's first command id: its first draw
+    ids = [draws.getrandbits(32) for _ in range(8)]
+    drv = subprocess.Popen([str(cpp_node_bins["driver"]), str(tmp_path / "cpp_in"), str(serve), "6700"],
+                           stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+    assert drv.stdin is not None and drv.stdout is not None
+    for i in ids:
+        drv.stdin.write(f"I {i}\n")
+    onboard = Endpoint(b, 1, 240, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp_path / "py_in"), serve_dir=str(serve),
+                       rng=random.Random(onboard_seed))
+    worlds = []
+    for name in ("python", "cpp"):
+        done: list[bool] = []
+        tab = Endpoint(b, *TABLET, rate_Bps=500.0, receive_dir=ReceiveDir(tmp_path / f"tablet_{name}"),
+                       unsolicited=False, accept_commands=False, rng=random.Random(seed),
+                       on_event=lambda what, obj, done=done: done.append(True) if what == "file-complete" else None)
+        tab.request_file("s.bin", (1, 240))
+        worlds.append((name, tab, random.Random(seed), done))
+    now = 0.0
+    steps = sent = wide = 0
+    try:
+        while not all(w[3] for w in worlds) and now < 120:
+            outs = {}
+            for name, tab, lose, _ in worlds:
+                while (pkt := tab.poll(now)) is not None:
+                    if lose.random() >= loss:
+                        if name == "python":
+                            onboard.receive(now, pkt)
+                        else:
+                            drv.stdin.write(f"R {now!r} {pkt.hex()}\n")
+                if name == "python":
+                    out = []
+                    while (pkt := onboard.poll(now)) is not None:
+                        out.append(pkt)
+                else:
+                    drv.stdin.write(f"P {now!r}\n")
+                    drv.stdin.flush()
+                    line = drv.stdout.readline().strip()
+                    out = [] if line == "-" else [bytes.fromhex(h) for h in line.split()]
+                outs[name] = out
+                for pkt in out:
+                    if lose.random() >= loss:
+                        tab.receive(now, pkt)
+            assert outs["cpp"] == outs["python"], (now, [p.hex() for p in outs["cpp"]],
+                                                   [p.hex() for p in outs["python"]])
+            sent += len(outs["python"])
+            wide += sum(p.count(bytes.fromhex("59c300")) for p in outs["python"])  # TT_FILE_DATA_WIDE's msgid
+            steps += 1
+            now = round(now + 0.005, 6)
+    finally:
+        drv.stdin.close()
+        drv.wait(20)
+    assert all(w[3] for w in worlds), "a fetch did not complete"
+    for name in ("python", "cpp"):
+        assert (tmp_path / f"tablet_{name}" / "s.bin").read_bytes() == (serve / "s.bin").read_bytes()
+    assert sent > 300 and steps > 300
+    assert (wide > 20) == (loss < 0.05), wide  # little loss: wide frames (the choice is the same too)
+
