@@ -189,3 +189,58 @@ def test_at_300_m_the_script_fails_cleanly(tmp_path: Path, start: Start) -> None
     assert proc.returncode == 1
     assert one_line(proc.stderr) == f"ttctl: error: no vehicle answered at udpout:{LOCAL}:{air} within 15 s"
     assert "taking off" not in node.stderr  # type: ignore[attr-defined]
+
+
+def test_a_refusals_words_lost_on_the_way_are_asked_for_again(tmp_path: Path, start: Start) -> None:
+    """A proxy between the tablet and the vehicle drops the packets that carry the vehicle's
+    words (TT_LOG) the first time it sees them: the refusal still reaches the script with the
+    vehicle's own words (the tablet asks again with the same command id and issue time; the
+    vehicle repeats the recorded ack and its words, and runs nothing twice)."""
+    import socket
+    import threading
+
+    import ttapi
+
+    port, air = free_port(), free_port()
+    vehicle(start, tmp_path, port)
+    dropped: list[int] = []
+    stop = threading.Event()
+
+    def proxy() -> None:
+        tablet_addr = None
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as up, \
+                socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as down:
+            up.bind((LOCAL, air))
+            up.settimeout(0.05)
+            down.settimeout(0.05)
+            while not stop.is_set():
+                try:
+                    data, tablet_addr = up.recvfrom(2048)
+                    down.sendto(data, (LOCAL, port))
+                except TimeoutError:
+                    pass
+                try:
+                    data, _ = down.recvfrom(2048)
+                except TimeoutError:
+                    continue
+                frames = ttapi.Parser().feed(data)
+                if any(isinstance(f, ttapi.TtLog) for f in frames) and not dropped:
+                    dropped.append(len(data))  # the words, once
+                    continue
+                if tablet_addr is not None:
+                    up.sendto(data, tablet_addr)
+
+    t = threading.Thread(target=proxy, daemon=True)
+    t.start()
+    try:
+        (tmp_path / "flight.yaml").write_text("- fly: missing.yaml\n")
+        proc = run_ttctl("emulate", "tablet", "--to", f"udpout:{LOCAL}:{air}", "--script",
+                         str(tmp_path / "flight.yaml"), timeout=120)
+    finally:
+        stop.set()
+        t.join(5)
+    assert dropped, "the proxy saw no words to drop"
+    assert proc.returncode == 1
+    assert proc.stderr.strip().splitlines()[-1].startswith(
+        "ttctl: error: step 1 (line 1: fly missing.yaml) failed: fly_trajectory: refused: FAILED (trajectory refused: "
+        "missing.yaml:"), proc.stderr

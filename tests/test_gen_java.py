@@ -206,7 +206,7 @@ import json, socket, sys, threading
 sys.path.insert(0, sys.argv[1])
 import ttapi
 from ttapi.mavlink import Encoder, Parser
-from ttapi.messages import TtActionCommand, TtCommandAck
+from ttapi.messages import TtActionCommand, TtCommandAck, TtLog
 
 DROP = {1: 2}  # command_id -> tries to drop before answering
 log = []
@@ -235,6 +235,12 @@ def serve():
             ack = TtCommandAck(target_system=msg.get_srcSystem(), target_component=msg.get_srcComponent(),
                                command_id=msg.command_id, action=msg.action, result=4 if msg.action == 4 else 0,
                                progress=100)
+            if msg.action == 4 and n == 2:  # SYNC_TIME's refusal: its words as if the first were lost
+                words = "refused: not now, " + "a test " * 20  # 158 bytes: two chunks, as log_chunks cuts
+                raw = words.encode()
+                for k in range(0, 2):
+                    chunk = TtLog(id=77, severity=4, chunk_seq=k, text=raw[80 * k:80 * k + 80].decode())
+                    resp.sendto(enc.encode(chunk), addr)
             resp.sendto(enc.encode(ack), addr)
 
 

@@ -167,6 +167,8 @@ def test_a_restarted_tablet_reusing_its_command_ids_is_obeyed(classes: Path, tmp
     node = onboard(start, tmp_path, b, "--speed", "4")
     relay(start, a, b, "--profile", "m100", "--loss", "0.1", "--seed", "18", "--stats-interval", "0")
     first = Java(classes, tmp_path, "first", "restart", port=a, id=7, phase="first").finish(90)
+    # a refusal carries the vehicle's own words (its TT_LOG ahead of the ack)
+    assert first["refused"].endswith("refused: DENIED (refused: already landed)"), first["_text"][-3000:]
     assert first["takeoff"].startswith("ok ACCEPTED id 7") and first["airborne"], first["_text"][-3000:]
     assert first["land"].startswith("ok") and first["landed"], first["_text"][-3000:]
     again = Java(classes, tmp_path, "again", "restart", port=a, id=7, phase="again").finish(90)

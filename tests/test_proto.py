@@ -514,3 +514,30 @@ def test_an_end_that_carries_out_no_commands_accepts_none(tmp_path: Path) -> Non
     w.run(10, stop=lambda: c.done)
     assert c.done and not c.ok and c.ack is not None
     assert c.ack.result == int(ttapi.TtResult.TT_RESULT_UNSUPPORTED) and c.error == "refused: UNSUPPORTED"
+
+
+def test_a_refusals_words_are_recorded_and_repeated_with_its_ack() -> None:
+    """The action's words go ahead of its ack; a retry gets a refusal's words again with the
+    recorded ack (they may be what was lost), an acceptance's words only once; nothing runs twice."""
+    from ttctl.proto.commands import CommandServer
+
+    ran: list[int] = []
+
+    def action(msg: Any) -> Any:
+        ran.append(msg.action)
+        return (4, "refused: not flying") if msg.action == 1 else (0, "taking off")
+
+    server = CommandServer(shipped(), 1, 240, action=action)
+    enc = ttapi.Encoder(*TABLET)
+    land = ttapi.decode(enc.encode(ttapi.TtActionCommand(target_system=1, command_id=5, time_usec=9, action=1)))
+    up = ttapi.decode(enc.encode(ttapi.TtActionCommand(target_system=1, command_id=6, time_usec=9, action=0)))
+    ack, words = server.answer(land)
+    assert ack.result == 4 and words == "refused: not flying"
+    assert server.answer(land) == (ack, "refused: not flying")
+    ack, words = server.answer(up)
+    assert ack.result == 0 and words == "taking off"
+    assert server.answer(up) == (ack, "")
+    assert ran == [1, 0]
+    bare = CommandServer(shipped(), 1, 240)
+    ack, words = bare.answer(land)
+    assert ack.result == int(ttapi.TtResult.TT_RESULT_UNSUPPORTED) and words == "no commands are carried out here"

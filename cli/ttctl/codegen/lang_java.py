@@ -462,6 +462,7 @@ def ctor_doc(m: Message, d: Dialect) -> str:
 CONTRACT_FIELDS = {
     "TT_ACTION_COMMAND": ("command_id", "time_usec"),
     "TT_COMMAND_ACK": ("command_id", "result"),
+    "TT_LOG": ("id", "severity", "chunk_seq"),  # and its text, a char array (checked below)
 }
 
 
@@ -470,6 +471,8 @@ def has_contract(d: Dialect, name: str) -> bool:
     runtime uses, as scalars)."""
     m = d.messages_by_name.get(name)
     if m is None or not m.complete:
+        return False
+    if name == "TT_LOG" and ((t := m.field("text")) is None or t.type != "char" or not t.array_length):
         return False
     return all((f := m.field(n)) is not None and not f.array_length and not f.is_float and f.type != "char"
                for n in CONTRACT_FIELDS[name])

@@ -135,8 +135,26 @@ class CommandClient:
         return min((c._due for c in self.pending.values()), default=None)
 
 
-Action = Callable[[Any], int]
-"""Runs an action; returns a TtResult value."""
+Outcome = int | tuple[int, str]
+Action = Callable[[Any], Outcome]
+"""Runs an action; returns a TtResult value, or (value, words): why it refused, what it does.
+The words go to the commanding end as a TT_LOG line just ahead of the ack."""
+
+NO_COMMANDS = "no commands are carried out here"
+
+
+def log_chunks(b: Bindings, text: str, severity: int, boot_ms: int, line_id: int) -> list[Any]:
+    """A TT_LOG line: one message (id 0) if it fits 80 bytes with room for its NUL, else chunks of
+    80 bytes with one id and rising chunk_seq, the last one NUL-terminated (an empty one if the
+    text divides evenly)."""
+    raw = text.encode("utf-8")
+    if len(raw) < 80:
+        return [b.TtLog(time_boot_ms=boot_ms & 0xFFFFFFFF, id=0, severity=severity, chunk_seq=0, text=text)]
+    pieces = [raw[i:i + 80] for i in range(0, len(raw), 80)]
+    if len(pieces[-1]) == 80:
+        pieces.append(b"")
+    return [b.TtLog(time_boot_ms=boot_ms & 0xFFFFFFFF, id=line_id, severity=severity, chunk_seq=k,
+                    text=piece.decode("utf-8", "surrogateescape")) for k, piece in enumerate(pieces[:256])]
 
 
 class CommandServer:
@@ -146,29 +164,39 @@ class CommandServer:
         self.sysid = sysid
         self.compid = compid
         # no action: nothing here carries commands out, so none is acknowledged as accepted
-        self.action = action or (lambda msg: int(TtResult.TT_RESULT_UNSUPPORTED))
+        self.action: Action = action or (lambda msg: (int(TtResult.TT_RESULT_UNSUPPORTED), NO_COMMANDS))
         self.memory = memory
-        self.done: OrderedDict[tuple[int, int, int, int], Any] = OrderedDict()
+        self.done: OrderedDict[tuple[int, int, int, int], tuple[Any, str]] = OrderedDict()
         self.executed = 0
         self.duplicates = 0
 
     def on_command(self, msg: Any) -> Any:
+        """The ack for `msg` (None: not ours); see `answer`."""
+        return self.answer(msg)[0]
+
+    def answer(self, msg: Any) -> tuple[Any, str]:
+        """(the ack to send, the words to send just ahead of it, or ""). A command seen before
+        (a retry: the same peer, id and issue time) gets its recorded ack without running
+        again, and a refusal's recorded words with it: the retry may be the commanding end
+        asking again because the words were lost on the way."""
         if msg.target_system not in (self.sysid, 0) or msg.target_component not in (self.compid, 0):
-            return None
+            return None, ""
         key = (msg.get_srcSystem(), msg.get_srcComponent(), msg.command_id, msg.time_usec)
-        ack = self.done.get(key)
-        if ack is not None:
+        done = self.done.get(key)
+        if done is not None:
             self.duplicates += 1
             self.done.move_to_end(key)
-            return ack
+            ack, words = done
+            return ack, ("" if ack.result in FINAL_OK else words)
         try:
-            result = int(self.action(msg))
-        except Exception:
-            result = int(TtResult.TT_RESULT_FAILED)
+            outcome = self.action(msg)
+            result, words = (int(outcome[0]), str(outcome[1])) if isinstance(outcome, tuple) else (int(outcome), "")
+        except Exception as e:
+            result, words = int(TtResult.TT_RESULT_FAILED), f"the action failed: {type(e).__name__}: {e}"
         self.executed += 1
         ack = self.b.TtCommandAck(target_system=key[0], target_component=key[1], command_id=msg.command_id,
                                   action=msg.action, result=result, progress=100 if result != 1 else 0)
-        self.done[key] = ack
+        self.done[key] = (ack, words)
         if len(self.done) > self.memory:
             self.done.popitem(last=False)
-        return ack
+        return ack, words

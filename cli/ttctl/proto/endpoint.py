@@ -21,7 +21,7 @@ from typing import Any
 from ..wire.bindings import Bindings
 from ..wire.contract import TtFileResult as R
 from ..wire.packets import PacketReceiver
-from .commands import Command, CommandClient, CommandServer
+from .commands import FINAL_OK, Action, Command, CommandClient, CommandServer, log_chunks
 from .names import Refused, check_name, encoded
 from .ranges import RangeSet
 from .receiver import FileReceiver
@@ -81,7 +81,7 @@ class Endpoint:
     def __init__(self, bindings: Bindings, sysid: int, compid: int, *, mtu: int = 100, rate_Bps: float | None = None,
                  receive_dir: ReceiveDir | None = None, serve_dir: str | None = None,
                  config: TransferConfig | None = None, signing: Any = None,
-                 action: Callable[[Any], int] | None = None,
+                 action: Action | None = None, clock_ms: Callable[[float], int] | None = None,
                  on_message: Callable[[float, Any], None] | None = None,
                  on_event: Callable[[str, Any], None] | None = None, accept_commands: bool = True,
                  unsolicited: bool = True, rng: random.Random | None = None) -> None:
@@ -113,6 +113,8 @@ class Endpoint:
         self._rng = rng or random.SystemRandom()
         self.commands = CommandClient(sysid, compid, first_id=self._rng.randint(1, 65535))
         self.server = CommandServer(bindings, sysid, compid, action) if accept_commands else None
+        self.clock_ms = clock_ms or (lambda now: int(now * 1000))  # TT_LOG.time_boot_ms
+        self._log_id = 0
         self.on_message = on_message
         self.on_event = on_event
         self.now = 0.0
@@ -377,11 +379,19 @@ class Endpoint:
         elif isinstance(msg, b.TtCommandAck):
             self.commands.on_ack(now, msg)
         elif isinstance(msg, b.TtActionCommand) and self.server is not None:
-            ack = self.server.on_command(msg)
+            ack, words = self.server.answer(msg)
             if ack is not None:
+                if words:  # so that a refusal's words leave before the refusing ack
+                    self.say(words, 6 if ack.result in FINAL_OK else 4, urgent=True)
                 self.scheduler.send(self.encoder.encode(ack), CONTROL)
         if self.on_message is not None:
             self.on_message(now, msg)
+
+    def say(self, text: str, severity: int = 6, urgent: bool = False) -> None:
+        """A TT_LOG line to whoever listens (`urgent`: at control priority, ahead of telemetry)."""
+        self._log_id = self._log_id % 65535 + 1
+        for msg in log_chunks(self.b, text, severity, self.clock_ms(self.now), self._log_id):
+            self.send_message(msg, CONTROL if urgent else TELEMETRY)
 
     def _on_offer(self, now: float, msg: Any) -> None:
         if self.receiver is None:

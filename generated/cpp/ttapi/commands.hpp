@@ -137,7 +137,8 @@ public:
 
     /// Handle a command from (src_sysid, src_compid). `action(const TtActionCommand&)` returns a
     /// CommandOutcome (or a TtResult); it runs only for a command not seen before. `ack` gets
-    /// the ack to send and `outcome` what the action answered (for a retry: its result only).
+    /// the ack to send and `outcome` what the action answered (for a retry: its result, and a
+    /// refusal's words again).
     template <class Action>
     Verdict on_command(const TtActionCommand& cmd, std::uint8_t src_sysid, std::uint8_t src_compid, Action&& action,
                        TtCommandAck& ack, CommandOutcome& outcome)
@@ -153,6 +154,10 @@ public:
             e->used = ++tick_;
             ack = make_ack(*e);
             outcome = CommandOutcome(static_cast<TtResult>(e->result));
+            if (!outcome.ok()) {  // a refusal's words again: the retry may ask because they were lost
+                std::memcpy(outcome.words, e->words, sizeof outcome.words);
+                outcome.severity = e->severity;
+            }
             return Verdict::repeated;
         }
         outcome = run(action, cmd);
@@ -165,6 +170,12 @@ public:
         slot.action = cmd.action;
         slot.result = static_cast<std::uint8_t>(outcome.result);
         slot.used = ++tick_;
+        if (outcome.ok()) {
+            slot.words[0] = '\0';
+        } else {
+            std::memcpy(slot.words, outcome.words, sizeof slot.words);
+            slot.severity = outcome.severity;
+        }
         ack = make_ack(slot);
         return Verdict::executed;
     }
@@ -181,6 +192,8 @@ private:
         std::uint8_t compid;
         std::uint8_t action;
         std::uint8_t result;
+        std::uint8_t severity;
+        char words[CommandOutcome::WORDS];  // a refusal's, repeated with its ack
     };
 
     template <class Action>

@@ -307,7 +307,7 @@ inline void Node::on_command(const Frame& f)
     CommandOutcome outcome;
     auto run = [&](const TtActionCommand& c) -> CommandOutcome {
         if (!action_) {
-            return CommandOutcome(TtResult::TT_RESULT_UNSUPPORTED, "this vehicle runs no commands");
+            return CommandOutcome(TtResult::TT_RESULT_UNSUPPORTED, "no commands are carried out here");
         }
         return action_(c, f, context_);
     };
@@ -315,8 +315,10 @@ inline void Node::on_command(const Frame& f)
     if (verdict == CommandServer::Verdict::not_ours) {
         return;
     }
-    if (verdict == CommandServer::Verdict::executed && outcome.words[0] != '\0') {
-        // so that a refusal's words leave before the refusing ack
+    const bool repeated = verdict == CommandServer::Verdict::repeated;
+    if (outcome.words[0] != '\0' && (!repeated || !outcome.ok())) {
+        // so that a refusal's words leave before the refusing ack (again for a retry: the
+        // commanding end may ask again because the words were lost)
         const std::uint8_t severity = outcome.severity != 0 ? outcome.severity : (outcome.ok() ? 6 : 4);
         log(outcome.text(), severity, true);
     }
@@ -329,7 +331,7 @@ inline void Node::on_command(const Frame& f)
         e.command_id = cmd.command_id;
         e.action = cmd.action;
         e.result = ack.result;
-        e.repeated = verdict == CommandServer::Verdict::repeated;
+        e.repeated = repeated;
         e.reason = outcome.text();
         events_(e);
     }

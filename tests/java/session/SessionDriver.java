@@ -151,6 +151,11 @@ public final class SessionDriver {
         boolean landed = h.await(false, 10000); // its telemetry follows
         event("SYNC_TIME: " + hello + "; on the ground: " + landed + " (" + h.up + " m)");
         out.put("hello", hello).put("height_before", h.up);
+        if ("first".equals(a.get("phase"))) { // a LAND on the ground: refused, in the vehicle's words
+            String refused = submitOk(s, action(0, TtAction.TT_ACTION_LAND), 15000);
+            event("LAND on the ground: " + refused);
+            out.put("refused", refused);
+        }
         String takeoff = submitOk(s, action(id, TtAction.TT_ACTION_TAKE_OFF), 15000);
         event("TAKE_OFF id " + id + ": " + takeoff);
         boolean up = h.await(true, 10000);

@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from ...link.transport import Spec, Transport, UdpTransport, addr_text, make_transport
+from ...proto.commands import Outcome
 from ...proto.endpoint import CONTROL, TELEMETRY, Endpoint
 from ...proto.storage import ReceiveDir
 from ...wire.bindings import Bindings
@@ -82,7 +83,6 @@ class OnboardNode:
         self._tele_due = 0.0
         self._hb_due = 0.0
         self._closed = False
-        self._log_id = 0
         self._timers: list[list[Any]] = []  # [due, period, fn]
         self._ctx = Context(send=self._send_dtt, log=self.log, sysid=cfg.sysid, compid=ONBOARD_COMPID,
                             vehicle=self.vehicle, every=self._every,
@@ -92,18 +92,14 @@ class OnboardNode:
     def _unix(self, now: float) -> float:
         return time.time()
 
-    def _say(self, severity: int, text: str, urgent: bool = False) -> None:
-        """Tell ground stations (STATUSTEXT) and the tablet (TT_LOG; `urgent`: ahead of telemetry,
-        so that a refusal's words leave before the refusing ack)."""
+    def _say(self, severity: int, text: str, urgent: bool = False, tablet: bool = True) -> None:
+        """Tell ground stations (STATUSTEXT) and the tablet (TT_LOG; `urgent`: ahead of
+        telemetry). A refusal's words reach the tablet with the refusing ack instead
+        (`tablet=False`: the endpoint's command server sends them, and again for a retry)."""
         self.log(text)
         self.gcs.say(severity, text)
-        if self.endpoint is not None:
-            for msg in log_chunks(self.b, text, severity, int(self.vehicle_time * 1000), self._next_log_id()):
-                self.endpoint.send_message(msg, CONTROL if urgent else TELEMETRY)
-
-    def _next_log_id(self) -> int:
-        self._log_id = self._log_id % 65535 + 1
-        return self._log_id
+        if tablet and self.endpoint is not None:
+            self.endpoint.say(text, severity, urgent)
 
     def _plugin_error(self, msg: Any, e: BaseException, where: str) -> None:
         self.log(f"plugin {where} failed on {msg.NAME}: {type(e).__name__}: {e} (the node keeps running)")
@@ -129,7 +125,7 @@ class OnboardNode:
             self.endpoint.send_message(msg, CONTROL if urgent else TELEMETRY)
 
     # -- the tablet's commands ------------------------------------------------------------------
-    def tablet_action(self, msg: Any) -> int:
+    def tablet_action(self, msg: Any) -> Outcome:
         v = self.vehicle
         p0 = float(msg.param[0]) if msg.param else 0.0
         try:
@@ -147,13 +143,15 @@ class OnboardNode:
             elif msg.action == TT.TT_ACTION_FLY_TRAJECTORY:
                 self._fly_file(msg.argument.rstrip("\x00"), p0)
             else:
-                return int(RES.TT_RESULT_UNSUPPORTED)
+                return int(RES.TT_RESULT_UNSUPPORTED), f"action {int(msg.action)} is not one this vehicle knows"
         except Refused as e:
-            self._say(4, f"refused: {e}", urgent=True)
-            return int(RES.TT_RESULT_BUSY if e.temporary else RES.TT_RESULT_DENIED)
+            words = f"refused: {e}"
+            self._say(4, words, tablet=False)
+            return int(RES.TT_RESULT_BUSY if e.temporary else RES.TT_RESULT_DENIED), words
         except TrajectoryError as e:
-            self._say(4, f"trajectory refused: {e}", urgent=True)
-            return int(RES.TT_RESULT_FAILED)
+            words = f"trajectory refused: {e}"
+            self._say(4, words, tablet=False)
+            return int(RES.TT_RESULT_FAILED), words
         return int(RES.TT_RESULT_ACCEPTED)
 
     def _fly_file(self, name: str, speed: float) -> None:
@@ -236,7 +234,8 @@ class OnboardNode:
                                      rate_Bps=self.cfg.rate_Bps, receive_dir=store,
                                      serve_dir=str(self.cfg.serve) if self.cfg.serve else None,
                                      action=self.tablet_action, on_message=self._on_tablet_message,
-                                     on_event=self._file_event, signing=self.cfg.signing)
+                                     on_event=self._file_event, signing=self.cfg.signing,
+                                     clock_ms=lambda now: int(self.vehicle_time * 1000))
             self.runner = Runner(self.endpoint, transport, probes=self._probes(transport))
             await self.runner.start()
             if store is not None:
@@ -335,20 +334,6 @@ class OnboardNode:
             await self.runner.close()
         for t in self.gcs_links:
             t.close()
-
-
-def log_chunks(b: Bindings, text: str, severity: int, boot_ms: int, line_id: int) -> list[Any]:
-    """A TT_LOG line: one message (id 0) if it fits 80 bytes with room for its NUL, else chunks of
-    80 bytes with one id and rising chunk_seq, the last one NUL-terminated (an empty one if the
-    text divides evenly)."""
-    raw = text.encode("utf-8")
-    if len(raw) < 80:
-        return [b.TtLog(time_boot_ms=boot_ms & 0xFFFFFFFF, id=0, severity=severity, chunk_seq=0, text=text)]
-    pieces = [raw[i:i + 80] for i in range(0, len(raw), 80)]
-    if len(pieces[-1]) == 80:
-        pieces.append(b"")
-    return [b.TtLog(time_boot_ms=boot_ms & 0xFFFFFFFF, id=line_id, severity=severity, chunk_seq=k,
-                    text=piece.decode("utf-8", "surrogateescape")) for k, piece in enumerate(pieces[:256])]
 
 
 def telemetry_heartbeat(b: Bindings, s: Any) -> Any:

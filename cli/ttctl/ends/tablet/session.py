@@ -45,6 +45,7 @@ class VehicleView:
     lon: float = 0.0
     battery: float = 100.0
     log: list[str] = field(default_factory=list)
+    log_levels: list[int] = field(default_factory=list)  # each line's MAV_SEVERITY
 
     def fields(self) -> dict[str, Any]:
         return {"state": self.state, "armed": self.armed, "n": self.n, "e": self.e, "altitude": self.altitude,
@@ -160,6 +161,7 @@ class TabletSession:
             text = self._log_line(msg)
             if text is not None:
                 v.log.append(text)
+                v.log_levels.append(int(msg.severity))
                 self.on_event("log", {"text": text, "severity": msg.severity})
         if self.plugins:
             self.dispatcher.dispatch(msg, self.ctx)
@@ -222,27 +224,48 @@ class TabletSession:
     # -- what the tablet asks ----------------------------------------------------------------------
     async def command(self, action: int, params: list[float] | None = None, argument: str = "",
                       retries: int = 4, timeout: float = 1.5) -> tuple[bool, str]:
-        """Send a TT_ACTION_COMMAND and wait for its ack: (ok, words)."""
+        """Send a TT_ACTION_COMMAND and wait for its ack: (ok, words). A refusal carries the
+        vehicle's own words: the TT_LOG line it sends just ahead of the refusing ack. If the
+        link lost that line, the command is asked once more (the same id and issue time: the
+        vehicle does not run it again, it repeats the recorded ack and its words)."""
         p = (list(params or []) + [0.0] * 4)[:4]
         msg = self.b.TtActionCommand(action=action, param=p, argument=argument.encode("utf-8")[:48].decode(
             "utf-8", "ignore"))
+        name = TtAction(action).name.removeprefix("TT_ACTION_").lower()
+        t0 = time.monotonic()
+        cmd, said = await self._ask(msg, retries, timeout)
+        self.link.rtt_ms = (time.monotonic() - t0) * 1000 if cmd.ok else self.link.rtt_ms
+        if cmd.ok:
+            return True, f"{name}: accepted"
+        if cmd.ack is not None and said is None:  # refused, and its words lost on the way: ask again
+            again, said = await self._ask(msg, 2, timeout)
+            if again.ack is None:
+                said = None
+        return False, f"{name}: {cmd.error}" + (f" ({said})" if said else "")
+
+    async def _ask(self, msg: Any, retries: int, timeout: float) -> tuple[Any, str | None]:
+        """Submit `msg` (a repeat keeps its command id and issue time) and wait for it to end:
+        (the Command, for a refusal the vehicle's last warning heard after it was sent and by
+        its ack: the words sent ahead of the ack)."""
         done = asyncio.get_running_loop().create_future()
+        heard = len(self.vehicle.log)
+        at_ack = [heard]
 
         def finish(c: Any) -> None:
+            at_ack[0] = len(self.vehicle.log)
             if not done.done():
                 done.set_result(c)
 
-        t0 = time.monotonic()
         self.runner.sync()
         cmd = self.ep.command(msg, self.target, retries=retries, timeout=timeout, on_success=finish,
                               on_failure=finish)
         self.runner.kick()
         await done
-        self.link.rtt_ms = (time.monotonic() - t0) * 1000 if cmd.ok else self.link.rtt_ms
-        name = TtAction(action).name.removeprefix("TT_ACTION_").lower()
-        if cmd.ok:
-            return True, f"{name}: accepted"
-        return False, f"{name}: {cmd.error}"
+        if cmd.ack is None or cmd.ok:
+            return cmd, None
+        v = self.vehicle  # a refusal's words: a warning (or worse), the last one heard by the ack
+        said = [v.log[i] for i in range(heard, at_ack[0]) if v.log_levels[i] <= 4]
+        return cmd, said[-1] if said else None
 
     def send_message(self, msg: Any, urgent: bool = True) -> None:
         """Queue any message of the dialect for the vehicle (urgent: ahead of telemetry and files,

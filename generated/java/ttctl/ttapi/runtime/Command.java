@@ -138,6 +138,16 @@ public abstract class Command {
     }
 
     /**
+     * Whether to send this command once more (the same try: the same command id and issue time,
+     * so the peer repeats its answer and runs nothing twice) before taking {@code reply} as its
+     * answer; asked once per command. Default: no. {@link SendCommand} asks again for a refusal
+     * whose words were lost on the way (the onboard end repeats them with the recorded ack).
+     */
+    protected boolean askAgain(MavlinkMessage reply) {
+        return false;
+    }
+
+    /**
      * Called once on success with the awaited message (null if none is awaited), after the
      * future completed, on the queue's listener executor.
      */

@@ -75,6 +75,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         long startedAt; // System.nanoTime() of its first try
         long due; // System.nanoTime() of the next try or of giving up
         MavlinkMessage reply;
+        boolean askedAgain; // sent once more after a reply, see Command#askAgain
 
         Job(Command command, CompletableFuture<MavlinkMessage> future, long order) {
             this.command = command;
@@ -463,7 +464,15 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                         if (j.sending) {
                             continue;
                         }
-                        if (j.reply != null) {
+                        if (j.reply != null && !j.askedAgain && askAgain(j)) {
+                            // the reply lacks what came with it (a refusal's words): the same
+                            // try once more, the same id and issue time; nothing runs twice
+                            j.askedAgain = true;
+                            j.reply = null;
+                            j.due = now;
+                            j.tries = j.made + 2;
+                            next = 0;
+                        } else if (j.reply != null) {
                             it.remove();
                             j.finished = true;
                             final MavlinkMessage reply = j.reply;
@@ -635,6 +644,14 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         }
         if (mine) {
             fail(job, error);
+        }
+    }
+
+    private static boolean askAgain(Job job) {
+        try {
+            return job.command.askAgain(job.reply);
+        } catch (RuntimeException e) {
+            return false;
         }
     }
 

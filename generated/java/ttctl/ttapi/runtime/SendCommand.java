@@ -61,16 +61,75 @@ public abstract class SendCommand extends Command {
 
     @Override
     protected boolean accept(MavlinkMessage msg, CommandContext ctx) {
+        if (msg instanceof ttctl.ttapi.msg.TtLog) {
+            heard((ttctl.ttapi.msg.TtLog) msg);
+        }
         MessageMatcher m = matcher;
         return m != null && m.matches(msg);
     }
 
-    /** A TT_COMMAND_ACK that is not ACCEPTED, IN_PROGRESS or DONE: "refused: DENIED" and so on. */
+    // The vehicle's last warning (TT_LOG of severity WARNING or worse) heard while this command
+    // waited: the words an onboard end sends just ahead of a refusing ack. Chunks of one line
+    // (same id, rising chunk_seq, the last one shorter than 80 bytes) are joined.
+    private String words;
+    private int partId = -1;
+    private int nextChunk;
+    private final java.io.ByteArrayOutputStream part = new java.io.ByteArrayOutputStream();
+
+    private synchronized void heard(ttctl.ttapi.msg.TtLog log) {
+        if (log.severity > 4) {
+            return;
+        }
+        int n = 0;
+        while (n < log.text.length && log.text[n] != 0) {
+            n++;
+        }
+        if (log.id == 0) {
+            words = new String(log.text, 0, n, java.nio.charset.StandardCharsets.UTF_8);
+            return;
+        }
+        if (log.chunk_seq == 0) {
+            partId = log.id;
+            nextChunk = 0;
+            part.reset();
+        } else if (log.id != partId || log.chunk_seq != nextChunk) {
+            partId = -1; // a chunk of a line whose start (or a middle) was lost
+            return;
+        }
+        part.write(log.text, 0, n); // chunks are cut at bytes, not characters: joined as bytes
+        nextChunk++;
+        if (n < log.text.length) { // the last chunk: shorter than the field, NUL-terminated
+            words = new String(part.toByteArray(), java.nio.charset.StandardCharsets.UTF_8);
+            partId = -1;
+        }
+    }
+
+    /** A refusal heard without its words: ask once more (the onboard end repeats both). */
+    @Override
+    protected boolean askAgain(MavlinkMessage reply) {
+        return reply instanceof ttctl.ttapi.msg.TtCommandAck && !((ttctl.ttapi.msg.TtCommandAck) reply).ok()
+                && vehicleWords() == null;
+    }
+
+    /** The vehicle's words heard with this command's refusal, or null. */
+    protected synchronized String vehicleWords() {
+        return words;
+    }
+
+    /**
+     * A TT_COMMAND_ACK that is not ACCEPTED, IN_PROGRESS or DONE: "refused: DENIED" and so on,
+     * with the vehicle's own words when they came with it ("refused: DENIED (refused: not
+     * flying)").
+     */
     @Override
     protected String refusal(MavlinkMessage reply) {
         if (reply instanceof ttctl.ttapi.msg.TtCommandAck) {
             ttctl.ttapi.msg.TtCommandAck ack = (ttctl.ttapi.msg.TtCommandAck) reply;
-            return ack.ok() ? null : "refused: " + ack.resultName();
+            if (ack.ok()) {
+                return null;
+            }
+            String said = vehicleWords();
+            return "refused: " + ack.resultName() + (said != null ? " (" + said + ")" : "");
         }
         return null;
     }
