@@ -141,7 +141,7 @@ def gen(
     try:
         code = run_gen(str(dialect) if dialect else None, lang, str(out), check, force_skeletons,
                        [str(p) for p in include or []], str(templates) if templates else None,
-                       names=Names(python_package, cpp_namespace, java_package))
+                       names=Names(python_package, cpp_namespace, java_package), when_written=_ignore_ctrl_c)
     except GenError as e:
         raise Fail(str(e), e.code) from None
     raise typer.Exit(code)
@@ -250,6 +250,14 @@ def send_file_cmd(
     raise typer.Exit(code)
 
 
+def _ignore_ctrl_c() -> None:
+    """The command's work is done and cannot be taken back: a Ctrl-C from here on is ignored
+    (main keeps it so), so that `interrupted` and 130 always mean nothing was left half done."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
 def _interrupted(signum: int, frame: object) -> None:
     """Ctrl-C once the command is over (while reporting, or during interpreter teardown)."""
     try:
@@ -313,7 +321,8 @@ def main() -> None:
             print("ttctl: interrupted", file=sys.stderr)
         code = 130
     with contextlib.suppress(ValueError):  # the main thread, always, but do not fail over it
-        signal.signal(signal.SIGINT, _interrupted)
+        if signal.getsignal(signal.SIGINT) is not signal.SIG_IGN:  # a command that finished its work keeps it ignored
+            signal.signal(signal.SIGINT, _interrupted)
     if _fast_exit:
         try:
             sys.stdout.flush()

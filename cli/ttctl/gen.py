@@ -6,6 +6,7 @@ import contextlib
 import os
 import shutil
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
 from .codegen.engine import LANGUAGES, Names, language, render, write_tree
@@ -160,8 +161,10 @@ def _take_back(created: list[Path]) -> None:
 
 def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool, force_skeletons: bool,
             include_dirs: list[str], user_templates: str | None, quiet: bool = False,
-            names: Names | None = None) -> int:
-    """`names`: --python-package, --cpp-namespace, --java-package (see check_names)."""
+            names: Names | None = None, when_written: Callable[[], None] | None = None) -> int:
+    """`names`: --python-package, --cpp-namespace, --java-package (see check_names).
+    `when_written` is called once the whole tree is in place (the CLI stops listening to Ctrl-C
+    there: exit 130 must mean nothing was left behind)."""
     from .dialect import LoadError
 
     if dialect_path is None:
@@ -200,6 +203,8 @@ def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool
     created: list[Path] = []
     try:
         report = write_tree(out, rendered, owned, check, force_skeletons, created)
+        if not check and when_written is not None:
+            when_written()  # still inside: an interrupt before it has returned takes the tree back
     except BaseException as e:  # a full disk, a permission, Ctrl-C
         _take_back(created)  # leave no file or folder this run made
         if isinstance(e, OSError):
