@@ -19,6 +19,7 @@ from ...wire.bindings import Bindings
 from . import modes, telemetry
 from .autopilot import INFO, WARNING, Autopilot
 from .missions import Missions
+from .services import Services
 from .vehicle import Refused, Snapshot, State
 
 TARGETED = ("target_system",)
@@ -54,16 +55,18 @@ class GroundStations:
             b.VfrHud.MSG_ID: lambda s: telemetry.vfr_hud(b, s),
             b.MissionCurrent.MSG_ID: lambda s: telemetry.mission_current(b, s, len(self._mission())),
         }
+        self.services = Services(b, lambda: self._boot_ms(None), lambda: self._unix_us(None), lambda: self.rates)
+        self.builders.update(self.services.builders())
         self.rates = telemetry.Rates(b, self.builders)
         self.now = boot
 
     def _mission(self) -> list[Any]:
         return self.ap.missions.mission() if self.ap.missions is not None else []
 
-    def _boot_ms(self, s: Snapshot) -> int:
+    def _boot_ms(self, s: Snapshot | None) -> int:
         return int((self.now - self.boot) * 1000) & 0xFFFFFFFF
 
-    def _unix_us(self, s: Snapshot) -> int:
+    def _unix_us(self, s: Snapshot | None) -> int:
         return int(self.unix(self.now) * 1e6)
 
     # -- out ------------------------------------------------------------------------------------
@@ -92,6 +95,8 @@ class GroundStations:
                                          target_component=peer[1]), peer)
             return
         if not self._for_us(msg):
+            return
+        if self.services.on_message(now, msg, lambda m: self._to_peer(m, peer)):
             return
         if isinstance(msg, (b.CommandLong, b.CommandInt)):
             result, extra = self._command(now, msg)
@@ -122,6 +127,9 @@ class GroundStations:
         cmd = msg.command
         p = [msg.param1, msg.param2, msg.param3, msg.param4]
         v = self.ap.vehicle
+        served = self.services.command(msg)
+        if served is not None:
+            return served
         try:
             if cmd == C.MAV_CMD_COMPONENT_ARM_DISARM:
                 if _arg(p[0], 0) >= 0.5:

@@ -126,7 +126,8 @@ class Rates:
     DEFAULTS: ClassVar[dict[str, float]] = {
         "HEARTBEAT": 1.0, "SYS_STATUS": 1.0, "GLOBAL_POSITION_INT": 0.25, "ATTITUDE": 0.25, "GPS_RAW_INT": 1.0,
         "HOME_POSITION": 2.0, "EXTENDED_SYS_STATE": 1.0, "BATTERY_STATUS": 1.0, "VFR_HUD": 0.5,
-        "LOCAL_POSITION_NED": 0.5, "MISSION_CURRENT": 1.0}
+        "LOCAL_POSITION_NED": 0.5, "MISSION_CURRENT": 1.0,
+        "ATTITUDE_QUATERNION": 0.25, "ODOMETRY": 0.5, "ALTITUDE": 1.0, "SYSTEM_TIME": 1.0}
 
     def __init__(self, b: Bindings, builders: dict[int, Callable[[Snapshot], Any]],
                  defaults: dict[str, float] | None = None) -> None:
@@ -168,3 +169,43 @@ class Rates:
     def next_due(self) -> float | None:
         times = [self.due[m] for m, iv in self.interval.items() if iv is not None]
         return min(times) if times else None
+
+
+# -- the streams MAVSDK's telemetry getters read besides the ones above -------------------------
+def quaternion(s: Snapshot) -> list[float]:
+    """w, x, y, z of the body (FRD) attitude in the local NED frame, from roll, pitch and yaw."""
+    cy, sy = math.cos(s.yaw / 2), math.sin(s.yaw / 2)
+    cp, sp = math.cos(s.pitch / 2), math.sin(s.pitch / 2)
+    cr, sr = math.cos(s.roll / 2), math.sin(s.roll / 2)
+    return [cr * cp * cy + sr * sp * sy, sr * cp * cy - cr * sp * sy, cr * sp * cy + sr * cp * sy,
+            cr * cp * sy - sr * sp * cy]
+
+
+def attitude_quaternion(b: Bindings, s: Snapshot, boot_ms: int) -> Any:
+    w, x, y, z = quaternion(s)
+    return b.AttitudeQuaternion(time_boot_ms=boot_ms, q1=w, q2=x, q3=y, q4=z, rollspeed=0.0, pitchspeed=0.0,
+                                yawspeed=s.yaw_rate, repr_offset_q=[0.0, 0.0, 0.0, 0.0])
+
+
+def odometry(b: Bindings, s: Snapshot, boot_us: int) -> Any:
+    """Position and velocity in local NED (the velocity too, as PX4 sends it), attitude as a
+    quaternion; covariances unknown (NaN in the first element, as MAVLink defines)."""
+    F = b.MavFrame
+    unknown = [math.nan] + [0.0] * 20
+    return b.Odometry(time_usec=boot_us, frame_id=int(F.MAV_FRAME_LOCAL_NED), child_frame_id=int(F.MAV_FRAME_LOCAL_NED),
+                      x=s.n, y=s.e, z=s.d, q=quaternion(s), vx=s.vn, vy=s.ve, vz=s.vd, rollspeed=0.0,
+                      pitchspeed=0.0, yawspeed=s.yaw_rate, pose_covariance=unknown, velocity_covariance=unknown,
+                      reset_counter=0, estimator_type=int(b.MavEstimatorType.MAV_ESTIMATOR_TYPE_UNKNOWN),
+                      quality=100)
+
+
+def altitude(b: Bindings, s: Snapshot, boot_us: int) -> Any:
+    """ALTITUDE: monotonic, AMSL, local (up from the local origin, which is home), relative to
+    home; no terrain source (NaN) and the ground assumed flat at home's height."""
+    return b.Altitude(time_usec=boot_us, altitude_monotonic=s.alt_msl, altitude_amsl=s.alt_msl,
+                      altitude_local=-s.d, altitude_relative=s.alt_rel, altitude_terrain=math.nan,
+                      bottom_clearance=max(0.0, s.alt_rel))
+
+
+def system_time(b: Bindings, unix_us: int, boot_ms: int) -> Any:
+    return b.SystemTime(time_unix_usec=unix_us, time_boot_ms=boot_ms)

@@ -1,0 +1,61 @@
+"""`ttctl emulate onboard`'s services to ground stations, against real peers on loopback:
+TIMESYNC, SYSTEM_TIME, GET_MESSAGE_INTERVAL, the log list, and the streams MAVSDK's telemetry
+getters read (pymavlink as the oracle)."""
+
+from __future__ import annotations
+
+import math
+import time
+from typing import Any
+
+from test_emulate_onboard import command, gcs, wait_for
+
+__all__ = ["gcs"]  # the fixture, shared
+
+
+def test_timesync_system_time_and_message_intervals(gcs: tuple[Any, Any]) -> None:
+    conn, _ = gcs
+    mav = conn.mav
+    ts1 = 123_456_789
+    mav.timesync_send(0, ts1)
+    sync = wait_for(conn, "TIMESYNC", lambda m: m.ts1 == ts1, timeout=3)
+    assert sync.tc1 > 0
+    st = wait_for(conn, "SYSTEM_TIME", lambda m: True, timeout=3)
+    assert abs(st.time_unix_usec / 1e6 - time.time()) < 2.0
+    # GET_MESSAGE_INTERVAL reports what SET_MESSAGE_INTERVAL set, off (-1) and never sent (0)
+    assert command(conn, 511, 31, 100_000) == 0  # ATTITUDE_QUATERNION at 10 Hz
+    assert command(conn, 510, 31) == 0
+    mi = wait_for(conn, "MESSAGE_INTERVAL", lambda m: m.message_id == 31, timeout=3)
+    assert mi.interval_us == 100_000
+    assert command(conn, 511, 141, -1) == 0  # ALTITUDE off
+    assert command(conn, 510, 141) == 0
+    assert wait_for(conn, "MESSAGE_INTERVAL", lambda m: m.message_id == 141, timeout=3).interval_us == -1
+    assert command(conn, 510, 9000) == 0
+    assert wait_for(conn, "MESSAGE_INTERVAL", lambda m: m.message_id == 9000, timeout=3).interval_us == 0
+    for bad in (math.nan, math.inf, -1.0, 1.5, 2.0**30):
+        assert command(conn, 510, bad) == 2  # DENIED
+
+
+def test_log_list_is_answered_empty(gcs: tuple[Any, Any]) -> None:
+    conn, _ = gcs
+    conn.mav.log_request_list_send(1, 1, 0, 0xFFFF)
+    entry = wait_for(conn, "LOG_ENTRY", lambda m: True, timeout=3)
+    assert (entry.num_logs, entry.id, entry.size) == (0, 0, 0)
+
+
+def test_streams_agree_with_the_attitude_and_position(gcs: tuple[Any, Any]) -> None:
+    conn, _ = gcs
+    assert command(conn, 400, 1) == 0
+    assert command(conn, 22, 0, 0, 0, 0, 0, 0, 6.0) == 0
+    pos = wait_for(conn, "GLOBAL_POSITION_INT", lambda m: m.relative_alt > 5500, timeout=20)
+    alt = wait_for(conn, "ALTITUDE", lambda m: m.altitude_relative > 5.5, timeout=5)
+    assert abs(alt.altitude_amsl - pos.alt / 1000) < 1.0 and abs(alt.altitude_local - alt.altitude_relative) < 1e-3
+    att = wait_for(conn, "ATTITUDE", lambda m: True, timeout=3)
+    q = wait_for(conn, "ATTITUDE_QUATERNION", lambda m: True, timeout=3)
+    assert abs(math.hypot(q.q1, q.q2, q.q3, q.q4) - 1) < 1e-5
+    yaw = math.atan2(2 * (q.q1 * q.q4 + q.q2 * q.q3), 1 - 2 * (q.q3**2 + q.q4**2))
+    assert abs(math.remainder(yaw - att.yaw, math.tau)) < 0.05
+    odo = wait_for(conn, "ODOMETRY", lambda m: True, timeout=3)
+    local = wait_for(conn, "LOCAL_POSITION_NED", lambda m: True, timeout=3)
+    assert abs(odo.z - local.z) < 0.5 and odo.z < -5.5 and odo.frame_id == 1
+    assert math.isnan(odo.pose_covariance[0])
