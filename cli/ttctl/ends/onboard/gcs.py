@@ -96,7 +96,7 @@ class GroundStations:
             return
         if not self._for_us(msg):
             return
-        if self.services.on_message(now, msg, lambda m: self._to_peer(m, peer)):
+        if self.services.on_message(now, msg, lambda m: self._to_peer(m, peer), peer):
             return
         if isinstance(msg, (b.CommandLong, b.CommandInt)):
             result, extra = self._command(now, msg)
@@ -227,6 +227,8 @@ class GroundStations:
         self.now = now
         if self.ap.missions is not None:
             self.ap.missions.tick(now)
+        self.out.extend((m, self._peer_links.get(peer)) for m, peer in self.services.tick(now)
+                        if isinstance(peer, tuple))
         due = self.rates.take_due(now)
         if due:
             s = self.ap.snapshot()
@@ -237,8 +239,8 @@ class GroundStations:
     def wakeup(self) -> float | None:
         if self.out:
             return self.now
-        times = [t for t in (self.rates.next_due(), self.ap.missions.deadline() if self.ap.missions else None)
-                 if t is not None]
+        times = [t for t in (self.rates.next_due(), self.ap.missions.deadline() if self.ap.missions else None,
+                             self.services.wakeup()) if t is not None]
         return min(times) if times else None
 
 

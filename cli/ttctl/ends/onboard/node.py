@@ -227,8 +227,9 @@ class OnboardNode:
             t.on_receive = self._receiver(t)
             await t.open()
             self.gcs_links.append(t)
+        store = ReceiveDir(self.cfg.inbox) if self.cfg.inbox is not None else None
+        self.gcs.services.ftp.serve, self.gcs.services.ftp.inbox = self.cfg.serve, store  # MAVLink FTP's tree
         if self.cfg.dtt is not None:
-            store = ReceiveDir(self.cfg.inbox) if self.cfg.inbox is not None else None
             transport: Transport = make_transport(self.cfg.dtt, log=lambda text: self.log(f"dtt: {text}"))
             self.endpoint = Endpoint(self.b, self.cfg.sysid, ONBOARD_COMPID, mtu=transport.mtu,
                                      rate_Bps=self.cfg.rate_Bps, receive_dir=store,
@@ -238,8 +239,8 @@ class OnboardNode:
                                      clock_ms=lambda now: int(self.vehicle_time * 1000))
             self.runner = Runner(self.endpoint, transport, probes=self._probes(transport))
             await self.runner.start()
-            if store is not None:
-                store.prepare()
+        if store is not None:
+            store.prepare()
         ctx = self.context()
         for p in self.plugins:
             try:
@@ -330,6 +331,7 @@ class OnboardNode:
             self.endpoint.close()
         if self.probes is not None:
             self.probes.close()
+        self.gcs.services.ftp.close()  # a write not finished is discarded
         if self.runner is not None:
             await self.runner.close()
         for t in self.gcs_links:

@@ -1,22 +1,24 @@
 """The services a ground station expects of a PX4-like vehicle besides flying, sans-IO: TIMESYNC
-answered, GET_MESSAGE_INTERVAL, the log list (LOG_REQUEST_LIST: this vehicle keeps no flight
+answered, GET_MESSAGE_INTERVAL, MAVLink FTP (ftp.py), the log list (LOG_REQUEST_LIST: this vehicle keeps no flight
 logs, so it says so at once, as PX4 does with an empty SD card), and the extra telemetry streams
 MAVSDK's getters read (ATTITUDE_QUATERNION, ODOMETRY, ALTITUDE, SYSTEM_TIME), built from the
 same snapshot as the rest.
 
 `Services.on_message(now, msg, reply)` takes a message meant for the vehicle and returns True if
 it was one of these (answers go to `reply`); `command(msg)` answers the commands it owns
-(None: not one of them).
+(None: not one of them); `tick(now)` returns (message, peer) pairs still to send (an FTP burst's
+packets), `wakeup()` when to call it again.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Hashable
 from typing import Any
 
 from ...wire.bindings import Bindings
 from . import telemetry
+from .ftp import FtpServer
 from .vehicle import Snapshot
 
 Reply = Callable[[Any], None]
@@ -29,6 +31,7 @@ class Services:
         self.boot_ms = boot_ms
         self.unix_us = unix_us
         self.rates = rates
+        self.ftp = FtpServer()  # the node gives it the served folder and the inbox
 
     def builders(self) -> dict[int, Callable[[Snapshot], Any]]:
         b = self.b
@@ -39,11 +42,16 @@ class Services:
             b.SystemTime.MSG_ID: lambda s: telemetry.system_time(b, self.unix_us(), self.boot_ms()),
         }
 
-    def on_message(self, now: float, msg: Any, reply: Reply) -> bool:
+    def on_message(self, now: float, msg: Any, reply: Reply, peer: Hashable = None) -> bool:
         b = self.b
+        if isinstance(msg, b.FileTransferProtocol):
+            if msg.target_network == 0:
+                for payload in self.ftp.request(now, msg.payload, peer):
+                    reply(self._ftp_message(payload, peer))
+            return True
         if isinstance(msg, b.Timesync):
             if msg.tc1 == 0:  # a request (tc1 0): mirror ts1, our time in tc1 (ns on the boot clock)
-                reply(b.Timesync(tc1=self.boot_ms() * 1_000_000, ts1=msg.ts1))
+                reply(b.Timesync(tc1=max(1, self.boot_ms() * 1_000_000), ts1=msg.ts1))  # tc1 0 reads as a request
             return True  # an answer to someone else's request is not for us to act on
         if isinstance(msg, b.LogRequestList):
             # no logs: one LOG_ENTRY with num_logs 0 (id 0), which PX4 sends and MAVSDK reads as an empty list
@@ -53,6 +61,16 @@ class Services:
             reply(b.LogData(id=msg.id, ofs=msg.ofs, count=0, data=bytes(90)))  # no such log: nothing to read
             return True
         return isinstance(msg, (b.LogRequestEnd, b.LogErase))  # nothing being sent, nothing to erase
+
+    def _ftp_message(self, payload: bytes, peer: Hashable) -> Any:
+        ts, tc = peer if isinstance(peer, tuple) else (0, 0)
+        return self.b.FileTransferProtocol(target_network=0, target_system=ts, target_component=tc, payload=payload)
+
+    def tick(self, now: float) -> list[tuple[Any, Hashable]]:
+        return [(self._ftp_message(p, peer), peer) for p, peer in self.ftp.tick(now)]
+
+    def wakeup(self) -> float | None:
+        return self.ftp.wakeup()
 
     def command(self, msg: Any) -> tuple[int, list[Any]] | None:
         b = self.b

@@ -29,7 +29,8 @@ def _sensors(b: Bindings) -> int:
 def capabilities(b: Bindings) -> int:
     C = b.MavProtocolCapability
     return int(C.MAV_PROTOCOL_CAPABILITY_MAVLINK2 | C.MAV_PROTOCOL_CAPABILITY_MISSION_INT
-               | C.MAV_PROTOCOL_CAPABILITY_COMMAND_INT | C.MAV_PROTOCOL_CAPABILITY_PARAM_ENCODE_BYTEWISE)
+               | C.MAV_PROTOCOL_CAPABILITY_COMMAND_INT | C.MAV_PROTOCOL_CAPABILITY_PARAM_ENCODE_BYTEWISE
+               | C.MAV_PROTOCOL_CAPABILITY_FTP)
 
 
 def _deg7(x: float) -> int:
