@@ -6,8 +6,12 @@ from __future__ import annotations
 
 import math
 import time
+from pathlib import Path
 from typing import Any
 
+import pytest
+
+from e2e_lib import LOCAL, Start, free_port
 from test_emulate_onboard import command, gcs, wait_for
 
 __all__ = ["gcs"]  # the fixture, shared
@@ -59,3 +63,44 @@ def test_streams_agree_with_the_attitude_and_position(gcs: tuple[Any, Any]) -> N
     local = wait_for(conn, "LOCAL_POSITION_NED", lambda m: True, timeout=3)
     assert abs(odo.z - local.z) < 0.5 and odo.z < -5.5 and odo.frame_id == 1
     assert math.isnan(odo.pose_covariance[0])
+
+
+@pytest.mark.parametrize("mode", ["tcpin", "tcp"])
+def test_ground_station_links_over_tcp(tmp_path: Path, start: Start, mode: str) -> None:
+    """`--gcs tcpin:` takes ground stations' connections, `--gcs tcp:` connects to one: real TCP
+    both ways (heartbeats out, a command in and its ack back), and a second connection after
+    the first closed is served as well."""
+    from pymavlink import mavutil
+
+    port = free_port()
+    listener = None
+    if mode == "tcp":  # the ground station listens (as MAVProxy's --master=tcpin: does)
+        listener = mavutil.mavlink_connection(f"tcpin:{LOCAL}:{port}", source_system=255, source_component=190,
+                                              dialect="common")
+    node = start("onboard", "emulate", "onboard", "--gcs", f"{mode}:{LOCAL}:{port}", "--listen", f"udpin:{LOCAL}:0",
+                 "--no-entry-points")
+    node.wait_for("onboard 1:")
+    assert f"ground stations {mode}:{LOCAL}:{port}" in node.stderr
+    for _ in range(2 if mode == "tcpin" else 1):
+        conn = listener or mavutil.mavlink_connection(f"tcp:{LOCAL}:{port}", source_system=255,
+                                                      source_component=190, dialect="common")
+        try:
+            hb = conn.recv_match(type="HEARTBEAT", blocking=True, timeout=10)
+            assert hb is not None and hb.get_srcSystem() == 1, node.stderr
+            conn.target_system, conn.target_component = 1, 1
+            assert command(conn, 400, 1) == 0  # arm, over TCP
+            wait_for(conn, "HEARTBEAT", lambda m: m.base_mode & 128, timeout=5)
+            assert command(conn, 400, 0) == 0
+        finally:
+            conn.close()
+            listener = None
+        time.sleep(0.3)
+    assert "Traceback" not in node.stderr
+
+
+def test_a_tcp_ground_station_that_is_not_there_is_refused_in_one_line(start: Start) -> None:
+    port = free_port()
+    node = start("onboard", "emulate", "onboard", "--gcs", f"tcp:{LOCAL}:{port}", "--listen", f"udpin:{LOCAL}:0",
+                 "--no-entry-points")
+    assert node.wait() == 2
+    assert node.stderr.strip().splitlines()[-1].startswith(f"ttctl: error: cannot connect to tcp:{LOCAL}:{port}")

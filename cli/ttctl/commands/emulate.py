@@ -105,7 +105,7 @@ def emulate_onboard(o: OnboardOptions) -> int:
             except (TransportError, StorageError) as e:
                 raise Fail(str(e)) from None
             dtt_at = node.runner.transport.describe() if node.runner is not None else "none"
-            gcs_at = ", ".join(str(g) for g in gcs) or "none"
+            gcs_at = ", ".join(t.describe() for t in node.gcs_links) or "none"
             names = ", ".join(type(p).__name__ for p in plugins)
             err(f"onboard {o.sysid}: tablet link {dtt_at}; ground stations {gcs_at}; home {cfg.home.lat:.5f}, "
                 f"{cfg.home.lon:.5f}, {cfg.home.alt:g} m; dialect {b.name}" + (f"; plugins {names}" if names else ""))
