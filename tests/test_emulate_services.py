@@ -104,3 +104,40 @@ def test_a_tcp_ground_station_that_is_not_there_is_refused_in_one_line(start: St
                  "--no-entry-points")
     assert node.wait() == 2
     assert node.stderr.strip().splitlines()[-1].startswith(f"ttctl: error: cannot connect to tcp:{LOCAL}:{port}")
+
+
+def test_ground_station_links_signed_with_gcs_key(tmp_path: Path, start: Start) -> None:
+    """--gcs-key: every frame to ground stations is signed (pymavlink, holding the key,
+    verifies them), a signed command is carried out, an unsigned one is ignored and said once."""
+    import hashlib
+
+    from pymavlink import mavutil
+
+    key_file = tmp_path / "gcs.key"
+    key_file.write_text("rehearsal passphrase\n")
+    port = free_port()
+    conn = mavutil.mavlink_connection(f"udpin:{LOCAL}:{port}", source_system=255, source_component=190,
+                                      dialect="common")
+    node = start("onboard", "emulate", "onboard", "--gcs", f"udpout:{LOCAL}:{port}", "--listen", f"udpin:{LOCAL}:0",
+                 "--no-entry-points", "--gcs-key", str(key_file))
+    node.wait_for("onboard 1:")
+    try:
+        assert conn.recv_match(blocking=True, timeout=10) is not None  # mavutil now speaks MAVLink 2: key it
+        conn.setup_signing(hashlib.sha256(b"rehearsal passphrase").digest(), sign_outgoing=True)
+        hb = conn.recv_match(type="HEARTBEAT", blocking=True, timeout=10)
+        assert hb is not None and hb._signed, node.stderr  # pymavlink refuses unsigned frames once keyed
+        conn.target_system, conn.target_component = 1, 1
+        assert command(conn, 400, 1) == 0
+        wait_for(conn, "HEARTBEAT", lambda m: m.base_mode & 128, timeout=5)
+        assert command(conn, 400, 0) == 0
+        wait_for(conn, "HEARTBEAT", lambda m: not m.base_mode & 128, timeout=5)
+        conn.mav.signing.sign_outgoing = False
+        conn.mav.command_long_send(1, 1, 400, 0, 1, 0, 0, 0, 0, 0, 0)
+        assert conn.recv_match(type="COMMAND_ACK", blocking=True, timeout=2) is None
+        assert not wait_for(conn, "HEARTBEAT", lambda m: True, timeout=3).base_mode & 128
+        assert "unsigned frames or signatures that do not verify" in node.stderr
+    finally:
+        conn.close()
+    bad = start("bad", "emulate", "onboard", "--gcs-key", str(tmp_path / "none.key"), "--no-gcs")
+    assert bad.wait() == 2
+    assert "ttctl: error: --gcs-key " in bad.stderr and "Traceback" not in bad.stderr

@@ -56,6 +56,10 @@ def emulate_onboard_cmd(
     distance: DistanceOpt = 10.0,
     key: KeyOpt = None,
     accept_unsigned: AcceptUnsignedOpt = False,
+    gcs_key: Annotated[Path | None, typer.Option("--gcs-key", help="Sign the ground-station links' frames (MAVLink 2 "
+                                                                   "signing) and accept only frames signed with this "
+                                                                   "key (a file as for --key).",
+                                                 show_default=False)] = None,
     dialect: DialectOpt = None,
     include: DialectIncludeOpt = None,
 ) -> None:
@@ -70,7 +74,7 @@ def emulate_onboard_cmd(
     raise typer.Exit(emulate_onboard(OnboardOptions(listen, gcs or [], no_gcs, sysid, inbox, serve, home, speed,
                                                     rate, profile, distance, plugin or [], no_entry_points,
                                                     telemetry_hz, orbit_hz, key, accept_unsigned, profile_file,
-                                                    dialect, include or [])))
+                                                    dialect, include or [], gcs_key=gcs_key)))
 
 
 @emulate_app.command("tablet")

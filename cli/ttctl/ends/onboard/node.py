@@ -49,6 +49,7 @@ class OnboardConfig:
     telemetry_hz: float = 2.0  # TT_NAV_SAT_FIX and TT_ODOMETRY to the tablet
     orbit_hz: float = 10.0  # the orbit camera's publishing rate while head poses arrive (0: no orbit camera)
     signing: Any = None  # Signing for the DTT link (None: unsigned, signed frames unverified)
+    gcs_signing: Any = None  # Signing for the ground-station links (every frame signed, only signed ones taken)
 
 
 class OnboardNode:
@@ -65,7 +66,7 @@ class OnboardNode:
         self.ap = Autopilot(bindings, self.vehicle, cfg.sysid, say=self._say)
         self.started = 0.0
         self.gcs = GroundStations(bindings, self.ap, cfg.sysid, AUTOPILOT_COMPID, unix=self._unix, log=self.log)
-        self.gcs_encoder = bindings.encoder(cfg.sysid, AUTOPILOT_COMPID)
+        self.gcs_encoder = bindings.encoder(cfg.sysid, AUTOPILOT_COMPID, cfg.gcs_signing)
         self.gcs_links: list[Transport] = []
         self._gcs_parsers: dict[Hashable, Any] = {}
         self.dispatcher = Dispatcher(on_error=self._plugin_error, dialect=bindings)
@@ -283,9 +284,14 @@ class OnboardNode:
     def _from_gcs(self, link: Transport, data: bytes, source: Hashable) -> None:
         parser = self._gcs_parsers.get((link, source))
         if parser is None:
-            parser = self._gcs_parsers[(link, source)] = self.b.parser()
+            parser = self._gcs_parsers[(link, source)] = self.b.parser(self.cfg.gcs_signing)
         now = self.vehicle_time
-        for msg in parser.feed(data):
+        refused = parser.stats.bad_signature
+        msgs = parser.feed(data)
+        if refused == 0 and parser.stats.bad_signature:  # told once per peer
+            self.log(f"{link.spec}: ignoring {addr_text(source) if isinstance(source, tuple) else 'a connection'}: "
+                     "unsigned frames or signatures that do not verify (the same --gcs-key at both ends?)")
+        for msg in msgs:
             link.confirm(source, {(msg.get_srcSystem(), msg.get_srcComponent())})  # a udpin link learns its peers
             self.gcs.on_message(now, msg, link)
         self._wake.set()
