@@ -137,6 +137,13 @@ def test_mavsdk_moves_files_and_reads_logs_and_every_attitude(tmp_path: Path, st
             assert abs(odo.position_body.z_m) < 0.5 and abs(math.hypot(odo.q.w, odo.q.x, odo.q.y, odo.q.z) - 1) < 1e-4
             alt = await _until(tel.altitude, lambda a: math.isfinite(a.altitude_amsl_m), 5)
             assert abs(alt.altitude_amsl_m - 295) < 1 and abs(alt.altitude_relative_m) < 0.5
+            imu = await _until(tel.imu, lambda i: math.isfinite(i.acceleration_frd.down_m_s2), 5)
+            assert abs(imu.acceleration_frd.down_m_s2 + 9.81) < 0.1  # standing still: thrust-free, gravity only
+            assert abs(imu.magnetic_field_frd.forward_gauss) > 0.1
+            pressure = await _until(tel.scaled_pressure, lambda p: p.absolute_pressure_hpa > 0, 5)
+            assert 970 < pressure.absolute_pressure_hpa < 985  # 295 m above sea level
+            wind = await _until(tel.wind, lambda w: math.isfinite(w.wind_x_ned_m_s), 5)
+            assert wind.wind_x_ned_m_s == 0.0 and wind.wind_y_ned_m_s == 0.0
 
     asyncio.run(asyncio.wait_for(main(), 90))
     assert "Traceback" not in node.stderr

@@ -61,7 +61,12 @@ def test_streams_agree_with_the_attitude_and_position(gcs: tuple[Any, Any]) -> N
     assert abs(math.remainder(yaw - att.yaw, math.tau)) < 0.05
     odo = wait_for(conn, "ODOMETRY", lambda m: True, timeout=3)
     local = wait_for(conn, "LOCAL_POSITION_NED", lambda m: True, timeout=3)
-    assert abs(odo.z - local.z) < 0.5 and odo.z < -5.5 and odo.frame_id == 1
+    assert abs(odo.z - local.z) < 0.5 and odo.z < -5.5
+    assert (odo.frame_id, odo.child_frame_id) == (1, 12)  # LOCAL_NED, velocity in BODY_FRD, as PX4 sends it
+    imu = wait_for(conn, "HIGHRES_IMU", lambda m: True, timeout=3)
+    assert abs(math.hypot(imu.xacc, imu.yacc, imu.zacc) - 9.81) < 0.3 and imu.zacc < -9.0  # hovering
+    press = wait_for(conn, "SCALED_PRESSURE", lambda m: True, timeout=3).press_abs
+    assert abs(press - 1013.25 * (1 - 2.25577e-5 * pos.alt / 1000) ** 5.25588) < 0.3  # the standard atmosphere
     assert math.isnan(odo.pose_covariance[0])
 
 

@@ -1,8 +1,8 @@
 """The services a ground station expects of a PX4-like vehicle besides flying, sans-IO: TIMESYNC
 answered, GET_MESSAGE_INTERVAL, MAVLink FTP (ftp.py), the log list (LOG_REQUEST_LIST: this vehicle keeps no flight
 logs, so it says so at once, as PX4 does with an empty SD card), and the extra telemetry streams
-MAVSDK's getters read (ATTITUDE_QUATERNION, ODOMETRY, ALTITUDE, SYSTEM_TIME), built from the
-same snapshot as the rest.
+MAVSDK's getters read (ATTITUDE_QUATERNION, ODOMETRY, ALTITUDE, SYSTEM_TIME, HIGHRES_IMU,
+SCALED_IMU on request, SCALED_PRESSURE, WIND_COV), built from the same snapshot as the rest.
 
 `Services.on_message(now, msg, reply)` takes a message meant for the vehicle and returns True if
 it was one of these (answers go to `reply`); `command(msg)` answers the commands it owns
@@ -40,6 +40,10 @@ class Services:
             b.Odometry.MSG_ID: lambda s: telemetry.odometry(b, s, self.boot_ms() * 1000),
             b.Altitude.MSG_ID: lambda s: telemetry.altitude(b, s, self.boot_ms() * 1000),
             b.SystemTime.MSG_ID: lambda s: telemetry.system_time(b, self.unix_us(), self.boot_ms()),
+            b.HighresImu.MSG_ID: lambda s: telemetry.highres_imu(b, s, self.boot_ms() * 1000),
+            b.ScaledImu.MSG_ID: lambda s: telemetry.scaled_imu(b, s, self.boot_ms()),
+            b.ScaledPressure.MSG_ID: lambda s: telemetry.scaled_pressure(b, s, self.boot_ms()),
+            b.WindCov.MSG_ID: lambda s: telemetry.wind_cov(b, s, self.boot_ms() * 1000),
         }
 
     def on_message(self, now: float, msg: Any, reply: Reply, peer: Hashable = None) -> bool:
