@@ -146,3 +146,37 @@ def test_ground_station_links_signed_with_gcs_key(tmp_path: Path, start: Start) 
     bad = start("bad", "emulate", "onboard", "--gcs-key", str(tmp_path / "none.key"), "--no-gcs")
     assert bad.wait() == 2
     assert "ttctl: error: --gcs-key " in bad.stderr and "Traceback" not in bad.stderr
+
+
+def test_hostile_ftp_over_the_link_never_stops_the_node(gcs: tuple[Any, Any], tmp_path: Path) -> None:
+    """Thousands of FTP requests with random payloads, bursts and traversing paths: answered
+    (or ignored when not FTP at all), nothing written outside the inbox, the node still flies."""
+    import random
+    import struct
+
+    conn, node = gcs
+    rnd = random.Random(19)
+    before = sorted(p.name for p in tmp_path.iterdir())
+    for i in range(3000):
+        if i % 3 == 0:
+            payload = bytes(rnd.getrandbits(8) for _ in range(251))
+        else:
+            op = rnd.choice([4, 5, 6, 7, 8, 9, 10, 12, 13, 14, 15])
+            path = rnd.choice([b"/inbox/../../x", b"/inbox/a/../../y", b"../../z", b"/inbox/" + b"n" * 230,
+                               b"/inbox/ok.bin", b"\xff\xfe", b"/serve/x", b""])
+            payload = struct.pack("<HBBBBBBI", i, rnd.randrange(4), op, min(len(path), 239), 0, 0, 0,
+                                  rnd.choice([0, 2**31, 2**32 - 1])) + path[:239]
+        conn.mav.file_transfer_protocol_send(0, 1, 1, list(payload.ljust(251, b"\0")))
+        if i % 200 == 0:
+            time.sleep(0.01)
+    naks = 0
+    end = time.monotonic() + 3
+    while time.monotonic() < end:
+        m = conn.recv_match(type="FILE_TRANSFER_PROTOCOL", blocking=True, timeout=0.5)
+        if m is not None and m.payload[3] == 129:
+            naks += 1
+    assert naks > 100
+    assert sorted(p.name for p in tmp_path.iterdir()) == before  # nothing beside the inbox
+    assert all(p.resolve().is_relative_to((tmp_path / "inbox").resolve()) for p in (tmp_path / "inbox").rglob("*"))
+    assert command(conn, 400, 1) == 0  # still flying
+    assert "Traceback" not in node.stderr
