@@ -267,7 +267,19 @@ class OnboardNode:
         return lambda text: self.log(f"{where}: {text}")
 
     def _receiver(self, link: Transport) -> Callable[[bytes, Hashable], None]:
-        return lambda data, source: self._from_gcs(link, data, source)
+        def receive(data: bytes, source: Hashable) -> None:
+            # each peer's parser checks signatures with --gcs-key (frames that fail are dropped, said once)
+            parser = self._gcs_parsers.get((link, source))
+            if parser is None:
+                parser = self._gcs_parsers[(link, source)] = self.b.parser(self.cfg.gcs_signing)
+            refused = parser.stats.bad_signature
+            self._from_gcs(link, data, source)
+            if refused == 0 and parser.stats.bad_signature:
+                who = addr_text(source) if isinstance(source, tuple) else getattr(source, "name", "a connection")
+                self.log(f"{link.spec}: ignoring {who}: unsigned frames or signatures that do not verify "
+                         "(the same --gcs-key at both ends?)")
+
+        return receive
 
     def _closer(self, link: Transport) -> Callable[[Hashable], None]:
         """A TCP connection ended: its parser (and any half frame in it) goes with it."""
@@ -284,14 +296,9 @@ class OnboardNode:
     def _from_gcs(self, link: Transport, data: bytes, source: Hashable) -> None:
         parser = self._gcs_parsers.get((link, source))
         if parser is None:
-            parser = self._gcs_parsers[(link, source)] = self.b.parser(self.cfg.gcs_signing)
+            parser = self._gcs_parsers[(link, source)] = self.b.parser()
         now = self.vehicle_time
-        refused = parser.stats.bad_signature
-        msgs = parser.feed(data)
-        if refused == 0 and parser.stats.bad_signature:  # told once per peer
-            self.log(f"{link.spec}: ignoring {addr_text(source) if isinstance(source, tuple) else 'a connection'}: "
-                     "unsigned frames or signatures that do not verify (the same --gcs-key at both ends?)")
-        for msg in msgs:
+        for msg in parser.feed(data):
             link.confirm(source, {(msg.get_srcSystem(), msg.get_srcComponent())})  # a udpin link learns its peers
             self.gcs.on_message(now, msg, link)
         self._wake.set()
