@@ -479,15 +479,11 @@ class FtpServer:
         return out
 
     def wakeup(self) -> float | None:
+        """When the bursts under way send their next packets (None: no burst). Idle sessions
+        are closed when a new one is opened, or when the node stops."""
         if any(s.burst is not None for s in self.sessions.values()):
             return self.now + BURST_PERIOD
-        if self.sessions:
-            return min(s.last for s in self.sessions.values()) + SESSION_IDLE + 0.1
         return None
-
-    def expire(self, now: float) -> None:
-        self.now = now
-        self._expire()
 
     def close(self) -> None:
         for s in self.sessions.values():

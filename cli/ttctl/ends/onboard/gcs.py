@@ -16,10 +16,9 @@ from collections.abc import Callable, Hashable
 from typing import Any
 
 from ...wire.bindings import Bindings
-from . import modes, telemetry
+from . import modes, services, telemetry
 from .autopilot import INFO, WARNING, Autopilot
 from .missions import Missions
-from .services import Services
 from .vehicle import Refused, Snapshot, State
 
 TARGETED = ("target_system",)
@@ -55,7 +54,8 @@ class GroundStations:
             b.VfrHud.MSG_ID: lambda s: telemetry.vfr_hud(b, s),
             b.MissionCurrent.MSG_ID: lambda s: telemetry.mission_current(b, s, len(self._mission())),
         }
-        self.services = Services(b, lambda: self._boot_ms(None), lambda: self._unix_us(None), lambda: self.rates)
+        self.services = services.Services(b, lambda: self._boot_ms(None), lambda: self._unix_us(None),
+                                          lambda: self.rates)
         self.builders.update(self.services.builders())
         self.rates = telemetry.Rates(b, self.builders)
         self.now = boot
@@ -225,10 +225,10 @@ class GroundStations:
     # -- time -------------------------------------------------------------------------------------
     def tick(self, now: float) -> list[tuple[Any, Hashable]]:
         self.now = now
+        self.out.extend((m, self._peer_links.get(peer)) for m, peer in self.services.tick(now)
+                        if isinstance(peer, tuple))  # an FTP burst's next packets
         if self.ap.missions is not None:
             self.ap.missions.tick(now)
-        self.out.extend((m, self._peer_links.get(peer)) for m, peer in self.services.tick(now)
-                        if isinstance(peer, tuple))
         due = self.rates.take_due(now)
         if due:
             s = self.ap.snapshot()
@@ -237,10 +237,11 @@ class GroundStations:
         return out
 
     def wakeup(self) -> float | None:
-        if self.out:
-            return self.now
-        times = [t for t in (self.rates.next_due(), self.ap.missions.deadline() if self.ap.missions else None,
-                             self.services.wakeup()) if t is not None]
+        burst = self.services.wakeup()  # an FTP burst under way: its next packets, milliseconds away
+        if self.out or burst is not None:
+            return self.now if self.out else burst
+        times = [t for t in (self.rates.next_due(), self.ap.missions.deadline() if self.ap.missions else None)
+                 if t is not None]
         return min(times) if times else None
 
 
