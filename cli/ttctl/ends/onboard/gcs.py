@@ -43,6 +43,7 @@ class GroundStations:
         ap.missions = Missions(b, sysid, compid, self._to_peer, self.log)
         self.builders: dict[int, Callable[[Snapshot], Any]] = {
             b.Heartbeat.MSG_ID: lambda s: telemetry.heartbeat(b, s),
+            **services.streams(b, lambda: self._boot_ms(None), lambda: self._unix_us(None)),
             b.SysStatus.MSG_ID: lambda s: telemetry.sys_status(b, s),
             b.GlobalPositionInt.MSG_ID: lambda s: telemetry.global_position_int(b, s, self._boot_ms(s)),
             b.LocalPositionNed.MSG_ID: lambda s: telemetry.local_position_ned(b, s, self._boot_ms(s)),
@@ -54,11 +55,10 @@ class GroundStations:
             b.VfrHud.MSG_ID: lambda s: telemetry.vfr_hud(b, s),
             b.MissionCurrent.MSG_ID: lambda s: telemetry.mission_current(b, s, len(self._mission())),
         }
-        self.services = services.Services(b, lambda: self._boot_ms(None), lambda: self._unix_us(None),
-                                          lambda: self.rates)
-        self.builders.update(self.services.builders())
         self.rates = telemetry.Rates(b, self.builders)
         self.now = boot
+        self.services = services.Services(b, lambda: self._boot_ms(None), lambda: self._unix_us(None),
+                                          lambda: self.rates)
 
     def _mission(self) -> list[Any]:
         return self.ap.missions.mission() if self.ap.missions is not None else []
@@ -238,8 +238,10 @@ class GroundStations:
 
     def wakeup(self) -> float | None:
         burst = self.services.wakeup()  # an FTP burst under way: its next packets, milliseconds away
-        if self.out or burst is not None:
-            return self.now if self.out else burst
+        if burst is not None and not self.out:
+            return burst
+        if self.out:
+            return self.now
         times = [t for t in (self.rates.next_due(), self.ap.missions.deadline() if self.ap.missions else None)
                  if t is not None]
         return min(times) if times else None

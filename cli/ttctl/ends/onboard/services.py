@@ -24,6 +24,23 @@ from .vehicle import Snapshot
 Reply = Callable[[Any], None]
 
 
+Builders = dict[int, Callable[[Snapshot], Any]]
+
+
+def streams(b: Bindings, boot_ms: Callable[[], int], unix_us: Callable[[], int]) -> Builders:
+    """The builders of the streams these services add (msgid -> build(snapshot))."""
+    return {
+        b.AttitudeQuaternion.MSG_ID: lambda s: telemetry.attitude_quaternion(b, s, boot_ms()),
+        b.Odometry.MSG_ID: lambda s: telemetry.odometry(b, s, boot_ms() * 1000),
+        b.Altitude.MSG_ID: lambda s: telemetry.altitude(b, s, boot_ms() * 1000),
+        b.SystemTime.MSG_ID: lambda s: telemetry.system_time(b, unix_us(), boot_ms()),
+        b.HighresImu.MSG_ID: lambda s: telemetry.highres_imu(b, s, boot_ms() * 1000),
+        b.ScaledImu.MSG_ID: lambda s: telemetry.scaled_imu(b, s, boot_ms()),
+        b.ScaledPressure.MSG_ID: lambda s: telemetry.scaled_pressure(b, s, boot_ms()),
+        b.WindCov.MSG_ID: lambda s: telemetry.wind_cov(b, s, boot_ms() * 1000),
+    }
+
+
 class Services:
     def __init__(self, b: Bindings, boot_ms: Callable[[], int], unix_us: Callable[[], int],
                  rates: Callable[[], telemetry.Rates]) -> None:
@@ -32,19 +49,6 @@ class Services:
         self.unix_us = unix_us
         self.rates = rates
         self.ftp = FtpServer()  # the node gives it the served folder and the inbox
-
-    def builders(self) -> dict[int, Callable[[Snapshot], Any]]:
-        b = self.b
-        return {
-            b.AttitudeQuaternion.MSG_ID: lambda s: telemetry.attitude_quaternion(b, s, self.boot_ms()),
-            b.Odometry.MSG_ID: lambda s: telemetry.odometry(b, s, self.boot_ms() * 1000),
-            b.Altitude.MSG_ID: lambda s: telemetry.altitude(b, s, self.boot_ms() * 1000),
-            b.SystemTime.MSG_ID: lambda s: telemetry.system_time(b, self.unix_us(), self.boot_ms()),
-            b.HighresImu.MSG_ID: lambda s: telemetry.highres_imu(b, s, self.boot_ms() * 1000),
-            b.ScaledImu.MSG_ID: lambda s: telemetry.scaled_imu(b, s, self.boot_ms()),
-            b.ScaledPressure.MSG_ID: lambda s: telemetry.scaled_pressure(b, s, self.boot_ms()),
-            b.WindCov.MSG_ID: lambda s: telemetry.wind_cov(b, s, self.boot_ms() * 1000),
-        }
 
     def on_message(self, now: float, msg: Any, reply: Reply, peer: Hashable = None) -> bool:
         b = self.b
@@ -94,4 +98,4 @@ class Services:
         return None
 
 
-__all__ = ["Services"]
+__all__ = ["Services", "streams"]
