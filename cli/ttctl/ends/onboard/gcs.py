@@ -43,7 +43,6 @@ class GroundStations:
         ap.missions = Missions(b, sysid, compid, self._to_peer, self.log)
         self.builders: dict[int, Callable[[Snapshot], Any]] = {
             b.Heartbeat.MSG_ID: lambda s: telemetry.heartbeat(b, s),
-            **services.streams(b, lambda: self._boot_ms(None), lambda: self._unix_us(None)),
             b.SysStatus.MSG_ID: lambda s: telemetry.sys_status(b, s),
             b.GlobalPositionInt.MSG_ID: lambda s: telemetry.global_position_int(b, s, self._boot_ms(s)),
             b.LocalPositionNed.MSG_ID: lambda s: telemetry.local_position_ned(b, s, self._boot_ms(s)),
@@ -53,6 +52,7 @@ class GroundStations:
             b.ExtendedSysState.MSG_ID: lambda s: telemetry.extended_sys_state(b, s),
             b.BatteryStatus.MSG_ID: lambda s: telemetry.battery_status(b, s),
             b.VfrHud.MSG_ID: lambda s: telemetry.vfr_hud(b, s),
+            **services.streams(b, lambda: self._boot_ms(None), lambda: self._unix_us(None)),
             b.MissionCurrent.MSG_ID: lambda s: telemetry.mission_current(b, s, len(self._mission())),
         }
         self.rates = telemetry.Rates(b, self.builders)
