@@ -180,3 +180,38 @@ def test_hostile_ftp_over_the_link_never_stops_the_node(gcs: tuple[Any, Any], tm
     assert all(p.resolve().is_relative_to((tmp_path / "inbox").resolve()) for p in (tmp_path / "inbox").rglob("*"))
     assert command(conn, 400, 1) == 0  # still flying
     assert "Traceback" not in node.stderr
+
+
+def test_mavproxy_flies_over_a_signed_link(tmp_path: Path, start: Start) -> None:
+    """MAVProxy 1.8.75 with `signing key PASSPHRASE` arms a vehicle started with --gcs-key holding
+    the same passphrase; once it stops signing (`signing remove`) its disarm is ignored."""
+    import re
+    import shutil
+    import subprocess
+    import sys
+
+    exe = shutil.which("mavproxy.py", path=str(Path(sys.executable).parent))
+    if exe is None:
+        pytest.skip("MAVProxy is in the test extra")
+    (tmp_path / "gcs.key").write_text("rehearsal\n")
+    port = free_port()
+    node = start("onboard", "emulate", "onboard", "--gcs", f"udpout:{LOCAL}:{port}", "--listen", f"udpin:{LOCAL}:0",
+                 "--no-entry-points", "--gcs-key", str(tmp_path / "gcs.key"))
+    node.wait_for("onboard 1:")
+    p = subprocess.Popen([exe, f"--master=udpin:{LOCAL}:{port}", "--source-system=255"], stdin=subprocess.PIPE,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=tmp_path)
+    assert p.stdin is not None
+    try:
+        for line, wait in (("signing key rehearsal", 3.0), ("arm throttle", 1.5), ("status HEARTBEAT", 0.5),
+                           ("signing remove", 0.5), ("disarm", 1.5), ("status HEARTBEAT", 0.5)):
+            p.stdin.write(line + "\n")
+            p.stdin.flush()
+            time.sleep(wait)
+        out = p.communicate(timeout=20)[0]
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.communicate()
+    assert "COMPONENT_ARM_DISARM: ACCEPTED" in out, out[-2000:]
+    modes = [int(m) for m in re.findall(r"HEARTBEAT \{type : 2, autopilot : \d+, base_mode : (\d+)", out)]
+    assert len(modes) == 2 and all(m & 128 for m in modes), out[-2000:]  # armed, and still armed
