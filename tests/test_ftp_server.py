@@ -237,3 +237,21 @@ def test_a_retry_gets_the_same_answer_and_floods_stay_bounded(tree: tuple[Client
         c.s.request(0.0, bytes(rnd.getrandbits(8) for _ in range(rnd.randrange(0, 260))), PEER)
     c.s.tick(0.0)
     c.s.close()
+
+
+def test_a_big_file_s_crc32_is_computed_a_step_per_tick(tree: tuple[Client, Path, Path]) -> None:
+    c, serve, _ = tree
+    big = os.urandom(ftp.CRC_STEP * 2 + 1234)
+    (serve / "big.img").write_bytes(big)
+    assert c.send(ftp.CRC32, b"/serve/big.img") == []  # under way: the vehicle keeps flying meanwhile
+    c.seq -= 1
+    assert c.send(ftp.CRC32, b"/serve/big.img") == []  # a retry while it runs: still one job
+    replies = []
+    for _ in range(5):
+        replies += c.s.tick(0.0)
+    assert len(replies) == 1 and replies[0][1] == PEER
+    op, data, *_ = Client.parse(replies[0][0])
+    assert op == ftp.ACK and struct.unpack("<I", data)[0] == zlib.crc32(big, 0xFFFFFFFF) ^ 0xFFFFFFFF
+    c.seq -= 1
+    assert c.send(ftp.CRC32, b"/serve/big.img")[0][:2] == (ftp.ACK, data)  # the retry after: the cached answer
+    assert c.s.wakeup() is None

@@ -51,6 +51,8 @@ SESSION_IDLE = 30.0  # s without a request: the session is closed (a write in it
 BURST_PACKETS = 8  # per tick
 BURST_PERIOD = 0.005  # s between ticks of a burst
 CACHE = 16  # replies remembered for a client's retry with the same seq
+CRC_STEP = 4 << 20  # bytes of a file's CRC32 computed per tick: a big file does not stall the vehicle
+MAX_CRC_JOBS = 2
 
 
 class FtpError(Exception):
@@ -80,12 +82,30 @@ class Session:
 
 
 @dataclass
+class CrcJob:
+    """The CRC32 of a file too big to compute in one go, a step per tick."""
+
+    fd: int
+    size: int
+    peer: Hashable
+    head: tuple[int, int, int, int]
+    done: int = 0
+    crc: int = 0
+
+
+def crc32(data: bytes, crc: int = 0) -> int:
+    """PX4's and ArduPilot's CRC32: the reflected table from a zero seed, no final inversion."""
+    return zlib.crc32(data, crc ^ 0xFFFFFFFF) ^ 0xFFFFFFFF
+
+
+@dataclass
 class FtpServer:
     serve: Path | None = None
     inbox: ReceiveDir | None = None
     sessions: dict[int, Session] = field(default_factory=dict)
     now: float = 0.0
     _cache: OrderedDict[tuple[Hashable, int, int, int], list[bytes]] = field(default_factory=OrderedDict)
+    _jobs: dict[tuple[Hashable, int, int, int], CrcJob] = field(default_factory=dict)
 
     # -- in -----------------------------------------------------------------------------------
     def request(self, now: float, payload: bytes, peer: Hashable) -> list[bytes]:
@@ -95,20 +115,28 @@ class FtpServer:
         key = (peer, seq, opcode, session)
         if opcode != BURST and key in self._cache:
             return self._cache[key]  # a retry: the same answer again (MAVLink FTP: re-send the response)
+        if key in self._jobs:
+            return []  # a retry of a CRC32 under way: its answer comes when it is done
         head = (seq, session, opcode, offset)
         try:
             if size > DATA:
                 raise FtpError(INVALID_SIZE)
             data = payload[HEADER.size:HEADER.size + size]
-            replies = self._work(opcode, session, offset, data, peer, head, size or DATA)
+            if opcode == CRC32:
+                replies = self._crc32(self._path(data), key, head)
+            else:
+                replies = self._work(opcode, session, offset, data, peer, head, size or DATA)
         except FtpError as e:
             body = bytes([e.code, e.errno]) if e.code == FAIL_ERRNO else bytes([e.code])
             replies = [self._reply(head, NAK, body)]
-        if opcode != BURST:
-            self._cache[key] = replies
-            while len(self._cache) > CACHE:
-                self._cache.popitem(last=False)
+        if opcode != BURST and replies:
+            self._remember(key, replies)
         return replies
+
+    def _remember(self, key: tuple[Hashable, int, int, int], replies: list[bytes]) -> None:
+        self._cache[key] = replies
+        while len(self._cache) > CACHE:
+            self._cache.popitem(last=False)
 
     @staticmethod
     def _reply(head: tuple[int, int, int, int], opcode: int, data: bytes = b"", session: int | None = None,
@@ -172,8 +200,6 @@ class FtpServer:
             old, _, new = data.partition(b"\0")
             self._rename(self._path(old), self._path(new))
             return [self._reply(head, ACK)]
-        if opcode == CRC32:
-            return [self._reply(head, ACK, struct.pack("<I", self._crc32(self._path(data))))]
         raise FtpError(UNKNOWN)
 
     # -- names --------------------------------------------------------------------------------
@@ -306,21 +332,45 @@ class FtpServer:
         except OSError as e:
             raise _oserror(e) from None
 
-    def _crc32(self, where: tuple[str, str]) -> int:
-        """PX4's and ArduPilot's CRC32: the reflected table from a zero seed, no final inversion."""
+    def _crc32(self, where: tuple[str, str], key: tuple[Hashable, int, int, int],
+               head: tuple[int, int, int, int]) -> list[bytes]:
+        """The file's CRC32 now, or, for a file over CRC_STEP bytes, from tick() when computed."""
         if not where[1]:
             raise FtpError(FAIL_ERRNO, errno.EISDIR)
         path = self._real(where)
-        crc = 0
         try:
-            with open(path, "rb") as f:
-                if not stat.S_ISREG(os.fstat(f.fileno()).st_mode):
-                    raise FtpError(FAIL_ERRNO, errno.EISDIR)
-                while chunk := f.read(1 << 16):
-                    crc = zlib.crc32(chunk, crc ^ 0xFFFFFFFF) ^ 0xFFFFFFFF
+            fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_CLOEXEC)
         except OSError as e:
             raise _oserror(e) from None
-        return crc
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
+            os.close(fd)
+            raise FtpError(FAIL_ERRNO, errno.EISDIR if stat.S_ISDIR(st.st_mode) else errno.EINVAL)
+        job = CrcJob(fd, st.st_size, key[0], head)
+        if st.st_size > CRC_STEP:
+            if len(self._jobs) >= MAX_CRC_JOBS:
+                os.close(fd)
+                raise FtpError(FAIL_ERRNO, errno.EBUSY)
+            self._jobs[key] = job
+            return []
+        return [self._crc_step(job)]
+
+    def _crc_step(self, job: CrcJob) -> bytes:
+        """One step of the job; its reply once it is done (ACK with the CRC, or NAK)."""
+        err: FtpError | None = None
+        try:
+            chunk = os.pread(job.fd, min(CRC_STEP, job.size - job.done), job.done)
+        except OSError as e:
+            chunk, err = b"", _oserror(e)
+        if not chunk and job.done < job.size and err is None:
+            err = FtpError(FAIL_ERRNO, errno.EIO)  # the file shrank while its CRC was computed
+        job.crc, job.done = crc32(chunk, job.crc), job.done + len(chunk)
+        if err is None and job.done < job.size:
+            return b""
+        os.close(job.fd)
+        if err is not None:
+            return self._reply(job.head, NAK, bytes([err.code, err.errno]))
+        return self._reply(job.head, ACK, struct.pack("<I", job.crc))
 
     # -- writing ------------------------------------------------------------------------------
     def _open_write(self, where: tuple[str, str], peer: Hashable, existing: bool, wanted: int) -> int:
@@ -456,6 +506,12 @@ class FtpServer:
         """The next packets of the bursts under way (burst_complete on a burst's last)."""
         self.now = now
         out: list[tuple[bytes, Hashable]] = []
+        for key, job in list(self._jobs.items()):
+            reply = self._crc_step(job)
+            if reply:
+                del self._jobs[key]
+                self._remember(key, [reply])
+                out.append((reply, job.peer))
         for sid, s in self.sessions.items():
             if s.burst is None:
                 continue
@@ -481,11 +537,17 @@ class FtpServer:
     def wakeup(self) -> float | None:
         """When the bursts under way send their next packets (None: no burst). Idle sessions
         are closed when a new one is opened, or when the node stops."""
+        if self._jobs:
+            return self.now
         if any(s.burst is not None for s in self.sessions.values()):
             return self.now + BURST_PERIOD
         return None
 
     def close(self) -> None:
+        for job in self._jobs.values():
+            with contextlib.suppress(OSError):
+                os.close(job.fd)
+        self._jobs.clear()
         for s in self.sessions.values():
             with contextlib.suppress(FtpError):
                 self._close(s, keep=False)
