@@ -255,3 +255,16 @@ def test_a_big_file_s_crc32_is_computed_a_step_per_tick(tree: tuple[Client, Path
     c.seq -= 1
     assert c.send(ftp.CRC32, b"/serve/big.img")[0][:2] == (ftp.ACK, data)  # the retry after: the cached answer
     assert c.s.wakeup() is None
+
+
+def test_a_big_folder_is_read_once_per_listing(tree: tuple[Client, Path, Path], monkeypatch: Any) -> None:
+    c, serve, _ = tree
+    for i in range(300):
+        (serve / "sub" / f"f{i:04d}.txt").write_text("x")
+    reads = []
+    real = os.listdir
+    monkeypatch.setattr(ftp.os, "listdir", lambda p: reads.append(p) or real(p))
+    names = c.listing("/serve/sub")
+    assert len(names) == 301 and len(reads) == 1
+    c.listing("/serve/sub")  # a new listing (offset 0) reads the folder again
+    assert len(reads) == 2

@@ -53,6 +53,7 @@ BURST_PERIOD = 0.005  # s between ticks of a burst
 CACHE = 16  # replies remembered for a client's retry with the same seq
 CRC_STEP = 4 << 20  # bytes of a file's CRC32 computed per tick: a big file does not stall the vehicle
 MAX_CRC_JOBS = 2
+LISTING_KEEP = 10.0  # s a folder's listing is kept for the pages after its first
 
 
 class FtpError(Exception):
@@ -106,6 +107,7 @@ class FtpServer:
     now: float = 0.0
     _cache: OrderedDict[tuple[Hashable, int, int, int], list[bytes]] = field(default_factory=OrderedDict)
     _jobs: dict[tuple[Hashable, int, int, int], CrcJob] = field(default_factory=dict)
+    _listing: tuple[tuple[str, str], float, list[bytes]] | None = None
 
     # -- in -----------------------------------------------------------------------------------
     def request(self, now: float, payload: bytes, peer: Hashable) -> list[bytes]:
@@ -287,7 +289,14 @@ class FtpServer:
         return out
 
     def _list(self, where: tuple[str, str], offset: int, head: tuple[int, int, int, int]) -> bytes:
-        entries = self._entries(where)
+        """One page of a listing. The pages after the first come from the listing the first one
+        read (for LISTING_KEEP seconds), so a big folder is read once, not once a page."""
+        kept = self._listing
+        if offset > 0 and kept is not None and kept[0] == where and self.now - kept[1] < LISTING_KEEP:
+            entries = kept[2]
+        else:
+            entries = self._entries(where)
+            self._listing = (where, self.now, entries)
         if offset >= len(entries):
             raise FtpError(EOF)
         data = b""
