@@ -38,6 +38,7 @@ def test_timesync_system_time_and_message_intervals(gcs: tuple[Any, Any]) -> Non
     assert wait_for(conn, "MESSAGE_INTERVAL", lambda m: m.message_id == 9000, timeout=3).interval_us == 0
     for bad in (math.nan, math.inf, -1.0, 1.5, 2.0**30):
         assert command(conn, 510, bad) == 2  # DENIED
+    assert command(conn, 519, 1) == 3  # REQUEST_PROTOCOL_VERSION: UNSUPPORTED (PROTOCOL_VERSION is not in the dialect)
 
 
 def test_log_list_is_answered_empty(gcs: tuple[Any, Any]) -> None:
