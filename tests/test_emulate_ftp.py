@@ -123,9 +123,14 @@ def test_mavsdk_moves_files_and_reads_logs_and_every_attitude(tmp_path: Path, st
                 (down / "route.csv").unlink()
             listing = await ftp.list_directory("/serve")
             assert [(e.name, e.size_bytes) for e in listing.entries] == [("route.csv", 20_000)], listing
-            await ftp.rename("/inbox/plan.bin", "/inbox/plan2.bin")
-            await ftp.remove_file("/inbox/plan2.bin")
-            assert not any((tmp_path / "inbox").glob("plan*"))
+            await ftp.create_directory("/inbox/day1")
+            await ftp.rename("/inbox/plan.bin", "/inbox/day1/plan2.bin")
+            assert sha(tmp_path / "inbox" / "day1" / "plan2.bin") == sha(local / "plan.bin")
+            with pytest.raises(FtpError):
+                await ftp.remove_directory("/inbox/day1")  # not empty
+            await ftp.remove_file("/inbox/day1/plan2.bin")
+            await ftp.remove_directory("/inbox/day1")
+            assert [p.name for p in (tmp_path / "inbox").iterdir() if p.name != ".ttctl-partial"] == []
             with pytest.raises(FtpError, match="FILE_PROTECTED"):
                 await ftp.remove_file("/serve/route.csv")
             assert (tmp_path / "serve" / "route.csv").exists()
@@ -149,3 +154,33 @@ def test_mavsdk_moves_files_and_reads_logs_and_every_attitude(tmp_path: Path, st
 
     asyncio.run(asyncio.wait_for(main(), 90))
     assert "Traceback" not in node.stderr
+
+
+def test_mavsdk_over_tcp(tmp_path: Path, start: Start) -> None:
+    """`--gcs tcpin:` with MAVSDK connecting by `tcpout://`: the vehicle is found, its position
+    read and its files listed over the one TCP connection."""
+    pytest.importorskip("mavsdk", reason="mavsdk is in the test extra")
+    from mavsdk.asyncio import ComponentType, Configuration, Mavsdk
+    from mavsdk.asyncio.plugins.ftp import FtpAsync
+    from mavsdk.asyncio.plugins.telemetry import TelemetryAsync
+
+    port = free_port()
+    (tmp_path / "serve").mkdir()
+    (tmp_path / "serve" / "a.txt").write_text("over tcp")
+    node = start("onboard", "emulate", "onboard", "--gcs", f"tcpin:{LOCAL}:{port}", "--listen", f"udpin:{LOCAL}:0",
+                 "--no-entry-points", "--serve", str(tmp_path / "serve"))
+    node.wait_for("onboard 1:")
+
+    async def main() -> None:
+        cfg = Configuration.create_with_component_type(ComponentType.GROUND_STATION)
+        async with Mavsdk(cfg) as m:
+            await m.add_any_connection(f"tcpout://{LOCAL}:{port}")
+            system = await m.first_autopilot(timeout_s=15)
+            assert system is not None
+            pos = await _until(TelemetryAsync(system).position, lambda p: math.isfinite(p.latitude_deg), 10)
+            assert abs(pos.latitude_deg - 46.0503) < 1e-6
+            listing = await FtpAsync(system).list_directory("/serve")
+            assert [(e.name, e.size_bytes) for e in listing.entries] == [("a.txt", 8)]
+
+    asyncio.run(asyncio.wait_for(main(), 60))
+    assert "connection from" in node.stderr and "Traceback" not in node.stderr
