@@ -26,7 +26,8 @@ emulate_app = typer.Typer(help="Both ends of the link, runnable without a drone.
 def emulate_onboard_cmd(
     listen: Annotated[str, typer.Option("--listen", help="The tablet's DTT link: udpin:HOST:PORT (or udpout:, tcp:, "
                                                          "tcpin:).")] = "udpin:0.0.0.0:14560",
-    gcs: Annotated[list[str] | None, typer.Option("--gcs", help="A ground-station link (repeatable; default "
+    gcs: Annotated[list[str] | None, typer.Option("--gcs", help="A ground-station link: udpout:HOST:PORT, udpin:, "
+                                                                "tcpin: or tcp: (repeatable; default "
                                                                 "udpout:127.0.0.1:14550 and udpout:127.0.0.1:14540, "
                                                                 "where QGroundControl, MAVProxy and MAVSDK listen).",
                                                   show_default=False)] = None,
