@@ -151,6 +151,9 @@ def test_mavsdk_moves_files_and_reads_logs_and_every_attitude(tmp_path: Path, st
             assert 970 < pressure.absolute_pressure_hpa < 985  # 295 m above sea level
             wind = await _until(tel.wind, lambda w: math.isfinite(w.wind_x_ned_m_s), 5)
             assert wind.wind_x_ned_m_s == 0.0 and wind.wind_y_ned_m_s == 0.0
+            await tel.set_rate_ground_truth(2.0)  # the simulation's truth, sent when asked for
+            truth = await _until(tel.ground_truth, lambda g: math.isfinite(g.latitude_deg), 5)
+            assert abs(truth.latitude_deg - 46.0503) < 1e-6 and abs(truth.absolute_altitude_m - 295) < 0.5
 
     asyncio.run(asyncio.wait_for(main(), 90))
     assert "Traceback" not in node.stderr

@@ -41,6 +41,21 @@ def test_timesync_system_time_and_message_intervals(gcs: tuple[Any, Any]) -> Non
     assert command(conn, 519, 1) == 3  # REQUEST_PROTOCOL_VERSION: UNSUPPORTED (PROTOCOL_VERSION is not in the dialect)
 
 
+def test_streams_asked_for_all_at_once_leave_the_on_request_ones_off(gcs: tuple[Any, Any]) -> None:
+    conn, _ = gcs
+    conn.mav.request_data_stream_send(1, 1, 0, 4, 1)  # MAVProxy's REQUEST_DATA_STREAM(ALL, 4 Hz)
+    seen: set[str] = set()
+    end = time.monotonic() + 2.0
+    while time.monotonic() < end:
+        m = conn.recv_match(blocking=True, timeout=0.5)
+        if m is not None:
+            seen.add(m.get_type())
+    assert {"ATTITUDE_QUATERNION", "ODOMETRY", "HIGHRES_IMU", "WIND_COV"} <= seen
+    assert not seen & {"HIL_STATE_QUATERNION", "SCALED_IMU"}
+    assert command(conn, 511, 115, 200_000) == 0  # until asked for by name
+    wait_for(conn, "HIL_STATE_QUATERNION", lambda m: m.lat == 460503000, timeout=3)
+
+
 def test_log_list_is_answered_empty(gcs: tuple[Any, Any]) -> None:
     conn, _ = gcs
     conn.mav.log_request_list_send(1, 1, 0, 0xFFFF)

@@ -2,7 +2,8 @@
 answered, GET_MESSAGE_INTERVAL, MAVLink FTP (ftp.py), the log list (LOG_REQUEST_LIST: this vehicle keeps no flight
 logs, so it says so at once, as PX4 does with an empty SD card), and the extra telemetry streams
 MAVSDK's getters read (ATTITUDE_QUATERNION, ODOMETRY, ALTITUDE, SYSTEM_TIME, HIGHRES_IMU,
-SCALED_IMU on request, SCALED_PRESSURE, WIND_COV), built from the same snapshot as the rest.
+SCALED_PRESSURE, WIND_COV; SCALED_IMU and HIL_STATE_QUATERNION, the simulation's truth, when
+asked for), built from the same snapshot as the rest.
 
 `Services.on_message(now, msg, reply)` takes a message meant for the vehicle and returns True if
 it was one of these (answers go to `reply`); `command(msg)` answers the commands it owns
@@ -38,6 +39,7 @@ def streams(b: Bindings, boot_ms: Callable[[], int], unix_us: Callable[[], int])
         b.ScaledImu.MSG_ID: lambda s: telemetry.scaled_imu(b, s, boot_ms()),
         b.ScaledPressure.MSG_ID: lambda s: telemetry.scaled_pressure(b, s, boot_ms()),
         b.WindCov.MSG_ID: lambda s: telemetry.wind_cov(b, s, boot_ms() * 1000),
+        b.HilStateQuaternion.MSG_ID: lambda s: telemetry.hil_state_quaternion(b, s, boot_ms() * 1000),
     }
 
 

@@ -129,7 +129,7 @@ class Rates:
         "HOME_POSITION": 2.0, "EXTENDED_SYS_STATE": 1.0, "BATTERY_STATUS": 1.0, "VFR_HUD": 0.5,
         "LOCAL_POSITION_NED": 0.5, "MISSION_CURRENT": 1.0,
         "ATTITUDE_QUATERNION": 0.25, "ODOMETRY": 0.5, "ALTITUDE": 1.0, "SYSTEM_TIME": 1.0, "HIGHRES_IMU": 0.5,
-        "SCALED_PRESSURE": 1.0, "WIND_COV": 1.0}  # SCALED_IMU: when asked for
+        "SCALED_PRESSURE": 1.0, "WIND_COV": 1.0}  # SCALED_IMU, HIL_STATE_QUATERNION: when asked for
 
     def __init__(self, b: Bindings, builders: dict[int, Callable[[Snapshot], Any]],
                  defaults: dict[str, float] | None = None) -> None:
@@ -154,10 +154,11 @@ class Rates:
         return True
 
     def set_all(self, hz: float) -> None:
-        """REQUEST_DATA_STREAM(ALL): everything but the heartbeat at `hz` (0: stop)."""
+        """REQUEST_DATA_STREAM(ALL): every stream but the heartbeat at `hz` (0: stop); the
+        messages sent only when asked for (no default rate) stay off."""
         heartbeat_id = 0  # HEARTBEAT
         for mid in self.builders:
-            if mid != heartbeat_id:
+            if mid != heartbeat_id and self.default[mid] is not None:
                 self.interval[mid] = 1.0 / hz if hz > 0 else None
 
     def take_due(self, now: float) -> list[int]:
@@ -255,6 +256,17 @@ def scaled_imu(b: Bindings, s: Snapshot, boot_ms: int) -> Any:
 def scaled_pressure(b: Bindings, s: Snapshot, boot_ms: int) -> Any:
     return b.ScaledPressure(time_boot_ms=boot_ms, press_abs=pressure_hpa(s.alt_msl), press_diff=0.0,
                             temperature=round(TEMPERATURE * 100), temperature_press_diff=0)
+
+
+def hil_state_quaternion(b: Bindings, s: Snapshot, boot_us: int) -> Any:
+    """The simulation's true state (MAVSDK's ground_truth), sent only when asked for."""
+    p, q, r = body_rates(s)
+    a = [round(x / G * 1000) for x in specific_force(s)]
+    return b.HilStateQuaternion(time_usec=boot_us, attitude_quaternion=quaternion(s), rollspeed=p, pitchspeed=q,
+                                yawspeed=r, lat=_deg7(s.lat), lon=_deg7(s.lon), alt=round(s.alt_msl * 1000),
+                                vx=round(s.vn * 100), vy=round(s.ve * 100), vz=round(s.vd * 100),
+                                ind_airspeed=round(s.ground_speed * 100), true_airspeed=round(s.ground_speed * 100),
+                                xacc=a[0], yacc=a[1], zacc=a[2])
 
 
 def wind_cov(b: Bindings, s: Snapshot, boot_us: int) -> Any:
