@@ -268,3 +268,13 @@ def test_a_big_folder_is_read_once_per_listing(tree: tuple[Client, Path, Path], 
     assert len(names) == 301 and len(reads) == 1
     c.listing("/serve/sub")  # a new listing (offset 0) reads the folder again
     assert len(reads) == 2
+
+
+def test_a_session_whose_file_cannot_land_still_ends(tree: tuple[Client, Path, Path]) -> None:
+    c, _, inbox = tree
+    _, _, sid, *_ = c.ok(ftp.CREATE, b"/inbox/x")
+    c.ok(ftp.WRITE, b"abc", session=sid)
+    (inbox / "x").mkdir()  # meanwhile a folder took the name
+    assert c.nak(ftp.TERMINATE, session=sid) == bytes([ftp.FAIL_ERRNO, errno.EISDIR])
+    assert c.s.sessions == {} and list((inbox / ".ttctl-partial").iterdir()) == []
+    assert c.nak(ftp.TERMINATE, session=sid) == bytes([ftp.INVALID_SESSION])

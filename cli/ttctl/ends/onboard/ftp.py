@@ -154,8 +154,9 @@ class FtpServer:
         if opcode == NONE:
             return [self._reply(head, ACK)]
         if opcode == TERMINATE:
-            self._close(self._session(sid), keep=True)
-            del self.sessions[sid]
+            session = self._session(sid)
+            del self.sessions[sid]  # ended even if its file cannot be put in place (the NAK says why)
+            self._close(session, keep=True)
             return [self._reply(head, ACK)]
         if opcode == RESET:
             for s in [s for s in self.sessions.values() if s.peer == peer]:
