@@ -64,7 +64,7 @@ def test_mavproxy_lists_gets_and_puts_files(tmp_path: Path, start: Start) -> Non
         for line, wait in (("", 3.5), ("ftp list /", 1.0), ("ftp list /serve", 1.0),
                            ("ftp get /serve/down.bin got.bin", 2.5), ("ftp put up.bin /inbox/up.bin", 2.5),
                            ("ftp put up.bin /serve/no.bin", 1.5), ("ftp get /serve/../../etc/passwd pw", 1.5),
-                           ("ftp list /inbox", 1.0)):
+                           ("ftp list /inbox", 1.0), ("log list", 1.0)):
             if line:
                 p.stdin.write(line + "\n")
                 p.stdin.flush()
@@ -81,6 +81,7 @@ def test_mavproxy_lists_gets_and_puts_files(tmp_path: Path, start: Start) -> Non
     assert sha(tmp_path / "inbox" / "up.bin") == sha(work / "up.bin")
     assert "up.bin\t30000" in out
     assert not (tmp_path / "serve" / "no.bin").exists() and not (work / "pw").exists()
+    assert "Requesting log list\nNo logs" in out  # LOG_REQUEST_LIST answered: no logs
     assert "Traceback" not in node.stderr
 
 
