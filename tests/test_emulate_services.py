@@ -37,7 +37,14 @@ def test_timesync_system_time_and_message_intervals(gcs: tuple[Any, Any]) -> Non
     assert command(conn, 510, 9000) == 0
     assert wait_for(conn, "MESSAGE_INTERVAL", lambda m: m.message_id == 9000, timeout=3).interval_us == 0
     for bad in (math.nan, math.inf, -1.0, 1.5, 2.0**30):
-        assert command(conn, 510, bad) == 2  # DENIED
+        mav.command_long_send(1, 1, 510, 0, bad, 0, 0, 0, 0, 0, 0)
+        got = []
+        end = time.monotonic() + 3
+        while time.monotonic() < end and not any(m.get_type() == "COMMAND_ACK" for m in got):
+            m = conn.recv_match(type=["COMMAND_ACK", "STATUSTEXT"], blocking=True, timeout=0.5)
+            got += [m] if m is not None else []
+        assert [m.result for m in got if m.get_type() == "COMMAND_ACK"] == [2]  # DENIED, and why:
+        assert any("GET_MESSAGE_INTERVAL" in m.text for m in got if m.get_type() == "STATUSTEXT"), got
     assert command(conn, 519, 1) == 3  # REQUEST_PROTOCOL_VERSION: UNSUPPORTED (PROTOCOL_VERSION is not in the dialect)
 
 

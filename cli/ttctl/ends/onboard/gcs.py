@@ -58,7 +58,7 @@ class GroundStations:
         self.rates = telemetry.Rates(b, self.builders)
         self.now = boot
         self.services = services.Services(b, lambda: self._boot_ms(None), lambda: self._unix_us(None),
-                                          lambda: self.rates)
+                                          lambda: self.rates, warn=self._refusal)
 
     def _mission(self) -> list[Any]:
         return self.ap.missions.mission() if self.ap.missions is not None else []
@@ -68,6 +68,10 @@ class GroundStations:
 
     def _unix_us(self, s: Snapshot | None) -> int:
         return int(self.unix(self.now) * 1e6)
+
+    def _refusal(self, text: str) -> None:
+        self.log(text)
+        self.say(WARNING, text)
 
     # -- out ------------------------------------------------------------------------------------
     def _to_peer(self, msg: Any, peer: tuple[int, int]) -> None:

@@ -1,7 +1,7 @@
 """The services a ground station expects of a PX4-like vehicle besides flying, sans-IO: TIMESYNC
-answered, GET_MESSAGE_INTERVAL, MAVLink FTP (ftp.py), the log list (LOG_REQUEST_LIST: this vehicle keeps no flight
-logs, so it says so at once, as PX4 does with an empty SD card), and the extra telemetry streams
-MAVSDK's getters read (ATTITUDE_QUATERNION, ODOMETRY, ALTITUDE, SYSTEM_TIME, HIGHRES_IMU,
+answered, GET_MESSAGE_INTERVAL, MAVLink FTP (ftp.py), the log list (LOG_REQUEST_LIST: this vehicle
+keeps no flight logs, so it says so at once, as PX4 does with an empty SD card), and the extra
+telemetry streams MAVSDK's getters read (ATTITUDE_QUATERNION, ODOMETRY, ALTITUDE, SYSTEM_TIME, HIGHRES_IMU,
 SCALED_PRESSURE, WIND_COV; SCALED_IMU and HIL_STATE_QUATERNION, the simulation's truth, when
 asked for), built from the same snapshot as the rest.
 
@@ -45,8 +45,9 @@ def streams(b: Bindings, boot_ms: Callable[[], int], unix_us: Callable[[], int])
 
 class Services:
     def __init__(self, b: Bindings, boot_ms: Callable[[], int], unix_us: Callable[[], int],
-                 rates: Callable[[], telemetry.Rates]) -> None:
+                 rates: Callable[[], telemetry.Rates], warn: Callable[[str], Any] | None = None) -> None:
         self.b = b
+        self.warn = warn or (lambda text: None)  # a refusal's words: the log and a STATUSTEXT
         self.boot_ms = boot_ms
         self.unix_us = unix_us
         self.rates = rates
@@ -60,8 +61,8 @@ class Services:
                     reply(self._ftp_message(payload, peer))
             return True
         if isinstance(msg, b.Timesync):
-            if msg.tc1 == 0:  # a request (tc1 0): mirror ts1, our time in tc1 (ns on the boot clock)
-                reply(b.Timesync(tc1=max(1, self.boot_ms() * 1_000_000), ts1=msg.ts1))  # tc1 0 reads as a request
+            if msg.tc1 == 0:  # a request: ts1 mirrored, our time in tc1 (ns on the boot clock; never 0, a request)
+                reply(b.Timesync(tc1=max(1, self.boot_ms() * 1_000_000), ts1=msg.ts1))
             return True  # an answer to someone else's request is not for us to act on
         if isinstance(msg, b.LogRequestList):
             # no logs: one LOG_ENTRY with num_logs 0 (id 0), which PX4 sends and MAVSDK reads as an empty list
@@ -88,6 +89,7 @@ class Services:
         if msg.command == C.MAV_CMD_GET_MESSAGE_INTERVAL:
             p1 = msg.param1
             if p1 is None or not math.isfinite(p1) or not 0 <= p1 < 1 << 24 or p1 != int(p1):
+                self.warn(f"refused: GET_MESSAGE_INTERVAL wants a message id, not {p1}")
                 return int(A.MAV_RESULT_DENIED), []
             msgid = int(p1)
             rates = self.rates()
