@@ -40,6 +40,7 @@ class OnboardOptions:
     profile_file: Path | None = None
     dialect: Path | None = None
     include_dirs: list[Path] = field(default_factory=list)
+    gcs_key: Path | None = None
 
 
 def _home(text: str | None) -> Any:
@@ -57,6 +58,14 @@ def _home(text: str | None) -> Any:
     if not (-90 <= lat <= 90 and -180 <= lon <= 180 and -500 <= alt <= 9000):
         raise Fail(f"--home {text}: out of range")
     return Home(lat, lon, alt)
+
+
+def _gcs_signing(key: Path | None, b: Any) -> Any:
+    """--gcs-key: as --key, with its own words in errors."""
+    try:
+        return load_signing(key, False, b)
+    except Fail as e:
+        raise Fail(str(e).replace("--key", "--gcs-key", 1)) from None
 
 
 def emulate_onboard(o: OnboardOptions) -> int:
@@ -84,7 +93,8 @@ def emulate_onboard(o: OnboardOptions) -> int:
     b = load_bindings(o.dialect, o.include_dirs)  # before the plugins: they import its package
     cfg = OnboardConfig(sysid=o.sysid, dtt=dtt, gcs=gcs, inbox=o.inbox, serve=o.serve, home=_home(o.home),
                         speed=o.speed, rate_Bps=link.pace_Bps, telemetry_hz=o.telemetry_hz,
-                        orbit_hz=o.orbit_hz, signing=load_signing(o.key, o.accept_unsigned, b))
+                        orbit_hz=o.orbit_hz, signing=load_signing(o.key, o.accept_unsigned, b),
+                        gcs_signing=_gcs_signing(o.gcs_key, b))
     try:
         plugins = [] if o.no_entry_points else entry_point_plugins()
         for spec in o.plugins:
@@ -105,7 +115,7 @@ def emulate_onboard(o: OnboardOptions) -> int:
             except (TransportError, StorageError) as e:
                 raise Fail(str(e)) from None
             dtt_at = node.runner.transport.describe() if node.runner is not None else "none"
-            gcs_at = ", ".join(str(g) for g in gcs) or "none"
+            gcs_at = ", ".join(t.describe() for t in node.gcs_links) or "none"
             names = ", ".join(type(p).__name__ for p in plugins)
             err(f"onboard {o.sysid}: tablet link {dtt_at}; ground stations {gcs_at}; home {cfg.home.lat:.5f}, "
                 f"{cfg.home.lon:.5f}, {cfg.home.alt:g} m; dialect {b.name}" + (f"; plugins {names}" if names else ""))

@@ -26,7 +26,8 @@ emulate_app = typer.Typer(help="Both ends of the link, runnable without a drone.
 def emulate_onboard_cmd(
     listen: Annotated[str, typer.Option("--listen", help="The tablet's DTT link: udpin:HOST:PORT (or udpout:, tcp:, "
                                                          "tcpin:).")] = "udpin:0.0.0.0:14560",
-    gcs: Annotated[list[str] | None, typer.Option("--gcs", help="A ground-station link (repeatable; default "
+    gcs: Annotated[list[str] | None, typer.Option("--gcs", help="A ground-station link: udpout:HOST:PORT, udpin:, "
+                                                                "tcpin: or tcp: (repeatable; default "
                                                                 "udpout:127.0.0.1:14550 and udpout:127.0.0.1:14540, "
                                                                 "where QGroundControl, MAVProxy and MAVSDK listen).",
                                                   show_default=False)] = None,
@@ -56,6 +57,10 @@ def emulate_onboard_cmd(
     distance: DistanceOpt = 10.0,
     key: KeyOpt = None,
     accept_unsigned: AcceptUnsignedOpt = False,
+    gcs_key: Annotated[Path | None, typer.Option("--gcs-key", help="Sign the ground-station links' frames (MAVLink 2 "
+                                                                   "signing) and accept only frames signed with this "
+                                                                   "key (a file as for --key).",
+                                                 show_default=False)] = None,
     dialect: DialectOpt = None,
     include: DialectIncludeOpt = None,
 ) -> None:
@@ -70,7 +75,7 @@ def emulate_onboard_cmd(
     raise typer.Exit(emulate_onboard(OnboardOptions(listen, gcs or [], no_gcs, sysid, inbox, serve, home, speed,
                                                     rate, profile, distance, plugin or [], no_entry_points,
                                                     telemetry_hz, orbit_hz, key, accept_unsigned, profile_file,
-                                                    dialect, include or [])))
+                                                    dialect, include or [], gcs_key=gcs_key)))
 
 
 @emulate_app.command("tablet")

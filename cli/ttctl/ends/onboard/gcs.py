@@ -16,7 +16,7 @@ from collections.abc import Callable, Hashable
 from typing import Any
 
 from ...wire.bindings import Bindings
-from . import modes, telemetry
+from . import modes, services, telemetry
 from .autopilot import INFO, WARNING, Autopilot
 from .missions import Missions
 from .vehicle import Refused, Snapshot, State
@@ -52,19 +52,26 @@ class GroundStations:
             b.ExtendedSysState.MSG_ID: lambda s: telemetry.extended_sys_state(b, s),
             b.BatteryStatus.MSG_ID: lambda s: telemetry.battery_status(b, s),
             b.VfrHud.MSG_ID: lambda s: telemetry.vfr_hud(b, s),
+            **services.streams(b, lambda: self._boot_ms(None), lambda: self._unix_us(None)),
             b.MissionCurrent.MSG_ID: lambda s: telemetry.mission_current(b, s, len(self._mission())),
         }
         self.rates = telemetry.Rates(b, self.builders)
         self.now = boot
+        self.services = services.Services(b, lambda: self._boot_ms(None), lambda: self._unix_us(None),
+                                          lambda: self.rates, warn=self._refusal)
 
     def _mission(self) -> list[Any]:
         return self.ap.missions.mission() if self.ap.missions is not None else []
 
-    def _boot_ms(self, s: Snapshot) -> int:
+    def _boot_ms(self, s: Snapshot | None) -> int:
         return int((self.now - self.boot) * 1000) & 0xFFFFFFFF
 
-    def _unix_us(self, s: Snapshot) -> int:
+    def _unix_us(self, s: Snapshot | None) -> int:
         return int(self.unix(self.now) * 1e6)
+
+    def _refusal(self, text: str) -> None:
+        self.log(text)
+        self.say(WARNING, text)
 
     # -- out ------------------------------------------------------------------------------------
     def _to_peer(self, msg: Any, peer: tuple[int, int]) -> None:
@@ -92,6 +99,8 @@ class GroundStations:
                                          target_component=peer[1]), peer)
             return
         if not self._for_us(msg):
+            return
+        if self.services.on_message(now, msg, lambda m: self._to_peer(m, peer), peer):
             return
         if isinstance(msg, (b.CommandLong, b.CommandInt)):
             result, extra = self._command(now, msg)
@@ -122,6 +131,9 @@ class GroundStations:
         cmd = msg.command
         p = [msg.param1, msg.param2, msg.param3, msg.param4]
         v = self.ap.vehicle
+        served = self.services.command(msg)
+        if served is not None:
+            return served
         try:
             if cmd == C.MAV_CMD_COMPONENT_ARM_DISARM:
                 if _arg(p[0], 0) >= 0.5:
@@ -217,6 +229,8 @@ class GroundStations:
     # -- time -------------------------------------------------------------------------------------
     def tick(self, now: float) -> list[tuple[Any, Hashable]]:
         self.now = now
+        self.out.extend((m, self._peer_links.get(peer)) for m, peer in self.services.tick(now)
+                        if isinstance(peer, tuple))  # an FTP burst's next packets
         if self.ap.missions is not None:
             self.ap.missions.tick(now)
         due = self.rates.take_due(now)
@@ -227,6 +241,9 @@ class GroundStations:
         return out
 
     def wakeup(self) -> float | None:
+        burst = self.services.wakeup()  # an FTP burst under way: its next packets, milliseconds away
+        if burst is not None and not self.out:
+            return burst
         if self.out:
             return self.now
         times = [t for t in (self.rates.next_due(), self.ap.missions.deadline() if self.ap.missions else None)

@@ -1,6 +1,6 @@
 """The onboard end as an asyncio node: the vehicle, the tablet's DTT link (a proto Endpoint under
 the shared Runner: file transfer, commands, telemetry) and any number of ground-station links
-(plain MAVLink 2 over UDP, the vehicle as component 1), all on one event loop.
+(plain MAVLink 2 over UDP or TCP, the vehicle as component 1), all on one event loop.
 
 Time: `speed` > 1 runs the vehicle's clock faster than the wall clock (tests, rehearsals); the
 links keep real time.
@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ...link.transport import Spec, Transport, UdpTransport, addr_text, make_transport
+from ...link.transport import Spec, Transport, addr_text, make_transport
 from ...proto.commands import Outcome
 from ...proto.endpoint import CONTROL, TELEMETRY, Endpoint
 from ...proto.storage import ReceiveDir
@@ -49,6 +49,7 @@ class OnboardConfig:
     telemetry_hz: float = 2.0  # TT_NAV_SAT_FIX and TT_ODOMETRY to the tablet
     orbit_hz: float = 10.0  # the orbit camera's publishing rate while head poses arrive (0: no orbit camera)
     signing: Any = None  # Signing for the DTT link (None: unsigned, signed frames unverified)
+    gcs_signing: Any = None  # Signing for the ground-station links (every frame signed, only signed ones taken)
 
 
 class OnboardNode:
@@ -65,8 +66,8 @@ class OnboardNode:
         self.ap = Autopilot(bindings, self.vehicle, cfg.sysid, say=self._say)
         self.started = 0.0
         self.gcs = GroundStations(bindings, self.ap, cfg.sysid, AUTOPILOT_COMPID, unix=self._unix, log=self.log)
-        self.gcs_encoder = bindings.encoder(cfg.sysid, AUTOPILOT_COMPID)
-        self.gcs_links: list[UdpTransport] = []
+        self.gcs_encoder = bindings.encoder(cfg.sysid, AUTOPILOT_COMPID, cfg.gcs_signing)
+        self.gcs_links: list[Transport] = []
         self._gcs_parsers: dict[Hashable, Any] = {}
         self.dispatcher = Dispatcher(on_error=self._plugin_error, dialect=bindings)
         from .orbit_camera import OrbitCameraPlugin
@@ -222,13 +223,15 @@ class OnboardNode:
         loop = asyncio.get_running_loop()
         self.started = loop.time()
         self.gcs.boot = self.gcs.now = 0.0
-        for spec in self.cfg.gcs:
-            t = UdpTransport(spec, mtu=65535, log=self._logger(str(spec)))
+        for spec in self.cfg.gcs:  # UDP or TCP (tcpin: ground stations connect; tcp: we connect to one)
+            t = make_transport(spec, log=self._logger(str(spec)), mtu=65535)
             t.on_receive = self._receiver(t)
+            t.on_close = self._closer(t)
             await t.open()
             self.gcs_links.append(t)
+        store = ReceiveDir(self.cfg.inbox) if self.cfg.inbox is not None else None
+        self.gcs.services.ftp.serve, self.gcs.services.ftp.inbox = self.cfg.serve, store  # MAVLink FTP's tree
         if self.cfg.dtt is not None:
-            store = ReceiveDir(self.cfg.inbox) if self.cfg.inbox is not None else None
             transport: Transport = make_transport(self.cfg.dtt, log=lambda text: self.log(f"dtt: {text}"))
             self.endpoint = Endpoint(self.b, self.cfg.sysid, ONBOARD_COMPID, mtu=transport.mtu,
                                      rate_Bps=self.cfg.rate_Bps, receive_dir=store,
@@ -238,8 +241,8 @@ class OnboardNode:
                                      clock_ms=lambda now: int(self.vehicle_time * 1000))
             self.runner = Runner(self.endpoint, transport, probes=self._probes(transport))
             await self.runner.start()
-            if store is not None:
-                store.prepare()
+        if store is not None:
+            store.prepare()
         ctx = self.context()
         for p in self.plugins:
             try:
@@ -263,8 +266,24 @@ class OnboardNode:
     def _logger(self, where: str) -> Callable[[str], None]:
         return lambda text: self.log(f"{where}: {text}")
 
-    def _receiver(self, link: UdpTransport) -> Callable[[bytes, Hashable], None]:
-        return lambda data, source: self._from_gcs(link, data, source)
+    def _receiver(self, link: Transport) -> Callable[[bytes, Hashable], None]:
+        def receive(data: bytes, source: Hashable) -> None:
+            # each peer's parser checks signatures with --gcs-key (frames that fail are dropped, said once)
+            parser = self._gcs_parsers.get((link, source))
+            if parser is None:
+                parser = self._gcs_parsers[(link, source)] = self.b.parser(self.cfg.gcs_signing)
+            refused = parser.stats.bad_signature
+            self._from_gcs(link, data, source)
+            if refused == 0 and parser.stats.bad_signature:
+                who = addr_text(source) if isinstance(source, tuple) else getattr(source, "name", "a connection")
+                self.log(f"{link.spec}: ignoring {who}: unsigned frames or signatures that do not verify "
+                         "(the same --gcs-key at both ends?)")
+
+        return receive
+
+    def _closer(self, link: Transport) -> Callable[[Hashable], None]:
+        """A TCP connection ended: its parser (and any half frame in it) goes with it."""
+        return lambda source: self._gcs_parsers.pop((link, source), None)
 
     def _file_event(self, what: str, t: Any) -> None:
         if what == "link-refused":
@@ -274,7 +293,7 @@ class OnboardNode:
         elif what == "file-complete":
             self._say(6, f"received {t.name} ({t.size} bytes)")
 
-    def _from_gcs(self, link: UdpTransport, data: bytes, source: Hashable) -> None:
+    def _from_gcs(self, link: Transport, data: bytes, source: Hashable) -> None:
         parser = self._gcs_parsers.get((link, source))
         if parser is None:
             parser = self._gcs_parsers[(link, source)] = self.b.parser()
@@ -330,6 +349,7 @@ class OnboardNode:
             self.endpoint.close()
         if self.probes is not None:
             self.probes.close()
+        self.gcs.services.ftp.close()  # a write not finished is discarded
         if self.runner is not None:
             await self.runner.close()
         for t in self.gcs_links:

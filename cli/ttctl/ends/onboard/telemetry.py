@@ -29,7 +29,8 @@ def _sensors(b: Bindings) -> int:
 def capabilities(b: Bindings) -> int:
     C = b.MavProtocolCapability
     return int(C.MAV_PROTOCOL_CAPABILITY_MAVLINK2 | C.MAV_PROTOCOL_CAPABILITY_MISSION_INT
-               | C.MAV_PROTOCOL_CAPABILITY_COMMAND_INT | C.MAV_PROTOCOL_CAPABILITY_PARAM_ENCODE_BYTEWISE)
+               | C.MAV_PROTOCOL_CAPABILITY_COMMAND_INT | C.MAV_PROTOCOL_CAPABILITY_PARAM_ENCODE_BYTEWISE
+               | C.MAV_PROTOCOL_CAPABILITY_FTP)
 
 
 def _deg7(x: float) -> int:
@@ -126,7 +127,9 @@ class Rates:
     DEFAULTS: ClassVar[dict[str, float]] = {
         "HEARTBEAT": 1.0, "SYS_STATUS": 1.0, "GLOBAL_POSITION_INT": 0.25, "ATTITUDE": 0.25, "GPS_RAW_INT": 1.0,
         "HOME_POSITION": 2.0, "EXTENDED_SYS_STATE": 1.0, "BATTERY_STATUS": 1.0, "VFR_HUD": 0.5,
-        "LOCAL_POSITION_NED": 0.5, "MISSION_CURRENT": 1.0}
+        "LOCAL_POSITION_NED": 0.5, "MISSION_CURRENT": 1.0,
+        "ATTITUDE_QUATERNION": 0.25, "ODOMETRY": 0.5, "ALTITUDE": 1.0, "SYSTEM_TIME": 1.0, "HIGHRES_IMU": 0.5,
+        "SCALED_PRESSURE": 1.0, "WIND_COV": 1.0}  # SCALED_IMU, HIL_STATE_QUATERNION: when asked for
 
     def __init__(self, b: Bindings, builders: dict[int, Callable[[Snapshot], Any]],
                  defaults: dict[str, float] | None = None) -> None:
@@ -151,10 +154,11 @@ class Rates:
         return True
 
     def set_all(self, hz: float) -> None:
-        """REQUEST_DATA_STREAM(ALL): everything but the heartbeat at `hz` (0: stop)."""
+        """REQUEST_DATA_STREAM(ALL): every stream but the heartbeat at `hz` (0: stop); the
+        messages sent only when asked for (no default rate) stay off."""
         heartbeat_id = 0  # HEARTBEAT
         for mid in self.builders:
-            if mid != heartbeat_id:
+            if mid != heartbeat_id and self.default[mid] is not None:
                 self.interval[mid] = 1.0 / hz if hz > 0 else None
 
     def take_due(self, now: float) -> list[int]:
@@ -168,3 +172,116 @@ class Rates:
     def next_due(self) -> float | None:
         times = [self.due[m] for m, iv in self.interval.items() if iv is not None]
         return min(times) if times else None
+
+
+# -- the streams MAVSDK's telemetry getters read besides the ones above -------------------------
+def quaternion(s: Snapshot) -> list[float]:
+    """w, x, y, z of the body (FRD) attitude in the local NED frame, from roll, pitch and yaw."""
+    cy, sy = math.cos(s.yaw / 2), math.sin(s.yaw / 2)
+    cp, sp = math.cos(s.pitch / 2), math.sin(s.pitch / 2)
+    cr, sr = math.cos(s.roll / 2), math.sin(s.roll / 2)
+    return [cr * cp * cy + sr * sp * sy, sr * cp * cy - cr * sp * sy, cr * sp * cy + sr * cp * sy,
+            cr * cp * sy - sr * sp * cy]
+
+
+def attitude_quaternion(b: Bindings, s: Snapshot, boot_ms: int) -> Any:
+    w, x, y, z = quaternion(s)
+    return b.AttitudeQuaternion(time_boot_ms=boot_ms, q1=w, q2=x, q3=y, q4=z, rollspeed=0.0, pitchspeed=0.0,
+                                yawspeed=s.yaw_rate, repr_offset_q=[0.0, 0.0, 0.0, 0.0])
+
+
+def odometry(b: Bindings, s: Snapshot, boot_us: int) -> Any:
+    """As PX4 sends it: position in local NED (frame LOCAL_NED), velocity and angular rates in
+    the body frame (child frame BODY_FRD), attitude as a quaternion; covariances unknown (NaN in
+    the first element, as MAVLink defines)."""
+    F = b.MavFrame
+    unknown = [math.nan] + [0.0] * 20
+    vx, vy, vz = to_body(s, (s.vn, s.ve, s.vd))
+    p, q, r = body_rates(s)
+    return b.Odometry(time_usec=boot_us, frame_id=int(F.MAV_FRAME_LOCAL_NED), child_frame_id=int(F.MAV_FRAME_BODY_FRD),
+                      x=s.n, y=s.e, z=s.d, q=quaternion(s), vx=vx, vy=vy, vz=vz, rollspeed=p, pitchspeed=q,
+                      yawspeed=r, pose_covariance=unknown, velocity_covariance=unknown, reset_counter=0,
+                      estimator_type=int(b.MavEstimatorType.MAV_ESTIMATOR_TYPE_UNKNOWN), quality=100)
+
+
+# -- the inertial sensors, as an ideal multicopter's would read: thrust along the body's z axis
+# balancing gravity, the earth's field turned into the body frame, the standard atmosphere --------
+G = 9.80665
+EARTH_FIELD = (0.22, 0.01, 0.42)  # gauss, north/east/down: about central Europe's (WMM)
+TEMPERATURE = 20.0  # degrees C
+
+
+def to_body(s: Snapshot, v: tuple[float, float, float]) -> tuple[float, float, float]:
+    """A vector in local NED turned into the body frame (FRD) by yaw, then pitch, then roll."""
+    cy, sy = math.cos(s.yaw), math.sin(s.yaw)
+    cp, sp = math.cos(s.pitch), math.sin(s.pitch)
+    cr, sr = math.cos(s.roll), math.sin(s.roll)
+    x1, y1, z1 = cy * v[0] + sy * v[1], -sy * v[0] + cy * v[1], v[2]
+    x2, z2 = cp * x1 - sp * z1, sp * x1 + cp * z1
+    return x2, cr * y1 + sr * z2, -sr * y1 + cr * z2
+
+
+def body_rates(s: Snapshot) -> tuple[float, float, float]:
+    """Roll, pitch and yaw rates about the body axes of a vehicle turning about the vertical."""
+    return (-math.sin(s.pitch) * s.yaw_rate, math.sin(s.roll) * math.cos(s.pitch) * s.yaw_rate,
+            math.cos(s.roll) * math.cos(s.pitch) * s.yaw_rate)
+
+
+def specific_force(s: Snapshot) -> tuple[float, float, float]:
+    tilt = max(0.2, math.cos(s.roll) * math.cos(s.pitch))
+    return 0.0, 0.0, -G / tilt
+
+
+def pressure_hpa(alt_msl: float) -> float:
+    return 1013.25 * (1.0 - 2.25577e-5 * alt_msl) ** 5.25588
+
+
+def highres_imu(b: Bindings, s: Snapshot, boot_us: int) -> Any:
+    ax, ay, az = specific_force(s)
+    gx, gy, gz = body_rates(s)
+    mx, my, mz = to_body(s, EARTH_FIELD)
+    return b.HighresImu(time_usec=boot_us, xacc=ax, yacc=ay, zacc=az, xgyro=gx, ygyro=gy, zgyro=gz, xmag=mx,
+                        ymag=my, zmag=mz, abs_pressure=pressure_hpa(s.alt_msl), diff_pressure=0.0,
+                        pressure_alt=s.alt_msl, temperature=TEMPERATURE, fields_updated=0x1FFF, id=0)
+
+
+def scaled_imu(b: Bindings, s: Snapshot, boot_ms: int) -> Any:
+    a = [round(x / G * 1000) for x in specific_force(s)]  # mG
+    g = [round(x * 1000) for x in body_rates(s)]  # mrad/s
+    m = [round(x * 1000) for x in to_body(s, EARTH_FIELD)]  # mgauss
+    return b.ScaledImu(time_boot_ms=boot_ms, xacc=a[0], yacc=a[1], zacc=a[2], xgyro=g[0], ygyro=g[1], zgyro=g[2],
+                       xmag=m[0], ymag=m[1], zmag=m[2], temperature=round(TEMPERATURE * 100))
+
+
+def scaled_pressure(b: Bindings, s: Snapshot, boot_ms: int) -> Any:
+    return b.ScaledPressure(time_boot_ms=boot_ms, press_abs=pressure_hpa(s.alt_msl), press_diff=0.0,
+                            temperature=round(TEMPERATURE * 100), temperature_press_diff=0)
+
+
+def hil_state_quaternion(b: Bindings, s: Snapshot, boot_us: int) -> Any:
+    """The simulation's true state (MAVSDK's ground_truth), sent only when asked for."""
+    p, q, r = body_rates(s)
+    a = [round(x / G * 1000) for x in specific_force(s)]
+    return b.HilStateQuaternion(time_usec=boot_us, attitude_quaternion=quaternion(s), rollspeed=p, pitchspeed=q,
+                                yawspeed=r, lat=_deg7(s.lat), lon=_deg7(s.lon), alt=round(s.alt_msl * 1000),
+                                vx=round(s.vn * 100), vy=round(s.ve * 100), vz=round(s.vd * 100),
+                                ind_airspeed=round(s.ground_speed * 100), true_airspeed=round(s.ground_speed * 100),
+                                xacc=a[0], yacc=a[1], zacc=a[2])
+
+
+def wind_cov(b: Bindings, s: Snapshot, boot_us: int) -> Any:
+    """The simulation has no wind: zero, and known to be zero."""
+    return b.WindCov(time_usec=boot_us, wind_x=0.0, wind_y=0.0, wind_z=0.0, var_horiz=0.0, var_vert=0.0,
+                     wind_alt=s.alt_msl, horiz_accuracy=0.0, vert_accuracy=0.0)
+
+
+def altitude(b: Bindings, s: Snapshot, boot_us: int) -> Any:
+    """ALTITUDE: monotonic, AMSL, local (up from the local origin, which is home), relative to
+    home; no terrain source (NaN) and the ground assumed flat at home's height."""
+    return b.Altitude(time_usec=boot_us, altitude_monotonic=s.alt_msl, altitude_amsl=s.alt_msl,
+                      altitude_local=-s.d, altitude_relative=s.alt_rel, altitude_terrain=math.nan,
+                      bottom_clearance=max(0.0, s.alt_rel))
+
+
+def system_time(b: Bindings, unix_us: int, boot_ms: int) -> Any:
+    return b.SystemTime(time_unix_usec=unix_us, time_boot_ms=boot_ms)
