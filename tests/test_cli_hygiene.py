@@ -92,11 +92,11 @@ def test_ctrl_c_at_any_moment_is_one_quiet_line(tmp_path: Path, args: list[str])
         assert "Traceback" not in err and "KeyboardInterrupt" not in err, (delay, err)
         assert p.returncode in (0, 1, 130), (delay, p.returncode, err)
         if p.returncode == 130:
-            assert err.strip().splitlines()[-1] == "ttctl: interrupted", err
+            assert err.strip().splitlines()[-1] == "ttctl: interrupted", (delay, err)
         if args[0] == "gen" and p.returncode != 0:
-            assert not (tmp_path / "out").exists()
+            assert not (tmp_path / "out").exists(), (delay, p.returncode, err)
         if args[0] == "recv-file" and p.returncode == 0:
-            assert "stopped" in err
+            assert "stopped" in err, (delay, err)
 
 
 def _command_paths(group: object, prefix: tuple[str, ...] = ()) -> list[tuple[str, ...]]:
