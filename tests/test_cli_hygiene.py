@@ -83,8 +83,9 @@ def test_ctrl_c_at_any_moment_is_one_quiet_line(tmp_path: Path, args: list[str])
     options are parsed or while the command works is `ttctl: interrupted`, or the command's own
     clean stop; and an interrupted gen leaves no half-made tree."""
     base = max(0.03, 3 * _startup())
-    argv = [a.replace("{tmp}", str(tmp_path)) for a in args]
-    for delay in (base, base * 1.5, base * 2, base * 3, base * 5, base * 8, 0.6, 1.0):
+    for n, delay in enumerate((base, base * 1.5, base * 2, base * 3, base * 5, base * 8, 0.6, 1.0)):
+        run_dir = tmp_path / f"run{n}"  # each run its own: a finished gen's tree is not another's leftover
+        argv = [a.replace("{tmp}", str(run_dir)) for a in args]
         p = subprocess.Popen(ttctl_cmd() + argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         time.sleep(delay)
         p.send_signal(signal.SIGINT)
@@ -94,7 +95,7 @@ def test_ctrl_c_at_any_moment_is_one_quiet_line(tmp_path: Path, args: list[str])
         if p.returncode == 130:
             assert err.strip().splitlines()[-1] == "ttctl: interrupted", (delay, err)
         if args[0] == "gen" and p.returncode != 0:
-            assert not (tmp_path / "out").exists(), (delay, p.returncode, err)
+            assert not run_dir.exists(), (delay, p.returncode, err)
         if args[0] == "recv-file" and p.returncode == 0:
             assert "stopped" in err, (delay, err)
 
