@@ -60,7 +60,7 @@ def test_mavsdk_flies_the_emulated_vehicle(tmp_path: Path, start: Start) -> None
             pos = await _until(tel.position, lambda p: abs(p.latitude_deg - home.latitude_deg) < 1e-6, 10)
             assert pos.relative_altitude_m < 0.1
             assert not await tel.armed() and not await tel.in_air()
-            assert await tel.flight_mode() == FlightMode.READY
+            assert await tel.flight_mode() == FlightMode.HOLD
             await _until(tel.health, lambda h: h.is_armable and h.is_global_position_ok, 10)
             with pytest.raises(ActionError, match="COMMAND_DENIED"):
                 await act.takeoff()  # not armed
