@@ -19,14 +19,20 @@ POS_YAW_MASK = 0b1001_1111_1000  # position and yaw (MAVSDK's set_position_ned)
 
 
 class Sim:
-    def __init__(self, dt: float = 0.05) -> None:
+    def __init__(self, dt: float = 0.05, tablet: bool = False) -> None:
         self.b = b = shipped()
         self.enc = b.encoder(255, 190)
         self.parser = b.parser()
         self.said: list[str] = []
-        self.v = SimVehicle()
-        self.ap = Autopilot(b, self.v, 1, say=lambda severity, text: self.said.append(text))
-        self.g = GroundStations(b, self.ap, 1)
+        if tablet:  # the whole node's core, so that the tablet's actions are the node's own
+            from ttctl.ends.onboard.node import OnboardConfig, OnboardNode
+
+            self.node: Any = OnboardNode(b, OnboardConfig(orbit_hz=0), log=self.said.append)
+            self.v, self.ap, self.g = self.node.vehicle, self.node.ap, self.node.gcs
+        else:
+            self.v = SimVehicle()
+            self.ap = Autopilot(b, self.v, 1, say=lambda severity, text: self.said.append(text))
+            self.g = GroundStations(b, self.ap, 1)
         self.t = 0.0
         self.dt = dt
         self.sent: list[Any] = []
@@ -59,6 +65,13 @@ class Sim:
         self.g.out.clear()
         assert len(acks) == 1
         return int(acks[0].result)
+
+    def tablet(self, action: int, *params: float) -> int:
+        """A TT_ACTION_COMMAND from the tablet (Sim(tablet=True)): its TT_RESULT."""
+        p = [*params] + [0.0] * (4 - len(params))
+        outcome = self.node.tablet_action(self.b.TtActionCommand(target_system=1, target_component=240,
+                                                                 command_id=1, action=action, param=p))
+        return int(outcome if isinstance(outcome, int) else outcome[0])
 
     def set_mode(self, main: int, sub: int = 0) -> int:
         return self.command(int(self.b.MavCmd.MAV_CMD_DO_SET_MODE), 1, main, sub)

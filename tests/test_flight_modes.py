@@ -270,3 +270,14 @@ def test_hostile_set_points_are_ignored_with_a_reason_and_never_fly() -> None:
     assert s.set_mode(POSCTL) == ACCEPTED
     s.run(1)
     assert all(math.isfinite(x) for x in s.v.pos)
+
+
+def test_attitude_set_points_are_refused_aloud_and_offboard_stays_refused() -> None:
+    s = Sim()
+    s.takeoff(3)
+    s.stream(s.b.SetAttitudeTarget(time_boot_ms=0, target_system=1, target_component=1, type_mask=0,
+                                   q=[1, 0, 0, 0], body_roll_rate=0, body_pitch_rate=0, body_yaw_rate=0,
+                                   thrust=0.5))
+    s.run(0.5)
+    assert s.said[-1] == "set-point ignored: attitude is not flown"
+    assert s.set_mode(OFFBOARD) == TEMPORARILY_REJECTED and s.v.state is State.HOVERING

@@ -117,11 +117,16 @@ class FlightModes:
         try:
             sp = self._parse(msg)
         except Refused as e:
-            if now - self._complained >= COMPLAIN:
-                self._complained = now
-                self.say(WARNING, f"set-point ignored: {e}")
+            self.complain(now, str(e))
             return
         self.setpoint, self.setpoint_at = sp, now
+
+    def complain(self, now: float, reason: str) -> None:
+        """A set-point that is not flown: said, at most every COMPLAIN seconds (a stream of them
+        is no flood of STATUSTEXT)."""
+        if now - self._complained >= COMPLAIN:
+            self._complained = now
+            self.say(WARNING, f"set-point ignored: {reason}")
 
     def _parse(self, msg: Any) -> Setpoint:
         b = self.ap.b

@@ -117,6 +117,8 @@ class GroundStations:
                 self.ap.flight.manual_control(now, msg)
         elif isinstance(msg, (b.SetPositionTargetLocalNed, b.SetPositionTargetGlobalInt)):
             self.ap.flight.set_position_target(now, msg)
+        elif isinstance(msg, b.SetAttitudeTarget):
+            self.ap.flight.complain(now, "attitude is not flown")  # OFFBOARD stays refused
         elif isinstance(msg, b.RequestDataStream):
             self.rates.set_all(msg.req_message_rate if msg.start_stop else 0)
         elif self.ap.missions is not None and type(msg).__name__.startswith("Mission"):
