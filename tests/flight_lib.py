@@ -113,5 +113,5 @@ class Sim:
     def takeoff(self, alt: float = 3.0) -> None:
         C = self.b.MavCmd
         assert self.command(int(C.MAV_CMD_COMPONENT_ARM_DISARM), 1) == 0
-        assert self.command(int(C.MAV_CMD_NAV_TAKEOFF), 0, 0, 0, NAN, NAN, NAN, alt) == 0
+        assert self.command(int(C.MAV_CMD_NAV_TAKEOFF), 0, 0, 0, NAN, NAN, NAN, self.v.home.alt + alt) == 0
         self.run(alt / self.v.limits.v_speed + 3)

@@ -63,7 +63,7 @@ def test_mavsdk_flies_the_emulated_vehicle(tmp_path: Path, start: Start) -> None
             assert await tel.flight_mode() == FlightMode.HOLD
             await _until(tel.health, lambda h: h.is_armable and h.is_global_position_ok, 10)
             with pytest.raises(ActionError, match="COMMAND_DENIED"):
-                await act.takeoff()  # not armed
+                await act.land()  # on the ground
             assert await par.get_param_float("MPC_XY_VEL_MAX") == pytest.approx(1.5)
             await par.set_param_float("MPC_XY_VEL_MAX", 2.0)
             assert await par.get_param_float("MPC_XY_VEL_MAX") == pytest.approx(2.0)

@@ -94,13 +94,16 @@ def test_commands_are_answered_as_mavlink_defines(gcs: tuple[Any, Any]) -> None:
 
     m = mavutil.mavlink
     conn, _ = gcs
-    assert command(conn, m.MAV_CMD_NAV_TAKEOFF, 0, 0, 0, math.nan, math.nan, math.nan, 5) == m.MAV_RESULT_DENIED
+    # PX4: param7 is above mean sea level (home is at 295 m); disarmed, take-off is selected, not flown
+    assert command(conn, m.MAV_CMD_NAV_TAKEOFF, 0, 0, 0, math.nan, math.nan, math.nan, 300) == m.MAV_RESULT_ACCEPTED
+    hb = wait_for(conn, "HEARTBEAT", lambda h: h.get_srcComponent() == 1 and h.custom_mode == (4 << 16 | 2 << 24))
+    assert not hb.base_mode & 128
     assert command(conn, 31999) == m.MAV_RESULT_UNSUPPORTED
     assert command(conn, m.MAV_CMD_NAV_LAND) == m.MAV_RESULT_DENIED  # on the ground
-    assert command(conn, m.MAV_CMD_COMPONENT_ARM_DISARM, 1) == m.MAV_RESULT_ACCEPTED
+    assert conn.recv_match(type="GLOBAL_POSITION_INT", blocking=True, timeout=3).relative_alt < 100
+    assert command(conn, m.MAV_CMD_COMPONENT_ARM_DISARM, 1) == m.MAV_RESULT_ACCEPTED  # ... and the climb starts
     hb = wait_for(conn, "HEARTBEAT", lambda h: h.get_srcComponent() == 1 and h.base_mode & 128)
     assert hb.system_status == m.MAV_STATE_ACTIVE
-    assert command(conn, m.MAV_CMD_NAV_TAKEOFF, 0, 0, 0, math.nan, math.nan, math.nan, 5) == m.MAV_RESULT_ACCEPTED
     assert command(conn, m.MAV_CMD_NAV_TAKEOFF) == m.MAV_RESULT_DENIED  # already flying
     wait_for(conn, "EXTENDED_SYS_STATE", lambda e: e.landed_state == m.MAV_LANDED_STATE_IN_AIR)
     pos = wait_for(conn, "GLOBAL_POSITION_INT", lambda p: p.relative_alt > 4800)
@@ -224,8 +227,11 @@ def test_mavproxy_connects_fetches_parameters_arms_and_takes_off(tmp_path: Path,
     assert "taking off" in node.stderr and "hovering" in node.stderr
     import re
 
+    # `takeoff 5` sends NAV_TAKEOFF with 5 m in param7, which PX4 reads above mean sea level: the
+    # vehicle climbs to MIS_TAKEOFF_ALT instead and says so, as PX4 does
+    assert "Using minimum takeoff altitude: 2.00 m" in out
     alt = [int(x) for x in re.findall(r"relative_alt : (\d+)", out)]
-    assert alt and alt[-1] > 4800, out[-2000:]
+    assert alt and 1800 < alt[-1] < 2200, out[-2000:]
     assert "fence breach" not in out
 
 

@@ -281,3 +281,35 @@ def test_attitude_set_points_are_refused_aloud_and_offboard_stays_refused() -> N
     s.run(0.5)
     assert s.said[-1] == "set-point ignored: attitude is not flown"
     assert s.set_mode(OFFBOARD) == TEMPORARILY_REJECTED and s.v.state is State.HOVERING
+
+
+def test_take_off_as_px4_and_qgroundcontrol_do_it() -> None:
+    """NAV_TAKEOFF's param7 is above mean sea level; disarmed, it selects TAKEOFF and the arming
+    that follows (QGroundControl's guided take-off) climbs; too low is raised to MIS_TAKEOFF_ALT."""
+    s = Sim()
+    C = s.b.MavCmd
+    home = s.v.home.alt
+    assert s.command(int(C.MAV_CMD_NAV_TAKEOFF), -1, 0, 0, NAN, NAN, NAN, home + 6) == ACCEPTED
+    assert s.v.state is State.LANDED and not s.v.armed and s.mode() == (AUTO, TAKEOFF)
+    assert s.command(int(C.MAV_CMD_COMPONENT_ARM_DISARM), 1) == ACCEPTED
+    assert s.v.state is State.TAKING_OFF
+    s.run(10)
+    assert s.v.state is State.HOVERING and -s.v.pos[2] == pytest.approx(6.0, abs=0.2)
+    assert s.command(int(C.MAV_CMD_NAV_TAKEOFF), -1, 0, 0, NAN, NAN, NAN, home + 9) == DENIED  # flying
+    assert s.command(int(C.MAV_CMD_NAV_LAND)) == ACCEPTED
+    s.run(15)
+    s.said.clear()
+    assert s.command(int(C.MAV_CMD_COMPONENT_ARM_DISARM), 1) == ACCEPTED
+    assert s.command(int(C.MAV_CMD_NAV_TAKEOFF), 0, 0, 0, NAN, NAN, NAN, 5.0) == ACCEPTED  # 5 m above the sea
+    assert "Using minimum takeoff altitude: 2.00 m" in s.said
+    s.run(6)
+    assert -s.v.pos[2] == pytest.approx(2.0, abs=0.2)
+    assert s.command(int(C.MAV_CMD_NAV_LAND)) == ACCEPTED
+    s.run(10)
+    assert s.command(int(C.MAV_CMD_NAV_TAKEOFF), 0, 0, 0, NAN, NAN, NAN, home + 500) == DENIED
+    assert s.v.state is State.LANDED and s.mode() == (AUTO, LOITER)
+    # DO_REPOSITION's yaw is in radians, as PX4 reads it
+    s.takeoff(3)
+    assert s.command(int(C.MAV_CMD_DO_REPOSITION), -1, 1, 0, math.pi / 2, NAN, NAN, NAN) == ACCEPTED
+    s.run(4)
+    assert math.degrees(s.v.yaw) == pytest.approx(90, abs=2) and s.mode() == (AUTO, LOITER)

@@ -25,7 +25,7 @@ MODES = [(MANUAL, 0), (ALTCTL, 0), (POSCTL, 0), (AUTO, LOITER), (AUTO, TAKEOFF),
 
 step = st.one_of(
     st.tuples(st.just("arm"), st.booleans()),
-    st.tuples(st.just("takeoff"), st.sampled_from([NAN, 2.0, 5.0, 150.0, -3.0, math.inf])),
+    st.tuples(st.just("takeoff"), st.sampled_from([NAN, 1.0, 5.0, 150.0, -3.0, math.inf])),  # m above home
     st.tuples(st.just("land"), st.none()),
     st.tuples(st.just("rtl"), st.none()),
     st.tuples(st.just("mode"), st.sampled_from(MODES)),
@@ -65,10 +65,11 @@ def test_every_accepted_command_is_followed_by_what_it_promises(steps: list[tupl
     for what, arg in steps:
         s.said.clear()
         result: int | None = None
+        selected = (s.ap.flight.ground, s.ap.flight.takeoff_alt, s.v.state, s.v.armed)
         if what == "arm":
             result = s.command(int(C.MAV_CMD_COMPONENT_ARM_DISARM), 1.0 if arg else 0.0)
         elif what == "takeoff":
-            result = s.command(int(C.MAV_CMD_NAV_TAKEOFF), 0, 0, 0, NAN, NAN, NAN, arg)
+            result = s.command(int(C.MAV_CMD_NAV_TAKEOFF), 0, 0, 0, NAN, NAN, NAN, s.v.home.alt + arg)
         elif what == "land":
             result = s.command(int(C.MAV_CMD_NAV_LAND))
         elif what == "rtl":
@@ -101,8 +102,17 @@ def test_every_accepted_command_is_followed_by_what_it_promises(steps: list[tupl
                     assert s.v.armed is bool(arg)
                 if what == "reposition":
                     assert s.v.state is State.MOVING
+                minimum = s.ap.params["MIS_TAKEOFF_ALT"]
                 if what == "takeoff" or (what == "tablet" and arg == "takeoff"):
-                    alt = 4.0 if what == "tablet" else (arg if math.isfinite(arg) and arg > 0 else 2.0)
+                    alt = 4.0 if what == "tablet" else (max(arg, minimum) if math.isfinite(arg) else minimum)
+                    if s.v.armed:
+                        pending = [("hover", s.t + alt / s.v.limits.v_speed + 5, alt)]
+                    else:  # PX4: TAKEOFF selected, flown when armed
+                        assert s.v.state is State.LANDED and s.ap.flight.takeoff_alt == pytest.approx(alt)
+                        pending = []
+                elif what == "arm" and arg and selected[0] == (AUTO, TAKEOFF) and selected[2:] == (State.LANDED, False):
+                    alt = selected[1] if selected[1] is not None else minimum
+                    assert s.v.state is State.TAKING_OFF
                     pending = [("hover", s.t + alt / s.v.limits.v_speed + 5, alt)]
                 elif what in ("land", "rtl") or (what == "tablet" and arg in ("land", "return")):
                     pending = [("landed", s.t + 60, 0.0)]

@@ -65,6 +65,7 @@ class FlightModes:
         self.ground: tuple[int, int] = (AUTO, LOITER)  # the mode selected on the ground (Hold)
         self.manual_main = POSCTL  # which stick mode MANUAL state flies
         self.moving: tuple[int, int] = (OFFBOARD, 0)  # MOVING: the tablet's set-points; DO_REPOSITION: Hold
+        self.takeoff_alt: float | None = None  # m above home, for a TAKEOFF selected on the ground
         self.sticks: tuple[float, float, float, float] | None = None  # x, y, z, r
         self.sticks_at: float | None = None
         self.setpoint: Setpoint | None = None
@@ -224,7 +225,7 @@ class FlightModes:
             if v.armed:
                 v.takeoff()
             else:
-                self.ground = (AUTO, TAKEOFF)  # it takes off when armed, as PX4 does
+                self.ground, self.takeoff_alt = (AUTO, TAKEOFF), None  # it takes off when armed, as PX4 does
         elif sub == MISSION:
             if self.ap.missions is None or not self.ap.missions.mission():
                 raise Refused("MISSION: no mission uploaded", temporary=True)
@@ -241,11 +242,34 @@ class FlightModes:
                 raise Refused("LAND: already landed", temporary=True)
             v.land()
 
+    def takeoff(self, amsl: float | None) -> None:
+        """MAV_CMD_NAV_TAKEOFF as PX4 takes it: param7 an altitude above mean sea level, raised to
+        home + MIS_TAKEOFF_ALT if lower ("Using minimum takeoff altitude"), that altitude when
+        none; armed it climbs, disarmed it selects TAKEOFF and climbs when armed (QGroundControl
+        sends the take-off first, then arms)."""
+        v = self.ap.vehicle
+        s = v.snapshot()
+        minimum = self._param("MIS_TAKEOFF_ALT")
+        alt = minimum if amsl is None else amsl - s.home.alt
+        if alt < minimum:
+            self.say(WARNING, f"Using minimum takeoff altitude: {minimum:.2f} m")
+            alt = minimum
+        limits = getattr(v, "limits", None)
+        if limits is not None and alt > limits.max_alt:
+            raise Refused(f"takeoff altitude {alt:.0f} m above {limits.max_alt:g} m")
+        if v.state is not State.LANDED:
+            raise Refused(f"cannot take off while {v.state.value}")
+        if v.armed:
+            v.takeoff(alt)
+        else:
+            self.ground, self.takeoff_alt = (AUTO, TAKEOFF), alt
+
     def armed(self) -> None:
         """After an accepted arming: TAKEOFF and MISSION selected on the ground start now."""
         try:
             if self.ground == (AUTO, TAKEOFF):
-                self.ap.vehicle.takeoff()
+                alt, self.takeoff_alt = self.takeoff_alt, None
+                self.ap.vehicle.takeoff(alt)
             elif self.ground == (AUTO, MISSION):
                 self.ap.start_mission()
         except Refused as e:

@@ -140,8 +140,13 @@ class GroundStations:
                     v.disarm()
                 return A.MAV_RESULT_ACCEPTED, []
             if cmd == C.MAV_CMD_NAV_TAKEOFF:
-                alt = _arg(msg.param7 if isinstance(msg, self.b.CommandLong) else msg.z, 0.0)
-                v.takeoff(alt if alt > 0 else None)
+                z = msg.param7 if isinstance(msg, self.b.CommandLong) else msg.z
+                amsl = float(z) if z is not None and math.isfinite(z) else None
+                if amsl is not None and isinstance(msg, self.b.CommandInt) and msg.frame in (
+                        int(self.b.MavFrame.MAV_FRAME_GLOBAL_RELATIVE_ALT),
+                        int(self.b.MavFrame.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT)):
+                    amsl += self.ap.snapshot().home.alt
+                self.ap.flight.takeoff(amsl)
                 return A.MAV_RESULT_ACCEPTED, []
             if cmd == C.MAV_CMD_NAV_LAND:
                 v.land()
@@ -199,8 +204,8 @@ class GroundStations:
             raise Refused("position out of range")
         n = math.radians(lat - s.home.lat) * 6_378_137.0
         e = math.radians(lon - s.home.lon) * 6_378_137.0 * math.cos(math.radians(s.home.lat))
-        yaw = msg.param4
-        self.ap.vehicle.goto(n, e, alt, math.radians(yaw) if math.isfinite(yaw) else None)
+        yaw = msg.param4  # radians, as PX4 reads it (QGroundControl and MAVSDK send radians)
+        self.ap.vehicle.goto(n, e, alt, float(yaw) if math.isfinite(yaw) else None)
         self.ap.flight.moving = (modes.AUTO, modes.LOITER)  # PX4 flies a reposition in Hold
         return A.MAV_RESULT_ACCEPTED
 
