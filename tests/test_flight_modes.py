@@ -313,3 +313,11 @@ def test_take_off_as_px4_and_qgroundcontrol_do_it() -> None:
     assert s.command(int(C.MAV_CMD_DO_REPOSITION), -1, 1, 0, math.pi / 2, NAN, NAN, NAN) == ACCEPTED
     s.run(4)
     assert math.degrees(s.v.yaw) == pytest.approx(90, abs=2) and s.mode() == (AUTO, LOITER)
+
+
+def test_an_unsupported_command_says_so_once() -> None:
+    s = Sim()
+    for _ in range(5):
+        assert s.command(34) == 3  # DO_ORBIT: UNSUPPORTED
+        assert s.command(31999) == 3
+    assert s.said == ["DO_ORBIT is not supported here", "command 31999 is not supported here"]

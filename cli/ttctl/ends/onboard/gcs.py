@@ -40,6 +40,7 @@ class GroundStations:
         self.log = log or (lambda text: None)
         self.out: list[tuple[Any, Hashable]] = []
         self._peer_links: dict[tuple[int, int], Hashable] = {}
+        self._told_unsupported: set[int] = set()
         ap.missions = Missions(b, sysid, compid, self._to_peer, self.log)
         self.builders: dict[int, Callable[[Snapshot], Any]] = {
             b.Heartbeat.MSG_ID: lambda s: telemetry.heartbeat(b, s, self.ap.flight.custom_mode(s)),
@@ -176,7 +177,20 @@ class GroundStations:
             self.log(f"command {cmd} refused: {e}")
             self.say(WARNING, f"refused: {e}")
             return (A.MAV_RESULT_TEMPORARILY_REJECTED if e.temporary else A.MAV_RESULT_DENIED), []
+        self._unsupported(cmd)
         return A.MAV_RESULT_UNSUPPORTED, []
+
+    def _unsupported(self, cmd: int) -> None:
+        """An UNSUPPORTED says so in words too, once per command (a ground station asking again and
+        again gets the ack each time, not a flood of STATUSTEXT)."""
+        if cmd in self._told_unsupported or len(self._told_unsupported) > 256:
+            return
+        self._told_unsupported.add(cmd)
+        try:
+            name = self.b.MavCmd(cmd).name.removeprefix("MAV_CMD_")
+        except ValueError:
+            name = f"command {cmd}"
+        self.say(INFO, f"{name} is not supported here")
 
     def _requested(self, msgid: int) -> Any | None:
         if msgid == self.b.AutopilotVersion.MSG_ID:
