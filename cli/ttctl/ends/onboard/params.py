@@ -60,12 +60,14 @@ def default_params() -> list[Param]:
               "seconds without MANUAL_CONTROL in MANUAL/ALTCTL/POSCTL before NAV_RCL_ACT"),
         Param("NAV_RCL_ACT", 2, INT32, 1, 3, "manual control loss: 1 hold, 2 return, 3 land"),
         Param("MAV_SYS_ID", 1, INT32, 1, 254, "this vehicle's MAVLink system id (read only here)"),
+        Param("SYS_AUTOSTART", 4001, INT32, 4001, 4001,
+              "PX4 airframe: 4001, the generic quadcopter (QGroundControl's PX4 plugin reads it; read only)"),
     ]
 
 
 class Parameters:
     def __init__(self, bindings: Bindings, params: list[Param], on_change: Callable[[Param], None] | None = None,
-                 read_only: tuple[str, ...] = ("MAV_SYS_ID",)) -> None:
+                 read_only: tuple[str, ...] = ("MAV_SYS_ID", "SYS_AUTOSTART")) -> None:
         self.b = bindings
         self.params = params
         self.index = {p.name: i for i, p in enumerate(params)}
