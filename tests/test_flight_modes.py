@@ -34,6 +34,8 @@ def test_on_the_ground_modes_are_selected_or_refused_with_the_reason() -> None:
     assert s.command(int(C), 0, POSCTL, 0) == DENIED  # no CUSTOM_MODE_ENABLED
     assert s.command(int(C), NAN, NAN, NAN) == DENIED
     assert s.command(int(C), math.inf, -math.inf, math.inf) == DENIED
+    for bad in (NAN, math.inf, -math.inf, 2.0, -1.0):
+        assert s.command(int(s.b.MavCmd.MAV_CMD_COMPONENT_ARM_DISARM), bad) == DENIED
     assert s.v.state is State.LANDED and not s.v.armed
     # TAKEOFF selected on the ground takes off when armed, as PX4 does
     assert s.set_mode(AUTO, TAKEOFF) == ACCEPTED and s.mode() == (AUTO, TAKEOFF)

@@ -132,7 +132,9 @@ class GroundStations:
         v = self.ap.vehicle
         try:
             if cmd == C.MAV_CMD_COMPONENT_ARM_DISARM:
-                if _arg(p[0], 0) >= 0.5:
+                if p[0] is None or not math.isfinite(p[0]) or round(p[0]) not in (0, 1):
+                    raise Refused("arming: param1 must be 1 (arm) or 0 (disarm)")  # as PX4
+                if round(p[0]) == 1:
                     was = v.armed
                     v.arm()
                     if not was:
