@@ -10,6 +10,7 @@ import re
 import shutil
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 from typing import Any
@@ -163,22 +164,53 @@ def test_mavproxy_names_the_modes_sets_them_and_integer_parameters(tmp_path: Pat
 def test_ground_station_time_is_the_wall_clock_at_any_speed(tmp_path: Path, start: Start) -> None:
     from pymavlink import mavutil
 
+    m = mavutil.mavlink
     port = free_port()
     conn = mavutil.mavlink_connection(f"udpin:{LOCAL}:{port}", source_system=255, source_component=190,
                                       dialect="common")
-    onboard(start, port, speed="8")
+    node = onboard(start, port, speed="8")
     try:
         assert conn.recv_match(type="HEARTBEAT", blocking=True, timeout=10) is not None
         seen: dict[str, list[tuple[float, Any]]] = {"HEARTBEAT": [], "ATTITUDE": []}
         end = time.monotonic() + 4.0
         while time.monotonic() < end:
-            m = conn.recv_match(type=list(seen), blocking=True, timeout=0.5)
-            if m is not None and m.get_srcComponent() == 1:
-                seen[m.get_type()].append((time.monotonic(), m))
+            msg = conn.recv_match(type=list(seen), blocking=True, timeout=0.5)
+            if msg is not None and msg.get_srcComponent() == 1:
+                seen[msg.get_type()].append((time.monotonic(), msg))
+        assert 3 <= len(seen["HEARTBEAT"]) <= 5  # 1 Hz
+        assert 13 <= len(seen["ATTITUDE"]) <= 19  # 4 Hz
+        (t0, a0), (t1, a1) = seen["ATTITUDE"][0], seen["ATTITUDE"][-1]
+        assert (a1.time_boot_ms - a0.time_boot_ms) / 1000 == pytest.approx(t1 - t0, abs=0.3)
+        assert not math.isnan(a1.yaw)
+        # sticks at 10 Hz of the wall clock are a live stream (COM_RC_LOSS_T 0.5 s), at any --speed
+        conn.mav.command_long_send(1, 1, m.MAV_CMD_NAV_TAKEOFF, 0, 0, 0, 0, math.nan, math.nan, math.nan, 300)
+        conn.mav.command_long_send(1, 1, m.MAV_CMD_COMPONENT_ARM_DISARM, 0, 1, 0, 0, 0, 0, 0, 0)
+        conn.recv_match(type="GLOBAL_POSITION_INT", condition="GLOBAL_POSITION_INT.relative_alt>4800",
+                        blocking=True, timeout=10)
+        stop = threading.Event()
+
+        def sticks() -> None:
+            while not stop.is_set():
+                conn.mav.manual_control_send(1, 0, 0, 500, 0, 0)
+                time.sleep(0.1)
+
+        feeder = threading.Thread(target=sticks)
+        feeder.start()
+        try:
+            time.sleep(0.5)
+            conn.mav.command_long_send(1, 1, m.MAV_CMD_DO_SET_MODE, 0, 1, 3, 0, 0, 0, 0, 0)
+            time.sleep(2.5)
+            while conn.recv_match(blocking=False) is not None:
+                pass
+            hb = conn.recv_match(type="HEARTBEAT", condition="HEARTBEAT.get_srcComponent()==1", blocking=True,
+                                 timeout=3)
+            assert mavutil.interpret_px4_mode(hb.base_mode, hb.custom_mode) == "POSCTL"
+            assert "manual control" in node.stderr and "manual control lost" not in node.stderr
+        finally:
+            stop.set()
+            feeder.join()
+        lost = time.monotonic()
+        node.wait_for("manual control lost: return")
+        assert time.monotonic() - lost < 2.0  # and their end is noticed: NAV_RCL_ACT returns
     finally:
         conn.close()
-    assert 3 <= len(seen["HEARTBEAT"]) <= 5  # 1 Hz
-    assert 13 <= len(seen["ATTITUDE"]) <= 19  # 4 Hz
-    (t0, a0), (t1, a1) = seen["ATTITUDE"][0], seen["ATTITUDE"][-1]
-    assert (a1.time_boot_ms - a0.time_boot_ms) / 1000 == pytest.approx(t1 - t0, abs=0.3)
-    assert not math.isnan(a1.yaw)
