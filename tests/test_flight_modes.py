@@ -26,12 +26,18 @@ def test_on_the_ground_modes_are_selected_or_refused_with_the_reason() -> None:
         assert s.set_mode(main, sub) == TEMPORARILY_REJECTED, (main, sub)
         assert any(words in t for t in s.said), s.said
         assert s.mode() == (AUTO, LOITER) and s.v.state is State.LANDED
-    for main, sub in ((5, 0), (7, 0), (AUTO, 1), (AUTO, 7), (0, 0), (200, 3)):  # ACRO, STABILIZED, READY, RTGS...
+    # ACRO, STABILIZED, READY, RTGS, no such sub mode, no such main mode
+    for main, sub in ((5, 0), (7, 0), (AUTO, 1), (AUTO, 7), (AUTO, 99), (0, 0), (200, 3)):
         s.said.clear()
         assert s.set_mode(main, sub) == DENIED
         assert any("not a mode flown here" in t for t in s.said)
     C = s.b.MavCmd.MAV_CMD_DO_SET_MODE
-    assert s.command(int(C), 0, POSCTL, 0) == DENIED  # no CUSTOM_MODE_ENABLED
+    assert s.command(int(C), 0, POSCTL, 0) == DENIED  # a base mode naming no mode
+    s.said.clear()  # PX4 reads the base mode's flags: AUTO is MISSION, MANUAL_INPUT|GUIDED is POSCTL
+    assert s.command(int(C), 4, 0, 0) == TEMPORARILY_REJECTED and "MISSION: no mission uploaded" in s.said[-1]
+    assert s.set_mode(AUTO, 0) == TEMPORARILY_REJECTED and "MISSION: no mission uploaded" in s.said[-1]
+    assert s.command(int(C), 64 | 8, 0, 0) == TEMPORARILY_REJECTED and "POSCTL: no MANUAL_CONTROL" in s.said[-1]
+    assert s.command(int(C), 64 | 16, 0, 0) == DENIED and "STABILIZED: not a mode" in s.said[-1]
     assert s.command(int(C), NAN, NAN, NAN) == DENIED
     assert s.command(int(C), math.inf, -math.inf, math.inf) == DENIED
     for bad in (NAN, math.inf, -math.inf, 2.0, -1.0):

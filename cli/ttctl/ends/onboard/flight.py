@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from . import modes
-from .modes import ALTCTL, AUTO, LAND, LOITER, MANUAL, MISSION, OFFBOARD, POSCTL, RTL, TAKEOFF
+from .modes import ALTCTL, AUTO, LAND, LOITER, MANUAL, MISSION, OFFBOARD, POSCTL, RTL, STABILIZED, TAKEOFF
 from .vehicle import EARTH_RADIUS, MIN_ALT, Refused, Snapshot, State
 
 if TYPE_CHECKING:
@@ -188,11 +188,19 @@ class FlightModes:
         """Enter PX4 mode (main, sub) or raise Refused saying why not (temporary: it may work later)."""
         self.now = now
         v = self.ap.vehicle
-        custom = int(self.ap.b.MavModeFlag.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED)
-        if not base & custom:
-            raise Refused("base mode without CUSTOM_MODE_ENABLED")
+        F = self.ap.b.MavModeFlag
+        if not base & int(F.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED):  # PX4 reads the base mode's flags
+            if base & int(F.MAV_MODE_FLAG_AUTO_ENABLED):
+                main, sub = AUTO, MISSION
+            elif base & int(F.MAV_MODE_FLAG_MANUAL_INPUT_ENABLED):
+                main = POSCTL if base & int(F.MAV_MODE_FLAG_GUIDED_ENABLED) else (
+                    STABILIZED if base & int(F.MAV_MODE_FLAG_STABILIZE_ENABLED) else MANUAL)
+            else:
+                raise Refused(f"base mode {base} names no mode")
         if main != AUTO:
             sub = 0
+        elif sub == 0:
+            sub = MISSION  # PX4: AUTO without a sub mode is MISSION
         name = modes.NAMES.get((main, sub))
         if name is None:
             raise Refused(f"{modes.name((main << 16) | (sub << 24))}: not a mode flown here")
