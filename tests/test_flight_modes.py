@@ -329,3 +329,19 @@ def test_an_unsupported_command_says_so_once() -> None:
         assert s.command(34) == 3  # DO_ORBIT: UNSUPPORTED
         assert s.command(31999) == 3
     assert s.said == ["DO_ORBIT is not supported here", "command 31999 is not supported here"]
+
+
+def test_reposition_by_command_int_with_unset_position_changes_only_the_altitude() -> None:
+    s = Sim()
+    s.takeoff(3)
+    s.v.goto(5, 5, 3)
+    s.run(8)
+    C, F = s.b.MavCmd, s.b.MavFrame
+    s.g.out.clear()
+    s.send(s.b.CommandInt(target_system=1, target_component=1, frame=int(F.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT),
+                          command=int(C.MAV_CMD_DO_REPOSITION), current=0, autocontinue=0, param1=-1, param2=1,
+                          param3=0, param4=NAN, x=2**31 - 1, y=2**31 - 1, z=7.0))
+    (ack,) = [m for m, _ in s.g.out if m.NAME == "COMMAND_ACK"]
+    assert ack.result == ACCEPTED and s.mode() == (AUTO, LOITER)
+    s.run(8)
+    assert s.v.pos == pytest.approx([5, 5, -7], abs=0.2)

@@ -204,7 +204,7 @@ class GroundStations:
         b, A = self.b, self.b.MavResult
         s = self.ap.snapshot()
         if isinstance(msg, b.CommandInt):
-            unset = (0x7FFFFFFF, 0)  # INT32_MAX (and 0, as MAVSDK sends): "where it is now"
+            unset = (0x7FFFFFFF, 0)  # INT32_MAX (MAVLink) or 0 (older ground stations): "where it is now"
             lat = s.lat if msg.x in unset else msg.x / 1e7
             lon = s.lon if msg.y in unset else msg.y / 1e7
             z = msg.z
