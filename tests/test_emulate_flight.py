@@ -214,3 +214,68 @@ def test_ground_station_time_is_the_wall_clock_at_any_speed(tmp_path: Path, star
         assert time.monotonic() - lost < 2.0  # and their end is noticed: NAV_RCL_ACT returns
     finally:
         conn.close()
+
+
+def test_qgroundcontrol_px4_guided_actions(tmp_path: Path, start: Start) -> None:
+    """What QGroundControl's PX4 plugin sends for its guided actions (PX4FirmwarePlugin.cc), from
+    pymavlink: take-off (NAV_TAKEOFF to an AMSL altitude while disarmed, then arm), go to
+    (DO_REPOSITION as COMMAND_INT, AMSL), pause (DO_REPOSITION, all NaN), change heading
+    (DO_REPOSITION's yaw in radians), return (DO_SET_MODE AUTO.RTL), and a mode from its list
+    this vehicle does not fly."""
+    from pymavlink import mavutil
+
+    m = mavutil.mavlink
+    nan = math.nan
+    port = free_port()
+    conn = mavutil.mavlink_connection(f"udpin:{LOCAL}:{port}", source_system=255, source_component=190,
+                                      dialect="common")
+    node = onboard(start, port, speed="4")
+
+    said: list[str] = []
+
+    def command(cmd: int, *p: float) -> int:
+        conn.mav.command_long_send(1, 1, cmd, 0, *(list(p) + [0.0] * (7 - len(p))))
+        end = time.monotonic() + 3
+        while time.monotonic() < end:
+            msg = conn.recv_match(type=["COMMAND_ACK", "STATUSTEXT"], blocking=True, timeout=0.5)
+            if msg is not None and msg.get_type() == "STATUSTEXT":
+                said.append(msg.text)
+            elif msg is not None and msg.command == cmd:
+                return int(msg.result)
+        raise AssertionError(f"no COMMAND_ACK for {cmd}")
+
+    def mode() -> str:
+        hb = conn.recv_match(type="HEARTBEAT", condition="HEARTBEAT.get_srcComponent()==1", blocking=True, timeout=3)
+        return str(mavutil.interpret_px4_mode(hb.base_mode, hb.custom_mode))
+
+    def until(kind: str, condition: str, timeout: float = 15) -> Any:
+        msg = conn.recv_match(type=kind, condition=condition, blocking=True, timeout=timeout)
+        assert msg is not None, (kind, condition, node.stderr[-500:])
+        return msg
+
+    try:
+        home = until("HOME_POSITION", "True")
+        home_amsl = home.altitude / 1000
+        assert command(m.MAV_CMD_NAV_TAKEOFF, -1, 0, 0, nan, nan, nan, home_amsl + 5) == m.MAV_RESULT_ACCEPTED
+        assert mode() == "TAKEOFF"
+        assert command(m.MAV_CMD_COMPONENT_ARM_DISARM, 1) == m.MAV_RESULT_ACCEPTED
+        until("GLOBAL_POSITION_INT", "GLOBAL_POSITION_INT.relative_alt>4850")
+        lat = home.latitude + round(math.degrees(10 / EARTH_RADIUS) * 1e7)
+        conn.mav.command_int_send(1, 1, m.MAV_FRAME_GLOBAL, m.MAV_CMD_DO_REPOSITION, 0, 0, -1,
+                                  m.MAV_DO_REPOSITION_FLAGS_CHANGE_MODE, 0, nan, lat, home.longitude, home_amsl + 5)
+        assert until("COMMAND_ACK", f"COMMAND_ACK.command=={m.MAV_CMD_DO_REPOSITION}").result == m.MAV_RESULT_ACCEPTED
+        assert mode() == "LOITER"
+        until("LOCAL_POSITION_NED", "LOCAL_POSITION_NED.x>9.8")
+        assert command(m.MAV_CMD_DO_REPOSITION, -1, 1, 0, nan, nan, nan, nan) == m.MAV_RESULT_ACCEPTED  # pause
+        assert command(m.MAV_CMD_DO_REPOSITION, -1, 1, 0, math.pi / 2, nan, nan, nan) == m.MAV_RESULT_ACCEPTED
+        until("VFR_HUD", "abs(VFR_HUD.heading-90)<=2")
+        assert command(m.MAV_CMD_DO_SET_MODE, 1, 7, 0) == m.MAV_RESULT_DENIED  # STABILIZED, from QGC's list
+        assert "refused: STABILIZED: not a mode flown here" in said
+        assert command(m.MAV_CMD_DO_SET_MODE, 1, 4, 5) == m.MAV_RESULT_ACCEPTED
+        assert mode() == "RTL"
+        until("HEARTBEAT", "HEARTBEAT.get_srcComponent()==1 and not HEARTBEAT.base_mode & 128", timeout=30)
+        pos = until("LOCAL_POSITION_NED", "True")
+        assert math.hypot(pos.x, pos.y) < 0.3 and abs(pos.z) < 0.1
+    finally:
+        conn.close()
+    assert "Traceback" not in node.stderr
