@@ -345,3 +345,17 @@ def test_reposition_by_command_int_with_unset_position_changes_only_the_altitude
     assert ack.result == ACCEPTED and s.mode() == (AUTO, LOITER)
     s.run(8)
     assert s.v.pos == pytest.approx([5, 5, -7], abs=0.2)
+
+
+def test_heartbeat_base_mode_follows_the_mode_as_px4_sets_it() -> None:
+    from ttctl.ends.onboard.telemetry import heartbeat
+
+    s = Sim()
+    hb = heartbeat(s.b, s.v.snapshot(), s.ap.flight.custom_mode(s.v.snapshot()))
+    assert hb.base_mode == 1 | 4 | 8 | 16  # Hold: CUSTOM, AUTO, GUIDED, STABILIZE; not armed
+    s.takeoff(3)
+    s.stream(s.sticks())
+    s.run(0.2)
+    assert s.set_mode(ALTCTL) == ACCEPTED
+    hb = heartbeat(s.b, s.v.snapshot(), s.ap.flight.custom_mode(s.v.snapshot()))
+    assert hb.base_mode == 1 | 64 | 16 | 128  # MANUAL_INPUT, STABILIZE, armed

@@ -7,6 +7,8 @@ reports it (its own encoding: READY is "landed").
 
 from __future__ import annotations
 
+from typing import Any
+
 from .vehicle import State
 
 # PX4 main modes
@@ -48,3 +50,19 @@ def name(custom: int) -> str:
     if main != AUTO:
         sub = 0
     return NAMES.get((main, sub)) or _OTHERS.get((main, sub), f"{main}/{sub}")
+
+
+def base_flags(b: Any, custom: int) -> int:
+    """HEARTBEAT.base_mode for a PX4 custom mode, as PX4's get_mavlink_navigation_mode sets it
+    for a multicopter (SAFETY_ARMED is the caller's)."""
+    F = b.MavModeFlag
+    main, _ = decode(custom)
+    flags = int(F.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED)
+    if main in (MANUAL, ALTCTL, POSCTL, STABILIZED):
+        flags |= int(F.MAV_MODE_FLAG_MANUAL_INPUT_ENABLED | F.MAV_MODE_FLAG_STABILIZE_ENABLED)
+        if main == POSCTL:
+            flags |= int(F.MAV_MODE_FLAG_GUIDED_ENABLED)
+    elif main in (AUTO, OFFBOARD):
+        flags |= int(F.MAV_MODE_FLAG_AUTO_ENABLED | F.MAV_MODE_FLAG_STABILIZE_ENABLED
+                     | F.MAV_MODE_FLAG_GUIDED_ENABLED)
+    return flags

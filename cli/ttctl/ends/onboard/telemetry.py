@@ -40,15 +40,14 @@ def heartbeat(b: Bindings, s: Snapshot, custom: int | None = None) -> Any:
     """`custom`: the PX4 custom mode ground stations see (flight.FlightModes); None: the state as
     the tablet's link encodes it."""
     flags = b.MavModeFlag
-    base = int(flags.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED | flags.MAV_MODE_FLAG_STABILIZE_ENABLED
-               | flags.MAV_MODE_FLAG_GUIDED_ENABLED)
+    custom_mode = modes.custom_mode(s.state) if custom is None else custom
+    base = modes.base_flags(b, custom_mode)
     if s.armed:
         base |= int(flags.MAV_MODE_FLAG_SAFETY_ARMED)
     status = b.MavState.MAV_STATE_ACTIVE if s.armed else b.MavState.MAV_STATE_STANDBY
     return b.Heartbeat(type=int(b.MavType.MAV_TYPE_QUADROTOR),
                            autopilot=int(b.MavAutopilot.MAV_AUTOPILOT_PX4), base_mode=base,
-                           custom_mode=modes.custom_mode(s.state) if custom is None else custom,
-                           system_status=int(status), mavlink_version=3)
+                           custom_mode=custom_mode, system_status=int(status), mavlink_version=3)
 
 
 def sys_status(b: Bindings, s: Snapshot) -> Any:
