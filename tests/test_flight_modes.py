@@ -165,6 +165,10 @@ def test_offboard_from_the_ground_climbs_when_armed_and_lands_when_told() -> Non
     s.stream(s.velocity(0, 0, 1))
     s.run(8)
     assert s.v.state is State.LANDED and not s.v.armed  # PX4's land detector and auto-disarm
+    assert s.mode() == (OFFBOARD, 0)  # still offboard while the set-points come
+    s.stop()
+    s.run(1.5)
+    assert s.mode() == (AUTO, LOITER)
 
 
 def test_manual_modes_follow_the_sticks_as_px4_flies_them() -> None:

@@ -334,7 +334,9 @@ class FlightModes:
                 was = self._last_state
                 if was is State.MANUAL:
                     self.ground = (self.manual_main, 0)
-                elif was is not State.OFFBOARD or not self.setpoints_alive(now):
+                elif was is State.OFFBOARD and self.setpoints_alive(now):
+                    self.ground = (OFFBOARD, 0)
+                else:
                     self.ground = (AUTO, LOITER)
             if self._last_state is State.MOVING:
                 self.moving = (OFFBOARD, 0)
