@@ -118,6 +118,15 @@ def test_offboard_velocity_moves_the_commanded_distance_with_yaw_and_feedback() 
     assert s.v.pos == pytest.approx([20, 0, -12], abs=0.3)
     glob = [m for m in s.sent if m.NAME == "POSITION_TARGET_GLOBAL_INT"]
     assert glob and glob[-1].lat_int == round(lat * 1e7) and glob[-1].alt == pytest.approx(12.0)
+    s.stop()
+    for frame, alt in ((5, home.alt + 8.0), (11, 9.0)):  # AMSL, and above the (flat) ground: MAVSDK's AGL
+        s.stream(s.b.SetPositionTargetGlobalInt(
+            time_boot_ms=0, target_system=1, target_component=1, coordinate_frame=frame,
+            type_mask=0b1101_1111_1000, lat_int=round(lat * 1e7), lon_int=round(home.lon * 1e7), alt=alt,
+            vx=0, vy=0, vz=0, afx=0, afy=0, afz=0, yaw=0, yaw_rate=0))
+        s.run(8)
+        s.stop()
+        assert -s.v.pos[2] == pytest.approx(alt - (home.alt if frame == 5 else 0), abs=0.2), frame
 
 
 @pytest.mark.parametrize(("action", "state"), [(5, State.HOVERING), (4, State.LANDING), (3, State.RETURNING),

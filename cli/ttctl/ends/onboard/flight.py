@@ -41,6 +41,7 @@ _POS, _VEL, _ACC, _YAW, _YAW_RATE = 0b111, 0b111000, 0b111000000, 1024, 2048
 # MAV_FRAME values (common.xml)
 _LOCAL_NED, _LOCAL_OFFSET_NED, _BODY_NED, _BODY_OFFSET_NED, _BODY_FRD = 1, 7, 8, 9, 12
 _GLOBAL, _GLOBAL_REL, _GLOBAL_INT, _GLOBAL_REL_INT = 0, 3, 5, 6
+_TERRAIN, _TERRAIN_INT = 10, 11  # above the ground: the simulated world is flat at home's altitude
 
 _BY_STATE = {
     State.TAKING_OFF: (AUTO, TAKEOFF), State.HOVERING: (AUTO, LOITER), State.TRAJECTORY: (AUTO, MISSION),
@@ -145,7 +146,7 @@ class FlightModes:
         pos: tuple[float, float, float] | None = None
         values = [yaw, yaw_rate, *(vel or ())]
         if isinstance(msg, b.SetPositionTargetGlobalInt):
-            if frame not in (_GLOBAL, _GLOBAL_REL, _GLOBAL_INT, _GLOBAL_REL_INT):
+            if frame not in (_GLOBAL, _GLOBAL_REL, _GLOBAL_INT, _GLOBAL_REL_INT, _TERRAIN, _TERRAIN_INT):
                 raise Refused(f"frame {frame} is not flown")
             if use_pos:
                 if not (abs(msg.lat_int) <= 900_000_000 and abs(msg.lon_int) <= 1_800_000_000):
@@ -409,7 +410,7 @@ class FlightModes:
         if sp.global_frame is not None:
             lat = s.home.lat + math.degrees(pos[0] / EARTH_RADIUS)
             lon = s.home.lon + math.degrees(pos[1] / (EARTH_RADIUS * math.cos(math.radians(s.home.lat))))
-            relative = sp.global_frame in (_GLOBAL_REL, _GLOBAL_REL_INT)
+            relative = sp.global_frame not in (_GLOBAL, _GLOBAL_INT)
             alt = -pos[2] + (0.0 if relative else s.home.alt)
             out.append(b.PositionTargetGlobalInt(
                 time_boot_ms=boot_ms, coordinate_frame=_GLOBAL_REL_INT if relative else _GLOBAL_INT, type_mask=mask,
