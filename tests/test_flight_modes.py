@@ -224,6 +224,11 @@ def test_manual_modes_follow_the_sticks_as_px4_flies_them() -> None:
     s.stream(s.sticks(z=0))
     s.run(12)
     assert s.v.state is State.LANDED and not s.v.armed and s.mode() == (MANUAL, 0)
+    assert s.command(int(s.b.MavCmd.MAV_CMD_COMPONENT_ARM_DISARM), 1) == ACCEPTED
+    s.stop()
+    s.stream(s.sticks(z=900))  # MANUAL from the ground: the throttle lifts it off
+    s.run(2)
+    assert s.v.state is State.MANUAL and -s.v.pos[2] > 0.5
 
 
 @pytest.mark.parametrize(("action", "state"), [(1, State.HOVERING), (2, State.RETURNING), (3, State.LANDING)])

@@ -258,6 +258,8 @@ class FlightModes:
         sends the take-off first, then arms)."""
         v = self.ap.vehicle
         s = v.snapshot()
+        if v.state is not State.LANDED:
+            raise Refused(f"cannot take off while {v.state.value}")
         minimum = self._param("MIS_TAKEOFF_ALT")
         alt = minimum if amsl is None else amsl - s.home.alt
         if alt < minimum:
@@ -266,8 +268,6 @@ class FlightModes:
         limits = getattr(v, "limits", None)
         if limits is not None and alt > limits.max_alt:
             raise Refused(f"takeoff altitude {alt:.0f} m above {limits.max_alt:g} m")
-        if v.state is not State.LANDED:
-            raise Refused(f"cannot take off while {v.state.value}")
         if v.armed:
             v.takeoff(alt)
         else:
@@ -307,8 +307,10 @@ class FlightModes:
             vn, ve = (s.vn + an * dt) * drag, (s.ve + ae * dt) * drag
         # MANUAL has no altitude hold: the throttle accelerates; the others command the climb rate
         vd = s.vd - climb * lim.accel * dt if self.manual_main == MANUAL else -climb * lim.v_speed
-        if s.state is State.LANDED and vd >= -0.1:
-            return
+        if s.state is State.LANDED:  # on the ground the throttle lifts it off, or it stays
+            vd = -climb * lim.v_speed
+            if vd >= -0.1:
+                return
         v.steer(state, vel=(vn, ve, vd), yaw_rate=r * lim.yaw_rate)
 
     def _steer_offboard(self) -> None:
