@@ -72,7 +72,9 @@ class OnboardNode:
         self.dispatcher = Dispatcher(on_error=self._plugin_error, dialect=bindings)
         from .orbit_camera import OrbitCameraPlugin
 
-        builtin: list[Plugin] = [OrbitCameraPlugin(cfg.orbit_hz)] if cfg.orbit_hz > 0 else []
+        # --orbit-hz of the wall clock, and CAMERA_FOV_STATUS in the ground stations' time, at any --speed
+        orbit = OrbitCameraPlugin(cfg.orbit_hz / (cfg.speed or 1.0), boot_ms=lambda: int(self._wall() * 1000))
+        builtin: list[Plugin] = [orbit] if cfg.orbit_hz > 0 else []
         self.plugins = builtin + (plugins or [])
         for p in self.plugins:
             self.dispatcher.add(p)
