@@ -60,10 +60,10 @@ def test_mavsdk_flies_the_emulated_vehicle(tmp_path: Path, start: Start) -> None
             pos = await _until(tel.position, lambda p: abs(p.latitude_deg - home.latitude_deg) < 1e-6, 10)
             assert pos.relative_altitude_m < 0.1
             assert not await tel.armed() and not await tel.in_air()
-            assert await tel.flight_mode() == FlightMode.READY
+            assert await tel.flight_mode() == FlightMode.HOLD
             await _until(tel.health, lambda h: h.is_armable and h.is_global_position_ok, 10)
             with pytest.raises(ActionError, match="COMMAND_DENIED"):
-                await act.takeoff()  # not armed
+                await act.land()  # on the ground
             assert await par.get_param_float("MPC_XY_VEL_MAX") == pytest.approx(1.5)
             await par.set_param_float("MPC_XY_VEL_MAX", 2.0)
             assert await par.get_param_float("MPC_XY_VEL_MAX") == pytest.approx(2.0)

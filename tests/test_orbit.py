@@ -172,3 +172,27 @@ def test_the_plugin_publishes_to_the_tablet_ground_stations_and_plugins() -> Non
                               "orientation": bad.get("orientation", list(yaw_pitch_quat(1.0, 0.0)))})
         plugin.on_pose(m, ctx)
     assert plugin.orbit.head == pytest.approx((0.0, 0.0))
+
+
+def test_camera_fov_status_carries_the_ground_stations_time() -> None:
+    """The onboard end hands the plugin its ground stations' clock (the wall clock, whatever
+    --speed is), so CAMERA_FOV_STATUS agrees with the rest of their telemetry."""
+    import ttapi
+    from ttctl.ends.onboard.orbit_camera import OrbitCameraPlugin
+    from ttctl.ends.onboard.vehicle import SimVehicle
+    from ttctl.ends.plugins import Context
+
+    v = SimVehicle()
+    v.step(100.0)  # the vehicle's clock is far ahead
+    gcs: list[object] = []
+    ctx = Context(send=lambda m, urgent=False: None, send_gcs=gcs.append, vehicle=v,
+                  every=lambda s, fn: None, dialect=shipped())
+    plugin = OrbitCameraPlugin(rate=10.0, boot_ms=lambda: 2500)
+    plugin.start(ctx)
+    pose = ttapi.TtVrPose(time_usec=1, device=int(ttapi.TtVrDevice.TT_VR_DEVICE_HMD), role=0, index=0,
+                          flags=int(ttapi.TtVrPoseFlags.TT_VR_POSE_FLAGS_VALID), position=[0, 0, 1.7],
+                          orientation=list(yaw_pitch_quat(0.0, 0.0)), velocity=[0, 0, 0], angular_velocity=[0, 0, 0])
+    plugin.on_pose(pose, ctx)
+    plugin.publish()
+    (fov,) = gcs
+    assert fov.time_boot_ms == 2500  # type: ignore[attr-defined]

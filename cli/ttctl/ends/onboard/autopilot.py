@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from ...wire.bindings import Bindings
+from .flight import FlightModes
 from .missions import Missions
 from .params import Param, Parameters, default_params
 from .vehicle import Refused, SimVehicle, Snapshot, State, Vehicle
@@ -29,6 +30,7 @@ class Autopilot:
         self.params = Parameters(bindings, params or default_params(), on_change=self._param_changed)
         self.params.params[self.params.index["MAV_SYS_ID"]].value = float(sysid)
         self.missions: Missions | None = None  # set by the ground-station side, which speaks the protocol
+        self.flight = FlightModes(self)  # PX4's modes: what HEARTBEAT says, DO_SET_MODE, sticks, offboard
         self._mission_after_takeoff = False
         self.tablet_heard: float | None = None  # the link-loss watch starts once the tablet was heard
         self.link_lost_at: float | None = None

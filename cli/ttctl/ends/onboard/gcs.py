@@ -19,7 +19,7 @@ from ...wire.bindings import Bindings
 from . import modes, services, telemetry
 from .autopilot import INFO, WARNING, Autopilot
 from .missions import Missions
-from .vehicle import Refused, Snapshot, State
+from .vehicle import Refused, Snapshot
 
 TARGETED = ("target_system",)
 
@@ -40,9 +40,10 @@ class GroundStations:
         self.log = log or (lambda text: None)
         self.out: list[tuple[Any, Hashable]] = []
         self._peer_links: dict[tuple[int, int], Hashable] = {}
+        self._told_unsupported: set[int] = set()
         ap.missions = Missions(b, sysid, compid, self._to_peer, self.log)
         self.builders: dict[int, Callable[[Snapshot], Any]] = {
-            b.Heartbeat.MSG_ID: lambda s: telemetry.heartbeat(b, s),
+            b.Heartbeat.MSG_ID: lambda s: telemetry.heartbeat(b, s, self.ap.flight.custom_mode(s)),
             b.SysStatus.MSG_ID: lambda s: telemetry.sys_status(b, s),
             b.GlobalPositionInt.MSG_ID: lambda s: telemetry.global_position_int(b, s, self._boot_ms(s)),
             b.LocalPositionNed.MSG_ID: lambda s: telemetry.local_position_ned(b, s, self._boot_ms(s)),
@@ -121,6 +122,13 @@ class GroundStations:
                 self.say(WARNING, complaint)
             for m in answers:
                 self.out.append((m, None))  # every ground station learns the new value
+        elif isinstance(msg, b.ManualControl):
+            if msg.target in (0, self.sysid):
+                self.ap.flight.manual_control(now, msg)
+        elif isinstance(msg, (b.SetPositionTargetLocalNed, b.SetPositionTargetGlobalInt)):
+            self.ap.flight.set_position_target(now, msg)
+        elif isinstance(msg, b.SetAttitudeTarget):
+            self.ap.flight.complain(now, "attitude is not flown")  # OFFBOARD stays refused
         elif isinstance(msg, b.RequestDataStream):
             self.rates.set_all(msg.req_message_rate if msg.start_stop else 0)
         elif self.ap.missions is not None and type(msg).__name__.startswith("Mission"):
@@ -136,14 +144,24 @@ class GroundStations:
             return served
         try:
             if cmd == C.MAV_CMD_COMPONENT_ARM_DISARM:
-                if _arg(p[0], 0) >= 0.5:
+                if p[0] is None or not math.isfinite(p[0]) or round(p[0]) not in (0, 1):
+                    raise Refused("arming: param1 must be 1 (arm) or 0 (disarm)")  # as PX4
+                if round(p[0]) == 1:
+                    was = v.armed
                     v.arm()
+                    if not was:
+                        self.ap.flight.armed()
                 else:
                     v.disarm()
                 return A.MAV_RESULT_ACCEPTED, []
             if cmd == C.MAV_CMD_NAV_TAKEOFF:
-                alt = _arg(msg.param7 if isinstance(msg, self.b.CommandLong) else msg.z, 0.0)
-                v.takeoff(alt if alt > 0 else None)
+                z = msg.param7 if isinstance(msg, self.b.CommandLong) else msg.z
+                amsl = float(z) if z is not None and math.isfinite(z) else None
+                if amsl is not None and isinstance(msg, self.b.CommandInt) and msg.frame in (
+                        int(self.b.MavFrame.MAV_FRAME_GLOBAL_RELATIVE_ALT),
+                        int(self.b.MavFrame.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT)):
+                    amsl += self.ap.snapshot().home.alt
+                self.ap.flight.takeoff(amsl)
                 return A.MAV_RESULT_ACCEPTED, []
             if cmd == C.MAV_CMD_NAV_LAND:
                 v.land()
@@ -152,7 +170,8 @@ class GroundStations:
                 v.return_home()
                 return A.MAV_RESULT_ACCEPTED, []
             if cmd == C.MAV_CMD_DO_SET_MODE:
-                return self._set_mode(p), []
+                self.ap.flight.set_mode(now, int(_arg(p[0], 0)), int(_arg(p[1], 0)), int(_arg(p[2], 0)))
+                return A.MAV_RESULT_ACCEPTED, []
             if cmd == C.MAV_CMD_DO_REPOSITION:
                 return self._reposition(msg), []
             if cmd == C.MAV_CMD_MISSION_START:
@@ -172,7 +191,20 @@ class GroundStations:
             self.log(f"command {cmd} refused: {e}")
             self.say(WARNING, f"refused: {e}")
             return (A.MAV_RESULT_TEMPORARILY_REJECTED if e.temporary else A.MAV_RESULT_DENIED), []
+        self._unsupported(cmd)
         return A.MAV_RESULT_UNSUPPORTED, []
+
+    def _unsupported(self, cmd: int) -> None:
+        """An UNSUPPORTED says so in words too, once per command (a ground station asking again and
+        again gets the ack each time, not a flood of STATUSTEXT)."""
+        if cmd in self._told_unsupported or len(self._told_unsupported) > 256:
+            return
+        self._told_unsupported.add(cmd)
+        try:
+            name = self.b.MavCmd(cmd).name.removeprefix("MAV_CMD_")
+        except ValueError:
+            name = f"command {cmd}"
+        self.say(INFO, f"{name} is not supported here")
 
     def _requested(self, msgid: int) -> Any | None:
         if msgid == self.b.AutopilotVersion.MSG_ID:
@@ -180,36 +212,14 @@ class GroundStations:
         build = self.builders.get(msgid)
         return build(self.ap.snapshot()) if build is not None else None
 
-    def _set_mode(self, p: list[float]) -> int:
-        A = self.b.MavResult
-        base = int(_arg(p[0], 0))
-        if not base & int(self.b.MavModeFlag.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED):
-            return A.MAV_RESULT_UNSUPPORTED
-        main, sub = int(_arg(p[1], 0)), int(_arg(p[2], 0))
-        v = self.ap.vehicle
-        if (main, sub) == (modes.AUTO, modes.RTL):
-            v.return_home()
-        elif (main, sub) == (modes.AUTO, modes.LAND):
-            v.land()
-        elif (main, sub) == (modes.AUTO, modes.LOITER):
-            if v.state is not State.LANDED:
-                v.hover()
-        elif (main, sub) == (modes.AUTO, modes.MISSION):
-            self.ap.start_mission()
-        elif (main, sub) == (modes.AUTO, modes.TAKEOFF):
-            v.takeoff()
-        elif main in (modes.POSCTL, modes.OFFBOARD, modes.ALTCTL):
-            if v.state is not State.LANDED:
-                v.hover()
-        else:
-            return A.MAV_RESULT_UNSUPPORTED
-        return A.MAV_RESULT_ACCEPTED
-
     def _reposition(self, msg: Any) -> int:
         b, A = self.b, self.b.MavResult
         s = self.ap.snapshot()
         if isinstance(msg, b.CommandInt):
-            lat, lon, z = msg.x / 1e7, msg.y / 1e7, msg.z
+            unset = (0x7FFFFFFF, 0)  # INT32_MAX (MAVLink) or 0 (older ground stations): "where it is now"
+            lat = s.lat if msg.x in unset else msg.x / 1e7
+            lon = s.lon if msg.y in unset else msg.y / 1e7
+            z = msg.z
             relative = msg.frame in (int(b.MavFrame.MAV_FRAME_GLOBAL_RELATIVE_ALT),
                                      int(b.MavFrame.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT))
         else:
@@ -222,8 +232,9 @@ class GroundStations:
             raise Refused("position out of range")
         n = math.radians(lat - s.home.lat) * 6_378_137.0
         e = math.radians(lon - s.home.lon) * 6_378_137.0 * math.cos(math.radians(s.home.lat))
-        yaw = msg.param4
-        self.ap.vehicle.goto(n, e, alt, math.radians(yaw) if math.isfinite(yaw) else None)
+        yaw = msg.param4  # radians, as PX4 reads it (QGroundControl and MAVSDK send radians)
+        self.ap.vehicle.goto(n, e, alt, float(yaw) if math.isfinite(yaw) else None)
+        self.ap.flight.moving = (modes.AUTO, modes.LOITER)  # PX4 flies a reposition in Hold
         return A.MAV_RESULT_ACCEPTED
 
     # -- time -------------------------------------------------------------------------------------
@@ -233,6 +244,7 @@ class GroundStations:
                         if isinstance(peer, tuple))  # an FTP burst's next packets
         if self.ap.missions is not None:
             self.ap.missions.tick(now)
+        self.out.extend((m, None) for m in self.ap.flight.tick(now))
         due = self.rates.take_due(now)
         if due:
             s = self.ap.snapshot()
@@ -246,8 +258,8 @@ class GroundStations:
             return burst
         if self.out:
             return self.now
-        times = [t for t in (self.rates.next_due(), self.ap.missions.deadline() if self.ap.missions else None)
-                 if t is not None]
+        times = [t for t in (self.rates.next_due(), self.ap.missions.deadline() if self.ap.missions else None,
+                             self.ap.flight.wakeup()) if t is not None]
         return min(times) if times else None
 
 

@@ -3,7 +3,8 @@ the shared Runner: file transfer, commands, telemetry) and any number of ground-
 (plain MAVLink 2 over UDP or TCP, the vehicle as component 1), all on one event loop.
 
 Time: `speed` > 1 runs the vehicle's clock faster than the wall clock (tests, rehearsals); the
-links keep real time.
+links keep real time: ground stations get their rates, time_boot_ms and stream timeouts (sticks,
+offboard set-points) on the wall clock since start.
 """
 
 from __future__ import annotations
@@ -72,7 +73,9 @@ class OnboardNode:
         self.dispatcher = Dispatcher(on_error=self._plugin_error, dialect=bindings)
         from .orbit_camera import OrbitCameraPlugin
 
-        builtin: list[Plugin] = [OrbitCameraPlugin(cfg.orbit_hz)] if cfg.orbit_hz > 0 else []
+        # --orbit-hz of the wall clock, and CAMERA_FOV_STATUS in the ground stations' time, at any --speed
+        orbit = OrbitCameraPlugin(cfg.orbit_hz / (cfg.speed or 1.0), boot_ms=lambda: int(self._wall() * 1000))
+        builtin: list[Plugin] = [orbit] if cfg.orbit_hz > 0 else []
         self.plugins = builtin + (plugins or [])
         for p in self.plugins:
             self.dispatcher.add(p)
@@ -92,6 +95,10 @@ class OnboardNode:
     # -- wiring ---------------------------------------------------------------------------------
     def _unix(self, now: float) -> float:
         return time.time()
+
+    def _wall(self) -> float:
+        """Seconds of the wall clock since start: the ground stations' time, whatever --speed is."""
+        return asyncio.get_running_loop().time() - self.started
 
     def _say(self, severity: int, text: str, urgent: bool = False, tablet: bool = True) -> None:
         """Tell ground stations (STATUSTEXT) and the tablet (TT_LOG; `urgent`: ahead of
@@ -297,7 +304,7 @@ class OnboardNode:
         parser = self._gcs_parsers.get((link, source))
         if parser is None:
             parser = self._gcs_parsers[(link, source)] = self.b.parser()
-        now = self.vehicle_time
+        now = self._wall()
         for msg in parser.feed(data):
             link.confirm(source, {(msg.get_srcSystem(), msg.get_srcComponent())})  # a udpin link learns its peers
             self.gcs.on_message(now, msg, link)
@@ -320,7 +327,8 @@ class OnboardNode:
             self.vehicle_time += dt
             self.ap.step(self.vehicle_time, dt)
             self._run_timers()
-            self._send_gcs(self.gcs.tick(self.vehicle_time))
+            wall = now - self.started
+            self._send_gcs(self.gcs.tick(wall))
             if self.endpoint is not None:
                 if self.vehicle_time >= self._hb_due:
                     self.endpoint.send_message(telemetry_heartbeat(self.b, self.vehicle.snapshot()))
@@ -333,10 +341,12 @@ class OnboardNode:
             self._wake.clear()
             idle = self.vehicle.state is State.LANDED and not self.vehicle.armed
             step = STEP_GROUND if idle else STEP
-            dues = [t for t in (self.gcs.wakeup(), min((t[0] for t in self._timers), default=None)) if t is not None]
-            due = min(dues) if dues else None
-            if due is not None:
-                step = min(step, max(0.001, (due - self.vehicle_time) / self.cfg.speed))
+            gcs_due = self.gcs.wakeup()
+            if gcs_due is not None:
+                step = min(step, max(0.001, gcs_due - wall))
+            timer_due = min((t[0] for t in self._timers), default=None)
+            if timer_due is not None:
+                step = min(step, max(0.001, (timer_due - self.vehicle_time) / self.cfg.speed))
             with contextlib.suppress(TimeoutError):
                 await asyncio.wait_for(self._wake.wait(), step)
 

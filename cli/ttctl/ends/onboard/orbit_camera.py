@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Callable
 from typing import Any
 
 from ...hmd.orbit import Camera, OrbitCamera, OrbitParams
@@ -29,9 +30,14 @@ VALID = int(TtVrPoseFlags.TT_VR_POSE_FLAGS_VALID)
 
 
 class OrbitCameraPlugin(Plugin):
-    def __init__(self, rate: float = 10.0, stale: float = 2.0, params: OrbitParams | None = None) -> None:
+    """`rate`: publications per second of the end's clock; `boot_ms`: CAMERA_FOV_STATUS's
+    time_boot_ms (the ground stations' clock; None: the end's)."""
+
+    def __init__(self, rate: float = 10.0, stale: float = 2.0, params: OrbitParams | None = None,
+                 boot_ms: Callable[[], int] | None = None) -> None:
         self.rate = rate
         self.stale = stale
+        self.boot_ms = boot_ms
         self.orbit = OrbitCamera(params)
         self.ctx: Context | None = None
         self.published = 0
@@ -87,7 +93,8 @@ class OrbitCameraPlugin(Plugin):
                                   topic_name=int(b.DjiTopicName.DJI_TOPIC_NAME_ORBIT_CAMERA),
                                   position=list(cam.position), orientation=[x, y, z, w]))
         if ctx.vehicle is not None:
-            ctx.send_gcs(fov_status(b, cam, ctx.vehicle.snapshot().home, int(now * 1000), self.orbit.p))
+            boot_ms = self.boot_ms() if self.boot_ms is not None else int(now * 1000)
+            ctx.send_gcs(fov_status(b, cam, ctx.vehicle.snapshot().home, boot_ms, self.orbit.p))
         self.published += 1
 
 

@@ -52,13 +52,22 @@ def default_params() -> list[Param]:
         Param("RTL_RETURN_ALT", 10.0, REAL32, 2.0, 120.0, "return altitude above home, m"),
         Param("MPC_XY_VEL_MAX", 1.5, REAL32, 0.1, 20.0, "horizontal speed limit, m/s"),
         Param("MPC_Z_VEL_MAX_UP", 1.0, REAL32, 0.1, 10.0, "vertical speed limit, m/s"),
+        Param("COM_OF_LOSS_T", 1.0, REAL32, 0.2, 60.0,
+              "seconds without OFFBOARD set-points before COM_OBL_RC_ACT (ground-station time)"),
+        Param("COM_OBL_RC_ACT", 0, INT32, 0, 5, "offboard loss: 0 position, 1 altitude, 2 manual (with "
+              "MANUAL_CONTROL, else hold), 3 return, 4 land, 5 hold"),
+        Param("COM_RC_LOSS_T", 0.5, REAL32, 0.1, 35.0,
+              "seconds without MANUAL_CONTROL in MANUAL/ALTCTL/POSCTL before NAV_RCL_ACT"),
+        Param("NAV_RCL_ACT", 2, INT32, 1, 3, "manual control loss: 1 hold, 2 return, 3 land"),
         Param("MAV_SYS_ID", 1, INT32, 1, 254, "this vehicle's MAVLink system id (read only here)"),
+        Param("SYS_AUTOSTART", 4001, INT32, 4001, 4001,
+              "PX4 airframe: 4001, the generic quadcopter (QGroundControl's PX4 plugin reads it; read only)"),
     ]
 
 
 class Parameters:
     def __init__(self, bindings: Bindings, params: list[Param], on_change: Callable[[Param], None] | None = None,
-                 read_only: tuple[str, ...] = ("MAV_SYS_ID",)) -> None:
+                 read_only: tuple[str, ...] = ("MAV_SYS_ID", "SYS_AUTOSTART")) -> None:
         self.b = bindings
         self.params = params
         self.index = {p.name: i for i, p in enumerate(params)}

@@ -37,16 +37,18 @@ def _deg7(x: float) -> int:
     return round(x * 1e7)
 
 
-def heartbeat(b: Bindings, s: Snapshot) -> Any:
+def heartbeat(b: Bindings, s: Snapshot, custom: int | None = None) -> Any:
+    """`custom`: the PX4 custom mode ground stations see (flight.FlightModes); None: the state as
+    the tablet's link encodes it."""
     flags = b.MavModeFlag
-    base = int(flags.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED | flags.MAV_MODE_FLAG_STABILIZE_ENABLED
-               | flags.MAV_MODE_FLAG_GUIDED_ENABLED)
+    custom_mode = modes.custom_mode(s.state) if custom is None else custom
+    base = modes.base_flags(b, custom_mode)
     if s.armed:
         base |= int(flags.MAV_MODE_FLAG_SAFETY_ARMED)
     status = b.MavState.MAV_STATE_ACTIVE if s.armed else b.MavState.MAV_STATE_STANDBY
     return b.Heartbeat(type=int(b.MavType.MAV_TYPE_QUADROTOR),
-                           autopilot=int(b.MavAutopilot.MAV_AUTOPILOT_GENERIC), base_mode=base,
-                           custom_mode=modes.custom_mode(s.state), system_status=int(status), mavlink_version=3)
+                           autopilot=int(b.MavAutopilot.MAV_AUTOPILOT_PX4), base_mode=base,
+                           custom_mode=custom_mode, system_status=int(status), mavlink_version=3)
 
 
 def sys_status(b: Bindings, s: Snapshot) -> Any:
@@ -111,8 +113,13 @@ def vfr_hud(b: Bindings, s: Snapshot) -> Any:
                         throttle=throttle, alt=s.alt_msl, climb=-s.vd)
 
 
+# the PX4 release whose behaviour the vehicle follows, as AUTOPILOT_VERSION packs it (major, minor,
+# patch, FIRMWARE_VERSION_TYPE_OFFICIAL): QGroundControl's PX4 plugin warns below 1.4
+PX4_VERSION = (1 << 24) | (15 << 16) | (0 << 8) | 255
+
+
 def autopilot_version(b: Bindings, sysid: int) -> Any:
-    return b.AutopilotVersion(capabilities=capabilities(b), flight_sw_version=0x01000000, vendor_id=0,
+    return b.AutopilotVersion(capabilities=capabilities(b), flight_sw_version=PX4_VERSION, vendor_id=0,
                                   product_id=0, uid=0x7474_6374_6C00 + sysid)
 
 

@@ -31,6 +31,8 @@ class State(enum.Enum):
     TRAJECTORY = "flying trajectory"
     LANDING = "landing"
     RETURNING = "returning"
+    MANUAL = "manual control"  # flown by a ground station's sticks (MANUAL_CONTROL)
+    OFFBOARD = "offboard control"  # flown by a ground station's set-points (SET_POSITION_TARGET_*)
 
     @property
     def airborne(self) -> bool:
@@ -91,6 +93,9 @@ class Vehicle(Protocol):
     def goto(self, n: float, e: float, alt: float, yaw: float | None = None) -> None: ...
     def fly(self, waypoints: list[Waypoint]) -> None: ...
     def return_home(self, alt: float | None = None) -> None: ...
+    def steer(self, state: State, vel: tuple[float, float, float] | None = None,
+              pos: tuple[float, float, float] | None = None, yaw: float | None = None,
+              yaw_rate: float | None = None) -> None: ...
     def step(self, dt: float) -> None: ...
     def snapshot(self) -> Snapshot: ...
 
@@ -157,6 +162,9 @@ class SimVehicle:
     hold_until: float | None = None
     speed_cap: float | None = None
     landed_after_return: bool = False
+    vel_cmd: tuple[float, float, float] | None = None  # n, e, d m/s being flown (manual, offboard)
+    yaw_rate_cmd: float | None = None  # rad/s, when steered by rate
+    ground_since: float | None = None  # steered and touching the ground since (the land detector)
 
     def __post_init__(self) -> None:
         if self.energy_wh < 0:
@@ -191,6 +199,7 @@ class SimVehicle:
             raise Refused("already landed")
         self.state = State.LANDING
         self.route, self.leg = [], -1
+        self._unsteer()
         self.target = (self.pos[0], self.pos[1], 0.0)
         self.target_yaw = None
 
@@ -199,6 +208,7 @@ class SimVehicle:
             raise Refused("on the ground")
         self.state = State.HOVERING
         self.route, self.leg = [], -1
+        self._unsteer()
         self.target = (self.pos[0], self.pos[1], self.pos[2])
         self.target_yaw = None
 
@@ -257,7 +267,48 @@ class SimVehicle:
         if any(v is not None and not math.isfinite(v) for v in values):
             raise Refused("a value is not a finite number")
 
+    def steer(self, state: State, vel: tuple[float, float, float] | None = None,
+              pos: tuple[float, float, float] | None = None, yaw: float | None = None,
+              yaw_rate: float | None = None) -> None:
+        """Manual or offboard control (`state` MANUAL or OFFBOARD): fly the velocity `vel` (n, e,
+        d m/s, held within the limits) or to the position `pos` (n, e, d m from home), facing
+        `yaw` (rad) or turning at `yaw_rate` (rad/s). From the ground only when armed, and the
+        vehicle leaves it only when told to climb; steered down onto the ground it lands and
+        disarms after 2 s there, as PX4's land detector does."""
+        if state not in (State.MANUAL, State.OFFBOARD):
+            raise ValueError(state)
+        self._finite(yaw, yaw_rate, *(vel or ()), *(pos or ()))
+        if (vel is None) == (pos is None):
+            raise Refused("a velocity or a position, one of them")
+        if pos is not None:
+            self._alt(max(0.0, -pos[2]))
+        if self.state is State.LANDED:
+            if not self.armed:
+                raise Refused("not armed")
+            climbing = (vel[2] < -0.1) if vel is not None else (pos is not None and -pos[2] >= MIN_ALT)
+            if not climbing:
+                return  # armed on the ground, and staying there
+            self.ground_since = None
+        elif self.state is not state:
+            self.ground_since = None
+        self.state = state
+        self.route, self.leg, self.speed_cap, self.hold_until = [], -1, None, None
+        self.yaw_rate_cmd = yaw_rate
+        if vel is not None:
+            self.vel_cmd = vel
+            self.target = None
+            self.target_yaw = yaw
+        else:
+            assert pos is not None
+            self.vel_cmd = None
+            self.target = (pos[0], pos[1], min(0.0, pos[2]))
+            self.target_yaw = yaw
+
+    def _unsteer(self) -> None:
+        self.vel_cmd, self.yaw_rate_cmd, self.ground_since = None, None, None
+
     def _fly_to(self, n: float, e: float, d: float, yaw: float | None) -> None:
+        self._unsteer()
         self.target = (n, e, d)
         self.target_yaw = yaw
         self.hold_until = None
@@ -279,7 +330,12 @@ class SimVehicle:
         self.time += dt
         lim = self.limits
         want = [0.0, 0.0, 0.0]
-        if self.target is not None and self.state.airborne:
+        if self.vel_cmd is not None and self.state.airborne:
+            vn, ve, vd = self.vel_cmd
+            h = math.hypot(vn, ve)
+            k = min(1.0, lim.h_speed / h) if h > 1e-9 else 1.0
+            want = [vn * k, ve * k, max(-lim.v_speed, min(lim.v_speed, vd))]
+        elif self.target is not None and self.state.airborne:
             dn, de, dd = (self.target[i] - self.pos[i] for i in range(3))
             hdist = math.hypot(dn, de)
             hs = min(self.speed_cap or lim.h_speed, lim.h_speed)
@@ -307,7 +363,9 @@ class SimVehicle:
         if yaw_goal is None and math.hypot(self.vel[0], self.vel[1]) > 0.3 and self.state in (
                 State.MOVING, State.TRAJECTORY, State.RETURNING):
             yaw_goal = math.atan2(self.vel[1], self.vel[0])
-        if yaw_goal is not None and self.state.airborne:
+        if self.yaw_rate_cmd is not None and self.state.airborne and self.pos[2] < -0.05:
+            self.yaw_rate = max(-lim.yaw_rate, min(lim.yaw_rate, self.yaw_rate_cmd))
+        elif yaw_goal is not None and self.state.airborne:
             err = (yaw_goal - self.yaw + math.pi) % (2 * math.pi) - math.pi
             self.yaw_rate = max(-lim.yaw_rate, min(lim.yaw_rate, err / max(dt, 0.2)))
         else:
@@ -339,6 +397,17 @@ class SimVehicle:
         s = self.state
         if (s is State.TAKING_OFF and self._arrived()) or (s is State.MOVING and self._arrived()):
             self.state = State.HOVERING
+        elif s in (State.MANUAL, State.OFFBOARD):
+            down = self.vel_cmd[2] >= 0 if self.vel_cmd is not None else (self.target or (0, 0, 0))[2] >= -0.01
+            if self.pos[2] >= -0.01 and down:
+                self.ground_since = self.time if self.ground_since is None else self.ground_since
+                if self.time - self.ground_since >= 2.0:  # PX4's COM_DISARM_LAND
+                    self.state, self.armed = State.LANDED, False
+                    self.pos[2], self.vel = 0.0, [0.0, 0.0, 0.0]
+                    self.target = None
+                    self._unsteer()
+            else:
+                self.ground_since = None
         elif s is State.LANDING and self.pos[2] >= -0.01 and abs(self.vel[2]) < 0.05:
             self.state = State.LANDED
             self.pos[2], self.vel = 0.0, [0.0, 0.0, 0.0]

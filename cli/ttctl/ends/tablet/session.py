@@ -26,7 +26,7 @@ from ..runtime import Runner
 TABLET = (255, 190)
 STATES = {  # PX4 (main, sub) modes the onboard end reports, as the vehicle's states
     (4, 1): "landed", (4, 3): "hovering", (4, 2): "taking off", (4, 4): "flying trajectory", (4, 6): "landing",
-    (4, 5): "returning", (6, 0): "moving",
+    (4, 5): "returning", (6, 0): "moving", (3, 0): "manual control",
 }
 
 
