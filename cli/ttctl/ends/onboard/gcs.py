@@ -40,7 +40,8 @@ class GroundStations:
         self.log = log or (lambda text: None)
         self.out: list[tuple[Any, Hashable]] = []
         self._peer_links: dict[tuple[int, int], Hashable] = {}
-        ap.missions = Missions(b, sysid, compid, self._to_peer, self.log)
+        ap.attach_missions(Missions(b, sysid, compid, self._to_peer, self.log, warn=self._warn),
+                           emit=lambda msg: self.out.append((msg, None)))
         self.builders: dict[int, Callable[[Snapshot], Any]] = {
             b.Heartbeat.MSG_ID: lambda s: telemetry.heartbeat(b, s),
             b.SysStatus.MSG_ID: lambda s: telemetry.sys_status(b, s),
@@ -54,6 +55,7 @@ class GroundStations:
             b.VfrHud.MSG_ID: lambda s: telemetry.vfr_hud(b, s),
             b.MissionCurrent.MSG_ID: lambda s: telemetry.mission_current(b, s, len(self._mission())),
         }
+        ap.wrap_telemetry(self.builders)
         self.rates = telemetry.Rates(b, self.builders)
         self.now = boot
 
@@ -69,6 +71,10 @@ class GroundStations:
     # -- out ------------------------------------------------------------------------------------
     def _to_peer(self, msg: Any, peer: tuple[int, int]) -> None:
         self.out.append((msg, self._peer_links.get(peer)))
+
+    def _warn(self, text: str) -> None:
+        self.log(text)
+        self.say(WARNING, text)
 
     def say(self, severity: int, text: str) -> None:
         self.out.append((self.b.Statustext(severity=severity, text=text.encode()[:50].decode("utf-8", "ignore")), None))
@@ -86,6 +92,7 @@ class GroundStations:
             return  # ourselves (or our own onboard computer), echoed
         b = self.b
         self._peer_links[peer] = link
+        self.ap.heard_gcs(peer[0], now, msg)
         if isinstance(msg, b.Ping):
             if msg.target_system == 0 and msg.target_component == 0:  # a request: answer it
                 self._to_peer(b.Ping(time_usec=msg.time_usec, seq=msg.seq, target_system=peer[0],
@@ -95,6 +102,8 @@ class GroundStations:
             return
         if isinstance(msg, (b.CommandLong, b.CommandInt)):
             result, extra = self._command(now, msg)
+            if result == b.MavResult.MAV_RESULT_ACCEPTED and msg.command in self.ap.flight_commands:
+                self.ap.commanded_by(peer[0], now)
             self._to_peer(b.CommandAck(command=msg.command, result=int(result), target_system=peer[0],
                                            target_component=peer[1]), peer)
             for m in extra:
@@ -114,6 +123,8 @@ class GroundStations:
                 self.out.append((m, None))  # every ground station learns the new value
         elif isinstance(msg, b.RequestDataStream):
             self.rates.set_all(msg.req_message_rate if msg.start_stop else 0)
+        elif isinstance(msg, b.MissionSetCurrent):
+            self.ap.set_current(msg.seq)
         elif self.ap.missions is not None and type(msg).__name__.startswith("Mission"):
             self.ap.missions.on_message(now, msg)
 
@@ -144,7 +155,8 @@ class GroundStations:
             if cmd == C.MAV_CMD_DO_REPOSITION:
                 return self._reposition(msg), []
             if cmd == C.MAV_CMD_MISSION_START:
-                self.ap.start_mission()
+                first = _arg(p[0], -1)
+                self.ap.start_mission(int(first) if first >= 0 and first == int(first) else None)
                 return A.MAV_RESULT_ACCEPTED, []
             if cmd == C.MAV_CMD_SET_MESSAGE_INTERVAL:
                 ok = self.rates.set_interval(int(_arg(p[0], -1)), _arg(p[1], 0))
@@ -156,6 +168,11 @@ class GroundStations:
                          }.get(cmd, int(_arg(p[0], -1)))
                 reply = self._requested(msgid)
                 return (A.MAV_RESULT_ACCEPTED, [reply]) if reply is not None else (A.MAV_RESULT_UNSUPPORTED, [])
+            position = (msg.x / 1e7, msg.y / 1e7, msg.z) if isinstance(msg, self.b.CommandInt) \
+                else (msg.param5, msg.param6, msg.param7)
+            mission_result = self.ap.mission_command(int(cmd), p, position)
+            if mission_result is not None:
+                return mission_result, []
         except Refused as e:
             self.log(f"command {cmd} refused: {e}")
             self.say(WARNING, f"refused: {e}")
