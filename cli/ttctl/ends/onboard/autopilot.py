@@ -139,7 +139,7 @@ class Autopilot:
                 self.set_home(lat, lon, alt)
             return int(A.MAV_RESULT_ACCEPTED)
         if cmd == int(C.MAV_CMD_DO_CHANGE_SPEED):
-            speed = _finite(p[1], -1.0)
+            speed = -1.0 if p[1] is None or math.isnan(p[1]) else float(p[1])  # NaN: unused, as -1
             limit = self.params["MPC_XY_VEL_MAX"]
             if speed == -1.0:
                 return int(A.MAV_RESULT_ACCEPTED)  # -1: no change, as MAVLink defines

@@ -135,9 +135,9 @@ class Missions:
             problem = self._check(msg, up)
             if problem is not None:
                 code, why = problem
-                self.warn(f"item {msg.seq} refused: {why}")
                 self.upload = None
                 self._ack(peer, code, up.mission_type)
+                self.warn(f"item {msg.seq} refused: {why}")  # the words follow the refusal
                 return
             up.items.append(msg)
             up.tries = 0
