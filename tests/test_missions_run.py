@@ -318,3 +318,47 @@ def test_link_loss_watches_the_link_that_commands_the_flight() -> None:
         s.t += dt
         s.ap.step(s.t, dt)
     assert any("ground station 255 link lost" in t for t in s.said)
+
+
+def test_hostile_values_in_every_mission_and_safety_input_are_refused_never_a_crash() -> None:
+    """NaN, infinities and absurd numbers in every parameter of the mission and safety commands,
+    every field of mission, fence and rally items, and MISSION_SET_CURRENT: answered with the
+    protocol's own codes; the vehicle's position, home and mission state stay sane."""
+    import random
+
+    s = Sim()
+    C, b = s.C, s.b
+    rng = random.Random(19)
+    bad = [math.nan, math.inf, -math.inf, 1e30, -1e30, -1.0, 0.0, 1.0, 3.0, 7.5, 65536.0]
+    assert s.upload([s.item(C.MAV_CMD_NAV_WAYPOINT, 5, 0, 4), s.item(C.MAV_CMD_DO_LAND_START),
+                     s.item(C.MAV_CMD_NAV_LAND, 5, 5, 0)]) == 0
+    assert s.command(C.MAV_CMD_COMPONENT_ARM_DISARM, 1) == 0
+    assert s.command(C.MAV_CMD_NAV_TAKEOFF, 0, 0, 0, 0, 0, 0, 4) == 0
+    assert s.run(30, lambda: s.v.state is State.HOVERING)
+    commands = [C.MAV_CMD_DO_SET_HOME, C.MAV_CMD_DO_CHANGE_SPEED, C.MAV_CMD_DO_PAUSE_CONTINUE,
+                C.MAV_CMD_DO_SET_MISSION_CURRENT, C.MAV_CMD_DO_LAND_START, C.MAV_CMD_MISSION_START]
+    for _ in range(400):
+        cmd = rng.choice(commands)
+        result = s.command(cmd, *(rng.choice(bad) for _ in range(7)))
+        assert result in (0, 1, 2), (cmd, result)  # ACCEPTED, TEMPORARILY_REJECTED or DENIED
+        s.run(0.1)
+        snap = s.v.snapshot()
+        assert all(math.isfinite(x) for x in (snap.n, snap.e, snap.d, snap.home.lat, snap.home.lon, snap.home.alt))
+        assert -90 <= snap.home.lat <= 90 and -180 <= snap.home.lon <= 180
+        assert s.v.limits.h_speed >= (s.v.speed_cap or 0.0)
+    for kind in (0, 1, 2):  # mission, fence, rally items with hostile fields
+        for _ in range(60):
+            it = s.item(rng.choice(list(C)), 0, 0, rng.choice(bad), rng.choice(bad), rng.choice(bad),
+                        rng.choice(bad), rng.choice(bad), kind=kind)
+            it.x, it.y = rng.choice([0, 2**31 - 1, -(2**31), 900_000_000, it.x]), rng.choice([0, 2**31 - 1, it.y])
+            assert s.upload([it], kind=kind) in range(0, 16)
+            s.run(0.1)
+    for seq in (-1, 3, 65535, 2):
+        s.got.clear()
+        s.send(b.MissionSetCurrent(target_system=1, target_component=1, seq=seq & 0xFFFF))
+        assert len(s.currents()) == 1  # answered with MISSION_CURRENT, as the protocol says
+    s.got.clear()
+    s.send(b.MissionCount(target_system=1, target_component=1, count=65535, mission_type=0))
+    assert [m.type for m in s.got if isinstance(m, b.MissionAck)] == [4]  # MAV_MISSION_NO_SPACE
+    s.run(2)
+    assert all(math.isfinite(x) for x in s.v.pos) and s.ap.runner is not None and s.ap.runner.state in range(1, 6)

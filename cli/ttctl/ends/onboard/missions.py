@@ -97,8 +97,8 @@ class Missions:
 
     def _type_name(self, mission_type: int) -> str:
         T = self.b.MavMissionType
-        return {int(T.MAV_MISSION_TYPE_FENCE): "fence", int(T.MAV_MISSION_TYPE_RALLY): "rally"}.get(
-            mission_type, f"mission type {mission_type}")
+        return {int(T.MAV_MISSION_TYPE_MISSION): "mission", int(T.MAV_MISSION_TYPE_FENCE): "fence",
+                int(T.MAV_MISSION_TYPE_RALLY): "rally"}.get(mission_type, f"mission type {mission_type}")
 
     def _ask(self, now: float) -> None:
         up = self.upload
@@ -144,7 +144,7 @@ class Missions:
             if len(up.items) == up.count:
                 self.plans[up.mission_type] = up.items
                 self.upload = None
-                self.log(f"mission of {up.count} items received")
+                self.log(f"{self._type_name(up.mission_type)} of {up.count} items received")
                 self._ack(peer, int(R.MAV_MISSION_ACCEPTED), up.mission_type)
                 self.on_plan(up.mission_type)
             else:
