@@ -248,3 +248,50 @@ def test_mavproxy_sets_the_current_waypoint(tmp_path: Path, start: Start) -> Non
     assert "waypoint 2" in out, out[-2000:]
     assert "mission resumed at item 2" in node.stderr and "mission complete" in node.stderr, node.stderr
     assert "Traceback" not in node.stderr
+
+
+def test_link_loss_watches_the_ground_station_flying_not_a_tablet_heard_once(start: Start) -> None:
+    """A tablet is heard once and never again; a ground station (sending HEARTBEATs) arms and takes
+    off: its flight goes on long past COM_DL_LOSS_T. When the ground station falls silent, its
+    link is lost: hover, then return."""
+    import socket
+
+    from pymavlink import mavutil
+
+    from conftest import shipped
+
+    port = free_port()
+    conn = mavutil.mavlink_connection(f"udpin:{LOCAL}:{port}", source_system=255, source_component=190,
+                                      dialect="common")
+    m = mavutil.mavlink
+    node = start("onboard", "emulate", "onboard", "--gcs", f"udpout:{LOCAL}:{port}", "--listen", f"udpin:{LOCAL}:0",
+                 "--no-entry-points", "--speed", "4")
+    node.wait_for("onboard 1:")
+    assert conn.recv_match(type="HEARTBEAT", blocking=True, timeout=10) is not None
+    b = shipped()
+    dtt = int(node.stderr.split("tablet link udpin:127.0.0.1:")[1].split(";")[0])
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.sendto(b.encoder(255, 190).encode(b.Heartbeat(type=6, autopilot=8, base_mode=0, custom_mode=0,
+                                                        system_status=4, mavlink_version=3)), (LOCAL, dtt))
+    node.wait_for("dtt: answering")  # the tablet was heard, once
+
+    def pump(seconds: float, beat: bool) -> int:
+        """Read for `seconds`, sending a HEARTBEAT every 0.25 s if `beat`; the last relative_alt."""
+        end, alt = time.monotonic() + seconds, -1
+        while time.monotonic() < end:
+            if beat:
+                conn.mav.heartbeat_send(m.MAV_TYPE_GCS, m.MAV_AUTOPILOT_INVALID, 0, 0, m.MAV_STATE_ACTIVE)
+            r = conn.recv_match(type="GLOBAL_POSITION_INT", blocking=True, timeout=0.25)
+            if r is not None:
+                alt = r.relative_alt
+        return alt
+
+    pump(0.5, True)
+    assert command(conn, m.MAV_CMD_COMPONENT_ARM_DISARM, 1) == m.MAV_RESULT_ACCEPTED
+    assert command(conn, m.MAV_CMD_NAV_TAKEOFF, 0, 0, 0, math.nan, math.nan, math.nan, 5) == m.MAV_RESULT_ACCEPTED
+    assert pump(9.0, True) > 4500  # 36 s of the vehicle's clock: past COM_DL_LOSS_T and COM_RTL_AFTER_T
+    assert "link lost" not in node.stderr and "hovering" in node.stderr
+    pump(4.0, False)  # the ground station falls silent
+    node.wait_for("ground station 255 link lost", timeout=5)
+    node.wait_for("ground station 255 link still lost: returning home", timeout=10)
+    assert "tablet link lost" not in node.stderr and "Traceback" not in node.stderr
