@@ -362,3 +362,28 @@ def test_hostile_values_in_every_mission_and_safety_input_are_refused_never_a_cr
     assert [m.type for m in s.got if isinstance(m, b.MissionAck)] == [4]  # MAV_MISSION_NO_SPACE
     s.run(2)
     assert all(math.isfinite(x) for x in s.v.pos) and s.ap.runner is not None and s.ap.runner.state in range(1, 6)
+
+
+def test_legacy_mission_item_upload_and_download() -> None:
+    """MISSION_ITEM (float degrees) is taken as MISSION_ITEM_INT is; MISSION_REQUEST is answered
+    in kind, as PX4 does; a position that is not a number is refused."""
+    s = Sim()
+    C, F, b = s.C, s.F, s.b
+    lat, lon = (v / 1e7 for v in latlon(10, 5))
+
+    def legacy(seq: int, x: float, y: float) -> Any:
+        return b.MissionItem(target_system=1, target_component=1, seq=seq, frame=int(F.MAV_FRAME_GLOBAL_RELATIVE_ALT),
+                             command=int(C.MAV_CMD_NAV_WAYPOINT), current=0, autocontinue=1, param1=0, param2=0,
+                             param3=0, param4=math.nan, x=x, y=y, z=6.0, mission_type=0)
+
+    assert s.upload([legacy(0, lat, lon), legacy(1, lat, lon + 1e-4)]) == 0
+    assert s.ap.missions is not None and [i.x for i in s.ap.missions.mission()] == [round(lat * 1e7)] * 2
+    s.got.clear()
+    s.send(b.MissionRequest(target_system=1, target_component=1, seq=1, mission_type=0))
+    out = [m for m in s.got if isinstance(m, (b.MissionItem, b.MissionItemInt))]
+    assert len(out) == 1 and isinstance(out[0], b.MissionItem) and abs(out[0].y - (lon + 1e-4)) < 1e-6
+    assert s.upload([legacy(0, math.nan, lon)]) == 10  # MAV_MISSION_INVALID_PARAM5_X
+    assert s.command(C.MAV_CMD_COMPONENT_ARM_DISARM, 1) == 0
+    assert s.command(C.MAV_CMD_MISSION_START) == 0
+    assert s.run(60, lambda: s.ap.runner is not None and s.ap.runner.current == 1)
+    assert s.at(10, 5)

@@ -74,6 +74,23 @@ class Missions:
         self.send(self.b.MissionAck(target_system=peer[0], target_component=peer[1], type=result,
                                    mission_type=mission_type), peer)
 
+    def _global(self, frame: int) -> bool:
+        F = self.b.MavFrame
+        return frame in (int(F.MAV_FRAME_GLOBAL), int(F.MAV_FRAME_GLOBAL_RELATIVE_ALT), int(F.MAV_FRAME_GLOBAL_INT),
+                         int(F.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT), int(F.MAV_FRAME_GLOBAL_TERRAIN_ALT))
+
+    def _as_int(self, msg: Any) -> Any:
+        """A legacy MISSION_ITEM (latitude and longitude in float degrees) as a MISSION_ITEM_INT;
+        a position that is not a number becomes one out of range (refused as such)."""
+        item = self.b.MissionItemInt(**{name: getattr(msg, name) for name in self.b.MissionItemInt.FIELDS
+                                        if name not in ("x", "y")})
+        scale = 1e7 if self._global(msg.frame) else 1.0
+        for name in ("x", "y"):
+            v = float(getattr(msg, name)) * scale
+            setattr(item, name, round(v) if math.isfinite(v) and abs(v) < 2**31 - 1 else 2**31 - 1)
+        item._mav_sysid, item._mav_compid = msg.get_srcSystem(), msg.get_srcComponent()
+        return item
+
     def _check(self, item: Any, up: _Upload) -> tuple[int, str] | None:
         T, R = self.b.MavMissionType, self.b.MavMissionResult
         if up.mission_type == int(T.MAV_MISSION_TYPE_MISSION):
@@ -123,7 +140,9 @@ class Missions:
                 return
             self.upload = _Upload(peer, msg.mission_type, msg.count)
             self._ask(now)
-        elif isinstance(msg, b.MissionItemInt):
+        elif isinstance(msg, (b.MissionItemInt, b.MissionItem)):
+            if isinstance(msg, b.MissionItem):
+                msg = self._as_int(msg)
             up = self.upload
             if up is None or peer != up.peer:
                 return
@@ -159,7 +178,11 @@ class Missions:
                 self._ack(peer, int(R.MAV_MISSION_INVALID_SEQUENCE), msg.mission_type)
                 return
             item = plan[msg.seq]
-            out = b.MissionItemInt(**{name: getattr(item, name) for name in b.MissionItemInt.FIELDS})
+            legacy = isinstance(msg, b.MissionRequest)  # answered in kind, as PX4 does
+            out = (b.MissionItem if legacy else b.MissionItemInt)(
+                **{name: getattr(item, name) for name in b.MissionItemInt.FIELDS})
+            if legacy and self._global(item.frame):
+                out.x, out.y = item.x / 1e7, item.y / 1e7
             out.target_system, out.target_component = peer
             self.send(out, peer)
         elif isinstance(msg, b.MissionClearAll):
