@@ -38,6 +38,7 @@ class Autopilot:
         self.params.params[self.params.index["MAV_SYS_ID"]].value = float(sysid)
         self.missions: Missions | None = None  # set by the ground-station side, which speaks the protocol
         self.runner: MissionRunner | None = None
+        self._builders: dict[int, Callable[[Snapshot], Any]] = {}
         C = bindings.MavCmd
         self.flight_commands = {int(c) for c in (
             C.MAV_CMD_COMPONENT_ARM_DISARM, C.MAV_CMD_NAV_TAKEOFF, C.MAV_CMD_NAV_LAND, C.MAV_CMD_NAV_RETURN_TO_LAUNCH,
@@ -122,6 +123,9 @@ class Autopilot:
         else:
             raise Refused("this vehicle's home cannot be moved")
         self.say(INFO, f"home set: {lat:.6f}, {lon:.6f}, {alt:.1f} m")
+        home = self._builders.get(self.b.HomePosition.MSG_ID)
+        if home is not None and self.runner is not None:
+            self.runner.emit(home(self.vehicle.snapshot()))  # ground stations learn it at once, as from PX4
 
     def mission_command(self, cmd: int, p: list[float], position: tuple[float, float, float]) -> int | None:
         """The mission and safety commands (COMMAND_LONG/INT): a MAV_RESULT, None if not one of
@@ -332,6 +336,7 @@ class Autopilot:
         """SYS_STATUS's geofence bits, BATTERY_STATUS's charge state and MISSION_CURRENT from the
         autopilot's own state (the ground-station side's builders, changed in place)."""
         b = self.b
+        self._builders = builders
         sys_status, battery = builders.get(b.SysStatus.MSG_ID), builders.get(b.BatteryStatus.MSG_ID)
         fence_bit = int(b.MavSysStatusSensor.MAV_SYS_STATUS_GEOFENCE)
 
