@@ -387,3 +387,18 @@ def test_legacy_mission_item_upload_and_download() -> None:
     assert s.command(C.MAV_CMD_MISSION_START) == 0
     assert s.run(60, lambda: s.ap.runner is not None and s.ap.runner.current == 1)
     assert s.at(10, 5)
+
+
+def test_roi_commands_turn_a_holding_vehicle_toward_the_point() -> None:
+    s = Sim()
+    C = s.C
+    assert s.command(C.MAV_CMD_COMPONENT_ARM_DISARM, 1) == 0
+    assert s.command(C.MAV_CMD_NAV_TAKEOFF, 0, 0, 0, 0, 0, 0, 4) == 0
+    assert s.run(30, lambda: s.v.state is State.HOVERING)
+    assert s.command(C.MAV_CMD_DO_SET_ROI_LOCATION, 0, 0, 0, 0, math.nan, 14.4686, 0) == 2  # DENIED: no position
+    lat, lon = latlon(-20, 0)  # due south
+    assert s.command(C.MAV_CMD_DO_SET_ROI_LOCATION, 0, 0, 0, 0, lat / 1e7, lon / 1e7, 0) == 0
+    s.run(5)
+    assert abs(abs(s.v.yaw) - math.pi) < math.radians(3)
+    assert s.command(C.MAV_CMD_DO_SET_ROI_NONE) == 0
+    assert s.ap.runner is not None and s.ap.runner.roi is None

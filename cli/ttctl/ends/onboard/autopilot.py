@@ -190,6 +190,16 @@ class Autopilot:
         if cmd == int(C.MAV_CMD_DO_LAND_START):
             runner.land_start()
             return int(A.MAV_RESULT_ACCEPTED)
+        if cmd == int(C.MAV_CMD_DO_SET_ROI_LOCATION):
+            lat, lon, _ = position
+            if not (math.isfinite(lat) and math.isfinite(lon) and -90 <= lat <= 90 and -180 <= lon <= 180):
+                raise Refused("DO_SET_ROI_LOCATION needs a position")
+            runner.roi = (lat, lon)
+            self.say(INFO, f"facing {lat:.6f}, {lon:.6f}")
+            return int(A.MAV_RESULT_ACCEPTED)
+        if cmd == int(C.MAV_CMD_DO_SET_ROI_NONE):
+            runner.roi = None
+            return int(A.MAV_RESULT_ACCEPTED)
         return None
 
     def set_current(self, seq: int) -> None:

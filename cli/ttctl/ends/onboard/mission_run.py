@@ -179,6 +179,8 @@ class MissionRunner:
 
     def step(self, now: float) -> None:
         if not self.running:
+            if self.roi is not None and self.vehicle.state is State.HOVERING:
+                self._face_roi()  # a hold faces the region of interest too
             return
         for _ in range(len(self.items()) + 2):  # DO items take no time; a jump loop waits a step
             if not self.running:
@@ -333,7 +335,7 @@ class MissionRunner:
 
     def _face_roi(self) -> None:
         v = self.vehicle
-        if self.roi is None or self.leg is None or self.leg.kind != "fly":
+        if self.roi is None or (self.running and (self.leg is None or self.leg.kind != "fly")):
             return
         home: Home = v.home
         rn = math.radians(self.roi[0] - home.lat) * EARTH_RADIUS
