@@ -402,3 +402,26 @@ def test_roi_commands_turn_a_holding_vehicle_toward_the_point() -> None:
     assert abs(abs(s.v.yaw) - math.pi) < math.radians(3)
     assert s.command(C.MAV_CMD_DO_SET_ROI_NONE) == 0
     assert s.ap.runner is not None and s.ap.runner.roi is None
+
+
+def test_fence_polygons_and_distance_limits() -> None:
+    from ttctl.ends.onboard import safety
+
+    s = Sim()
+    C = s.C
+    square = [s.item(C.MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION, n, e, p1=4, kind=1)
+              for n, e in ((-30, -30), (30, -30), (30, 30), (-30, 30))]
+    hole = [s.item(C.MAV_CMD_NAV_FENCE_POLYGON_VERTEX_EXCLUSION, n, e, p1=3, kind=1)
+            for n, e in ((5, 5), (15, 5), (5, 15))]
+    areas = safety.fence_areas(s.b, square + hole)
+    assert [a.inclusion for a in areas] == [True, False]
+
+    def why(n: float, e: float, alt: float = 5, hor: float = 0, ver: float = 0) -> str | None:
+        return safety.breach(areas, HOME, n, e, alt, hor, ver)
+    assert why(0, 0) is None and why(29, -29) is None and why(20, 20) is None
+    assert why(31, 0) == "outside the inclusion fence" and why(0, -31) == "outside the inclusion fence"
+    assert why(7, 7) == "inside an exclusion fence" and why(14, 14) is None  # beyond the triangle's long side
+    assert why(20, 0, hor=15) is not None and why(0, 0, alt=50, ver=40) is not None
+    bad = s.item(C.MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION, 0, 0, p1=2, kind=1)
+    assert s.upload([bad, bad], kind=1) == 6  # two vertices: MAV_MISSION_INVALID_PARAM1
+    assert s.upload([s.item(C.MAV_CMD_NAV_WAYPOINT, 1, 1, 5, kind=1)], kind=1) == 3  # not a fence item

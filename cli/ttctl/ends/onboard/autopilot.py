@@ -176,6 +176,8 @@ class Autopilot:
                 return int(A.MAV_RESULT_ACCEPTED)
             raise Refused("DO_PAUSE_CONTINUE param1 must be 0 (pause) or 1 (continue)")
         if cmd == int(C.MAV_CMD_DO_SET_MISSION_CURRENT):
+            if p[0] is not None and math.isinf(p[0]):
+                raise Refused("mission item inf?")
             seq = _finite(p[0], -1)
             if seq != -1:
                 if seq != int(seq):

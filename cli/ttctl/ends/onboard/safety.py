@@ -23,7 +23,7 @@ they would on PX4.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 from .params import INT32, REAL32, Param
@@ -57,12 +57,17 @@ class Area:
     polygon: list[tuple[float, float]]  # lat, lon
     center: tuple[float, float] | None = None  # lat, lon of a circle
     radius: float = 0.0
+    _home: tuple[float, float] | None = None
+    _pts: list[tuple[float, float]] = field(default_factory=list)
 
     def contains(self, home: Home, n: float, e: float) -> bool:
         if self.center is not None:
             cn, ce = local(home, *self.center)
             return math.hypot(n - cn, e - ce) <= self.radius
-        pts = [local(home, lat, lon) for lat, lon in self.polygon]
+        if self._home != (home.lat, home.lon):  # the vertices in metres, worked out once per home
+            self._home = (home.lat, home.lon)
+            self._pts = [local(home, lat, lon) for lat, lon in self.polygon]
+        pts = self._pts
         inside = False
         j = len(pts) - 1
         for i in range(len(pts)):  # ray casting, north as x, east as y
