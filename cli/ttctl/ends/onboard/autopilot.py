@@ -2,9 +2,10 @@
 number of ground stations. It owns the vehicle, its parameters, its mission (flown by
 mission_run.MissionRunner) and its safety (safety.py: geofence, rally points, home, battery and
 link-loss failsafes), applies the parameters to the vehicle, and watches the link that commands
-the flight: silent for COM_DL_LOSS_T seconds, the vehicle hovers (or lands, or returns, by
-NAV_DLL_ACT); silent COM_RTL_AFTER_T more, it returns home and lands, as PX4's data-link-loss
-failsafe does. Everything it does is told through `say` (STATUSTEXT and TT_LOG, in the node).
+the flight: silent for COM_DL_LOSS_T seconds (of the wall clock, as the links run, whatever
+--speed is), the vehicle hovers (or lands, or returns, by NAV_DLL_ACT); silent COM_RTL_AFTER_T
+more, it returns home and lands, as PX4's data-link-loss failsafe does. Everything it does is
+told through `say` (STATUSTEXT and TT_LOG, in the node).
 """
 
 from __future__ import annotations
@@ -46,6 +47,9 @@ class Autopilot:
             C.MAV_CMD_DO_SET_MISSION_CURRENT, C.MAV_CMD_DO_LAND_START, C.MAV_CMD_DO_CHANGE_SPEED, C.MAV_CMD_DO_ORBIT)}
         self.commander: Hashable = None  # TABLET or a ground station's system id: the link watched
         self.heard: dict[Hashable, float] = {}
+        # the links' clock: the wall clock in the node (links keep real time whatever --speed is,
+        # and so do their timeouts); None: the times the callers give (sans-IO use)
+        self.clock: Callable[[], float] | None = None
         self.link_lost_at: float | None = None
         self.failsafe = ""  # "", "hover", "return", "land"
         self.fence: list[safety.Area] = []
@@ -226,7 +230,11 @@ class Autopilot:
         if msg is not None and type(msg).__name__ in STEERING:
             self.commanded_by(sysid, now)
 
+    def _link_time(self, now: float) -> float:
+        return self.clock() if self.clock is not None else now
+
     def _heard(self, who: Hashable, now: float) -> None:
+        now = self._link_time(now)
         self.heard[who] = now
         if who == self.commander and self.link_lost_at is not None:
             self.say(INFO, f"{self._link_name(who)} link back after {now - self.link_lost_at:.1f} s")
@@ -311,6 +319,7 @@ class Autopilot:
             self._act(action)
 
     def _watch_link(self, now: float) -> None:
+        now = self._link_time(now)
         who = self.commander
         if who is None or not self.vehicle.state.airborne or who not in self.heard:
             return

@@ -63,6 +63,7 @@ class OnboardNode:
         self.log = log or (lambda text: None)
         self.vehicle = SimVehicle(home=cfg.home)
         self.ap = Autopilot(bindings, self.vehicle, cfg.sysid, say=self._say)
+        self.ap.clock = time.monotonic  # link-loss timeouts on the wall clock, as the links run
         self.started = 0.0
         self.gcs = GroundStations(bindings, self.ap, cfg.sysid, AUTOPILOT_COMPID, unix=self._unix, log=self.log)
         self.gcs_encoder = bindings.encoder(cfg.sysid, AUTOPILOT_COMPID)
