@@ -425,3 +425,15 @@ def test_fence_polygons_and_distance_limits() -> None:
     bad = s.item(C.MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION, 0, 0, p1=2, kind=1)
     assert s.upload([bad, bad], kind=1) == 6  # two vertices: MAV_MISSION_INVALID_PARAM1
     assert s.upload([s.item(C.MAV_CMD_NAV_WAYPOINT, 1, 1, 5, kind=1)], kind=1) == 3  # not a fence item
+
+
+def test_mission_start_with_a_first_item() -> None:
+    s = Sim()
+    C = s.C
+    assert s.upload([s.item(C.MAV_CMD_NAV_WAYPOINT, 20, 0, 4), s.item(C.MAV_CMD_NAV_WAYPOINT, 0, 8, 4),
+                     s.item(C.MAV_CMD_NAV_WAYPOINT, 8, 8, 4)]) == 0
+    assert s.command(C.MAV_CMD_COMPONENT_ARM_DISARM, 1) == 0
+    assert s.command(C.MAV_CMD_MISSION_START, 5) == 2  # DENIED: no item 5
+    assert s.command(C.MAV_CMD_MISSION_START, 1) == 0
+    assert s.run(60, lambda: s.ap.runner is not None and s.ap.runner.state == COMPLETE)
+    assert s.reached() == [1, 2] and s.at(8, 8) and s.v.pos[0] < 8.5  # item 0, 20 m north, never flown
