@@ -245,7 +245,7 @@ def test_geofence_breach_acts_by_gf_action_and_sys_status_tells() -> None:
     st = s.gs.builders[b.SysStatus.MSG_ID](s.v.snapshot())
     assert not st.onboard_control_sensors_health & bit
     s.run(5)
-    assert s.v.state is State.HOVERING and 19 < s.v.pos[0] < 24  # GF_ACTION 2: hold at the fence
+    assert s.v.state is State.HOVERING and 19 < s.v.pos[0] <= 20.05  # GF_ACTION 2: hold at the fence, not past it
     # GF_ACTION 3: return
     s.send(b.ParamSet(target_system=1, target_component=1, param_id="GF_ACTION",
                       param_value=Param("GF_ACTION", 3, INT32, 0, 5, "").encoded(), param_type=INT32))

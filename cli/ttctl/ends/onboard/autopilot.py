@@ -282,7 +282,8 @@ class Autopilot:
         if not self.fence_active() or not v.state.airborne or not isinstance(v, SimVehicle):
             self.breached = None if not v.state.airborne else self.breached
             return
-        why = safety.breach(self.fence, v.home, v.pos[0], v.pos[1], -v.pos[2], self.params["GF_MAX_HOR_DIST"],
+        n, e, alt = safety.braking_point(v.pos, v.vel, v.limits.accel)  # PX4 tests where a stop would end
+        why = safety.breach(self.fence, v.home, n, e, alt, self.params["GF_MAX_HOR_DIST"],
                             self.params["GF_MAX_VER_DIST"])
         if why is None:
             if self.breached is not None:

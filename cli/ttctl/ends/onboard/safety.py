@@ -5,8 +5,9 @@ they would on PX4.
 
 - Geofence: the FENCE plan's inclusion and exclusion polygons (NAV_FENCE_POLYGON_VERTEX_*, param1
   the vertex count) and circles (NAV_FENCE_CIRCLE_*, param1 the radius), plus GF_MAX_HOR_DIST and
-  GF_MAX_VER_DIST from home (0: off). Inside at least one inclusion area (when there is one) and
-  outside every exclusion area, or the fence is breached and GF_ACTION acts once per breach:
+  GF_MAX_VER_DIST from home (0: off), tested where the vehicle would stop if it braked now (PX4's
+  breach prediction). Inside at least one inclusion area (when there is one) and outside every
+  exclusion area, or the fence is breached and GF_ACTION acts once per breach:
   0 none, 1 warning, 2 hold, 3 return, 5 land (4, flight termination, lands: a simulation does not
   drop out of the sky). SYS_STATUS reports the fence present, enabled and healthy until breached.
 - Rally points (RALLY plan, NAV_RALLY_POINT): a return flies to the closest of home and the rally
@@ -116,6 +117,15 @@ def breach(areas: list[Area], home: Home, n: float, e: float, alt: float, max_ho
     if any(a.contains(home, n, e) for a in areas if not a.inclusion):
         return "inside an exclusion fence"
     return None
+
+
+def braking_point(pos: list[float], vel: list[float], accel: float) -> tuple[float, float, float]:
+    """Where the vehicle would come to rest braking at `accel` now (north, east, altitude): PX4's
+    navigator tests this point, not the position, so a hold stops at the fence, not past it."""
+    speed = math.hypot(vel[0], vel[1])
+    ahead = speed / (2 * accel)  # braking distance / speed
+    climb = max(0.0, -vel[2])
+    return pos[0] + vel[0] * ahead, pos[1] + vel[1] * ahead, -pos[2] + climb * climb / (2 * accel)
 
 
 def rally_points(items: list[Any]) -> list[tuple[float, float]]:
