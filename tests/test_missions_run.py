@@ -85,6 +85,20 @@ class Sim:
             self.send(it)
         raise AssertionError("the upload never ended")
 
+    def texts(self) -> list[str]:
+        """STATUSTEXTs as a ground station shows them: chunks with one id joined."""
+        out: list[str] = []
+        parts: dict[int, list[str]] = {}
+        for m in self.got:
+            if isinstance(m, self.b.Statustext):
+                if m.id == 0:
+                    out.append(m.text)
+                else:
+                    parts.setdefault(m.id, []).append(m.text)
+                    if len(m.text.encode()) < 50:
+                        out.append("".join(parts.pop(m.id)))
+        return out
+
     def currents(self) -> list[int]:
         return [m.seq for m in self.got if isinstance(m, self.b.MissionCurrent)]
 
@@ -224,7 +238,7 @@ def test_items_the_vehicle_cannot_fly_are_refused_at_upload_by_name(bad: str, co
     if bad == "lat":
         item.x = 91 * 10_000_000
     assert s.upload([s.item(C.MAV_CMD_NAV_WAYPOINT, 5, 0, 4), item]) == code
-    assert any("item 1 refused" in t for t in [m.text for m in s.got if isinstance(m, s.b.Statustext)])
+    assert any(t.startswith("item 1 refused: ") for t in s.texts())
     assert s.ap.missions is not None and s.ap.missions.mission() == []
 
 
@@ -437,3 +451,13 @@ def test_mission_start_with_a_first_item() -> None:
     assert s.command(C.MAV_CMD_MISSION_START, 1) == 0
     assert s.run(60, lambda: s.ap.runner is not None and s.ap.runner.state == COMPLETE)
     assert s.reached() == [1, 2] and s.at(8, 8) and s.v.pos[0] < 8.5  # item 0, 20 m north, never flown
+
+
+def test_an_altitude_the_vehicle_cannot_fly_is_refused_at_upload() -> None:
+    s = Sim()
+    C = s.C
+    assert s.upload([s.item(C.MAV_CMD_NAV_WAYPOINT, 5, 0, 4), s.item(C.MAV_CMD_NAV_WAYPOINT, 5, 5, 500)]) == 12
+    assert "item 1 refused: NAV_WAYPOINT: altitude 500 m above home is outside 0..120 m" in s.texts()
+    high = s.item(C.MAV_CMD_NAV_WAYPOINT, 5, 5, 295 + 30)
+    high.frame = int(s.F.MAV_FRAME_GLOBAL_INT)  # above mean sea level: 30 m above home
+    assert s.upload([high]) == 0

@@ -69,6 +69,7 @@ class Autopilot:
         """The ground-station side's mission protocol, and how to tell every ground station."""
         self.missions = missions
         missions.on_plan = self._plan_changed
+        missions.altitude_problem = self._altitude_problem
         self.runner = MissionRunner(self.b, self.vehicle, missions.mission, emit, self.say)
 
     # -- parameters -----------------------------------------------------------------------------
@@ -100,6 +101,17 @@ class Autopilot:
             self.rally = safety.rally_points(self.missions.rally())
             self._place_rally()
             self.say(INFO, f"rally points: {len(self.rally)}")
+
+    def _altitude_problem(self, item: Any) -> str | None:
+        """Why a mission item's altitude cannot be flown (above home, within the vehicle's limits)."""
+        F, v = self.b.MavFrame, self.vehicle
+        alt = float(item.z)
+        if item.frame in (int(F.MAV_FRAME_GLOBAL), int(F.MAV_FRAME_GLOBAL_INT)):
+            alt -= v.home.alt
+        top = v.limits.max_alt if isinstance(v, SimVehicle) else math.inf
+        if not 0 <= alt <= top:
+            return f"altitude {alt:g} m above home is outside 0..{top:g} m"
+        return None
 
     def _place_rally(self) -> None:
         if isinstance(self.vehicle, SimVehicle):

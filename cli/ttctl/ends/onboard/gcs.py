@@ -40,6 +40,7 @@ class GroundStations:
         self.log = log or (lambda text: None)
         self.out: list[tuple[Any, Hashable]] = []
         self._peer_links: dict[tuple[int, int], Hashable] = {}
+        self._text_id = 0  # the last long STATUSTEXT's id
         ap.attach_missions(Missions(b, sysid, compid, self._to_peer, self.log, warn=self._warn),
                            emit=lambda msg: self.out.append((msg, None)))
         self.builders: dict[int, Callable[[Snapshot], Any]] = {
@@ -77,7 +78,17 @@ class GroundStations:
         self.say(WARNING, text)
 
     def say(self, severity: int, text: str) -> None:
-        self.out.append((self.b.Statustext(severity=severity, text=text.encode()[:50].decode("utf-8", "ignore")), None))
+        """STATUSTEXT to every ground station; a text longer than its 50 bytes goes in chunks with
+        one id (MAVLink 2's long STATUSTEXT, as PX4 sends it: QGroundControl and MAVSDK join them)."""
+        chunks = _chunks(text, 50)[:4]
+        if len(chunks) == 1:
+            self.out.append((self.b.Statustext(severity=severity, text=chunks[0]), None))
+            return
+        self._text_id = self._text_id % 65535 + 1
+        if len(chunks[-1].encode()) == 50:
+            chunks.append("")  # a null ends the sequence
+        for i, chunk in enumerate(chunks):
+            self.out.append((self.b.Statustext(severity=severity, text=chunk, id=self._text_id, chunk_seq=i), None))
 
     # -- in ---------------------------------------------------------------------------------------
     def _for_us(self, msg: Any) -> bool:
@@ -249,6 +260,22 @@ class GroundStations:
         times = [t for t in (self.rates.next_due(), self.ap.missions.deadline() if self.ap.missions else None)
                  if t is not None]
         return min(times) if times else None
+
+
+def _chunks(text: str, size: int) -> list[str]:
+    """`text` cut into pieces of at most `size` UTF-8 bytes, never inside a character."""
+    out: list[str] = []
+    cur: list[str] = []
+    n = 0
+    for ch in text:
+        k = len(ch.encode())
+        if n + k > size:
+            out.append("".join(cur))
+            cur, n = [], 0
+        cur.append(ch)
+        n += k
+    out.append("".join(cur))
+    return out
 
 
 __all__ = ["INFO", "GroundStations"]

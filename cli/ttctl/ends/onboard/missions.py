@@ -58,6 +58,7 @@ class Missions:
         self.log = log or (lambda text: None)
         self.warn = warn or self.log  # a refusal's words, for the ground station (STATUSTEXT)
         self.on_plan = on_plan or (lambda mission_type: None)  # a plan was replaced
+        self.altitude_problem: Callable[[Any], str | None] = lambda item: None  # why the vehicle cannot fly at it
         self.plans: dict[int, list[Any]] = {}
         self.upload: _Upload | None = None
 
@@ -248,9 +249,12 @@ class Missions:
             lat, lon = item.x / 1e7, item.y / 1e7
             if not (-90 <= lat <= 90 and -180 <= lon <= 180):
                 return int(R.MAV_MISSION_INVALID_PARAM5_X), f"{name}: position out of range"
-            if cmd != int(C.MAV_CMD_DO_SET_ROI_LOCATION) and cmd != int(C.MAV_CMD_NAV_LAND) \
-                    and not math.isfinite(item.z):
-                return int(R.MAV_MISSION_INVALID_PARAM7), f"{name}: altitude is not a number"
+            if cmd not in (int(C.MAV_CMD_DO_SET_ROI_LOCATION), int(C.MAV_CMD_DO_SET_ROI), int(C.MAV_CMD_NAV_LAND)):
+                if not math.isfinite(item.z):
+                    return int(R.MAV_MISSION_INVALID_PARAM7), f"{name}: altitude is not a number"
+                why = self.altitude_problem(item)
+                if why is not None:
+                    return int(R.MAV_MISSION_INVALID_PARAM7), f"{name}: {why}"
         return None
 
 
