@@ -65,10 +65,14 @@ class Autopilot:
     def tablet_heard(self) -> float | None:
         return self.heard.get(TABLET)
 
-    def attach_missions(self, missions: Missions, emit: Callable[[Any], None]) -> None:
-        """The ground-station side's mission protocol, and how to tell every ground station."""
+    def attach_missions(self, missions: Missions, emit: Callable[[Any], None],
+                        warn: Callable[[str], None] | None = None) -> None:
+        """The ground-station side's mission protocol, how to tell every ground station, and how
+        to tell them why an item was refused."""
         self.missions = missions
         missions.on_plan = self._plan_changed
+        if warn is not None:
+            missions.warn = warn
         missions.altitude_problem = self._altitude_problem
         self.runner = MissionRunner(self.b, self.vehicle, missions.mission, emit, self.say)
 

@@ -38,11 +38,10 @@ class GroundStations:
         self.boot = boot
         self.unix = unix or (lambda now: now)
         self.log = log or (lambda text: None)
+        self._text_id = 0  # the last long STATUSTEXT's id
         self.out: list[tuple[Any, Hashable]] = []
         self._peer_links: dict[tuple[int, int], Hashable] = {}
-        self._text_id = 0  # the last long STATUSTEXT's id
-        ap.attach_missions(Missions(b, sysid, compid, self._to_peer, self.log, warn=self._warn),
-                           emit=lambda msg: self.out.append((msg, None)))
+        ap.missions = Missions(b, sysid, compid, self._to_peer, self.log)
         self.builders: dict[int, Callable[[Snapshot], Any]] = {
             b.Heartbeat.MSG_ID: lambda s: telemetry.heartbeat(b, s),
             b.SysStatus.MSG_ID: lambda s: telemetry.sys_status(b, s),
@@ -56,6 +55,7 @@ class GroundStations:
             b.VfrHud.MSG_ID: lambda s: telemetry.vfr_hud(b, s),
             b.MissionCurrent.MSG_ID: lambda s: telemetry.mission_current(b, s, len(self._mission())),
         }
+        ap.attach_missions(ap.missions, emit=lambda msg: self.out.append((msg, None)), warn=self._warn)
         ap.wrap_telemetry(self.builders)
         self.rates = telemetry.Rates(b, self.builders)
         self.now = boot

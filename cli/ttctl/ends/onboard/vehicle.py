@@ -153,11 +153,11 @@ class SimVehicle:
     target: tuple[float, float, float] | None = None  # n, e, d being flown to
     target_yaw: float | None = None
     route: list[Waypoint] = field(default_factory=list)
+    rally: list[tuple[float, float]] = field(default_factory=list)  # n, e: a return may land at one
     leg: int = -1
     hold_until: float | None = None
     speed_cap: float | None = None
     landed_after_return: bool = False
-    rally: list[tuple[float, float]] = field(default_factory=list)  # n, e: a return may land at one
 
     def __post_init__(self) -> None:
         if self.energy_wh < 0:
