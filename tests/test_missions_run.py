@@ -439,6 +439,7 @@ def test_fence_polygons_and_distance_limits() -> None:
     bad = s.item(C.MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION, 0, 0, p1=2, kind=1)
     assert s.upload([bad, bad], kind=1) == 6  # two vertices: MAV_MISSION_INVALID_PARAM1
     assert s.upload([s.item(C.MAV_CMD_NAV_WAYPOINT, 1, 1, 5, kind=1)], kind=1) == 3  # not a fence item
+    assert s.upload([s.item(C.MAV_CMD_NAV_FENCE_RETURN_POINT, 1, 1, 5, kind=1)], kind=1) == 3  # never used here
 
 
 def test_mission_start_with_a_first_item() -> None:

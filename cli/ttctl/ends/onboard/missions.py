@@ -48,8 +48,8 @@ class Missions:
         self.cmd_names = {int(v): k.removeprefix("MAV_CMD_") for k, v in C.__members__.items()}
         self.fence_items = {int(C.MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION),
                             int(C.MAV_CMD_NAV_FENCE_POLYGON_VERTEX_EXCLUSION),
-                            int(C.MAV_CMD_NAV_FENCE_CIRCLE_INCLUSION), int(C.MAV_CMD_NAV_FENCE_CIRCLE_EXCLUSION),
-                            int(C.MAV_CMD_NAV_FENCE_RETURN_POINT)}
+                            int(C.MAV_CMD_NAV_FENCE_CIRCLE_INCLUSION), int(C.MAV_CMD_NAV_FENCE_CIRCLE_EXCLUSION)}
+        # NAV_FENCE_RETURN_POINT is refused: a breach's return goes home or to a rally point, as on PX4
         self.rally_items = {int(C.MAV_CMD_NAV_RALLY_POINT)}
         self.frames = {int(F.MAV_FRAME_GLOBAL_RELATIVE_ALT), int(F.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT),
                        int(F.MAV_FRAME_GLOBAL), int(F.MAV_FRAME_GLOBAL_INT), int(F.MAV_FRAME_MISSION)}

@@ -99,7 +99,7 @@ def fence_areas(b: Any, items: list[Any]) -> list[Area]:
             out.append(Area(cmd == int(C.MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION),
                             [(v.x / 1e7, v.y / 1e7) for v in vertices]))
             i += count
-        else:  # the return point
+        else:  # nothing else is taken at upload
             i += 1
     return out
 
