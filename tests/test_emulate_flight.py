@@ -150,9 +150,11 @@ def test_mavproxy_names_the_modes_sets_them_and_integer_parameters(tmp_path: Pat
         if p.poll() is None:
             p.kill()
             p.communicate()
-    from ttctl.ends.onboard.params import default_params
+    from conftest import shipped
+    from ttctl.ends.onboard.autopilot import Autopilot
+    from ttctl.ends.onboard.vehicle import SimVehicle
 
-    assert f"Received {len(default_params())} parameters" in out, out[-2000:]
+    assert f"Received {len(Autopilot(shipped(), SimVehicle()).params.params)} parameters" in out, out[-2000:]
     assert re.search(r"Available modes:.*LOITER.*MISSION.*RTL.*OFFBOARD", out)
     assert "LOITER>" in out and "Mode TAKEOFF" in out and "Mode RTL" in out, out[-2000:]
     assert re.search(r"NAV_DLL_ACT\s+3\b", out), out[-3000:]  # an INT32 read back as the integer set

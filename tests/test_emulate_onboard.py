@@ -223,9 +223,11 @@ def test_mavproxy_connects_fetches_parameters_arms_and_takes_off(tmp_path: Path,
             p.kill()
             p.communicate()
     assert "Detected vehicle 1:1" in out and "GPS lock" in out
-    from ttctl.ends.onboard.params import default_params
+    from conftest import shipped
+    from ttctl.ends.onboard.autopilot import Autopilot
+    from ttctl.ends.onboard.vehicle import SimVehicle
 
-    assert f"Received {len(default_params())} parameters" in out, out[-2000:]
+    assert f"Received {len(Autopilot(shipped(), SimVehicle()).params.params)} parameters" in out, out[-2000:]
     assert "taking off" in node.stderr and "hovering" in node.stderr
     import re
 

@@ -151,11 +151,13 @@ def _refused(proc: subprocess.CompletedProcess[str], words: str) -> None:
 @pytest.mark.parametrize("case", ["no-runtime", "errors", "missing-include", "no-file"])
 def test_a_dialect_that_cannot_carry_the_link_is_refused_before_anything_starts(own: Path, case: str,
                                                                                 bindings_cache: Path) -> None:
+    from ttctl.wire.contract import RUNTIME_MESSAGES
+
     files = {
         "no-runtime": ('<mavlink><messages><message id="51000" name="X"><description>x</description>'
                        '<field type="uint8_t" name="a">a</field></message></messages></mavlink>',
                        "lacks the runtime's messages (TT_FILE_OFFER, TT_FILE_STATUS, TT_FILE_DATA, TT_FILE_REQUEST "
-                       "and 40 more): add <include>ttapi.xml</include> to it"),
+                       f"and {len(RUNTIME_MESSAGES) - 4} more): add <include>ttapi.xml</include> to it"),
         "errors": ('<mavlink><include>ttapi.xml</include><messages><message id="51000" name="X"><description>x'
                    '</description><field type="uint8_t" name="a" enum="NOPE">a</field></message></messages></mavlink>',
                    "1 error(s) in the dialect; nothing started"),

@@ -94,7 +94,7 @@ def test_link_loss_hovers_then_returns_and_lands() -> None:
     v.takeoff(5)
     fly(v, State.HOVERING)
     t = 0.0
-    ap.heard_tablet(0.0)
+    ap.commanded_by("tablet", 0.0)  # the tablet commands the flight: its link is watched
     v.goto(20, 0, 5)
     while t < 200 and v.state is not State.LANDED:
         t += 0.05

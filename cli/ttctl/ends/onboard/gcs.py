@@ -38,6 +38,7 @@ class GroundStations:
         self.boot = boot
         self.unix = unix or (lambda now: now)
         self.log = log or (lambda text: None)
+        self._text_id = 0  # the last long STATUSTEXT's id
         self.out: list[tuple[Any, Hashable]] = []
         self._peer_links: dict[tuple[int, int], Hashable] = {}
         self._told_unsupported: set[int] = set()
@@ -56,6 +57,8 @@ class GroundStations:
             **services.streams(b, lambda: self._boot_ms(None), lambda: self._unix_us(None)),
             b.MissionCurrent.MSG_ID: lambda s: telemetry.mission_current(b, s, len(self._mission())),
         }
+        ap.attach_missions(ap.missions, emit=lambda msg: self.out.append((msg, None)), warn=self._warn)
+        ap.wrap_telemetry(self.builders)
         self.rates = telemetry.Rates(b, self.builders)
         self.now = boot
         self.services = services.Services(b, lambda: self._boot_ms(None), lambda: self._unix_us(None),
@@ -78,8 +81,22 @@ class GroundStations:
     def _to_peer(self, msg: Any, peer: tuple[int, int]) -> None:
         self.out.append((msg, self._peer_links.get(peer)))
 
+    def _warn(self, text: str) -> None:
+        self.log(text)
+        self.say(WARNING, text)
+
     def say(self, severity: int, text: str) -> None:
-        self.out.append((self.b.Statustext(severity=severity, text=text.encode()[:50].decode("utf-8", "ignore")), None))
+        """STATUSTEXT to every ground station; a text longer than its 50 bytes goes in chunks with
+        one id (MAVLink 2's long STATUSTEXT, as PX4 sends it: QGroundControl and MAVSDK join them)."""
+        chunks = _chunks(text, 50)[:4]
+        if len(chunks) == 1:
+            self.out.append((self.b.Statustext(severity=severity, text=chunks[0]), None))
+            return
+        self._text_id = self._text_id % 65535 + 1
+        if len(chunks[-1].encode()) == 50:
+            chunks.append("")  # a null ends the sequence
+        for i, chunk in enumerate(chunks):
+            self.out.append((self.b.Statustext(severity=severity, text=chunk, id=self._text_id, chunk_seq=i), None))
 
     # -- in ---------------------------------------------------------------------------------------
     def _for_us(self, msg: Any) -> bool:
@@ -94,6 +111,7 @@ class GroundStations:
             return  # ourselves (or our own onboard computer), echoed
         b = self.b
         self._peer_links[peer] = link
+        self.ap.heard_gcs(peer[0], now, msg)
         if isinstance(msg, b.Ping):
             if msg.target_system == 0 and msg.target_component == 0:  # a request: answer it
                 self._to_peer(b.Ping(time_usec=msg.time_usec, seq=msg.seq, target_system=peer[0],
@@ -105,6 +123,8 @@ class GroundStations:
             return
         if isinstance(msg, (b.CommandLong, b.CommandInt)):
             result, extra = self._command(now, msg)
+            if result == b.MavResult.MAV_RESULT_ACCEPTED and msg.command in self.ap.flight_commands:
+                self.ap.commanded_by(peer[0], now)
             self._to_peer(b.CommandAck(command=msg.command, result=int(result), target_system=peer[0],
                                            target_component=peer[1]), peer)
             for m in extra:
@@ -131,6 +151,8 @@ class GroundStations:
             self.ap.flight.complain(now, "attitude is not flown")  # OFFBOARD stays refused
         elif isinstance(msg, b.RequestDataStream):
             self.rates.set_all(msg.req_message_rate if msg.start_stop else 0)
+        elif isinstance(msg, b.MissionSetCurrent):
+            self.ap.set_current(msg.seq)
         elif self.ap.missions is not None and type(msg).__name__.startswith("Mission"):
             self.ap.missions.on_message(now, msg)
 
@@ -175,7 +197,8 @@ class GroundStations:
             if cmd == C.MAV_CMD_DO_REPOSITION:
                 return self._reposition(msg), []
             if cmd == C.MAV_CMD_MISSION_START:
-                self.ap.start_mission()
+                first = _arg(p[0], -1)
+                self.ap.start_mission(int(first) if first >= 0 and first == int(first) else None)
                 return A.MAV_RESULT_ACCEPTED, []
             if cmd == C.MAV_CMD_SET_MESSAGE_INTERVAL:
                 ok = self.rates.set_interval(int(_arg(p[0], -1)), _arg(p[1], 0))
@@ -187,6 +210,11 @@ class GroundStations:
                          }.get(cmd, int(_arg(p[0], -1)))
                 reply = self._requested(msgid)
                 return (A.MAV_RESULT_ACCEPTED, [reply]) if reply is not None else (A.MAV_RESULT_UNSUPPORTED, [])
+            position = (msg.x / 1e7, msg.y / 1e7, msg.z) if isinstance(msg, self.b.CommandInt) \
+                else (msg.param5, msg.param6, msg.param7)
+            mission_result = self.ap.mission_command(int(cmd), p, position)
+            if mission_result is not None:
+                return mission_result, []
         except Refused as e:
             self.log(f"command {cmd} refused: {e}")
             self.say(WARNING, f"refused: {e}")
@@ -261,6 +289,22 @@ class GroundStations:
         times = [t for t in (self.rates.next_due(), self.ap.missions.deadline() if self.ap.missions else None,
                              self.ap.flight.wakeup()) if t is not None]
         return min(times) if times else None
+
+
+def _chunks(text: str, size: int) -> list[str]:
+    """`text` cut into pieces of at most `size` UTF-8 bytes, never inside a character."""
+    out: list[str] = []
+    cur: list[str] = []
+    n = 0
+    for ch in text:
+        k = len(ch.encode())
+        if n + k > size:
+            out.append("".join(cur))
+            cur, n = [], 0
+        cur.append(ch)
+        n += k
+    out.append("".join(cur))
+    return out
 
 
 __all__ = ["INFO", "GroundStations"]

@@ -1,8 +1,10 @@
 """The MAVLink mission protocol on the vehicle's side, sans-IO: upload (MISSION_COUNT, then a
 MISSION_REQUEST_INT per item, re-asked when an item does not come), download
-(MISSION_REQUEST_LIST, MISSION_COUNT, MISSION_ITEM_INT per request), clear, and the conversion
-of a mission into the vehicle's waypoints. Mission, fence and rally plans are kept apart, by
-mission_type, as the protocol asks; only the mission is flown.
+(MISSION_REQUEST_LIST, MISSION_COUNT, MISSION_ITEM_INT per request) and clear. Mission, fence
+and rally plans are kept apart, by mission_type, as the protocol asks. An item the vehicle
+cannot fly (or a fence or rally item it cannot honour) is refused at upload with the MAVLink
+result that says why, naming the item, as PX4's mission feasibility checks do; the mission is
+flown by mission_run.py, the fence and rally points used by safety.py.
 """
 
 from __future__ import annotations
@@ -13,7 +15,6 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ...wire.bindings import Bindings
-from .vehicle import EARTH_RADIUS, Home, Waypoint
 
 RETRY = 1.0  # s before an item is asked for again
 RETRIES = 5
@@ -33,27 +34,89 @@ class Missions:
     """`send(msg, peer)` answers the ground station that asked."""
 
     def __init__(self, bindings: Bindings, sysid: int, compid: int, send: Callable[[Any, tuple[int, int]], None],
-                 log: Callable[[str], None] | None = None) -> None:
+                 log: Callable[[str], None] | None = None, warn: Callable[[str], None] | None = None,
+                 on_plan: Callable[[int], None] | None = None) -> None:
         self.b = b = bindings
         C, F = b.MavCmd, b.MavFrame
-        self.flown = {int(C.MAV_CMD_NAV_WAYPOINT), int(C.MAV_CMD_NAV_TAKEOFF), int(C.MAV_CMD_NAV_LOITER_TIME),
-                      int(C.MAV_CMD_NAV_LAND), int(C.MAV_CMD_NAV_RETURN_TO_LAUNCH), int(C.MAV_CMD_NAV_LOITER_UNLIM),
-                      int(C.MAV_CMD_DO_CHANGE_SPEED)}
-        self.unplaced = {int(C.MAV_CMD_DO_CHANGE_SPEED)}  # items without a position
+        self.placed = {int(C.MAV_CMD_NAV_WAYPOINT), int(C.MAV_CMD_NAV_TAKEOFF), int(C.MAV_CMD_NAV_LOITER_TIME),
+                       int(C.MAV_CMD_NAV_LAND), int(C.MAV_CMD_NAV_LOITER_UNLIM), int(C.MAV_CMD_DO_SET_ROI_LOCATION),
+                       int(C.MAV_CMD_DO_SET_ROI)}
+        self.unplaced = {int(C.MAV_CMD_DO_CHANGE_SPEED), int(C.MAV_CMD_NAV_DELAY), int(C.MAV_CMD_DO_JUMP),
+                         int(C.MAV_CMD_CONDITION_YAW), int(C.MAV_CMD_DO_SET_ROI_NONE),
+                         int(C.MAV_CMD_DO_LAND_START)}  # items without a position
+        self.flown = self.placed | self.unplaced | {int(C.MAV_CMD_NAV_RETURN_TO_LAUNCH)}
+        self.cmd_names = {int(v): k.removeprefix("MAV_CMD_") for k, v in C.__members__.items()}
+        self.fence_items = {int(C.MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION),
+                            int(C.MAV_CMD_NAV_FENCE_POLYGON_VERTEX_EXCLUSION),
+                            int(C.MAV_CMD_NAV_FENCE_CIRCLE_INCLUSION), int(C.MAV_CMD_NAV_FENCE_CIRCLE_EXCLUSION)}
+        # NAV_FENCE_RETURN_POINT is refused: a breach's return goes home or to a rally point, as on PX4
+        self.rally_items = {int(C.MAV_CMD_NAV_RALLY_POINT)}
         self.frames = {int(F.MAV_FRAME_GLOBAL_RELATIVE_ALT), int(F.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT),
                        int(F.MAV_FRAME_GLOBAL), int(F.MAV_FRAME_GLOBAL_INT), int(F.MAV_FRAME_MISSION)}
         self.sysid, self.compid = sysid, compid
         self.send = send
         self.log = log or (lambda text: None)
+        self.warn = warn or self.log  # a refusal's words, for the ground station (STATUSTEXT)
+        self.on_plan = on_plan or (lambda mission_type: None)  # a plan was replaced
+        self.altitude_problem: Callable[[Any], str | None] = lambda item: None  # why the vehicle cannot fly at it
         self.plans: dict[int, list[Any]] = {}
         self.upload: _Upload | None = None
 
     def mission(self) -> list[Any]:
         return self.plans.get(int(self.b.MavMissionType.MAV_MISSION_TYPE_MISSION), [])
 
+    def fence(self) -> list[Any]:
+        return self.plans.get(int(self.b.MavMissionType.MAV_MISSION_TYPE_FENCE), [])
+
+    def rally(self) -> list[Any]:
+        return self.plans.get(int(self.b.MavMissionType.MAV_MISSION_TYPE_RALLY), [])
+
     def _ack(self, peer: tuple[int, int], result: int, mission_type: int) -> None:
         self.send(self.b.MissionAck(target_system=peer[0], target_component=peer[1], type=result,
                                    mission_type=mission_type), peer)
+
+    def _global(self, frame: int) -> bool:
+        F = self.b.MavFrame
+        return frame in (int(F.MAV_FRAME_GLOBAL), int(F.MAV_FRAME_GLOBAL_RELATIVE_ALT), int(F.MAV_FRAME_GLOBAL_INT),
+                         int(F.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT), int(F.MAV_FRAME_GLOBAL_TERRAIN_ALT))
+
+    def _as_int(self, msg: Any) -> Any:
+        """A legacy MISSION_ITEM (latitude and longitude in float degrees) as a MISSION_ITEM_INT;
+        a position that is not a number becomes one out of range (refused as such)."""
+        item = self.b.MissionItemInt(**{name: getattr(msg, name) for name in self.b.MissionItemInt.FIELDS
+                                        if name not in ("x", "y")})
+        scale = 1e7 if self._global(msg.frame) else 1.0
+        for name in ("x", "y"):
+            v = float(getattr(msg, name)) * scale
+            setattr(item, name, round(v) if math.isfinite(v) and abs(v) < 2**31 - 1 else 2**31 - 1)
+        item._mav_sysid, item._mav_compid = msg.get_srcSystem(), msg.get_srcComponent()
+        return item
+
+    def _check(self, item: Any, up: _Upload) -> tuple[int, str] | None:
+        T, R = self.b.MavMissionType, self.b.MavMissionResult
+        if up.mission_type == int(T.MAV_MISSION_TYPE_MISSION):
+            return self.check_item(item, up.count)
+        allowed = self.fence_items if up.mission_type == int(T.MAV_MISSION_TYPE_FENCE) else \
+            self.rally_items if up.mission_type == int(T.MAV_MISSION_TYPE_RALLY) else set()
+        name = self._name(item.command)
+        if item.command not in allowed:
+            return int(R.MAV_MISSION_UNSUPPORTED), f"{name} is not a {self._type_name(up.mission_type)} item"
+        if not (-90 <= item.x / 1e7 <= 90 and -180 <= item.y / 1e7 <= 180):
+            return int(R.MAV_MISSION_INVALID_PARAM5_X), f"{name}: position out of range"
+        if item.command in (int(self.b.MavCmd.MAV_CMD_NAV_FENCE_CIRCLE_INCLUSION),
+                            int(self.b.MavCmd.MAV_CMD_NAV_FENCE_CIRCLE_EXCLUSION)) \
+                and not (math.isfinite(item.param1) and item.param1 > 0):
+            return int(R.MAV_MISSION_INVALID_PARAM1), f"{name}: radius {item.param1:g} m"
+        if item.command in (int(self.b.MavCmd.MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION),
+                            int(self.b.MavCmd.MAV_CMD_NAV_FENCE_POLYGON_VERTEX_EXCLUSION)) \
+                and not (math.isfinite(item.param1) and 3 <= item.param1 <= up.count):
+            return int(R.MAV_MISSION_INVALID_PARAM1), f"{name}: {item.param1:g} vertices"
+        return None
+
+    def _type_name(self, mission_type: int) -> str:
+        T = self.b.MavMissionType
+        return {int(T.MAV_MISSION_TYPE_MISSION): "mission", int(T.MAV_MISSION_TYPE_FENCE): "fence",
+                int(T.MAV_MISSION_TYPE_RALLY): "rally"}.get(mission_type, f"mission type {mission_type}")
 
     def _ask(self, now: float) -> None:
         up = self.upload
@@ -71,13 +134,16 @@ class Missions:
                 self.plans[msg.mission_type] = []
                 self.upload = None
                 self._ack(peer, int(R.MAV_MISSION_ACCEPTED), msg.mission_type)
+                self.on_plan(msg.mission_type)
                 return
             if msg.count > 1000:
                 self._ack(peer, int(R.MAV_MISSION_NO_SPACE), msg.mission_type)
                 return
             self.upload = _Upload(peer, msg.mission_type, msg.count)
             self._ask(now)
-        elif isinstance(msg, b.MissionItemInt):
+        elif isinstance(msg, (b.MissionItemInt, b.MissionItem)):
+            if isinstance(msg, b.MissionItem):
+                msg = self._as_int(msg)
             up = self.upload
             if up is None or peer != up.peer:
                 return
@@ -86,21 +152,21 @@ class Missions:
                     return  # a repeat of one we have
                 self._ask(now)  # out of order: ask for the next one we need
                 return
-            problem = self.check_item(msg) if up.mission_type == int(b.MavMissionType.MAV_MISSION_TYPE_MISSION) \
-                else None
+            problem = self._check(msg, up)
             if problem is not None:
                 code, why = problem
-                self.log(f"mission item {msg.seq} refused: {why}")
                 self.upload = None
                 self._ack(peer, code, up.mission_type)
+                self.warn(f"item {msg.seq} refused: {why}")  # the words follow the refusal
                 return
             up.items.append(msg)
             up.tries = 0
             if len(up.items) == up.count:
                 self.plans[up.mission_type] = up.items
                 self.upload = None
-                self.log(f"mission of {up.count} items received")
+                self.log(f"{self._type_name(up.mission_type)} of {up.count} items received")
                 self._ack(peer, int(R.MAV_MISSION_ACCEPTED), up.mission_type)
+                self.on_plan(up.mission_type)
             else:
                 self._ask(now)
         elif isinstance(msg, b.MissionRequestList):
@@ -113,7 +179,11 @@ class Missions:
                 self._ack(peer, int(R.MAV_MISSION_INVALID_SEQUENCE), msg.mission_type)
                 return
             item = plan[msg.seq]
-            out = b.MissionItemInt(**{name: getattr(item, name) for name in b.MissionItemInt.FIELDS})
+            legacy = isinstance(msg, b.MissionRequest)  # answered in kind, as PX4 does
+            out = (b.MissionItem if legacy else b.MissionItemInt)(
+                **{name: getattr(item, name) for name in b.MissionItemInt.FIELDS})
+            if legacy and self._global(item.frame):
+                out.x, out.y = item.x / 1e7, item.y / 1e7
             out.target_system, out.target_component = peer
             self.send(out, peer)
         elif isinstance(msg, b.MissionClearAll):
@@ -122,6 +192,8 @@ class Missions:
             for t in types:
                 self.plans[t] = []
             self._ack(peer, int(R.MAV_MISSION_ACCEPTED), msg.mission_type)
+            for t in types:
+                self.on_plan(t)
         elif isinstance(msg, b.MissionAck):
             pass  # the end of a download
 
@@ -138,61 +210,53 @@ class Missions:
     def deadline(self) -> float | None:
         return self.upload.asked_at + RETRY if self.upload is not None else None
 
-    def check_item(self, item: Any) -> tuple[int, str] | None:
-        """Why a mission item cannot be flown here, with its MAV_MISSION_RESULT; None if it can."""
+    def _name(self, command: int) -> str:
+        return self.cmd_names.get(command, f"command {command}")
+
+    def check_item(self, item: Any, count: int = 0) -> tuple[int, str] | None:
+        """Why a mission item cannot be flown here, with its MAV_MISSION_RESULT; None if it can.
+        `count`: the mission's length (DO_JUMP's target must be in it)."""
         C, R = self.b.MavCmd, self.b.MavMissionResult
-        if item.command not in self.flown:
-            return int(R.MAV_MISSION_UNSUPPORTED), f"command {item.command} is not supported"
-        if item.command in self.unplaced:
+        name, cmd = self._name(item.command), item.command
+        if cmd not in self.flown:
+            return int(R.MAV_MISSION_UNSUPPORTED), f"{name} is not supported"
+        params = (item.param1, item.param2, item.param3, item.param4)
+        if cmd == int(C.MAV_CMD_DO_JUMP):
+            if not (math.isfinite(item.param1) and 0 <= item.param1 < count and int(item.param1) != item.seq):
+                return int(R.MAV_MISSION_INVALID_PARAM1), f"{name} to item {item.param1:g}: no such item"
+            if not (math.isfinite(item.param2) and 0 <= item.param2 <= 10_000):
+                return int(R.MAV_MISSION_INVALID_PARAM2), f"{name} repeat {item.param2:g}: 0..10000 only"
+            return None
+        if cmd == int(C.MAV_CMD_NAV_DELAY):
+            if not math.isfinite(item.param1):
+                return int(R.MAV_MISSION_INVALID_PARAM1), f"{name} delay is not a number"
+            if item.param1 < 0:
+                return int(R.MAV_MISSION_UNSUPPORTED), f"{name} until a time of day is not supported"
+            return None
+        if cmd == int(C.MAV_CMD_CONDITION_YAW):
+            if not all(math.isfinite(x) for x in params):
+                return int(R.MAV_MISSION_INVALID_PARAM1), f"{name} needs an angle"
+            return None
+        if cmd == int(C.MAV_CMD_DO_SET_ROI) and int(_finite(item.param1)) not in (0, 3):
+            return int(R.MAV_MISSION_UNSUPPORTED), f"{name} mode {item.param1:g}: only none and location"
+        if cmd in self.unplaced:
             return None
         if item.frame not in self.frames:
-            return int(R.MAV_MISSION_UNSUPPORTED_FRAME), f"frame {item.frame} is not supported"
-        if item.command in (int(C.MAV_CMD_NAV_WAYPOINT), int(C.MAV_CMD_NAV_TAKEOFF), int(C.MAV_CMD_NAV_LOITER_TIME)):
-            lat, lon = self._latlon(item)
-            if not (-90 <= lat <= 90 and -180 <= lon <= 180) or not math.isfinite(item.z):
-                return int(R.MAV_MISSION_INVALID_PARAM5_X), "position out of range"
+            return int(R.MAV_MISSION_UNSUPPORTED_FRAME), f"{name}: frame {item.frame} is not supported"
+        if cmd == int(C.MAV_CMD_NAV_LOITER_TIME) and not (math.isfinite(item.param1) and item.param1 >= 0):
+            return int(R.MAV_MISSION_INVALID_PARAM1), f"{name}: loiter time {item.param1:g} s"
+        if cmd in self.placed:
+            lat, lon = item.x / 1e7, item.y / 1e7
+            if not (-90 <= lat <= 90 and -180 <= lon <= 180):
+                return int(R.MAV_MISSION_INVALID_PARAM5_X), f"{name}: position out of range"
+            if cmd not in (int(C.MAV_CMD_DO_SET_ROI_LOCATION), int(C.MAV_CMD_DO_SET_ROI), int(C.MAV_CMD_NAV_LAND)):
+                if not math.isfinite(item.z):
+                    return int(R.MAV_MISSION_INVALID_PARAM7), f"{name}: altitude is not a number"
+                why = self.altitude_problem(item)
+                if why is not None:
+                    return int(R.MAV_MISSION_INVALID_PARAM7), f"{name}: {why}"
         return None
 
-    @staticmethod
-    def _latlon(item: Any) -> tuple[float, float]:
-        return item.x / 1e7, item.y / 1e7
 
-    def waypoints(self, items: list[Any], home: Home, here: tuple[float, float, float]) -> list[Waypoint]:
-        """The mission as the vehicle flies it: positions in metres from home; take-off climbs where
-        it is, a land or return ends the list (the caller lands or returns)."""
-        C, F = self.b.MavCmd, self.b.MavFrame
-        out: list[Waypoint] = []
-        n, e, alt = here
-        speed: float | None = None
-        for item in items:
-            if item.command in (int(C.MAV_CMD_NAV_LAND), int(C.MAV_CMD_NAV_RETURN_TO_LAUNCH)):
-                break
-            if item.command == int(C.MAV_CMD_DO_CHANGE_SPEED):
-                speed = float(item.param2) if math.isfinite(item.param2) and item.param2 > 0 else None
-                continue
-            if item.command == int(C.MAV_CMD_NAV_LOITER_UNLIM):
-                continue
-            if item.x != 0 or item.y != 0:
-                lat, lon = self._latlon(item)
-                n = math.radians(lat - home.lat) * EARTH_RADIUS
-                e = math.radians(lon - home.lon) * EARTH_RADIUS * math.cos(math.radians(home.lat))
-            z = float(item.z)
-            if item.frame in (int(F.MAV_FRAME_GLOBAL), int(F.MAV_FRAME_GLOBAL_INT)):
-                z -= home.alt  # above mean sea level to above home
-            alt = max(0.5, z)
-            hold = max(0.0, float(item.param1)) if item.command in (int(C.MAV_CMD_NAV_WAYPOINT),
-                                                                    int(C.MAV_CMD_NAV_LOITER_TIME)) else 0.0
-            yaw = None if not math.isfinite(item.param4) or item.command == int(C.MAV_CMD_NAV_TAKEOFF) \
-                else math.radians(item.param4)
-            out.append(Waypoint(n, e, alt, yaw=yaw, speed=speed, hold=hold))
-        return out
-
-    def ends_with(self, items: list[Any]) -> str | None:
-        """'land' or 'return' if the mission says what to do at its end."""
-        C = self.b.MavCmd
-        for item in items:
-            if item.command == int(C.MAV_CMD_NAV_LAND):
-                return "land"
-            if item.command == int(C.MAV_CMD_NAV_RETURN_TO_LAUNCH):
-                return "return"
-        return None
+def _finite(x: float, default: float = -1.0) -> float:
+    return float(x) if math.isfinite(x) else default

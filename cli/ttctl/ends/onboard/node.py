@@ -26,7 +26,7 @@ from ...wire.contract import TtAction as TT
 from ...wire.contract import TtResult as RES
 from ..plugins import Context, Dispatcher, Plugin
 from ..runtime import Runner, unknown_note
-from .autopilot import Autopilot
+from .autopilot import TABLET, Autopilot
 from .gcs import GroundStations
 from .trajectory import TrajectoryError, parse_trajectory
 from .vehicle import Home, Refused, SimVehicle, State
@@ -65,6 +65,7 @@ class OnboardNode:
         self.log = log or (lambda text: None)
         self.vehicle = SimVehicle(home=cfg.home)
         self.ap = Autopilot(bindings, self.vehicle, cfg.sysid, say=self._say)
+        self.ap.clock = time.monotonic  # link-loss timeouts on the wall clock, as the links run
         self.started = 0.0
         self.gcs = GroundStations(bindings, self.ap, cfg.sysid, AUTOPILOT_COMPID, unix=self._unix, log=self.log)
         self.gcs_encoder = bindings.encoder(cfg.sysid, AUTOPILOT_COMPID, cfg.gcs_signing)
@@ -160,6 +161,8 @@ class OnboardNode:
             words = f"trajectory refused: {e}"
             self._say(4, words, tablet=False)
             return int(RES.TT_RESULT_FAILED), words
+        if msg.action != TT.TT_ACTION_SYNC_TIME:
+            self.ap.commanded_by(TABLET, self.vehicle_time)  # the tablet's link is the one watched now
         return int(RES.TT_RESULT_ACCEPTED)
 
     def _fly_file(self, name: str, speed: float) -> None:
@@ -194,6 +197,7 @@ class OnboardNode:
             x, y, z = msg.position
             try:
                 self.vehicle.goto(float(x), float(y), float(z))
+                self.ap.commanded_by(TABLET, self.vehicle_time)
             except Refused as e:
                 self.log(f"setpoint refused: {e}")
         self.dispatcher.dispatch(msg, self._ctx)

@@ -158,6 +158,7 @@ class SimVehicle:
     target: tuple[float, float, float] | None = None  # n, e, d being flown to
     target_yaw: float | None = None
     route: list[Waypoint] = field(default_factory=list)
+    rally: list[tuple[float, float]] = field(default_factory=list)  # n, e: a return may land at one
     leg: int = -1
     hold_until: float | None = None
     speed_cap: float | None = None
@@ -249,9 +250,11 @@ class SimVehicle:
         alt = self._alt(alt if alt is not None and alt > 0 else self.limits.return_alt)
         self.state = State.RETURNING
         self.route, self.leg = [], -1
-        # climb (never descend) to the return altitude first, then home, then land
+        # climb (never descend) to the return altitude first, then home (or the closest rally
+        # point), then land
+        dest = min([(0.0, 0.0), *self.rally], key=lambda p: math.hypot(p[0] - self.pos[0], p[1] - self.pos[1]))
         self.route = [Waypoint(self.pos[0], self.pos[1], max(alt, -self.pos[2])),
-                      Waypoint(0.0, 0.0, max(alt, -self.pos[2]))]
+                      Waypoint(dest[0], dest[1], max(alt, -self.pos[2]))]
         self.leg = 0
         self._start_leg()
 
