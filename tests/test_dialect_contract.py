@@ -62,13 +62,12 @@ def _used_message_classes() -> set[str]:
 
 def test_every_message_the_runtime_makes_is_in_the_contract() -> None:
     """A message the ends build from their bindings but the contract does not require would fail
-    at run time on a dialect that lacks it: the table must cover them all (the benchmarks' MAVLink
-    FTP baseline runs on the shipped dialect only)."""
+    at run time on a dialect that lacks it: the table must cover them all."""
     from ttctl.wire.contract import RUNTIME_MESSAGES
 
     used = _used_message_classes()
     assert len(used) > 20  # the scan finds them
-    assert used - set(RUNTIME_MESSAGES) <= {"FILE_TRANSFER_PROTOCOL"}
+    assert used - set(RUNTIME_MESSAGES) == set()
 
 
 def test_the_link_layer_imports_no_generated_package() -> None:
