@@ -462,3 +462,20 @@ def test_an_altitude_the_vehicle_cannot_fly_is_refused_at_upload() -> None:
     high = s.item(C.MAV_CMD_NAV_WAYPOINT, 5, 5, 295 + 30)
     high.frame = int(s.F.MAV_FRAME_GLOBAL_INT)  # above mean sea level: 30 m above home
     assert s.upload([high]) == 0
+
+
+def test_a_hold_during_the_missions_own_take_off_suspends_the_mission() -> None:
+    """A mission started on the ground takes off first; a hold meanwhile (the tablet's hover) is
+    still 'hovering' once the climb ends, but the hold is the tablet's, not the mission's: the
+    mission is suspended, the vehicle stays put. (Found by tests/test_emulate_promises.py: an
+    ACCEPTED hover, then the vehicle flew on to the next waypoint.)"""
+    s = Sim()
+    C = s.C
+    assert s.upload([s.item(C.MAV_CMD_NAV_WAYPOINT, 15, 0, 6), s.item(C.MAV_CMD_NAV_RETURN_TO_LAUNCH)]) == 0
+    assert s.command(C.MAV_CMD_COMPONENT_ARM_DISARM, 1) == 0
+    assert s.command(C.MAV_CMD_MISSION_START) == 0
+    assert s.run(30, lambda: -s.v.pos[2] > 1.0) and s.v.state is State.TAKING_OFF
+    s.v.hover()  # the tablet's hover, during the mission's own climb
+    s.run(20)
+    assert s.ap.runner is not None and s.ap.runner.state == PAUSED
+    assert s.v.state is State.HOVERING and s.at(0, 0, 0.5)

@@ -43,6 +43,7 @@ class _Leg:
     arrived_at: float | None = None
     then_land: bool = False  # a landing item with a position: fly there, then land
     yaw: float | None = None
+    orders: int = -1  # the vehicle's order count once this leg was given: another order is a takeover
 
 
 class MissionRunner:
@@ -169,6 +170,8 @@ class MissionRunner:
         """Did something else take the vehicle over since the runner gave it this leg?"""
         leg, v = self.leg, self.vehicle
         assert leg is not None
+        if leg.orders >= 0 and getattr(v, "orders", leg.orders) != leg.orders:
+            return True  # told something else since (a hold, a goto, a return...), whatever its state
         if leg.kind in ("fly", "yaw"):
             return v.state is not State.TRAJECTORY or v.route is not leg.route
         if leg.kind in ("takeoff", "pretakeoff"):
@@ -201,6 +204,7 @@ class MissionRunner:
                 continue
             self._begin(now)
             if self.leg is not None:
+                self.leg.orders = getattr(self.vehicle, "orders", -1)
                 return
 
     def _leg_done(self, now: float) -> bool:
@@ -219,6 +223,7 @@ class MissionRunner:
         if leg.then_land:
             v.land()
             leg.kind, leg.then_land = "land", False
+            leg.orders = getattr(v, "orders", -1)
             return False
         return leg.hold < FOREVER and now - leg.arrived_at >= leg.hold
 

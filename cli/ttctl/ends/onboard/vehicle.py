@@ -14,9 +14,11 @@ flight, at any speed of the clock.
 from __future__ import annotations
 
 import enum
+import functools
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Protocol
+from typing import Any, Protocol
 
 EARTH_RADIUS = 6_378_137.0  # WGS84 semi-major axis, metres
 MIN_ALT = 0.5  # m: set-points lower than this are refused (landing is its own command)
@@ -140,6 +142,19 @@ class Snapshot:
         return math.degrees(self.yaw) % 360.0
 
 
+def _order(method: Callable[..., None]) -> Callable[..., None]:
+    """A command that, carried out (not refused), changes what the vehicle does: counted in
+    `orders`, so that a mission can tell its own leg from something else taking over (a hold
+    during a mission's take-off is still 'hovering', yet no longer the mission's)."""
+
+    @functools.wraps(method)
+    def run(self: SimVehicle, *args: Any, **kw: Any) -> None:
+        method(self, *args, **kw)
+        self.orders += 1
+
+    return run
+
+
 @dataclass
 class SimVehicle:
     home: Home = field(default_factory=Home)
@@ -166,6 +181,7 @@ class SimVehicle:
     vel_cmd: tuple[float, float, float] | None = None  # n, e, d m/s being flown (manual, offboard)
     yaw_rate_cmd: float | None = None  # rad/s, when steered by rate
     ground_since: float | None = None  # steered and touching the ground since (the land detector)
+    orders: int = 0  # counts the commands that changed what the vehicle does (who flies it can tell a takeover)
 
     def __post_init__(self) -> None:
         if self.energy_wh < 0:
@@ -186,6 +202,7 @@ class SimVehicle:
             raise Refused("cannot disarm in the air")
         self.armed = False
 
+    @_order
     def takeoff(self, alt: float | None = None) -> None:
         alt = self._alt(alt if alt is not None and alt > 0 else self.limits.takeoff_alt)
         if not self.armed:
@@ -195,6 +212,7 @@ class SimVehicle:
         self.state = State.TAKING_OFF
         self._fly_to(self.pos[0], self.pos[1], -alt, None)
 
+    @_order
     def land(self) -> None:
         if self.state is State.LANDED:
             raise Refused("already landed")
@@ -204,6 +222,7 @@ class SimVehicle:
         self.target = (self.pos[0], self.pos[1], 0.0)
         self.target_yaw = None
 
+    @_order
     def hover(self) -> None:
         if self.state is State.LANDED:
             raise Refused("on the ground")
@@ -213,6 +232,7 @@ class SimVehicle:
         self.target = (self.pos[0], self.pos[1], self.pos[2])
         self.target_yaw = None
 
+    @_order
     def goto(self, n: float, e: float, alt: float, yaw: float | None = None) -> None:
         self._finite(n, e, alt, yaw)
         alt = self._alt(alt)
@@ -226,6 +246,7 @@ class SimVehicle:
         self.route, self.leg = [], -1
         self._fly_to(n, e, -alt, yaw)
 
+    @_order
     def fly(self, waypoints: list[Waypoint]) -> None:
         if not waypoints:
             raise Refused("the trajectory has no waypoints")
@@ -244,6 +265,7 @@ class SimVehicle:
         self.route, self.leg = list(waypoints), 0
         self._start_leg()
 
+    @_order
     def return_home(self, alt: float | None = None) -> None:
         if self.state is State.LANDED:
             raise Refused("on the ground")
@@ -270,6 +292,7 @@ class SimVehicle:
         if any(v is not None and not math.isfinite(v) for v in values):
             raise Refused("a value is not a finite number")
 
+    @_order
     def steer(self, state: State, vel: tuple[float, float, float] | None = None,
               pos: tuple[float, float, float] | None = None, yaw: float | None = None,
               yaw_rate: float | None = None) -> None:
@@ -428,6 +451,7 @@ class SimVehicle:
                 self._start_leg()
             elif s is State.RETURNING:
                 self.land()
+                self.orders -= 1  # the return's own landing, not a new order
             else:
                 self.route, self.leg, self.speed_cap = [], -1, None
                 self.state = State.HOVERING
