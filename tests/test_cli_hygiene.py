@@ -163,3 +163,31 @@ def test_bench_times_tools_as_installed(monkeypatch: pytest.MonkeyPatch) -> None
     assert "PYTHONDONTWRITEBYTECODE" not in env and "TTCTL_DIALECT" not in env and env["PATH"]
     note = bytecode_note()
     assert note is None or "compiled on every run" in note
+
+
+def test_a_ctrl_c_python_swallows_still_stops_the_command() -> None:
+    """A KeyboardInterrupt raised while Python runs a finalizer is printed as 'Exception ignored'
+    and lost (CI saw it in the import system's module-lock callback: recv-file then ran on for
+    60 s after its only Ctrl-C). ttctl's handler remembers it: no traceback, and a command's loop
+    stops as soon as it starts."""
+    code = """
+import asyncio, gc, os, signal, time
+from ttctl import interrupts
+from ttctl.commands.common import Signals
+interrupts.install()
+class Finalized:
+    def __del__(self):
+        os.kill(os.getpid(), signal.SIGINT)
+        time.sleep(0.2)  # the handler runs here, inside the finalizer: Python swallows what it raises
+Finalized()
+gc.collect()
+print("went on", interrupts.seen())
+async def main():
+    sigs = Signals(asyncio.get_running_loop(), asyncio.Event())
+    print("loop stops", sigs.stop.is_set())
+asyncio.run(main())
+"""
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert p.returncode == 0, p.stderr
+    assert p.stdout.split("\n")[:2] == ["went on True", "loop stops True"], p.stdout
+    assert "Traceback" not in p.stderr and "Exception ignored" not in p.stderr, p.stderr

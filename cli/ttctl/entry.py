@@ -18,8 +18,9 @@ def _interrupted(signum: int, frame: object) -> None:
 def main() -> None:
     _signal.signal(_signal.SIGINT, _interrupted)  # until the CLI can turn Ctrl-C into a clean exit itself
     from .app import main as app_main
+    from .interrupts import install
 
-    _signal.signal(_signal.SIGINT, _signal.default_int_handler)
+    install()  # from here a Ctrl-C raises KeyboardInterrupt, and is remembered even where Python loses it
     app_main()
 
 

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from .. import interrupts
 from ..errors import Fail
 
 TABLET = (255, 190)
@@ -112,6 +113,8 @@ class Signals:
         for sig in (signal.SIGINT, signal.SIGTERM):
             with contextlib.suppress(NotImplementedError, RuntimeError):  # not the main thread, or no signals
                 loop.add_signal_handler(sig, self._on, sig)
+        if interrupts.seen():  # a Ctrl-C Python swallowed on the way here (in a finalizer, say)
+            self._on(signal.SIGINT)
 
     def _on(self, sig: int) -> None:
         self.got = sig

@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from .. import interrupts
 from ..errors import Fail
 from .common import TABLET, err, link_choice, parse_endpoint
 
@@ -205,6 +206,8 @@ def dump(o: DumpOptions) -> int:
     source, src_frame = _open_source(o)
     stop = threading.Event()
     previous = {sig: signal.signal(sig, lambda *_: stop.set()) for sig in (signal.SIGINT, signal.SIGTERM)}
+    if interrupts.seen():  # a Ctrl-C Python swallowed on the way here
+        stop.set()
     writer = None
     taken = 0
     kinds: dict[str, int] = {}
