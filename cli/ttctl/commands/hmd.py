@@ -27,6 +27,7 @@ from .common import TABLET, err, link_choice, parse_endpoint
 
 SOURCES = ("synthetic", "openvr", "replay")
 HEADROOM = 0.85  # of the profile's capacity, for streaming poses
+CONFIRM_WAIT = 10.0  # s, at the end, for the onboard end to confirm the last button changes
 
 
 @dataclass
@@ -147,6 +148,8 @@ class _Link:
         self.error: str | None = None
         self.done = asyncio.Event()
         self.runner: Any = None
+        self.ep: Any = None
+        self.heard = False  # the onboard end answered (anything, from anyone on the link)
         self.thread = threading.Thread(target=self._main, name="ttctl-link", daemon=True)
 
     def start(self) -> None:
@@ -167,7 +170,8 @@ class _Link:
         try:
             transport = make_transport(self.spec)
             ep = Endpoint(self.b, *TABLET, mtu=transport.mtu, rate_Bps=self.pace, accept_commands=False,
-                          unsolicited=False)
+                          unsolicited=False, on_message=self._on_message)
+            self.ep = ep
             ep.add_stream(self.stream)
             self.runner = Runner(ep, transport, quiet=self.quiet, hello=hello(TABLET[0], self.spec, self.b))
             await self.runner.start()
@@ -177,8 +181,25 @@ class _Link:
             return
         self.ready.set()
         await self.done.wait()
+        end = self.loop.time() + CONFIRM_WAIT
+        while self.stream.unconfirmed() and self.loop.time() < end:  # the last button changes, confirmed
+            self.runner.kick()
+            await asyncio.sleep(0.05)
         await self.runner.drain(1.0)
         await self.runner.close()
+
+    def _on_message(self, now: float, msg: Any) -> None:
+        from ..hmd.stream import ACK_PREFIX
+
+        self.heard = True
+        if type(msg).__name__ != "NamedValueInt":
+            return
+        name = msg.name.decode("ascii", "replace") if isinstance(msg.name, bytes) else str(msg.name)
+        name = name.rstrip("\x00")
+        if name.startswith(ACK_PREFIX) and name[len(ACK_PREFIX):].isdigit():
+            self.stream.now = now
+            if self.stream.on_ack(int(name[len(ACK_PREFIX):]), int(msg.value) & 0xFFFFFFFF):
+                self.runner.kick()
 
     def offer(self, s: Any) -> None:
         self.loop.call_soon_threadsafe(self._offer, s)
@@ -191,7 +212,7 @@ class _Link:
     def close(self) -> None:
         if self.thread.is_alive():
             self.loop.call_soon_threadsafe(self.done.set)
-            self.thread.join(5)
+            self.thread.join(CONFIRM_WAIT + 5)
 
 
 def dump(o: DumpOptions) -> int:
@@ -218,7 +239,7 @@ def dump(o: DumpOptions) -> int:
             meta = {"source": o.source, "rate_hmd": o.rate_hmd, "rate_controllers": o.rate_controllers,
                     **({"seed": o.seed} if o.source == "synthetic" else {})}
         writer = open_writer(o.output, fmt, o.frame, o.parent_frame, meta)
-        keep = Continuity()
+        keep, keep_link = Continuity(), Continuity()
         first_t: float | None = None
         for s in source.samples():
             if stop.is_set():
@@ -229,10 +250,11 @@ def dump(o: DumpOptions) -> int:
                 wait = started + (s.t - first_t) / o.speed - time.monotonic()
                 if wait > 0 and stop.wait(wait):
                     break
-            s = keep(convert(s, src_frame, o.frame))
-            writer.write(s)
-            if link is not None:
-                link.offer(s)
+            out = keep(convert(s, src_frame, o.frame))
+            writer.write(out)
+            if link is not None:  # TT_VR_POSE is REP-103 whatever --frame the file is in
+                link.offer(out if o.frame == "ros" else keep_link(convert(s, src_frame, "ros")))
+            s = out
             taken += 1
             kinds[s.device.frame] = kinds.get(s.device.frame, 0) + 1
         writer.close()
@@ -255,7 +277,7 @@ def dump(o: DumpOptions) -> int:
     elapsed = time.monotonic() - started
     if not o.quiet:
         _summary(o, fmt, taken, kinds, elapsed, writer, link, stop.is_set())
-    return 0
+    return 0 if link is None else _link_verdict(o, link)
 
 
 def _summary(o: DumpOptions, fmt: str, taken: int, kinds: dict[str, int], elapsed: float, writer: Any,
@@ -266,8 +288,27 @@ def _summary(o: DumpOptions, fmt: str, taken: int, kinds: dict[str, int], elapse
         f"({fmt}, {o.frame} frame under {o.parent_frame})")
     if link is not None:
         st = link.stream.stats
-        err(f"streamed to {o.to}: {st.taken} taken, {st.sent} sent, {st.superseded} superseded "
-            f"({st.buttons} button changes, none dropped)" + (f", paced at {link.pace:.0f} B/s" if link.pace else ""))
+        held = link.stream.held()
+        err(f"streamed to {o.to}: {st.taken} taken = {st.sent} sent + {st.superseded} superseded"
+            + (f" + {held} not sent by the end" if held else "")
+            + (f", paced at {link.pace:.0f} B/s" if link.pace else ""))
+        if st.buttons:
+            err(f"button changes: {st.confirmed} of {st.buttons} confirmed by the onboard end"
+                + (f" ({st.resent} resent)" if st.resent else ""))
+
+
+def _link_verdict(o: DumpOptions, link: _Link) -> int:
+    """1 when the onboard end never answered or a button change was not confirmed (said, even
+    with --quiet)."""
+    lost = link.stream.unconfirmed()
+    if not link.heard:
+        err(f"error: nothing heard from the onboard end at {o.to}: no pose or button change can be confirmed")
+        return 1
+    if lost:
+        err(f"error: {lost} button change{'s' if lost != 1 else ''} not confirmed by the onboard end within "
+            f"{CONFIRM_WAIT:g} s of the end")
+        return 1
+    return 0
 
 
 def pulse(device: str, us: int) -> int:

@@ -1,0 +1,69 @@
+"""`ttctl hmd dump --to` against a real `ttctl emulate onboard` through `ttctl link relay` (real
+processes on loopback): on a lossy link every button change reaches the onboard end, once and in
+order, and the summary counts what the onboard end confirmed; with nobody listening the dump
+says so and exits 1."""
+
+from __future__ import annotations
+
+import json
+import re
+import subprocess
+from pathlib import Path
+
+from conftest import ttctl_cmd
+from e2e_lib import LOCAL, Start, free_port, relay
+
+LINE = re.compile(r"vr controller (\d+): buttons (.*) \(packet (\d+)\)")
+NAMES = ("trigger_click", "pad_touched", "pad_pressed", "menu", "grip")
+
+
+def recorded_changes(rec: Path) -> list[tuple[int, str, int]]:
+    """(index, held buttons, packet) of every button change in a JSONL recording."""
+    last: dict[int, str] = {}
+    out = []
+    for line in rec.read_text().splitlines():
+        d = json.loads(line)
+        if "buttons" not in d:
+            continue
+        held = ", ".join(n for n in NAMES if d["buttons"].get(n)) or "none"
+        if held != last.get(d["index"], "none"):
+            last[d["index"]] = held
+            out.append((d["index"], held, d["packet"]))
+    return out
+
+
+def test_button_changes_survive_a_lossy_link_and_are_confirmed(tmp_path: Path, start: Start) -> None:
+    air, port = free_port(), free_port()
+    relay(start, air, port, "--profile", "m100", "--distance", "10", "--loss", "0.2", "--seed", "4",
+          "--stats-interval", "0")
+    node = start("onboard", "emulate", "onboard", "--listen", f"udpin:{LOCAL}:{port}", "--no-entry-points")
+    node.wait_for("onboard 1:")
+    rec = tmp_path / "rec.jsonl"
+    dump = subprocess.run(ttctl_cmd() + ["hmd", "dump", "--duration", "8", "--seed", "2", "-o", str(rec),
+                                         "--to", f"udpout:{LOCAL}:{air}"],
+                          capture_output=True, text=True, timeout=60)
+    want = recorded_changes(rec)
+    got = [(int(i), held, int(p)) for i, held, p in LINE.findall(node.stderr)]
+    assert dump.returncode == 0, dump.stderr
+    assert len(want) >= 8
+    for index in {i for i, _, _ in want}:  # every change, once, in each controller's order, with its packet
+        assert [g for g in got if g[0] == index] == [w for w in want if w[0] == index]
+    assert len(got) == len(want)
+    m = re.search(r"button changes: (\d+) of (\d+) confirmed by the onboard end \((\d+) resent\)", dump.stderr)
+    assert m is not None, dump.stderr
+    assert int(m[1]) == int(m[2]) == len(want) and int(m[3]) > 0  # 20 % loss: some were resent
+    taken = re.search(r"(\d+) taken = (\d+) sent \+ (\d+) superseded(?: \+ (\d+) not sent)?", dump.stderr)
+    assert taken is not None, dump.stderr
+    assert int(taken[1]) == int(taken[2]) + int(taken[3]) + int(taken[4] or 0)
+    assert "none dropped" not in dump.stderr
+
+
+def test_nobody_listening_is_not_success(tmp_path: Path) -> None:
+    nobody = free_port()
+    dump = subprocess.run(ttctl_cmd() + ["hmd", "dump", "--duration", "3", "--speed", "0", "-o",
+                                         str(tmp_path / "r.jsonl"), "--to", f"udpout:{LOCAL}:{nobody}"],
+                          capture_output=True, text=True, timeout=60)
+    assert dump.returncode == 1, dump.stderr
+    assert f"nothing heard from the onboard end at udpout:{LOCAL}:{nobody}" in dump.stderr
+    assert "none dropped" not in dump.stderr
+    assert dump.stderr.count("\n") <= 4 and "Traceback" not in dump.stderr
