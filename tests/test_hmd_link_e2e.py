@@ -67,3 +67,34 @@ def test_nobody_listening_is_not_success(tmp_path: Path) -> None:
     assert f"nothing heard from the onboard end at udpout:{LOCAL}:{nobody}" in dump.stderr
     assert "none dropped" not in dump.stderr
     assert dump.stderr.count("\n") <= 4 and "Traceback" not in dump.stderr
+
+
+def test_openvr_frame_files_still_stream_rep103(tmp_path: Path) -> None:
+    """TT_VR_POSE is REP-103 (z up): with --frame openvr the file is y-up, the link is not."""
+    import socket
+
+    import ttapi
+
+    sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    sock.bind((LOCAL, 0))
+    sock.settimeout(0.2)
+    port = sock.getsockname()[1]
+    rec = tmp_path / "r.jsonl"
+    dump = subprocess.Popen(ttctl_cmd() + ["hmd", "dump", "--frame", "openvr", "--duration", "2", "-o", str(rec),
+                                           "--to", f"udpout:{LOCAL}:{port}"],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    heads = []
+    while dump.poll() is None:
+        try:
+            data = sock.recv(2048)
+        except TimeoutError:
+            continue
+        heads += [m for m in ttapi.parse_all(data) if isinstance(m, ttapi.TtVrPose)
+                  and m.device == ttapi.TtVrDevice.TT_VR_DEVICE_HMD]
+    sock.close()
+    assert dump.wait(30) == 1  # nobody answered
+    assert len(heads) >= 3
+    assert all(1.2 < m.position[2] < 2.2 for m in heads)  # standing head height, z up
+    poses = [json.loads(line) for line in rec.read_text().splitlines()[1:]]
+    head_file = [p for p in poses if p.get("device") == "hmd"]
+    assert all(1.2 < p["position"][1] < 2.2 for p in head_file)  # the file keeps OpenVR's y up

@@ -14,6 +14,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import math
+import os
 import signal
 import sys
 import threading
@@ -53,6 +54,8 @@ class DumpOptions:
     profile_file: Path | None = None
     dialect: Path | None = None  # of the link (--to)
     include_dirs: list[Path] = field(default_factory=list)
+    salvage: bool = False  # replay what can be read of a damaged or cut-short recording
+    force: bool = False  # -o may replace an existing file
 
 
 def _check(o: DumpOptions) -> None:
@@ -65,6 +68,8 @@ def _check(o: DumpOptions) -> None:
         raise Fail("--source replay needs the recording: ttctl hmd dump --source replay FILE")
     if o.source != "replay" and o.replay_file:
         raise Fail(f"{o.replay_file!r}: a FILE is only read with --source replay")
+    if o.salvage and o.source != "replay":
+        raise Fail("--salvage applies to --source replay FILE")
     if o.frame not in FRAMES:
         raise Fail(f"unknown frame {o.frame!r}: use ros or openvr")
     for name, v in (("--rate-hmd", o.rate_hmd), ("--rate-controllers", o.rate_controllers)):
@@ -97,6 +102,13 @@ def _open_source(o: DumpOptions) -> tuple[Any, str]:
 
     assert o.replay_file is not None
     rec = read_recording(o.replay_file)
+    if rec.damage:
+        if not o.salvage:
+            rec_close = getattr(rec, "close", None)
+            if rec_close is not None:
+                rec_close()
+            raise Fail(f"{o.replay_file}: {rec.damage}; --salvage replays what can be read", 1)
+        err(f"warning: {o.replay_file}: {rec.damage}; salvaging what can be read (--salvage)")
     return _Replay(rec, o.duration), rec.frame
 
 
@@ -181,8 +193,10 @@ class _Link:
             return
         self.ready.set()
         await self.done.wait()
-        end = self.loop.time() + CONFIRM_WAIT
-        while self.stream.unconfirmed() and self.loop.time() < end:  # the last button changes, confirmed
+        now = self.loop.time()
+        end = now + CONFIRM_WAIT
+        while self.stream.unconfirmed() and self.loop.time() < end and \
+                (self.heard or self.loop.time() < now + 1.0):  # the last button changes, confirmed
             self.runner.kick()
             await asyncio.sleep(0.05)
         await self.runner.drain(1.0)
@@ -222,6 +236,8 @@ def dump(o: DumpOptions) -> int:
     _check(o)
     fmt = format_for(o.output, o.fmt)
     check_output(o.output, fmt)
+    if o.output is not None and os.path.isfile(o.output) and not o.force:  # as `ros2 bag record` refuses
+        raise Fail(f"{o.output} exists: --force replaces it")
     link = _Link(o) if o.to else None
     source, src_frame = _open_source(o)
     stop = threading.Event()

@@ -48,6 +48,9 @@ def hmd_dump_cmd(
     profile_file: ProfileFileOpt = None,
     distance: DistanceOpt = 10.0,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No summary on stderr.")] = False,
+    salvage: Annotated[bool, typer.Option("--salvage", help="Replay what can be read of a recording that is cut "
+                                                            "short or damaged (refused otherwise, exit 1).")] = False,
+    force: Annotated[bool, typer.Option("--force", help="Let -o replace an existing file.")] = False,
     dialect: DialectOpt = None,
     include: DialectIncludeOpt = None,
 ) -> None:
@@ -61,7 +64,8 @@ def hmd_dump_cmd(
 
     raise typer.Exit(dump(DumpOptions(source, file, rate_hmd, rate_controllers, duration, fmt, output, frame,
                                       parent_frame, seed, speed, to, rate, profile, distance, stream_hz, quiet,
-                                      profile_file=profile_file, dialect=dialect, include_dirs=include or [])))
+                                      profile_file=profile_file, dialect=dialect, include_dirs=include or [],
+                                      salvage=salvage, force=force)))
 
 
 @hmd_app.command("pulse")

@@ -14,6 +14,7 @@ any bag written in time order; a bag whose chunks overlap in time is read with r
 from __future__ import annotations
 
 import json
+import os
 from collections.abc import Iterator
 from io import BytesIO
 from itertools import pairwise
@@ -85,6 +86,10 @@ class _Bag:
             raise ReaderError(f"Bag encryption {header.get_string('encryptor')!r} is not supported.")
         if index_pos == 0:
             raise ReaderError("Bag is not indexed, reindex before reading.")
+        size = os.fstat(bio.fileno()).st_size
+        if index_pos >= size:
+            raise ReaderError(f"cut short: its index should start at byte {index_pos} but the file has {size} "
+                              "bytes; `rosbag reindex` can rebuild the index")
         if chunk_count == 0:
             return
         bio.seek(index_pos)
@@ -92,7 +97,7 @@ class _Bag:
             self.connections = [r.read_connection() for _ in range(conn_count)]
             self.chunk_infos = [r.read_chunk_info() for _ in range(chunk_count)]
         except ReaderError as e:
-            raise ReaderError(f"Bag index looks damaged: {e.args}") from None
+            raise ReaderError(f"its index is damaged ({'; '.join(str(a) for a in e.args)})") from None
 
     def close(self) -> None:
         bio, self.reader.bio = self.reader.bio, None
