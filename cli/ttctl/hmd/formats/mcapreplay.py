@@ -25,6 +25,7 @@ from .base import Recording
 from .codecs import CDR, STRING, CodecError
 from .mcapio import MAGIC, MESSAGE, MESSAGE_HEAD_SIZE, inner_record, iter_records, walk_error
 from .ros import LEAVES, Rebuilder
+from .ros import VERSION as ROS_VERSION
 
 _FOOTER_OPCODE = 0x02
 _FOOTER_SIZE = 1 + 8 + 8 + 8 + 4  # opcode, length, summary_start, summary_offset_start, summary_crc
@@ -92,11 +93,11 @@ def read_mcap(path: str) -> Recording:
         version = int(info.get("version", "1"))
     except (ValueError, KeyError) as e:
         raise Fail(f"{path}: bad 'ttctl' metadata record ({e})") from None
-    if version > 1:
-        raise Fail(f"{path}: recording version {version}; this ttctl reads up to 1")
+    if version > ROS_VERSION:
+        raise Fail(f"{path}: recording version {version}; this ttctl reads up to {ROS_VERSION}")
     if frame not in ("ros", "openvr") or not isinstance(meta, dict):
         raise Fail(f"{path}: bad 'ttctl' metadata record (frame {frame!r})")
-    return Recording(frame, parent, meta, _Replay(path, truncated).samples(size), "mcap", truncated, damage)
+    return Recording(frame, parent, meta, _Replay(path, truncated, version).samples(size), "mcap", truncated, damage)
 
 
 class _Route:
@@ -112,9 +113,9 @@ class _Route:
 
 
 class _Replay:
-    def __init__(self, path: str, truncated: bool) -> None:
+    def __init__(self, path: str, truncated: bool, version: int) -> None:
         self.path, self.truncated = path, truncated
-        self.rebuild = Rebuilder(path)
+        self.rebuild = Rebuilder(path, version)
         self.schemas: dict[int, str] = {}
         self.routes: dict[int, _Route] = {}
         self.skip: set[int] = set()  # channels replay does not need (/tf, /tf_static, ...)
