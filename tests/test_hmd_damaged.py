@@ -85,3 +85,23 @@ def test_an_mcap_whose_summary_crc_is_wrong_is_refused(tmp_path: Path, recording
     assert not out.exists()
     code, err, _ = replay(bad, "--salvage")
     assert code == 0 and "warning:" in err, err
+
+
+@pytest.mark.parametrize("what", ["fifo", "/dev/zero", "zeros", "no newline"])
+def test_a_replay_source_that_would_block_or_fill_the_memory_is_one_line(tmp_path: Path, what: str) -> None:
+    import os
+
+    if what == "fifo":
+        path = tmp_path / "pipe.jsonl"
+        os.mkfifo(path)  # opening it to read would wait for a writer forever
+    elif what == "/dev/zero":
+        path = Path("/dev/zero")
+    else:
+        path = tmp_path / "big.jsonl"
+        path.write_bytes(b"\0" * (3 << 20) if what == "zeros" else b'{"type": "pose", "t": ' + b"1" * (3 << 20))
+    p = run_ttctl("hmd", "dump", "--source", "replay", str(path), "--speed", "0", "-o", str(tmp_path / "o.jsonl"),
+                  timeout=30)
+    assert_no_traceback(p)
+    assert p.returncode == 2 and p.stderr.count("\n") == 1, p.stderr
+    assert ("not a regular file" if what in ("fifo", "/dev/zero") else "longer than 1024 KiB") in p.stderr, p.stderr
+    assert not (tmp_path / "o.jsonl").exists()
