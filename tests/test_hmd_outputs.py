@@ -48,3 +48,11 @@ def test_link_fit_refuses_an_existing_profile_without_force(tmp_path: Path) -> N
     proc = run_ttctl("link", "fit", *files, "-o", str(out), "--force", timeout=60)
     assert proc.returncode == 0, proc.stderr
     assert out.read_text().startswith("# Link profile 'site'")
+
+
+def test_help_names_the_vr_extra() -> None:
+    """Rich reads "[vr]" as a style tag unless it is escaped: the help must show it."""
+    for cmd in (["hmd", "dump", "--help"], ["hmd", "pulse", "--help"]):
+        proc = run_ttctl(*cmd, timeout=60, env={"COLUMNS": "200"})
+        assert proc.returncode == 0
+        assert "ttctl[vr]" in proc.stdout, proc.stdout

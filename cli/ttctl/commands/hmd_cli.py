@@ -14,7 +14,7 @@ hmd_app = typer.Typer(help="VR headset and controller pose streams: record, repl
 
 @hmd_app.command("dump")
 def hmd_dump_cmd(
-    source: Annotated[str, typer.Option("--source", help="openvr (a headset, through SteamVR; needs ttctl[vr]), "
+    source: Annotated[str, typer.Option("--source", help="openvr (a headset, through SteamVR; needs ttctl\\[vr]), "
                                                          "synthetic (seeded head and hand motion), or replay FILE "
                                                          "(a recording of ours).")] = "synthetic",
     file: Annotated[str | None, typer.Argument(help="The recording, with --source replay.", show_default=False)]
@@ -73,7 +73,7 @@ def hmd_pulse_cmd(
     device: Annotated[str, typer.Option("--device", help="left or right controller.")] = "right",
     us: Annotated[int, typer.Option("--us", help="Pulse length in microseconds, 0..3999 (clamped).")] = 2000,
 ) -> None:
-    """A haptic pulse on a controller (the openvr source; needs ttctl[vr] and SteamVR)."""
+    """A haptic pulse on a controller (the openvr source; needs ttctl\\[vr] and SteamVR)."""
     from .hmd import pulse
 
     raise typer.Exit(pulse(device, us))
