@@ -51,6 +51,10 @@ def test_a_bag_converted_to_a_ros2_folder_replays(tmp_path: Path, original: dict
     assert len(got) == len(want) > 500
     assert got == want
     assert any(d["type"] == "controller" for d in got)
+    if storage == "mcap":  # the .mcap alone, without its folder: no ttctl metadata record in it
+        bare = tmp_path / "bare.mcap"
+        shutil.copy(next(dst.glob("*.mcap")), bare)
+        assert _replay(bare, tmp_path / "bare.jsonl") == want
 
 
 def test_our_mcap_converted_to_a_bag_replays(tmp_path: Path, original: dict[str, Path]) -> None:

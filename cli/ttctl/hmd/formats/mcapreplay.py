@@ -85,6 +85,16 @@ def read_mcap(path: str) -> Recording:
         if isinstance(rec, (Chunk, tuple)):  # the data has begun: ttctl writes its metadata first
             break
     if info is None:
+        if not truncated:  # rewritten by a tool that drops metadata records: the messages still say it
+            from .rosreplay import INFO_TOPIC, read_ros_folder
+
+            try:
+                rec = read_ros_folder(path)
+                rec.damage = damage
+                return rec
+            except Fail as e:
+                if INFO_TOPIC not in str(e):
+                    raise
         what = "cut short before its first data" if truncated else "not recorded by ttctl hmd"
         raise Fail(f"{path}: no 'ttctl' metadata record: {what}")
     try:

@@ -119,4 +119,4 @@ def _instant(rebuild: Rebuilder, group: list[tuple[tuple[str, str], Any]], ns: i
     return done
 
 
-__all__ = ["read_ros_folder"]
+__all__ = ["INFO_TOPIC", "read_ros_folder"]
