@@ -162,6 +162,7 @@ class _Link:
         self.runner: Any = None
         self.ep: Any = None
         self.heard = False  # the onboard end answered (anything, from anyone on the link)
+        self.hurry = threading.Event()  # stop waiting for the last confirmations (a second Ctrl-C)
         self.thread = threading.Thread(target=self._main, name="ttctl-link", daemon=True)
 
     def start(self) -> None:
@@ -195,7 +196,7 @@ class _Link:
         await self.done.wait()
         now = self.loop.time()
         end = now + CONFIRM_WAIT
-        while self.stream.unconfirmed() and self.loop.time() < end and \
+        while self.stream.unconfirmed() and self.loop.time() < end and not self.hurry.is_set() and \
                 (self.heard or self.loop.time() < now + 1.0):  # the last button changes, confirmed
             self.runner.kick()
             await asyncio.sleep(0.05)
@@ -241,7 +242,13 @@ def dump(o: DumpOptions) -> int:
     link = _Link(o) if o.to else None
     source, src_frame = _open_source(o)
     stop = threading.Event()
-    previous = {sig: signal.signal(sig, lambda *_: stop.set()) for sig in (signal.SIGINT, signal.SIGTERM)}
+
+    def on_signal(*_: Any) -> None:  # the first stops taking samples, a second stops waiting for confirmations
+        if stop.is_set() and link is not None:
+            link.hurry.set()
+        stop.set()
+
+    previous = {sig: signal.signal(sig, on_signal) for sig in (signal.SIGINT, signal.SIGTERM)}
     writer = None
     taken = 0
     kinds: dict[str, int] = {}
@@ -285,11 +292,11 @@ def dump(o: DumpOptions) -> int:
             writer.abort()
         raise
     finally:
-        for sig, h in previous.items():
-            signal.signal(sig, h)
         source.close()
         if link is not None:
             link.close()
+        for sig, h in previous.items():
+            signal.signal(sig, h)
     elapsed = time.monotonic() - started
     if not o.quiet:
         _summary(o, fmt, taken, kinds, elapsed, writer, link, stop.is_set())
