@@ -98,3 +98,51 @@ def test_openvr_frame_files_still_stream_rep103(tmp_path: Path) -> None:
     poses = [json.loads(line) for line in rec.read_text().splitlines()[1:]]
     head_file = [p for p in poses if p.get("device") == "hmd"]
     assert all(1.2 < p["position"][1] < 2.2 for p in head_file)  # the file keeps OpenVR's y up
+
+
+def test_an_onboard_end_that_never_confirms_is_named(tmp_path: Path) -> None:
+    """A peer that answers (heartbeats) but does not confirm button changes: exit 1, and the
+    error says what the onboard end must send."""
+    import socket
+    import threading
+
+    import ttapi
+    from ttctl.hmd.formats import open_writer
+    from ttctl.hmd.model import ControllerSample, Device
+
+    rec = tmp_path / "clicks.jsonl"
+    w = open_writer(str(rec), "jsonl", "ros", "vr_world", {})
+    left = Device(3, "controller", "left", "C")
+    for k in range(6):
+        w.write(ControllerSample(1_800_000_000.0 + k * 0.1, left, k + 1, buttons={"menu": k % 2 == 0}))
+    w.close()
+    sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    sock.bind((LOCAL, 0))
+    sock.settimeout(0.1)
+    done = threading.Event()
+    heartbeat = ttapi.Encoder(1, 240).encode(ttapi.Heartbeat(type=2, autopilot=12, base_mode=0, custom_mode=0,
+                                                             system_status=4, mavlink_version=3))
+
+    def answer() -> None:
+        peer = None
+        while not done.is_set():
+            try:
+                _, peer = sock.recvfrom(2048)
+            except TimeoutError:
+                pass
+            if peer is not None:
+                sock.sendto(heartbeat, peer)
+
+    t = threading.Thread(target=answer, daemon=True)
+    t.start()
+    try:
+        dump = subprocess.run(ttctl_cmd() + ["hmd", "dump", "--source", "replay", str(rec), "--to",
+                                             f"udpout:{LOCAL}:{sock.getsockname()[1]}", "-q"],
+                              capture_output=True, text=True, timeout=60)
+    finally:
+        done.set()
+        t.join(2)
+        sock.close()
+    assert dump.returncode == 1, dump.stderr
+    assert "confirmed none of 6 button changes" in dump.stderr and "NAMED_VALUE_INT 'vrbtn<index>'" in dump.stderr
+    assert dump.stderr.count("\n") == 1 and "Traceback" not in dump.stderr

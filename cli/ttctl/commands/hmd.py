@@ -327,6 +327,11 @@ def _link_verdict(o: DumpOptions, link: _Link) -> int:
     if not link.heard:
         err(f"error: nothing heard from the onboard end at {o.to}: no pose or button change can be confirmed")
         return 1
+    if lost and not link.stream.stats.confirmed:
+        err(f"error: the onboard end at {o.to} confirmed none of {lost} button change{'s' if lost != 1 else ''}: it "
+            "must answer each TT_VR_CONTROLLER with NAMED_VALUE_INT 'vrbtn<index>' = its packet_num "
+            "(ttctl emulate onboard does)")
+        return 1
     if lost:
         err(f"error: {lost} button change{'s' if lost != 1 else ''} not confirmed by the onboard end within "
             f"{CONFIRM_WAIT:g} s of the end")
