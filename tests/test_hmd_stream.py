@@ -218,3 +218,25 @@ def test_a_base_station_is_sent_rarely_and_max_hz_caps_a_fast_link() -> None:
     bases = [m for m in msgs if m.device == ttapi.TtVrDevice.TT_VR_DEVICE_TRACKING_REFERENCE]
     assert 190 <= len(heads) <= 201
     assert 2 <= len(bases) <= 3
+
+
+def test_a_restarted_tablet_is_not_stuck_on_a_change_the_onboard_end_already_has() -> None:
+    """The onboard end saw the menu held (a previous dump); a new dump's first change is the menu
+    held: the onboard end applies nothing new but confirms it, and the next change goes through."""
+    ep = Endpoint(shipped(), 255, 190, rate_Bps=1000.0, accept_commands=False)
+    stream = PoseStream(shipped())
+    ep.add_stream(stream)
+    deliver, _plugin, applied = _lossy_onboard(stream, 0.0, seed=1)
+    earlier = PoseStream(shipped())
+    earlier.offer(ControllerSample(0.0, LEFT, 900, buttons={"menu": True}))
+    deliver(ttapi.Encoder(255, 190).encode(earlier.pull(0.0, 100)))
+    assert applied == [int(ttapi.TtVrButtons.TT_VR_BUTTONS_MENU)]
+    stream.offer(ControllerSample(1.0, LEFT, 1, buttons={"menu": True}))
+    stream.offer(ControllerSample(1.1, LEFT, 2, buttons={}))
+    t = 1.0
+    while t < 5.0 and stream.unconfirmed():
+        while (pkt := ep.poll(t)) is not None:
+            deliver(pkt)
+        t += 0.001
+    assert stream.unconfirmed() == 0 and stream.stats.confirmed == 2 and stream.stats.resent == 0
+    assert applied == [int(ttapi.TtVrButtons.TT_VR_BUTTONS_MENU), 0]
