@@ -182,7 +182,7 @@ class PoseStream:
     def _ready(self, key: tuple[str, int], slot: _Slot, now: float) -> bool:
         if slot.pending is None or now < slot.last_sent + slot.interval:
             return False
-        c = self._changes.get(key[1]) if key[0] == "axes" else None
+        c = self._changes.get(key[1] & 0xFF) if key[0] == "axes" else None
         return c is None or not c.queue  # a controller's axes wait while a button change is unconfirmed
 
     def _due_change(self, now: float) -> _Changes | None:
@@ -196,8 +196,7 @@ class PoseStream:
     def deadline(self, now: float) -> float | None:
         """When a held sample becomes due, if later than now (has_data says what is due now)."""
         times = [t for k, s in self._slots.items()
-                 if s.pending is not None and (t := s.last_sent + s.interval) > now
-                 and not (k[0] == "axes" and self._changes.get(k[1]) and self._changes[k[1]].queue)]
+                 if s.pending is not None and (t := s.last_sent + s.interval) > now and self._ready(k, s, t)]
         times += [c.due for c in self._changes.values() if c.queue and c.due > now]
         return min(times) if times else None
 
