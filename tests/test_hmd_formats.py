@@ -101,7 +101,8 @@ def test_mcap_is_ros2_that_mcap_tools_read_and_replays(tmp_path: Path, samples: 
         schema = summary.schemas[channel.schema_id]
         assert (channel.message_encoding, schema.encoding) == ("cdr", "ros2msg")
         qos = parse_qos(channel.metadata["offered_qos_profiles"])
-        assert qos[0].durability.name == ("TRANSIENT_LOCAL" if channel.topic == "/tf_static" else "VOLATILE")
+        latched = channel.topic in ("/tf_static", "/vr/recording")
+        assert qos[0].durability.name == ("TRANSIENT_LOCAL" if latched else "VOLATILE")
     by_topic: dict[str, list[Any]] = {}
     for msg_schema, channel, message, decoded in messages:
         assert msg_schema is not None
@@ -131,7 +132,12 @@ def test_mcap_is_ros2_that_mcap_tools_read_and_replays(tmp_path: Path, samples: 
     joys = [(msg, m) for _, msg, m in by_topic["/vr/controller_left/joy"]]
     want = [s for s in samples if isinstance(s, ControllerSample) and s.device == LEFT]
     for (message, joy), s in zip(joys, want, strict=True):
-        assert len(joy.axes) == 3 and abs(joy.axes[0] - s.trigger) < 1e-6 and list(joy.buttons) == s.button_list
+        # vive_ros's layout (vive_node.cpp): axes [pad x, pad y, trigger], buttons [menu, trigger, pad
+        # pressed, grip], then the pad touched
+        assert len(joy.axes) == 3 and abs(joy.axes[2] - s.trigger) < 1e-6
+        assert abs(joy.axes[0] - s.pad_x) < 1e-6 and abs(joy.axes[1] - s.pad_y) < 1e-6
+        assert list(joy.buttons) == [int(s.buttons[b]) for b in ("menu", "trigger_click", "pad_pressed", "grip",
+                                                                    "pad_touched")]
         assert joy.header.frame_id == "controller_left" and message.sequence == s.packet
     devices = [json.loads(m.data) for _, _, m in by_topic["/vr/devices"]]
     assert {"index": 1, "kind": "controller", "role": "left", "serial": "LHR-C0001", "frame": "controller_left",
@@ -179,7 +185,8 @@ def test_bag_is_ros1_that_rosbags_reads_and_replays(tmp_path: Path, samples: lis
     assert times == sorted(times)
     right = [s for s in samples if isinstance(s, ControllerSample) and s.device == RIGHT]
     assert [j.header.seq for j in joys] == [s.packet for s in right]
-    assert [list(j.buttons) for j in joys] == [s.button_list for s in right]
+    assert [list(j.buttons) for j in joys] == [s.joy_buttons for s in right]
+    assert [list(j.axes) for j in joys] == [pytest.approx([s.pad_x, s.pad_y, s.trigger], abs=1e-6) for s in right]
     rec = read_recording(str(path))
     assert (rec.frame, rec.parent_frame, rec.meta, rec.format) == ("ros", "vr_world", {"source": "test", "rate": 90},
                                                                    "bag")

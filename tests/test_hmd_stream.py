@@ -85,19 +85,52 @@ def test_newest_wins_at_link_rate_and_counts_add_up() -> None:
     assert heads[-1].position[0] > 9.8
 
 
-def test_button_changes_are_never_dropped_and_stay_in_order() -> None:
+def _lossy_onboard(stream: PoseStream, loss: float, seed: int):
+    """The onboard end's VrControllerPlugin behind a link that loses `loss` of the packets each
+    way: returns (deliver(packet), plugin, applied button states in order)."""
+    from ttctl.ends.onboard.vr_controller import VrControllerPlugin
+    from ttctl.ends.plugins import Context
+
+    rng = random.Random(seed)
+    plugin = VrControllerPlugin()
+    applied: list[int] = []
+    acks: list[object] = []
+    ctx = Context(send=lambda msg, urgent=False: acks.append(msg), log=lambda text: None, dialect=shipped())
+
+    def deliver(packet: bytes) -> None:
+        if rng.random() < loss:
+            return
+        for m in decode([packet]):
+            if m.get_type() == "TT_VR_CONTROLLER":
+                before = plugin.changes
+                plugin.on_controller(m, ctx)
+                if plugin.changes != before:
+                    applied.append(m.buttons)
+        while acks:
+            a = acks.pop(0)
+            if rng.random() >= loss:
+                name = a.name.decode() if isinstance(a.name, bytes) else a.name
+                stream.on_ack(int(name[len("vrbtn"):]), a.value & 0xFFFFFFFF)
+
+    return deliver, plugin, applied
+
+
+@pytest.mark.parametrize("loss", [0.0, 0.1, 0.3])
+def test_button_changes_survive_a_lossy_link_in_order_and_are_confirmed(loss: float) -> None:
     ep = Endpoint(shipped(), 255, 190, rate_Bps=300.0, accept_commands=False)  # a link far too slow for the flood
     stream = PoseStream(shipped())
     ep.add_stream(stream)
+    deliver, _plugin, applied = _lossy_onboard(stream, loss, seed=3)
     rng = random.Random(7)
     changes: list[int] = []
     packet = 0
+    sent: list[object] = []
 
     def offer(t: float) -> None:
         nonlocal packet
         stream.offer(PoseSample(t, HMD))
         stream.offer(PoseSample(t, LEFT))
-        if rng.random() < 0.02:
+        if rng.random() < 0.01:
             packet += 1
             buttons = {b: rng.random() < 0.3 for b in BUTTONS}
             s = ControllerSample(t, LEFT, packet, trigger=rng.random(), buttons=buttons)
@@ -105,12 +138,34 @@ def test_button_changes_are_never_dropped_and_stay_in_order() -> None:
                 changes.append(button_bits(s))
             stream.offer(s)
 
-    packets = drive(ep, 8.0, offer=offer)
-    packets += drive(ep, 40.0, start=8.0)  # let the queue empty
-    got = [m.buttons for m in decode(packets) if m.get_type() == "TT_VR_CONTROLLER"]
-    assert got == changes and len(changes) > 20
-    assert stream.stats.buttons == len(got)
-    assert stream.stats.superseded > 100  # poses were superseded meanwhile
+    t = 0.0
+    while t < 120.0 and (t < 8.0 or stream.unconfirmed()):
+        if t < 8.0:
+            offer(t)
+        while (pkt := ep.poll(t)) is not None:
+            sent.append(pkt)
+            deliver(pkt)
+        t += 0.001
+    assert applied == changes and len(changes) > 20  # every change arrived, once, in order
+    st = stream.stats
+    assert st.buttons == st.confirmed == len(changes) and stream.unconfirmed() == 0
+    assert (st.resent > 0) == (loss > 0)
+    assert st.superseded > 100  # poses were superseded meanwhile
+    assert st.taken == st.sent + st.superseded + stream.held()
+
+
+def test_nobody_listening_confirms_nothing() -> None:
+    ep = Endpoint(shipped(), 255, 190, rate_Bps=1000.0, accept_commands=False)
+    stream = PoseStream(shipped(), rto=0.2)
+    ep.add_stream(stream)
+    for k in range(3):
+        stream.offer(ControllerSample(0.0, LEFT, k + 1, buttons={"menu": k % 2 == 0}))
+    out = drive(ep, 5.0)
+    msgs = [m for m in decode(out) if m.get_type() == "TT_VR_CONTROLLER"]
+    assert msgs and all(m.packet_num == 1 for m in msgs)  # the first, resent; the rest wait behind it
+    assert stream.stats.confirmed == 0 and stream.unconfirmed() == 3
+    assert not stream.on_ack(LEFT.index, 2)  # a confirmation of what is not in flight changes nothing
+    assert stream.on_ack(LEFT.index, 1) and stream.unconfirmed() == 2
 
 
 def test_commands_go_before_poses() -> None:
@@ -163,3 +218,25 @@ def test_a_base_station_is_sent_rarely_and_max_hz_caps_a_fast_link() -> None:
     bases = [m for m in msgs if m.device == ttapi.TtVrDevice.TT_VR_DEVICE_TRACKING_REFERENCE]
     assert 190 <= len(heads) <= 201
     assert 2 <= len(bases) <= 3
+
+
+def test_a_restarted_tablet_is_not_stuck_on_a_change_the_onboard_end_already_has() -> None:
+    """The onboard end saw the menu held (a previous dump); a new dump's first change is the menu
+    held: the onboard end applies nothing new but confirms it, and the next change goes through."""
+    ep = Endpoint(shipped(), 255, 190, rate_Bps=1000.0, accept_commands=False)
+    stream = PoseStream(shipped())
+    ep.add_stream(stream)
+    deliver, _plugin, applied = _lossy_onboard(stream, 0.0, seed=1)
+    earlier = PoseStream(shipped())
+    earlier.offer(ControllerSample(0.0, LEFT, 900, buttons={"menu": True}))
+    deliver(ttapi.Encoder(255, 190).encode(earlier.pull(0.0, 100)))
+    assert applied == [int(ttapi.TtVrButtons.TT_VR_BUTTONS_MENU)]
+    stream.offer(ControllerSample(1.0, LEFT, 1, buttons={"menu": True}))
+    stream.offer(ControllerSample(1.1, LEFT, 2, buttons={}))
+    t = 1.0
+    while t < 5.0 and stream.unconfirmed():
+        while (pkt := ep.poll(t)) is not None:
+            deliver(pkt)
+        t += 0.001
+    assert stream.unconfirmed() == 0 and stream.stats.confirmed == 2 and stream.stats.resent == 0
+    assert applied == [int(ttapi.TtVrButtons.TT_VR_BUTTONS_MENU), 0]

@@ -250,7 +250,7 @@ def test_bad_outputs_and_options(tmp_path: Path, files: list[Path]) -> None:
 def test_output_over_an_existing_profile_is_replaced_whole(tmp_path: Path, files: list[Path]) -> None:
     out = tmp_path / "site.toml"
     out.write_text("# the old one\n")
-    proc = run_ttctl("link", "fit", *map(str, files), "-o", str(out))
+    proc = run_ttctl("link", "fit", *map(str, files), "-o", str(out), "--force")
     assert proc.returncode == 0, proc.stderr
     assert "the old one" not in out.read_text()
     # the input is never the output

@@ -14,6 +14,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import math
+import os
 import signal
 import sys
 import threading
@@ -28,6 +29,7 @@ from .common import TABLET, err, link_choice, parse_endpoint
 
 SOURCES = ("synthetic", "openvr", "replay")
 HEADROOM = 0.85  # of the profile's capacity, for streaming poses
+CONFIRM_WAIT = 10.0  # s, at the end, for the onboard end to confirm the last button changes
 
 
 @dataclass
@@ -53,6 +55,8 @@ class DumpOptions:
     profile_file: Path | None = None
     dialect: Path | None = None  # of the link (--to)
     include_dirs: list[Path] = field(default_factory=list)
+    salvage: bool = False  # replay what can be read of a damaged or cut-short recording
+    force: bool = False  # -o may replace an existing file
 
 
 def _check(o: DumpOptions) -> None:
@@ -65,6 +69,8 @@ def _check(o: DumpOptions) -> None:
         raise Fail("--source replay needs the recording: ttctl hmd dump --source replay FILE")
     if o.source != "replay" and o.replay_file:
         raise Fail(f"{o.replay_file!r}: a FILE is only read with --source replay")
+    if o.salvage and o.source != "replay":
+        raise Fail("--salvage applies to --source replay FILE")
     if o.frame not in FRAMES:
         raise Fail(f"unknown frame {o.frame!r}: use ros or openvr")
     for name, v in (("--rate-hmd", o.rate_hmd), ("--rate-controllers", o.rate_controllers)):
@@ -97,6 +103,13 @@ def _open_source(o: DumpOptions) -> tuple[Any, str]:
 
     assert o.replay_file is not None
     rec = read_recording(o.replay_file)
+    if rec.damage:
+        if not o.salvage:
+            rec_close = getattr(rec, "close", None)
+            if rec_close is not None:
+                rec_close()
+            raise Fail(f"{o.replay_file}: {rec.damage}; --salvage replays what can be read", 1)
+        err(f"warning: {o.replay_file}: {rec.damage}; salvaging what can be read (--salvage)")
     return _Replay(rec, o.duration), rec.frame
 
 
@@ -148,6 +161,9 @@ class _Link:
         self.error: str | None = None
         self.done = asyncio.Event()
         self.runner: Any = None
+        self.ep: Any = None
+        self.heard = False  # the onboard end answered (anything, from anyone on the link)
+        self.hurry = threading.Event()  # stop waiting for the last confirmations (a second Ctrl-C)
         self.thread = threading.Thread(target=self._main, name="ttctl-link", daemon=True)
 
     def start(self) -> None:
@@ -168,7 +184,8 @@ class _Link:
         try:
             transport = make_transport(self.spec)
             ep = Endpoint(self.b, *TABLET, mtu=transport.mtu, rate_Bps=self.pace, accept_commands=False,
-                          unsolicited=False)
+                          unsolicited=False, on_message=self._on_message)
+            self.ep = ep
             ep.add_stream(self.stream)
             self.runner = Runner(ep, transport, quiet=self.quiet, hello=hello(TABLET[0], self.spec, self.b))
             await self.runner.start()
@@ -178,8 +195,27 @@ class _Link:
             return
         self.ready.set()
         await self.done.wait()
+        now = self.loop.time()
+        end = now + CONFIRM_WAIT
+        while self.stream.unconfirmed() and self.loop.time() < end and not self.hurry.is_set() and \
+                (self.heard or self.loop.time() < now + 1.0):  # the last button changes, confirmed
+            self.runner.kick()
+            await asyncio.sleep(0.05)
         await self.runner.drain(1.0)
         await self.runner.close()
+
+    def _on_message(self, now: float, msg: Any) -> None:
+        from ..hmd.stream import ACK_PREFIX
+
+        self.heard = True
+        if type(msg).__name__ != "NamedValueInt":
+            return
+        name = msg.name.decode("ascii", "replace") if isinstance(msg.name, bytes) else str(msg.name)
+        name = name.rstrip("\x00")
+        if name.startswith(ACK_PREFIX) and name[len(ACK_PREFIX):].isdigit():
+            self.stream.now = now
+            if self.stream.on_ack(int(name[len(ACK_PREFIX):]), int(msg.value) & 0xFFFFFFFF):
+                self.runner.kick()
 
     def offer(self, s: Any) -> None:
         self.loop.call_soon_threadsafe(self._offer, s)
@@ -192,7 +228,7 @@ class _Link:
     def close(self) -> None:
         if self.thread.is_alive():
             self.loop.call_soon_threadsafe(self.done.set)
-            self.thread.join(5)
+            self.thread.join(CONFIRM_WAIT + 5)
 
 
 def dump(o: DumpOptions) -> int:
@@ -202,10 +238,18 @@ def dump(o: DumpOptions) -> int:
     _check(o)
     fmt = format_for(o.output, o.fmt)
     check_output(o.output, fmt)
+    if o.output is not None and os.path.isfile(o.output) and not o.force:  # as `ros2 bag record` refuses
+        raise Fail(f"{o.output} exists: --force replaces it")
     link = _Link(o) if o.to else None
     source, src_frame = _open_source(o)
     stop = threading.Event()
-    previous = {sig: signal.signal(sig, lambda *_: stop.set()) for sig in (signal.SIGINT, signal.SIGTERM)}
+
+    def on_signal(*_: Any) -> None:  # the first stops taking samples, a second stops waiting for confirmations
+        if stop.is_set() and link is not None:
+            link.hurry.set()
+        stop.set()
+
+    previous = {sig: signal.signal(sig, on_signal) for sig in (signal.SIGINT, signal.SIGTERM)}
     if interrupts.seen():  # a Ctrl-C Python swallowed on the way here
         stop.set()
     writer = None
@@ -221,7 +265,7 @@ def dump(o: DumpOptions) -> int:
             meta = {"source": o.source, "rate_hmd": o.rate_hmd, "rate_controllers": o.rate_controllers,
                     **({"seed": o.seed} if o.source == "synthetic" else {})}
         writer = open_writer(o.output, fmt, o.frame, o.parent_frame, meta)
-        keep = Continuity()
+        keep, keep_link = Continuity(), Continuity()
         first_t: float | None = None
         for s in source.samples():
             if stop.is_set():
@@ -232,10 +276,11 @@ def dump(o: DumpOptions) -> int:
                 wait = started + (s.t - first_t) / o.speed - time.monotonic()
                 if wait > 0 and stop.wait(wait):
                     break
-            s = keep(convert(s, src_frame, o.frame))
-            writer.write(s)
-            if link is not None:
-                link.offer(s)
+            out = keep(convert(s, src_frame, o.frame))
+            writer.write(out)
+            if link is not None:  # TT_VR_POSE is REP-103 whatever --frame the file is in
+                link.offer(out if o.frame == "ros" else keep_link(convert(s, src_frame, "ros")))
+            s = out
             taken += 1
             kinds[s.device.frame] = kinds.get(s.device.frame, 0) + 1
         writer.close()
@@ -250,15 +295,15 @@ def dump(o: DumpOptions) -> int:
             writer.abort()
         raise
     finally:
-        for sig, h in previous.items():
-            signal.signal(sig, h)
         source.close()
         if link is not None:
             link.close()
+        for sig, h in previous.items():
+            signal.signal(sig, h)
     elapsed = time.monotonic() - started
     if not o.quiet:
         _summary(o, fmt, taken, kinds, elapsed, writer, link, stop.is_set())
-    return 0
+    return 0 if link is None else _link_verdict(o, link)
 
 
 def _summary(o: DumpOptions, fmt: str, taken: int, kinds: dict[str, int], elapsed: float, writer: Any,
@@ -269,8 +314,32 @@ def _summary(o: DumpOptions, fmt: str, taken: int, kinds: dict[str, int], elapse
         f"({fmt}, {o.frame} frame under {o.parent_frame})")
     if link is not None:
         st = link.stream.stats
-        err(f"streamed to {o.to}: {st.taken} taken, {st.sent} sent, {st.superseded} superseded "
-            f"({st.buttons} button changes, none dropped)" + (f", paced at {link.pace:.0f} B/s" if link.pace else ""))
+        held = link.stream.held()
+        err(f"streamed to {o.to}: {st.taken} taken = {st.sent} sent + {st.superseded} superseded"
+            + (f" + {held} not sent by the end" if held else "")
+            + (f", paced at {link.pace:.0f} B/s" if link.pace else ""))
+        if st.buttons:
+            err(f"button changes: {st.confirmed} of {st.buttons} confirmed by the onboard end"
+                + (f" ({st.resent} resent)" if st.resent else ""))
+
+
+def _link_verdict(o: DumpOptions, link: _Link) -> int:
+    """1 when the onboard end never answered or a button change was not confirmed (said, even
+    with --quiet)."""
+    lost = link.stream.unconfirmed()
+    if not link.heard:
+        err(f"error: nothing heard from the onboard end at {o.to}: no pose or button change can be confirmed")
+        return 1
+    if lost and not link.stream.stats.confirmed:
+        err(f"error: the onboard end at {o.to} confirmed none of {lost} button change{'s' if lost != 1 else ''}: it "
+            "must answer each TT_VR_CONTROLLER with NAMED_VALUE_INT 'vrbtn<index>' = its packet_num "
+            "(ttctl emulate onboard does)")
+        return 1
+    if lost:
+        err(f"error: {lost} button change{'s' if lost != 1 else ''} not confirmed by the onboard end within "
+            f"{CONFIRM_WAIT:g} s of the end")
+        return 1
+    return 0
 
 
 def pulse(device: str, us: int) -> int:

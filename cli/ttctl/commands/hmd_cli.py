@@ -14,7 +14,7 @@ hmd_app = typer.Typer(help="VR headset and controller pose streams: record, repl
 
 @hmd_app.command("dump")
 def hmd_dump_cmd(
-    source: Annotated[str, typer.Option("--source", help="openvr (a headset, through SteamVR; needs ttctl[vr]), "
+    source: Annotated[str, typer.Option("--source", help="openvr (a headset, through SteamVR; needs ttctl\\[vr]), "
                                                          "synthetic (seeded head and hand motion), or replay FILE "
                                                          "(a recording of ours).")] = "synthetic",
     file: Annotated[str | None, typer.Argument(help="The recording, with --source replay.", show_default=False)]
@@ -48,6 +48,9 @@ def hmd_dump_cmd(
     profile_file: ProfileFileOpt = None,
     distance: DistanceOpt = 10.0,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No summary on stderr.")] = False,
+    salvage: Annotated[bool, typer.Option("--salvage", help="Replay what can be read of a recording that is cut "
+                                                            "short or damaged (refused otherwise, exit 1).")] = False,
+    force: Annotated[bool, typer.Option("--force", help="Let -o replace an existing file.")] = False,
     dialect: DialectOpt = None,
     include: DialectIncludeOpt = None,
 ) -> None:
@@ -61,7 +64,8 @@ def hmd_dump_cmd(
 
     raise typer.Exit(dump(DumpOptions(source, file, rate_hmd, rate_controllers, duration, fmt, output, frame,
                                       parent_frame, seed, speed, to, rate, profile, distance, stream_hz, quiet,
-                                      profile_file=profile_file, dialect=dialect, include_dirs=include or [])))
+                                      profile_file=profile_file, dialect=dialect, include_dirs=include or [],
+                                      salvage=salvage, force=force)))
 
 
 @hmd_app.command("pulse")
@@ -69,7 +73,7 @@ def hmd_pulse_cmd(
     device: Annotated[str, typer.Option("--device", help="left or right controller.")] = "right",
     us: Annotated[int, typer.Option("--us", help="Pulse length in microseconds, 0..3999 (clamped).")] = 2000,
 ) -> None:
-    """A haptic pulse on a controller (the openvr source; needs ttctl[vr] and SteamVR)."""
+    """A haptic pulse on a controller (the openvr source; needs ttctl\\[vr] and SteamVR)."""
     from .hmd import pulse
 
     raise typer.Exit(pulse(device, us))

@@ -88,6 +88,8 @@ def link_fit(
                                                      "direction).")] = "m100",
     json_out: Annotated[bool, typer.Option("--json", help="Print the fit (profile, notes, residuals) as JSON.")]
     = False,
+    force: Annotated[bool, typer.Option("--force", help="Replace -o's file if it exists (refused otherwise).")]
+    = False,
 ) -> None:
     """A link profile fitted from your own measurements: rate and loss against distance, pacing,
     SDK buffer depth, latency and burstiness (Gilbert-Elliott from the loss runs). Each measurement
@@ -98,4 +100,4 @@ def link_fit(
     """
     from .link_fit import fit_command
 
-    raise typer.Exit(fit_command([str(m) for m in measurements], str(output), name, base, json_out))
+    raise typer.Exit(fit_command([str(m) for m in measurements], str(output), name, base, json_out, force=force))

@@ -12,7 +12,8 @@ from ..errors import Fail
 _NAME = re.compile(r"[A-Za-z0-9_-]{1,64}")
 
 
-def fit_command(paths: list[str], output: str, name: str | None, base: str, as_json: bool) -> int:
+def fit_command(paths: list[str], output: str, name: str | None, base: str, as_json: bool,
+                force: bool = False) -> int:
     from ..bench import fit as F
     from ..bench.plots import output_problem, write_atomically
 
@@ -27,6 +28,8 @@ def fit_command(paths: list[str], output: str, name: str | None, base: str, as_j
         raise Fail(f"--name {name!r}: a profile name is 1..64 letters, digits, '_' or '-'")
     if os.path.abspath(output) in {os.path.abspath(p) for p in paths}:
         raise Fail(f"-o {output} is one of the measurements: it would be overwritten")
+    if not force and os.path.lexists(output):  # a hand-edited profile is not replaced by accident
+        raise Fail(f"-o {output} exists: --force replaces it")
     base_prof = F.base_profile(base)
     ms = [F.load_measurement(p) for p in paths]
     result = F.fit(ms, base_prof, name)

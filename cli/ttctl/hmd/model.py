@@ -18,6 +18,10 @@ ROLES = ("none", "left", "right")
 FRAMES = ("ros", "openvr")
 # Joy buttons, in the order ROS Vive nodes publish them (sensor_msgs/Joy.buttons)
 BUTTONS = ("trigger_click", "pad_touched", "pad_pressed", "menu", "grip")
+# sensor_msgs/Joy as vive_ros (github.com/robosavvy/vive_ros, vive_node.cpp) publishes a Vive
+# controller: buttons [menu, trigger, pad pressed, grip], axes [pad x, pad y, trigger]; what
+# vive_ros lacks (the pad touched) comes after its four
+JOY_BUTTONS = ("menu", "trigger_click", "pad_pressed", "grip", "pad_touched")
 
 
 @dataclass(frozen=True, slots=True)
@@ -80,8 +84,19 @@ class ControllerSample:
 
     @property
     def button_list(self) -> list[int]:
-        """sensor_msgs/Joy buttons: [trigger_click, pad_touched, pad_pressed, menu, grip]."""
+        """[trigger_click, pad_touched, pad_pressed, menu, grip] (JSONL, CSV order)."""
         return [int(bool(self.buttons.get(b, False))) for b in BUTTONS]
+
+    @property
+    def joy_axes(self) -> list[float]:
+        """sensor_msgs/Joy axes as vive_ros publishes them: [pad_x, pad_y, trigger]."""
+        return [self.pad_x, self.pad_y, self.trigger]
+
+    @property
+    def joy_buttons(self) -> list[int]:
+        """sensor_msgs/Joy buttons as vive_ros publishes them, then ours: [menu, trigger_click,
+        pad_pressed, grip, pad_touched]."""
+        return [int(bool(self.buttons.get(b, False))) for b in JOY_BUTTONS]
 
 
 Sample = PoseSample | ControllerSample

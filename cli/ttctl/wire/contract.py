@@ -67,6 +67,7 @@ RUNTIME_MESSAGES: dict[str, tuple[int, int]] = {
     "HOME_POSITION": (242, 104),
     "MESSAGE_INTERVAL": (244, 95),
     "EXTENDED_SYS_STATE": (245, 130),
+    "NAMED_VALUE_INT": (252, 44),
     "STATUSTEXT": (253, 83),
     "CAMERA_FOV_STATUS": (271, 22),
     "ODOMETRY": (331, 91),

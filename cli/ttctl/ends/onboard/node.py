@@ -77,6 +77,9 @@ class OnboardNode:
         # --orbit-hz of the wall clock, and CAMERA_FOV_STATUS in the ground stations' time, at any --speed
         orbit = OrbitCameraPlugin(cfg.orbit_hz / (cfg.speed or 1.0), boot_ms=lambda: int(self._wall() * 1000))
         builtin: list[Plugin] = [orbit] if cfg.orbit_hz > 0 else []
+        from .vr_controller import VrControllerPlugin
+
+        builtin.append(VrControllerPlugin())  # the controllers' button changes, confirmed to the tablet
         self.plugins = builtin + (plugins or [])
         for p in self.plugins:
             self.dispatcher.add(p)

@@ -27,6 +27,7 @@ from .base import Recording, Writer, check_frames
 FORMATS = ("jsonl", "csv", "mcap", "bag")
 EXTENSIONS = {".jsonl": "jsonl", ".ndjson": "jsonl", ".csv": "csv", ".mcap": "mcap", ".bag": "bag"}
 _EXTRA = "pip install 'ttctl[record]'"
+MAX_BYTES = 64 * 2**30  # a recording bigger than this is not one (10 minutes of MCAP are ~45 MB)
 _A = {"jsonl": "a JSONL file", "csv": "a CSV file", "mcap": "an MCAP file", "bag": "a ROS 1 bag"}
 
 
@@ -159,12 +160,28 @@ def _one_line_fails(samples: Iterator[Sample]) -> Iterator[Sample]:
 
 
 def _open_recording(path: str) -> Recording:
+    if os.path.isdir(path):
+        if not os.path.isfile(os.path.join(path, "metadata.yaml")):
+            raise Fail(f"{path}: is a directory without metadata.yaml: not a ROS 2 bag folder")
+        why = _extra_missing("mcap")
+        if why:
+            raise Fail(f"reading {path} needs the recording extra ({why}): {_EXTRA}")
+        from .rosreplay import read_ros_folder
+
+        return read_ros_folder(path)
+    if os.path.exists(path) and not os.path.isfile(path):
+        raise Fail(f"{path}: not a regular file (a recording is a file, or a ROS 2 bag folder)")
+    try:
+        size = os.path.getsize(path)
+    except OSError:
+        size = 0
+    if size > MAX_BYTES:
+        raise Fail(f"{path}: {size} bytes, more than the {MAX_BYTES // 2**30} GiB a recording may have")
     try:
         with open(path, "rb") as f:
             head = f.read(64)
     except IsADirectoryError:
-        raise Fail(f"{path}: is a directory (ttctl records ROS 2 as a single .mcap file, not a bag folder)") \
-            from None
+        raise Fail(f"{path}: is a directory") from None
     except FileNotFoundError:
         raise Fail(f"{path}: no such file") from None
     except OSError as e:

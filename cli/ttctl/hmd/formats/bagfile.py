@@ -119,7 +119,7 @@ class BagWriter(RosWriter):
 
     def _joy(self, dev: Dev, ns: int, s: ControllerSample) -> None:
         data = ROS1.joy(int(s.packet) & 0xFFFFFFFF, *divmod(ns, _NS), dev.frame,
-                        float32s((float(s.trigger), float(s.pad_x), float(s.pad_y))), s.button_list)
+                        float32s((float(s.pad_x), float(s.pad_y), float(s.trigger))), s.joy_buttons)
         self._put(dev.joy_topic, LEAVES["joy"], ns, data)
 
     def close(self) -> None:

@@ -14,6 +14,7 @@ any bag written in time order; a bag whose chunks overlap in time is read with r
 from __future__ import annotations
 
 import json
+import os
 from collections.abc import Iterator
 from io import BytesIO
 from itertools import pairwise
@@ -27,6 +28,7 @@ from .bagfile import INFO_TOPIC
 from .base import Recording
 from .codecs import ROS1, STRING
 from .ros import LEAVES, TYPES, Rebuilder, typestore
+from .ros import VERSION as ROS_VERSION
 
 # a message record as rosbags writes it: header length 38, fields op=0x02, conn=<u32>, time=<u32 u32>
 _MSG_HEAD = b"\x26\x00\x00\x00\x04\x00\x00\x00op=\x02\x09\x00\x00\x00conn="
@@ -85,6 +87,10 @@ class _Bag:
             raise ReaderError(f"Bag encryption {header.get_string('encryptor')!r} is not supported.")
         if index_pos == 0:
             raise ReaderError("Bag is not indexed, reindex before reading.")
+        size = os.fstat(bio.fileno()).st_size
+        if index_pos >= size:
+            raise ReaderError(f"cut short: its index should start at byte {index_pos} but the file has {size} "
+                              "bytes; `rosbag reindex` can rebuild the index")
         if chunk_count == 0:
             return
         bio.seek(index_pos)
@@ -92,7 +98,7 @@ class _Bag:
             self.connections = [r.read_connection() for _ in range(conn_count)]
             self.chunk_infos = [r.read_chunk_info() for _ in range(chunk_count)]
         except ReaderError as e:
-            raise ReaderError(f"Bag index looks damaged: {e.args}") from None
+            raise ReaderError(f"its index is damaged ({'; '.join(str(a) for a in e.args)})") from None
 
     def close(self) -> None:
         bio, self.reader.bio = self.reader.bio, None
@@ -210,13 +216,13 @@ def read_bag(path: str) -> Recording:
             version = int(info.get("version", 1))
         except (ValueError, KeyError, TypeError) as e:  # CodecError is a ValueError
             raise Fail(f"{path}: bad {INFO_TOPIC} message ({e})") from None
-        if version > 1:
-            raise Fail(f"{path}: recording version {version}; this ttctl reads up to 1")
+        if version > ROS_VERSION:
+            raise Fail(f"{path}: recording version {version}; this ttctl reads up to {ROS_VERSION}")
         if frame not in ("ros", "openvr") or not isinstance(parent, str) or not isinstance(meta, dict):
             raise Fail(f"{path}: bad {INFO_TOPIC} message (frame {frame!r})")
     finally:
         bag.close()
-    return Recording(frame, parent, meta, _samples(path), "bag")
+    return Recording(frame, parent, meta, _samples(path, version), "bag")
 
 
 def _first_message(bag: _Bag, conns: dict[int, Any]) -> bytes | None:
@@ -262,15 +268,15 @@ def _routes(path: str, connections: list[Any]) -> dict[int, tuple[int, str, str]
     return routes
 
 
-def _samples(path: str) -> Iterator[Sample]:
+def _samples(path: str, version: int) -> Iterator[Sample]:
     bag = _Bag(path).open()
     try:
         routes = _routes(path, bag.connections)
         if not bag.in_order():
             bag.close()
-            yield from _samples_rosbags(path, routes)
+            yield from _samples_rosbags(path, routes, version)
             return
-        rebuild = Rebuilder(path)
+        rebuild = Rebuilder(path, version)
         group: list[tuple[tuple[int, str, str], Any]] = []  # the messages of one instant
         group_ns = -1
         for info in sorted(bag.chunk_infos, key=lambda c: c.pos) if routes else ():
@@ -305,9 +311,10 @@ def _decode(leaf: str, raw: bytes) -> Any:
     return ROS1.decode_string(raw)
 
 
-def _samples_rosbags(path: str, routes: dict[int, tuple[int, str, str]]) -> Iterator[Sample]:
+def _samples_rosbags(path: str, routes: dict[int, tuple[int, str, str]],
+                     version: int = ROS_VERSION) -> Iterator[Sample]:
     """rosbags' Reader, for bags whose chunks overlap in time."""
-    rebuild = Rebuilder(path)
+    rebuild = Rebuilder(path, version)
     reader = _rosbags_open(path)
     try:
         conns = [c for c in reader.connections if c.id in routes]

@@ -33,7 +33,8 @@ _FILE_MODE = 0o666
 class Recording:
     """A recording opened for replay. `samples` is lazy (the file is read as it is consumed) and
     in recording order, which is time order for every ttctl source. `truncated` is True when the
-    file ended early (a crash while recording): the samples stop at the last complete piece."""
+    file ended early (a crash while recording): the samples stop at the last complete piece;
+    `damage` says in words what is wrong with a file that can still be partly read."""
 
     frame: str  # "ros" (REP-103) or "openvr": the axes every pose in the file is expressed in
     parent_frame: str  # the world frame poses are relative to (tf parent)
@@ -41,6 +42,11 @@ class Recording:
     samples: Iterator[Sample]
     format: str = ""  # one of FORMATS
     truncated: bool = False
+    damage: str = ""  # what is wrong with a file that can still be partly read ("" when nothing is)
+
+    def __post_init__(self) -> None:
+        if self.truncated and not self.damage:
+            self.damage = "cut short (the recording was interrupted): its last line is incomplete"
 
 
 class Writer:

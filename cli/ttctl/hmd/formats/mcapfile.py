@@ -25,12 +25,23 @@ from typing import Any
 
 from ttctl import __version__
 
-from ..model import ControllerSample, PoseSample
+from ..model import ControllerSample, PoseSample, Sample
 from .base import AtomicFile, check_frames
 from .codecs import CDR, ENCAPSULATION, STRING, TF, float32s
 from .mcapio import MAGIC, MESSAGE, MESSAGE_HEAD_SIZE, ChunkWriter, message_format
 from .mcapreplay import read_mcap
-from .ros import DEVICES_TOPIC, LEAVES, TF_STATIC_TOPIC, TF_TOPIC, Dev, RosWriter, recording_info, typestore
+from .ros import (
+    DEVICES_TOPIC,
+    INFO_TOPIC,
+    LEAVES,
+    TF_STATIC_TOPIC,
+    TF_TOPIC,
+    Dev,
+    RosWriter,
+    recording_info,
+    to_ns,
+    typestore,
+)
 
 CHUNK_SIZE = 1 << 20  # bytes of messages per chunk: what a crash can lose, and what a reader decompresses at once
 _INFINITE = "    sec: 9223372036\n    nsec: 854775807\n"  # RMW_DURATION_INFINITE as ros2 bag writes it
@@ -72,6 +83,7 @@ class McapWriter(RosWriter):
             self._mcap.start(profile="ros2", library=f"ttctl {__version__}")
             self._mcap.add_metadata("rosbag2", {"ROS_DISTRO": "humble"})
             info = recording_info(frame, parent_frame, meta)
+            self._info = json.dumps(info, default=str, separators=(",", ":"))
             self._mcap.add_metadata("ttctl", {k: json.dumps(v, default=str) if k == "meta" else str(v)
                                               for k, v in info.items()})
         except BaseException:
@@ -98,6 +110,11 @@ class McapWriter(RosWriter):
         record = _RECORD_HEAD.pack(MESSAGE, MESSAGE_HEAD_SIZE - 9 + len(data), channel[0], sequence, ns, ns) + data
         self._mcap.add_record(channel[0], channel[1], ns, record)
         self.counts[topic] += 1
+
+    def write(self, s: Sample) -> None:
+        if INFO_TOPIC not in self._topics and not self._done:  # latched, once, before the first sample
+            self._put(INFO_TOPIC, self._channel(INFO_TOPIC, STRING, latched=True), to_ns(s.t), CDR.string(self._info))
+        super().write(s)
 
     def _devices(self, ns: int, text: str) -> None:
         if self._devices_channel is None:
@@ -177,8 +194,8 @@ class McapWriter(RosWriter):
         if not dev.joy_ready:
             dev.joy_channel = self._channel(dev.joy_topic, LEAVES["joy"])
             dev.joy_ready = True
-        data = CDR.joy(0, *divmod(ns, _NS), dev.frame, float32s((float(s.trigger), float(s.pad_x), float(s.pad_y))),
-                       s.button_list)
+        data = CDR.joy(0, *divmod(ns, _NS), dev.frame, float32s((float(s.pad_x), float(s.pad_y), float(s.trigger))),
+                       s.joy_buttons)
         self._put(dev.joy_topic, dev.joy_channel, ns, data, int(s.packet) & 0xFFFFFFFF)
 
     def close(self) -> None:

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import os
+import zlib
 from collections.abc import Iterator
 from struct import Struct
 from typing import Any
@@ -24,11 +25,13 @@ from .base import Recording
 from .codecs import CDR, STRING, CodecError
 from .mcapio import MAGIC, MESSAGE, MESSAGE_HEAD_SIZE, inner_record, iter_records, walk_error
 from .ros import LEAVES, Rebuilder
+from .ros import VERSION as ROS_VERSION
 
 _FOOTER_OPCODE = 0x02
 _FOOTER_SIZE = 1 + 8 + 8 + 8 + 4  # opcode, length, summary_start, summary_offset_start, summary_crc
 _HEAD = Struct("<BQHIQQ")  # a Message record: opcode, length, channel_id, sequence, log_time, publish_time
 _RECORD = Struct("<BQ")
+_FOOTER = Struct("<BQQQI")
 _U32 = Struct("<I")
 _D3, _D4 = Struct("<3d"), Struct("<4d")
 _NS = 1_000_000_000
@@ -45,11 +48,35 @@ def _complete(path: str, size: int) -> bool:
     return tail.endswith(MAGIC) and tail[0] == _FOOTER_OPCODE
 
 
+def _summary_crc_error(path: str, size: int) -> str:
+    """Why a finished file's Footer refuses its summary section ("" when its CRC matches or is 0,
+    as the MCAP specification says readers check: from the summary's start through the footer's
+    summary_offset_start)."""
+    footer_at = size - len(MAGIC) - _FOOTER_SIZE
+    with open(path, "rb") as f:
+        f.seek(footer_at)
+        footer = f.read(_FOOTER_SIZE)
+        _, _, summary_start, _, crc = _FOOTER.unpack(footer)
+        if crc == 0:
+            return ""
+        start = summary_start or footer_at
+        if not len(MAGIC) <= start <= footer_at:
+            return f"its footer points the summary at byte {summary_start}, outside the file"
+        f.seek(start)
+        body = f.read(footer_at - start)
+    if zlib.crc32(footer[:-4], zlib.crc32(body)) != crc:
+        return "damaged: its summary's CRC does not match (Foxglove's and mcap's readers refuse it)"
+    return ""
+
+
 def read_mcap(path: str) -> Recording:
     from mcap.records import Chunk, Metadata
 
     size = os.path.getsize(path)
     truncated = not _complete(path, size)
+    damage = "" if truncated else _summary_crc_error(path, size)
+    if truncated:
+        damage = "cut short (no footer: the recording was interrupted)"
     info: dict[str, str] | None = None
     for rec in iter_records(path, size, truncated, chunks="record"):
         if isinstance(rec, Metadata) and rec.name == "ttctl":
@@ -58,6 +85,16 @@ def read_mcap(path: str) -> Recording:
         if isinstance(rec, (Chunk, tuple)):  # the data has begun: ttctl writes its metadata first
             break
     if info is None:
+        if not truncated:  # rewritten by a tool that drops metadata records: the messages still say it
+            from .rosreplay import INFO_TOPIC, read_ros_folder
+
+            try:
+                rec = read_ros_folder(path)
+                rec.damage = damage
+                return rec
+            except Fail as e:
+                if INFO_TOPIC not in str(e):
+                    raise
         what = "cut short before its first data" if truncated else "not recorded by ttctl hmd"
         raise Fail(f"{path}: no 'ttctl' metadata record: {what}")
     try:
@@ -66,11 +103,11 @@ def read_mcap(path: str) -> Recording:
         version = int(info.get("version", "1"))
     except (ValueError, KeyError) as e:
         raise Fail(f"{path}: bad 'ttctl' metadata record ({e})") from None
-    if version > 1:
-        raise Fail(f"{path}: recording version {version}; this ttctl reads up to 1")
+    if version > ROS_VERSION:
+        raise Fail(f"{path}: recording version {version}; this ttctl reads up to {ROS_VERSION}")
     if frame not in ("ros", "openvr") or not isinstance(meta, dict):
         raise Fail(f"{path}: bad 'ttctl' metadata record (frame {frame!r})")
-    return Recording(frame, parent, meta, _Replay(path, truncated).samples(size), "mcap", truncated)
+    return Recording(frame, parent, meta, _Replay(path, truncated, version).samples(size), "mcap", truncated, damage)
 
 
 class _Route:
@@ -86,9 +123,9 @@ class _Route:
 
 
 class _Replay:
-    def __init__(self, path: str, truncated: bool) -> None:
+    def __init__(self, path: str, truncated: bool, version: int) -> None:
         self.path, self.truncated = path, truncated
-        self.rebuild = Rebuilder(path)
+        self.rebuild = Rebuilder(path, version)
         self.schemas: dict[int, str] = {}
         self.routes: dict[int, _Route] = {}
         self.skip: set[int] = set()  # channels replay does not need (/tf, /tf_static, ...)

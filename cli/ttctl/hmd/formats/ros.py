@@ -13,11 +13,18 @@ Topics (F = the device's tf frame: hmd, controller_left, tracker_<serial>, ...):
                                                   ~0.01 deg), as tf2's static broadcaster does
   /vr/F/pose         geometry_msgs/PoseStamped   every valid pose, frame_id parent_frame
   /vr/F/twist        geometry_msgs/TwistStamped  its velocities (linear m/s, angular rad/s), same
-  /vr/F/joy          sensor_msgs/Joy             a controller's inputs: axes [trigger, pad_x,
+  /vr/F/joy          sensor_msgs/Joy             a controller's inputs in vive_ros's layout:
+                                                  axes [pad_x, pad_y, trigger], buttons [menu,
+                                                  trigger_click, pad_pressed, grip, pad_touched]
+                                                  (recording version 1: axes [trigger, pad_x,
                                                   pad_y], buttons [trigger_click, pad_touched,
-                                                  pad_pressed, menu, grip]; frame_id F; OpenVR's
+                                                  pad_pressed, menu, grip]); frame_id F; OpenVR's
                                                   packet number rides in ROS 1's header.seq and
-                                                  in the MCAP message's sequence field
+                                                  in the MCAP message's sequence field; where a
+                                                  tool dropped them (0), replay numbers each
+                                                  controller's messages in order
+  /vr/recording      std_msgs/String             JSON, latched, once: {"format", "version",
+                                                  "frame", "parent_frame", "meta"}
   /vr/devices        std_msgs/String             JSON, when a device appears or its role, serial,
                                                   validity or connection changes:
                                                   {"index", "kind", "role", "serial", "frame",
@@ -39,12 +46,13 @@ from typing import Any
 
 from ttctl.errors import Fail
 
-from ..model import BUTTONS, KINDS, ROLES, ControllerSample, Device, PoseSample, Sample
+from ..model import BUTTONS, JOY_BUTTONS, KINDS, ROLES, ControllerSample, Device, PoseSample, Sample
 from .base import Writer
 from .codecs import JOY, POSE, STRING, TF, TWIST
 
 TYPES = (TF, POSE, TWIST, JOY, STRING)
 DEVICES_TOPIC = "/vr/devices"
+INFO_TOPIC = "/vr/recording"  # the recording's header, in a message (what tools that rewrite files keep)
 TF_TOPIC, TF_STATIC_TOPIC = "/tf", "/tf_static"
 STATIC_TOLERANCE = 1e-4  # metres, and quaternion components (~0.01 deg)
 LEAVES = {"pose": POSE, "twist": TWIST, "joy": JOY}  # /vr/F/<leaf>: the type each carries
@@ -52,6 +60,7 @@ LEAVES = {"pose": POSE, "twist": TWIST, "joy": JOY}  # /vr/F/<leaf>: the type ea
 # Noetic's store lacks tf2_msgs (rosbags ships what ROS 1 core had); its definition is one line
 _TF_MSG = "geometry_msgs/TransformStamped[] transforms"
 _NS = 1_000_000_000
+VERSION = 2  # of ROS recordings: 2 has vive_ros's Joy layout, 1 had ours
 
 
 def to_ns(t: float) -> int:
@@ -87,7 +96,7 @@ def typestore(ros_version: int) -> Any:
 
 
 def recording_info(frame: str, parent_frame: str, meta: dict[str, Any]) -> dict[str, Any]:
-    return {"format": "ttctl.hmd", "version": 1, "frame": frame, "parent_frame": parent_frame, "meta": meta}
+    return {"format": "ttctl.hmd", "version": VERSION, "frame": frame, "parent_frame": parent_frame, "meta": meta}
 
 
 class Dev:
@@ -200,8 +209,10 @@ class Rebuilder:
     sample from /vr/F/joy, an invalid sample where /vr/devices says a device became invalid.
     Each feed method appends the samples it completes to `out`, which the caller empties."""
 
-    def __init__(self, where: str) -> None:
+    def __init__(self, where: str, version: int = VERSION) -> None:
         self.where = where  # the file, for messages
+        self.version = version  # of the recording: the Joy layout
+        self._packets: dict[str, int] = {}  # by frame: the last packet number given
         self.out: list[Sample] = []
         # by frame: (device, valid, connected) as /vr/devices last said; (ns, pose or None, twist
         # or None) of a pose or twist waiting for its other half (public for mcapreplay's fast path)
@@ -232,6 +243,14 @@ class Rebuilder:
         if len(axes) < 3 or len(buttons) < len(BUTTONS):
             raise Fail(f"{self.where}: '/vr/{frame}/joy' at {from_ns(ns):.6f}: {len(axes)} axes and {len(buttons)} "
                        f"buttons, expected 3 and {len(BUTTONS)}")
+        if not sequence:  # dropped by a tool (rosbags-convert, ROS 2's Header has no seq): in order instead
+            sequence = self._packets.get(frame, 0) + 1
+        self._packets[frame] = sequence
+        if self.version >= 2:
+            self.out.append(ControllerSample(from_ns(ns), device, sequence, float(axes[2]), float(axes[0]),
+                                             float(axes[1]), {b: bool(v) for b, v in
+                                                              zip(JOY_BUTTONS, buttons, strict=False)}))
+            return
         self.out.append(ControllerSample(from_ns(ns), device, sequence, float(axes[0]), float(axes[1]),
                                          float(axes[2]), {b: bool(v) for b, v in zip(BUTTONS, buttons, strict=False)}))
 

@@ -216,10 +216,25 @@ def _dumps(obj: dict[str, Any]) -> str:
 # ---------------------------------------------------------------------------------------------- reading
 
 
+MAX_LINE = 1 << 20  # bytes: a sample's line is ~400; a longer one is no recording's (and is not read whole)
+
+
+def bounded(f: BinaryIO, path: str) -> Iterator[bytes]:
+    """The file's lines, each read at most MAX_LINE bytes at a time: a longer line is a Fail
+    (a file of zeros, a binary file named .jsonl), not a read that fills the memory."""
+    readline = f.readline
+    n = 0
+    while raw := readline(MAX_LINE):
+        n += 1
+        if len(raw) == MAX_LINE and not raw.endswith(b"\n") and f.read(1):
+            raise Fail(f"{path} line {n}: longer than {MAX_LINE // 1024} KiB: not a line of a recording")
+        yield raw
+
+
 def _lines(f: BinaryIO, path: str, state: dict[str, bool]) -> Iterator[tuple[int, str, bool]]:
     """(line number, text, ends with a newline), decoding each line on its own so a bad byte is
     reported with its line number."""
-    for n, raw in enumerate(f, 1):
+    for n, raw in enumerate(bounded(f, path), 1):
         try:
             text = raw.decode("utf-8-sig" if n == 1 else "utf-8")  # a spreadsheet's byte-order mark
         except UnicodeDecodeError:
@@ -305,7 +320,7 @@ def _jsonl_samples(path: str, frame: str, parent: str, truncated: bool) -> Itera
     scan = json.decoder.JSONDecoder().scan_once  # json.loads minus two Python-level wrappers (~1 us a line)
     fast_pose = _fast_pose
     with open(path, "rb") as f:
-        for n, raw in enumerate(f, 1):
+        for n, raw in enumerate(bounded(f, path), 1):
             try:
                 text = raw.decode("utf-8-sig" if n == 1 else "utf-8")  # a spreadsheet's byte-order mark
             except UnicodeDecodeError:

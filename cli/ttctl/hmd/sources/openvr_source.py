@@ -311,8 +311,11 @@ def pulse(device: str, us: int, module: Any = None) -> tuple[int, str | None]:
         raise Fail(f"haptic pulse: device {device!r} must be left or right")
     used = min(max(int(us), 0), MAX_PULSE_US)
     warning = None if used == us else f"a pulse of {us} us was clamped to {used} us (OpenVR takes 0..{MAX_PULSE_US})"
-    vr = load(module)
-    system = start(vr)
+    try:
+        vr = load(module)
+        system = start(vr)
+    except Fail as e:  # a synthetic source has no controller to pulse: no advice to use one
+        raise Fail(str(e).replace(_SYNTHETIC, ""), e.code) from None
     try:
         found = [d.index for d in scan(vr, system).values()
                  if d.kind == "controller" and d.role == device and system.isTrackedDeviceConnected(d.index)]
