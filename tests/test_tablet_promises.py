@@ -213,3 +213,16 @@ def test_no_gcs_with_gcs_is_refused() -> None:
     proc = run_ttctl("emulate", "onboard", "--no-gcs", "--gcs", f"udpout:{LOCAL}:14550", timeout=30)
     assert proc.returncode == 2
     assert one_line(proc.stderr) == "ttctl: error: --no-gcs and --gcs contradict each other: give one of them"
+
+
+def test_a_fast_vehicle_clock_does_not_lose_the_tablet(tmp_path: Path, start: Start) -> None:
+    """--speed 10 runs the vehicle's clock ten times faster; the link-loss watch keeps the wall
+    clock, as the tablet's once-a-second HEARTBEAT does (regression: it once said "tablet link
+    lost (10 s silent)" twice in a 3 s wait)."""
+    port = free_port()
+    node = vehicle(start, tmp_path, port, "--speed", "10")
+    proc = tablet(tmp_path, port, "- takeoff: 3\n- wait: {until: state == hovering, timeout: 30}\n- wait: 3\n"
+                                  "- status\n")
+    assert proc.returncode == 0, proc.stderr
+    assert "hovering (armed)" in proc.stdout
+    assert "link lost" not in node.stderr
