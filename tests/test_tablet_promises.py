@@ -154,6 +154,20 @@ def test_ctrl_c_at_the_prompt_cancels_the_waiting_command_and_the_prompt_goes_on
     assert "landed: 0.0 N 0.0 E 0.0 m" in out
 
 
+def test_the_prompt_gives_json_for_each_line_with_json(tmp_path: Path, start: Start) -> None:
+    port = free_port()
+    vehicle(start, tmp_path, port)
+    proc = subprocess.run(ttctl_cmd() + ["emulate", "tablet", "--to", f"udpout:{LOCAL}:{port}", "--json"],
+                          input="status\ntakeoff -5\ngoto 5 0 3\nquit\n", capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    steps = [json.loads(x) for x in proc.stdout.splitlines() if '"event": "step"' in x]
+    assert [s["ok"] for s in steps] == [True, False, False]
+    assert steps[0]["result"].startswith("landed: 0.0 N 0.0 E 0.0 m")
+    assert steps[1] == {"event": "step", "what": "takeoff -5", "ok": False,
+                        "reason": "takeoff: altitude -5 m is below 0 (0 or none: the vehicle's default)"}
+    assert steps[2]["reason"].endswith("(set-point refused: on the ground: take off first)")
+
+
 class FakeVehicle:
     """A vehicle on raw UDP that answers with TT_ODOMETRY only (no HEARTBEAT), as `sysid`/240."""
 

@@ -286,8 +286,9 @@ async def _prompt(s: Any, sigs: Signals, base: Path, b: Any = None, as_json: boo
 
     def said(step: Any, ok: bool, words: str) -> None:
         if as_json:
-            print(json.dumps({"event": "step", "what": step.describe(), "ok": ok,
-                              "result" if ok else "reason": words}), flush=True)
+            what = step.describe() if not isinstance(step, str) else step
+            print(json.dumps({"event": "step", "what": what, "ok": ok, "result" if ok else "reason": words}),
+                  flush=True)
         elif ok:
             print(words, flush=True)
         else:
@@ -308,7 +309,7 @@ async def _prompt(s: Any, sigs: Signals, base: Path, b: Any = None, as_json: boo
                 try:
                     step = _prompt_step(line, b)
                 except StepError as e:
-                    print(f"ttctl: {e}", file=sys.stderr, flush=True)
+                    said(line, False, str(e))
                     continue
                 current = loop.create_task(run_step(s, step, base))
             if current is None and eof:

@@ -354,8 +354,13 @@ class TabletSession:
             self.runner.sync()
             s = self.ep.send_file(path, self.target, name=name or path.name, overwrite=overwrite, source=src)
             self.runner.kick()
-            while not s.done:
-                await self.changed(0.25)
+            try:
+                while not s.done:
+                    await self.changed(0.25)
+            except asyncio.CancelledError:  # Ctrl-C at the prompt: the transfer ends here too
+                s.cancel(self.runner.sync())
+                self.runner.kick()
+                raise
             r = s.result
             assert r is not None
             return r.ok, r.message
