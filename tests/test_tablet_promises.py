@@ -133,6 +133,33 @@ def test_link_lost_and_back_are_said_and_a_step_failing_meanwhile_says_so(tmp_pa
     assert " (link lost: nothing heard from the vehicle for " in last(failed), failed.stderr
 
 
+def test_a_command_sent_during_an_outage_goes_again_as_soon_as_the_link_is_back(tmp_path: Path,
+                                                                                start: Start) -> None:
+    """The take-off leaves during an outage (tries 1.5 and 3 s apart, then 6 s later); when the
+    vehicle is heard again it goes at once, not when the next doubled wait ends."""
+    air, port = free_port(), free_port()
+    relay(start, air, port, "--stats-interval", "0", "--outage", "8:8")  # gone from 8 s to 16 s
+    vehicle(start, tmp_path, port)
+    (tmp_path / "s.yaml").write_text("- wait: 9\n- takeoff: 3\n")  # connected at about 1..3 s
+    p = subprocess.Popen(ttctl_cmd() + ["emulate", "tablet", "--to", f"udpout:{LOCAL}:{air}", "--script",
+                                        str(tmp_path / "s.yaml"), "--json"], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True)
+    seen: dict[str, float] = {}
+    try:
+        assert p.stdout is not None
+        for line in p.stdout:
+            if '"state": "back"' in line:
+                seen["back"] = time.monotonic()
+            if '"step": 2' in line:
+                seen["step"] = time.monotonic()
+                assert '"ok": true' in line, line
+        p.wait(30)
+    finally:
+        p.kill()
+    assert p.returncode == 0 and set(seen) == {"back", "step"}, (seen, p.stderr.read() if p.stderr else "")
+    assert seen["step"] - seen["back"] < 2.0, seen  # without the hurry: the next try up to 6 s later
+
+
 def test_ctrl_c_at_the_prompt_cancels_the_waiting_command_and_the_prompt_goes_on(tmp_path: Path,
                                                                                   start: Start) -> None:
     port = free_port()

@@ -168,6 +168,8 @@ class TabletSession:
         if self.link.lost_at is not None:
             self.on_event("link", {"state": "back", "silent": round(now - self.link.lost_at, 1)})
             self.link.lost_at = None
+            self.ep.commands.hurry(self.ep.now)  # what waits for an ack goes again now, not after its back-off
+            self.runner.kick()
         self.link.frames += 1
         self.latest[msg.NAME] = msg
         self.latest_at[msg.NAME] = now
