@@ -93,18 +93,24 @@ def test_the_vehicle_refuses_a_negative_take_off_and_keeps_its_limits() -> None:
     import ttapi
     from ttctl.ends.onboard.node import OnboardConfig, OnboardNode
     from ttctl.ends.onboard.setpoints import SetpointDesk
-    from ttctl.ends.onboard.vehicle import Refused, SimVehicle
+    from ttctl.ends.onboard.vehicle import Refused, SimVehicle, Waypoint
 
     node = OnboardNode(_bindings(), OnboardConfig())
     result = node.tablet_action(ttapi.TtActionCommand(action=0, param=[-5.0, 0, 0, 0]))
     assert result == (4, "refused: take-off altitude -5 m is below 0 (0: the vehicle's default)")
     assert not node.vehicle.armed
-    v = SimVehicle()
+    b = _bindings()
+    assert node.vehicle.limits.max_dist == 1000.0
+    _, complaint = node.ap.params.set(b.ParamSet(param_id="TT_MAX_DIST", param_value=50.0, param_type=9))
+    assert complaint is None and node.vehicle.limits.max_dist == 50.0  # a parameter, as ground stations set it
+    v = node.vehicle
     v.arm()
     v.takeoff(3)
-    v.limits.max_dist = 50.0
     with pytest.raises(Refused, match="60 m from home is beyond the 50 m limit"):
         v.goto(0, 60, 3)
+    with pytest.raises(Refused, match="beyond the 50 m limit"):
+        v.fly([Waypoint(40, 40, 5)])
+    assert isinstance(v, SimVehicle)
     desk, flown = SetpointDesk(), []
     first, again = desk.handle("t", (7, 1), lambda: flown.append(1)), desk.handle("t", (7, 1), lambda: flown.append(2))
     assert flown == [1] and first[0] == again[0] and again[1]  # a repeat is answered, not flown again
