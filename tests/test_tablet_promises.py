@@ -187,6 +187,47 @@ def test_ctrl_c_at_the_prompt_cancels_the_waiting_command_and_the_prompt_goes_on
     assert "landed: 0.0 N 0.0 E 0.0 m" in out
 
 
+def test_at_a_terminal_status_is_answered_while_a_command_waits(tmp_path: Path, start: Start) -> None:
+    import os
+    import pty
+
+    port = free_port()
+    vehicle(start, tmp_path, port)
+    master, slave = pty.openpty()
+    p = subprocess.Popen(ttctl_cmd() + ["emulate", "tablet", "--to", f"udpout:{LOCAL}:{port}"], stdin=slave,
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    os.close(slave)
+    try:
+        os.write(master, b"wait 30\n")
+        time.sleep(3)
+        t0 = time.monotonic()
+        os.write(master, b"status\n")
+        assert p.stdout is not None
+        line = p.stdout.readline()
+        answered = time.monotonic() - t0
+        p.send_signal(signal.SIGINT)
+        time.sleep(1)
+        os.write(master, b"quit\n")
+        _, err = p.communicate(timeout=20)
+    finally:
+        p.kill()
+        os.close(master)
+    assert "landed: 0.0 N 0.0 E 0.0 m" in line and answered < 5, (line, answered)
+    assert p.returncode == 0 and "ttctl: wait 30: cancelled" in err, err
+    master, slave = pty.openpty()  # Ctrl-C at an idle prompt ends the session, cleanly
+    p = subprocess.Popen(ttctl_cmd() + ["emulate", "tablet", "--to", f"udpout:{LOCAL}:{port}"], stdin=slave,
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    os.close(slave)
+    try:
+        time.sleep(3)
+        p.send_signal(signal.SIGINT)
+        _, err = p.communicate(timeout=20)
+    finally:
+        p.kill()
+        os.close(master)
+    assert p.returncode == 130 and "Fatal" not in err and "Traceback" not in err, err
+
+
 def test_the_prompt_gives_json_for_each_line_with_json(tmp_path: Path, start: Start) -> None:
     port = free_port()
     vehicle(start, tmp_path, port)

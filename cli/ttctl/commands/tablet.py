@@ -5,7 +5,9 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import json
+import os
 import sys
+import threading
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -20,6 +22,7 @@ HELP = ("takeoff [ALT] | land | hover | return | goto N E ALT | move DN DE DALT 
         "(FIELD: state, armed, altitude, n, e, speed or MESSAGE.field) | status | watch [SECONDS] | quit")
 
 
+READING = threading.Event()  # the prompt's reader is inside input(): see emulate_tablet
 HEARTBEAT_WAIT = 3.0  # s after the vehicle's first frame, for its first HEARTBEAT (it sends one a second)
 
 
@@ -92,11 +95,16 @@ def _prompt_step(line: str, b: Any = None) -> Any:
 def emulate_tablet(o: TabletOptions) -> int:
     """The command; with --json a failure is also a JSON line on stdout ({"event": "error"})."""
     try:
-        return _emulate_tablet(o)
+        code = _emulate_tablet(o)
     except Fail as e:
         if o.as_json:
             print(json.dumps({"event": "error", "error": str(e), "exit": e.code}), flush=True)
         raise
+    if READING.is_set():  # ended (Ctrl-C, SIGTERM) while the prompt's reader waits in input(): the
+        sys.stdout.flush()  # interpreter could not finish with stdin held by it, so end here (all is closed)
+        sys.stderr.flush()
+        os._exit(code)
+    return code
 
 
 def _emulate_tablet(o: TabletOptions) -> int:
@@ -254,7 +262,6 @@ async def _prompt(s: Any, sigs: Signals, base: Path, b: Any = None, as_json: boo
     it (and what was typed behind it), `status` typed meanwhile is answered at once at a
     terminal; Ctrl-C with nothing running, or quit, ends the session."""
     import signal
-    import threading
 
     from ..ends.tablet.steps import StepError, run_step, status_line
 
@@ -272,12 +279,18 @@ async def _prompt(s: Any, sigs: Signals, base: Path, b: Any = None, as_json: boo
     loop = asyncio.get_running_loop()
     lines: asyncio.Queue[str | None] = asyncio.Queue()
 
-    def read() -> None:  # a thread of its own (a daemon: a pending input() never holds the exit up)
+    want = threading.Semaphore(1)  # a line asked for: the reader waits in input() only then (not after quit)
+
+    def read() -> None:  # a thread of its own, so that the loop runs while it waits for a line
         while True:
+            want.acquire()
+            READING.set()
             try:
                 line: str | None = input("tablet> " if interactive else "")
             except (EOFError, OSError, ValueError):
                 line = None
+            finally:
+                READING.clear()
             loop.call_soon_threadsafe(lines.put_nowait, line)
             if line is None:
                 return
@@ -343,6 +356,8 @@ async def _prompt(s: Any, sigs: Signals, base: Path, b: Any = None, as_json: boo
                 else:
                     getter = loop.create_task(lines.get())
                     got = got.strip()
+                    if got not in ("quit", "exit"):
+                        want.release()  # the next line
                     if not got or got.startswith("#"):
                         continue
                     if interactive and current is not None and got == "status":
