@@ -134,9 +134,10 @@ def test_link_lost_and_back_are_said_and_a_step_failing_meanwhile_says_so(tmp_pa
     air, port = free_port(), free_port()
     relay(start, air, port, "--stats-interval", "0", "--outage", "4:600")
     vehicle(start, tmp_path, port)
-    failed = tablet(tmp_path, air, "- wait: {until: n >= 39, timeout: 12}\n")
+    failed = tablet(tmp_path, air, "- wait: 9\n- status\n- wait: {until: n >= 39, timeout: 3}\n")
     assert failed.returncode == 1
     assert " (link lost: nothing heard from the vehicle for " in last(failed), failed.stderr
+    assert "s ago (link lost), " in failed.stdout  # status says it too
 
 
 def test_a_command_sent_during_an_outage_goes_again_as_soon_as_the_link_is_back(tmp_path: Path,

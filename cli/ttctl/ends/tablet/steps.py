@@ -394,6 +394,7 @@ def status_line(s: TabletSession) -> str:
     v, link = s.vehicle, s.link
     loop = asyncio.get_running_loop()
     age = f"{loop.time() - v.heard:.1f} s ago" if v.heard is not None else "never"
+    age += " (link lost)" if s.link.lost_at is not None else ""
     rtt = f", command round trip {link.rtt_ms:.0f} ms" if link.rtt_ms is not None else ""
     return (f"{v.state}{' (armed)' if v.armed else ''}: {v.n:.1f} N {v.e:.1f} E {v.altitude:.1f} m, "
             f"{v.speed:.1f} m/s; heard {age}, {link.frames} frames{rtt}")
