@@ -182,7 +182,7 @@ async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any, plugi
             raise Fail(f"no vehicle answered at {spec} within {o.connect_timeout:g} s: {heard_note(s)}", 1)
         who = f"{o.target_sysid}/{ONBOARD[1]}"
         if s.vehicle.state == "unknown":  # its frames came, but no HEARTBEAT: no state to show or wait for
-            err(f"tablet: connected to {who} at {spec}, but no HEARTBEAT from it in {o.connect_timeout:g} s "
+            err(f"tablet: connected to {who} at {spec}, but no HEARTBEAT from it in {HEARTBEAT_WAIT:g} s "
                 f"(heard {', '.join(s.latest)}): its state stays unknown")
         else:
             err(f"tablet: connected to {who} at {spec}")
