@@ -315,3 +315,16 @@ def test_a_fast_vehicle_clock_does_not_lose_the_tablet(tmp_path: Path, start: St
     assert proc.returncode == 0, proc.stderr
     assert "hovering (armed)" in proc.stdout
     assert "link lost" not in node.stderr
+
+
+def test_a_ground_stations_reposition_beyond_tt_max_dist_is_refused_in_words() -> None:
+    from flight_lib import Sim
+
+    s = Sim()
+    C = s.b.MavCmd
+    s.takeoff(3)
+    home = s.v.home
+    far_lat = home.lat + 0.02  # 2227 m north
+    denied = int(s.b.MavResult.MAV_RESULT_DENIED)
+    assert s.command(int(C.MAV_CMD_DO_REPOSITION), -1, 1, 0, float("nan"), far_lat, home.lon, home.alt + 5) == denied
+    assert "".join(s.said[2:]) == "refused: 2227 m from home is beyond the 1000 m limit (TT_MAX_DIST)", s.said
