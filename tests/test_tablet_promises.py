@@ -81,6 +81,7 @@ def test_refused_set_points_fail_the_step_in_the_vehicles_words(tmp_path: Path, 
     ("- move: [true, 0, 0]\n", "line 1: move: True is not a number"),
     ("- wait: {until: state == hovering, timeout: .inf}\n", "line 1: timeout: inf is not a finite number"),
     ("- wait: .nan\n", "line 1: wait wants 0..86400 seconds"),
+    ("- watch: true\n", "line 1: watch wants 1..3600 seconds"),
 ])
 def test_every_step_is_checked_before_the_first_runs(tmp_path: Path, script: str, want: str) -> None:
     proc = tablet(tmp_path, free_port(), script, timeout=30)

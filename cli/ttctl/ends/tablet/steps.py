@@ -226,7 +226,8 @@ def check_step(name: str, arg: Any, where: str = "", b: Any = None) -> Step:
                     raise StepError("wait: timeout wants 0..86400 seconds")
         else:
             raise StepError("wait wants seconds, or {until: CONDITION, timeout: SECONDS}")
-    elif name == "watch" and arg is not None and not (isinstance(arg, (int, float)) and 0 < float(arg) <= 3600):
+    elif name == "watch" and arg is not None and not (isinstance(arg, (int, float)) and not isinstance(arg, bool)
+                                                      and 0 < float(arg) <= 3600):
         raise StepError("watch wants 1..3600 seconds")
     elif name in ("land", "hover", "return", "status") and arg not in (None, {}):
         raise StepError(f"{name} takes no argument")
