@@ -80,6 +80,8 @@ def emulate_onboard(o: OnboardOptions) -> int:
         raise Fail("--speed must be in (0, 100]")
     if not 0 <= o.telemetry_hz <= 50:
         raise Fail("--telemetry-hz must be in 0..50")
+    if o.no_gcs and o.gcs:
+        raise Fail("--no-gcs and --gcs contradict each other: give one of them")
     dtt = parse_endpoint(o.listen, "udpin")
     gcs = [] if o.no_gcs else [parse_endpoint(g, "udpout") for g in (o.gcs or DEFAULT_GCS)]
     link = link_choice(o.rate, o.profile, o.distance, o.sysid, o.profile_file)

@@ -3,8 +3,11 @@
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import json
+import os
 import sys
+import threading
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -17,6 +20,10 @@ HELP = ("takeoff [ALT] | land | hover | return | goto N E ALT | move DN DE DALT 
         "fetch NAME | msg MESSAGE field=value... [until CONDITION [every S] [timeout S]] | wait SECONDS | "
         "wait until FIELD OP VALUE [timeout S] "
         "(FIELD: state, armed, altitude, n, e, speed or MESSAGE.field) | status | watch [SECONDS] | quit")
+
+
+READING = threading.Event()  # the prompt's reader is inside input(): see emulate_tablet
+HEARTBEAT_WAIT = 3.0  # s after the vehicle's first frame, for its first HEARTBEAT (it sends one a second)
 
 
 @dataclass
@@ -86,6 +93,21 @@ def _prompt_step(line: str, b: Any = None) -> Any:
 
 
 def emulate_tablet(o: TabletOptions) -> int:
+    """The command; with --json a failure is also a JSON line on stdout ({"event": "error"})."""
+    try:
+        code = _emulate_tablet(o)
+    except Fail as e:
+        if o.as_json:
+            print(json.dumps({"event": "error", "error": str(e), "exit": e.code}), flush=True)
+        raise
+    if READING.is_set():  # ended (Ctrl-C, SIGTERM) while the prompt's reader waits in input(): the
+        sys.stdout.flush()  # interpreter could not finish with stdin held by it, so end here (all is closed)
+        sys.stderr.flush()
+        os._exit(code)
+    return code
+
+
+def _emulate_tablet(o: TabletOptions) -> int:
     from ..ends.plugins import PluginError, load_plugin
     from ..ends.tablet.steps import StepError, parse_script
 
@@ -125,6 +147,10 @@ async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any, plugi
             print(json.dumps({"event": what, **fields}), flush=True)
         elif what == "log":
             print(f"vehicle: {fields['text']}", flush=True)
+        elif what == "link" and fields["state"] == "lost":
+            err(f"tablet: link lost: nothing heard from the vehicle for {fields['silent']:g} s")
+        elif what == "link":
+            err(f"tablet: link back after {fields['silent']:g} s of silence")
 
     loop = asyncio.get_running_loop()
     wake = asyncio.Event()
@@ -143,13 +169,23 @@ async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any, plugi
         except (TransportError, StorageError) as e:
             raise Fail(str(e)) from None
         end = loop.time() + o.connect_timeout
+        first: float | None = None  # when the first frame of the vehicle came
         while s.vehicle.state == "unknown":  # connected once a HEARTBEAT said what the vehicle is doing
-            if loop.time() >= end:
-                raise Fail(f"no vehicle answered at {spec} within {o.connect_timeout:g} s", 1)
+            now = loop.time()
+            first = now if first is None and s.vehicle.heard is not None else first
+            if now >= end or (first is not None and now - first >= HEARTBEAT_WAIT):
+                break  # (or once its other frames came, and no HEARTBEAT for a while)
             if sigs.stop.is_set():
                 return 130
             await s.changed(0.2)
-        err(f"tablet: connected to {o.target_sysid}/{ONBOARD[1]} at {spec}")
+        if s.vehicle.heard is None:
+            raise Fail(f"no vehicle answered at {spec} within {o.connect_timeout:g} s: {heard_note(s)}", 1)
+        who = f"{o.target_sysid}/{ONBOARD[1]}"
+        if s.vehicle.state == "unknown":  # its frames came, but no HEARTBEAT: no state to show or wait for
+            err(f"tablet: connected to {who} at {spec}, but no HEARTBEAT from it in {HEARTBEAT_WAIT:g} s "
+                f"(heard {', '.join(s.latest)}): its state stays unknown")
+        else:
+            err(f"tablet: connected to {who} at {spec}")
         base = o.script.parent if o.script is not None else Path(".")
         if steps is not None:
             for i, step in enumerate(steps, 1):
@@ -168,10 +204,25 @@ async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any, plugi
                 else:
                     print(f"step {i} {step.describe()}: {words}", flush=True)
             return 0
-        return await _prompt(s, sigs, base, b)
+        return await _prompt(s, sigs, base, b, o.as_json)
     finally:
         sigs.remove()
         await s.close()
+
+
+def heard_note(s: Any) -> str:
+    """What the tablet heard while it waited for a vehicle that never answered."""
+    peers = sorted(p for p in s.ep.peers if p != s.target)
+    packets = s.runner.stats.packets_in
+    if peers:
+        who = ", ".join(f"{a}/{c}" for a, c in peers[:4])
+        return (f"frames came only from {who}, not from {s.target[0]}/{s.target[1]} "
+                f"(--target-sysid {s.target[0]}: is that the vehicle's system id?)")
+    if packets:
+        return (f"{packets} packets came but no frame of the dialect in them (another dialect, or signed "
+                "frames without the same --key?)")
+    return ("nothing came back (the tablet needs a HEARTBEAT, or any frame, from the vehicle's onboard "
+            "component, which answers the address the tablet's own heartbeats come from)")
 
 
 def completions(b: Any, line: str, text: str) -> list[str]:
@@ -205,9 +256,14 @@ def completions(b: Any, line: str, text: str) -> list[str]:
     return []
 
 
-async def _prompt(s: Any, sigs: Signals, base: Path, b: Any = None) -> int:
-    """Commands from the terminal (history and completion with readline) or from piped lines."""
-    from ..ends.tablet.steps import StepError, run_step
+async def _prompt(s: Any, sigs: Signals, base: Path, b: Any = None, as_json: bool = False) -> int:
+    """Commands from the terminal (history and completion with readline) or from piped lines,
+    run one after another. The prompt stays responsive while a command waits: Ctrl-C cancels
+    it (and what was typed behind it), `status` typed meanwhile is answered at once at a
+    terminal; Ctrl-C with nothing running, or quit, ends the session."""
+    import signal
+
+    from ..ends.tablet.steps import StepError, run_step, status_line
 
     interactive = sys.stdin.isatty()
     if interactive:
@@ -221,19 +277,94 @@ async def _prompt(s: Any, sigs: Signals, base: Path, b: Any = None) -> int:
             pass
         print(f"commands: {HELP}", file=sys.stderr)
     loop = asyncio.get_running_loop()
-    while not sigs.stop.is_set():
-        try:
-            line = await loop.run_in_executor(None, lambda: input("tablet> " if interactive else ""))
-        except EOFError:
-            return 0
-        line = line.strip()
-        if not line or line.startswith("#"):
-            continue
-        if line in ("quit", "exit"):
-            return 0
-        try:
-            step = _prompt_step(line, b)
-            print(await run_step(s, step, base), flush=True)
-        except StepError as e:
-            print(f"ttctl: {e}", file=sys.stderr, flush=True)
-    return 130
+    lines: asyncio.Queue[str | None] = asyncio.Queue()
+
+    want = threading.Semaphore(1)  # a line asked for: the reader waits in input() only then (not after quit)
+
+    def read() -> None:  # a thread of its own, so that the loop runs while it waits for a line
+        while True:
+            want.acquire()
+            READING.set()
+            try:
+                line: str | None = input("tablet> " if interactive else "")
+            except (EOFError, OSError, ValueError):
+                line = None
+            finally:
+                READING.clear()
+            loop.call_soon_threadsafe(lines.put_nowait, line)
+            if line is None:
+                return
+
+    threading.Thread(target=read, name="tablet-prompt", daemon=True).start()
+
+    def said(step: Any, ok: bool, words: str) -> None:
+        if as_json:
+            what = step.describe() if not isinstance(step, str) else step
+            print(json.dumps({"event": "step", "what": what, "ok": ok, "result" if ok else "reason": words}),
+                  flush=True)
+        elif ok:
+            print(words, flush=True)
+        else:
+            print(f"ttctl: {words}", file=sys.stderr, flush=True)
+
+    backlog: list[str] = []
+    current: asyncio.Task[str] | None = None
+    step: Any = None
+    eof = False
+    getter: asyncio.Task[str | None] = loop.create_task(lines.get())
+    stopper = loop.create_task(sigs.stop.wait())
+    try:
+        while True:
+            while current is None and backlog:
+                line = backlog.pop(0)
+                if line in ("quit", "exit"):
+                    return 0
+                try:
+                    step = _prompt_step(line, b)
+                except StepError as e:
+                    said(line, False, str(e))
+                    continue
+                current = loop.create_task(run_step(s, step, base))
+            if current is None and eof:
+                return 0
+            waits: set[asyncio.Future[Any]] = {stopper}
+            waits |= {getter} if not eof else set()
+            waits |= {current} if current is not None else set()
+            done, _ = await asyncio.wait(waits, return_when=asyncio.FIRST_COMPLETED)
+            if current is not None and current in done:
+                try:
+                    said(step, True, current.result())
+                except StepError as e:
+                    said(step, False, str(e))
+                current = None
+            if stopper in done:
+                if sigs.got != signal.SIGINT or current is None:
+                    return 130
+                current.cancel()  # Ctrl-C: the waiting command, and what was typed behind it
+                with contextlib.suppress(asyncio.CancelledError, StepError):
+                    await current
+                dropped = f" (and {len(backlog)} line(s) typed behind it)" if backlog else ""
+                said(step, False, f"{step.describe()}: cancelled{dropped}")
+                current, backlog = None, []
+                sigs.stop.clear()
+                sigs.got = None
+                stopper = loop.create_task(sigs.stop.wait())
+            if getter in done:
+                got = getter.result()
+                if got is None:
+                    eof = True
+                else:
+                    getter = loop.create_task(lines.get())
+                    got = got.strip()
+                    if got not in ("quit", "exit"):
+                        want.release()  # the next line
+                    if not got or got.startswith("#"):
+                        continue
+                    if interactive and current is not None and got == "status":
+                        print(status_line(s), flush=True)  # a look at the vehicle while a command waits
+                        continue
+                    backlog.append(got)
+    finally:
+        for t in (getter, stopper, current):
+            if t is not None:
+                t.cancel()

@@ -127,6 +127,13 @@ class CommandClient:
         if cmd.on_failure:
             cmd.on_failure(cmd)
 
+    def hurry(self, now: float) -> None:
+        """The peer is heard again after a silence: each command already sent goes again at
+        once, not when its doubled wait ends (a retry, counted as one)."""
+        for cmd in self.pending.values():
+            if cmd.sent_at:
+                cmd._due = min(cmd._due, now)
+
     def cancel_all(self, why: str) -> None:
         for cmd in list(self.pending.values()):
             self._fail(cmd, why)

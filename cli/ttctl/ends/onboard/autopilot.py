@@ -92,6 +92,8 @@ class Autopilot:
             lim.takeoff_alt = p.value
         elif p.name == "RTL_RETURN_ALT":
             lim.return_alt = p.value
+        elif p.name == "TT_MAX_DIST":
+            lim.max_dist = p.value
 
     # -- plans ------------------------------------------------------------------------------------
     def _plan_changed(self, mission_type: int) -> None:

@@ -28,6 +28,7 @@ from ..plugins import Context, Dispatcher, Plugin
 from ..runtime import Runner, unknown_note
 from .autopilot import TABLET, Autopilot
 from .gcs import GroundStations
+from .setpoints import SetpointDesk
 from .trajectory import TrajectoryError, parse_trajectory
 from .vehicle import Home, Refused, SimVehicle, State
 
@@ -67,6 +68,7 @@ class OnboardNode:
         self.ap = Autopilot(bindings, self.vehicle, cfg.sysid, say=self._say)
         self.ap.clock = time.monotonic  # link-loss timeouts on the wall clock, as the links run
         self.started = 0.0
+        self.setpoints = SetpointDesk()
         self.gcs = GroundStations(bindings, self.ap, cfg.sysid, AUTOPILOT_COMPID, unix=self._unix, log=self.log)
         self.gcs_encoder = bindings.encoder(cfg.sysid, AUTOPILOT_COMPID, cfg.gcs_signing)
         self.gcs_links: list[Transport] = []
@@ -142,6 +144,8 @@ class OnboardNode:
         p0 = float(msg.param[0]) if msg.param else 0.0
         try:
             if msg.action == TT.TT_ACTION_TAKE_OFF:
+                if p0 < 0:  # checked before arming: a refused take-off leaves the vehicle as it was
+                    raise Refused(f"take-off altitude {p0:g} m is below 0 (0: the vehicle's default)")
                 v.arm()
                 v.takeoff(p0 if p0 > 0 else None)
             elif msg.action == TT.TT_ACTION_LAND:
@@ -197,13 +201,29 @@ class OnboardNode:
     def _on_tablet_message(self, now: float, msg: Any) -> None:
         self.ap.heard_tablet(self.vehicle_time)
         if isinstance(msg, self.b.DjiPoseStamped) and msg.topic_name == self.b.DjiTopicName.DJI_TOPIC_NAME_SETPOINT:
-            x, y, z = msg.position
-            try:
-                self.vehicle.goto(float(x), float(y), float(z))
-                self.ap.commanded_by(TABLET, self.vehicle_time)
-            except Refused as e:
-                self.log(f"setpoint refused: {e}")
+            self._setpoint(msg)
         self.dispatcher.dispatch(msg, self._ctx)
+
+    def _setpoint(self, msg: Any) -> None:
+        """Fly the tablet's set-point and answer it (setpoints.py): echoed if flown, the reason said if not."""
+        x, y, z = (float(v) for v in msg.position)
+
+        def fly() -> None:
+            self.vehicle.goto(x, y, z)
+            self.ap.commanded_by(TABLET, self.vehicle_time)
+
+        src = (msg.get_srcSystem(), msg.get_srcComponent())
+        answer, repeat = self.setpoints.handle(src, (int(msg.sec), int(msg.nsec)), fly)
+        if not answer.flown:
+            if not repeat:
+                self._say(4, answer.words, urgent=True)  # the log, ground stations and the tablet
+            elif self.endpoint is not None:
+                self.endpoint.say(answer.words, 4, urgent=True)  # the tablet asked again: its words were lost
+            return
+        if self.endpoint is not None:
+            echo = self.b.DjiPoseStamped(target_system=src[0], sec=msg.sec, nsec=msg.nsec, topic_name=msg.topic_name,
+                                         position=list(msg.position), orientation=list(msg.orientation))
+            self.endpoint.send_message(echo, CONTROL)
 
     # -- telemetry to the tablet ----------------------------------------------------------------
     def _tablet_telemetry(self) -> None:

@@ -50,6 +50,8 @@ def default_params() -> list[Param]:
         Param("COM_RTL_AFTER_T", 15.0, REAL32, 0.0, 600.0, "seconds of hovering after link loss before the return"),
         Param("MIS_TAKEOFF_ALT", 2.0, REAL32, 0.5, 120.0, "take-off altitude above home, m"),
         Param("RTL_RETURN_ALT", 10.0, REAL32, 2.0, 120.0, "return altitude above home, m"),
+        Param("TT_MAX_DIST", 1000.0, REAL32, 10.0, 100000.0,
+              "farthest from home (horizontally, m) a set-point, trajectory or mission waypoint may lead"),
         Param("MPC_XY_VEL_MAX", 1.5, REAL32, 0.1, 20.0, "horizontal speed limit, m/s"),
         Param("MPC_Z_VEL_MAX_UP", 1.0, REAL32, 0.1, 10.0, "vertical speed limit, m/s"),
         Param("COM_OF_LOSS_T", 1.0, REAL32, 0.2, 60.0,

@@ -57,6 +57,7 @@ class Limits:
     takeoff_alt: float = 2.0  # m above home, when a take-off does not say
     return_alt: float = 10.0  # m above home, when a return does not say
     max_alt: float = 120.0  # m above home: setpoints above are refused
+    max_dist: float = 1000.0  # m from home, horizontally: set-points and waypoints beyond are refused (TT_MAX_DIST)
 
 
 @dataclass
@@ -204,6 +205,8 @@ class SimVehicle:
 
     @_order
     def takeoff(self, alt: float | None = None) -> None:
+        if alt is not None and alt < 0:
+            raise Refused(f"take-off altitude {alt:g} m is below 0 (0: the vehicle's default)")
         alt = self._alt(alt if alt is not None and alt > 0 else self.limits.takeoff_alt)
         if not self.armed:
             raise Refused("not armed")
@@ -236,6 +239,7 @@ class SimVehicle:
     def goto(self, n: float, e: float, alt: float, yaw: float | None = None) -> None:
         self._finite(n, e, alt, yaw)
         alt = self._alt(alt)
+        self._dist(n, e)
         if alt < MIN_ALT:
             raise Refused(f"altitude {alt:g} m is below {MIN_ALT:g} m: land instead")
         if self.state is State.LANDED:
@@ -253,6 +257,7 @@ class SimVehicle:
         for w in waypoints:
             self._finite(w.n, w.e, w.alt, w.yaw, w.speed, w.hold)
             self._alt(w.alt)
+            self._dist(w.n, w.e)
             if w.speed is not None and w.speed <= 0:
                 raise Refused("a waypoint's speed must be positive")
             if w.hold < 0:
@@ -286,6 +291,12 @@ class SimVehicle:
         if alt < 0 or alt > self.limits.max_alt:
             raise Refused(f"altitude {alt:g} m is outside 0..{self.limits.max_alt:g} m")
         return alt
+
+    def _dist(self, n: float, e: float) -> None:
+        far = math.hypot(n, e)
+        if far > self.limits.max_dist:
+            say = f"{far / 1000:.0f} km" if far >= 10_000 else f"{far:.0f} m"
+            raise Refused(f"{say} from home is beyond the {self.limits.max_dist:g} m limit (TT_MAX_DIST)")
 
     @staticmethod
     def _finite(*values: float | None) -> None:

@@ -24,6 +24,7 @@ from ..plugins import Context, Dispatcher, Plugin
 from ..runtime import Runner
 
 TABLET = (255, 190)
+LINK_TIMEOUT = 3.5  # s without a frame from the vehicle: the link is lost (QGroundControl's figure, for heartbeats)
 STATES = {  # PX4 (main, sub) modes the onboard end reports, as the vehicle's states
     (4, 1): "landed", (4, 3): "hovering", (4, 2): "taking off", (4, 4): "flying trajectory", (4, 6): "landing",
     (4, 5): "returning", (6, 0): "moving", (3, 0): "manual control",
@@ -57,6 +58,7 @@ class LinkView:
     frames: int = 0
     rtt_ms: float | None = None  # of the last command
     started: float = 0.0
+    lost_at: float | None = None  # when the vehicle went silent (loop time), while it is
 
 
 class TabletSession:
@@ -97,6 +99,7 @@ class TabletSession:
         self.ctx = Context(send=self.send_message, log=self.log, sysid=TABLET[0], compid=TABLET[1],
                            vehicle=self.vehicle, every=self._every, dialect=bindings)
         self._timers: list[list[asyncio.TimerHandle]] = []
+        self._echoes: dict[tuple[int, int], float] = {}  # stamps of set-points the vehicle echoed: flown
 
     # -- life --------------------------------------------------------------------------------------
     async def start(self) -> None:
@@ -112,14 +115,36 @@ class TabletSession:
                 self.log(f"plugin {type(p).__name__} failed to start: {type(e).__name__}: {e}")
 
     async def _heartbeats(self) -> None:
-        """A HEARTBEAT a second: the vehicle's link-loss watch hears the tablet by it."""
+        """A HEARTBEAT a second: the vehicle's link-loss watch hears the tablet by it. And the
+        tablet's own watch: the vehicle silent LINK_TIMEOUT s is "link lost", said at once."""
+        loop = asyncio.get_running_loop()
+        due = 0.0
         while True:
-            self.runner.sync()
-            b = self.b
-            self.ep.send_message(b.Heartbeat(type=int(b.MavType.MAV_TYPE_GCS),
-                                             autopilot=int(b.MavAutopilot.MAV_AUTOPILOT_INVALID)), CONTROL)
-            self.runner.kick()
-            await asyncio.sleep(1.0)
+            now = loop.time()
+            if now >= due:
+                self.runner.sync()
+                b = self.b
+                self.ep.send_message(b.Heartbeat(type=int(b.MavType.MAV_TYPE_GCS),
+                                                 autopilot=int(b.MavAutopilot.MAV_AUTOPILOT_INVALID)), CONTROL)
+                self.runner.kick()
+                due = now + 1.0
+            heard = self.vehicle.heard
+            if heard is not None and self.link.lost_at is None and now - heard >= LINK_TIMEOUT:
+                self.link.lost_at = heard
+                self.on_event("link", {"state": "lost", "silent": round(now - heard, 1)})
+                self._changed.set()
+            await asyncio.sleep(0.25)
+
+    def silence(self) -> float | None:
+        """Seconds the vehicle has been silent, while the link is lost (None while it is not)."""
+        if self.link.lost_at is None:
+            return None
+        return asyncio.get_running_loop().time() - self.link.lost_at
+
+    def link_note(self) -> str:
+        """What a failure should add while the link is lost."""
+        quiet = self.silence()
+        return "" if quiet is None else f" (link lost: nothing heard from the vehicle for {quiet:.1f} s)"
 
     async def close(self) -> None:
         for slot in self._timers:
@@ -140,6 +165,11 @@ class TabletSession:
         if (msg.get_srcSystem(), msg.get_srcComponent()) != self.target:
             return
         v.heard = now
+        if self.link.lost_at is not None:
+            self.on_event("link", {"state": "back", "silent": round(now - self.link.lost_at, 1)})
+            self.link.lost_at = None
+            self.ep.commands.hurry(self.ep.now)  # what waits for an ack goes again now, not after its back-off
+            self.runner.kick()
         self.link.frames += 1
         self.latest[msg.NAME] = msg
         self.latest_at[msg.NAME] = now
@@ -153,8 +183,12 @@ class TabletSession:
                 v.state, v.armed = state, armed
                 self.on_event("state", {"state": state, "armed": armed})
         elif isinstance(msg, b.TtOdometry):
-            v.n, v.e, v.altitude = float(msg.position[0]), float(msg.position[1]), -float(msg.position[2])
+            v.n, v.e, v.altitude = float(msg.position[0]), float(msg.position[1]), 0.0 - float(msg.position[2])
             v.speed = math.hypot(float(msg.linear[0]), float(msg.linear[1]))
+        elif isinstance(msg, b.DjiPoseStamped) and msg.topic_name == b.DjiTopicName.DJI_TOPIC_NAME_SETPOINT:
+            self._echoes[(int(msg.sec), int(msg.nsec))] = now  # a set-point of ours, flown
+            if len(self._echoes) > 64:
+                self._echoes.pop(next(iter(self._echoes)))
         elif isinstance(msg, b.TtNavSatFix):
             v.lat, v.lon = msg.latitude / 1e7, msg.longitude / 1e7
         elif isinstance(msg, b.TtLog):
@@ -241,7 +275,8 @@ class TabletSession:
             again, said = await self._ask(msg, 2, timeout)
             if again.ack is None:
                 said = None
-        return False, f"{name}: {cmd.error}" + (f" ({said})" if said else "")
+        return False, f"{name}: {cmd.error}" + (f" ({said})" if said else "") + (
+            self.link_note() if cmd.ack is None else "")
 
     async def _ask(self, msg: Any, retries: int, timeout: float) -> tuple[Any, str | None]:
         """Submit `msg` (a repeat keeps its command id and issue time) and wait for it to end:
@@ -260,7 +295,11 @@ class TabletSession:
         cmd = self.ep.command(msg, self.target, retries=retries, timeout=timeout, on_success=finish,
                               on_failure=finish)
         self.runner.kick()
-        await done
+        try:
+            await done
+        except asyncio.CancelledError:  # the user cancelled it (Ctrl-C at the prompt): sent no more
+            self.ep.commands.pending.pop(cmd.id, None)
+            raise
         if cmd.ack is None or cmd.ok:
             return cmd, None
         v = self.vehicle  # a refusal's words: a warning (or worse), the last one heard by the ack
@@ -275,15 +314,36 @@ class TabletSession:
         self.ep.send_message(msg, CONTROL if urgent else TELEMETRY)
         self.runner.kick()
 
-    async def setpoint(self, n: float, e: float, alt: float) -> None:
-        """A DJI_POSE_STAMPED set-point (position north, east, altitude above home)."""
+    async def setpoint(self, n: float, e: float, alt: float, sends: int = 5,
+                       every: float = 1.5) -> tuple[bool, str]:
+        """A DJI_POSE_STAMPED set-point (position north, east, altitude above home), sent until
+        the vehicle answers: its echo of the stamp (flown) or a warning "set-point refused: ..."
+        (its own words); (ok, words). Not answered after `sends` sends `every` s apart: failed."""
         now = time.time()
-        self.runner.sync()
         b = self.b
-        self.ep.send_message(b.DjiPoseStamped(target_system=self.target[0], sec=int(now), nsec=int((now % 1) * 1e9),
-                                              topic_name=int(b.DjiTopicName.DJI_TOPIC_NAME_SETPOINT),
-                                              position=[n, e, alt], orientation=[0.0, 0.0, 0.0, 1.0]), CONTROL)
-        self.runner.kick()
+        stamp = (int(now), int((now % 1) * 1e9))
+        msg = b.DjiPoseStamped(target_system=self.target[0], sec=stamp[0], nsec=stamp[1],
+                               topic_name=int(b.DjiTopicName.DJI_TOPIC_NAME_SETPOINT),
+                               position=[n, e, alt], orientation=[0.0, 0.0, 0.0, 1.0])
+        what = f"set-point {n:.1f} N, {e:.1f} E, {alt:.1f} m"
+        v, loop = self.vehicle, asyncio.get_running_loop()
+        heard = len(v.log)
+        t0 = loop.time()
+        for _ in range(sends):
+            self.runner.sync()
+            self.ep.send_message(msg, CONTROL)  # the same stamp each time: the vehicle flies it once
+            self.runner.kick()
+            end = loop.time() + every
+            while loop.time() < end:
+                if stamp in self._echoes:
+                    return True, f"{what}: accepted"
+                said = [v.log[i] for i in range(heard, len(v.log))
+                        if v.log_levels[i] <= 4 and v.log[i].startswith("set-point refused")]
+                if said:
+                    return False, f"{what}: refused ({said[-1]})"
+                await self.changed(min(0.25, max(0.0, end - loop.time())))
+        return False, (f"{what}: no answer after {sends} sends in {loop.time() - t0:.1f} s (the vehicle echoes a "
+                       "set-point it flies and says why it refuses one)" + self.link_note())
 
     async def send_file(self, path: Path, name: str | None = None, overwrite: bool = True) -> tuple[bool, str]:
         from ...proto.storage import FileSource, StorageError
@@ -296,8 +356,13 @@ class TabletSession:
             self.runner.sync()
             s = self.ep.send_file(path, self.target, name=name or path.name, overwrite=overwrite, source=src)
             self.runner.kick()
-            while not s.done:
-                await self.changed(0.25)
+            try:
+                while not s.done:
+                    await self.changed(0.25)
+            except asyncio.CancelledError:  # Ctrl-C at the prompt: the transfer ends here too
+                s.cancel(self.runner.sync())
+                self.runner.kick()
+                raise
             r = s.result
             assert r is not None
             return r.ok, r.message

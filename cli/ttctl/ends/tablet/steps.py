@@ -67,19 +67,31 @@ class Step:
             return f"{self.name}{send} until {self.arg['until']}{timeout}"
         if isinstance(self.arg, list):
             return f"{self.name} {' '.join(f'{x:g}' for x in self.arg)}"
+        if isinstance(self.arg, float):
+            return f"{self.name} {self.arg:g}"
         return f"{self.name} {self.arg}"
+
+
+# a number as YAML 1.2 and JSON write it: PyYAML (YAML 1.1) reads 1e9 as the text "1e9"
+_NUMBER = re.compile(r"^[-+]?(\.[0-9]+|[0-9]+(\.[0-9]*)?)([eE][-+]?[0-9]+)?$")
+FLOAT32_MAX = 3.4028234663852886e38  # a TT_ACTION_COMMAND's param is a float
+
+
+def _number(x: Any, what: str) -> float:
+    """`x` as a finite number (StepError names `what` and the value that is not one)."""
+    if isinstance(x, bool) or not isinstance(x, (int, float, str)) or (
+            isinstance(x, str) and not _NUMBER.match(x.strip())):
+        raise StepError(f"{what}: {x!r} is not a number")
+    v = float(x)
+    if not math.isfinite(v):
+        raise StepError(f"{what}: {x!r} is not a finite number")
+    return v
 
 
 def _numbers(arg: Any, n: int, what: str) -> list[float]:
     if not isinstance(arg, (list, tuple)) or len(arg) != n:
         raise StepError(f"{what} wants {n} numbers")
-    try:
-        out = [float(x) for x in arg]
-    except (TypeError, ValueError):
-        raise StepError(f"{what} wants {n} numbers") from None
-    if not all(math.isfinite(x) for x in out):
-        raise StepError(f"{what}: numbers must be finite")
-    return out
+    return [_number(x, what) for x in arg]
 
 
 Clause = tuple[str | Operand, str, Any]  # (field or MESSAGE.field, operator, the value compared with)
@@ -192,9 +204,14 @@ def check_step(name: str, arg: Any, where: str = "", b: Any = None) -> Step:
     if name not in NAMES:
         raise StepError(f"unknown step {name!r} (one of {', '.join(NAMES)})")
     if name == "takeoff" and arg is not None:
-        _numbers([arg], 1, "takeoff")
+        arg = _number(arg, "takeoff")
+        if not 0 <= arg <= FLOAT32_MAX:
+            raise StepError(f"takeoff: altitude {arg:g} m is below 0 (0 or none: the vehicle's default)"
+                            if arg < 0 else f"takeoff: altitude {arg:g} m is too large")
     elif name in ("goto", "move"):
-        _numbers(arg, 3, name)
+        arg = _numbers(arg, 3, name)
+        if name == "goto" and arg[2] < 0:
+            raise StepError(f"goto: altitude {arg[2]:g} m is below home (goto N E ALT, ALT above home)")
     elif name in ("fly", "send", "fetch") and (not isinstance(arg, str) or not arg):
         raise StepError(f"{name} wants a file name")
     elif name == "wait":
@@ -204,10 +221,13 @@ def check_step(name: str, arg: Any, where: str = "", b: Any = None) -> Step:
         elif isinstance(arg, dict) and "until" in arg and set(arg) <= {"until", "timeout"}:
             check_condition(arg["until"], b)
             if "timeout" in arg:
-                _numbers([arg["timeout"]], 1, "timeout")
+                arg = {**arg, "timeout": _number(arg["timeout"], "timeout")}
+                if not 0 < arg["timeout"] <= 86400:
+                    raise StepError("wait: timeout wants 0..86400 seconds")
         else:
             raise StepError("wait wants seconds, or {until: CONDITION, timeout: SECONDS}")
-    elif name == "watch" and arg is not None and not (isinstance(arg, (int, float)) and 0 < float(arg) <= 3600):
+    elif name == "watch" and arg is not None and not (isinstance(arg, (int, float)) and not isinstance(arg, bool)
+                                                      and 0 < float(arg) <= 3600):
         raise StepError("watch wants 1..3600 seconds")
     elif name in ("land", "hover", "return", "status") and arg not in (None, {}):
         raise StepError(f"{name} takes no argument")
@@ -257,9 +277,11 @@ async def run_step(s: TabletSession, step: Step, base: Path) -> str:
         if name == "move":
             v = s.vehicle
             n, e, alt = v.n + n, v.e + e, v.altitude + alt
-        await s.setpoint(n, e, alt)
+        ok, words = await s.setpoint(n, e, alt)
+        if not ok:
+            raise StepError(words)  # with the vehicle's own words
         await s.fresh_state()
-        return f"set-point {n:.1f} N, {e:.1f} E, {alt:.1f} m"
+        return words
     if name == "send":
         path = (base / arg) if not Path(arg).is_absolute() else Path(arg)
         ok, words = await s.send_file(path, Path(arg).name)
@@ -283,7 +305,7 @@ async def run_step(s: TabletSession, step: Step, base: Path) -> str:
                 v = s.vehicle
                 said = _heard(s, parts)
                 raise StepError(f"{arg['until']} not reached within {timeout:g} s (" + (
-                    said if said else f"state {v.state}, altitude {v.altitude:.1f} m") + ")")
+                    said if said else f"state {v.state}, altitude {v.altitude:.1f} m") + ")" + s.link_note())
             await s.changed(0.25)
         return f"{arg['until']}"
     if name == "msg":
@@ -324,7 +346,7 @@ async def _send(s: TabletSession, arg: Any) -> str:
         if loop.time() >= end:
             said = _heard(s, parts)
             raise StepError(f"{arg['until']} not reached within {timeout:g} s of sending {msg.NAME} ({sends} times)"
-                            + (f"; {said}" if said else ""))
+                            + (f"; {said}" if said else "") + s.link_note())
 
 
 async def watch(s: TabletSession, seconds: float) -> str:
@@ -373,6 +395,7 @@ def status_line(s: TabletSession) -> str:
     v, link = s.vehicle, s.link
     loop = asyncio.get_running_loop()
     age = f"{loop.time() - v.heard:.1f} s ago" if v.heard is not None else "never"
+    age += " (link lost)" if s.link.lost_at is not None else ""
     rtt = f", command round trip {link.rtt_ms:.0f} ms" if link.rtt_ms is not None else ""
     return (f"{v.state}{' (armed)' if v.armed else ''}: {v.n:.1f} N {v.e:.1f} E {v.altitude:.1f} m, "
             f"{v.speed:.1f} m/s; heard {age}, {link.frames} frames{rtt}")
