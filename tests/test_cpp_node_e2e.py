@@ -144,12 +144,14 @@ def test_setpoints_flown_or_refused_in_the_handlers_words(cpp_node_bins: dict[st
     assert (stats["plugin_flown"], stats["setpoints_flown"], stats["setpoints_refused"]) == (2, 2, 1), stats
 
 
+@pytest.mark.parametrize("exe", ["plain", "asan"])
 def test_a_repeated_setpoint_is_answered_again_and_flown_once(cpp_node_bins: dict[str, Path], tmp_path: Path,
-                                                              cpp_nodes: Any) -> None:
+                                                              cpp_nodes: Any, exe: str) -> None:
     """The same stamp three times: three echoes, one flight; a refused one sent twice: the words
     twice; a 0/0 stamp is never a repeat; another topic is left to the handler (echoed by it),
-    not counted as a set-point."""
-    node = cpp_nodes(cpp_node_bins["plain"], tmp_path, "node", "--listen", f"udpin:{LOCAL}:0", "--heartbeat", "0",
+    not counted as a set-point. The senders remembered are bounded: 20 more, and the first one's
+    stamp is new again (also under the sanitizers)."""
+    node = cpp_nodes(cpp_node_bins[exe], tmp_path, "node", "--listen", f"udpin:{LOCAL}:0", "--heartbeat", "0",
                      "--rate", "0")
     raw = Raw(node.port)
 
@@ -157,10 +159,13 @@ def test_a_repeated_setpoint_is_answered_again_and_flown_once(cpp_node_bins: dic
         return ttapi.DjiPoseStamped(target_system=1, sec=sec, nsec=nsec, topic_name=topic, position=[1.0, 2.0, alt],
                                     orientation=[0.0, 0.0, 0.0, 1.0])
 
-    def answers(msg: Any) -> list[Any]:
+    def answers(msg: Any, raw: Raw = raw, sysid: int = 255) -> list[Any]:
+        """The answers to `msg` from `sysid` (the node sends to every peer: another's are not)."""
+        def mine(x: Any) -> bool:
+            return isinstance(x, ttapi.TtLog) or (isinstance(x, ttapi.DjiPoseStamped) and x.target_system == sysid)
+
         raw.frames(msg)
-        got = raw.collect(2.0, until=lambda m: any(isinstance(x, (ttapi.DjiPoseStamped, ttapi.TtLog)) for x in m))
-        return [m for m in got if isinstance(m, (ttapi.DjiPoseStamped, ttapi.TtLog))]
+        return [m for m in raw.collect(2.0, until=lambda got: any(mine(x) for x in got)) if mine(m)]
 
     try:
         for _ in range(3):
@@ -177,11 +182,20 @@ def test_a_repeated_setpoint_is_answered_again_and_flown_once(cpp_node_bins: dic
             assert len(got) == 1 and isinstance(got[0], ttapi.DjiPoseStamped), got
         got = answers(pose(102, 0, 0.1, topic=1))  # DRONE_POSITION: the handler's own echo, no refusal
         assert len(got) == 1 and isinstance(got[0], ttapi.DjiPoseStamped) and got[0].topic_name == 1, got
+        for sysid in range(10, 30):
+            other = Raw(node.port, sysid=sysid)
+            try:
+                got = answers(pose(100, 5, 3.0), other, sysid)
+                assert len(got) == 1 and got[0].target_system == sysid, got
+            finally:
+                other.close()
+        got = answers(pose(100, 5, 3.0))  # forgotten: flown again
+        assert len(got) == 1 and isinstance(got[0], ttapi.DjiPoseStamped), got
     finally:
         raw.close()
     stats = node.stop()
-    assert (stats["plugin_flown"], stats["setpoints_flown"], stats["setpoints_refused"],
-            stats["setpoints_repeated"]) == (3, 3, 1, 3), stats
+    assert (stats["plugin_flown"], stats["setpoints_flown"], stats["setpoints_refused"], stats["setpoints_repeated"],
+            stats["setpoints_forgotten"]) == (24, 24, 1, 3, 6), stats
 
 
 # -- a user's dialect ------------------------------------------------------------------------------

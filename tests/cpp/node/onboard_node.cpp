@@ -326,6 +326,7 @@ int main(int argc, char** argv)
                 "\"bad_frames\": %llu, \"refused_signature\": %llu, \"ignored\": %llu, \"echoes\": %llu, "
                 "\"executed\": %llu, \"duplicates\": %llu, \"plugin_executed\": %llu, \"plugin_flown\": %llu, "
                 "\"setpoints_flown\": %llu, \"setpoints_refused\": %llu, \"setpoints_repeated\": %llu, "
+                "\"setpoints_forgotten\": %llu, "
                 "\"files_received\": %llu, "
                 "\"files_refused\": %llu, \"files_served\": %llu, \"oversize\": %llu, \"requests_forgotten\": %llu, "
                 "\"sources_forgotten\": %llu, \"commands_forgotten\": %llu, \"dropped_control\": %llu}\n",
@@ -338,6 +339,7 @@ int main(int argc, char** argv)
                 static_cast<unsigned long long>(node.setpoint_stats().flown),
                 static_cast<unsigned long long>(node.setpoint_stats().refused),
                 static_cast<unsigned long long>(node.setpoint_stats().repeats),
+                static_cast<unsigned long long>(node.setpoint_stats().forgotten),
                 static_cast<unsigned long long>(s.files_received), static_cast<unsigned long long>(s.files_refused),
                 static_cast<unsigned long long>(s.files_served), static_cast<unsigned long long>(udp.oversize()),
                 static_cast<unsigned long long>(s.requests_forgotten),
