@@ -6,7 +6,8 @@ The programs are built from a freshly generated ttapi tree with g++ -std=c++17 -
 -Wpedantic -Werror: tests/cpp/node/onboard_node.cpp (the onboard end, ttapi::link::Node on UDP)
 around the GENERATED skeleton (cpp/onboard/ttapi_plugin.hpp) as a user edits it (EDITS:
 on_command() counts and accepts, and refuses trajectory flights with words; the
-DJI_POSE_STAMPED handler echoes the pose), plain and once more with
+DJI_POSE_STAMPED handler answers set-points with ctx.setpoint(), flying them, counted, or
+refusing an altitude below 0.5 m, and echoes a pose of another topic), plain and once more with
 -fsanitize=address,undefined for the hostile-input tests; and the drivers that run the
 scheduler and the node sans-IO against Python's (scheduler_driver.cpp, node_driver.cpp).
 The session fixtures cpp_node_bins and cpp_nodes (tests/conftest.py) hand them to the tests.
@@ -54,7 +55,8 @@ NODE_DRIVER = ROOT / "tests" / "cpp" / "node" / "node_driver.cpp"
 # The user's edits of the generated skeleton.
 EDITS = [
     ("public:\n    const char* name() const noexcept override",
-     "public:\n    std::uint64_t executed = 0;  // how many commands ran\n\n"
+     "public:\n    std::uint64_t executed = 0;  // how many commands ran\n"
+     "    std::uint64_t flown = 0;  // how many set-points were flown\n\n"
      "    const char* name() const noexcept override"),
     ("""        // TODO: carry out cmd.action (a TtAction) with cmd.param and cmd.argument, from system frame.sysid
         return {TtResult::TT_RESULT_UNSUPPORTED, "not implemented on this vehicle yet"};""",
@@ -65,7 +67,16 @@ EDITS = [
         return TtResult::TT_RESULT_ACCEPTED;"""),
     ("        // TODO: handle DJI_POSE_STAMPED (from system frame.sysid, component frame.compid); "
      "ctx.send(...) replies",
-     """        DjiPoseStamped echo = msg;
+     """        if (ctx.setpoint(msg, frame, [&]() -> std::optional<std::string> {
+                if (msg.position[2] < 0.5) {
+                    return "altitude below 0.5 m: land instead";
+                }
+                ++flown;
+                return std::nullopt;
+            }) != link::SetpointVerdict::not_setpoint) {
+            return;
+        }
+        DjiPoseStamped echo = msg;  // another topic: echoed
         echo.target_system = frame.sysid;
         ctx.send(echo);"""),
 ]

@@ -106,7 +106,7 @@ def test_the_osdk_program_against_the_emulated_tablet(built: dict[str, Path], tm
         a = free_port()
         relay(start, a, b, "--profile", "m100", "--loss", "0.1", "--seed", "4", "--stats-interval", "0")
         script = tmp_path / "script.yaml"
-        script.write_text("- takeoff: 3\n- send: up.bin\n- fetch: log.bin\n"
+        script.write_text("- takeoff: 3\n- goto: [3, 4, 5]\n- send: up.bin\n- fetch: log.bin\n"
                           "- msg: {send: DJI_POSE_STAMPED sec=9, until: DJI_POSE_STAMPED.sec == 9, timeout: 20}\n"
                           "- land\n")
         tablet = ["emulate", "tablet", "--to", f"udpout:{LOCAL}:{a}", "--profile", "m100", "--dir",
@@ -114,7 +114,7 @@ def test_the_osdk_program_against_the_emulated_tablet(built: dict[str, Path], tm
         proc = run_ttctl(*tablet, cwd=tmp_path, timeout=120)
         assert proc.returncode == 0, proc.stdout + proc.stderr
         steps = [json.loads(line) for line in proc.stdout.splitlines() if line.startswith("{")]
-        assert [s["ok"] for s in steps if s.get("event") == "step"] == [True] * 5, proc.stdout
+        assert [s["ok"] for s in steps if s.get("event") == "step"] == [True] * 6, proc.stdout
         assert sha(tmp_path / "inbox" / "up.bin") == sha(up)
         assert sha(tmp_path / "tablet" / "log.bin") == sha(served)
         script.write_text("- hover\n")

@@ -17,8 +17,8 @@ the link, in namespace <ns>::link:
                               includes its pieces (TRANSFER_HEADERS): the protocol's numbers and
                               words, the name rules, byte ranges, storage, the receiver, the sender
   cpp/<ident>/node.hpp        link::Node: all of it on one link, heartbeat, timers; DttLink (DJI OSDK 4);
-                              it includes its pieces (NODE_HEADERS): the config, receiving, files,
-                              NodePump, DttLink
+                              it includes its pieces (NODE_HEADERS): the config, the set-points'
+                              answers (SetpointDesk), receiving, files, NodePump, DttLink
   cpp/<ident>/udp_link.hpp    link::UdpLink: a Node on UDP (POSIX)
   cpp/<ident>/enums.hpp       one `enum class` per enum
   cpp/<ident>/messages.hpp    one struct per message
@@ -62,8 +62,9 @@ RUNTIME_HEADERS = ("runtime", "frame_format", "crc", "byte_order", "message_info
 TRANSFER_HEADERS = ("transfer", "transfer_base", "file_names", "ranges", "posix_files", "json", "receive_dir",
                     "partial", "file_source", "receiver", "receiver_offers", "receiver_data", "receiver_status",
                     "sender", "sender_control", "sender_data", "sender_frame_size")
-# The node: node.hpp includes node_config.hpp first and its parts (the others) after the class.
-NODE_HEADERS = ("node", "node_config", "node_receive", "node_files", "node_pump", "dtt_link")
+# The node: node.hpp includes node_config.hpp and setpoints.hpp first and its parts (the others)
+# after the class.
+NODE_HEADERS = ("node", "node_config", "setpoints", "node_receive", "node_files", "node_pump", "dtt_link")
 _SUB_HEADERS = (*RUNTIME_HEADERS, "enums", "messages", "signing", "packets", "sha256", "scheduler", "commands",
                 *TRANSFER_HEADERS, *NODE_HEADERS, "udp_link", "udp_forward")
 # What the onboard link runtime (commands.hpp, transfer.hpp, node.hpp) is written against: these
@@ -81,6 +82,16 @@ def carries_link(d: Dialect) -> bool:
     have = {m.name: (m.id, m.crc_extra) for m in d.messages if m.complete}
     enums = {e.name for e in d.enums}
     return all(have.get(n) == RUNTIME_MESSAGES[n] for n in LINK_MESSAGES) and all(e in enums for e in LINK_ENUMS)
+
+
+def answers_setpoints(d: Dialect) -> bool:
+    """Whether the dialect has the tablet's set-points (DJI_POSE_STAMPED, DJI_TOPIC_NAME_SETPOINT),
+    so that the node answers them (NodeContext::setpoint())."""
+    pose = next((m for m in d.messages if m.name == "DJI_POSE_STAMPED"), None)
+    topic = next((e for e in d.enums if e.name == "DJI_TOPIC_NAME"), None)
+    return (carries_link(d) and pose is not None and topic is not None
+            and topic.entry("DJI_TOPIC_NAME_SETPOINT") is not None
+            and {"target_system", "sec", "nsec", "topic_name"} <= {f.name for f in pose.fields})
 
 
 def namespace(d: Dialect, override: str | None = None) -> str:
@@ -256,6 +267,7 @@ class _Cpp:
         return {
             "ns": namespace(d, self.override),
             "link": carries_link(d),
+            "setpoints": answers_setpoints(d),
             "folder": folder(d, self.override),
             "umbrella": umbrella(d, self.override),
             "guard": lambda part: guard(d, part, self.override),

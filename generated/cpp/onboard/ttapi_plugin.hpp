@@ -95,6 +95,19 @@ public:
     void on_dji_pose_stamped([[maybe_unused]] const DjiPoseStamped& msg, [[maybe_unused]] const Frame& frame,
             [[maybe_unused]] link::NodeContext& ctx)
     {
+        // The tablet's set-point (topic SETPOINT) waits for an answer, or its goto fails: fly it
+        // once per stamp and echo it to the sender, or refuse it in your words (a TT_LOG warning
+        // "set-point refused: ..."), in one call; other topics are not_setpoint, yours below:
+        //
+        //     if (ctx.setpoint(msg, frame, [&]() -> std::optional<std::string> {
+        //             if (msg.position[2] < 0.5) {  // north, east, altitude above home, in m
+        //                 return "altitude below 0.5 m: land instead";
+        //             }
+        //             // fly to msg.position
+        //             return std::nullopt;
+        //         }) != link::SetpointVerdict::not_setpoint) {
+        //         return;
+        //     }
         // TODO: handle DJI_POSE_STAMPED (from system frame.sysid, component frame.compid); ctx.send(...) replies
     }
 

@@ -7,6 +7,9 @@
 // decisions. It also sends a HEARTBEAT every second (so that `ttctl emulate tablet` and ground
 // stations see the vehicle), runs your periodic work, and dispatches every message addressed to
 // this end to your handlers (after its own part), which reply through their NodeContext.
+// The tablet's set-points (DJI_POSE_STAMPED, topic SETPOINT) are answered from your handler in
+// one call, ctx.setpoint() (setpoints.hpp): flown once per stamp and echoed to their sender, or
+// refused in your words (a TT_LOG warning "set-point refused: ...").
 //
 // A Node is sans-IO: receive() takes packets, poll() gives the next packet the pacer lets go,
 // wakeup() says when to call again. A driver owns the clock and the transport:
@@ -23,6 +26,7 @@
 //
 // The node is in pieces (this header includes them all):
 //   node_config.hpp    NodeConfig (how a node is set up), NodeEvent and NodeStats (what it reports)
+//   setpoints.hpp      SetpointDesk: the tablet's set-points answered (flown once, echoed; or refused)
 //   node.hpp           NodeContext, NodePlugin and the Node class: what the user binds, sending,
 //                      driving (poll, wakeup), periodic work
 //   node_receive.hpp   Node: packets in, per source; frames for this end, handled; commands run
@@ -42,6 +46,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
 #include <string_view>
@@ -54,6 +59,7 @@
 #include "node_config.hpp"
 #include "runtime.hpp"
 #include "scheduler.hpp"
+#include "setpoints.hpp"
 #include "transfer.hpp"
 
 namespace ttapi::link {
@@ -64,6 +70,14 @@ inline double monotonic_now() noexcept
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 class Node;
+
+/// What NodeContext::setpoint() did with a DJI_POSE_STAMPED.
+enum class SetpointVerdict : std::uint8_t {
+    not_setpoint,  // another topic: nothing done, nothing answered (yours to handle)
+    flown,  // flown now, echoed to its sender
+    refused,  // refused now, the words said ("set-point refused: ...")
+    repeated,  // the sender's last stamp again: answered again as before, not flown
+};
 
 /// What a handler (and a timer, and a command's action) may do: send any message of the
 /// dialect, log, ask the time. It is the node's Outbox: `ctx.send(msg)` queues the message at
@@ -87,6 +101,22 @@ public:
     /// A TT_LOG line to the tablet (`severity`: MAV_SEVERITY, 6 INFO), behind control frames;
     /// `urgent`: ahead of telemetry (words that explain a refusal go so).
     void log(std::string_view text, std::uint8_t severity = 6, bool urgent = false);
+
+    /// Answer the tablet's set-point (`msg` of topic SETPOINT; another topic: not_setpoint, and
+    /// nothing done): `fly()` flies it and returns std::nullopt, or refuses it and returns why
+    /// (std::optional<std::string>); it runs once per stamp and sender (a repeat is answered
+    /// again, not flown twice). Flown: the set-point is echoed to its sender (the same stamp and
+    /// topic); refused: a TT_LOG warning "set-point refused: <why>", ahead of telemetry.
+    ///
+    ///     ctx.setpoint(msg, frame, [&]() -> std::optional<std::string> {
+    ///         if (msg.position[2] < 0.5) {
+    ///             return "altitude below 0.5 m: land instead";
+    ///         }
+    ///         fly_to(msg.position);  // north, east, altitude above home
+    ///         return std::nullopt;
+    ///     });
+    template <class Fly>
+    SetpointVerdict setpoint(const DjiPoseStamped& msg, const Frame& frame, Fly&& fly);
 
     double now() const noexcept;
     std::uint8_t sysid() const noexcept;
@@ -235,6 +265,7 @@ public:
     const NodeStats& stats() const noexcept { return stats_; }
     const CommandStats& command_stats() const noexcept { return server_.stats(); }
     const SchedulerStats& scheduler_stats() const noexcept { return scheduler_.stats(); }
+    const SetpointStats& setpoint_stats() const noexcept { return setpoints_.stats(); }
     FileReceiver* receiver() noexcept { return receiver_.get(); }
     double now() const noexcept { return now_; }
     double boot_time() const noexcept { return boot_; }
@@ -282,6 +313,24 @@ public:
                 f(static_cast<const FileSender&>(senders_[i]));
             }
         }
+    }
+
+    /// See NodeContext::setpoint().
+    template <class Fly>
+    SetpointVerdict setpoint(const DjiPoseStamped& msg, const Frame& frame, Fly&& fly)
+    {
+        if (msg.topic_name != static_cast<std::uint8_t>(DjiTopicName::DJI_TOPIC_NAME_SETPOINT)) {
+            return SetpointVerdict::not_setpoint;
+        }
+        const SetpointDesk::Answer a = setpoints_.handle(frame.sysid, frame.compid, msg.sec, msg.nsec, fly);
+        if (!a.flown) {
+            log(a.words, 4, true);  // WARNING, ahead of telemetry; again for a repeat: the first was lost
+            return a.repeat ? SetpointVerdict::repeated : SetpointVerdict::refused;
+        }
+        DjiPoseStamped echo = msg;
+        echo.target_system = frame.sysid;
+        send(echo, Priority::control);
+        return a.repeat ? SetpointVerdict::repeated : SetpointVerdict::flown;
     }
 
     // -- driving ----------------------------------------------------------------------------------
@@ -472,6 +521,7 @@ private:
     Encoder encoder_;  // unsigned: the scheduler signs frames as they leave
     Scheduler scheduler_;
     CommandServer server_;
+    SetpointDesk setpoints_;
     NodeContext context_;
     Dispatcher dispatcher_;
     Heartbeat heartbeat_;
@@ -521,6 +571,12 @@ inline bool NodeContext::send_at(const M& msg, Priority priority, std::uint64_t 
 inline void NodeContext::log(std::string_view text, std::uint8_t severity, bool urgent)
 {
     node_.log(text, severity, urgent);
+}
+
+template <class Fly>
+inline SetpointVerdict NodeContext::setpoint(const DjiPoseStamped& msg, const Frame& frame, Fly&& fly)
+{
+    return node_.setpoint(msg, frame, std::forward<Fly>(fly));
 }
 
 inline double NodeContext::now() const noexcept { return node_.now(); }

@@ -2,7 +2,8 @@
 // program, for tests that put it against ttctl's Python ends and the Java tablet.
 //
 // Built from the generated skeleton cpp/onboard/ttapi_plugin.hpp as a user would edit it (the
-// test fills in on_command() and the DJI_POSE_STAMPED handler: EDITS in tests/cpp_node_lib.py):
+// test fills in on_command() and the DJI_POSE_STAMPED handler, which answers set-points with
+// ctx.setpoint(): EDITS in tests/cpp_node_lib.py):
 //
 //     g++ -std=c++17 -Wall -Wextra -Wpedantic -Werror -I OUT/cpp -I SKELETON_DIR onboard_node.cpp -o onboard_node
 //
@@ -323,7 +324,10 @@ int main(int argc, char** argv)
     const ttapi::link::CommandStats& c = node.command_stats();
     std::printf("{\"event\": \"stats\", \"packets_in\": %llu, \"packets_out\": %llu, \"frames_in\": %llu, "
                 "\"bad_frames\": %llu, \"refused_signature\": %llu, \"ignored\": %llu, \"echoes\": %llu, "
-                "\"executed\": %llu, \"duplicates\": %llu, \"plugin_executed\": %llu, \"files_received\": %llu, "
+                "\"executed\": %llu, \"duplicates\": %llu, \"plugin_executed\": %llu, \"plugin_flown\": %llu, "
+                "\"setpoints_flown\": %llu, \"setpoints_refused\": %llu, \"setpoints_repeated\": %llu, "
+                "\"setpoints_forgotten\": %llu, "
+                "\"files_received\": %llu, "
                 "\"files_refused\": %llu, \"files_served\": %llu, \"oversize\": %llu, \"requests_forgotten\": %llu, "
                 "\"sources_forgotten\": %llu, \"commands_forgotten\": %llu, \"dropped_control\": %llu}\n",
                 static_cast<unsigned long long>(s.packets_in), static_cast<unsigned long long>(s.packets_out),
@@ -331,6 +335,11 @@ int main(int argc, char** argv)
                 static_cast<unsigned long long>(s.refused_signature), static_cast<unsigned long long>(s.ignored),
                 static_cast<unsigned long long>(s.echoes), static_cast<unsigned long long>(c.executed),
                 static_cast<unsigned long long>(c.duplicates), static_cast<unsigned long long>(plugin.executed),
+                static_cast<unsigned long long>(plugin.flown),
+                static_cast<unsigned long long>(node.setpoint_stats().flown),
+                static_cast<unsigned long long>(node.setpoint_stats().refused),
+                static_cast<unsigned long long>(node.setpoint_stats().repeats),
+                static_cast<unsigned long long>(node.setpoint_stats().forgotten),
                 static_cast<unsigned long long>(s.files_received), static_cast<unsigned long long>(s.files_refused),
                 static_cast<unsigned long long>(s.files_served), static_cast<unsigned long long>(udp.oversize()),
                 static_cast<unsigned long long>(s.requests_forgotten),
