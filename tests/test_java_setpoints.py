@@ -3,7 +3,8 @@ set-points ..."): tests/java/setpoint/SetpointDriver.java sends them with the ru
 SendSetpoint in one Session, as an app does, built with javac --release 11 -Xlint:all -Werror
 from a freshly generated tree, against a real `ttctl emulate onboard` and a plain UDP sink:
 
-- a set-point while landed, and one at 0.2 m once airborne, fail REFUSED in the vehicle's words;
+- a set-point while landed, and one at 0.2 m or 1e9 m away once airborne, fail REFUSED in the
+  vehicle's words (those of two TT_LOG chunks joined);
 - a flyable one completes with the vehicle's echo (the same stamp) and the vehicle's odometry
   moves toward it; a newer one submitted behind an older supersedes it (SUPERSEDED);
 - results and callbacks arrive on the session's listener thread, as command results do;
@@ -59,11 +60,14 @@ def test_set_points_are_done_refused_or_superseded_as_the_vehicle_answers(classe
     assert r["moved"], "the set-point was reported done but the vehicle did not move:\n" + text
     assert r["low"].endswith(": set-point refused: altitude 0.2 m is below 0.5 m: land instead (tries 1)"), text
     assert r["low_callback"] == "onFailure on ttctl-listeners", text
+    # 80 bytes of words: two TT_LOG chunks (a full one and an empty last one), joined
+    assert r["far"].endswith(": set-point refused: 1000000 km from home is beyond the 1000 m limit (TT_MAX_DIST)"
+                             " (tries 1)"), text
     superseded = "SUPERSEDED set-point 0.0 N, 0.0 E, 6.0 m: superseded by set-point 0.0 N, 0.0 E, 7.0 m"
     assert r["older"].startswith(superseded), text
     assert r["older_callback"] == "onFailure on ttctl-listeners", text
     assert r["newer"] == "DONE 0.0 0.0 7.0", text
-    assert node.stderr.count("set-point refused") == 2, node.stderr
+    assert node.stderr.count("set-point refused") == 3, node.stderr
 
 
 SINK = r'''

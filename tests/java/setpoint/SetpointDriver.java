@@ -139,6 +139,7 @@ public final class SetpointDriver {
                 put("north_after", ned[0]);
             }
             send(s, 0, 0, 0.2, "low");
+            send(s, 1e9, 0, 10, "far"); // 80 bytes of words: a full TT_LOG chunk and an empty last one
             // two in a row (the queue paused so the vehicle cannot answer the older first): the
             // newer supersedes the older
             s.commands().pause();
