@@ -107,12 +107,14 @@ public class SendSetpoint extends SendCommand {
     /** The echo, or the vehicle's (whole) {@code set-point refused: ...} warning. */
     @Override
     protected boolean accept(MavlinkMessage msg, CommandContext ctx) {
+        String before = vehicleWords();
         if (super.accept(msg, ctx)) {
             return true;
         }
         if (msg instanceof TtLog) {
             String said = vehicleWords();
-            if (said != null && said.startsWith("set-point refused:") && refused == null) {
+            // a line this very message completed (not words heard by an earlier submission)
+            if (said != null && said != before && said.startsWith("set-point refused:") && refused == null) {
                 refused = said;
                 return true;
             }
