@@ -9,7 +9,10 @@ from a freshly generated tree, against a real `ttctl emulate onboard` and a plai
   moves toward it; a newer one submitted behind an older supersedes it (SUPERSEDED);
 - results and callbacks arrive on the session's listener thread, as command results do;
 - nobody answering: 5 sends of the same stamp 1.5 s apart, then TIMEOUT "no answer"; an older
-  set-point in flight meanwhile ends SUPERSEDED.
+  set-point in flight meanwhile ends SUPERSEDED;
+- a session that takes off and then sends nothing for 13 s is still heard by the vehicle (the
+  Session's own HEARTBEAT a second: no "link lost"); with them off (heartbeatMillis 0) the
+  vehicle says "link lost".
 """
 
 from __future__ import annotations
@@ -112,3 +115,21 @@ def test_an_unanswered_set_point_fails_after_five_sends_of_the_same_stamp(classe
     assert int(sec) > 0 and topic == "0" and second[0].endswith("[5.0, 0.0, 10.0]"), sent
 
 
+
+
+@pytest.mark.parametrize("heartbeats", [True, False], ids=["heartbeats", "heartbeats-off"])
+def test_an_idle_tablet_session_is_heard_by_its_own_heartbeats(classes: Path, tmp_path: Path, start: Start,
+                                                              heartbeats: bool) -> None:
+    """The Session's HEARTBEAT a second keeps a tablet that took off and then sends nothing from
+    being taken for lost by the vehicle (COM_DL_LOSS_T, 10 s); with them off (heartbeatMillis 0)
+    the vehicle says "link lost" (the test can fail)."""
+    port = free_port()
+    node = onboard(start, tmp_path, port, "--speed", "4")
+    mode = "idle" if heartbeats else "idle-no-heartbeat"
+    r = SetpointJava(classes, tmp_path, mode, mode, port).finish(60)
+    text = r["_text"][-3000:]
+    assert r["takeoff"] == "ok ACCEPTED" and r["airborne"] and r["idle_s"] == 13, text
+    if heartbeats:
+        assert "link lost" not in node.stderr, node.stderr
+    else:
+        node.wait_for("link lost", 5)

@@ -463,6 +463,7 @@ CONTRACT_FIELDS = {
     "TT_ACTION_COMMAND": ("command_id", "time_usec"),
     "TT_COMMAND_ACK": ("command_id", "result"),
     "TT_LOG": ("id", "severity", "chunk_seq"),  # and its text, a char array (checked below)
+    "HEARTBEAT": ("type", "autopilot"),  # the Session's own, a second (MAV_TYPE_GCS, MAV_AUTOPILOT_INVALID)
 }
 
 

@@ -1,15 +1,12 @@
 import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
-import java.util.concurrent.Executors;
-import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 
 import ttctl.ttapi.Ttapi;
 import ttctl.ttapi.commands.SendTtActionCommand;
 import ttctl.ttapi.enums.TtAction;
 import ttctl.ttapi.msg.DjiPoseStamped;
-import ttctl.ttapi.msg.Heartbeat;
 import ttctl.ttapi.msg.TtCommandAck;
 import ttctl.ttapi.msg.TtOdometry;
 import ttctl.ttapi.runtime.CommandException;
@@ -27,6 +24,9 @@ import ttctl.ttapi.runtime.UdpLink;
  *     and the vehicle's odometry moves north), one at 0.2 m (refused), two in a row (the first
  *     superseded, the second done).
  * silent port=SINK     a set-point nobody answers, submitted while an older one is in flight.
+ * idle port=ONBOARD    take-off, then 13 s of nothing from the app (the session's own
+ *     heartbeats keep the vehicle hearing its tablet).
+ * idle-no-heartbeat port=ONBOARD   the same with Session.Options.heartbeatMillis = 0.
  */
 public final class SetpointDriver {
     static final int SYS = 255;
@@ -91,7 +91,11 @@ public final class SetpointDriver {
         int port = Integer.parseInt(argv[1].substring(argv[1].indexOf('=') + 1));
         UdpLink udp = UdpLink.open("127.0.0.1", 0, "127.0.0.1", port, Ttapi.INSTANCE);
         udp.setLearnsRemote(false);
-        Session s = new Session(udp, SYS, COMP);
+        Session.Options options = new Session.Options();
+        if ("idle-no-heartbeat".equals(argv[0])) {
+            options.heartbeatMillis = 0; // the session's own heartbeats off: the vehicle must take the tablet for lost
+        }
+        Session s = new Session(udp, SYS, COMP, options);
         final double[] ned = {Double.NaN, Double.NaN, Double.NaN};
         s.dispatcher().on(TtOdometry.MSG_ID, TtOdometry.class, (TtOdometry o) -> {
             synchronized (ned) {
@@ -101,18 +105,17 @@ public final class SetpointDriver {
             }
         });
         s.start();
-        ScheduledExecutorService beat = Executors.newSingleThreadScheduledExecutor();
-        beat.scheduleAtFixedRate(() -> { // as the app does: the vehicle keeps hearing its tablet
-            Heartbeat hb = new Heartbeat();
-            hb.type = 6; // a ground control station
-            hb.autopilot = 8; // none
-            try {
-                s.commands().send(hb);
-            } catch (java.io.IOException e) {
-                event("heartbeat: " + e);
-            }
-        }, 0, 1, TimeUnit.SECONDS);
-        if ("silent".equals(argv[0])) {
+        if (argv[0].startsWith("idle")) {
+            // take off, then nothing at all from the app for 13 s: only the session's heartbeats
+            put("hello", action(s, TtAction.TT_ACTION_SYNC_TIME));
+            String takeoff = action(s, TtAction.TT_ACTION_TAKE_OFF);
+            event("TAKE_OFF: " + takeoff);
+            put("takeoff", takeoff);
+            put("airborne", await(ned, 2, -1.0, 30000));
+            event("idle");
+            Thread.sleep(13000);
+            put("idle_s", 13);
+        } else if ("silent".equals(argv[0])) {
             // one in flight (sent twice, unanswered), then a newer one: the older ends SUPERSEDED
             Probe first = new Probe(1, 0, 10);
             CompletableFuture<MavlinkMessage> f = s.submit(first);
@@ -152,7 +155,6 @@ public final class SetpointDriver {
             put("older_callback", older.called.get(5, TimeUnit.SECONDS));
             put("newer", result(f2, 20000));
         }
-        beat.shutdownNow();
         event("closing");
         s.close();
         System.out.println("RESULT {" + OUT + "}");
