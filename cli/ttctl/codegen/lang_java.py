@@ -88,7 +88,7 @@ RUNTIME_FILES = [
     "LinkScheduler", "DjiLink",
     "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
 ]
-RUNTIME_CLASSES = frozenset(RUNTIME_FILES)
+RUNTIME_CLASSES = frozenset(RUNTIME_FILES + ["SendSetpoint"])
 # File transfer (package <root>.transfer), for dialects that have ttctl's file messages.
 TRANSFER_FILES = ["RangeSet", "Names", "TransferConfig", "TransferResult", "Transfer", "LossEstimate", "FileSender",
                   "ReceiveDir", "Partial", "FileReceiver", "FileFetch", "FileTransfers"]
@@ -463,6 +463,7 @@ CONTRACT_FIELDS = {
     "TT_ACTION_COMMAND": ("command_id", "time_usec"),
     "TT_COMMAND_ACK": ("command_id", "result"),
     "TT_LOG": ("id", "severity", "chunk_seq"),  # and its text, a char array (checked below)
+    "HEARTBEAT": ("type", "autopilot"),  # the Session's own, a second (MAV_TYPE_GCS, MAV_AUTOPILOT_INVALID)
 }
 
 
@@ -476,6 +477,22 @@ def has_contract(d: Dialect, name: str) -> bool:
         return False
     return all((f := m.field(n)) is not None and not f.array_length and not f.is_float and f.type != "char"
                for n in CONTRACT_FIELDS[name])
+
+
+def has_setpoints(d: Dialect) -> bool:
+    """Whether the dialect has answered set-points (SendSetpoint): ttapi.xml's DJI_POSE_STAMPED
+    with its SETPOINT topic, and TT_LOG for the refusals."""
+    m = d.messages_by_name.get("DJI_POSE_STAMPED")
+    if m is None or not m.complete or not has_contract(d, "TT_LOG"):
+        return False
+    shape = {"target_system": ("uint8_t", 0), "sec": ("uint32_t", 0), "nsec": ("uint32_t", 0),
+             "topic_name": ("uint8_t", 0), "position": ("double", 3), "orientation": ("double", 4)}
+    for name, (t, n) in shape.items():
+        f = m.field(name)
+        if f is None or f.type != t or (f.array_length or 0) != n:
+            return False
+    topics = next((e for e in d.enums if e.name == "DJI_TOPIC_NAME"), None)
+    return topics is not None and any(x.name == "DJI_TOPIC_NAME_SETPOINT" for x in topics.entries)
 
 
 def stamped_fields(m: Message) -> dict[str, str]:
@@ -548,6 +565,8 @@ class _Java:
         outs = [Output(f"{root}/{registry_class(d)}.java", "java/Registry.java.j2")]
         for n in RUNTIME_FILES:
             outs.append(Output(f"{root}/runtime/{n}.java", f"java/runtime/{n}.java.j2"))
+        if has_setpoints(d):
+            outs.append(Output(f"{root}/runtime/SendSetpoint.java", "java/runtime/SendSetpoint.java.j2"))
         if TRANSFER_MESSAGES.issubset(m.name for m in d.messages if m.complete):
             for n in TRANSFER_FILES:
                 outs.append(Output(f"{root}/transfer/{n}.java", f"java/runtime/transfer/{n}.java.j2"))

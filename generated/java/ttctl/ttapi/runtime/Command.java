@@ -114,6 +114,19 @@ public abstract class Command {
     void begin(CommandContext ctx) {
     }
 
+    /**
+     * Commands of the same non-null kind supersede each other: submitting one ends the one
+     * before, waiting or in flight, with {@link CommandException.Reason#SUPERSEDED}.
+     */
+    String supersedes() {
+        return null;
+    }
+
+    /** What a TIMEOUT says of the missing reply. */
+    String silence() {
+        return "no reply";
+    }
+
     /** One try: send what this command sends, if anything. Called on the queue's thread. */
     protected abstract void attempt(CommandContext ctx, int attempt) throws Exception;
 

@@ -19,7 +19,9 @@ public class CommandException extends Exception {
         /** The queue was closed before the command finished. */
         SHUTDOWN,
         /** The command's future was cancelled. */
-        CANCELLED
+        CANCELLED,
+        /** A newer command of the same kind was submitted (a newer set-point: {@link SendSetpoint}). */
+        SUPERSEDED
     }
 
     private final Reason reason;

@@ -233,16 +233,34 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         CompletableFuture<MavlinkMessage> future = new CompletableFuture<>();
         Job job;
         boolean refused;
+        List<Job> superseded = new ArrayList<>();
+        String kind = command.supersedes();
         lock.lock();
         try {
             job = new Job(command, future, submitted++);
             refused = closed;
             if (!refused) {
+                if (kind != null) {
+                    for (Job j : inFlight) {
+                        if (!j.finished && kind.equals(j.command.supersedes())) {
+                            superseded.add(j);
+                        }
+                    }
+                    for (Job j : pending) {
+                        if (kind.equals(j.command.supersedes())) {
+                            superseded.add(j);
+                        }
+                    }
+                }
                 pending.add(job);
                 changed.signalAll();
             }
         } finally {
             lock.unlock();
+        }
+        for (Job j : superseded) { // the queue's thread then ends them with this reason
+            j.future.completeExceptionally(new CommandException(CommandException.Reason.SUPERSEDED,
+                    j.command.describe() + ": superseded by " + command.describe(), 0, null));
         }
         if (refused) {
             fail(job, new CommandException(CommandException.Reason.SHUTDOWN, command.describe()
@@ -485,7 +503,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                         } else if (j.future.isDone()) {
                             it.remove();
                             j.finished = true;
-                            work.add(failing(j, cancelled(j.command, j.made)));
+                            work.add(failing(j, ended(j, j.made)));
                         } else if (now - j.due >= 0) {
                             if (j.made < j.tries) {
                                 j.sending = true;
@@ -506,7 +524,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                                         String problem = linkProblem();
                                         boolean silent = lastHeard - j.startedAt < 0;
                                         fail(j, new CommandException(CommandException.Reason.TIMEOUT, j.command.describe()
-                                                + ": no reply after " + made + " tr" + (made == 1 ? "y" : "ies")
+                                                + ": " + j.command.silence() + " after " + made + " tr" + (made == 1 ? "y" : "ies")
                                                 + (silent ? ", no message received from the link meanwhile" : "")
                                                 + (problem != null ? "; " + problem : ""), made, null));
                                     }
@@ -520,7 +538,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                         final Job j = pending.poll();
                         j.finished = j.future.isDone();
                         if (j.finished) {
-                            work.add(failing(j, cancelled(j.command, 0)));
+                            work.add(failing(j, ended(j, 0)));
                             continue;
                         }
                         j.commandId = takeId();
@@ -679,12 +697,30 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         };
     }
 
+    /** Why a job whose future completed from outside ended: a superseded one says so, else cancelled. */
+    private static CommandException ended(Job j, int made) {
+        try {
+            j.future.getNow(null);
+        } catch (java.util.concurrent.CompletionException e) {
+            if (e.getCause() instanceof CommandException) {
+                CommandException c = (CommandException) e.getCause();
+                return new CommandException(c.reason(), c.getMessage(), made, null);
+            }
+        } catch (java.util.concurrent.CancellationException e) {
+            // cancelled
+        }
+        return cancelled(j.command, made);
+    }
+
     private static CommandException cancelled(Command c, int made) {
         return new CommandException(CommandException.Reason.CANCELLED, c.describe() + ": cancelled", made, null);
     }
 
     private void succeed(final Job job, final MavlinkMessage reply) {
-        job.future.complete(reply);
+        if (!job.future.complete(reply)) { // ended from outside first (cancelled, superseded): it says so
+            fail(job, ended(job, job.made));
+            return;
+        }
         Callbacks.run(listeners, new Runnable() {
             @Override
             public void run() {
@@ -693,8 +729,11 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         }, "onSuccess of " + job.command.describe());
     }
 
-    private void fail(final Job job, final Throwable error) {
-        job.future.completeExceptionally(error);
+    private void fail(final Job job, final Throwable failure) {
+        // the callback says what the future says: a command ended from outside (cancelled,
+        // superseded) before its own end was decided reports that
+        final Throwable error = job.future.completeExceptionally(failure) || !job.future.isCompletedExceptionally()
+                ? failure : ended(job, job.made);
         Callbacks.run(listeners, new Runnable() {
             @Override
             public void run() {

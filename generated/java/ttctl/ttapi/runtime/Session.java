@@ -22,6 +22,14 @@ import ttctl.ttapi.transfer.TransferConfig;
  * single thread of the session's own. Never on the link's reader thread, the SDK's threads or
  * the scheduler's: a slow listener delays other listeners, never an ack or a packet.
  *
+ * <p>From {@link #start()} to {@link #close()} the session sends a HEARTBEAT every
+ * {@link Options#heartbeatMillis} (1 s; MAV_TYPE_GCS, MAV_AUTOPILOT_INVALID, as a ground station
+ * and ttctl's Python tablet do) at CONTROL priority, never behind file data: the vehicle watches
+ * the link that last commanded the flight, and a tablet silent COM_DL_LOSS_T seconds (10 s) is
+ * taken for lost (the vehicle hovers, then returns). An app that takes off and then just waits
+ * stays heard. {@link Options#heartbeatMillis} 0 turns it off (the app then keeps the link alive
+ * itself).
+ *
  * <pre>
  * Session session = new Session(link, 255, 190).start();
  * session.dispatcher().on(TtLog.MSG_ID, TtLog.class, log -&gt; show(log.getTextString()));
@@ -42,6 +50,13 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         public Executor listeners;
         /** Signs every frame sent (MAVLink 2 signing); verify what arrives with the same Signing in the link's receiver. */
         public Signing signing;
+        /**
+         * Milliseconds between the session's own HEARTBEATs (MAV_TYPE_GCS, at CONTROL priority,
+         * the first at {@link Session#start()}); 0 or less: none. The default, 1000, keeps the
+         * vehicle's link-loss watch (COM_DL_LOSS_T, 10 s) from taking an idle tablet for a lost
+         * one, for about 21 bytes a second of the uplink.
+         */
+        public long heartbeatMillis = DEFAULT_HEARTBEAT_MILLIS;
         /** Timing of file transfers (null: the defaults). */
         public TransferConfig transfers;
         /**
@@ -51,6 +66,9 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         public double linkRate;
     }
 
+    /** The default of {@link Options#heartbeatMillis}: a HEARTBEAT a second. */
+    public static final long DEFAULT_HEARTBEAT_MILLIS = 1000;
+
     private final Link link;
     private final LinkScheduler scheduler;
     private final CommandQueue commands;
@@ -58,6 +76,8 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
     private final FileTransfers files;
     private final Executor listeners;
     private final ExecutorService ownListeners;
+    private final long heartbeatMillis;
+    private java.util.concurrent.ScheduledExecutorService heartbeats;
     private boolean started;
     private boolean closed;
 
@@ -93,6 +113,7 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         if (link instanceof DjiLink) {
             ((DjiLink) link).setListenerExecutor(listeners);
         }
+        this.heartbeatMillis = o.heartbeatMillis;
     }
 
     /**
@@ -113,7 +134,42 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         } else if (link instanceof DjiLink) {
             ((DjiLink) link).addListener(this);
         }
+        if (heartbeatMillis > 0) {
+            heartbeats = java.util.concurrent.Executors.newSingleThreadScheduledExecutor(
+                    new java.util.concurrent.ThreadFactory() {
+                        @Override
+                        public Thread newThread(Runnable r) {
+                            Thread t = new Thread(r, "ttctl-heartbeat");
+                            t.setDaemon(true);
+                            return t;
+                        }
+                    });
+            heartbeats.scheduleAtFixedRate(new Runnable() {
+                @Override
+                public void run() {
+                    heartbeat();
+                }
+            }, 0, heartbeatMillis, java.util.concurrent.TimeUnit.MILLISECONDS);
+        }
         return this;
+    }
+
+    /** One HEARTBEAT, as a ground station's: at CONTROL priority, with the session's ids. */
+    private void heartbeat() {
+        ttctl.ttapi.msg.Heartbeat hb = new ttctl.ttapi.msg.Heartbeat();
+        hb.type = 6; // MAV_TYPE_GCS
+        hb.autopilot = 8; // MAV_AUTOPILOT_INVALID
+        try {
+            commands.send(hb);
+        } catch (java.io.IOException | RuntimeException e) { // closing, or the link refused it: the next one may pass
+            if (!isClosed()) {
+                System.err.println("ttctl Session: heartbeat: " + e);
+            }
+        }
+    }
+
+    private synchronized boolean isClosed() {
+        return closed;
     }
 
     /** A message from the link: to the commands, the transfers and the dispatcher (whose handlers run on the listener executor). */
@@ -172,6 +228,9 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
                 return;
             }
             closed = true;
+        }
+        if (heartbeats != null) {
+            heartbeats.shutdownNow();
         }
         if (link instanceof UdpLink) {
             ((UdpLink) link).removeListener(this);
