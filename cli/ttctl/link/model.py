@@ -125,11 +125,15 @@ def load_profile(name: str | None, path: str | None = None) -> Profile:
     where = "ttctl's profiles.toml"
     if path is not None:
         where = path
+        from ..errors import Fail
+        from ..safeio import MiB, read_capped
+
         try:
-            with open(path, "rb") as fh:
-                table = tomllib.load(fh)
-        except OSError as e:
-            raise ProfileError(f"--profile-file {path}: {e.strerror or e}") from None
+            table = tomllib.loads(read_capped(path, f"--profile-file {path}", MiB).decode("utf-8"))
+        except Fail as e:
+            raise ProfileError(str(e)) from None
+        except UnicodeDecodeError as e:
+            raise ProfileError(f"--profile-file {path}: not UTF-8 text (byte {e.start})") from None
         except tomllib.TOMLDecodeError as e:
             raise ProfileError(f"--profile-file {path}: not TOML: {e}") from None
         profiles = sorted(k for k, v in table.items() if isinstance(v, dict))
