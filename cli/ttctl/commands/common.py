@@ -46,6 +46,9 @@ def link_choice(rate: float | None, profile: str | None, distance: float, sysid:
             prof = load_profile(profile, str(profile_file) if profile_file else None)
         except ProfileError as e:
             raise Fail(str(e)) from None
+        note = prof.extrapolated(distance)
+        if note:
+            err(f"warning: {note}")
         mine, other = ("up", "down") if sysid == TABLET[0] else ("down", "up")
         send_cap = prof.capacity_Bps(mine, distance)
         recv_cap = prof.capacity_Bps(other, distance)
