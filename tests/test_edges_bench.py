@@ -29,7 +29,7 @@ def test_bench_transfer_exits_1_on_a_missed_bound_and_judges_latency_by_bench_la
     missed = [c["check"] for c in rep["checks"] if not c["ok"]]
     assert missed, rep["checks"]  # one seed, virtual time: the 10 % row misses its floors (deterministic)
     assert code == 1
-    idle, during = rep["latency"]
+    idle, _ = rep["latency"]
     check = next(c for c in rep["checks"] if c["check"] == "command p95 during upload")
     bound_ms = 1000 * lat.bound_s(load_profile("m100"), 10.0)  # what `bench latency` allows on the model
     assert check["ceiling"] == round(idle["p95_ms"] + bound_ms, 1)

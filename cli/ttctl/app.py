@@ -222,8 +222,9 @@ def send_file_cmd(
     compid: Annotated[int, typer.Option("--compid", help="This end's MAVLink component id.")] = 190,
     target_sysid: Annotated[int, typer.Option("--target-sysid", help="The receiver's system id.")] = 1,
     target_compid: Annotated[int, typer.Option("--target-compid", help="The receiver's component id.")] = 240,
-    timeout: Annotated[float, typer.Option("--timeout", help="Give up after this many seconds without a word "
-                                                             "from the peer.")] = 60.0,
+    timeout: Annotated[float, typer.Option("--timeout", help="Give up after this many seconds without progress "
+                                                             "(no new bytes acknowledged: a receiver that only "
+                                                             "says busy does not count).")] = 60.0,
     key: KeyOpt = None,
     accept_unsigned: AcceptUnsignedOpt = False,
     dialect: DialectOpt = None,

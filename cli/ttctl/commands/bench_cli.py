@@ -189,7 +189,9 @@ def bench_serve(
 @bench_app.command("integrity")
 def bench_integrity(
     rounds: Annotated[int, typer.Option("--rounds", help="Rounds per topology.", min=1, max=100_000)] = 50,
-    seed: Annotated[int, typer.Option("--seed", help="Random seed (the same seed, the same plan).")] = 1,
+    seed: Annotated[int, typer.Option("--seed", help="Random seed: the same seed draws the same plan (senders, files, "
+                                                         "kills); the counts depend on process timing and "
+                                                         "differ run to run.")] = 1,
     topology: Annotated[str, typer.Option("--topology", help="direct, relay (lossy) or both.")] = "both",
     strangers: Annotated[bool, typer.Option("--strangers/--no-strangers",
                                             help="Garbage datagrams from other ports throughout.")] = True,
