@@ -180,9 +180,6 @@ def test_runtime_dependencies_are_pyprojects() -> None:
     assert {n.strip().lower() for n in m.group(1).split(",")} == names
 
 
-NOT_SHIPPED_YET = {"mission_demo.py"}  # its output is in the README, its code nowhere: to be written (issue 20)
-
-
 def test_example_files_the_readme_shows_or_runs_are_in_the_repository() -> None:
     """A ```python block that starts `# PATH` is the file PATH, byte for byte; every `python
     PATH.py` a console block runs exists (outputs of `ttctl gen -o out` aside)."""
@@ -194,7 +191,7 @@ def test_example_files_the_readme_shows_or_runs_are_in_the_repository() -> None:
         assert (ROOT / path).read_text() == f"# {path}\n{body}", f"{path} differs from the README's copy"
     for block in _console_blocks():
         for path in re.findall(r"^\$ python3? ([\w./-]+\.py)", block, re.M):
-            if not path.startswith(("out/", "OUT/")) and path not in NOT_SHIPPED_YET:
+            if not path.startswith(("out/", "OUT/")):
                 assert (ROOT / path).is_file(), f"the README runs {path}, which is not in the repository"
 
 
