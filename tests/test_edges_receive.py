@@ -47,3 +47,17 @@ def test_json_refusals_are_json(tmp_path: Path) -> None:
     r = json.loads(proc.stdout)
     assert r["event"] == "error" and "not a directory" in r["message"] and r["exit"] == 2
     assert sorted(os.listdir(tmp_path)) == ["here.bin"]
+
+
+def test_every_json_command_answers_a_refusal_in_json(tmp_path: Path) -> None:
+    """Commands without JSON of their own for refusals: the one line on stderr, and on stdout
+    `{"ok": false, "error": ..., "exit": ...}` (app-wide, for any --json)."""
+    for args, text in ((["link", "fit", "nope.json", "-o", "x.toml", "--json"], "nope.json: No such file"),
+                       (["bench", "transfer", "--profile", "nope", "--json"], "unknown link profile 'nope'"),
+                       (["bench", "latency", "--profile-file", "nope.toml", "--json"], "nope.toml")):
+        proc = run_ttctl(*args, cwd=tmp_path)
+        assert proc.returncode == 2, proc.stderr
+        r = json.loads(proc.stdout)
+        assert r["ok"] is False and text in r["error"] and r["exit"] == 2, r
+        assert proc.stderr.startswith("ttctl: error: ") and proc.stderr.count("\n") == 1
+    assert os.listdir(tmp_path) == []
