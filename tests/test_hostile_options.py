@@ -4,8 +4,8 @@
   is covered without being listed here) refuses NaN and +-infinity: one line, exit 2. In
   process, through the real entry (`ttctl.app._run`): these are refused while parsing.
 - Every option or argument naming a file ttctl reads gets: a missing file, a directory, a FIFO
-  (nobody writing), /dev/zero, a sparse file of several GiB, and (not as root) an unreadable
-  file: one line `ttctl: error: ...`, exit 2, within seconds, nothing left behind. Real
+  (nobody writing), /dev/zero, a sparse file of several GiB, a symlink loop and (not as root)
+  an unreadable file: one line `ttctl: error: ...`, exit 2, within seconds, nothing left behind. Real
   processes, several at a time.
 - Every number option of every command gets one of negative, zero, huge (a different one per
   option, rotating with the test's seed) and must never crash: an exit 2 is one line, and an
@@ -134,10 +134,13 @@ FILE_INPUTS: list[tuple[str, list[str], set[str]]] = [
     ("bench link --profile-file", ["bench", "link", "--profile-file", "F"], set()),
     ("bench transfer --profile-file", ["bench", "transfer", "--quick", "--profile-file", "F"], set()),
     ("bench latency --profile-file", ["bench", "latency", "--profile-file", "F"], set()),
+    ("emulate onboard --plugin", ["emulate", "onboard", "--no-gcs", "--listen", "udpin:127.0.0.1:0", "--plugin", "F"],
+     set()),
+    ("emulate tablet --plugin", ["emulate", "tablet", "--to", NOWHERE, "--plugin", "F"], set()),
     ("hmd dump --profile-file", ["hmd", "dump", "--to", NOWHERE, "--duration", "0.1", "--profile-file", "F"],
      set()),
 ]
-KINDS = ["missing", "directory", "fifo", "devzero", "huge", "unreadable"]
+KINDS = ["missing", "directory", "fifo", "devzero", "huge", "unreadable", "symlink-loop"]
 
 
 def _make(kind: str, folder: Path) -> str:
@@ -154,6 +157,8 @@ def _make(kind: str, folder: Path) -> str:
     elif kind == "huge":
         with open(path, "wb") as fh:
             fh.truncate(5 << 30)  # sparse: 5 GiB that take no disk
+    elif kind == "symlink-loop":  # unreadable even for root (ELOOP)
+        path.symlink_to(path.name)
     elif kind == "unreadable":
         path.write_text("secret\n")
         path.chmod(0)
