@@ -108,7 +108,7 @@ def test_refusals_carry_the_receivers_reason(tmp_path: Path, start: Start) -> No
     proc, r = send(str(a), "--to", to, "--name", longest)
     assert proc.returncode == 0 and r["ok"], proc.stderr
     proc, r = send(str(a), "--to", to, "--name", longest + "n")
-    assert proc.returncode == 2 and r == {}
+    assert proc.returncode == 2 and r["ok"] is False and r["code"] == "BAD_INPUT" and r["exit"] == 2  # JSON too
     assert one_line(proc.stderr) == (f"ttctl: error: the name '{longest}n' would be refused: the name is 224 bytes "
                                      "of UTF-8; at most 223 are allowed")
     recv.signal(signal.SIGINT)

@@ -6,6 +6,7 @@ tables fit 80 columns."""
 from __future__ import annotations
 
 import io
+import json
 import os
 import random
 import signal
@@ -312,14 +313,14 @@ def test_a_plot_that_fails_to_draw_leaves_nothing(tmp_path: Path) -> None:
 @pytest.mark.parametrize("args", [["bench", "link"], ["bench", "transfer", "--quick", "--seeds", "1"]])
 def test_bench_tables_fit_80_columns(args: list[str]) -> None:
     proc = run_ttctl(*args, env={"COLUMNS": "80"}, timeout=300)
-    assert proc.returncode == 0, proc.stderr
+    assert proc.returncode in (0, 1) and "error" not in proc.stderr, proc.stderr  # 1: a bound missed (--quick)
     assert "…" not in proc.stdout and "..." not in proc.stdout, proc.stdout
     assert max(len(line) for line in proc.stdout.splitlines()) <= 80
 
 
 def test_bench_validate_names_its_synthetic_dialect() -> None:
     proc = run_ttctl("bench", "validate", "--synthetic", "200", "--runs", "1", "--json", timeout=300)
-    assert proc.returncode == 0, proc.stderr
+    assert proc.returncode == (0 if json.loads(proc.stdout)["ok"] else 1), proc.stderr  # 1: the floor missed
     assert "synthetic, 200 messages, standalone (no common.xml)" in proc.stdout
 
 

@@ -211,6 +211,9 @@ MUTATIONS = [
     ("negative distance", lambda r: r["conditions"].update(distance_m=-5), "distance_m"),
     ("bad latency", lambda r: r.update(latency={"echoes": 3}), "latency has no rtt_p50_ms"),
     ("zero rate", lambda r: r["downlink"]["rows"][0].update(rate_hz=0), "rate_hz must be positive"),
+    ("negative latency", lambda r: r.update(latency={"echoes": 3, "rtt_p50_ms": -5}), "a round trip takes a "
+     "positive time"),
+    ("negative capacity", lambda r: r["uplink"]["rows"][0].update(capacity_Bps=-1), "impossible values"),
 ]
 
 

@@ -102,7 +102,7 @@ def _options(cmd: object) -> dict[str, str]:
 
 # tours whose heading is the command's full synopsis: every option it has, in brackets
 FULL_SYNOPSIS = ["ttctl validate", "ttctl gen", "ttctl bench validate", "ttctl bench gen", "ttctl bench transfer",
-                 "ttctl bench link"]
+                 "ttctl bench link", "ttctl send-file", "ttctl recv-file"]
 
 
 def test_synopses_are_the_commands_options() -> None:
@@ -159,3 +159,126 @@ def test_calibration_table_is_what_bench_link_computes() -> None:
     for e in expected:
         assert e in table, (e, table)
     assert all(f["ok"] for f in rep["facts"])
+
+
+# -- drift between the README, the help and the code (issue 20) ---------------------------------
+
+README = ROOT / "README.md"
+
+
+def _console_blocks() -> list[str]:
+    return re.findall(r"```console\n(.+?)```", README.read_text(), re.S)
+
+
+def test_runtime_dependencies_are_pyprojects() -> None:
+    import tomllib
+
+    deps = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["dependencies"]
+    names = {re.split(r"[<>=!~ ;\[]", d, maxsplit=1)[0].lower() for d in deps}
+    m = re.search(r"Runtime dependencies: ([^.]+)\.", README.read_text())
+    assert m, "the README names its runtime dependencies"
+    assert {n.strip().lower() for n in m.group(1).split(",")} == names
+
+
+def test_example_files_the_readme_shows_or_runs_are_in_the_repository() -> None:
+    """A ```python block that starts `# PATH` is the file PATH, byte for byte; every `python
+    PATH.py` a console block runs exists (outputs of `ttctl gen -o out` aside)."""
+    text = README.read_text()
+    shown = re.findall(r"```python\n# ([\w./-]+\.py)\n(.*?)```", text, re.S)
+    assert shown, "the README shows example files by path"
+    for path, body in shown:
+        assert (ROOT / path).is_file(), f"the README shows {path}, which is not in the repository"
+        assert (ROOT / path).read_text() == f"# {path}\n{body}", f"{path} differs from the README's copy"
+    for block in _console_blocks():
+        for path in re.findall(r"^\$ python3? ([\w./-]+\.py)", block, re.M):
+            if not path.startswith(("out/", "OUT/")):
+                assert (ROOT / path).is_file(), f"the README runs {path}, which is not in the repository"
+
+
+def test_programs_the_readme_runs_are_built_under_that_name() -> None:
+    text = README.read_text()
+    for prog in set(re.findall(r"\| \./([\w-]+)", text)):
+        assert re.search(rf"(?:g\+\+|javac)[^`\n]*-o {re.escape(prog)}\b", text), \
+            f"the README runs ./{prog} but no compile command it shows writes it (-o {prog})"
+
+
+def _endpoint_parses() -> list[tuple[str, str, str]]:
+    """(file, option variable, what a bare udp: means) of every endpoint the commands parse."""
+    out = []
+    for path in (ROOT / "cli" / "ttctl").rglob("*.py"):
+        for var, udp in re.findall(r"parse_(?:endpoint|spec)\((?:\w+\.)?(\w+)(?: or \"\")?,\s*(?:udp=)?\"(udp\w+)\"",
+                                   path.read_text()):
+            out.append((path.name, var, udp))
+    return out
+
+
+def test_udp_means_what_the_readme_says_it_means() -> None:
+    """The README's rule (`--listen` listens, `--to`/`--from`/`--gcs` send) is what each command
+    does with a bare `udp:`, and what its --help says."""
+    text = README.read_text()
+    assert "`--listen` listens (`udpin`" in text and "`--to`, `--from` and `--gcs` send\n(`udpout`)" in text
+    assert "mavutil and MAVProxy read `udp:HOST:PORT`\nas *listen*" in text
+    parses = _endpoint_parses()
+    assert len(parses) >= 8, parses
+    for file, var, udp in parses:
+        assert udp == ("udpin" if var == "listen" else "udpout"), (file, var, udp)
+    for path, cmd in _all_commands():
+        for p in getattr(cmd, "params", []):
+            said = re.search(r"udp: means (udp\w+)", getattr(p, "help", None) or "")
+            if said:
+                assert said.group(1) == ("udpin" if "--listen" in p.opts else "udpout"), (path, p.opts)
+
+
+def _all_commands() -> list[tuple[str, object]]:
+    from typer.main import get_command
+
+    from ttctl.app import app
+
+    out = []
+    for name, cmd in get_command(app).commands.items():  # type: ignore[attr-defined]
+        subs = getattr(cmd, "commands", None)
+        out += [(f"ttctl {name} {s}", c) for s, c in subs.items()] if subs else [(f"ttctl {name}", cmd)]
+    return out
+
+
+def test_example_outputs_show_the_defaults_the_commands_have() -> None:
+    """An example that leaves out --to prints the default endpoint, not another port."""
+    default = next(p.default for path, c in _all_commands() if path == "ttctl emulate tablet"
+                   for p in c.params if "--to" in p.opts)  # type: ignore[attr-defined]
+    seen = 0
+    for block in _console_blocks():
+        for chunk in re.split(r"^\$ ", block, flags=re.M)[1:]:
+            cmd, _, out = chunk.partition("\n")
+            if cmd.startswith("ttctl emulate tablet") and "--to" not in cmd:
+                for port in re.findall(r"connected to \S+ at (udpout:\S+)", out):
+                    assert port == default, f"$ {cmd} prints {port}; its default is {default}"
+                    seen += 1
+    assert seen, "the README shows `ttctl emulate tablet` with its default endpoint"
+
+
+def _help(full: str) -> str:
+    cmd = dict(_all_commands())[full]
+    return " ".join(" ".join(filter(None, [getattr(cmd, "help", "") or ""] + [getattr(p, "help", "") or ""
+                                                                             for p in cmd.params])).split())
+
+
+def _section(full: str) -> str:
+    text = README.read_text()
+    return " ".join(text.split(f"### `{full}", 1)[1].split("\n### ", 1)[0].split())
+
+
+# claims the README and --help both make, in words each must carry (and words neither may)
+CLAIMS = [
+    ("ttctl link relay", "where downlink packets go", ["valid", "frame", "lately"], ["address last heard"]),
+    ("ttctl send-file", "what --timeout counts", ["without progress"], ["without a word"]),
+    ("ttctl bench integrity", "what --seed reproduces", ["plan"], ["the same seed, the same plan)"]),
+]
+
+
+@pytest.mark.parametrize(("full", "what", "must", "never"), CLAIMS, ids=[c[1] for c in CLAIMS])
+def test_readme_and_help_say_the_same(full: str, what: str, must: list[str], never: list[str]) -> None:
+    for where, text in (("--help", _help(full)), ("README", _section(full))):
+        for w in must:
+            assert w in text, f"{full} {where} does not say {w!r} ({what})"
+        for w in never:
+            assert w not in text, f"{full} {where} still says {w!r} ({what})"

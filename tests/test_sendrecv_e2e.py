@@ -124,7 +124,7 @@ def test_refusals(tmp_path: Path, start: Start) -> None:
 
     # a name no receiver would take: refused here, before anything is sent, in the receiver's words
     proc, r = send(str(a), "--to", to, "--name", "../evil.bin")
-    assert proc.returncode == 2 and r == {}
+    assert proc.returncode == 2 and r["ok"] is False and r["code"] == "BAD_INPUT" and r["exit"] == 2  # JSON too
     assert one_line(proc.stderr) == ("ttctl: error: the name '../evil.bin' would be refused: the name has an empty, "
                                      "'.' or '..' component")
 

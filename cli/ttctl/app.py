@@ -10,7 +10,7 @@ import contextlib
 import os
 import sys
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 
@@ -222,8 +222,9 @@ def send_file_cmd(
     compid: Annotated[int, typer.Option("--compid", help="This end's MAVLink component id.")] = 190,
     target_sysid: Annotated[int, typer.Option("--target-sysid", help="The receiver's system id.")] = 1,
     target_compid: Annotated[int, typer.Option("--target-compid", help="The receiver's component id.")] = 240,
-    timeout: Annotated[float, typer.Option("--timeout", help="Give up after this many seconds without a word "
-                                                             "from the peer.")] = 60.0,
+    timeout: Annotated[float, typer.Option("--timeout", help="Give up after this many seconds without progress "
+                                                             "(no new bytes acknowledged: a receiver that only "
+                                                             "says busy does not count).")] = 60.0,
     key: KeyOpt = None,
     accept_unsigned: AcceptUnsignedOpt = False,
     dialect: DialectOpt = None,
@@ -267,8 +268,36 @@ def _interrupted(signum: int, frame: object) -> None:
         os._exit(130)
 
 
+class _WatchedStdout:
+    """stdout, remembering whether anything was written to it (see `_run`)."""
+
+    def __init__(self, inner: Any) -> None:
+        self._inner = inner
+        self.written = False
+
+    def write(self, text: str) -> int:
+        self.written = self.written or bool(text)
+        return int(self._inner.write(text))
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._inner, name)
+
+
 def _run() -> int:
-    """Run the command line; returns the exit status, having printed any failure as one line."""
+    """Run the command line; returns the exit status, having printed any failure as one line.
+    With --json, a failure before the command printed anything is also a JSON object on stdout
+    (`{"ok": false, "error": ..., "exit": ...}`), so a script reading stdout always gets JSON."""
+    if "--json" not in sys.argv[1:] or isinstance(sys.stdout, _WatchedStdout):
+        return _run_command()
+    real = sys.stdout
+    sys.stdout = _WatchedStdout(real)  # type: ignore[assignment]
+    try:
+        return _run_command()
+    finally:
+        sys.stdout = real
+
+
+def _run_command() -> int:
     from .commands.lazy import lazy_command
 
     try:
@@ -289,6 +318,10 @@ def _run() -> int:
         print("ttctl: interrupted", file=sys.stderr)
         return 130
     except Fail as e:
+        if isinstance(sys.stdout, _WatchedStdout) and not sys.stdout.written:  # --json: the refusal as JSON too
+            import json
+
+            print(json.dumps({"ok": False, "error": str(e), "exit": e.code}), flush=True)
         print(f"ttctl: error: {e}", file=sys.stderr)
         return e.code
     except KeyboardInterrupt:

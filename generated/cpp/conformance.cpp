@@ -178,7 +178,8 @@ private:
     bool fail(const char* what)
     {
         if (err_.empty()) {
-            err_ = std::string("bad JSON: ") + what + " at offset " + std::to_string(i_);
+            (void)what;  // the three programs say only where (their parsers' words differ)
+            err_ = "bad JSON at offset " + std::to_string(i_);
         }
         return false;
     }
@@ -677,8 +678,7 @@ bool read_fields(const Json& req, void* msg, const char* msg_name, const FieldSp
             }
         }
         if (spec == nullptr) {
-            err = std::string(msg_name) + " has no field ";
-            put_string(err, key);
+            err = std::string(msg_name) + " has no field '" + std::string(key) + "'";
             return false;
         }
         std::string why;
@@ -5098,7 +5098,7 @@ std::string decode_line(const std::string& text)
         --b;
     }
     if ((b - a) % 2 != 0) {
-        return error_json("not hex: odd number of digits");
+        return error_json("not hex");
     }
     std::vector<std::uint8_t> bytes;
     bytes.reserve((b - a) / 2);
@@ -5158,19 +5158,26 @@ std::string encode_line(const std::string& text)
         return error_json("expected a JSON object");
     }
     const mav::MessageInfo* info = nullptr;
+    std::string asked;  // the message asked for, as the Python and Java programs quote it
     if (const Json* name = req.get("name")) {
         if (name->kind == Json::String && name->latin1) {
             info = mav::message_info(std::string_view(name->text));
         }
+        asked = name->kind == Json::String ? "'" + name->text + "'" : "?";
     } else if (const Json* id = req.get("msgid")) {
         std::uint32_t msgid = 0;
         std::string err;
         if (read_integer(*id, msgid, err)) {
             info = mav::message_info(msgid);
+            asked = std::to_string(msgid);
+        } else {
+            asked = "?";
         }
+    } else {
+        return error_json("the object names no message (\"name\" or \"msgid\")");
     }
     if (info == nullptr) {
-        return error_json("unknown message");
+        return error_json("unknown message " + asked);
     }
     Header h;
     std::string err;

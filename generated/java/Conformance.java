@@ -81,6 +81,8 @@ public final class Conformance {
         if (line.startsWith("E ")) {
             try {
                 return encodeLine(line.substring(2));
+            } catch (Refusal e) {
+                return error(e.getMessage());
             } catch (IllegalArgumentException | ClassCastException | IndexOutOfBoundsException e) {
                 return error(e.getClass().getSimpleName() + ": " + e.getMessage());
             }
@@ -88,8 +90,17 @@ public final class Conformance {
         return error("expected 'D <hex>' or 'E <json>'");
     }
 
+    /** A request refused in the words the Python and C++ programs use too (no exception name). */
+    static final class Refusal extends IllegalArgumentException {
+        private static final long serialVersionUID = 1L;
+
+        Refusal(String message) {
+            super(message);
+        }
+    }
+
     static String error(String message) {
-        StringBuilder sb = new StringBuilder("{\"error\": ");
+        StringBuilder sb = new StringBuilder("{\"error\":");
         Json.string(sb, message == null ? "null" : message);
         return sb.append('}').toString();
     }
@@ -100,6 +111,9 @@ public final class Conformance {
         byte[] frame = unhex(hex.trim());
         if (frame == null) {
             return error("not hex");
+        }
+        if (frame.length < 12 || (frame[0] & 0xFF) != 0xFD) {  // the words of the Python and C++ programs
+            return error("not a MAVLink 2 frame (magic 0xFD, at least 12 bytes)");
         }
         MavlinkMessage m;
         try {
@@ -5210,7 +5224,7 @@ public final class Conformance {
             Object n = obj.get("name");
             info = n instanceof String ? ttctl.ttapi.Ttapi.INSTANCE.info((String) n) : null;
             if (info == null) {
-                return error("unknown message " + Json.show(n));
+                return error("unknown message " + (n instanceof String ? "'" + n + "'" : "?"));
             }
         } else if (obj.containsKey("msgid")) {
             Object id = obj.get("msgid");
@@ -5717,7 +5731,7 @@ public final class Conformance {
                     m.mavlink_version = (int) Json.integer(v, 0, 255, "mavlink_version");
                     break;
                 default:
-                    throw new IllegalArgumentException("HEARTBEAT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("HEARTBEAT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -5777,7 +5791,7 @@ public final class Conformance {
                     m.onboard_control_sensors_health_extended = Json.integer(v, 0, 4294967295L, "onboard_control_sensors_health_extended");
                     break;
                 default:
-                    throw new IllegalArgumentException("SYS_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SYS_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -5795,7 +5809,7 @@ public final class Conformance {
                     m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
                     break;
                 default:
-                    throw new IllegalArgumentException("SYSTEM_TIME has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SYSTEM_TIME has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -5819,7 +5833,7 @@ public final class Conformance {
                     m.target_component = (int) Json.integer(v, 0, 255, "target_component");
                     break;
                 default:
-                    throw new IllegalArgumentException("PING has no field " + Json.show(e.getKey()));
+                    throw new Refusal("PING has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -5843,7 +5857,7 @@ public final class Conformance {
                     m.passkey = Json.text(v, 25, "passkey");
                     break;
                 default:
-                    throw new IllegalArgumentException("CHANGE_OPERATOR_CONTROL has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CHANGE_OPERATOR_CONTROL has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -5864,7 +5878,7 @@ public final class Conformance {
                     m.ack = (int) Json.integer(v, 0, 255, "ack");
                     break;
                 default:
-                    throw new IllegalArgumentException("CHANGE_OPERATOR_CONTROL_ACK has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CHANGE_OPERATOR_CONTROL_ACK has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -5879,7 +5893,7 @@ public final class Conformance {
                     m.key = Json.text(v, 32, "key");
                     break;
                 default:
-                    throw new IllegalArgumentException("AUTH_KEY has no field " + Json.show(e.getKey()));
+                    throw new Refusal("AUTH_KEY has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -5900,7 +5914,7 @@ public final class Conformance {
                     m.custom_mode = Json.integer(v, 0, 4294967295L, "custom_mode");
                     break;
                 default:
-                    throw new IllegalArgumentException("SET_MODE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SET_MODE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -5924,7 +5938,7 @@ public final class Conformance {
                     m.param_index = (short) Json.integer(v, -32768, 32767, "param_index");
                     break;
                 default:
-                    throw new IllegalArgumentException("PARAM_REQUEST_READ has no field " + Json.show(e.getKey()));
+                    throw new Refusal("PARAM_REQUEST_READ has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -5942,7 +5956,7 @@ public final class Conformance {
                     m.target_component = (int) Json.integer(v, 0, 255, "target_component");
                     break;
                 default:
-                    throw new IllegalArgumentException("PARAM_REQUEST_LIST has no field " + Json.show(e.getKey()));
+                    throw new Refusal("PARAM_REQUEST_LIST has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -5969,7 +5983,7 @@ public final class Conformance {
                     m.param_index = (int) Json.integer(v, 0, 65535, "param_index");
                     break;
                 default:
-                    throw new IllegalArgumentException("PARAM_VALUE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("PARAM_VALUE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -5996,7 +6010,7 @@ public final class Conformance {
                     m.param_type = (int) Json.integer(v, 0, 255, "param_type");
                     break;
                 default:
-                    throw new IllegalArgumentException("PARAM_SET has no field " + Json.show(e.getKey()));
+                    throw new Refusal("PARAM_SET has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6056,7 +6070,7 @@ public final class Conformance {
                     m.yaw = (int) Json.integer(v, 0, 65535, "yaw");
                     break;
                 default:
-                    throw new IllegalArgumentException("GPS_RAW_INT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GPS_RAW_INT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6086,7 +6100,7 @@ public final class Conformance {
                     m.satellite_snr = Json.u8s(v, 20, "satellite_snr");
                     break;
                 default:
-                    throw new IllegalArgumentException("GPS_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GPS_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6131,7 +6145,7 @@ public final class Conformance {
                     m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
                     break;
                 default:
-                    throw new IllegalArgumentException("SCALED_IMU has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SCALED_IMU has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6179,7 +6193,7 @@ public final class Conformance {
                     m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
                     break;
                 default:
-                    throw new IllegalArgumentException("RAW_IMU has no field " + Json.show(e.getKey()));
+                    throw new Refusal("RAW_IMU has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6206,7 +6220,7 @@ public final class Conformance {
                     m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
                     break;
                 default:
-                    throw new IllegalArgumentException("RAW_PRESSURE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("RAW_PRESSURE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6233,7 +6247,7 @@ public final class Conformance {
                     m.temperature_press_diff = (short) Json.integer(v, -32768, 32767, "temperature_press_diff");
                     break;
                 default:
-                    throw new IllegalArgumentException("SCALED_PRESSURE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SCALED_PRESSURE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6266,7 +6280,7 @@ public final class Conformance {
                     m.yawspeed = Json.f32(v, "yawspeed");
                     break;
                 default:
-                    throw new IllegalArgumentException("ATTITUDE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ATTITUDE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6305,7 +6319,7 @@ public final class Conformance {
                     m.repr_offset_q = Json.f32s(v, 4, "repr_offset_q");
                     break;
                 default:
-                    throw new IllegalArgumentException("ATTITUDE_QUATERNION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ATTITUDE_QUATERNION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6338,7 +6352,7 @@ public final class Conformance {
                     m.vz = Json.f32(v, "vz");
                     break;
                 default:
-                    throw new IllegalArgumentException("LOCAL_POSITION_NED has no field " + Json.show(e.getKey()));
+                    throw new Refusal("LOCAL_POSITION_NED has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6377,7 +6391,7 @@ public final class Conformance {
                     m.hdg = (int) Json.integer(v, 0, 65535, "hdg");
                     break;
                 default:
-                    throw new IllegalArgumentException("GLOBAL_POSITION_INT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GLOBAL_POSITION_INT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6422,7 +6436,7 @@ public final class Conformance {
                     m.rssi = (int) Json.integer(v, 0, 255, "rssi");
                     break;
                 default:
-                    throw new IllegalArgumentException("RC_CHANNELS_SCALED has no field " + Json.show(e.getKey()));
+                    throw new Refusal("RC_CHANNELS_SCALED has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6467,7 +6481,7 @@ public final class Conformance {
                     m.rssi = (int) Json.integer(v, 0, 255, "rssi");
                     break;
                 default:
-                    throw new IllegalArgumentException("RC_CHANNELS_RAW has no field " + Json.show(e.getKey()));
+                    throw new Refusal("RC_CHANNELS_RAW has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6533,7 +6547,7 @@ public final class Conformance {
                     m.servo16_raw = (int) Json.integer(v, 0, 65535, "servo16_raw");
                     break;
                 default:
-                    throw new IllegalArgumentException("SERVO_OUTPUT_RAW has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SERVO_OUTPUT_RAW has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6560,7 +6574,7 @@ public final class Conformance {
                     m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
                     break;
                 default:
-                    throw new IllegalArgumentException("MISSION_REQUEST_PARTIAL_LIST has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MISSION_REQUEST_PARTIAL_LIST has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6587,7 +6601,7 @@ public final class Conformance {
                     m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
                     break;
                 default:
-                    throw new IllegalArgumentException("MISSION_WRITE_PARTIAL_LIST has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MISSION_WRITE_PARTIAL_LIST has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6644,7 +6658,7 @@ public final class Conformance {
                     m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
                     break;
                 default:
-                    throw new IllegalArgumentException("MISSION_ITEM has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MISSION_ITEM has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6668,7 +6682,7 @@ public final class Conformance {
                     m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
                     break;
                 default:
-                    throw new IllegalArgumentException("MISSION_REQUEST has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MISSION_REQUEST has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6689,7 +6703,7 @@ public final class Conformance {
                     m.seq = (int) Json.integer(v, 0, 65535, "seq");
                     break;
                 default:
-                    throw new IllegalArgumentException("MISSION_SET_CURRENT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MISSION_SET_CURRENT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6713,7 +6727,7 @@ public final class Conformance {
                     m.mission_mode = (int) Json.integer(v, 0, 255, "mission_mode");
                     break;
                 default:
-                    throw new IllegalArgumentException("MISSION_CURRENT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MISSION_CURRENT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6734,7 +6748,7 @@ public final class Conformance {
                     m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
                     break;
                 default:
-                    throw new IllegalArgumentException("MISSION_REQUEST_LIST has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MISSION_REQUEST_LIST has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6758,7 +6772,7 @@ public final class Conformance {
                     m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
                     break;
                 default:
-                    throw new IllegalArgumentException("MISSION_COUNT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MISSION_COUNT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6779,7 +6793,7 @@ public final class Conformance {
                     m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
                     break;
                 default:
-                    throw new IllegalArgumentException("MISSION_CLEAR_ALL has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MISSION_CLEAR_ALL has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6794,7 +6808,7 @@ public final class Conformance {
                     m.seq = (int) Json.integer(v, 0, 65535, "seq");
                     break;
                 default:
-                    throw new IllegalArgumentException("MISSION_ITEM_REACHED has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MISSION_ITEM_REACHED has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6818,7 +6832,7 @@ public final class Conformance {
                     m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
                     break;
                 default:
-                    throw new IllegalArgumentException("MISSION_ACK has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MISSION_ACK has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6845,7 +6859,7 @@ public final class Conformance {
                     m.time_usec = Json.uint64(v, "time_usec");
                     break;
                 default:
-                    throw new IllegalArgumentException("SET_GPS_GLOBAL_ORIGIN has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SET_GPS_GLOBAL_ORIGIN has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6869,7 +6883,7 @@ public final class Conformance {
                     m.time_usec = Json.uint64(v, "time_usec");
                     break;
                 default:
-                    throw new IllegalArgumentException("GPS_GLOBAL_ORIGIN has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GPS_GLOBAL_ORIGIN has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6908,7 +6922,7 @@ public final class Conformance {
                     m.param_value_max = Json.f32(v, "param_value_max");
                     break;
                 default:
-                    throw new IllegalArgumentException("PARAM_MAP_RC has no field " + Json.show(e.getKey()));
+                    throw new Refusal("PARAM_MAP_RC has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6932,7 +6946,7 @@ public final class Conformance {
                     m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
                     break;
                 default:
-                    throw new IllegalArgumentException("MISSION_REQUEST_INT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MISSION_REQUEST_INT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -6971,7 +6985,7 @@ public final class Conformance {
                     m.p2z = Json.f32(v, "p2z");
                     break;
                 default:
-                    throw new IllegalArgumentException("SAFETY_SET_ALLOWED_AREA has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SAFETY_SET_ALLOWED_AREA has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7004,7 +7018,7 @@ public final class Conformance {
                     m.p2z = Json.f32(v, "p2z");
                     break;
                 default:
-                    throw new IllegalArgumentException("SAFETY_ALLOWED_AREA has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SAFETY_ALLOWED_AREA has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7034,7 +7048,7 @@ public final class Conformance {
                     m.covariance = Json.f32s(v, 9, "covariance");
                     break;
                 default:
-                    throw new IllegalArgumentException("ATTITUDE_QUATERNION_COV has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ATTITUDE_QUATERNION_COV has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7070,7 +7084,7 @@ public final class Conformance {
                     m.xtrack_error = Json.f32(v, "xtrack_error");
                     break;
                 default:
-                    throw new IllegalArgumentException("NAV_CONTROLLER_OUTPUT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("NAV_CONTROLLER_OUTPUT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7112,7 +7126,7 @@ public final class Conformance {
                     m.covariance = Json.f32s(v, 36, "covariance");
                     break;
                 default:
-                    throw new IllegalArgumentException("GLOBAL_POSITION_INT_COV has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GLOBAL_POSITION_INT_COV has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7160,7 +7174,7 @@ public final class Conformance {
                     m.covariance = Json.f32s(v, 45, "covariance");
                     break;
                 default:
-                    throw new IllegalArgumentException("LOCAL_POSITION_NED_COV has no field " + Json.show(e.getKey()));
+                    throw new Refusal("LOCAL_POSITION_NED_COV has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7235,7 +7249,7 @@ public final class Conformance {
                     m.rssi = (int) Json.integer(v, 0, 255, "rssi");
                     break;
                 default:
-                    throw new IllegalArgumentException("RC_CHANNELS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("RC_CHANNELS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7262,7 +7276,7 @@ public final class Conformance {
                     m.start_stop = (int) Json.integer(v, 0, 255, "start_stop");
                     break;
                 default:
-                    throw new IllegalArgumentException("REQUEST_DATA_STREAM has no field " + Json.show(e.getKey()));
+                    throw new Refusal("REQUEST_DATA_STREAM has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7283,7 +7297,7 @@ public final class Conformance {
                     m.on_off = (int) Json.integer(v, 0, 255, "on_off");
                     break;
                 default:
-                    throw new IllegalArgumentException("DATA_STREAM has no field " + Json.show(e.getKey()));
+                    throw new Refusal("DATA_STREAM has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7343,7 +7357,7 @@ public final class Conformance {
                     m.aux6 = (short) Json.integer(v, -32768, 32767, "aux6");
                     break;
                 default:
-                    throw new IllegalArgumentException("MANUAL_CONTROL has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MANUAL_CONTROL has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7415,7 +7429,7 @@ public final class Conformance {
                     m.chan18_raw = (int) Json.integer(v, 0, 65535, "chan18_raw");
                     break;
                 default:
-                    throw new IllegalArgumentException("RC_CHANNELS_OVERRIDE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("RC_CHANNELS_OVERRIDE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7472,7 +7486,7 @@ public final class Conformance {
                     m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
                     break;
                 default:
-                    throw new IllegalArgumentException("MISSION_ITEM_INT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MISSION_ITEM_INT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7502,7 +7516,7 @@ public final class Conformance {
                     m.climb = Json.f32(v, "climb");
                     break;
                 default:
-                    throw new IllegalArgumentException("VFR_HUD has no field " + Json.show(e.getKey()));
+                    throw new Refusal("VFR_HUD has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7553,7 +7567,7 @@ public final class Conformance {
                     m.z = Json.f32(v, "z");
                     break;
                 default:
-                    throw new IllegalArgumentException("COMMAND_INT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("COMMAND_INT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7598,7 +7612,7 @@ public final class Conformance {
                     m.param7 = Json.f32(v, "param7");
                     break;
                 default:
-                    throw new IllegalArgumentException("COMMAND_LONG has no field " + Json.show(e.getKey()));
+                    throw new Refusal("COMMAND_LONG has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7628,7 +7642,7 @@ public final class Conformance {
                     m.target_component = (int) Json.integer(v, 0, 255, "target_component");
                     break;
                 default:
-                    throw new IllegalArgumentException("COMMAND_ACK has no field " + Json.show(e.getKey()));
+                    throw new Refusal("COMMAND_ACK has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7661,7 +7675,7 @@ public final class Conformance {
                     m.manual_override_switch = (int) Json.integer(v, 0, 255, "manual_override_switch");
                     break;
                 default:
-                    throw new IllegalArgumentException("MANUAL_SETPOINT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MANUAL_SETPOINT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7700,7 +7714,7 @@ public final class Conformance {
                     m.thrust = Json.f32(v, "thrust");
                     break;
                 default:
-                    throw new IllegalArgumentException("SET_ATTITUDE_TARGET has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SET_ATTITUDE_TARGET has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7733,7 +7747,7 @@ public final class Conformance {
                     m.thrust = Json.f32(v, "thrust");
                     break;
                 default:
-                    throw new IllegalArgumentException("ATTITUDE_TARGET has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ATTITUDE_TARGET has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7793,7 +7807,7 @@ public final class Conformance {
                     m.yaw_rate = Json.f32(v, "yaw_rate");
                     break;
                 default:
-                    throw new IllegalArgumentException("SET_POSITION_TARGET_LOCAL_NED has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SET_POSITION_TARGET_LOCAL_NED has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7847,7 +7861,7 @@ public final class Conformance {
                     m.yaw_rate = Json.f32(v, "yaw_rate");
                     break;
                 default:
-                    throw new IllegalArgumentException("POSITION_TARGET_LOCAL_NED has no field " + Json.show(e.getKey()));
+                    throw new Refusal("POSITION_TARGET_LOCAL_NED has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7907,7 +7921,7 @@ public final class Conformance {
                     m.yaw_rate = Json.f32(v, "yaw_rate");
                     break;
                 default:
-                    throw new IllegalArgumentException("SET_POSITION_TARGET_GLOBAL_INT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SET_POSITION_TARGET_GLOBAL_INT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7961,7 +7975,7 @@ public final class Conformance {
                     m.yaw_rate = Json.f32(v, "yaw_rate");
                     break;
                 default:
-                    throw new IllegalArgumentException("POSITION_TARGET_GLOBAL_INT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("POSITION_TARGET_GLOBAL_INT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -7994,7 +8008,7 @@ public final class Conformance {
                     m.yaw = Json.f32(v, "yaw");
                     break;
                 default:
-                    throw new IllegalArgumentException("LOCAL_POSITION_NED_SYSTEM_GLOBAL_OFFSET has no field " + Json.show(e.getKey()));
+                    throw new Refusal("LOCAL_POSITION_NED_SYSTEM_GLOBAL_OFFSET has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8054,7 +8068,7 @@ public final class Conformance {
                     m.zacc = (short) Json.integer(v, -32768, 32767, "zacc");
                     break;
                 default:
-                    throw new IllegalArgumentException("HIL_STATE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("HIL_STATE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8099,7 +8113,7 @@ public final class Conformance {
                     m.nav_mode = (int) Json.integer(v, 0, 255, "nav_mode");
                     break;
                 default:
-                    throw new IllegalArgumentException("HIL_CONTROLS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("HIL_CONTROLS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8153,7 +8167,7 @@ public final class Conformance {
                     m.rssi = (int) Json.integer(v, 0, 255, "rssi");
                     break;
                 default:
-                    throw new IllegalArgumentException("HIL_RC_INPUTS_RAW has no field " + Json.show(e.getKey()));
+                    throw new Refusal("HIL_RC_INPUTS_RAW has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8177,7 +8191,7 @@ public final class Conformance {
                     m.flags = Json.uint64(v, "flags");
                     break;
                 default:
-                    throw new IllegalArgumentException("HIL_ACTUATOR_CONTROLS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("HIL_ACTUATOR_CONTROLS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8219,7 +8233,7 @@ public final class Conformance {
                     m.flow_rate_y = Json.f32(v, "flow_rate_y");
                     break;
                 default:
-                    throw new IllegalArgumentException("OPTICAL_FLOW has no field " + Json.show(e.getKey()));
+                    throw new Refusal("OPTICAL_FLOW has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8258,7 +8272,7 @@ public final class Conformance {
                     m.reset_counter = (int) Json.integer(v, 0, 255, "reset_counter");
                     break;
                 default:
-                    throw new IllegalArgumentException("GLOBAL_VISION_POSITION_ESTIMATE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GLOBAL_VISION_POSITION_ESTIMATE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8297,7 +8311,7 @@ public final class Conformance {
                     m.reset_counter = (int) Json.integer(v, 0, 255, "reset_counter");
                     break;
                 default:
-                    throw new IllegalArgumentException("VISION_POSITION_ESTIMATE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("VISION_POSITION_ESTIMATE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8327,7 +8341,7 @@ public final class Conformance {
                     m.reset_counter = (int) Json.integer(v, 0, 255, "reset_counter");
                     break;
                 default:
-                    throw new IllegalArgumentException("VISION_SPEED_ESTIMATE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("VISION_SPEED_ESTIMATE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8363,7 +8377,7 @@ public final class Conformance {
                     m.covariance = Json.f32s(v, 21, "covariance");
                     break;
                 default:
-                    throw new IllegalArgumentException("VICON_POSITION_ESTIMATE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("VICON_POSITION_ESTIMATE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8423,7 +8437,7 @@ public final class Conformance {
                     m.id = (int) Json.integer(v, 0, 255, "id");
                     break;
                 default:
-                    throw new IllegalArgumentException("HIGHRES_IMU has no field " + Json.show(e.getKey()));
+                    throw new Refusal("HIGHRES_IMU has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8471,7 +8485,7 @@ public final class Conformance {
                     m.distance = Json.f32(v, "distance");
                     break;
                 default:
-                    throw new IllegalArgumentException("OPTICAL_FLOW_RAD has no field " + Json.show(e.getKey()));
+                    throw new Refusal("OPTICAL_FLOW_RAD has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8531,7 +8545,7 @@ public final class Conformance {
                     m.id = (int) Json.integer(v, 0, 255, "id");
                     break;
                 default:
-                    throw new IllegalArgumentException("HIL_SENSOR has no field " + Json.show(e.getKey()));
+                    throw new Refusal("HIL_SENSOR has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8612,7 +8626,7 @@ public final class Conformance {
                     m.lon_int = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon_int");
                     break;
                 default:
-                    throw new IllegalArgumentException("SIM_STATE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SIM_STATE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8645,7 +8659,7 @@ public final class Conformance {
                     m.fixed = (int) Json.integer(v, 0, 65535, "fixed");
                     break;
                 default:
-                    throw new IllegalArgumentException("RADIO_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("RADIO_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8669,7 +8683,7 @@ public final class Conformance {
                     m.payload = Json.u8s(v, 251, "payload");
                     break;
                 default:
-                    throw new IllegalArgumentException("FILE_TRANSFER_PROTOCOL has no field " + Json.show(e.getKey()));
+                    throw new Refusal("FILE_TRANSFER_PROTOCOL has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8687,7 +8701,7 @@ public final class Conformance {
                     m.ts1 = Json.integer(v, Long.MIN_VALUE, Long.MAX_VALUE, "ts1");
                     break;
                 default:
-                    throw new IllegalArgumentException("TIMESYNC has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TIMESYNC has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8705,7 +8719,7 @@ public final class Conformance {
                     m.seq = Json.integer(v, 0, 4294967295L, "seq");
                     break;
                 default:
-                    throw new IllegalArgumentException("CAMERA_TRIGGER has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CAMERA_TRIGGER has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8762,7 +8776,7 @@ public final class Conformance {
                     m.yaw = (int) Json.integer(v, 0, 65535, "yaw");
                     break;
                 default:
-                    throw new IllegalArgumentException("HIL_GPS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("HIL_GPS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8810,7 +8824,7 @@ public final class Conformance {
                     m.distance = Json.f32(v, "distance");
                     break;
                 default:
-                    throw new IllegalArgumentException("HIL_OPTICAL_FLOW has no field " + Json.show(e.getKey()));
+                    throw new Refusal("HIL_OPTICAL_FLOW has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8870,7 +8884,7 @@ public final class Conformance {
                     m.zacc = (short) Json.integer(v, -32768, 32767, "zacc");
                     break;
                 default:
-                    throw new IllegalArgumentException("HIL_STATE_QUATERNION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("HIL_STATE_QUATERNION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8915,7 +8929,7 @@ public final class Conformance {
                     m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
                     break;
                 default:
-                    throw new IllegalArgumentException("SCALED_IMU2 has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SCALED_IMU2 has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8939,7 +8953,7 @@ public final class Conformance {
                     m.end = (int) Json.integer(v, 0, 65535, "end");
                     break;
                 default:
-                    throw new IllegalArgumentException("LOG_REQUEST_LIST has no field " + Json.show(e.getKey()));
+                    throw new Refusal("LOG_REQUEST_LIST has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8966,7 +8980,7 @@ public final class Conformance {
                     m.size = Json.integer(v, 0, 4294967295L, "size");
                     break;
                 default:
-                    throw new IllegalArgumentException("LOG_ENTRY has no field " + Json.show(e.getKey()));
+                    throw new Refusal("LOG_ENTRY has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -8993,7 +9007,7 @@ public final class Conformance {
                     m.count = Json.integer(v, 0, 4294967295L, "count");
                     break;
                 default:
-                    throw new IllegalArgumentException("LOG_REQUEST_DATA has no field " + Json.show(e.getKey()));
+                    throw new Refusal("LOG_REQUEST_DATA has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9017,7 +9031,7 @@ public final class Conformance {
                     m.data = Json.u8s(v, 90, "data");
                     break;
                 default:
-                    throw new IllegalArgumentException("LOG_DATA has no field " + Json.show(e.getKey()));
+                    throw new Refusal("LOG_DATA has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9035,7 +9049,7 @@ public final class Conformance {
                     m.target_component = (int) Json.integer(v, 0, 255, "target_component");
                     break;
                 default:
-                    throw new IllegalArgumentException("LOG_ERASE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("LOG_ERASE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9053,7 +9067,7 @@ public final class Conformance {
                     m.target_component = (int) Json.integer(v, 0, 255, "target_component");
                     break;
                 default:
-                    throw new IllegalArgumentException("LOG_REQUEST_END has no field " + Json.show(e.getKey()));
+                    throw new Refusal("LOG_REQUEST_END has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9077,7 +9091,7 @@ public final class Conformance {
                     m.data = Json.u8s(v, 110, "data");
                     break;
                 default:
-                    throw new IllegalArgumentException("GPS_INJECT_DATA has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GPS_INJECT_DATA has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9143,7 +9157,7 @@ public final class Conformance {
                     m.hdg_acc = Json.integer(v, 0, 4294967295L, "hdg_acc");
                     break;
                 default:
-                    throw new IllegalArgumentException("GPS2_RAW has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GPS2_RAW has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9164,7 +9178,7 @@ public final class Conformance {
                     m.flags = (int) Json.integer(v, 0, 65535, "flags");
                     break;
                 default:
-                    throw new IllegalArgumentException("POWER_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("POWER_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9194,7 +9208,7 @@ public final class Conformance {
                     m.data = Json.u8s(v, 70, "data");
                     break;
                 default:
-                    throw new IllegalArgumentException("SERIAL_CONTROL has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SERIAL_CONTROL has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9245,7 +9259,7 @@ public final class Conformance {
                     m.iar_num_hypotheses = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "iar_num_hypotheses");
                     break;
                 default:
-                    throw new IllegalArgumentException("GPS_RTK has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GPS_RTK has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9296,7 +9310,7 @@ public final class Conformance {
                     m.iar_num_hypotheses = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "iar_num_hypotheses");
                     break;
                 default:
-                    throw new IllegalArgumentException("GPS2_RTK has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GPS2_RTK has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9341,7 +9355,7 @@ public final class Conformance {
                     m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
                     break;
                 default:
-                    throw new IllegalArgumentException("SCALED_IMU3 has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SCALED_IMU3 has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9374,7 +9388,7 @@ public final class Conformance {
                     m.jpg_quality = (int) Json.integer(v, 0, 255, "jpg_quality");
                     break;
                 default:
-                    throw new IllegalArgumentException("DATA_TRANSMISSION_HANDSHAKE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("DATA_TRANSMISSION_HANDSHAKE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9392,7 +9406,7 @@ public final class Conformance {
                     m.data = Json.u8s(v, 253, "data");
                     break;
                 default:
-                    throw new IllegalArgumentException("ENCAPSULATED_DATA has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ENCAPSULATED_DATA has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9440,7 +9454,7 @@ public final class Conformance {
                     m.signal_quality = (int) Json.integer(v, 0, 255, "signal_quality");
                     break;
                 default:
-                    throw new IllegalArgumentException("DISTANCE_SENSOR has no field " + Json.show(e.getKey()));
+                    throw new Refusal("DISTANCE_SENSOR has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9464,7 +9478,7 @@ public final class Conformance {
                     m.mask = Json.uint64(v, "mask");
                     break;
                 default:
-                    throw new IllegalArgumentException("TERRAIN_REQUEST has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TERRAIN_REQUEST has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9491,7 +9505,7 @@ public final class Conformance {
                     m.data = Json.shorts(v, 16, "data");
                     break;
                 default:
-                    throw new IllegalArgumentException("TERRAIN_DATA has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TERRAIN_DATA has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9509,7 +9523,7 @@ public final class Conformance {
                     m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
                     break;
                 default:
-                    throw new IllegalArgumentException("TERRAIN_CHECK has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TERRAIN_CHECK has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9542,7 +9556,7 @@ public final class Conformance {
                     m.loaded = (int) Json.integer(v, 0, 65535, "loaded");
                     break;
                 default:
-                    throw new IllegalArgumentException("TERRAIN_REPORT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TERRAIN_REPORT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9569,7 +9583,7 @@ public final class Conformance {
                     m.temperature_press_diff = (short) Json.integer(v, -32768, 32767, "temperature_press_diff");
                     break;
                 default:
-                    throw new IllegalArgumentException("SCALED_PRESSURE2 has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SCALED_PRESSURE2 has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9599,7 +9613,7 @@ public final class Conformance {
                     m.covariance = Json.f32s(v, 21, "covariance");
                     break;
                 default:
-                    throw new IllegalArgumentException("ATT_POS_MOCAP has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ATT_POS_MOCAP has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9626,7 +9640,7 @@ public final class Conformance {
                     m.controls = Json.f32s(v, 8, "controls");
                     break;
                 default:
-                    throw new IllegalArgumentException("SET_ACTUATOR_CONTROL_TARGET has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SET_ACTUATOR_CONTROL_TARGET has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9647,7 +9661,7 @@ public final class Conformance {
                     m.controls = Json.f32s(v, 8, "controls");
                     break;
                 default:
-                    throw new IllegalArgumentException("ACTUATOR_CONTROL_TARGET has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ACTUATOR_CONTROL_TARGET has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9680,7 +9694,7 @@ public final class Conformance {
                     m.bottom_clearance = Json.f32(v, "bottom_clearance");
                     break;
                 default:
-                    throw new IllegalArgumentException("ALTITUDE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ALTITUDE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9707,7 +9721,7 @@ public final class Conformance {
                     m.storage = Json.u8s(v, 120, "storage");
                     break;
                 default:
-                    throw new IllegalArgumentException("RESOURCE_REQUEST has no field " + Json.show(e.getKey()));
+                    throw new Refusal("RESOURCE_REQUEST has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9734,7 +9748,7 @@ public final class Conformance {
                     m.temperature_press_diff = (short) Json.integer(v, -32768, 32767, "temperature_press_diff");
                     break;
                 default:
-                    throw new IllegalArgumentException("SCALED_PRESSURE3 has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SCALED_PRESSURE3 has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9779,7 +9793,7 @@ public final class Conformance {
                     m.custom_state = Json.uint64(v, "custom_state");
                     break;
                 default:
-                    throw new IllegalArgumentException("FOLLOW_TARGET has no field " + Json.show(e.getKey()));
+                    throw new Refusal("FOLLOW_TARGET has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9842,7 +9856,7 @@ public final class Conformance {
                     m.yaw_rate = Json.f32(v, "yaw_rate");
                     break;
                 default:
-                    throw new IllegalArgumentException("CONTROL_SYSTEM_STATE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CONTROL_SYSTEM_STATE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9896,7 +9910,7 @@ public final class Conformance {
                     m.fault_bitmask = Json.integer(v, 0, 4294967295L, "fault_bitmask");
                     break;
                 default:
-                    throw new IllegalArgumentException("BATTERY_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("BATTERY_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9944,7 +9958,7 @@ public final class Conformance {
                     m.uid2 = Json.u8s(v, 18, "uid2");
                     break;
                 default:
-                    throw new IllegalArgumentException("AUTOPILOT_VERSION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("AUTOPILOT_VERSION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -9998,7 +10012,7 @@ public final class Conformance {
                     m.position_valid = (int) Json.integer(v, 0, 255, "position_valid");
                     break;
                 default:
-                    throw new IllegalArgumentException("LANDING_TARGET has no field " + Json.show(e.getKey()));
+                    throw new Refusal("LANDING_TARGET has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10025,7 +10039,7 @@ public final class Conformance {
                     m.breach_mitigation = (int) Json.integer(v, 0, 255, "breach_mitigation");
                     break;
                 default:
-                    throw new IllegalArgumentException("FENCE_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("FENCE_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10091,7 +10105,7 @@ public final class Conformance {
                     m.scale_factor = Json.f32(v, "scale_factor");
                     break;
                 default:
-                    throw new IllegalArgumentException("MAG_CAL_REPORT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MAG_CAL_REPORT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10160,7 +10174,7 @@ public final class Conformance {
                     m.fuel_pressure = Json.f32(v, "fuel_pressure");
                     break;
                 default:
-                    throw new IllegalArgumentException("EFI_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("EFI_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10202,7 +10216,7 @@ public final class Conformance {
                     m.pos_vert_accuracy = Json.f32(v, "pos_vert_accuracy");
                     break;
                 default:
-                    throw new IllegalArgumentException("ESTIMATOR_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ESTIMATOR_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10241,7 +10255,7 @@ public final class Conformance {
                     m.vert_accuracy = Json.f32(v, "vert_accuracy");
                     break;
                 default:
-                    throw new IllegalArgumentException("WIND_COV has no field " + Json.show(e.getKey()));
+                    throw new Refusal("WIND_COV has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10310,7 +10324,7 @@ public final class Conformance {
                     m.yaw = (int) Json.integer(v, 0, 65535, "yaw");
                     break;
                 default:
-                    throw new IllegalArgumentException("GPS_INPUT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GPS_INPUT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10331,7 +10345,7 @@ public final class Conformance {
                     m.data = Json.u8s(v, 180, "data");
                     break;
                 default:
-                    throw new IllegalArgumentException("GPS_RTCM_DATA has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GPS_RTCM_DATA has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10415,7 +10429,7 @@ public final class Conformance {
                     m.wp_distance = (int) Json.integer(v, 0, 65535, "wp_distance");
                     break;
                 default:
-                    throw new IllegalArgumentException("HIGH_LATENCY has no field " + Json.show(e.getKey()));
+                    throw new Refusal("HIGH_LATENCY has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10508,7 +10522,7 @@ public final class Conformance {
                     m.custom2 = (byte) Json.integer(v, -128, 127, "custom2");
                     break;
                 default:
-                    throw new IllegalArgumentException("HIGH_LATENCY2 has no field " + Json.show(e.getKey()));
+                    throw new Refusal("HIGH_LATENCY2 has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10541,7 +10555,7 @@ public final class Conformance {
                     m.clipping_2 = Json.integer(v, 0, 4294967295L, "clipping_2");
                     break;
                 default:
-                    throw new IllegalArgumentException("VIBRATION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("VIBRATION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10586,7 +10600,7 @@ public final class Conformance {
                     m.time_usec = Json.uint64(v, "time_usec");
                     break;
                 default:
-                    throw new IllegalArgumentException("HOME_POSITION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("HOME_POSITION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10634,7 +10648,7 @@ public final class Conformance {
                     m.time_usec = Json.uint64(v, "time_usec");
                     break;
                 default:
-                    throw new IllegalArgumentException("SET_HOME_POSITION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SET_HOME_POSITION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10652,7 +10666,7 @@ public final class Conformance {
                     m.interval_us = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "interval_us");
                     break;
                 default:
-                    throw new IllegalArgumentException("MESSAGE_INTERVAL has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MESSAGE_INTERVAL has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10670,7 +10684,7 @@ public final class Conformance {
                     m.landed_state = (int) Json.integer(v, 0, 255, "landed_state");
                     break;
                 default:
-                    throw new IllegalArgumentException("EXTENDED_SYS_STATE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("EXTENDED_SYS_STATE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10721,7 +10735,7 @@ public final class Conformance {
                     m.squawk = (int) Json.integer(v, 0, 65535, "squawk");
                     break;
                 default:
-                    throw new IllegalArgumentException("ADSB_VEHICLE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ADSB_VEHICLE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10754,7 +10768,7 @@ public final class Conformance {
                     m.horizontal_minimum_delta = Json.f32(v, "horizontal_minimum_delta");
                     break;
                 default:
-                    throw new IllegalArgumentException("COLLISION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("COLLISION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10781,7 +10795,7 @@ public final class Conformance {
                     m.payload = Json.u8s(v, 249, "payload");
                     break;
                 default:
-                    throw new IllegalArgumentException("V2_EXTENSION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("V2_EXTENSION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10805,7 +10819,7 @@ public final class Conformance {
                     m.value = Json.i8s(v, 32, "value");
                     break;
                 default:
-                    throw new IllegalArgumentException("MEMORY_VECT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MEMORY_VECT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10832,7 +10846,7 @@ public final class Conformance {
                     m.z = Json.f32(v, "z");
                     break;
                 default:
-                    throw new IllegalArgumentException("DEBUG_VECT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("DEBUG_VECT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10853,7 +10867,7 @@ public final class Conformance {
                     m.value = Json.f32(v, "value");
                     break;
                 default:
-                    throw new IllegalArgumentException("NAMED_VALUE_FLOAT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("NAMED_VALUE_FLOAT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10874,7 +10888,7 @@ public final class Conformance {
                     m.value = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "value");
                     break;
                 default:
-                    throw new IllegalArgumentException("NAMED_VALUE_INT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("NAMED_VALUE_INT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10898,7 +10912,7 @@ public final class Conformance {
                     m.chunk_seq = (int) Json.integer(v, 0, 255, "chunk_seq");
                     break;
                 default:
-                    throw new IllegalArgumentException("STATUSTEXT has no field " + Json.show(e.getKey()));
+                    throw new Refusal("STATUSTEXT has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10919,7 +10933,7 @@ public final class Conformance {
                     m.value = Json.f32(v, "value");
                     break;
                 default:
-                    throw new IllegalArgumentException("DEBUG has no field " + Json.show(e.getKey()));
+                    throw new Refusal("DEBUG has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10943,7 +10957,7 @@ public final class Conformance {
                     m.initial_timestamp = Json.uint64(v, "initial_timestamp");
                     break;
                 default:
-                    throw new IllegalArgumentException("SETUP_SIGNING has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SETUP_SIGNING has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10964,7 +10978,7 @@ public final class Conformance {
                     m.state = (int) Json.integer(v, 0, 255, "state");
                     break;
                 default:
-                    throw new IllegalArgumentException("BUTTON_CHANGE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("BUTTON_CHANGE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -10988,7 +11002,7 @@ public final class Conformance {
                     m.tune2 = Json.text(v, 200, "tune2");
                     break;
                 default:
-                    throw new IllegalArgumentException("PLAY_TUNE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("PLAY_TUNE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11045,7 +11059,7 @@ public final class Conformance {
                     m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
                     break;
                 default:
-                    throw new IllegalArgumentException("CAMERA_INFORMATION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CAMERA_INFORMATION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11072,7 +11086,7 @@ public final class Conformance {
                     m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
                     break;
                 default:
-                    throw new IllegalArgumentException("CAMERA_SETTINGS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CAMERA_SETTINGS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11120,7 +11134,7 @@ public final class Conformance {
                     m.storage_usage = (int) Json.integer(v, 0, 255, "storage_usage");
                     break;
                 default:
-                    throw new IllegalArgumentException("STORAGE_INFORMATION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("STORAGE_INFORMATION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11156,7 +11170,7 @@ public final class Conformance {
                     m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
                     break;
                 default:
-                    throw new IllegalArgumentException("CAMERA_CAPTURE_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CAMERA_CAPTURE_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11201,7 +11215,7 @@ public final class Conformance {
                     m.file_url = Json.text(v, 205, "file_url");
                     break;
                 default:
-                    throw new IllegalArgumentException("CAMERA_IMAGE_CAPTURED has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CAMERA_IMAGE_CAPTURED has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11228,7 +11242,7 @@ public final class Conformance {
                     m.landing_time = Json.integer(v, 0, 4294967295L, "landing_time");
                     break;
                 default:
-                    throw new IllegalArgumentException("FLIGHT_INFORMATION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("FLIGHT_INFORMATION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11255,7 +11269,7 @@ public final class Conformance {
                     m.yaw_absolute = Json.f32(v, "yaw_absolute");
                     break;
                 default:
-                    throw new IllegalArgumentException("MOUNT_ORIENTATION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("MOUNT_ORIENTATION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11285,7 +11299,7 @@ public final class Conformance {
                     m.data = Json.u8s(v, 249, "data");
                     break;
                 default:
-                    throw new IllegalArgumentException("LOGGING_DATA has no field " + Json.show(e.getKey()));
+                    throw new Refusal("LOGGING_DATA has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11315,7 +11329,7 @@ public final class Conformance {
                     m.data = Json.u8s(v, 249, "data");
                     break;
                 default:
-                    throw new IllegalArgumentException("LOGGING_DATA_ACKED has no field " + Json.show(e.getKey()));
+                    throw new Refusal("LOGGING_DATA_ACKED has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11336,7 +11350,7 @@ public final class Conformance {
                     m.sequence = (int) Json.integer(v, 0, 65535, "sequence");
                     break;
                 default:
-                    throw new IllegalArgumentException("LOGGING_ACK has no field " + Json.show(e.getKey()));
+                    throw new Refusal("LOGGING_ACK has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11390,7 +11404,7 @@ public final class Conformance {
                     m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
                     break;
                 default:
-                    throw new IllegalArgumentException("VIDEO_STREAM_INFORMATION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("VIDEO_STREAM_INFORMATION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11429,7 +11443,7 @@ public final class Conformance {
                     m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
                     break;
                 default:
-                    throw new IllegalArgumentException("VIDEO_STREAM_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("VIDEO_STREAM_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11474,7 +11488,7 @@ public final class Conformance {
                     m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
                     break;
                 default:
-                    throw new IllegalArgumentException("CAMERA_FOV_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CAMERA_FOV_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11519,7 +11533,7 @@ public final class Conformance {
                     m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
                     break;
                 default:
-                    throw new IllegalArgumentException("CAMERA_TRACKING_IMAGE_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CAMERA_TRACKING_IMAGE_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11573,7 +11587,7 @@ public final class Conformance {
                     m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
                     break;
                 default:
-                    throw new IllegalArgumentException("CAMERA_TRACKING_GEO_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CAMERA_TRACKING_GEO_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11612,7 +11626,7 @@ public final class Conformance {
                     m.min_point_y = Json.f32(v, "min_point_y");
                     break;
                 default:
-                    throw new IllegalArgumentException("CAMERA_THERMAL_RANGE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CAMERA_THERMAL_RANGE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11651,7 +11665,7 @@ public final class Conformance {
                     m.yaw_max = Json.f32(v, "yaw_max");
                     break;
                 default:
-                    throw new IllegalArgumentException("GIMBAL_MANAGER_INFORMATION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GIMBAL_MANAGER_INFORMATION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11684,7 +11698,7 @@ public final class Conformance {
                     m.secondary_control_compid = (int) Json.integer(v, 0, 255, "secondary_control_compid");
                     break;
                 default:
-                    throw new IllegalArgumentException("GIMBAL_MANAGER_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GIMBAL_MANAGER_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11720,7 +11734,7 @@ public final class Conformance {
                     m.angular_velocity_z = Json.f32(v, "angular_velocity_z");
                     break;
                 default:
-                    throw new IllegalArgumentException("GIMBAL_MANAGER_SET_ATTITUDE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GIMBAL_MANAGER_SET_ATTITUDE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11783,7 +11797,7 @@ public final class Conformance {
                     m.cap_flags2 = Json.integer(v, 0, 4294967295L, "cap_flags2");
                     break;
                 default:
-                    throw new IllegalArgumentException("GIMBAL_DEVICE_INFORMATION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GIMBAL_DEVICE_INFORMATION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11816,7 +11830,7 @@ public final class Conformance {
                     m.angular_velocity_z = Json.f32(v, "angular_velocity_z");
                     break;
                 default:
-                    throw new IllegalArgumentException("GIMBAL_DEVICE_SET_ATTITUDE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GIMBAL_DEVICE_SET_ATTITUDE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11864,7 +11878,7 @@ public final class Conformance {
                     m.gimbal_device_id = (int) Json.integer(v, 0, 255, "gimbal_device_id");
                     break;
                 default:
-                    throw new IllegalArgumentException("GIMBAL_DEVICE_ATTITUDE_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GIMBAL_DEVICE_ATTITUDE_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11915,7 +11929,7 @@ public final class Conformance {
                     m.angular_velocity_z = Json.f32(v, "angular_velocity_z");
                     break;
                 default:
-                    throw new IllegalArgumentException("AUTOPILOT_STATE_FOR_GIMBAL_DEVICE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("AUTOPILOT_STATE_FOR_GIMBAL_DEVICE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11951,7 +11965,7 @@ public final class Conformance {
                     m.yaw_rate = Json.f32(v, "yaw_rate");
                     break;
                 default:
-                    throw new IllegalArgumentException("GIMBAL_MANAGER_SET_PITCHYAW has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GIMBAL_MANAGER_SET_PITCHYAW has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -11987,7 +12001,7 @@ public final class Conformance {
                     m.yaw_rate = Json.f32(v, "yaw_rate");
                     break;
                 default:
-                    throw new IllegalArgumentException("GIMBAL_MANAGER_SET_MANUAL_CONTROL has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GIMBAL_MANAGER_SET_MANUAL_CONTROL has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12014,7 +12028,7 @@ public final class Conformance {
                     m.flags = (int) Json.integer(v, 0, 255, "flags");
                     break;
                 default:
-                    throw new IllegalArgumentException("AIRSPEED has no field " + Json.show(e.getKey()));
+                    throw new Refusal("AIRSPEED has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12065,7 +12079,7 @@ public final class Conformance {
                     m.epv = Json.f32(v, "epv");
                     break;
                 default:
-                    throw new IllegalArgumentException("GLOBAL_POSITION_SENSOR has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GLOBAL_POSITION_SENSOR has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12083,7 +12097,7 @@ public final class Conformance {
                     m.password = Json.text(v, 64, "password");
                     break;
                 default:
-                    throw new IllegalArgumentException("WIFI_CONFIG_AP has no field " + Json.show(e.getKey()));
+                    throw new Refusal("WIFI_CONFIG_AP has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12146,7 +12160,7 @@ public final class Conformance {
                     m.flags = (int) Json.integer(v, 0, 65535, "flags");
                     break;
                 default:
-                    throw new IllegalArgumentException("AIS_VESSEL has no field " + Json.show(e.getKey()));
+                    throw new Refusal("AIS_VESSEL has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12176,7 +12190,7 @@ public final class Conformance {
                     m.vendor_specific_status_code = (int) Json.integer(v, 0, 65535, "vendor_specific_status_code");
                     break;
                 default:
-                    throw new IllegalArgumentException("UAVCAN_NODE_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("UAVCAN_NODE_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12215,7 +12229,7 @@ public final class Conformance {
                     m.sw_vcs_commit = Json.integer(v, 0, 4294967295L, "sw_vcs_commit");
                     break;
                 default:
-                    throw new IllegalArgumentException("UAVCAN_NODE_INFO has no field " + Json.show(e.getKey()));
+                    throw new Refusal("UAVCAN_NODE_INFO has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12239,7 +12253,7 @@ public final class Conformance {
                     m.param_index = (short) Json.integer(v, -32768, 32767, "param_index");
                     break;
                 default:
-                    throw new IllegalArgumentException("PARAM_EXT_REQUEST_READ has no field " + Json.show(e.getKey()));
+                    throw new Refusal("PARAM_EXT_REQUEST_READ has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12257,7 +12271,7 @@ public final class Conformance {
                     m.target_component = (int) Json.integer(v, 0, 255, "target_component");
                     break;
                 default:
-                    throw new IllegalArgumentException("PARAM_EXT_REQUEST_LIST has no field " + Json.show(e.getKey()));
+                    throw new Refusal("PARAM_EXT_REQUEST_LIST has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12284,7 +12298,7 @@ public final class Conformance {
                     m.param_index = (int) Json.integer(v, 0, 65535, "param_index");
                     break;
                 default:
-                    throw new IllegalArgumentException("PARAM_EXT_VALUE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("PARAM_EXT_VALUE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12311,7 +12325,7 @@ public final class Conformance {
                     m.param_type = (int) Json.integer(v, 0, 255, "param_type");
                     break;
                 default:
-                    throw new IllegalArgumentException("PARAM_EXT_SET has no field " + Json.show(e.getKey()));
+                    throw new Refusal("PARAM_EXT_SET has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12335,7 +12349,7 @@ public final class Conformance {
                     m.param_result = (int) Json.integer(v, 0, 255, "param_result");
                     break;
                 default:
-                    throw new IllegalArgumentException("PARAM_EXT_ACK has no field " + Json.show(e.getKey()));
+                    throw new Refusal("PARAM_EXT_ACK has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12374,7 +12388,7 @@ public final class Conformance {
                     m.frame = (int) Json.integer(v, 0, 255, "frame");
                     break;
                 default:
-                    throw new IllegalArgumentException("OBSTACLE_DISTANCE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("OBSTACLE_DISTANCE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12440,7 +12454,7 @@ public final class Conformance {
                     m.quality = (byte) Json.integer(v, -128, 127, "quality");
                     break;
                 default:
-                    throw new IllegalArgumentException("ODOMETRY has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ODOMETRY has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12494,7 +12508,7 @@ public final class Conformance {
                     m.command = Json.ints(v, 5, 0, 65535, "command");
                     break;
                 default:
-                    throw new IllegalArgumentException("TRAJECTORY_REPRESENTATION_WAYPOINTS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TRAJECTORY_REPRESENTATION_WAYPOINTS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12527,7 +12541,7 @@ public final class Conformance {
                     m.pos_yaw = Json.f32s(v, 5, "pos_yaw");
                     break;
                 default:
-                    throw new IllegalArgumentException("TRAJECTORY_REPRESENTATION_BEZIER has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TRAJECTORY_REPRESENTATION_BEZIER has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12563,7 +12577,7 @@ public final class Conformance {
                     m.rx_session_pending = (int) Json.integer(v, 0, 255, "rx_session_pending");
                     break;
                 default:
-                    throw new IllegalArgumentException("ISBD_LINK_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ISBD_LINK_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12581,7 +12595,7 @@ public final class Conformance {
                     m.frequency = Json.f32(v, "frequency");
                     break;
                 default:
-                    throw new IllegalArgumentException("RAW_RPM has no field " + Json.show(e.getKey()));
+                    throw new Refusal("RAW_RPM has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12647,7 +12661,7 @@ public final class Conformance {
                     m.flags = (int) Json.integer(v, 0, 255, "flags");
                     break;
                 default:
-                    throw new IllegalArgumentException("UTM_GLOBAL_POSITION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("UTM_GLOBAL_POSITION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12674,7 +12688,7 @@ public final class Conformance {
                     m.error = (int) Json.integer(v, 0, 255, "error");
                     break;
                 default:
-                    throw new IllegalArgumentException("PARAM_ERROR has no field " + Json.show(e.getKey()));
+                    throw new Refusal("PARAM_ERROR has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12698,7 +12712,7 @@ public final class Conformance {
                     m.data = Json.f32s(v, 58, "data");
                     break;
                 default:
-                    throw new IllegalArgumentException("DEBUG_FLOAT_ARRAY has no field " + Json.show(e.getKey()));
+                    throw new Refusal("DEBUG_FLOAT_ARRAY has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12728,7 +12742,7 @@ public final class Conformance {
                     m.z = Json.f32(v, "z");
                     break;
                 default:
-                    throw new IllegalArgumentException("ORBIT_EXECUTION_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ORBIT_EXECUTION_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12791,7 +12805,7 @@ public final class Conformance {
                     m.manufacture_date = Json.text(v, 11, "manufacture_date");
                     break;
                 default:
-                    throw new IllegalArgumentException("SMART_BATTERY_INFO has no field " + Json.show(e.getKey()));
+                    throw new Refusal("SMART_BATTERY_INFO has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12836,7 +12850,7 @@ public final class Conformance {
                     m.time_until_maintenance = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "time_until_maintenance");
                     break;
                 default:
-                    throw new IllegalArgumentException("GENERATOR_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("GENERATOR_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12857,7 +12871,7 @@ public final class Conformance {
                     m.actuator = Json.f32s(v, 32, "actuator");
                     break;
                 default:
-                    throw new IllegalArgumentException("ACTUATOR_OUTPUT_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ACTUATOR_OUTPUT_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12878,7 +12892,7 @@ public final class Conformance {
                     m.present = (int) Json.integer(v, 0, 65535, "present");
                     break;
                 default:
-                    throw new IllegalArgumentException("RELAY_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("RELAY_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12905,7 +12919,7 @@ public final class Conformance {
                     m.payload = Json.u8s(v, 128, "payload");
                     break;
                 default:
-                    throw new IllegalArgumentException("TUNNEL has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TUNNEL has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12935,7 +12949,7 @@ public final class Conformance {
                     m.data = Json.u8s(v, 8, "data");
                     break;
                 default:
-                    throw new IllegalArgumentException("CAN_FRAME has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CAN_FRAME has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12965,7 +12979,7 @@ public final class Conformance {
                     m.data = Json.u8s(v, 64, "data");
                     break;
                 default:
-                    throw new IllegalArgumentException("CANFD_FRAME has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CANFD_FRAME has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -12995,7 +13009,7 @@ public final class Conformance {
                     m.ids = Json.ints(v, 16, 0, 65535, "ids");
                     break;
                 default:
-                    throw new IllegalArgumentException("CAN_FILTER_MODIFY has no field " + Json.show(e.getKey()));
+                    throw new Refusal("CAN_FILTER_MODIFY has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13070,7 +13084,7 @@ public final class Conformance {
                     m.status_flags = (int) Json.integer(v, 0, 65535, "status_flags");
                     break;
                 default:
-                    throw new IllegalArgumentException("ONBOARD_COMPUTER_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("ONBOARD_COMPUTER_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13091,7 +13105,7 @@ public final class Conformance {
                     m.distance = Json.f64s(v, 16, "distance");
                     break;
                 default:
-                    throw new IllegalArgumentException("WHEEL_DISTANCE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("WHEEL_DISTANCE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13127,7 +13141,7 @@ public final class Conformance {
                     m.status = Json.integer(v, 0, 4294967295L, "status");
                     break;
                 default:
-                    throw new IllegalArgumentException("WINCH_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("WINCH_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13157,7 +13171,7 @@ public final class Conformance {
                     m.uas_id = Json.u8s(v, 20, "uas_id");
                     break;
                 default:
-                    throw new IllegalArgumentException("OPEN_DRONE_ID_BASIC_ID has no field " + Json.show(e.getKey()));
+                    throw new Refusal("OPEN_DRONE_ID_BASIC_ID has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13226,7 +13240,7 @@ public final class Conformance {
                     m.timestamp_accuracy = (int) Json.integer(v, 0, 255, "timestamp_accuracy");
                     break;
                 default:
-                    throw new IllegalArgumentException("OPEN_DRONE_ID_LOCATION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("OPEN_DRONE_ID_LOCATION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13265,7 +13279,7 @@ public final class Conformance {
                     m.authentication_data = Json.u8s(v, 23, "authentication_data");
                     break;
                 default:
-                    throw new IllegalArgumentException("OPEN_DRONE_ID_AUTHENTICATION has no field " + Json.show(e.getKey()));
+                    throw new Refusal("OPEN_DRONE_ID_AUTHENTICATION has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13292,7 +13306,7 @@ public final class Conformance {
                     m.description = Json.text(v, 23, "description");
                     break;
                 default:
-                    throw new IllegalArgumentException("OPEN_DRONE_ID_SELF_ID has no field " + Json.show(e.getKey()));
+                    throw new Refusal("OPEN_DRONE_ID_SELF_ID has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13349,7 +13363,7 @@ public final class Conformance {
                     m.timestamp = Json.integer(v, 0, 4294967295L, "timestamp");
                     break;
                 default:
-                    throw new IllegalArgumentException("OPEN_DRONE_ID_SYSTEM has no field " + Json.show(e.getKey()));
+                    throw new Refusal("OPEN_DRONE_ID_SYSTEM has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13376,7 +13390,7 @@ public final class Conformance {
                     m.operator_id = Json.text(v, 20, "operator_id");
                     break;
                 default:
-                    throw new IllegalArgumentException("OPEN_DRONE_ID_OPERATOR_ID has no field " + Json.show(e.getKey()));
+                    throw new Refusal("OPEN_DRONE_ID_OPERATOR_ID has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13406,7 +13420,7 @@ public final class Conformance {
                     m.messages = Json.u8s(v, 225, "messages");
                     break;
                 default:
-                    throw new IllegalArgumentException("OPEN_DRONE_ID_MESSAGE_PACK has no field " + Json.show(e.getKey()));
+                    throw new Refusal("OPEN_DRONE_ID_MESSAGE_PACK has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13424,7 +13438,7 @@ public final class Conformance {
                     m.error = Json.text(v, 50, "error");
                     break;
                 default:
-                    throw new IllegalArgumentException("OPEN_DRONE_ID_ARM_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("OPEN_DRONE_ID_ARM_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13454,7 +13468,7 @@ public final class Conformance {
                     m.timestamp = Json.integer(v, 0, 4294967295L, "timestamp");
                     break;
                 default:
-                    throw new IllegalArgumentException("OPEN_DRONE_ID_SYSTEM_UPDATE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("OPEN_DRONE_ID_SYSTEM_UPDATE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13475,7 +13489,7 @@ public final class Conformance {
                     m.humidity = (int) Json.integer(v, 0, 65535, "humidity");
                     break;
                 default:
-                    throw new IllegalArgumentException("HYGROMETER_SENSOR has no field " + Json.show(e.getKey()));
+                    throw new Refusal("HYGROMETER_SENSOR has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13514,7 +13528,7 @@ public final class Conformance {
                     m.meta = Json.u8s(v, 71, "meta");
                     break;
                 default:
-                    throw new IllegalArgumentException("TT_FILE_OFFER has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TT_FILE_OFFER has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13562,7 +13576,7 @@ public final class Conformance {
                     m.ranges = Json.longs(v, 14, 0, 4294967295L, "ranges");
                     break;
                 default:
-                    throw new IllegalArgumentException("TT_FILE_STATUS has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TT_FILE_STATUS has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13583,7 +13597,7 @@ public final class Conformance {
                     m.data = Json.u8s(v, 80, "data");
                     break;
                 default:
-                    throw new IllegalArgumentException("TT_FILE_DATA has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TT_FILE_DATA has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13613,7 +13627,7 @@ public final class Conformance {
                     m.name = Json.u8s(v, 80, "name");
                     break;
                 default:
-                    throw new IllegalArgumentException("TT_FILE_REQUEST has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TT_FILE_REQUEST has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13643,7 +13657,7 @@ public final class Conformance {
                     m.orientation = Json.f64s(v, 4, "orientation");
                     break;
                 default:
-                    throw new IllegalArgumentException("DJI_POSE_STAMPED has no field " + Json.show(e.getKey()));
+                    throw new Refusal("DJI_POSE_STAMPED has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13676,7 +13690,7 @@ public final class Conformance {
                     m.argument = Json.text(v, 48, "argument");
                     break;
                 default:
-                    throw new IllegalArgumentException("TT_ACTION_COMMAND has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TT_ACTION_COMMAND has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13715,7 +13729,7 @@ public final class Conformance {
                     m.satellites = (int) Json.integer(v, 0, 255, "satellites");
                     break;
                 default:
-                    throw new IllegalArgumentException("TT_NAV_SAT_FIX has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TT_NAV_SAT_FIX has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13751,7 +13765,7 @@ public final class Conformance {
                     m.pose_variance = Json.f32s(v, 6, "pose_variance");
                     break;
                 default:
-                    throw new IllegalArgumentException("TT_ODOMETRY has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TT_ODOMETRY has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13778,7 +13792,7 @@ public final class Conformance {
                     m.text = Json.text(v, 80, "text");
                     break;
                 default:
-                    throw new IllegalArgumentException("TT_LOG has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TT_LOG has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13799,7 +13813,7 @@ public final class Conformance {
                     m.data = Json.u8s(v, 247, "data");
                     break;
                 default:
-                    throw new IllegalArgumentException("TT_FILE_DATA_WIDE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TT_FILE_DATA_WIDE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13829,7 +13843,7 @@ public final class Conformance {
                     m.progress = (int) Json.integer(v, 0, 255, "progress");
                     break;
                 default:
-                    throw new IllegalArgumentException("TT_COMMAND_ACK has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TT_COMMAND_ACK has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13868,7 +13882,7 @@ public final class Conformance {
                     m.angular_velocity = Json.f32s(v, 3, "angular_velocity");
                     break;
                 default:
-                    throw new IllegalArgumentException("TT_VR_POSE has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TT_VR_POSE has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13904,7 +13918,7 @@ public final class Conformance {
                     m.buttons = (int) Json.integer(v, 0, 65535, "buttons");
                     break;
                 default:
-                    throw new IllegalArgumentException("TT_VR_CONTROLLER has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TT_VR_CONTROLLER has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13931,7 +13945,7 @@ public final class Conformance {
                     m.text = Json.text(v, 80, "text");
                     break;
                 default:
-                    throw new IllegalArgumentException("TT_FILE_REASON has no field " + Json.show(e.getKey()));
+                    throw new Refusal("TT_FILE_REASON has no field '" + e.getKey() + "'");
             }
         }
         return m;
@@ -13989,7 +14003,7 @@ public final class Conformance {
         }
 
         private IllegalArgumentException fail(String what) {
-            return new IllegalArgumentException("bad JSON at " + i + ": " + what);
+            return new Refusal("bad JSON at offset " + i);  // only where: the three parsers' words differ
         }
 
         private void ws() {

@@ -287,15 +287,24 @@ _KINDS: dict[str, list[tuple[str, int]]] = {
 }
 
 
+class Refusal(ValueError):
+    """A request this program refuses, in the words the C++ and Java programs use too."""
+
+
+def _error(message: str) -> str:
+    """{"error":"..."}, compact, as the C++ and Java programs write it."""
+    return json.dumps({"error": message}, separators=(",", ":"))
+
+
 def decode_line(hexframe: str) -> str:
     try:
         frame = bytes.fromhex(hexframe.strip())
     except ValueError:
-        return json.dumps({"error": "not hex"})
+        return _error("not hex")
     try:
         msg = decode(frame)
     except ValueError as e:
-        return json.dumps({"error": str(e)})
+        return _error(str(e))
     cls = type(msg)
     fields = ",".join(f"{json.dumps(f)}:{_value(msg, f, kind, width)}"
                       for f, (kind, width) in zip(cls.FIELDS, _KINDS[cls.NAME]))
@@ -322,22 +331,27 @@ def _integer(v: Any) -> int:
 
 
 def encode_line(text: str) -> str:
-    obj = json.loads(text)
+    try:
+        obj = json.loads(text)
+    except json.JSONDecodeError as e:
+        raise Refusal(f"bad JSON at offset {e.pos}") from None
     if not isinstance(obj, dict):
-        raise TypeError("expected a JSON object")
+        raise Refusal("expected a JSON object")
     cls: type[Message] | None = None
     if "name" in obj:
         cls = BY_NAME.get(obj["name"])
     elif "msgid" in obj:
         info = REGISTRY.get(obj["msgid"])
         cls = info.cls if info else None
+    if "name" not in obj and "msgid" not in obj:
+        raise Refusal('the object names no message ("name" or "msgid")')
     if cls is None:
-        raise ValueError(f"unknown message {obj.get('name', obj.get('msgid'))!r}")
+        raise Refusal(f"unknown message {obj.get('name', obj.get('msgid'))!r}")
     kinds = dict(zip(cls.FIELDS, _KINDS[cls.NAME]))
     values: dict[str, Any] = {}
     for name, v in (obj.get("fields") or {}).items():
         if name not in kinds:
-            raise ValueError(f"{cls.NAME} has no field {name!r}")
+            raise Refusal(f"{cls.NAME} has no field {name!r}")
         kind, _ = kinds[name]
         if kind == "text":
             values[name] = v.encode("latin-1").decode("utf-8", "surrogateescape")
@@ -362,9 +376,11 @@ def main() -> None:
             elif line.startswith("E "):
                 result = encode_line(line[2:])
             else:
-                result = json.dumps({"error": "expected 'D <hex>' or 'E <json>'"})
+                result = _error("expected 'D <hex>' or 'E <json>'")
+        except Refusal as e:
+            result = _error(str(e))
         except (ValueError, TypeError, KeyError, OverflowError, UnicodeError) as e:
-            result = json.dumps({"error": f"{type(e).__name__}: {e}"})
+            result = _error(f"{type(e).__name__}: {e}")
         out.write(result + "\n")
         out.flush()
 

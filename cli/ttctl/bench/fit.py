@@ -83,13 +83,9 @@ def load_measurement(path: str) -> Measurement:
     if path.endswith(".csv"):
         raise Fail(f"{path}: link fit reads the JSON report (bench link --to ... -o FILE.json): the CSV has no "
                    f"round trips or pacing")
-    try:
-        with open(path, "rb") as fh:
-            raw = fh.read(MAX_FILE + 1)
-    except OSError as e:
-        raise Fail(f"{path}: {e.strerror or e}") from None
-    if len(raw) > MAX_FILE:
-        raise _bad(path, f"over {MAX_FILE >> 20} MiB")
+    from ..safeio import read_capped
+
+    raw = read_capped(path, path, MAX_FILE)
     try:
         report = json.loads(raw)
     except (UnicodeDecodeError, json.JSONDecodeError) as e:
@@ -108,6 +104,11 @@ def load_measurement(path: str) -> Measurement:
     if lat is not None and not (isinstance(lat, dict) and _number(lat.get("rtt_p50_ms"))
                                 and isinstance(lat.get("echoes"), int)):
         raise _bad(path, "latency has no rtt_p50_ms or echoes")
+    if lat is not None and not (lat["rtt_p50_ms"] > 0 and lat["echoes"] >= 0):
+        raise _bad(path, f"latency.rtt_p50_ms is {lat['rtt_p50_ms']:g}: a round trip takes a positive time")
+    for k, v in (lat or {}).items():
+        if k.endswith("_ms") and _number(v) and v < 0:
+            raise _bad(path, f"latency.{k} is {v:g}: a time cannot be negative")
     for d in ("uplink", "downlink"):
         rows = report[d].get("rows")
         if not isinstance(rows, list):
@@ -120,7 +121,8 @@ def load_measurement(path: str) -> Measurement:
                 if not _number(row.get(k)):
                     raise _bad(path, f"{where}.{k} is missing or not a number")
             if not (isinstance(row["sent"], int) and row["sent"] >= 1 and 0 <= row["received"] <= row["sent"]
-                    and 1 <= row["size"] <= 100 and 0 <= row["loss"] <= 1 and row["throughput_Bps"] > 0):
+                    and 1 <= row["size"] <= 100 and 0 <= row["loss"] <= 1 and row["throughput_Bps"] > 0
+                    and row["capacity_Bps"] >= 0):
                 raise _bad(path, f"{where} has impossible values (sent, received, size, loss or throughput)")
             if d == "downlink" and row["rate_hz"] <= 0:
                 raise _bad(path, f"{where}.rate_hz must be positive")

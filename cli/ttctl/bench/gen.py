@@ -12,11 +12,14 @@ from .procs import benchmark_dialect, bytecode_note, console_script, machine, me
 FLOOR = 0.5  # issue: at most half the summed mavgen time
 
 
-def run(dialect: str | None, runs: int, as_json: bool) -> None:
+def run(dialect: str | None, runs: int, as_json: bool) -> int:
+    """Time both; 1 if the ratio misses the floor, else 0. A dialect `ttctl gen` refuses is
+    refused here (exit 2): timing a run that fails says nothing."""
     from ..errors import Fail
 
     dialect = benchmark_dialect(dialect)
     ttctl = console_script("ttctl", "ttctl")
+    _check_dialect(ttctl, dialect)
     mavgen = console_script("mavgen.py", "pymavlink.tools.mavgen")
     with tempfile.TemporaryDirectory(prefix="ttctl-bench-gen-") as tmp:
         def out(kind: str) -> str:
@@ -45,7 +48,7 @@ def run(dialect: str | None, runs: int, as_json: bool) -> None:
               "machine": machine(), "bytecode_note": note}
     if as_json:
         print(json.dumps(result, indent=2))
-        return
+        return 0 if result["ok"] else 1
     from rich.console import Console
     from rich.table import Table
 
@@ -61,3 +64,19 @@ def run(dialect: str | None, runs: int, as_json: bool) -> None:
         console.print(f"[yellow]note:[/] {note}")
     verdict = "[green]meets[/]" if ratio <= FLOOR else "[red]misses[/]"
     console.print(f"ratio ttctl/mavgen-sum = [bold]{ratio:.2f}[/] ({verdict} the {FLOOR}x floor)")
+    return 0 if result["ok"] else 1
+
+
+def _check_dialect(ttctl: list[str], dialect: str) -> None:
+    """Fail (exit 2) unless `ttctl validate` finds no errors in the dialect: gen would refuse it."""
+    import subprocess
+
+    from ..errors import Fail
+
+    proc = subprocess.run(ttctl + ["validate", dialect], capture_output=True, text=True, check=False)
+    if proc.returncode != 0:
+        text = proc.stdout + proc.stderr
+        errors = [ln for ln in text.splitlines() if ": error: " in ln]
+        first = errors[0] if errors else (text.strip().splitlines() or ["?"])[-1]
+        raise Fail(f"{dialect}: ttctl gen refuses this dialect ({len(errors)} error(s); the first: {first}); "
+                   f"nothing to time")

@@ -421,8 +421,14 @@ def main(rounds: int, seed: int, relay: str, strangers: bool, keep: Path | None,
 
     if relay not in ("direct", "relay", "both"):
         raise Fail("--topology must be direct, relay or both")
-    if keep is not None and keep.exists() and any(keep.iterdir()):
-        raise Fail(f"--keep {keep} exists and is not empty")
+    if keep is not None:
+        if keep.exists() and not keep.is_dir():
+            raise Fail(f"--keep {keep} is not a folder (it keeps every process's output)")
+        if keep.exists() and any(keep.iterdir()):
+            raise Fail(f"--keep {keep} exists and is not empty")
+        if not keep.parent.is_dir():
+            raise Fail(f"--keep {keep}: no folder {keep.parent}")
+        keep = keep.absolute()  # the processes run in their own working folders
     topologies = ["direct", "relay"] if relay == "both" else [relay]
     reports = {}
     for topo in topologies:

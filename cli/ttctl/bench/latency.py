@@ -141,6 +141,16 @@ def packet_time(profile: Profile, distance: float) -> float:
     return profile.up.service_time(profile.mtu, distance)
 
 
+MODEL_MARGIN = 0.05  # s over a packet time: the scheduler's promise, in virtual time
+LIVE_MARGIN = 0.2  # s over a packet time: the same, with two processes, a relay and the OS's timers
+
+
+def bound_s(profile: Profile, distance: float, live: bool = False) -> float:
+    """The one rule for a command's p95 while a file moves (`bench latency` and `bench transfer`
+    both judge by it): at most idle p95 + one full packet's time on the uplink + a margin."""
+    return packet_time(profile, distance) + (LIVE_MARGIN if live else MODEL_MARGIN)
+
+
 def report(phases: list[Phase], meta: dict[str, Any], bound_s: float) -> dict[str, Any]:
     """The report: phases, during/idle ratios, and the check the scheduler promises (a command
     waits at most for the packet on the air: during p95 <= idle p95 + `bound_s`)."""

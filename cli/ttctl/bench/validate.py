@@ -14,7 +14,8 @@ SYNTHETIC_FLOOR = 3.0  # at most 3x on a made-up dialect of tens of thousands of
 SYNTHETIC_KIND = "standalone (no common.xml)"
 
 
-def run(dialect: str | None, runs: int, as_json: bool, synthetic: int | None = None) -> None:
+def run(dialect: str | None, runs: int, as_json: bool, synthetic: int | None = None) -> int:
+    """Time both; 1 if the ratio misses the floor, else 0."""
     from ..errors import Fail
 
     if synthetic is not None and dialect is not None:
@@ -54,7 +55,7 @@ def run(dialect: str | None, runs: int, as_json: bool, synthetic: int | None = N
     }
     if as_json:
         print(json.dumps(result, indent=2))
-        return
+        return 0 if result["ok"] else 1
     from rich.console import Console
     from rich.table import Table
 
@@ -72,3 +73,4 @@ def run(dialect: str | None, runs: int, as_json: bool, synthetic: int | None = N
         console.print(f"[yellow]note:[/] {note}")
     verdict = "[green]meets[/]" if ratio <= floor else "[red]misses[/]"
     console.print(f"ratio ttctl/mavgen = [bold]{ratio:.2f}[/] ({verdict} the {floor}x floor)")
+    return 0 if result["ok"] else 1

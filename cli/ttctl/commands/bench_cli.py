@@ -24,10 +24,12 @@ def bench_validate(
                                                   show_default=False)] = None,
     json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
 ) -> None:
-    """Whole-process time of `ttctl validate` against `mavgen.py --lang Python3 --wire-protocol 2.0`."""
+    """Whole-process time of `ttctl validate` against `mavgen.py --lang Python3 --wire-protocol 2.0`.
+
+    Exit status: 0 within the floor, 1 the floor missed, 2 bad input."""
     from ..bench.validate import run
 
-    run(str(dialect) if dialect else None, runs, json_out, synthetic)
+    raise typer.Exit(run(str(dialect) if dialect else None, runs, json_out, synthetic))
 
 
 @bench_app.command("gen")
@@ -36,10 +38,12 @@ def bench_gen(
     runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=50)] = 5,
     json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
 ) -> None:
-    """Whole-process time of `ttctl gen` (three languages) against mavgen's Python3 + C++11 + Java."""
+    """Whole-process time of `ttctl gen` (three languages) against mavgen's Python3 + C++11 + Java.
+
+    Exit status: 0 within the floor, 1 the floor missed, 2 bad input (a dialect gen refuses)."""
     from ..bench.gen import run
 
-    run(str(dialect) if dialect else None, runs, json_out)
+    raise typer.Exit(run(str(dialect) if dialect else None, runs, json_out))
 
 
 @bench_app.command("dialect")
@@ -90,10 +94,11 @@ def bench_transfer(
 
     try:
         prof = load_profile(profile, str(profile_file) if profile_file else None)
-        run(prof, distance, size, seeds, [p.strip() for p in protocols.split(",") if p.strip()], json_out,
-            str(plot) if plot else None, quick)
+        code = run(prof, distance, size, seeds, [p.strip() for p in protocols.split(",") if p.strip()], json_out,
+                   str(plot) if plot else None, quick)
     except ProfileError as e:
         raise Fail(str(e)) from None
+    raise typer.Exit(code)
 
 
 @bench_app.command("link")
@@ -184,7 +189,9 @@ def bench_serve(
 @bench_app.command("integrity")
 def bench_integrity(
     rounds: Annotated[int, typer.Option("--rounds", help="Rounds per topology.", min=1, max=100_000)] = 50,
-    seed: Annotated[int, typer.Option("--seed", help="Random seed (the same seed, the same plan).")] = 1,
+    seed: Annotated[int, typer.Option("--seed", help="Random seed: the same seed draws the same plan (senders, files, "
+                                                         "kills); the counts depend on process timing and "
+                                                         "differ run to run.")] = 1,
     topology: Annotated[str, typer.Option("--topology", help="direct, relay (lossy) or both.")] = "both",
     strangers: Annotated[bool, typer.Option("--strangers/--no-strangers",
                                             help="Garbage datagrams from other ports throughout.")] = True,

@@ -9,14 +9,13 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 
 from ..errors import Fail
+from .common import err
 from .options import DialectIncludeOpt, DialectOpt, ProfileFileOpt
 
 if TYPE_CHECKING:
     from ..bench.latency import Phase
     from ..link.model import Profile
 
-MODEL_MARGIN = 0.05  # s over a packet time: the scheduler's promise, in virtual time
-LIVE_MARGIN = 0.2  # s over a packet time: the same, with two processes, a relay and the OS's timers
 
 
 def bench_latency(
@@ -66,8 +65,12 @@ def bench_latency(
         raise Fail(str(e)) from None
     if fetch is not None and to is None:
         raise Fail("--fetch applies to live runs (--to); the model's download phase needs no file")
-    bound = lat.packet_time(prof, distance) + (LIVE_MARGIN if to is not None else MODEL_MARGIN)
+    extrapolated = prof.extrapolated(distance)
+    if extrapolated and to is None:  # live, link_choice says it
+        err(f"warning: {extrapolated}")
+    bound = lat.bound_s(prof, distance, live=to is not None)
     meta: dict[str, Any] = {"mode": "live" if to else "model", "profile": prof.name, "distance_m": distance,
+                            "extrapolated": extrapolated,
                             "count": count, "interval_s": interval, "file_bytes": size, "seed": seed,
                             "packet_time_ms": round(1000 * lat.packet_time(prof, distance), 1),
                             "bound_ms": round(1000 * bound, 1)}

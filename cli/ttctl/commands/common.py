@@ -47,6 +47,9 @@ def link_choice(rate: float | None, profile: str | None, distance: float, sysid:
             prof = load_profile(profile, str(profile_file) if profile_file else None)
         except ProfileError as e:
             raise Fail(str(e)) from None
+        note = prof.extrapolated(distance)
+        if note:
+            err(f"warning: {note}")
         mine, other = ("up", "down") if sysid == TABLET[0] else ("down", "up")
         send_cap = prof.capacity_Bps(mine, distance)
         recv_cap = prof.capacity_Bps(other, distance)
@@ -79,16 +82,16 @@ def load_signing(key_file: Path | None, accept_unsigned: bool, bindings: Any = N
     import hashlib
     import re
 
-    try:
-        raw = key_file.read_bytes()[:4097]
-    except OSError as e:
-        raise Fail(f"--key {key_file}: {e.strerror or e}") from None
-    if len(raw) > 4096:
-        raise Fail(f"--key {key_file}: more than 4 KiB; a key file holds 64 hex digits or a passphrase")
+    from ..safeio import KiB, read_capped
+
+    raw = read_capped(key_file, f"--key {key_file}", 4 * KiB)
     text = raw.decode("utf-8", "replace").strip()
     if not text:
         raise Fail(f"--key {key_file} is empty; put 64 hex digits or a passphrase in it")
     key = bytes.fromhex(text) if re.fullmatch(r"[0-9a-fA-F]{64}", text) else hashlib.sha256(text.encode()).digest()
+    if re.fullmatch(r"(0[xX])?[0-9a-fA-F]{32,}", text) and not re.fullmatch(r"[0-9a-fA-F]{64}", text):
+        err(f"warning: --key {key_file} holds {len(text)} characters of hex, not the 64 hex digits of a key: "
+            f"it is used as a passphrase (its SHA-256 is the key)")
     if bindings is None:
         from .dialect import load_bindings
 

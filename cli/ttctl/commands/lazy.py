@@ -53,6 +53,13 @@ class LazyCommands(dict[str, Any]):
         return iter(list(super().keys()))
 
 
+def _command(ci: Any, opts: dict[str, Any]) -> click.Command:
+    """typer's command for `ci`, its float options refusing NaN and infinity (`finite`)."""
+    from .finite import finite_floats
+
+    return finite_floats(get_command_from_info(ci, **opts))
+
+
 def lazy_group(info: TyperInfo, *, pretty_exceptions_short: bool, rich_markup_mode: Any,
                suggest_commands: bool) -> click.Group:
     """typer's group for `info`, its callback and options built now, its commands (and
@@ -70,7 +77,7 @@ def lazy_group(info: TyperInfo, *, pretty_exceptions_short: bool, rich_markup_mo
     for ci in instance.registered_commands:
         assert ci.callback is not None
         name = ci.name or get_command_name(ci.callback.__name__)
-        builders[name] = functools.partial(get_command_from_info, ci, **opts)
+        builders[name] = functools.partial(_command, ci, opts)
     for gi in instance.registered_groups:
         group_name = solve_typer_info_defaults(gi).name
         assert isinstance(group_name, str) and group_name, "every subgroup of ttctl is added with a name"

@@ -56,8 +56,8 @@ def link_relay(
 
     Packets arriving on --listen (the tablet side) go through the profile's uplink model (rate, SDK
     buffer, loss, latency) and reach --to after the modelled time, or are lost, corrupted, duplicated
-    or reordered as asked. Packets from --to go through the downlink model to the address last heard
-    on --listen. Datagrams over the profile's MTU (100 bytes) are dropped, as DJI refuses them.
+    or reordered as asked. Packets from --to go through the downlink model to every address that sent
+    a valid frame to --listen lately. Datagrams over the profile's MTU (100 bytes) are dropped, as DJI refuses them.
     A stats line goes to stderr every --stats-interval seconds, and a last one on SIGINT/SIGTERM (exit 0).
     The relay carries packets, whatever they hold; it learns who is behind an address only from valid
     frames of the --dialect (so strangers cannot divert the link).

@@ -52,6 +52,16 @@ class RecvOptions:
 
 
 def recv_file(o: RecvOptions) -> int:
+    try:
+        return _recv_file(o)
+    except Fail as e:
+        if o.as_json:  # --json: the refusal as a JSON line too (and the one line on stderr)
+            print(json.dumps({"event": "error", "message": str(e), "exit": e.code, "time": round(time.time(), 3)}),
+                  flush=True)
+        raise
+
+
+def _recv_file(o: RecvOptions) -> int:
     from ..proto.storage import Quota, ReceiveDir, StorageError
 
     spec = parse_endpoint(o.listen, "udpin")
@@ -93,7 +103,8 @@ async def _recv(o: RecvOptions, b: Any, spec: Any, link: LinkChoice, store: Any,
 
     loop = asyncio.get_running_loop()
     wake = asyncio.Event()
-    completed = 0
+    completed = 0  # distinct files (path and content) completed
+    seen: set[tuple[str, bytes]] = set()
 
     def out(event: str, text: str, **fields: Any) -> None:
         if o.as_json:
@@ -125,8 +136,16 @@ async def _recv(o: RecvOptions, b: Any, spec: Any, link: LinkChoice, store: Any,
             out("refused", f"refused {name} from {peer}: {t.reason}", name=name, bytes=t.size, peer=peer,
                 reason=t.reason)
         elif what == "file-complete":
-            completed += 1
             secs = (t.finished_at or loop.time()) - t.started
+            key = (str(t.final_path), t.sha256)
+            if key in seen:  # the sender asked again (it had not heard COMPLETE): one file, counted once
+                out("complete-again", f"{name} from {peer} is complete already -> {t.final_path} (sent again; "
+                    f"counted once)", name=name, bytes=t.size, peer=peer, path=t.final_path,
+                    sha256=t.sha256.hex())
+                wake.set()
+                return
+            seen.add(key)
+            completed += 1
             how = " (an identical file was there already)" if t.identical else ""
             out("complete", f"complete {name}: {t.size} bytes in {secs:.2f} s from {peer} -> {t.final_path}{how}",
                 name=name, bytes=t.size, seconds=round(secs, 3), peer=peer, path=t.final_path,

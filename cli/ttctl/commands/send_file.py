@@ -69,13 +69,20 @@ class Outcome:
 def send_file(o: SendOptions) -> int:
     """Exit status: 0 delivered, 1 refused / failed / timed out (Fail), 2 bad input (Fail), 130
     interrupted (app.main says so, for every command)."""
+    printed: list[bool] = []
     try:
-        return _send_file(o)
+        return _send_file(o, printed)
     except KeyboardInterrupt:
         return 130
+    except Fail as e:
+        if o.as_json and not printed:  # a refusal before any transfer: JSON too (and the line on stderr)
+            print(json.dumps({"ok": False, "code": "BAD_INPUT" if e.code == 2 else "REFUSED", "message": str(e),
+                              "name": o.name or Path(o.file).name, "exit": e.code,
+                              "direction": "send" if o.to is not None else "fetch"}), flush=True)
+        raise
 
 
-def _send_file(o: SendOptions) -> int:
+def _send_file(o: SendOptions, printed: list[bool]) -> int:
     if (o.to is None) == (o.from_ is None):
         raise Fail("give --to ENDPOINT (send FILE) or --from ENDPOINT (fetch REMOTE_NAME), not both or neither")
     for v, what in ((o.sysid, "--sysid"), (o.compid, "--compid"), (o.target_sysid, "--target-sysid"),
@@ -96,6 +103,7 @@ def _send_file(o: SendOptions) -> int:
         return 130
     if o.as_json:
         print(json.dumps(outcome.report), flush=True)
+        printed.append(True)
     elif outcome.ok:
         print(_summary(outcome.report), flush=True)
     if not outcome.ok:

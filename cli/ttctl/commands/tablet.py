@@ -122,10 +122,9 @@ def _emulate_tablet(o: TabletOptions) -> int:
         raise Fail(f"--plugin {e}") from None
     steps = None
     if o.script is not None:
-        try:
-            text = o.script.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as e:
-            raise Fail(f"--script {o.script}: {getattr(e, 'strerror', None) or e}") from None
+        from ..safeio import MiB, read_text_capped
+
+        text = read_text_capped(o.script, f"--script {o.script}", MiB)
         try:
             steps = parse_script(text, b)
         except StepError as e:

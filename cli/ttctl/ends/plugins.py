@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import importlib.util
 import inspect
+import os
+import stat
 import sys
 from collections.abc import Callable, Iterable
 from pathlib import Path
@@ -199,14 +201,25 @@ class Dispatcher:
         return len(handlers)
 
 
+MAX_PLUGIN_BYTES = 16 << 20
+
+
 def load_plugins(paths: Iterable[str | Path]) -> list[Plugin]:
     """Import each module file and instantiate every Plugin subclass it defines. The file's
     parent folder goes on sys.path so that generated packages beside it import."""
     plugins: list[Plugin] = []
     for raw in paths:
+        try:
+            st = os.stat(raw)
+        except FileNotFoundError:
+            raise PluginError(f"{raw}: no such plugin file") from None
+        except OSError as e:  # a symlink loop, a folder it may not enter...
+            raise PluginError(f"{raw}: {e.strerror or e}") from None
+        if not stat.S_ISREG(st.st_mode):
+            raise PluginError(f"{raw}: no such plugin file (not a regular file)")
+        if st.st_size > MAX_PLUGIN_BYTES:  # the import reads it whole
+            raise PluginError(f"{raw}: {st.st_size} bytes; a plugin file over {MAX_PLUGIN_BYTES >> 20} MiB is refused")
         path = Path(raw).resolve()
-        if not path.is_file():
-            raise PluginError(f"{raw}: no such plugin file")
         for folder in (str(path.parent.parent), str(path.parent)):
             if folder not in sys.path:
                 sys.path.append(folder)

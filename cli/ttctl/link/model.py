@@ -104,6 +104,24 @@ class Profile:
             raise ProfileError(f"direction must be 'up' or 'down', not {d!r}")
         return self.up if d == "up" else self.down
 
+    def extrapolated(self, distance_m: float) -> str | None:
+        """Words for a distance outside what the profile's rates and losses were measured at (the
+        model holds the nearest measured value there), or None. A table with one point at 0 m
+        is distance-independent (lan)."""
+        out = []
+        for d in DIRECTIONS:
+            dp = self.direction(d)
+            for key, points in (("rate", dp.rate_Bps), ("loss", dp.loss)):
+                metres = sorted({float(m) for m, _ in points})
+                if metres == [0.0] or metres[0] <= distance_m <= metres[-1]:
+                    continue
+                out.append(f"{d} {key} at {metres[0]:g} m" if len(metres) == 1
+                           else f"{d} {key} {metres[0]:g}..{metres[-1]:g} m")
+        if not out:
+            return None
+        return (f"profile {self.name!r} is extrapolated at {distance_m:g} m (measured: {', '.join(out)}; the "
+                f"nearest measured value is held)")
+
     def capacity_Bps(self, direction: str, distance_m: float) -> float:
         """What the model delivers with back-to-back full packets, before loss."""
         return self.mtu / self.direction(direction).service_time(self.mtu, distance_m)
@@ -125,11 +143,15 @@ def load_profile(name: str | None, path: str | None = None) -> Profile:
     where = "ttctl's profiles.toml"
     if path is not None:
         where = path
+        from ..errors import Fail
+        from ..safeio import MiB, read_capped
+
         try:
-            with open(path, "rb") as fh:
-                table = tomllib.load(fh)
-        except OSError as e:
-            raise ProfileError(f"--profile-file {path}: {e.strerror or e}") from None
+            table = tomllib.loads(read_capped(path, f"--profile-file {path}", MiB).decode("utf-8"))
+        except Fail as e:
+            raise ProfileError(str(e)) from None
+        except UnicodeDecodeError as e:
+            raise ProfileError(f"--profile-file {path}: not UTF-8 text (byte {e.start})") from None
         except tomllib.TOMLDecodeError as e:
             raise ProfileError(f"--profile-file {path}: not TOML: {e}") from None
         profiles = sorted(k for k, v in table.items() if isinstance(v, dict))

@@ -272,8 +272,11 @@ class ReceiveDir:
 
     def release(self, failed: bool) -> None:
         """Unlock; after a failure, remove the directories this process created if they are
-        empty (a failed command leaves nothing behind)."""
+        empty (a failed command leaves nothing behind). An empty partial folder goes in any case:
+        a receive that finished leaves only the files it received."""
         if self._lock_fd is not None:
+            with contextlib.suppress(OSError):
+                self.partial_dir.rmdir()  # only if empty; still under the lock, so no receiver is using it
             os.close(self._lock_fd)
             self._lock_fd = None
         if failed:

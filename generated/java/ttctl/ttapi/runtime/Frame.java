@@ -127,7 +127,7 @@ public final class Frame {
      */
     public static Frame parse(byte[] buf, int off, int len, MavlinkDialect dialect) throws DecodeException {
         if (len < HEADER_LENGTH + CHECKSUM_LENGTH) {
-            throw new DecodeException("not a MAVLink 2 frame: " + len + " bytes (at least 12)");
+            throw new DecodeException("not a MAVLink 2 frame (magic 0xFD, at least 12 bytes)");
         }
         if ((buf[off] & 0xFF) != MAGIC) {
             throw new DecodeException(String.format("bad magic 0x%02x (MAVLink 2 is 0xfd)", buf[off] & 0xFF));
