@@ -541,3 +541,23 @@ def test_a_refusals_words_are_recorded_and_repeated_with_its_ack() -> None:
     bare = CommandServer(shipped(), 1, 240)
     ack, words = bare.answer(land)
     assert ack.result == int(ttapi.TtResult.TT_RESULT_UNSUPPORTED) and words == "no commands are carried out here"
+
+
+def test_a_deadline_met_exactly_is_acted_on_whatever_the_float_rounding(tmp_path: Path) -> None:
+    """`now - a >= b` can be false at now == a + b ((124.31526306379114 + 30) - 124.31526306379114
+    is less than 30): an end that computes its deadline as a + b and checks it as
+    now - a >= b asks to wake at `now` for ever and does nothing (`bench transfer --profile lan`
+    stopped there: "simulation stuck"). Each check compares as its deadline adds."""
+    a = 124.31526306379114
+    assert (a + 30.0) - a < 30.0  # the trap is real
+    w = World(tmp_path, onboard_dir=tmp_path / "in", outages=[(1.0, 1e9)],
+              config=TransferConfig(give_up_after=30.0, idle_timeout=30.0))
+    s = w.tablet.send_file("x", ONBOARD, source=BytesSource(data(20_000), "x"))
+    w.run(0.9)
+    assert w.onboard.receiver is not None and w.onboard.receiver.transfers, "the offer arrived"
+    for t in w.onboard.receiver.transfers.values():
+        t.last_activity = a  # silent since a: forgotten at a + idle_timeout
+    s.last_progress = s.last_heard = a  # no progress since a: gives up at a + give_up_after
+    w.run(400, stop=lambda: s.done and not w.onboard.receiver.transfers)  # type: ignore[union-attr]
+    assert s.done and s.result is not None and s.result.code == "TIMEOUT"
+    assert not w.onboard.receiver.transfers

@@ -243,7 +243,7 @@ class FileReceiver:
         t.last_activity = now
         t.frames += 1
         if t.partial is None or t.group is None:  # not accepted (yet), finished or refused
-            if t.decided and now - t.last_status >= self.cfg.status_min_interval:
+            if t.decided and now >= t.last_status + self.cfg.status_min_interval:
                 self._status_now(t, now)
             return
         offset = msg.offset
@@ -406,7 +406,7 @@ class FileReceiver:
         self.now = now
         out: list[tuple[Any, object]] = []
         for t in list(self.transfers.values()):
-            if now - t.last_activity >= self.cfg.idle_timeout:
+            if now >= t.last_activity + self.cfg.idle_timeout:  # as deadline() adds it: no float gap
                 self._close(t)
                 continue
             quiet = t.quiet_due is not None and now >= max(t.quiet_due, t.last_status + self._min_interval(t))

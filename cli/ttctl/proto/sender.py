@@ -138,11 +138,12 @@ class FileSender:
         if self._refusal is not None and now >= self._refusal[1] + max(self.cfg.reason_wait, 3 * self.rtt):
             self._refuse(now, self._refusal[0])
             return []
-        if now - self.last_progress >= self.cfg.give_up_after:
+        # each time compared as deadline() computes it: `now - a >= b` can be false at now == a + b
+        if now >= self.last_progress + self.cfg.give_up_after:
             self._time_out(now)
             return []
         if self.state == "sending" and self._probe_due is None \
-                and now - self.last_heard >= max(3 * self.cfg.status_interval, 2 * self.rtt + self.cfg.status_interval):
+                and now >= self.last_heard + max(3 * self.cfg.status_interval, 2 * self.rtt + self.cfg.status_interval):
             # statuses stopped while data flows: the receiver may have restarted; ask where it is
             self._probe_due = now
         due = self._offer_due if self.state == "offering" else self._probe_due
@@ -171,7 +172,7 @@ class FileSender:
             text = f"{who} stayed busy for {secs} ({self.busy})"
         else:
             text = f"no progress for {secs}"
-            if now - self.last_heard >= self.cfg.give_up_after:
+            if now >= self.last_heard + self.cfg.give_up_after:
                 text += f", nothing heard from {who}"
         if self.acked_bytes:
             text += " (what arrived is kept there: send again to resume)"
