@@ -291,3 +291,36 @@ def test_every_number_option_takes_negative_zero_or_huge_without_crashing(tmp_pa
         elif code == 2 and len([ln for ln in err.strip().splitlines() if not ln.startswith("ttctl: warning: ")]) != 1:
             bad.append(f"{name} {opt} {value}: exit 2 but not one line: {err.strip()[:300]!r}")
     assert not bad, f"seed {seed}:\n" + "\n".join(bad)
+
+
+@pytest.mark.parametrize(("argv", "words"), [
+    (["recv-file", "--listen", "udpin:127.0.0.1:0", "--dir", "{tmp}/in", "--sysid", "0"],
+     "--sysid must be in 1..255, not 0 (0 is MAVLink's broadcast address)"),
+    (["emulate", "tablet", "--target-sysid", "-1", "--script", "{tmp}/s.yaml"], "--target-sysid must be in 1..255"),
+    (["hmd", "dump", "--rate", "-1", "-o", "{tmp}/x.jsonl", "--duration", "0.1"],
+     "--rate must be a positive number of bytes per second"),
+    (["hmd", "dump", "--profile", "m100", "-o", "{tmp}/x.jsonl", "--duration", "0.1"], "they apply with --to"),
+])
+def test_ids_and_unused_link_options_are_refused(tmp_path: Path, argv: list[str], words: str) -> None:
+    """An end's own id 0 (the broadcast address), a target id out of range, and link pacing
+    given where there is no link: one line, exit 2, nothing made (these were accepted and
+    silently meaningless)."""
+    (tmp_path / "s.yaml").write_text("- status\n")
+    p = subprocess.run(ttctl_cmd() + [a.replace("{tmp}", str(tmp_path)) for a in argv], capture_output=True,
+                       text=True, timeout=60)
+    lines = p.stderr.strip().splitlines()
+    assert p.returncode == 2 and len(lines) == 1 and lines[0].startswith("ttctl: error: ") and words in lines[0], \
+        p.stderr
+    assert sorted(x.name for x in tmp_path.iterdir()) == ["s.yaml"]
+
+
+def test_json_gets_json_for_usage_errors_too() -> None:
+    """--json: a usage error (an unknown option, a number that is not one) is a JSON object on
+    stdout as well as the one line on stderr."""
+    import json
+
+    p = subprocess.run(ttctl_cmd() + ["recv-file", "--listen", "udpin:127.0.0.1:0", "--json", "--max-file", "nan"],
+                       capture_output=True, text=True, timeout=60)
+    assert p.returncode == 2 and len(p.stderr.strip().splitlines()) == 1, p.stderr
+    doc = json.loads(p.stdout)
+    assert doc["ok"] is False and doc["exit"] == 2 and "--max-file" in doc["error"]

@@ -297,6 +297,14 @@ def _run() -> int:
         sys.stdout = real
 
 
+def _json_refusal(error: str, code: int) -> None:
+    """--json: a refusal (a usage error too) as JSON on stdout, unless the command printed already."""
+    if isinstance(sys.stdout, _WatchedStdout) and not sys.stdout.written:
+        import json
+
+        print(json.dumps({"ok": False, "error": error, "exit": code}), flush=True)
+
+
 def _run_command() -> int:
     from .commands.lazy import lazy_command
 
@@ -312,16 +320,14 @@ def _run_command() -> int:
         if msg.count(hint) > 1:  # typer and click both add the suggestion
             msg = msg[: msg.rindex(hint)]
         if msg.strip():  # a group called without a command has printed its help already
+            _json_refusal(f"{msg} (see '{where} --help')", e.exit_code)
             print(f"ttctl: error: {msg} (see '{where} --help')", file=sys.stderr)
         return e.exit_code
     except typer.Abort:  # click's word for a KeyboardInterrupt inside a command
         print("ttctl: interrupted", file=sys.stderr)
         return 130
     except Fail as e:
-        if isinstance(sys.stdout, _WatchedStdout) and not sys.stdout.written:  # --json: the refusal as JSON too
-            import json
-
-            print(json.dumps({"ok": False, "error": str(e), "exit": e.code}), flush=True)
+        _json_refusal(str(e), e.code)
         print(f"ttctl: error: {e}", file=sys.stderr)
         return e.code
     except KeyboardInterrupt:

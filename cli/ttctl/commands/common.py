@@ -100,8 +100,11 @@ def load_signing(key_file: Path | None, accept_unsigned: bool, bindings: Any = N
 
 
 def check_id(value: int, what: str) -> None:
-    if not 0 <= value <= 255:
-        raise Fail(f"{what} must be in 0..255, not {value}")
+    """A MAVLink system or component id of an end: 1..255 (0 is MAVLink's broadcast address,
+    which no end can be, nor be the single target of a transfer or a command)."""
+    if not 1 <= value <= 255:
+        why = " (0 is MAVLink's broadcast address)" if value == 0 else ""
+        raise Fail(f"{what} must be in 1..255, not {value}{why}")
 
 
 class Signals:

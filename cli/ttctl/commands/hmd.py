@@ -86,6 +86,10 @@ def _check(o: DumpOptions) -> None:
         raise Fail(f"--parent-frame {o.parent_frame!r}: letters, digits, _ and / only")
     if not (math.isfinite(o.stream_hz) and o.stream_hz > 0):
         raise Fail("--stream-hz must be positive")
+    if o.rate is not None and not o.rate > 0:  # checked with or without --to: a bad value is never silently unused
+        raise Fail(f"--rate must be a positive number of bytes per second, not {o.rate:g}")
+    if o.to is None and (o.rate is not None or o.profile is not None or o.profile_file is not None):
+        raise Fail("--rate, --profile and --profile-file pace the link: they apply with --to")
 
 
 def _open_source(o: DumpOptions) -> tuple[Any, str]:

@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import Fail
-from .common import ONBOARD, Signals, err, link_choice, load_signing, parse_endpoint
+from .common import ONBOARD, Signals, check_id, err, link_choice, load_signing, parse_endpoint
 from .dialect import load_bindings
 
 HELP = ("takeoff [ALT] | land | hover | return | goto N E ALT | move DN DE DALT | fly FILE | send FILE | "
@@ -111,6 +111,7 @@ def _emulate_tablet(o: TabletOptions) -> int:
     from ..ends.plugins import PluginError, load_plugin
     from ..ends.tablet.steps import StepError, parse_script
 
+    check_id(o.target_sysid, "--target-sysid")
     spec = parse_endpoint(o.to, "udpout")
     link = link_choice(o.rate, o.profile, o.distance, 255, o.profile_file)
     b = load_bindings(o.dialect, o.include_dirs)  # before the plugins: they import its package
