@@ -10,6 +10,7 @@ import subprocess
 import time
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 from conftest import assert_no_traceback, run_ttctl, ttctl_cmd
 
@@ -107,3 +108,51 @@ def one_line(text: str) -> str:
     lines = text.strip().splitlines()
     assert len(lines) == 1, text
     return lines[0]
+
+
+def mavproxy_exe() -> str:
+    """MAVProxy's script beside this interpreter (the test extra), or the test is skipped."""
+    import shutil
+    import sys
+
+    import pytest
+
+    exe = shutil.which("mavproxy.py", path=str(Path(sys.executable).parent))
+    if exe is None:
+        pytest.skip("MAVProxy is in the test extra")
+    return exe
+
+
+def run_mavproxy(port: int, steps: tuple[tuple[str, float], ...], cwd: Path, *extra: str) -> str:
+    """MAVProxy 1.8.75, unmodified, listening on `port`, driven through its prompt: each step
+    types its line (none for "") and waits its seconds; then its stdin closes and it ends.
+    Returns what it printed."""
+    p = subprocess.Popen([mavproxy_exe(), f"--master=udpin:{LOCAL}:{port}", "--source-system=255", *extra],
+                         stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=cwd)
+    assert p.stdin is not None
+    try:
+        for line, wait in steps:
+            if line:
+                p.stdin.write(line + "\n")
+                p.stdin.flush()
+            time.sleep(wait)
+        return p.communicate(timeout=20)[0]  # closes its stdin: MAVProxy ends
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.communicate()
+
+
+async def until(probe: Callable[[], Any], pred: Callable[[Any], bool], timeout: float, poll: float = 0.2) -> Any:
+    """Await `probe()` until `pred` holds of its value (a MAVSDK getter, say); AssertionError
+    with the last value after `timeout` s."""
+    import asyncio
+
+    end = time.monotonic() + timeout
+    value = None
+    while time.monotonic() < end:
+        value = await probe()
+        if pred(value):
+            return value
+        await asyncio.sleep(poll)
+    raise AssertionError(f"still {value} after {timeout} s")

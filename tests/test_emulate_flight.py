@@ -5,11 +5,9 @@ integer parameters, and ground-station time that stays the wall clock whatever -
 from __future__ import annotations
 
 import asyncio
+import functools
 import math
 import re
-import shutil
-import subprocess
-import sys
 import threading
 import time
 from pathlib import Path
@@ -17,7 +15,7 @@ from typing import Any
 
 import pytest
 
-from e2e_lib import LOCAL, Start, free_port
+from e2e_lib import LOCAL, Start, free_port, mavproxy_exe, run_mavproxy, until
 
 EARTH_RADIUS = 6_378_137.0
 
@@ -29,15 +27,7 @@ def onboard(start: Start, port: int, speed: str = "1") -> Any:
     return node
 
 
-async def _until(probe: Any, pred: Any, timeout: float) -> Any:
-    end = time.monotonic() + timeout
-    value = None
-    while time.monotonic() < end:
-        value = await probe()
-        if pred(value):
-            return value
-        await asyncio.sleep(0.1)
-    raise AssertionError(f"still {value} after {timeout} s")
+_until = functools.partial(until, poll=0.1)
 
 
 def test_mavsdk_offboard_and_manual_control_fly_what_they_command(tmp_path: Path, start: Start) -> None:
@@ -126,30 +116,14 @@ def test_mavproxy_names_the_modes_sets_them_and_integer_parameters(tmp_path: Pat
     """MAVProxy 1.8.75, unmodified, as a process driven through its prompt. Its `mode NAME` (and
     `rtl`) fail before sending anything for any PX4 vehicle (pymavlink's set_mode_px4 is given the
     mode table's tuple); `long DO_SET_MODE 1 MAIN SUB` is what works, as with PX4 itself."""
-    exe = shutil.which("mavproxy.py", path=str(Path(sys.executable).parent))
-    if exe is None:
-        pytest.skip("MAVProxy is in the test extra")
+    mavproxy_exe()
     port = free_port()
     node = onboard(start, port, speed="2")
-    p = subprocess.Popen([exe, f"--master=udpin:{LOCAL}:{port}", "--source-system=255",
-                          "--cmd=set param_ftp 0"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                         stderr=subprocess.STDOUT, text=True, cwd=tmp_path)
-    assert p.stdin is not None
     steps = (("", 5.0), ("mode", 0.5), ("param set NAV_DLL_ACT 3", 1.0), ("param show NAV_DLL_ACT", 0.5),
              ("param set NAV_DLL_ACT 9", 1.0), ("arm throttle", 1.5),
              ("takeoff 4", 5.0), ("long DO_SET_MODE 1 5 0", 1.0), ("long DO_SET_MODE 1 6 0", 1.0),
              ("long DO_SET_MODE 1 4 5", 3.0))
-    try:
-        for line, wait in steps:
-            if line:
-                p.stdin.write(line + "\n")
-                p.stdin.flush()
-            time.sleep(wait)
-        out = p.communicate(timeout=20)[0]
-    finally:
-        if p.poll() is None:
-            p.kill()
-            p.communicate()
+    out = run_mavproxy(port, steps, tmp_path, "--cmd=set param_ftp 0")
     from conftest import shipped
     from ttctl.ends.onboard.autopilot import Autopilot
     from ttctl.ends.onboard.vehicle import SimVehicle

@@ -10,31 +10,20 @@ import hashlib
 import math
 import os
 import re
-import shutil
-import subprocess
-import sys
 import time
 from pathlib import Path
 from typing import Any
 
 import pytest
 
-from e2e_lib import LOCAL, Start, free_port
+from e2e_lib import LOCAL, Start, free_port, mavproxy_exe, run_mavproxy, until
 
 
 def sha(path: Path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
 
-async def _until(probe: Any, pred: Any, timeout: float) -> Any:
-    end = time.monotonic() + timeout
-    value = None
-    while time.monotonic() < end:
-        value = await probe()
-        if pred(value):
-            return value
-        await asyncio.sleep(0.2)
-    raise AssertionError(f"still {value} after {timeout} s")
+_until = until
 
 
 def onboard(start: Start, tmp_path: Path, port: int, *extra: str) -> Any:
@@ -47,33 +36,18 @@ def onboard(start: Start, tmp_path: Path, port: int, *extra: str) -> Any:
 
 
 def test_mavproxy_lists_gets_and_puts_files(tmp_path: Path, start: Start) -> None:
-    exe = shutil.which("mavproxy.py", path=str(Path(sys.executable).parent))
-    if exe is None:
-        pytest.skip("MAVProxy is in the test extra")
+    mavproxy_exe()
     port = free_port()
     node = onboard(start, tmp_path, port)
     (tmp_path / "serve" / "down.bin").write_bytes(os.urandom(60_001))
     work = tmp_path / "mavproxy"
     work.mkdir()
     (work / "up.bin").write_bytes(os.urandom(30_000))
-    p = subprocess.Popen([exe, f"--master=udpin:{LOCAL}:{port}", "--source-system=255"], stdin=subprocess.PIPE,
-                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=work)
-    assert p.stdin is not None
-    try:
-        # 3.5 s: the parameters arrive without MAVProxy waiting for an FTP answer about @PARAM
-        for line, wait in (("", 3.5), ("ftp list /", 1.0), ("ftp list /serve", 1.0),
-                           ("ftp get /serve/down.bin got.bin", 2.5), ("ftp put up.bin /inbox/up.bin", 2.5),
-                           ("ftp put up.bin /serve/no.bin", 1.5), ("ftp get /serve/../../etc/passwd pw", 1.5),
-                           ("ftp list /inbox", 1.0), ("log list", 1.0)):
-            if line:
-                p.stdin.write(line + "\n")
-                p.stdin.flush()
-            time.sleep(wait)
-        out = p.communicate(timeout=20)[0]
-    finally:
-        if p.poll() is None:
-            p.kill()
-            p.communicate()
+    # 3.5 s: the parameters arrive without MAVProxy waiting for an FTP answer about @PARAM
+    out = run_mavproxy(port, (("", 3.5), ("ftp list /", 1.0), ("ftp list /serve", 1.0),
+                              ("ftp get /serve/down.bin got.bin", 2.5), ("ftp put up.bin /inbox/up.bin", 2.5),
+                              ("ftp put up.bin /serve/no.bin", 1.5), ("ftp get /serve/../../etc/passwd pw", 1.5),
+                              ("ftp list /inbox", 1.0), ("log list", 1.0)), work)
     got = re.search(r"Received \d+ parameters", out)
     assert got and got.start() < out.index("Listing /"), out[-3000:]  # within 3.5 s, before the first command
     assert " D inbox" in out and " D serve" in out and "down.bin\t60001" in out

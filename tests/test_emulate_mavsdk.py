@@ -13,7 +13,7 @@ from typing import Any
 
 import pytest
 
-from e2e_lib import LOCAL, Start, free_port
+from e2e_lib import LOCAL, Start, free_port, until
 
 mavsdk = pytest.importorskip("mavsdk", reason="mavsdk is in the test extra")
 
@@ -25,15 +25,7 @@ def onboard(start: Start, port: int, sysid: int = 1, name: str = "onboard") -> A
     return node
 
 
-async def _until(probe: Any, pred: Any, timeout: float) -> Any:
-    end = time.monotonic() + timeout
-    value = None
-    while time.monotonic() < end:
-        value = await probe()
-        if pred(value):
-            return value
-        await asyncio.sleep(0.2)
-    raise AssertionError(f"still {value} after {timeout} s")
+_until = until
 
 
 def test_mavsdk_flies_the_emulated_vehicle(tmp_path: Path, start: Start) -> None:

@@ -8,16 +8,13 @@ from __future__ import annotations
 
 import asyncio
 import math
-import shutil
-import subprocess
-import sys
 import time
 from pathlib import Path
 from typing import Any
 
 import pytest
 
-from e2e_lib import LOCAL, Start, free_port
+from e2e_lib import LOCAL, Start, free_port, mavproxy_exe, run_mavproxy
 from test_emulate_mavsdk import _until, onboard
 from test_emulate_onboard import command, gcs, wait_for
 
@@ -216,9 +213,7 @@ def test_mavproxy_sets_the_current_waypoint(tmp_path: Path, start: Start) -> Non
     """MAVProxy 1.8.75: `wp load` uploads, `wp set 2` (DO_SET_MISSION_CURRENT) is acknowledged and
     MISSION_CURRENT says 2; the mission then starts at item 2 (MISSION_START's param1 would say
     where to start, as on PX4: mode AUTO.MISSION continues from the current item)."""
-    exe = shutil.which("mavproxy.py", path=str(Path(sys.executable).parent))
-    if exe is None:
-        pytest.skip("MAVProxy is in the test extra")
+    mavproxy_exe()
     lat0, lon0 = 46.0503, 14.4686
     rows = ["QGC WPL 110", f"0\t1\t0\t16\t0\t0\t0\t0\t{lat0}\t{lon0}\t295\t1"]
     for i, (n, e) in enumerate(((6, 0), (6, 6), (0, 6)), start=1):
@@ -228,22 +223,8 @@ def test_mavproxy_sets_the_current_waypoint(tmp_path: Path, start: Start) -> Non
     node = start("onboard", "emulate", "onboard", "--gcs", f"udpout:{LOCAL}:{port}", "--listen", f"udpin:{LOCAL}:0",
                  "--no-entry-points", "--speed", "4")
     node.wait_for("onboard 1:")
-    p = subprocess.Popen([exe, f"--master=udpin:{LOCAL}:{port}", "--source-system=255"], stdin=subprocess.PIPE,
-                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=tmp_path)
-    assert p.stdin is not None
-    try:
-        for line, wait in (("", 6.0), ("wp load mission.txt", 3.0), ("wp set 2", 2.0), ("arm throttle", 1.0),
-                           ("long DO_SET_MODE 129 4 4", 8.0)):  # PX4's AUTO.MISSION: from the current item
-            time.sleep(wait if not line else 0)
-            if line:
-                p.stdin.write(line + "\n")
-                p.stdin.flush()
-                time.sleep(wait)
-        out = p.communicate(timeout=20)[0]
-    finally:
-        if p.poll() is None:
-            p.kill()
-            p.communicate()
+    out = run_mavproxy(port, (("", 6.0), ("wp load mission.txt", 3.0), ("wp set 2", 2.0), ("arm throttle", 1.0),
+                              ("long DO_SET_MODE 129 4 4", 8.0)), tmp_path)  # PX4's AUTO.MISSION: from the current item
     assert "Loaded 4 waypoint" in out or "Sent all 4 waypoints" in out, out[-2000:]
     assert "waypoint 2" in out, out[-2000:]
     assert "mission resumed at item 2" in node.stderr and "mission complete" in node.stderr, node.stderr

@@ -11,7 +11,7 @@ from typing import Any
 
 import pytest
 
-from e2e_lib import LOCAL, Start, free_port
+from e2e_lib import LOCAL, Start, free_port, mavproxy_exe, run_mavproxy
 
 SPEED = "4"  # the vehicle's clock runs 4x faster than the wall clock
 
@@ -196,32 +196,14 @@ def test_mission_upload_download_and_flight(gcs: tuple[Any, Any]) -> None:
 
 def test_mavproxy_connects_fetches_parameters_arms_and_takes_off(tmp_path: Path, start: Start) -> None:
     """MAVProxy 1.8.75, unmodified, as a process driven through its command prompt."""
-    import shutil
-    import subprocess
-    import sys
 
-    exe = shutil.which("mavproxy.py", path=str(Path(sys.executable).parent))
-    if exe is None:
-        pytest.skip("MAVProxy is in the test extra")
+    mavproxy_exe()
     port = free_port()
     node = start("onboard", "emulate", "onboard", "--gcs", f"udpout:{LOCAL}:{port}", "--listen", f"udpin:{LOCAL}:0",
                  "--no-entry-points", "--speed", "2")
     node.wait_for("onboard 1:")
-    p = subprocess.Popen([exe, f"--master=udpin:{LOCAL}:{port}", "--source-system=255"], stdin=subprocess.PIPE,
-                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=tmp_path)
-    assert p.stdin is not None
-    try:
-        for line, wait in (("", 6.0), ("arm throttle", 2.0), ("takeoff 5", 7.0), ("status GLOBAL_POSITION_INT", 1.0)):
-            time.sleep(wait if not line else 0)
-            if line:
-                p.stdin.write(line + "\n")
-                p.stdin.flush()
-                time.sleep(wait)
-        out = p.communicate(timeout=20)[0]  # closes its stdin: MAVProxy ends
-    finally:
-        if p.poll() is None:
-            p.kill()
-            p.communicate()
+    out = run_mavproxy(port, (("", 6.0), ("arm throttle", 2.0), ("takeoff 5", 7.0),
+                              ("status GLOBAL_POSITION_INT", 1.0)), tmp_path)
     assert "Detected vehicle 1:1" in out and "GPS lock" in out
     from conftest import shipped
     from ttctl.ends.onboard.autopilot import Autopilot

@@ -11,7 +11,7 @@ from typing import Any
 
 import pytest
 
-from e2e_lib import LOCAL, Start, free_port
+from e2e_lib import LOCAL, Start, free_port, mavproxy_exe, run_mavproxy
 from test_emulate_onboard import command, gcs, wait_for
 
 __all__ = ["gcs"]  # the fixture, shared
@@ -209,32 +209,14 @@ def test_mavproxy_flies_over_a_signed_link(tmp_path: Path, start: Start) -> None
     """MAVProxy 1.8.75 with `signing key PASSPHRASE` arms a vehicle started with --gcs-key holding
     the same passphrase; once it stops signing (`signing remove`) its disarm is ignored."""
     import re
-    import shutil
-    import subprocess
-    import sys
-
-    exe = shutil.which("mavproxy.py", path=str(Path(sys.executable).parent))
-    if exe is None:
-        pytest.skip("MAVProxy is in the test extra")
+    mavproxy_exe()
     (tmp_path / "gcs.key").write_text("rehearsal\n")
     port = free_port()
     node = start("onboard", "emulate", "onboard", "--gcs", f"udpout:{LOCAL}:{port}", "--listen", f"udpin:{LOCAL}:0",
                  "--no-entry-points", "--gcs-key", str(tmp_path / "gcs.key"))
     node.wait_for("onboard 1:")
-    p = subprocess.Popen([exe, f"--master=udpin:{LOCAL}:{port}", "--source-system=255"], stdin=subprocess.PIPE,
-                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=tmp_path)
-    assert p.stdin is not None
-    try:
-        for line, wait in (("signing key rehearsal", 3.0), ("arm throttle", 1.5), ("status HEARTBEAT", 0.5),
-                           ("signing remove", 0.5), ("disarm", 1.5), ("status HEARTBEAT", 0.5)):
-            p.stdin.write(line + "\n")
-            p.stdin.flush()
-            time.sleep(wait)
-        out = p.communicate(timeout=20)[0]
-    finally:
-        if p.poll() is None:
-            p.kill()
-            p.communicate()
+    out = run_mavproxy(port, (("signing key rehearsal", 3.0), ("arm throttle", 1.5), ("status HEARTBEAT", 0.5),
+                              ("signing remove", 0.5), ("disarm", 1.5), ("status HEARTBEAT", 0.5)), tmp_path)
     assert "COMPONENT_ARM_DISARM: ACCEPTED" in out, out[-2000:]
     modes = [int(m) for m in re.findall(r"HEARTBEAT \{type : 2, autopilot : \d+, base_mode : (\d+)", out)]
     assert len(modes) == 2 and all(m & 128 for m in modes), out[-2000:]  # armed, and still armed
