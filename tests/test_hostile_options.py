@@ -20,6 +20,7 @@ import io
 import os
 import re
 import resource
+import signal
 import subprocess
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -174,11 +175,12 @@ def _run_case(cmdline: list[str], tmp: Path, timeout: float = 10) -> tuple[int |
     args = [str(tmp) + a[5:] if a.startswith("{tmp}") else a for a in cmdline]
     t0 = time.monotonic()
     p = subprocess.Popen(ttctl_cmd() + args, cwd=tmp, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                         stdin=subprocess.DEVNULL, preexec_fn=_bounded)
+                         stdin=subprocess.DEVNULL, preexec_fn=_bounded, start_new_session=True)
     try:
         out, err = p.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        p.kill()
+    except subprocess.TimeoutExpired:  # an accepted value runs: stop it and what it started (bench integrity's ends)
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(p.pid, signal.SIGKILL)
         out, err = p.communicate()
         return None, out, err, time.monotonic() - t0
     return p.returncode, out, err, time.monotonic() - t0

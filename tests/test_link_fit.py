@@ -311,3 +311,18 @@ def test_unknown_profile_in_a_file_names_the_file(tmp_path: Path) -> None:
         load_profile("b", str(path))
     with pytest.raises(Fail, match="no 'conditions'"):
         F.load_measurement(str(write(tmp_path / "m.json", {"uplink": {}})))
+
+
+def test_a_negative_clock_offset_is_a_measurement_not_an_error(tmp_path: Path) -> None:
+    """The two ends' clock offset has a sign (CI: `bench link` measured -0.02 ms and `link fit`
+    refused it as "a time cannot be negative"); a negative round trip is still refused."""
+    rep = _good(tmp_path)
+    rep["latency"] = {"echoes": 20, "sent": 20, "rtt_p50_ms": 90.0, "rtt_p95_ms": 95.0, "rtt_min_ms": 85.0,
+                      "owd_rtt_half_ms": 45.0, "clock_offset_ms": -0.02}
+    good = tmp_path / "m.json"
+    good.write_text(json.dumps(rep))
+    proc = run_ttctl("link", "fit", str(good), "-o", str(tmp_path / "out.toml"))
+    assert proc.returncode == 0, proc.stderr
+    rep["latency"]["rtt_min_ms"] = -1.0
+    good.write_text(json.dumps(rep))
+    one_line_exit_2(run_ttctl("link", "fit", str(good), "-o", str(tmp_path / "out2.toml")), "latency.rtt_min_ms is -1")

@@ -107,7 +107,7 @@ def load_measurement(path: str) -> Measurement:
     if lat is not None and not (lat["rtt_p50_ms"] > 0 and lat["echoes"] >= 0):
         raise _bad(path, f"latency.rtt_p50_ms is {lat['rtt_p50_ms']:g}: a round trip takes a positive time")
     for k, v in (lat or {}).items():
-        if k.endswith("_ms") and _number(v) and v < 0:
+        if k.endswith("_ms") and k != "clock_offset_ms" and _number(v) and v < 0:  # an offset has a sign
             raise _bad(path, f"latency.{k} is {v:g}: a time cannot be negative")
     for d in ("uplink", "downlink"):
         rows = report[d].get("rows")
