@@ -8,8 +8,10 @@
   an unreadable file: one line `ttctl: error: ...`, exit 2, within seconds, nothing left behind. Real
   processes, several at a time.
 - Every number option of every command gets one of negative, zero, huge (a different one per
-  option, rotating with the test's seed) and must never crash: an exit 2 is one line, and an
-  accepted value runs (it is stopped after a moment) or ends with its documented status.
+  option, rotating with the test's seed) and must never crash: a negative is refused (exit 2,
+  one `ttctl: error:` line) unless it is a seed; an exit 2 is one error line; an accepted value
+  runs (it is stopped after a moment) or ends with a documented status (0; 1 with a last
+  `ttctl: error:` line saying why).
 - `read_capped` stops at its cap while reading, not only by what stat says.
 """
 
@@ -268,6 +270,18 @@ def _number_cases(seed: int) -> list[tuple[str, str, list[str]]]:
     return cases
 
 
+SIGNED = {"--seed"}  # the only number options a negative value means something for (a random seed)
+
+
+def _one_error_line(err: str, at_end: bool = False) -> bool:
+    """Exit 2: exactly one `ttctl: error: ...` line (warnings aside). Exit 1 (`at_end`): the run's
+    last line (warnings aside) is ttctl's error saying why, not a stray library message."""
+    lines = [ln for ln in err.strip().splitlines() if not ln.startswith("ttctl: warning: ")]
+    if at_end:
+        return bool(lines) and lines[-1].startswith("ttctl: error: ")
+    return len(lines) == 1 and lines[0].startswith("ttctl: error: ")
+
+
 def test_every_number_option_takes_negative_zero_or_huge_without_crashing(tmp_path: Path) -> None:
     seed = int(os.environ.get("TTCTL_HOSTILE_SEED", time.strftime("%j")))  # another third every day
     cases = _number_cases(seed)
@@ -290,8 +304,14 @@ def test_every_number_option_takes_negative_zero_or_huge_without_crashing(tmp_pa
         text = out + err
         if "Traceback" in text or "internal error" in text:
             bad.append(f"{name} {opt} {value}: crashed: {text.strip()[-300:]!r}")
-        elif code == 2 and len([ln for ln in err.strip().splitlines() if not ln.startswith("ttctl: warning: ")]) != 1:
+        elif code not in (None, 0, 1, 2):  # the exit statuses the README documents (130 is Ctrl-C's)
+            bad.append(f"{name} {opt} {value}: exit {code}, not a documented status: {text.strip()[-300:]!r}")
+        elif code == 2 and not _one_error_line(err):
             bad.append(f"{name} {opt} {value}: exit 2 but not one line: {err.strip()[:300]!r}")
+        elif value == "-1" and opt not in SIGNED and code != 2:  # no count, rate, time or size is negative
+            bad.append(f"{name} {opt} -1: taken (exit {code}), not refused in one line with exit 2")
+        elif code == 1 and not _one_error_line(err, at_end=True):  # ran and failed: it says why, last
+            bad.append(f"{name} {opt} {value}: exit 1 without a final `ttctl: error:` line: {err.strip()[-300:]!r}")
     assert not bad, f"seed {seed}:\n" + "\n".join(bad)
 
 

@@ -88,7 +88,11 @@ def bench_latency(
     else:
         lat.print_report(rep)
     broken = [p for p in rep["phases"] if p["note"] and not p["note"].startswith("skipped")]
-    if broken or not all(c["ok"] for c in rep["checks"]):
+    missed = [c for c in rep["checks"] if not c["ok"]]
+    if broken or missed:  # the verdict, last, on stderr too (as the other benches' misses)
+        why = [f"{c['check']} {c['value']} ms over its ceiling {c['ceiling']} ms" for c in missed]
+        why += [f"{p['phase']}: {p['note']}" for p in broken]
+        err(f"error: {'; '.join(why)}")
         raise typer.Exit(1)
 
 

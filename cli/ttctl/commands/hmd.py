@@ -90,6 +90,8 @@ def _check(o: DumpOptions) -> None:
         raise Fail("--stream-hz must be positive")
     if o.rate is not None and not o.rate > 0:  # checked with or without --to: a bad value is never silently unused
         raise Fail(f"--rate must be a positive number of bytes per second, not {o.rate:g}")
+    if o.distance < 0:  # with or without --to, as --rate
+        raise Fail("--distance must not be negative")
     if o.to is None and (o.rate is not None or o.profile is not None or o.profile_file is not None):
         raise Fail("--rate, --profile and --profile-file pace the link: they apply with --to")
 
