@@ -317,10 +317,8 @@ class FtpServer:
             raise FtpError(NO_SESSIONS)
         return wanted
 
-    def _open_read(self, where: tuple[str, str], peer: Hashable, wanted: int) -> tuple[int, int]:
-        if not where[1]:
-            raise FtpError(FAIL_ERRNO, errno.EISDIR)
-        sid = self._new_session(wanted)
+    def _open_regular(self, where: tuple[str, str]) -> tuple[int, os.stat_result]:
+        """A descriptor on a regular file to read (never blocking on a FIFO), and its stat."""
         path = self._real(where)
         try:
             fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_CLOEXEC)
@@ -330,6 +328,13 @@ class FtpServer:
         if not stat.S_ISREG(st.st_mode):
             os.close(fd)
             raise FtpError(FAIL_ERRNO, errno.EISDIR if stat.S_ISDIR(st.st_mode) else errno.EINVAL)
+        return fd, st
+
+    def _open_read(self, where: tuple[str, str], peer: Hashable, wanted: int) -> tuple[int, int]:
+        if not where[1]:
+            raise FtpError(FAIL_ERRNO, errno.EISDIR)
+        sid = self._new_session(wanted)
+        fd, st = self._open_regular(where)
         self.sessions[sid] = Session(fd, peer, writable=False, last=self.now, size=st.st_size)
         return sid, st.st_size
 
@@ -347,15 +352,7 @@ class FtpServer:
         """The file's CRC32 now, or, for a file over CRC_STEP bytes, from tick() when computed."""
         if not where[1]:
             raise FtpError(FAIL_ERRNO, errno.EISDIR)
-        path = self._real(where)
-        try:
-            fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_CLOEXEC)
-        except OSError as e:
-            raise _oserror(e) from None
-        st = os.fstat(fd)
-        if not stat.S_ISREG(st.st_mode):
-            os.close(fd)
-            raise FtpError(FAIL_ERRNO, errno.EISDIR if stat.S_ISDIR(st.st_mode) else errno.EINVAL)
+        fd, st = self._open_regular(where)
         job = CrcJob(fd, st.st_size, key[0], head)
         if st.st_size > CRC_STEP:
             if len(self._jobs) >= MAX_CRC_JOBS:
