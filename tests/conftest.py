@@ -103,3 +103,16 @@ def cpp_nodes() -> Iterator[Any]:
     for n in started:
         if n.p.poll() is None:
             n.kill()
+
+
+# Under pytest-xdist (`--dist loadgroup`, the README's test command) each test file runs whole on
+# one worker (its module fixtures, builds and peers built once), except the files that measure a
+# live link against a bound: those share one group, so no two of them measure at the same time.
+MEASURING = {"test_link_fit_live.py", "test_bench_live.py", "test_bench_latency.py", "test_java_transfer.py",
+             "test_cpp_node_transfer.py", "test_udp_forward.py"}
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    for item in items:
+        name = item.path.name
+        item.add_marker(pytest.mark.xdist_group("measuring" if name in MEASURING else name))
