@@ -336,11 +336,11 @@ def _burstiness(runs: list[RunRow], direction: str, notes: list[str]) -> tuple[s
     lam = _best_lam(runs, p)
     mean = 1.0 / ((1.0 - p) * (1.0 - lam))
     ratio = 2.0 * (_log_likelihood(runs, p, lam) - _log_likelihood(runs, p, 0.0))
-    spacing = f"probes {step:.2f} slots apart on average"
+    spacing = f"probes {step:.2f} slots apart"
     if ratio > 4.0 and mean > 1.2:
         notes.append(f"{direction}: loss comes in bursts: mean run {seen:.2f} packets over {n} runs, {spacing} "
                      f"(random loss would give {expect:.2f} +- {se:.2f}): Gilbert-Elliott, burst_mean {mean:.2f} "
-                     f"slots (a full packet's time each)")
+                     f"slots")
         return "burst", mean
     notes.append(f"{direction}: loss looks random: mean run {seen:.2f} packets over {n} runs, {spacing} (random "
                  f"would give {expect:.2f} +- {se:.2f})")
