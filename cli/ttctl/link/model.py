@@ -10,8 +10,9 @@ Bursts live in time, not in packets: the Gilbert-Elliott chain steps once per *s
 the radio needs for one full packet (service_time(mtu)), and between two packets it advances by
 the slots that elapsed, so a burst lasts burst_mean slots whether the flow is saturated or one
 ack a second. On a saturated link a slot is a packet, so burst_mean is still "the mean run of
-lost packets" there (the Gilbert model of E. N. Gilbert, "Capacity of a burst-noise channel",
-Bell System Technical Journal 39(5), 1960, in its usual two-state parametrisation).
+lost packets" there. (The two-state burst-noise channel of E. N. Gilbert, "Capacity of a
+burst-noise channel", Bell System Technical Journal 39(5), 1960, here with every packet lost in
+the bad state and none in the good.)
 """
 
 from __future__ import annotations
