@@ -106,6 +106,31 @@ def test_burst_loss_gives_longer_loss_runs_than_random(start: Start) -> None:
     assert burst["loss_run_max"] > rnd["loss_run_max"]
 
 
+def test_relay_bursts_last_a_time_not_a_number_of_packets(start: Start) -> None:
+    """Bursts of mean 8 slots (8 x 25 ms at 4000 B/s) at 20 % loss: probes 0.4 slots apart lose
+    long runs, probes 10 slots apart (a command or an ack now and then) mostly lose one at a time,
+    as the chain's memory after 10 slots says (runs of mean 1.5; the relay once stepped the
+    chain per packet, and gave the sparse flow runs of 8 too)."""
+    _, sport = server(start)
+    ports = [relay(start, f"relay-{k}", sport, "--loss", "0.2", "--loss-model", "burst", "--burst-mean", "8",
+                   "--seed", str(k)) for k in (11, 12)]
+    runs = {"dense": ("--sizes", "20", "--count", "1000", "--rate", str(RATE // 2)),  # 10 ms apart
+            "sparse": ("--sizes", "100", "--count", "120", "--rate", str(RATE // 10))}  # 250 ms apart
+    procs = {name: subprocess.Popen(ttctl_cmd() + ["bench", "link", "--to", f"udpout:{LOCAL}:{port}", "--json",
+                                                   "--direction", "up", *args],
+                                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+             for (name, args), port in zip(runs.items(), ports, strict=True)}
+    rows = {}
+    for name, p in procs.items():
+        out, err = p.communicate(timeout=90)
+        assert p.returncode == 0, err
+        rows[name] = json.loads(out)["uplink"]["rows"][0]
+    assert rows["dense"]["loss_run_mean"] >= 4.0, rows
+    assert rows["sparse"]["loss_runs"] >= 5 and rows["sparse"]["loss_run_mean"] <= 2.5, rows
+    # the loss is the loss whatever the spacing (the dense flow sees few, long bursts: wider)
+    assert 0.08 <= rows["sparse"]["loss"] <= 0.35 and 0.05 <= rows["dense"]["loss"] <= 0.45, rows
+
+
 @pytest.mark.parametrize("args, message", [
     (("--sizes", "10,101"), "101 is not a probe size"),
     (("--sizes", "5"), "5 is not a probe size"),

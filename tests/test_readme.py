@@ -270,6 +270,7 @@ def _section(full: str) -> str:
 # claims the README and --help both make, in words each must carry (and words neither may)
 CLAIMS = [
     ("ttctl link relay", "where downlink packets go", ["valid", "frame", "lately"], ["address last heard"]),
+    ("ttctl link relay", "what a burst is counted in", ["slot", "full packet"], ["burst-mean` packets"]),
     ("ttctl send-file", "what --timeout counts", ["without progress"], ["without a word"]),
     ("ttctl bench integrity", "what --seed reproduces", ["plan"], ["the same seed, the same plan)"]),
 ]

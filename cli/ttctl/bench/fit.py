@@ -20,11 +20,19 @@ Gilbert-Elliott bursts. Each is read off the measurement where it shows:
   the base's without such rows.
 - loss per distance: 1 - received / what the buffer lets through, the latter from replaying the
   rows with no loss (so overflow is not counted as the radio's loss).
-- bursts: in rows that did not saturate (overflow drops are periodic, not the radio's), the mean
-  length of a run of lost packets. Random loss at rate p gives 1 / (1 - p); a mean above that by
-  more than two standard errors, over at least MIN_RUNS runs, makes the loss Gilbert-Elliott with
-  burst_mean = that mean. A direction with fewer runs is judged on both directions' together
-  (the same radio).
+- bursts: in rows that did not saturate (overflow drops are periodic, not the radio's), the runs
+  of lost packets. The model's bursts are in time (ttctl.link.model): its Gilbert-Elliott chain
+  steps once per slot, one full packet's time at the fitted rate, and burst_mean is the mean
+  burst in slots (the mean run of lost packets on a saturated link). A row's probes go out
+  n = interval / slot slots apart (interval: size / pace_Bps up, 1 / rate_hz down), so a lost
+  probe's successor is lost with q(n) = p + (1 - p) lam^n, lam = 1 - b / (1 - p), b = 1 /
+  burst_mean: a run of lost probes is geometric with mean 1 / (1 - q(n)), and a row of L lost
+  probes in R runs shows L - R continuations and R ends. lam is the maximum-likelihood value over
+  the rows together (each at its own n), so runs measured at any probe spacing convert to slots;
+  burst_mean = 1 / ((1 - p) (1 - lam)). Random loss is lam = 0 (runs of mean 1 / (1 - p)); the
+  loss is Gilbert-Elliott when lam > 0 is better by a likelihood ratio over 4 (about two standard
+  errors), over at least MIN_RUNS runs, and burst_mean is over 1.2. A direction with fewer runs is
+  judged on both directions' together (the same radio), each row at its own direction's slot.
 
 Then every measurement is replayed on the fitted profile and compared figure by figure
 (ttctl.bench.replay.compare): those are the residuals.
@@ -246,7 +254,7 @@ def fit_queue(ms: list[Measurement], direction: str, up: DirectionProfile, down:
 
 
 def fit_loss(ms: list[Measurement], direction: str, prof: Profile, notes: list[str],
-             other_runs: tuple[int, int, int] | None) -> DirectionProfile:
+             other_runs: list[RunRow] | None) -> DirectionProfile:
     """Stage 4: loss per distance (received over what the buffer lets through) and bursts."""
     rows = _rows(ms, direction)
     mine = prof.direction(direction)
@@ -259,44 +267,83 @@ def fit_loss(ms: list[Measurement], direction: str, prof: Profile, notes: list[s
         got = sum(int(r["received"]) for _, r in drows)
         p = min(0.999, max(0.0, 1.0 - got / through)) if through else 1.0
         loss_pts.append([d, round(p, 4)])
-    runs = _runs(rows)
-    if (runs is None or runs[2] < MIN_RUNS) and other_runs is not None:
+    runs = _runs(ms, direction, prof)
+    n_mine = sum(r[2] for r in runs)
+    if n_mine < MIN_RUNS and other_runs:
         # the same radio both ways: judge on both directions' runs together
-        sent0, lost0, n0 = runs or (0, 0, 0)
-        sent1, lost1, n1 = other_runs
-        runs = (sent0 + sent1, lost0 + lost1, n0 + n1)
-        notes.append(f"{direction}: {n0} loss runs in rows that did not saturate: bursts judged on both "
-                     f"directions' ({n0 + n1} runs; the same radio)")
+        notes.append(f"{direction}: {n_mine} loss runs in rows that did not saturate: bursts judged on both "
+                     f"directions' ({n_mine + sum(r[2] for r in other_runs)} runs; the same radio)")
+        runs = runs + other_runs
     model, mean = _burstiness(runs, direction, notes)
     return dataclasses.replace(mine, loss=loss_pts, loss_model=model, burst_mean=round(mean, 2))
 
 
-def _runs(rows: list[tuple[Measurement, dict[str, Any]]]) -> tuple[int, int, int] | None:
-    """(sent, lost, loss runs) pooled over unsaturated rows, None without any."""
-    free = [r for _, r in rows if not R.saturated(r) and "loss_runs" in r]
-    if not free:
-        return None
-    sent = sum(int(r["sent"]) for r in free)
-    lost = sum(int(r["sent"]) - int(r["received"]) for r in free)
-    return sent, lost, sum(int(r["loss_runs"]) for r in free)
+RunRow = tuple[int, int, int, float]  # sent, lost, loss runs, slots between probes
 
 
-def _burstiness(runs: tuple[int, int, int] | None, direction: str, notes: list[str]) -> tuple[str, float]:
-    if runs is None or runs[2] < MIN_RUNS:
+def _runs(ms: list[Measurement], direction: str, prof: Profile) -> list[RunRow]:
+    """Per unsaturated row: (sent, lost, loss runs, probe spacing in slots of `prof`'s rate)."""
+    dp = prof.direction(direction)
+    out = []
+    for m, r in _rows(ms, direction):
+        if R.saturated(r) or "loss_runs" not in r:
+            continue
+        interval = float(r["size"]) / float(m.report["uplink"]["pace_Bps"]) if direction == "up" \
+            else 1.0 / float(r["rate_hz"])
+        slot = dp.service_time(prof.mtu, _dist(m))
+        out.append((int(r["sent"]), int(r["sent"]) - int(r["received"]), int(r["loss_runs"]),
+                    max(interval, 1e-9) / slot))
+    return out
+
+
+def _log_likelihood(runs: list[RunRow], p: float, lam: float) -> float:
+    total = 0.0
+    for _, lost, n, step in runs:
+        q = min(1.0 - 1e-12, max(1e-12, p + (1.0 - p) * lam ** step))
+        total += (lost - n) * math.log(q) + n * math.log(1.0 - q)
+    return total
+
+
+def _best_lam(runs: list[RunRow], p: float) -> float:
+    """The lam in [0, 1) that explains the runs best (a grid, then a golden-section refinement
+    around its best point; the likelihood is smooth and single-peaked in lam)."""
+    grid = [k / 200 for k in range(200)]
+    best = max(grid, key=lambda x: _log_likelihood(runs, p, x))
+    lo, hi = max(0.0, best - 0.005), min(0.9999, best + 0.005)
+    g = (math.sqrt(5) - 1) / 2
+    for _ in range(40):
+        a, b = hi - g * (hi - lo), lo + g * (hi - lo)
+        if _log_likelihood(runs, p, a) < _log_likelihood(runs, p, b):
+            lo = a
+        else:
+            hi = b
+    mid = (lo + hi) / 2
+    return mid if _log_likelihood(runs, p, mid) >= _log_likelihood(runs, p, best) else best
+
+
+def _burstiness(runs: list[RunRow], direction: str, notes: list[str]) -> tuple[str, float]:
+    n = sum(r[2] for r in runs)
+    if n < MIN_RUNS:
         notes.append(f"{direction}: too few losses to tell bursts from random loss (need {MIN_RUNS} loss runs in "
                      f"rows that did not saturate): random")
         return "random", 3.0
-    sent, lost, n = runs
+    sent, lost = sum(r[0] for r in runs), sum(r[1] for r in runs)
     p = lost / sent
-    mean = lost / n
+    seen = lost / n
     expect = 1 / (1 - p)
     se = math.sqrt(p / (1 - p) ** 2 / n)  # a run's length is geometric under random loss
-    if mean > expect + 2 * se and mean > 1.2:
-        notes.append(f"{direction}: loss comes in bursts: mean run {mean:.2f} packets over {n} runs (random loss "
-                     f"would give {expect:.2f} +- {se:.2f}): Gilbert-Elliott, burst_mean {mean:.2f}")
+    step = sum(r[3] * r[2] for r in runs) / n
+    lam = _best_lam(runs, p)
+    mean = 1.0 / ((1.0 - p) * (1.0 - lam))
+    ratio = 2.0 * (_log_likelihood(runs, p, lam) - _log_likelihood(runs, p, 0.0))
+    spacing = f"probes {step:.2f} slots apart"
+    if ratio > 4.0 and mean > 1.2:
+        notes.append(f"{direction}: loss comes in bursts: mean run {seen:.2f} packets over {n} runs, {spacing} "
+                     f"(random loss would give {expect:.2f} +- {se:.2f}): Gilbert-Elliott, burst_mean {mean:.2f} "
+                     f"slots")
         return "burst", mean
-    notes.append(f"{direction}: loss looks random: mean run {mean:.2f} packets over {n} runs (random would give "
-                 f"{expect:.2f} +- {se:.2f})")
+    notes.append(f"{direction}: loss looks random: mean run {seen:.2f} packets over {n} runs, {spacing} (random "
+                 f"would give {expect:.2f} +- {se:.2f})")
     return "random", 3.0
 
 
@@ -346,7 +393,7 @@ def fit(ms: list[Measurement], base: Profile, name: str) -> Fit:
     labels = "; ".join(sorted({m.label for m in ms if m.label})) or "no label"
     desc = f"fitted by ttctl link fit from {len(ms)} measurement(s) ({labels}); base {base.name}"
     trial = Profile(name, desc, base.mtu, up, down)
-    up_runs, down_runs = _runs(_rows(ms, "up")), _runs(_rows(ms, "down"))
+    up_runs, down_runs = _runs(ms, "up", trial), _runs(ms, "down", trial)
     prof = Profile(name, desc, base.mtu, fit_loss(ms, "up", trial, notes, down_runs),
                    fit_loss(ms, "down", trial, notes, up_runs))
     result = Fit(prof, notes)

@@ -82,7 +82,9 @@ def bench_transfer(
     distance: Annotated[float, typer.Option(help="Distance in metres.", min=0)] = 10.0,
     size: Annotated[int, typer.Option("--size", help="File size in bytes.", min=1, max=1 << 26)] = 65536,
     seeds: Annotated[int, typer.Option(help="Seeds per case; rows report the median.", min=1, max=99)] = 9,
-    protocols: Annotated[str, typer.Option(help="Comma-separated: ttctl,thesis,mavftp.")] = "ttctl,thesis,mavftp",
+    protocols: Annotated[str, typer.Option(help="Comma-separated: ttctl,ttctl-signed,thesis,mavftp (ttctl-signed: "
+                                                "MAVLink 2 signing at both ends).")] \
+    = "ttctl,ttctl-signed,thesis,mavftp",
     quick: Annotated[bool, typer.Option("--quick", help="Two cases only (a smoke test).")] = False,
     plot: Annotated[Path | None, typer.Option(help=f"Write a PNG of efficiency against loss ({PLOT_EXTRA}).")] = None,
     json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,

@@ -31,8 +31,11 @@ def link_relay(
     loss_model: Annotated[str | None, typer.Option("--loss-model", help="random or burst (Gilbert-Elliott); "
                                                                         "default: the profile's (random in ttctl's "
                                                                         "own).", show_default=False)] = None,
-    burst_mean: Annotated[float | None, typer.Option("--burst-mean", help="With burst loss: the mean length of a "
-                                                                          "run of lost packets (default: the "
+    burst_mean: Annotated[float | None, typer.Option("--burst-mean", help="With burst loss: the mean burst, in "
+                                                                          "slots (a full packet's time on the "
+                                                                          "radio): the mean run of lost packets on "
+                                                                          "a saturated link; a sparse flow sees "
+                                                                          "the same burst in time (default: the "
                                                                           "profile's, 3).", show_default=False)]
     = None,
     corrupt: Annotated[float, typer.Option("--corrupt", help="Probability that a packet has bytes flipped.")] = 0.0,

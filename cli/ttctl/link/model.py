@@ -5,6 +5,14 @@ to a full buffer is dropped silently), drained by the radio at the profile's rat
 pacing, then loss (random or Gilbert-Elliott bursts), corruption, duplication, reordering and
 outages, then a fixed latency. Everything is computed from the packet's submission time, so
 the same object serves the virtual clock (tests, benchmarks) and the real-time relay.
+
+Bursts live in time, not in packets: the Gilbert-Elliott chain steps once per *slot*, the time
+the radio needs for one full packet (service_time(mtu)), and between two packets it advances by
+the slots that elapsed, so a burst lasts burst_mean slots whether the flow is saturated or one
+ack a second. On a saturated link a slot is a packet, so burst_mean is still "the mean run of
+lost packets" there. (The two-state burst-noise channel of E. N. Gilbert, "Capacity of a
+burst-noise channel", Bell System Technical Journal 39(5), 1960, here with every packet lost in
+the bad state and none in the good.)
 """
 
 from __future__ import annotations
@@ -50,7 +58,7 @@ class DirectionProfile:
     advertised_Bps: float | None = None
     feedback: bool = False
     loss_model: str = "random"  # random | burst (Gilbert-Elliott)
-    burst_mean: float = 3.0  # with burst: the mean length of a run of lost packets
+    burst_mean: float = 3.0  # with burst: the mean run of lost packets on a saturated link, in slots (full packets)
 
     def check(self, where: str) -> None:
         """Refuse values the model cannot run with, naming the field (`where` says which
@@ -194,7 +202,7 @@ class Impairments:
 
     loss: float | None = None
     loss_model: str | None = None  # random | burst (Gilbert-Elliott); None: the profile's
-    burst_mean: float | None = None  # mean length of a loss burst, in packets; None: the profile's
+    burst_mean: float | None = None  # mean loss burst, in slots (full packets' times); None: the profile's
     corrupt: float = 0.0  # probability that a delivered packet has bytes flipped
     duplicate: float = 0.0  # probability that a delivered packet arrives twice
     reorder: float = 0.0  # probability that a packet is held back behind later ones
@@ -252,6 +260,7 @@ class Channel:
         self._busy_until = 0.0
         self._starts: list[float] = []  # service start times of packets waiting in the buffer
         self._bad = False  # Gilbert-Elliott state
+        self._state_at: float | None = None  # when it was last drawn (None: never; the chain is stationary)
         self.loss_p = self.imp.loss if self.imp.loss is not None else self.dir.loss_at(distance_m)
         self.loss_model = self.imp.loss_model or self.dir.loss_model
         self.burst_mean = self.imp.burst_mean or self.dir.burst_mean
@@ -271,14 +280,40 @@ class Channel:
         callback would report)."""
         return self._busy_until
 
-    def _lost(self) -> bool:
+    def slot(self) -> float:
+        """The Gilbert-Elliott chain's time step: one full packet's time on the radio."""
+        return self.service_time(self.profile.mtu)
+
+    def bad_probability(self, elapsed: float) -> float:
+        """P(bad) `elapsed` seconds after the state was last drawn, given that state: the
+        chain's n-step transition with n = elapsed / slot (n need not be whole; never drawn:
+        the stationary share, the loss)."""
+        p = self.loss_p
+        if self._state_at is None:
+            return p
+        to_good = 1.0 / self.burst_mean  # b = P(bad -> good) per slot
+        to_bad = min(1.0, p * to_good / (1.0 - p))  # a = P(good -> bad), so that a / (a + b) = p
+        lam = 1.0 - to_good - to_bad  # the chain's second eigenvalue: memory left after one slot
+        n = max(0.0, elapsed / self.slot())
+        if lam > 0.0:
+            decay = lam ** n
+        else:  # memory gone within a slot (bursts no longer than random loss gives): lam^k at whole k,
+            k = math.floor(n)  # straight between them
+            f = n - k
+            decay = (lam ** k) * (1.0 - f + f * lam)
+        return p + (1.0 - p) * decay if self._bad else p - p * decay
+
+    def _lost(self, t: float) -> bool:
+        """Whether the packet on the air from time t is lost."""
         p = self.loss_p
         if p <= 0.0:
             return False
         if self.loss_model == "burst":
-            to_good = 1.0 / self.burst_mean
-            to_bad = p * to_good / (1.0 - p)
-            self._bad = (self.rng.random() >= to_good) if self._bad else (self.rng.random() < to_bad)
+            if p >= 1.0:
+                return True
+            chance = self.bad_probability(t - self._state_at if self._state_at is not None else 0.0)
+            self._bad = self.rng.random() < chance
+            self._state_at = t
             return self._bad
         return self.rng.random() < p
 
@@ -302,7 +337,7 @@ class Channel:
             self._starts.append(start)
         end = start + self.service_time(len(packet))
         self._busy_until = end
-        if self._lost() or self._in_outage(end):
+        if self._lost(start) or self._in_outage(end):
             st.lost += 1
             return []
         arrive = end + self.dir.latency_s
