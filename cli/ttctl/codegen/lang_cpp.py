@@ -94,6 +94,17 @@ def answers_setpoints(d: Dialect) -> bool:
             and {"target_system", "sec", "nsec", "topic_name"} <= {f.name for f in pose.fields})
 
 
+def confirms_vr_controller(d: Dialect) -> bool:
+    """Whether the node confirms every TT_VR_CONTROLLER with NAMED_VALUE_INT "vrbtn<index>" =
+    its packet_num, as ttctl's onboard end does (ttctl.ends.onboard.vr_controller), so that
+    `ttctl hmd dump --to` sees its button changes confirmed."""
+    fields = {m.name: {f.name: (f.type, f.array_length) for f in m.fields} for m in d.messages}
+    vr, named = fields.get("TT_VR_CONTROLLER", {}), fields.get("NAMED_VALUE_INT", {})
+    return (carries_link(d) and vr.get("index") == ("uint8_t", 0) and vr.get("packet_num") == ("uint32_t", 0)
+            and named.get("name") == ("char", 10) and named.get("value") == ("int32_t", 0)
+            and named.get("time_boot_ms") == ("uint32_t", 0))
+
+
 def namespace(d: Dialect, override: str | None = None) -> str:
     """The C++ namespace of a dialect: `override` (--cpp-namespace, maybe nested: a::b), else
     its identifier, unless that is a keyword or a name the standard library or the runtime
@@ -268,6 +279,7 @@ class _Cpp:
             "ns": namespace(d, self.override),
             "link": carries_link(d),
             "setpoints": answers_setpoints(d),
+            "vr_confirm": confirms_vr_controller(d),
             "folder": folder(d, self.override),
             "umbrella": umbrella(d, self.override),
             "guard": lambda part: guard(d, part, self.override),

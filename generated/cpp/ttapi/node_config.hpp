@@ -90,6 +90,7 @@ struct NodeStats {
     std::uint64_t files_received = 0;
     std::uint64_t files_refused = 0;
     std::uint64_t files_served = 0;
+    std::uint64_t vr_confirmed = 0;  // TT_VR_CONTROLLER confirmed (NAMED_VALUE_INT "vrbtn<index>")
 };
 
 }  // namespace ttapi::link

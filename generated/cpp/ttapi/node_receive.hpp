@@ -4,6 +4,9 @@
 // per source (the least recently heard of MAX_SOURCES makes room); each valid frame from a peer
 // addressed to this end (its target_system and target_component ours or 0) goes to the node's own
 // part (file transfer, commands: each run once, acknowledged) and then to the user's handlers.
+// Every TT_VR_CONTROLLER (the tablet's VR controller input, `ttctl hmd dump --to`) is confirmed
+// ahead of telemetry with NAMED_VALUE_INT name "vrbtn<index>", value = its packet_num (as int32),
+// before your handlers get it: the tablet resends a button change until it is confirmed.
 // A part of node.hpp, which includes it after the class; included on its own, it includes
 // node.hpp.
 #ifndef TTCTL_TTAPI_NODE_RECEIVE_HPP
@@ -123,6 +126,31 @@ inline const TargetField* target_field(std::uint32_t msgid) noexcept
 inline std::uint8_t payload_byte(const Frame& f, std::uint8_t at) noexcept
 {
     return at < f.payload_length ? f.payload[at] : 0;  // truncated: zero
+}
+
+// The confirmation of a TT_VR_CONTROLLER: NAMED_VALUE_INT "vrbtn<index>" (decimal, no padding) =
+// its packet_num as int32 (2^31 and above go as packet_num - 2^32), as ttctl's onboard end sends.
+inline NamedValueInt vr_confirmation(const TtVrController& m) noexcept
+{
+    NamedValueInt ack;
+    ack.time_boot_ms = 0;
+    const char prefix[] = "vrbtn";
+    std::size_t n = 0;
+    for (; prefix[n] != '\0'; ++n) {
+        ack.name[n] = prefix[n];
+    }
+    const unsigned index = m.index;
+    if (index >= 100) {
+        ack.name[n++] = static_cast<char>('0' + index / 100);
+    }
+    if (index >= 10) {
+        ack.name[n++] = static_cast<char>('0' + index / 10 % 10);
+    }
+    ack.name[n] = static_cast<char>('0' + index % 10);
+    const std::int64_t packet = m.packet_num;
+    const std::int64_t wrap = std::int64_t{1} << 32;
+    ack.value = static_cast<std::int32_t>(packet >= wrap / 2 ? packet - wrap : packet);
+    return ack;
 }
 
 }  // namespace impl
@@ -292,6 +320,11 @@ inline bool Node::handle(const Frame& f)
         break;
     case TtActionCommand::MSG_ID:
         on_command(f);
+        break;
+    case TtVrController::MSG_ID:
+        if (send(impl::vr_confirmation(f.as<TtVrController>()), Priority::control)) {
+            ++stats_.vr_confirmed;
+        }
         break;
     default:
         break;
