@@ -37,7 +37,7 @@ namespace mav = ::ttapi;
 // How to present and read one field type; a field is reached by its offset in its struct.
 struct FieldIo {
     void (*write)(std::string& o, const void* field);
-    bool (*read)(const Json& v, void* field, std::string& err);
+    bool (*read)(const Json& v, void* field, const std::string& where, std::string& err);
 };
 
 template <class T>
@@ -47,9 +47,9 @@ void write_field(std::string& o, const void* field)
 }
 
 template <class T>
-bool read_field(const Json& v, void* field, std::string& err)
+bool read_field(const Json& v, void* field, const std::string& where, std::string& err)
 {
-    return read_value(v, *static_cast<T*>(field), err);
+    return read_value(v, *static_cast<T*>(field), where, err);
 }
 
 template <class T>
@@ -74,7 +74,9 @@ void write_fields(std::string& o, const void* msg, const FieldSpec* fields, std:
     }
 }
 
-// The members of the request's "fields" object into a message; false (err set) on a bad one.
+// The members of the request's "fields" object into a message; false (err set) on a bad one. A
+// key given twice counts once, where it first came, with its last value (as Python's and Java's
+// maps keep it).
 bool read_fields(const Json& req, void* msg, const char* msg_name, const FieldSpec* fields, std::size_t count,
                  std::string& err)
 {
@@ -83,12 +85,18 @@ bool read_fields(const Json& req, void* msg, const char* msg_name, const FieldSp
         return true;
     }
     if (given->kind != Json::Object) {
-        err = "fields: expected an object";
-        return false;
+        return refuse("fields", "an object", got(*given), err);
     }
     char* base = static_cast<char*>(msg);
     for (std::size_t k = 0; k < given->keys.size(); ++k) {
         const std::string& key = given->keys[k];
+        bool seen = false;
+        for (std::size_t j = 0; j < k && !seen; ++j) {
+            seen = given->keys[j] == key;
+        }
+        if (seen) {
+            continue;
+        }
         const FieldSpec* spec = nullptr;
         for (std::size_t i = 0; i < count && spec == nullptr; ++i) {
             if (key == fields[i].name) {
@@ -99,9 +107,7 @@ bool read_fields(const Json& req, void* msg, const char* msg_name, const FieldSp
             err = std::string(msg_name) + " has no field '" + std::string(key) + "'";
             return false;
         }
-        std::string why;
-        if (!spec->io->read(given->items[k], base + spec->offset, why)) {
-            err = std::string(msg_name) + "." + key + ": " + why;
+        if (!spec->io->read(*given->get(key.c_str()), base + spec->offset, std::string(msg_name) + "." + key, err)) {
             return false;
         }
     }
@@ -4544,25 +4550,14 @@ std::string decode_line(const std::string& text)
     return o;
 }
 
-bool header_byte(const Json& req, const char* key, long long fallback, bool wrap, std::uint8_t& out,
-                 std::string& err)
+bool header_byte(const Json& req, const char* key, std::uint8_t fallback, std::uint8_t& out, std::string& err)
 {
     const Json* v = req.get(key);
     if (v == nullptr) {
-        out = static_cast<std::uint8_t>(fallback);
+        out = fallback;
         return true;
     }
-    long long x = 0;
-    if (!read_integer(*v, x, err)) {
-        err = std::string(key) + ": " + err;
-        return false;
-    }
-    if (!wrap && (x < 0 || x > 255)) {
-        err = std::string(key) + ": out of range 0..255";
-        return false;
-    }
-    out = static_cast<std::uint8_t>(static_cast<unsigned long long>(x) & 0xFFu);
-    return true;
+    return read_integer(*v, out, key, err);
 }
 
 std::string encode_line(const std::string& text)
@@ -4576,31 +4571,31 @@ std::string encode_line(const std::string& text)
         return error_json("expected a JSON object");
     }
     const mav::MessageInfo* info = nullptr;
-    std::string asked;  // the message asked for, as the Python and Java programs quote it
+    std::string err;
     if (const Json* name = req.get("name")) {
-        if (name->kind == Json::String && name->latin1) {
-            info = mav::message_info(std::string_view(name->text));
+        if (name->kind != Json::String) {
+            refuse("name", "a string", got(*name), err);
+            return error_json(err);
         }
-        asked = name->kind == Json::String ? "'" + name->text + "'" : "?";
+        info = name->latin1 ? mav::message_info(std::string_view(name->text)) : nullptr;
+        if (info == nullptr) {
+            return error_json("unknown message '" + name->text + "'");  // as Python's repr and Java quote it
+        }
     } else if (const Json* id = req.get("msgid")) {
         std::uint32_t msgid = 0;
-        std::string err;
-        if (read_integer(*id, msgid, err)) {
-            info = mav::message_info(msgid);
-            asked = std::to_string(msgid);
-        } else {
-            asked = "?";
+        if (!read_integer(*id, msgid, "msgid", err, "0..16777215", 0xFFFFFFu)) {
+            return error_json(err);
+        }
+        info = mav::message_info(msgid);
+        if (info == nullptr) {
+            return error_json("unknown message " + std::to_string(msgid));
         }
     } else {
         return error_json("the object names no message (\"name\" or \"msgid\")");
     }
-    if (info == nullptr) {
-        return error_json("unknown message " + asked);
-    }
     Header h;
-    std::string err;
-    if (!header_byte(req, "seq", 0, true, h.seq, err) || !header_byte(req, "sysid", 1, false, h.sysid, err)
-        || !header_byte(req, "compid", 1, false, h.compid, err)) {
+    if (!header_byte(req, "seq", 0, h.seq, err) || !header_byte(req, "sysid", 1, h.sysid, err)
+        || !header_byte(req, "compid", 1, h.compid, err)) {
         return error_json(err);
     }
     return encode_fields(info->msgid, req, h);

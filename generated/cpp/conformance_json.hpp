@@ -469,13 +469,61 @@ private:
 };
 
 // --- JSON values to field values ------------------------------------------------------------
+//
+// A refusal is worded alike in the three programs: "<where>: expected <what>, got <what came>",
+// where is MESSAGE.field (MESSAGE.field[k] for an element of an array, or seq, sysid, compid,
+// msgid, name, fields) and a number that came is quoted as written.
 
-template <class T>
-bool read_integer(const Json& v, T& out, std::string& err)
+inline std::string count_values(std::size_t n) { return std::to_string(n) + (n == 1 ? " value" : " values"); }
+
+// What came, in the words of a refusal.
+inline std::string got(const Json& v)
 {
+    switch (v.kind) {
+    case Json::Number:
+        return v.text;
+    case Json::String:
+        return "a string";
+    case Json::Bool:
+        return v.boolean ? "true" : "false";
+    case Json::Array:
+        return "a list of " + count_values(v.items.size());
+    case Json::Object:
+        return "an object";
+    case Json::Null:
+    default:
+        return "null";
+    }
+}
+
+inline bool refuse(const std::string& where, const std::string& what, const std::string& came, std::string& err)
+{
+    err = where + ": expected " + what + ", got " + came;
+    return false;
+}
+
+// The allowed range of integer type T, as LO..HI.
+template <class T>
+std::string integer_range()
+{
+    using Limits = std::numeric_limits<T>;
+    if constexpr (Limits::is_signed) {
+        return std::to_string(static_cast<long long>(Limits::min())) + ".."
+               + std::to_string(static_cast<long long>(Limits::max()));
+    } else {
+        return "0.." + std::to_string(static_cast<unsigned long long>(Limits::max()));
+    }
+}
+
+// An integer of type T in lo..hi (T's limits unless narrower).
+template <class T>
+bool read_integer(const Json& v, T& out, const std::string& where, std::string& err,
+                  const char* range = nullptr, unsigned long long hi = std::numeric_limits<T>::max())
+{
+    using Limits = std::numeric_limits<T>;
+    const std::string what = std::string("an integer in ") + (range != nullptr ? range : integer_range<T>().c_str());
     if (v.kind != Json::Number || !v.integer) {
-        err = "not an integer";
-        return false;
+        return refuse(where, what, got(v), err);
     }
     const std::string& t = v.text;
     const bool negative = t[0] == '-';
@@ -483,121 +531,127 @@ bool read_integer(const Json& v, T& out, std::string& err)
     for (std::size_t i = negative ? 1 : 0; i < t.size(); ++i) {
         const unsigned d = static_cast<unsigned>(t[i] - '0');
         if (magnitude > (std::numeric_limits<unsigned long long>::max() - d) / 10) {
-            err = "integer out of range: " + t;
-            return false;
+            return refuse(where, what, t, err);
         }
         magnitude = magnitude * 10 + d;
     }
-    using Limits = std::numeric_limits<T>;
     if (negative && magnitude != 0) {
-        if (!Limits::is_signed) {
-            err = "integer out of range: " + t;
-            return false;
-        }
         const unsigned long long most = static_cast<unsigned long long>(Limits::max()) + 1;
-        if (magnitude > most) {
-            err = "integer out of range: " + t;
-            return false;
+        if (!Limits::is_signed || magnitude > most) {
+            return refuse(where, what, t, err);
         }
         // two's complement: -magnitude, computed without signed overflow
         out = static_cast<T>(static_cast<long long>(~(magnitude - 1)));
         return true;
     }
-    if (magnitude > static_cast<unsigned long long>(Limits::max())) {
-        err = "integer out of range: " + t;
-        return false;
+    if (magnitude > hi) {
+        return refuse(where, what, t, err);
     }
     out = static_cast<T>(magnitude);
     return true;
 }
 
+// A float or double: a number of its range, or "NaN", "Infinity", "-Infinity". The number is read
+// as a double and then rounded to a float (as Python and Java do); one whose nearest float is an
+// infinity is refused.
 template <class T>
-bool read_float(const Json& v, T& out, std::string& err)
+bool read_float(const Json& v, T& out, const std::string& where, std::string& err)
 {
+    using Limits = std::numeric_limits<T>;
+    const char* what = std::is_same_v<T, float>
+        ? "a number in -3.4028235e38..3.4028235e38, \"NaN\", \"Infinity\" or \"-Infinity\""
+        : "a number in -1.7976931348623157e308..1.7976931348623157e308, \"NaN\", \"Infinity\" or \"-Infinity\"";
     if (v.kind == Json::String && v.latin1) {
         if (v.text == "NaN") {
-            out = std::numeric_limits<T>::quiet_NaN();
+            out = Limits::quiet_NaN();
             return true;
         }
         if (v.text == "Infinity") {
-            out = std::numeric_limits<T>::infinity();
+            out = Limits::infinity();
             return true;
         }
         if (v.text == "-Infinity") {
-            out = -std::numeric_limits<T>::infinity();
+            out = -Limits::infinity();
             return true;
         }
     }
     if (v.kind != Json::Number) {
-        err = "not a number";
-        return false;
+        return refuse(where, what, got(v), err);
     }
-    errno = 0;
-    T x;
-    if constexpr (std::is_same_v<T, float>) {
-        x = std::strtof(v.text.c_str(), nullptr);
-    } else {
-        x = std::strtod(v.text.c_str(), nullptr);
-    }
+    const double x = std::strtod(v.text.c_str(), nullptr);
     if (std::isinf(x)) {
-        err = "number out of range: " + v.text;
-        return false;
+        return refuse(where, what, v.text, err);
     }
-    out = x;
+    if constexpr (std::is_same_v<T, float>) {
+        if (std::fabs(x) >= 0x1.ffffffp127) {  // FLT_MAX and a half unit: the nearest float is infinite
+            return refuse(where, what, v.text, err);
+        }
+    }
+    out = static_cast<T>(x);
     return true;
 }
 
-[[maybe_unused]] bool read_value(const Json& v, float& out, std::string& err) { return read_float(v, out, err); }
-[[maybe_unused]] bool read_value(const Json& v, double& out, std::string& err) { return read_float(v, out, err); }
-
-[[maybe_unused]] bool read_value(const Json& v, char& out, std::string& err)
+inline std::string latin1_what(std::size_t n)
 {
-    if (v.kind != Json::String || !v.latin1 || v.text.size() > 1) {
-        err = "expected a string of at most 1 Latin-1 character";
-        return false;
+    return "a string of at most " + std::to_string(n) + (n == 1 ? " Latin-1 character" : " Latin-1 characters");
+}
+
+// A string of at most n Latin-1 characters, into `out` (n bytes, zero-padded).
+inline bool read_text(const Json& v, char* out, std::size_t n, const std::string& where, std::string& err)
+{
+    if (v.kind != Json::String) {
+        return refuse(where, latin1_what(n), got(v), err);
     }
-    out = v.text.empty() ? '\0' : v.text[0];
+    if (!v.latin1) {
+        return refuse(where, latin1_what(n), "a string with a character beyond U+00FF", err);
+    }
+    if (v.text.size() > n) {
+        return refuse(where, latin1_what(n), "a string of " + std::to_string(v.text.size()) + " characters", err);
+    }
+    std::memset(out, 0, n);
+    std::memcpy(out, v.text.data(), v.text.size());
     return true;
+}
+
+[[maybe_unused]] bool read_value(const Json& v, float& out, const std::string& where, std::string& err)
+{
+    return read_float(v, out, where, err);
+}
+
+[[maybe_unused]] bool read_value(const Json& v, double& out, const std::string& where, std::string& err)
+{
+    return read_float(v, out, where, err);
+}
+
+[[maybe_unused]] bool read_value(const Json& v, char& out, const std::string& where, std::string& err)
+{
+    return read_text(v, &out, 1, where, err);
 }
 
 template <class T>
-std::enable_if_t<std::is_integral_v<T>, bool> read_value(const Json& v, T& out, std::string& err)
+std::enable_if_t<std::is_integral_v<T>, bool> read_value(const Json& v, T& out, const std::string& where,
+                                                         std::string& err)
 {
-    return read_integer(v, out, err);
+    return read_integer(v, out, where, err);
 }
 
 template <std::size_t N>
-bool read_value(const Json& v, std::array<char, N>& out, std::string& err)
+bool read_value(const Json& v, std::array<char, N>& out, const std::string& where, std::string& err)
 {
-    if (v.kind != Json::String || !v.latin1) {
-        err = "expected a string of Latin-1 characters";
-        return false;
-    }
-    if (v.text.size() > N) {
-        err = std::to_string(v.text.size()) + " bytes do not fit char[" + std::to_string(N) + "]";
-        return false;
-    }
-    out.fill('\0');
-    std::memcpy(out.data(), v.text.data(), v.text.size());
-    return true;
+    return read_text(v, out.data(), N, where, err);
 }
 
 template <class T, std::size_t N>
-bool read_value(const Json& v, std::array<T, N>& out, std::string& err)
+bool read_value(const Json& v, std::array<T, N>& out, const std::string& where, std::string& err)
 {
-    if (v.kind != Json::Array) {
-        err = "expected a list";
-        return false;
-    }
     // uint8_t arrays (bytes) may be shorter and are zero-padded; other arrays are exact
     const bool shorter_ok = std::is_same_v<T, std::uint8_t>;
-    if (v.items.size() > N || (!shorter_ok && v.items.size() != N)) {
-        err = "expected " + std::to_string(N) + " values, got " + std::to_string(v.items.size());
-        return false;
+    if (v.kind != Json::Array || v.items.size() > N || (!shorter_ok && v.items.size() != N)) {
+        return refuse(where, std::string("a list of ") + (shorter_ok ? "at most " : "") + count_values(N), got(v), err);
     }
     out.fill(T{});
     for (std::size_t i = 0; i < v.items.size(); ++i) {
-        if (!read_value(v.items[i], out[i], err)) {
+        if (!read_value(v.items[i], out[i], where + "[" + std::to_string(i) + "]", err)) {
             return false;
         }
     }

@@ -270,15 +270,6 @@ final class ConformanceJson {
         sb.append('"');
     }
 
-    static String show(Object v) {
-        if (v instanceof String) {
-            StringBuilder sb = new StringBuilder();
-            string(sb, (String) v);
-            return sb.toString();
-        }
-        return String.valueOf(v);
-    }
-
     static void text(StringBuilder sb, byte[] v) {
         int n = 0;
         while (n < v.length && v[n] != 0) {
@@ -394,41 +385,81 @@ final class ConformanceJson {
     }
 
     // converting to field values
+    //
+    // A refusal is worded alike in the three programs: "<where>: expected <what>, got <what came>",
+    // where is MESSAGE.field (MESSAGE.field[k] for an element of an array, or seq, sysid, compid,
+    // msgid, name, fields) and a number that came is quoted as written.
 
-    private static Num integralNum(Object v, String where) {
-        if (!(v instanceof Num) || !((Num) v).integral()) {
-            throw new IllegalArgumentException(where + ": not an integer: " + show(v));
+    private static final String SPECIALS = ", \"NaN\", \"Infinity\" or \"-Infinity\"";
+    private static final String F32_RANGE = "a number in -3.4028235e38..3.4028235e38" + SPECIALS;
+    private static final String F64_RANGE = "a number in -1.7976931348623157e308..1.7976931348623157e308" + SPECIALS;
+
+    static String values(int n) {
+        return n + (n == 1 ? " value" : " values");
+    }
+
+    /** What came, in the words of a refusal. */
+    static String got(Object v) {
+        if (v instanceof Num) {
+            return ((Num) v).text;
         }
-        return (Num) v;
+        if (v instanceof String) {
+            return "a string";
+        }
+        if (v instanceof Boolean) {
+            return v.toString();
+        }
+        if (v instanceof List) {
+            return "a list of " + values(((List<?>) v).size());
+        }
+        if (v instanceof Map) {
+            return "an object";
+        }
+        return "null";
+    }
+
+    static Conformance.Refusal refuse(String where, String what, String came) {
+        return new Conformance.Refusal(where + ": expected " + what + ", got " + came);
     }
 
     static long integer(Object v, long lo, long hi, String where) {
-        Num n = integralNum(v, where);
+        String what = "an integer in " + lo + ".." + hi;
+        if (!(v instanceof Num) || !((Num) v).integral()) {
+            throw refuse(where, what, got(v));
+        }
+        String text = ((Num) v).text;
         long x;
         try {
-            x = Long.parseLong(n.text);
+            x = Long.parseLong(text);
         } catch (NumberFormatException e) {
-            throw new IllegalArgumentException(where + ": " + n.text + " out of range");
+            throw refuse(where, what, text);
         }
         if (x < lo || x > hi) {
-            throw new IllegalArgumentException(where + ": " + n.text + " out of range " + lo + ".." + hi);
+            throw refuse(where, what, text);
         }
         return x;
     }
 
     static long uint64(Object v, String where) {
-        Num n = integralNum(v, where);
-        String t = n.text.equals("-0") ? "0" : n.text;
+        String what = "an integer in 0..18446744073709551615";
+        if (!(v instanceof Num) || !((Num) v).integral()) {
+            throw refuse(where, what, got(v));
+        }
+        String text = ((Num) v).text;
         try {
-            return Unsigned.parse(t);
+            return Unsigned.parse(text.equals("-0") ? "0" : text);
         } catch (NumberFormatException e) {
-            throw new IllegalArgumentException(where + ": " + n.text + " is not a uint64");
+            throw refuse(where, what, text);
         }
     }
 
-    static double f64(Object v, String where) {
+    private static double real(Object v, String what, String where) {
         if (v instanceof Num) {
-            return Double.parseDouble(((Num) v).text);
+            double d = Double.parseDouble(((Num) v).text);
+            if (Double.isInfinite(d)) {
+                throw refuse(where, what, ((Num) v).text);
+            }
+            return d;
         }
         if ("NaN".equals(v)) {
             return Double.NaN;
@@ -439,33 +470,39 @@ final class ConformanceJson {
         if ("-Infinity".equals(v)) {
             return Double.NEGATIVE_INFINITY;
         }
-        throw new IllegalArgumentException(where + ": not a number: " + show(v));
+        throw refuse(where, what, got(v));
+    }
+
+    static double f64(Object v, String where) {
+        return real(v, F64_RANGE, where);
     }
 
     static float f32(Object v, String where) {
-        double d = f64(v, where);
+        double d = real(v, F32_RANGE, where);
         float f = (float) d;
-        if (Float.isInfinite(f) && !Double.isInfinite(d)) {
-            throw new IllegalArgumentException(where + ": " + v + " is too large for a float");
+        if (Float.isInfinite(f) && !Double.isInfinite(d)) {  // the nearest float is an infinity
+            throw refuse(where, F32_RANGE, ((Num) v).text);
         }
         return f;
     }
 
     static byte[] text(Object v, int n, String where) {
+        String what = "a string of at most " + n + (n == 1 ? " Latin-1 character" : " Latin-1 characters");
         if (!(v instanceof String)) {
-            throw new IllegalArgumentException(where + ": not a string: " + show(v));
+            throw refuse(where, what, got(v));
         }
         String t = (String) v;
-        if (t.length() > n) {
-            throw new IllegalArgumentException(where + ": " + t.length() + " bytes do not fit char[" + n + "]");
-        }
         byte[] b = new byte[n];
         for (int k = 0; k < t.length(); k++) {
-            char c = t.charAt(k);
-            if (c > 0xFF) {
-                throw new IllegalArgumentException(where + ": character " + (int) c + " is not Latin-1");
+            if (t.charAt(k) > 0xFF) {
+                throw refuse(where, what, "a string with a character beyond U+00FF");
             }
-            b[k] = (byte) c;
+        }
+        if (t.length() > n) {
+            throw refuse(where, what, "a string of " + t.length() + " characters");
+        }
+        for (int k = 0; k < t.length(); k++) {
+            b[k] = (byte) t.charAt(k);
         }
         return b;
     }
@@ -475,21 +512,18 @@ final class ConformanceJson {
     }
 
     private static List<?> list(Object v, int n, boolean exact, String where) {
-        if (!(v instanceof List)) {
-            throw new IllegalArgumentException(where + ": not a list: " + show(v));
+        int size = v instanceof List ? ((List<?>) v).size() : -1;
+        if (size < 0 || (exact ? size != n : size > n)) {
+            throw refuse(where, "a list of " + (exact ? "" : "at most ") + values(n), got(v));
         }
-        List<?> l = (List<?>) v;
-        if (exact ? l.size() != n : l.size() > n) {
-            throw new IllegalArgumentException(where + ": " + l.size() + " values for [" + n + "]");
-        }
-        return l;
+        return (List<?>) v;
     }
 
     static byte[] u8s(Object v, int n, String where) {
         List<?> l = list(v, n, false, where);
         byte[] out = new byte[n];
         for (int k = 0; k < l.size(); k++) {
-            out[k] = (byte) integer(l.get(k), 0, 255, where);
+            out[k] = (byte) integer(l.get(k), 0, 255, where + "[" + k + "]");
         }
         return out;
     }
@@ -498,7 +532,7 @@ final class ConformanceJson {
         List<?> l = list(v, n, true, where);
         byte[] out = new byte[n];
         for (int k = 0; k < n; k++) {
-            out[k] = (byte) integer(l.get(k), -128, 127, where);
+            out[k] = (byte) integer(l.get(k), -128, 127, where + "[" + k + "]");
         }
         return out;
     }
@@ -507,7 +541,7 @@ final class ConformanceJson {
         List<?> l = list(v, n, true, where);
         short[] out = new short[n];
         for (int k = 0; k < n; k++) {
-            out[k] = (short) integer(l.get(k), Short.MIN_VALUE, Short.MAX_VALUE, where);
+            out[k] = (short) integer(l.get(k), Short.MIN_VALUE, Short.MAX_VALUE, where + "[" + k + "]");
         }
         return out;
     }
@@ -516,7 +550,7 @@ final class ConformanceJson {
         List<?> l = list(v, n, true, where);
         int[] out = new int[n];
         for (int k = 0; k < n; k++) {
-            out[k] = (int) integer(l.get(k), lo, hi, where);
+            out[k] = (int) integer(l.get(k), lo, hi, where + "[" + k + "]");
         }
         return out;
     }
@@ -525,7 +559,7 @@ final class ConformanceJson {
         List<?> l = list(v, n, true, where);
         long[] out = new long[n];
         for (int k = 0; k < n; k++) {
-            out[k] = integer(l.get(k), lo, hi, where);
+            out[k] = integer(l.get(k), lo, hi, where + "[" + k + "]");
         }
         return out;
     }
@@ -534,7 +568,7 @@ final class ConformanceJson {
         List<?> l = list(v, n, true, where);
         long[] out = new long[n];
         for (int k = 0; k < n; k++) {
-            out[k] = uint64(l.get(k), where);
+            out[k] = uint64(l.get(k), where + "[" + k + "]");
         }
         return out;
     }
@@ -543,7 +577,7 @@ final class ConformanceJson {
         List<?> l = list(v, n, true, where);
         float[] out = new float[n];
         for (int k = 0; k < n; k++) {
-            out[k] = f32(l.get(k), where);
+            out[k] = f32(l.get(k), where + "[" + k + "]");
         }
         return out;
     }
@@ -552,7 +586,7 @@ final class ConformanceJson {
         List<?> l = list(v, n, true, where);
         double[] out = new double[n];
         for (int k = 0; k < n; k++) {
-            out[k] = f64(l.get(k), where);
+            out[k] = f64(l.get(k), where + "[" + k + "]");
         }
         return out;
     }

@@ -292,11 +292,12 @@ _INT_LIMITS = {
 }
 
 
-def json_in(f: Field) -> str:
-    """Expression converting JSON value v to the field's Java type."""
+def json_in(f: Field, message: str = "") -> str:
+    """Expression converting JSON value v to the field's Java type (a refusal names the field as
+    MESSAGE.field)."""
     n = f.array_length
     t = f.type
-    w = f'"{f.name}"'
+    w = f'"{message}.{f.name}"' if message else f'"{f.name}"'
     if t == "char":
         return f"ConformanceJson.text(v, {n}, {w})" if n else f"ConformanceJson.textChar(v, {w})"
     if n:
