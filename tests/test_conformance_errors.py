@@ -22,6 +22,15 @@ BAD = [
     'E {"name":"NOPE"}', 'E {"msgid":99999}', "E {}", "E [1]", "X",
     'E {"name":"TT_COMMAND_ACK","fields":{"nope":1}}',
     "E {nope", 'E {"name": "TT_COMMAND_ACK", "fields": {"result": }}',
+    # not JSON, though Python's reader takes the constants, and where a malformed number is refused
+    'E {"name":"PARAM_VALUE","fields":{"param_value":NaN}}',
+    'E {"name":"PARAM_VALUE","fields":{"param_value":-Infinity}}',
+    'E {"name":"PARAM_VALUE","fields":{"param_value":"NaN\\"","x":Infinity}}',
+    'E {"name":"TT_COMMAND_ACK","fields":{"result":1.}}', 'E {"name":"TT_COMMAND_ACK","fields":{"result":1.5e}}',
+    'E {"name":"TT_COMMAND_ACK","fields":{"result":1e+}}', 'E {"name":"TT_COMMAND_ACK","fields":{"result":-}}',
+    "E [1.]", "E -", "E 1e",
+    # names quoted alike
+    'E {"name":"it\'s"}', 'E {"name":"TT_COMMAND_ACK\\u0000"}', 'E {"name":"TT_COMMAND_ACK","fields":{"it\'s":1}}',
 ]
 
 

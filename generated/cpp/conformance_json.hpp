@@ -243,25 +243,29 @@ private:
         if (s_[i_] == '-') {
             ++i_;
         }
+        // a malformed number is refused where its longest valid beginning ends (as Python's reader does)
         if (i_ < s_.size() && s_[i_] == '0') {
             ++i_;
         } else if (!digits()) {
+            i_ = start;
             return fail("expected a value");
         }
         if (i_ < s_.size() && s_[i_] == '.') {
-            ++i_;
+            const std::size_t dot = i_++;
             out.integer = false;
             if (!digits()) {
+                i_ = dot;
                 return fail("expected digits after '.'");
             }
         }
         if (i_ < s_.size() && (s_[i_] == 'e' || s_[i_] == 'E')) {
-            ++i_;
+            const std::size_t e = i_++;
             out.integer = false;
             if (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-')) {
                 ++i_;
             }
             if (!digits()) {
+                i_ = e;
                 return fail("expected exponent digits");
             }
         }

@@ -158,23 +158,27 @@ final class ConformanceJson {
         if (i < s.length() && s.charAt(i) == '-') {
             i++;
         }
+        // a malformed number is refused where its longest valid beginning ends (as Python's reader does)
         if (i < s.length() && s.charAt(i) == '0') {
             i++;
         } else if (digits() == 0) {
+            i = start;
             throw fail("unexpected character");
         }
         if (i < s.length() && s.charAt(i) == '.') {
-            i++;
+            int dot = i++;
             if (digits() == 0) {
+                i = dot;
                 throw fail("digits expected after '.'");
             }
         }
         if (i < s.length() && (s.charAt(i) == 'e' || s.charAt(i) == 'E')) {
-            i++;
+            int e = i++;
             if (i < s.length() && (s.charAt(i) == '+' || s.charAt(i) == '-')) {
                 i++;
             }
             if (digits() == 0) {
+                i = e;
                 throw fail("digits expected in the exponent");
             }
         }

@@ -632,11 +632,38 @@ def _value_in(v: Any, type_: str, n: int, where: str) -> Any:
     return [scalar(x, type_, f"{where}[{k}]") for k, x in enumerate(v)]
 
 
+class _Constant(ValueError):
+    """NaN, Infinity or -Infinity bare in a request: not JSON (the C++ and Java readers refuse them)."""
+
+
+def _constant(name: str) -> Any:
+    raise _Constant(name)
+
+
+def _constant_at(text: str) -> int:
+    """Where the C++ and Java readers stop: at the first bare NaN, Infinity or -Infinity."""
+    i, quoted = 0, False
+    while i < len(text):
+        c = text[i]
+        if quoted:
+            i += 2 if c == "\\" else 1
+            quoted = c != '"'
+            continue
+        if c == '"':
+            quoted = True
+        elif text.startswith(("NaN", "Infinity", "-Infinity"), i):
+            return i
+        i += 1
+    return len(text)
+
+
 def encode_line(text: str) -> str:
     try:
-        obj = json.loads(text, parse_int=_Num, parse_float=_Num)
+        obj = json.loads(text, parse_int=_Num, parse_float=_Num, parse_constant=_constant)
     except json.JSONDecodeError as e:
         raise Refusal(f"bad JSON at offset {e.pos}") from None
+    except _Constant:
+        raise Refusal(f"bad JSON at offset {_constant_at(text)}") from None
     if not isinstance(obj, dict):
         raise Refusal("expected a JSON object")
     cls: type[Message] | None = None
@@ -645,7 +672,7 @@ def encode_line(text: str) -> str:
             raise _refuse("name", "a string", _got(obj["name"]))
         cls = BY_NAME.get(obj["name"])
         if cls is None:
-            raise Refusal(f"unknown message {obj['name']!r}")
+            raise Refusal(f"unknown message '{obj['name']}'")  # quoted as the C++ and Java programs do
     elif "msgid" in obj:
         msgid = _int_in(obj["msgid"], "uint32_t", "msgid", (0, 0xFFFFFF))
         info = REGISTRY.get(msgid)
@@ -663,7 +690,7 @@ def encode_line(text: str) -> str:
     values: dict[str, Any] = {}
     for name, v in (given or {}).items():
         if name not in types:
-            raise Refusal(f"{cls.NAME} has no field {name!r}")
+            raise Refusal(f"{cls.NAME} has no field '{name}'")
         values[name] = _value_in(v, *types[name], f"{cls.NAME}.{name}")
     return cls(**values).pack(seq, sysid, compid).hex()
 
