@@ -231,6 +231,7 @@ inline std::size_t Node::feed(Source& s, const std::uint8_t* packet, std::size_t
 {
     const std::uint64_t bad_before = s.rx.stats().bad_frames;
     const std::uint64_t sig_before = s.rx.stats().bad_signatures;
+    const std::uint64_t unknown_before = s.rx.stats().unknown;
     std::size_t peers = 0;
     auto on_frame = [&](const Frame& f) { peers += handle(f) ? 1u : 0u; };
     if (flushing) {
@@ -239,6 +240,7 @@ inline std::size_t Node::feed(Source& s, const std::uint8_t* packet, std::size_t
         s.rx.feed(packet, n, on_frame);
     }
     stats_.bad_frames += s.rx.stats().bad_frames - bad_before;
+    stats_.unknown += s.rx.stats().unknown - unknown_before;
     const std::uint64_t refused = s.rx.stats().bad_signatures - sig_before;
     stats_.refused_signature += refused;
     if (refused != 0 && !s.told_refused) {
