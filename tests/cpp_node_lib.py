@@ -7,7 +7,8 @@ The programs are built from a freshly generated ttapi tree with g++ -std=c++17 -
 around the GENERATED skeleton (cpp/onboard/ttapi_plugin.hpp) as a user edits it (EDITS:
 on_command() counts and accepts, and refuses trajectory flights with words; the
 DJI_POSE_STAMPED handler answers set-points with ctx.setpoint(), flying them, counted, or
-refusing an altitude below 0.5 m, and echoes a pose of another topic), plain and once more with
+refusing an altitude below 0.5 m, and echoes a pose of another topic; the TT_VR_CONTROLLER handler
+counts messages and button changes), plain and once more with
 -fsanitize=address,undefined for the hostile-input tests; and the drivers that run the
 scheduler and the node sans-IO against Python's (scheduler_driver.cpp, node_driver.cpp).
 The session fixtures cpp_node_bins and cpp_nodes (tests/conftest.py) hand them to the tests.
@@ -56,7 +57,10 @@ NODE_DRIVER = ROOT / "tests" / "cpp" / "node" / "node_driver.cpp"
 EDITS = [
     ("public:\n    const char* name() const noexcept override",
      "public:\n    std::uint64_t executed = 0;  // how many commands ran\n"
-     "    std::uint64_t flown = 0;  // how many set-points were flown\n\n"
+     "    std::uint64_t flown = 0;  // how many set-points were flown\n"
+     "    std::uint64_t vr_messages = 0;  // TT_VR_CONTROLLER the handler got\n"
+     "    std::uint64_t vr_changes = 0;  // of those: a controller's buttons changed\n"
+     "    std::array<std::uint16_t, 256> vr_buttons{};  // the buttons last held, per controller\n\n"
      "    const char* name() const noexcept override"),
     ("""        // TODO: carry out cmd.action (a TtAction) with cmd.param and cmd.argument, from system frame.sysid
         return {TtResult::TT_RESULT_UNSUPPORTED, "not implemented on this vehicle yet"};""",
@@ -79,6 +83,13 @@ EDITS = [
         DjiPoseStamped echo = msg;  // another topic: echoed
         echo.target_system = frame.sysid;
         ctx.send(echo);"""),
+    ("        // TODO: handle TT_VR_CONTROLLER (from system frame.sysid, component frame.compid); "
+     "ctx.send(...) replies",
+     """        ++vr_messages;  // the node has confirmed it already
+        if (msg.buttons != vr_buttons[msg.index]) {
+            vr_buttons[msg.index] = msg.buttons;
+            ++vr_changes;
+        }"""),
 ]
 
 

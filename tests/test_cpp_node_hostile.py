@@ -244,3 +244,38 @@ def test_hostile_input_under_asan(cpp_node_bins: dict[str, Path], tmp_path: Path
     escaped = [p for p in tmp_path.rglob("*") if p.is_file() and inbox not in p.parents
                and p.suffix not in (".out", ".err", ".bin")]
     assert escaped == [], escaped
+
+
+# -- another dialect's frames --------------------------------------------------------------------
+
+def test_frames_of_another_dialect_are_counted_as_pythons_end_counts_them(cpp_node_bins: dict[str, Path],
+                                                                          tmp_path: Path, cpp_nodes: Any) -> None:
+    """Whole frames of a msgid ttapi lacks (a peer speaking another dialect) are counted in the
+    node's stats as `unknown`, where the packing rule puts a frame (a packet's start, right after a
+    frame), as ttctl's PacketReceiver counts them; the frames around them still arrive."""
+    from conftest import shipped
+    from ttctl.wire.packets import PacketReceiver
+
+    def stranger(payload_len: int, cut: int | None = None) -> bytes:  # msgid 0xBEEF, not in ttapi
+        frame = bytes([0xFD, payload_len, 0, 0, 3, 9, 9, 0xEF, 0xBE, 0x00]) + bytes(range(payload_len)) + b"\x12\x34"
+        return frame[:cut]
+
+    beat = ttapi.Encoder(255, 190).encode(ttapi.Heartbeat(type=6, autopilot=8, base_mode=0, custom_mode=0,
+                                                          system_status=4, mavlink_version=3))
+    packets = [stranger(5), stranger(5) + beat, beat + stranger(7), stranger(80, cut=40),  # counted
+               b"\x00\x01" + stranger(5), stranger(5) + b"\x00"]  # not where a frame begins, or ends: not
+    rx = PacketReceiver(shipped())
+    heard = [m for p in packets for m in rx.feed(p)]
+    assert rx.stats.unknown == 4 and len(heard) == 2
+    node = cpp_nodes(cpp_node_bins["plain"], tmp_path, "node", "--listen", f"udpin:{LOCAL}:0", "--heartbeat", "0")
+    raw = Raw(node.port)
+    try:
+        for p in packets:
+            raw.raw(p)
+            time.sleep(0.05)
+    finally:
+        raw.close()
+    time.sleep(0.3)
+    stats = node.stop()
+    assert stats["unknown"] == rx.stats.unknown, stats
+    assert stats["frames_in"] == 2 and stats["bad_frames"] == 0, stats

@@ -26,600 +26,18 @@
 #include <vector>
 
 #include "ttapi/ttapi.hpp"
+#include "conformance_json.hpp"
 
 namespace {
 
 namespace mav = ::ttapi;
-
-// --- JSON writing -------------------------------------------------------------------------
-
-void put_string(std::string& o, const char* s, std::size_t n)
-{
-    static const char HEX[] = "0123456789abcdef";
-    o += '"';
-    for (std::size_t i = 0; i < n; ++i) {
-        const unsigned char c = static_cast<unsigned char>(s[i]);
-        if (c == '"' || c == '\\') {
-            o += '\\';
-            o += static_cast<char>(c);
-        } else if (c < 0x20 || c >= 0x7F) {
-            o += "\\u00";
-            o += HEX[c >> 4];
-            o += HEX[c & 0xF];
-        } else {
-            o += static_cast<char>(c);
-        }
-    }
-    o += '"';
-}
-
-void put_string(std::string& o, const std::string& s) { put_string(o, s.data(), s.size()); }
-
-std::string error_json(const std::string& message)
-{
-    std::string o = "{\"error\":";
-    put_string(o, message);
-    o += '}';
-    return o;
-}
-
-template <class T>
-void put_float(std::string& o, T v)
-{
-    if (std::isnan(v)) {
-        o += "\"NaN\"";
-        return;
-    }
-    if (std::isinf(v)) {
-        o += v > 0 ? "\"Infinity\"" : "\"-Infinity\"";
-        return;
-    }
-    char buf[64];
-    const int lo = std::is_same_v<T, float> ? 6 : 15;
-    const int hi = std::is_same_v<T, float> ? 9 : 17;
-    for (int digits = lo; digits <= hi; ++digits) {
-        std::snprintf(buf, sizeof buf, "%.*g", digits, static_cast<double>(v));
-        T back;
-        if constexpr (std::is_same_v<T, float>) {
-            back = std::strtof(buf, nullptr);
-        } else {
-            back = std::strtod(buf, nullptr);
-        }
-        if (back == v) {
-            break;
-        }
-    }
-    o += buf;
-    if (std::strpbrk(buf, ".e") == nullptr) {
-        o += ".0";  // stays a float for JSON readers (and keeps the sign of -0.0)
-    }
-}
-
-[[maybe_unused]] void put_value(std::string& o, float v) { put_float(o, v); }
-[[maybe_unused]] void put_value(std::string& o, double v) { put_float(o, v); }
-[[maybe_unused]] void put_value(std::string& o, char v) { put_string(o, &v, v == '\0' ? 0 : 1); }
-
-template <class T>
-std::enable_if_t<std::is_integral_v<T>> put_value(std::string& o, T v)
-{
-    if constexpr (std::is_signed_v<T>) {
-        o += std::to_string(static_cast<long long>(v));
-    } else {
-        o += std::to_string(static_cast<unsigned long long>(v));
-    }
-}
-
-template <std::size_t N>
-void put_value(std::string& o, const std::array<char, N>& v)
-{
-    std::size_t n = 0;
-    while (n < N && v[n] != '\0') {
-        ++n;
-    }
-    put_string(o, v.data(), n);
-}
-
-template <class T, std::size_t N>
-void put_value(std::string& o, const std::array<T, N>& v)
-{
-    o += '[';
-    for (std::size_t i = 0; i < N; ++i) {
-        if (i != 0) {
-            o += ',';
-        }
-        put_value(o, v[i]);
-    }
-    o += ']';
-}
-
-// --- JSON reading -------------------------------------------------------------------------
-
-struct Json {
-    enum Kind { Null, Bool, Number, String, Array, Object };
-    Kind kind = Null;
-    bool boolean = false;
-    bool integer = false;  // a Number without fraction or exponent
-    bool latin1 = true;  // a String whose characters all fit one byte
-    std::string text;  // Number: the token; String: one byte per character (if latin1)
-    std::vector<Json> items;  // Array items, Object values
-    std::vector<std::string> keys;  // Object keys
-
-    const Json* get(const char* key) const
-    {
-        const Json* found = nullptr;
-        for (std::size_t i = 0; i < keys.size(); ++i) {
-            if (keys[i] == key) {
-                found = &items[i];  // the last duplicate wins
-            }
-        }
-        return found;
-    }
-};
-
-class JsonReader {
-public:
-    explicit JsonReader(const std::string& s) : s_(s) {}
-
-    bool parse(Json& out)
-    {
-        skip_ws();
-        if (!value(out, 0)) {
-            return false;
-        }
-        skip_ws();
-        return i_ == s_.size() || fail("trailing characters after the JSON value");
-    }
-
-    const std::string& error() const { return err_; }
-
-private:
-    static constexpr int MAX_DEPTH = 64;
-
-    bool fail(const char* what)
-    {
-        if (err_.empty()) {
-            (void)what;  // the three programs say only where (their parsers' words differ)
-            err_ = "bad JSON at offset " + std::to_string(i_);
-        }
-        return false;
-    }
-
-    void skip_ws()
-    {
-        while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t' || s_[i_] == '\n' || s_[i_] == '\r')) {
-            ++i_;
-        }
-    }
-
-    bool literal(const char* word)
-    {
-        const std::size_t n = std::strlen(word);
-        if (s_.compare(i_, n, word) != 0) {
-            return fail("unexpected characters");
-        }
-        i_ += n;
-        return true;
-    }
-
-    bool value(Json& out, int depth)
-    {
-        if (depth > MAX_DEPTH) {
-            return fail("nested too deeply");
-        }
-        if (i_ >= s_.size()) {
-            return fail("unexpected end");
-        }
-        const char c = s_[i_];
-        if (c == '{') {
-            return object(out, depth);
-        }
-        if (c == '[') {
-            return array(out, depth);
-        }
-        if (c == '"') {
-            out.kind = Json::String;
-            return string(out.text, out.latin1);
-        }
-        if (c == 't') {
-            out.kind = Json::Bool;
-            out.boolean = true;
-            return literal("true");
-        }
-        if (c == 'f') {
-            out.kind = Json::Bool;
-            return literal("false");
-        }
-        if (c == 'n') {
-            out.kind = Json::Null;
-            return literal("null");
-        }
-        return number(out);
-    }
-
-    bool digits()
-    {
-        const std::size_t start = i_;
-        while (i_ < s_.size() && s_[i_] >= '0' && s_[i_] <= '9') {
-            ++i_;
-        }
-        return i_ > start;
-    }
-
-    bool number(Json& out)
-    {
-        const std::size_t start = i_;
-        out.kind = Json::Number;
-        out.integer = true;
-        if (s_[i_] == '-') {
-            ++i_;
-        }
-        if (i_ < s_.size() && s_[i_] == '0') {
-            ++i_;
-        } else if (!digits()) {
-            return fail("expected a value");
-        }
-        if (i_ < s_.size() && s_[i_] == '.') {
-            ++i_;
-            out.integer = false;
-            if (!digits()) {
-                return fail("expected digits after '.'");
-            }
-        }
-        if (i_ < s_.size() && (s_[i_] == 'e' || s_[i_] == 'E')) {
-            ++i_;
-            out.integer = false;
-            if (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-')) {
-                ++i_;
-            }
-            if (!digits()) {
-                return fail("expected exponent digits");
-            }
-        }
-        out.text.assign(s_, start, i_ - start);
-        return true;
-    }
-
-    bool hex4(unsigned& cp)
-    {
-        if (s_.size() - i_ < 4) {
-            return fail("short \\u escape");
-        }
-        cp = 0;
-        for (int k = 0; k < 4; ++k) {
-            const char h = s_[i_++];
-            cp <<= 4;
-            if (h >= '0' && h <= '9') {
-                cp |= static_cast<unsigned>(h - '0');
-            } else if (h >= 'a' && h <= 'f') {
-                cp |= static_cast<unsigned>(h - 'a' + 10);
-            } else if (h >= 'A' && h <= 'F') {
-                cp |= static_cast<unsigned>(h - 'A' + 10);
-            } else {
-                return fail("bad \\u escape");
-            }
-        }
-        return true;
-    }
-
-    // One UTF-8 encoded character (the line is UTF-8 JSON); false on malformed input.
-    bool utf8(unsigned& cp)
-    {
-        const unsigned char c = static_cast<unsigned char>(s_[i_]);
-        std::size_t more = 0;
-        if (c < 0x80) {
-            cp = c;
-        } else if (c >= 0xC2 && c <= 0xDF) {
-            cp = c & 0x1Fu;
-            more = 1;
-        } else if (c >= 0xE0 && c <= 0xEF) {
-            cp = c & 0x0Fu;
-            more = 2;
-        } else if (c >= 0xF0 && c <= 0xF4) {
-            cp = c & 0x07u;
-            more = 3;
-        } else {
-            return fail("invalid UTF-8");
-        }
-        ++i_;
-        if (s_.size() - i_ < more) {
-            return fail("invalid UTF-8");
-        }
-        for (std::size_t k = 0; k < more; ++k) {
-            const unsigned char d = static_cast<unsigned char>(s_[i_++]);
-            if ((d & 0xC0u) != 0x80u) {
-                return fail("invalid UTF-8");
-            }
-            cp = (cp << 6) | (d & 0x3Fu);
-        }
-        return true;
-    }
-
-    bool string(std::string& out, bool& latin1)
-    {
-        ++i_;  // the opening quote
-        out.clear();
-        latin1 = true;
-        while (true) {
-            if (i_ >= s_.size()) {
-                return fail("unterminated string");
-            }
-            const char c = s_[i_];
-            unsigned cp = 0;
-            if (c == '"') {
-                ++i_;
-                return true;
-            }
-            if (static_cast<unsigned char>(c) < 0x20) {
-                return fail("control character in string");
-            }
-            if (c == '\\') {
-                ++i_;
-                if (i_ >= s_.size()) {
-                    return fail("unterminated escape");
-                }
-                const char e = s_[i_++];
-                switch (e) {
-                case '"':
-                case '\\':
-                case '/':
-                    cp = static_cast<unsigned char>(e);
-                    break;
-                case 'b':
-                    cp = '\b';
-                    break;
-                case 'f':
-                    cp = '\f';
-                    break;
-                case 'n':
-                    cp = '\n';
-                    break;
-                case 'r':
-                    cp = '\r';
-                    break;
-                case 't':
-                    cp = '\t';
-                    break;
-                case 'u':
-                    if (!hex4(cp)) {
-                        return false;
-                    }
-                    break;
-                default:
-                    return fail("bad escape");
-                }
-            } else if (!utf8(cp)) {
-                return false;
-            }
-            if (cp > 0xFF) {
-                latin1 = false;
-                out += '?';
-            } else {
-                out += static_cast<char>(static_cast<unsigned char>(cp));
-            }
-        }
-    }
-
-    bool array(Json& out, int depth)
-    {
-        out.kind = Json::Array;
-        ++i_;
-        skip_ws();
-        if (i_ < s_.size() && s_[i_] == ']') {
-            ++i_;
-            return true;
-        }
-        while (true) {
-            skip_ws();
-            out.items.emplace_back();
-            if (!value(out.items.back(), depth + 1)) {
-                return false;
-            }
-            skip_ws();
-            if (i_ < s_.size() && s_[i_] == ',') {
-                ++i_;
-                continue;
-            }
-            if (i_ < s_.size() && s_[i_] == ']') {
-                ++i_;
-                return true;
-            }
-            return fail("expected ',' or ']'");
-        }
-    }
-
-    bool object(Json& out, int depth)
-    {
-        out.kind = Json::Object;
-        ++i_;
-        skip_ws();
-        if (i_ < s_.size() && s_[i_] == '}') {
-            ++i_;
-            return true;
-        }
-        while (true) {
-            skip_ws();
-            if (i_ >= s_.size() || s_[i_] != '"') {
-                return fail("expected a key");
-            }
-            std::string key;
-            bool latin1 = true;
-            if (!string(key, latin1)) {
-                return false;
-            }
-            if (!latin1) {
-                key.insert(0, 1, '\0');  // matches no field name
-            }
-            skip_ws();
-            if (i_ >= s_.size() || s_[i_] != ':') {
-                return fail("expected ':'");
-            }
-            ++i_;
-            skip_ws();
-            out.keys.push_back(std::move(key));
-            out.items.emplace_back();
-            if (!value(out.items.back(), depth + 1)) {
-                return false;
-            }
-            skip_ws();
-            if (i_ < s_.size() && s_[i_] == ',') {
-                ++i_;
-                continue;
-            }
-            if (i_ < s_.size() && s_[i_] == '}') {
-                ++i_;
-                return true;
-            }
-            return fail("expected ',' or '}'");
-        }
-    }
-
-    const std::string& s_;
-    std::size_t i_ = 0;
-    std::string err_;
-};
-
-// --- JSON values to field values ------------------------------------------------------------
-
-template <class T>
-bool read_integer(const Json& v, T& out, std::string& err)
-{
-    if (v.kind != Json::Number || !v.integer) {
-        err = "not an integer";
-        return false;
-    }
-    const std::string& t = v.text;
-    const bool negative = t[0] == '-';
-    unsigned long long magnitude = 0;
-    for (std::size_t i = negative ? 1 : 0; i < t.size(); ++i) {
-        const unsigned d = static_cast<unsigned>(t[i] - '0');
-        if (magnitude > (std::numeric_limits<unsigned long long>::max() - d) / 10) {
-            err = "integer out of range: " + t;
-            return false;
-        }
-        magnitude = magnitude * 10 + d;
-    }
-    using Limits = std::numeric_limits<T>;
-    if (negative && magnitude != 0) {
-        if (!Limits::is_signed) {
-            err = "integer out of range: " + t;
-            return false;
-        }
-        const unsigned long long most = static_cast<unsigned long long>(Limits::max()) + 1;
-        if (magnitude > most) {
-            err = "integer out of range: " + t;
-            return false;
-        }
-        // two's complement: -magnitude, computed without signed overflow
-        out = static_cast<T>(static_cast<long long>(~(magnitude - 1)));
-        return true;
-    }
-    if (magnitude > static_cast<unsigned long long>(Limits::max())) {
-        err = "integer out of range: " + t;
-        return false;
-    }
-    out = static_cast<T>(magnitude);
-    return true;
-}
-
-template <class T>
-bool read_float(const Json& v, T& out, std::string& err)
-{
-    if (v.kind == Json::String && v.latin1) {
-        if (v.text == "NaN") {
-            out = std::numeric_limits<T>::quiet_NaN();
-            return true;
-        }
-        if (v.text == "Infinity") {
-            out = std::numeric_limits<T>::infinity();
-            return true;
-        }
-        if (v.text == "-Infinity") {
-            out = -std::numeric_limits<T>::infinity();
-            return true;
-        }
-    }
-    if (v.kind != Json::Number) {
-        err = "not a number";
-        return false;
-    }
-    errno = 0;
-    T x;
-    if constexpr (std::is_same_v<T, float>) {
-        x = std::strtof(v.text.c_str(), nullptr);
-    } else {
-        x = std::strtod(v.text.c_str(), nullptr);
-    }
-    if (std::isinf(x)) {
-        err = "number out of range: " + v.text;
-        return false;
-    }
-    out = x;
-    return true;
-}
-
-[[maybe_unused]] bool read_value(const Json& v, float& out, std::string& err) { return read_float(v, out, err); }
-[[maybe_unused]] bool read_value(const Json& v, double& out, std::string& err) { return read_float(v, out, err); }
-
-[[maybe_unused]] bool read_value(const Json& v, char& out, std::string& err)
-{
-    if (v.kind != Json::String || !v.latin1 || v.text.size() > 1) {
-        err = "expected a string of at most 1 Latin-1 character";
-        return false;
-    }
-    out = v.text.empty() ? '\0' : v.text[0];
-    return true;
-}
-
-template <class T>
-std::enable_if_t<std::is_integral_v<T>, bool> read_value(const Json& v, T& out, std::string& err)
-{
-    return read_integer(v, out, err);
-}
-
-template <std::size_t N>
-bool read_value(const Json& v, std::array<char, N>& out, std::string& err)
-{
-    if (v.kind != Json::String || !v.latin1) {
-        err = "expected a string of Latin-1 characters";
-        return false;
-    }
-    if (v.text.size() > N) {
-        err = std::to_string(v.text.size()) + " bytes do not fit char[" + std::to_string(N) + "]";
-        return false;
-    }
-    out.fill('\0');
-    std::memcpy(out.data(), v.text.data(), v.text.size());
-    return true;
-}
-
-template <class T, std::size_t N>
-bool read_value(const Json& v, std::array<T, N>& out, std::string& err)
-{
-    if (v.kind != Json::Array) {
-        err = "expected a list";
-        return false;
-    }
-    // uint8_t arrays (bytes) may be shorter and are zero-padded; other arrays are exact
-    const bool shorter_ok = std::is_same_v<T, std::uint8_t>;
-    if (v.items.size() > N || (!shorter_ok && v.items.size() != N)) {
-        err = "expected " + std::to_string(N) + " values, got " + std::to_string(v.items.size());
-        return false;
-    }
-    out.fill(T{});
-    for (std::size_t i = 0; i < v.items.size(); ++i) {
-        if (!read_value(v.items[i], out[i], err)) {
-            return false;
-        }
-    }
-    return true;
-}
 
 // --- field tables ---------------------------------------------------------------------------
 
 // How to present and read one field type; a field is reached by its offset in its struct.
 struct FieldIo {
     void (*write)(std::string& o, const void* field);
-    bool (*read)(const Json& v, void* field, std::string& err);
+    bool (*read)(const Json& v, void* field, const std::string& where, std::string& err);
 };
 
 template <class T>
@@ -629,9 +47,9 @@ void write_field(std::string& o, const void* field)
 }
 
 template <class T>
-bool read_field(const Json& v, void* field, std::string& err)
+bool read_field(const Json& v, void* field, const std::string& where, std::string& err)
 {
-    return read_value(v, *static_cast<T*>(field), err);
+    return read_value(v, *static_cast<T*>(field), where, err);
 }
 
 template <class T>
@@ -656,7 +74,9 @@ void write_fields(std::string& o, const void* msg, const FieldSpec* fields, std:
     }
 }
 
-// The members of the request's "fields" object into a message; false (err set) on a bad one.
+// The members of the request's "fields" object into a message; false (err set) on a bad one. A
+// key given twice counts once, where it first came, with its last value (as Python's and Java's
+// maps keep it).
 bool read_fields(const Json& req, void* msg, const char* msg_name, const FieldSpec* fields, std::size_t count,
                  std::string& err)
 {
@@ -665,12 +85,18 @@ bool read_fields(const Json& req, void* msg, const char* msg_name, const FieldSp
         return true;
     }
     if (given->kind != Json::Object) {
-        err = "fields: expected an object";
-        return false;
+        return refuse("fields", "an object", got(*given), err);
     }
     char* base = static_cast<char*>(msg);
     for (std::size_t k = 0; k < given->keys.size(); ++k) {
         const std::string& key = given->keys[k];
+        bool seen = false;
+        for (std::size_t j = 0; j < k && !seen; ++j) {
+            seen = given->keys[j] == key;
+        }
+        if (seen) {
+            continue;
+        }
         const FieldSpec* spec = nullptr;
         for (std::size_t i = 0; i < count && spec == nullptr; ++i) {
             if (key == fields[i].name) {
@@ -681,9 +107,7 @@ bool read_fields(const Json& req, void* msg, const char* msg_name, const FieldSp
             err = std::string(msg_name) + " has no field '" + std::string(key) + "'";
             return false;
         }
-        std::string why;
-        if (!spec->io->read(given->items[k], base + spec->offset, why)) {
-            err = std::string(msg_name) + "." + key + ": " + why;
+        if (!spec->io->read(*given->get(key.c_str()), base + spec->offset, std::string(msg_name) + "." + key, err)) {
             return false;
         }
     }
@@ -5126,25 +4550,14 @@ std::string decode_line(const std::string& text)
     return o;
 }
 
-bool header_byte(const Json& req, const char* key, long long fallback, bool wrap, std::uint8_t& out,
-                 std::string& err)
+bool header_byte(const Json& req, const char* key, std::uint8_t fallback, std::uint8_t& out, std::string& err)
 {
     const Json* v = req.get(key);
     if (v == nullptr) {
-        out = static_cast<std::uint8_t>(fallback);
+        out = fallback;
         return true;
     }
-    long long x = 0;
-    if (!read_integer(*v, x, err)) {
-        err = std::string(key) + ": " + err;
-        return false;
-    }
-    if (!wrap && (x < 0 || x > 255)) {
-        err = std::string(key) + ": out of range 0..255";
-        return false;
-    }
-    out = static_cast<std::uint8_t>(static_cast<unsigned long long>(x) & 0xFFu);
-    return true;
+    return read_integer(*v, out, key, err);
 }
 
 std::string encode_line(const std::string& text)
@@ -5158,31 +4571,31 @@ std::string encode_line(const std::string& text)
         return error_json("expected a JSON object");
     }
     const mav::MessageInfo* info = nullptr;
-    std::string asked;  // the message asked for, as the Python and Java programs quote it
+    std::string err;
     if (const Json* name = req.get("name")) {
-        if (name->kind == Json::String && name->latin1) {
-            info = mav::message_info(std::string_view(name->text));
+        if (name->kind != Json::String) {
+            refuse("name", "a string", got(*name), err);
+            return error_json(err);
         }
-        asked = name->kind == Json::String ? "'" + name->text + "'" : "?";
+        info = name->latin1 ? mav::message_info(std::string_view(name->text)) : nullptr;
+        if (info == nullptr) {
+            return error_json("unknown message '" + name->text + "'");  // as Python's repr and Java quote it
+        }
     } else if (const Json* id = req.get("msgid")) {
         std::uint32_t msgid = 0;
-        std::string err;
-        if (read_integer(*id, msgid, err)) {
-            info = mav::message_info(msgid);
-            asked = std::to_string(msgid);
-        } else {
-            asked = "?";
+        if (!read_integer(*id, msgid, "msgid", err, "0..16777215", 0xFFFFFFu)) {
+            return error_json(err);
+        }
+        info = mav::message_info(msgid);
+        if (info == nullptr) {
+            return error_json("unknown message " + std::to_string(msgid));
         }
     } else {
         return error_json("the object names no message (\"name\" or \"msgid\")");
     }
-    if (info == nullptr) {
-        return error_json("unknown message " + asked);
-    }
     Header h;
-    std::string err;
-    if (!header_byte(req, "seq", 0, true, h.seq, err) || !header_byte(req, "sysid", 1, false, h.sysid, err)
-        || !header_byte(req, "compid", 1, false, h.compid, err)) {
+    if (!header_byte(req, "seq", 0, h.seq, err) || !header_byte(req, "sysid", 1, h.sysid, err)
+        || !header_byte(req, "compid", 1, h.compid, err)) {
         return error_json(err);
     }
     return encode_fields(info->msgid, req, h);

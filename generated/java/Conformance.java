@@ -5,10 +5,7 @@ import java.io.InputStream;
 import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import java.util.ArrayList;
 import java.util.Collections;
-import java.util.LinkedHashMap;
-import java.util.List;
 import java.util.Map;
 
 import ttctl.ttapi.runtime.DecodeException;
@@ -101,7 +98,7 @@ public final class Conformance {
 
     static String error(String message) {
         StringBuilder sb = new StringBuilder("{\"error\":");
-        Json.string(sb, message == null ? "null" : message);
+        ConformanceJson.string(sb, message == null ? "null" : message);
         return sb.append('}').toString();
     }
 
@@ -123,7 +120,7 @@ public final class Conformance {
         }
         StringBuilder sb = new StringBuilder(256);
         sb.append("{\"msgid\":").append(m.msgId()).append(",\"name\":");
-        Json.string(sb, m.name());
+        ConformanceJson.string(sb, m.name());
         sb.append(",\"sysid\":").append(m.sysId()).append(",\"compid\":").append(m.compId())
                 .append(",\"seq\":").append(m.seq()).append(",\"fields\":{");
         fields(m, sb);
@@ -911,7 +908,7 @@ public final class Conformance {
         sb.append(",\"version\":");
         sb.append(m.version);
         sb.append(",\"passkey\":");
-        Json.text(sb, m.passkey);
+        ConformanceJson.text(sb, m.passkey);
     }
 
     private static void fields6(ttctl.ttapi.msg.ChangeOperatorControlAck m, StringBuilder sb) {
@@ -925,7 +922,7 @@ public final class Conformance {
 
     private static void fields7(ttctl.ttapi.msg.AuthKey m, StringBuilder sb) {
         sb.append("\"key\":");
-        Json.text(sb, m.key);
+        ConformanceJson.text(sb, m.key);
     }
 
     private static void fields11(ttctl.ttapi.msg.SetMode m, StringBuilder sb) {
@@ -943,7 +940,7 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"param_id\":");
-        Json.text(sb, m.param_id);
+        ConformanceJson.text(sb, m.param_id);
         sb.append(",\"param_index\":");
         sb.append(m.param_index);
     }
@@ -957,9 +954,9 @@ public final class Conformance {
 
     private static void fields22(ttctl.ttapi.msg.ParamValue m, StringBuilder sb) {
         sb.append("\"param_id\":");
-        Json.text(sb, m.param_id);
+        ConformanceJson.text(sb, m.param_id);
         sb.append(",\"param_value\":");
-        Json.f32(sb, m.param_value);
+        ConformanceJson.f32(sb, m.param_value);
         sb.append(",\"param_type\":");
         sb.append(m.param_type);
         sb.append(",\"param_count\":");
@@ -974,9 +971,9 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"param_id\":");
-        Json.text(sb, m.param_id);
+        ConformanceJson.text(sb, m.param_id);
         sb.append(",\"param_value\":");
-        Json.f32(sb, m.param_value);
+        ConformanceJson.f32(sb, m.param_value);
         sb.append(",\"param_type\":");
         sb.append(m.param_type);
     }
@@ -1020,15 +1017,15 @@ public final class Conformance {
         sb.append("\"satellites_visible\":");
         sb.append(m.satellites_visible);
         sb.append(",\"satellite_prn\":");
-        Json.u8s(sb, m.satellite_prn);
+        ConformanceJson.u8s(sb, m.satellite_prn);
         sb.append(",\"satellite_used\":");
-        Json.u8s(sb, m.satellite_used);
+        ConformanceJson.u8s(sb, m.satellite_used);
         sb.append(",\"satellite_elevation\":");
-        Json.u8s(sb, m.satellite_elevation);
+        ConformanceJson.u8s(sb, m.satellite_elevation);
         sb.append(",\"satellite_azimuth\":");
-        Json.u8s(sb, m.satellite_azimuth);
+        ConformanceJson.u8s(sb, m.satellite_azimuth);
         sb.append(",\"satellite_snr\":");
-        Json.u8s(sb, m.satellite_snr);
+        ConformanceJson.u8s(sb, m.satellite_snr);
     }
 
     private static void fields26(ttctl.ttapi.msg.ScaledImu m, StringBuilder sb) {
@@ -1100,9 +1097,9 @@ public final class Conformance {
         sb.append("\"time_boot_ms\":");
         sb.append(m.time_boot_ms);
         sb.append(",\"press_abs\":");
-        Json.f32(sb, m.press_abs);
+        ConformanceJson.f32(sb, m.press_abs);
         sb.append(",\"press_diff\":");
-        Json.f32(sb, m.press_diff);
+        ConformanceJson.f32(sb, m.press_diff);
         sb.append(",\"temperature\":");
         sb.append(m.temperature);
         sb.append(",\"temperature_press_diff\":");
@@ -1113,55 +1110,55 @@ public final class Conformance {
         sb.append("\"time_boot_ms\":");
         sb.append(m.time_boot_ms);
         sb.append(",\"roll\":");
-        Json.f32(sb, m.roll);
+        ConformanceJson.f32(sb, m.roll);
         sb.append(",\"pitch\":");
-        Json.f32(sb, m.pitch);
+        ConformanceJson.f32(sb, m.pitch);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
         sb.append(",\"rollspeed\":");
-        Json.f32(sb, m.rollspeed);
+        ConformanceJson.f32(sb, m.rollspeed);
         sb.append(",\"pitchspeed\":");
-        Json.f32(sb, m.pitchspeed);
+        ConformanceJson.f32(sb, m.pitchspeed);
         sb.append(",\"yawspeed\":");
-        Json.f32(sb, m.yawspeed);
+        ConformanceJson.f32(sb, m.yawspeed);
     }
 
     private static void fields31(ttctl.ttapi.msg.AttitudeQuaternion m, StringBuilder sb) {
         sb.append("\"time_boot_ms\":");
         sb.append(m.time_boot_ms);
         sb.append(",\"q1\":");
-        Json.f32(sb, m.q1);
+        ConformanceJson.f32(sb, m.q1);
         sb.append(",\"q2\":");
-        Json.f32(sb, m.q2);
+        ConformanceJson.f32(sb, m.q2);
         sb.append(",\"q3\":");
-        Json.f32(sb, m.q3);
+        ConformanceJson.f32(sb, m.q3);
         sb.append(",\"q4\":");
-        Json.f32(sb, m.q4);
+        ConformanceJson.f32(sb, m.q4);
         sb.append(",\"rollspeed\":");
-        Json.f32(sb, m.rollspeed);
+        ConformanceJson.f32(sb, m.rollspeed);
         sb.append(",\"pitchspeed\":");
-        Json.f32(sb, m.pitchspeed);
+        ConformanceJson.f32(sb, m.pitchspeed);
         sb.append(",\"yawspeed\":");
-        Json.f32(sb, m.yawspeed);
+        ConformanceJson.f32(sb, m.yawspeed);
         sb.append(",\"repr_offset_q\":");
-        Json.f32s(sb, m.repr_offset_q);
+        ConformanceJson.f32s(sb, m.repr_offset_q);
     }
 
     private static void fields32(ttctl.ttapi.msg.LocalPositionNed m, StringBuilder sb) {
         sb.append("\"time_boot_ms\":");
         sb.append(m.time_boot_ms);
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"vx\":");
-        Json.f32(sb, m.vx);
+        ConformanceJson.f32(sb, m.vx);
         sb.append(",\"vy\":");
-        Json.f32(sb, m.vy);
+        ConformanceJson.f32(sb, m.vy);
         sb.append(",\"vz\":");
-        Json.f32(sb, m.vz);
+        ConformanceJson.f32(sb, m.vz);
     }
 
     private static void fields33(ttctl.ttapi.msg.GlobalPositionInt m, StringBuilder sb) {
@@ -1316,19 +1313,19 @@ public final class Conformance {
         sb.append(",\"autocontinue\":");
         sb.append(m.autocontinue);
         sb.append(",\"param1\":");
-        Json.f32(sb, m.param1);
+        ConformanceJson.f32(sb, m.param1);
         sb.append(",\"param2\":");
-        Json.f32(sb, m.param2);
+        ConformanceJson.f32(sb, m.param2);
         sb.append(",\"param3\":");
-        Json.f32(sb, m.param3);
+        ConformanceJson.f32(sb, m.param3);
         sb.append(",\"param4\":");
-        Json.f32(sb, m.param4);
+        ConformanceJson.f32(sb, m.param4);
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"mission_type\":");
         sb.append(m.mission_type);
     }
@@ -1439,19 +1436,19 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"param_id\":");
-        Json.text(sb, m.param_id);
+        ConformanceJson.text(sb, m.param_id);
         sb.append(",\"param_index\":");
         sb.append(m.param_index);
         sb.append(",\"parameter_rc_channel_index\":");
         sb.append(m.parameter_rc_channel_index);
         sb.append(",\"param_value0\":");
-        Json.f32(sb, m.param_value0);
+        ConformanceJson.f32(sb, m.param_value0);
         sb.append(",\"scale\":");
-        Json.f32(sb, m.scale);
+        ConformanceJson.f32(sb, m.scale);
         sb.append(",\"param_value_min\":");
-        Json.f32(sb, m.param_value_min);
+        ConformanceJson.f32(sb, m.param_value_min);
         sb.append(",\"param_value_max\":");
-        Json.f32(sb, m.param_value_max);
+        ConformanceJson.f32(sb, m.param_value_max);
     }
 
     private static void fields51(ttctl.ttapi.msg.MissionRequestInt m, StringBuilder sb) {
@@ -1473,56 +1470,56 @@ public final class Conformance {
         sb.append(",\"frame\":");
         sb.append(m.frame);
         sb.append(",\"p1x\":");
-        Json.f32(sb, m.p1x);
+        ConformanceJson.f32(sb, m.p1x);
         sb.append(",\"p1y\":");
-        Json.f32(sb, m.p1y);
+        ConformanceJson.f32(sb, m.p1y);
         sb.append(",\"p1z\":");
-        Json.f32(sb, m.p1z);
+        ConformanceJson.f32(sb, m.p1z);
         sb.append(",\"p2x\":");
-        Json.f32(sb, m.p2x);
+        ConformanceJson.f32(sb, m.p2x);
         sb.append(",\"p2y\":");
-        Json.f32(sb, m.p2y);
+        ConformanceJson.f32(sb, m.p2y);
         sb.append(",\"p2z\":");
-        Json.f32(sb, m.p2z);
+        ConformanceJson.f32(sb, m.p2z);
     }
 
     private static void fields55(ttctl.ttapi.msg.SafetyAllowedArea m, StringBuilder sb) {
         sb.append("\"frame\":");
         sb.append(m.frame);
         sb.append(",\"p1x\":");
-        Json.f32(sb, m.p1x);
+        ConformanceJson.f32(sb, m.p1x);
         sb.append(",\"p1y\":");
-        Json.f32(sb, m.p1y);
+        ConformanceJson.f32(sb, m.p1y);
         sb.append(",\"p1z\":");
-        Json.f32(sb, m.p1z);
+        ConformanceJson.f32(sb, m.p1z);
         sb.append(",\"p2x\":");
-        Json.f32(sb, m.p2x);
+        ConformanceJson.f32(sb, m.p2x);
         sb.append(",\"p2y\":");
-        Json.f32(sb, m.p2y);
+        ConformanceJson.f32(sb, m.p2y);
         sb.append(",\"p2z\":");
-        Json.f32(sb, m.p2z);
+        ConformanceJson.f32(sb, m.p2z);
     }
 
     private static void fields61(ttctl.ttapi.msg.AttitudeQuaternionCov m, StringBuilder sb) {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"rollspeed\":");
-        Json.f32(sb, m.rollspeed);
+        ConformanceJson.f32(sb, m.rollspeed);
         sb.append(",\"pitchspeed\":");
-        Json.f32(sb, m.pitchspeed);
+        ConformanceJson.f32(sb, m.pitchspeed);
         sb.append(",\"yawspeed\":");
-        Json.f32(sb, m.yawspeed);
+        ConformanceJson.f32(sb, m.yawspeed);
         sb.append(",\"covariance\":");
-        Json.f32s(sb, m.covariance);
+        ConformanceJson.f32s(sb, m.covariance);
     }
 
     private static void fields62(ttctl.ttapi.msg.NavControllerOutput m, StringBuilder sb) {
         sb.append("\"nav_roll\":");
-        Json.f32(sb, m.nav_roll);
+        ConformanceJson.f32(sb, m.nav_roll);
         sb.append(",\"nav_pitch\":");
-        Json.f32(sb, m.nav_pitch);
+        ConformanceJson.f32(sb, m.nav_pitch);
         sb.append(",\"nav_bearing\":");
         sb.append(m.nav_bearing);
         sb.append(",\"target_bearing\":");
@@ -1530,11 +1527,11 @@ public final class Conformance {
         sb.append(",\"wp_dist\":");
         sb.append(m.wp_dist);
         sb.append(",\"alt_error\":");
-        Json.f32(sb, m.alt_error);
+        ConformanceJson.f32(sb, m.alt_error);
         sb.append(",\"aspd_error\":");
-        Json.f32(sb, m.aspd_error);
+        ConformanceJson.f32(sb, m.aspd_error);
         sb.append(",\"xtrack_error\":");
-        Json.f32(sb, m.xtrack_error);
+        ConformanceJson.f32(sb, m.xtrack_error);
     }
 
     private static void fields63(ttctl.ttapi.msg.GlobalPositionIntCov m, StringBuilder sb) {
@@ -1551,13 +1548,13 @@ public final class Conformance {
         sb.append(",\"relative_alt\":");
         sb.append(m.relative_alt);
         sb.append(",\"vx\":");
-        Json.f32(sb, m.vx);
+        ConformanceJson.f32(sb, m.vx);
         sb.append(",\"vy\":");
-        Json.f32(sb, m.vy);
+        ConformanceJson.f32(sb, m.vy);
         sb.append(",\"vz\":");
-        Json.f32(sb, m.vz);
+        ConformanceJson.f32(sb, m.vz);
         sb.append(",\"covariance\":");
-        Json.f32s(sb, m.covariance);
+        ConformanceJson.f32s(sb, m.covariance);
     }
 
     private static void fields64(ttctl.ttapi.msg.LocalPositionNedCov m, StringBuilder sb) {
@@ -1566,25 +1563,25 @@ public final class Conformance {
         sb.append(",\"estimator_type\":");
         sb.append(m.estimator_type);
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"vx\":");
-        Json.f32(sb, m.vx);
+        ConformanceJson.f32(sb, m.vx);
         sb.append(",\"vy\":");
-        Json.f32(sb, m.vy);
+        ConformanceJson.f32(sb, m.vy);
         sb.append(",\"vz\":");
-        Json.f32(sb, m.vz);
+        ConformanceJson.f32(sb, m.vz);
         sb.append(",\"ax\":");
-        Json.f32(sb, m.ax);
+        ConformanceJson.f32(sb, m.ax);
         sb.append(",\"ay\":");
-        Json.f32(sb, m.ay);
+        ConformanceJson.f32(sb, m.ay);
         sb.append(",\"az\":");
-        Json.f32(sb, m.az);
+        ConformanceJson.f32(sb, m.az);
         sb.append(",\"covariance\":");
-        Json.f32s(sb, m.covariance);
+        ConformanceJson.f32s(sb, m.covariance);
     }
 
     private static void fields65(ttctl.ttapi.msg.RcChannels m, StringBuilder sb) {
@@ -1748,36 +1745,36 @@ public final class Conformance {
         sb.append(",\"autocontinue\":");
         sb.append(m.autocontinue);
         sb.append(",\"param1\":");
-        Json.f32(sb, m.param1);
+        ConformanceJson.f32(sb, m.param1);
         sb.append(",\"param2\":");
-        Json.f32(sb, m.param2);
+        ConformanceJson.f32(sb, m.param2);
         sb.append(",\"param3\":");
-        Json.f32(sb, m.param3);
+        ConformanceJson.f32(sb, m.param3);
         sb.append(",\"param4\":");
-        Json.f32(sb, m.param4);
+        ConformanceJson.f32(sb, m.param4);
         sb.append(",\"x\":");
         sb.append(m.x);
         sb.append(",\"y\":");
         sb.append(m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"mission_type\":");
         sb.append(m.mission_type);
     }
 
     private static void fields74(ttctl.ttapi.msg.VfrHud m, StringBuilder sb) {
         sb.append("\"airspeed\":");
-        Json.f32(sb, m.airspeed);
+        ConformanceJson.f32(sb, m.airspeed);
         sb.append(",\"groundspeed\":");
-        Json.f32(sb, m.groundspeed);
+        ConformanceJson.f32(sb, m.groundspeed);
         sb.append(",\"heading\":");
         sb.append(m.heading);
         sb.append(",\"throttle\":");
         sb.append(m.throttle);
         sb.append(",\"alt\":");
-        Json.f32(sb, m.alt);
+        ConformanceJson.f32(sb, m.alt);
         sb.append(",\"climb\":");
-        Json.f32(sb, m.climb);
+        ConformanceJson.f32(sb, m.climb);
     }
 
     private static void fields75(ttctl.ttapi.msg.CommandInt m, StringBuilder sb) {
@@ -1794,19 +1791,19 @@ public final class Conformance {
         sb.append(",\"autocontinue\":");
         sb.append(m.autocontinue);
         sb.append(",\"param1\":");
-        Json.f32(sb, m.param1);
+        ConformanceJson.f32(sb, m.param1);
         sb.append(",\"param2\":");
-        Json.f32(sb, m.param2);
+        ConformanceJson.f32(sb, m.param2);
         sb.append(",\"param3\":");
-        Json.f32(sb, m.param3);
+        ConformanceJson.f32(sb, m.param3);
         sb.append(",\"param4\":");
-        Json.f32(sb, m.param4);
+        ConformanceJson.f32(sb, m.param4);
         sb.append(",\"x\":");
         sb.append(m.x);
         sb.append(",\"y\":");
         sb.append(m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
     }
 
     private static void fields76(ttctl.ttapi.msg.CommandLong m, StringBuilder sb) {
@@ -1819,19 +1816,19 @@ public final class Conformance {
         sb.append(",\"confirmation\":");
         sb.append(m.confirmation);
         sb.append(",\"param1\":");
-        Json.f32(sb, m.param1);
+        ConformanceJson.f32(sb, m.param1);
         sb.append(",\"param2\":");
-        Json.f32(sb, m.param2);
+        ConformanceJson.f32(sb, m.param2);
         sb.append(",\"param3\":");
-        Json.f32(sb, m.param3);
+        ConformanceJson.f32(sb, m.param3);
         sb.append(",\"param4\":");
-        Json.f32(sb, m.param4);
+        ConformanceJson.f32(sb, m.param4);
         sb.append(",\"param5\":");
-        Json.f32(sb, m.param5);
+        ConformanceJson.f32(sb, m.param5);
         sb.append(",\"param6\":");
-        Json.f32(sb, m.param6);
+        ConformanceJson.f32(sb, m.param6);
         sb.append(",\"param7\":");
-        Json.f32(sb, m.param7);
+        ConformanceJson.f32(sb, m.param7);
     }
 
     private static void fields77(ttctl.ttapi.msg.CommandAck m, StringBuilder sb) {
@@ -1853,13 +1850,13 @@ public final class Conformance {
         sb.append("\"time_boot_ms\":");
         sb.append(m.time_boot_ms);
         sb.append(",\"roll\":");
-        Json.f32(sb, m.roll);
+        ConformanceJson.f32(sb, m.roll);
         sb.append(",\"pitch\":");
-        Json.f32(sb, m.pitch);
+        ConformanceJson.f32(sb, m.pitch);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
         sb.append(",\"thrust\":");
-        Json.f32(sb, m.thrust);
+        ConformanceJson.f32(sb, m.thrust);
         sb.append(",\"mode_switch\":");
         sb.append(m.mode_switch);
         sb.append(",\"manual_override_switch\":");
@@ -1876,15 +1873,15 @@ public final class Conformance {
         sb.append(",\"type_mask\":");
         sb.append(m.type_mask);
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"body_roll_rate\":");
-        Json.f32(sb, m.body_roll_rate);
+        ConformanceJson.f32(sb, m.body_roll_rate);
         sb.append(",\"body_pitch_rate\":");
-        Json.f32(sb, m.body_pitch_rate);
+        ConformanceJson.f32(sb, m.body_pitch_rate);
         sb.append(",\"body_yaw_rate\":");
-        Json.f32(sb, m.body_yaw_rate);
+        ConformanceJson.f32(sb, m.body_yaw_rate);
         sb.append(",\"thrust\":");
-        Json.f32(sb, m.thrust);
+        ConformanceJson.f32(sb, m.thrust);
     }
 
     private static void fields83(ttctl.ttapi.msg.AttitudeTarget m, StringBuilder sb) {
@@ -1893,15 +1890,15 @@ public final class Conformance {
         sb.append(",\"type_mask\":");
         sb.append(m.type_mask);
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"body_roll_rate\":");
-        Json.f32(sb, m.body_roll_rate);
+        ConformanceJson.f32(sb, m.body_roll_rate);
         sb.append(",\"body_pitch_rate\":");
-        Json.f32(sb, m.body_pitch_rate);
+        ConformanceJson.f32(sb, m.body_pitch_rate);
         sb.append(",\"body_yaw_rate\":");
-        Json.f32(sb, m.body_yaw_rate);
+        ConformanceJson.f32(sb, m.body_yaw_rate);
         sb.append(",\"thrust\":");
-        Json.f32(sb, m.thrust);
+        ConformanceJson.f32(sb, m.thrust);
     }
 
     private static void fields84(ttctl.ttapi.msg.SetPositionTargetLocalNed m, StringBuilder sb) {
@@ -1916,27 +1913,27 @@ public final class Conformance {
         sb.append(",\"type_mask\":");
         sb.append(m.type_mask);
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"vx\":");
-        Json.f32(sb, m.vx);
+        ConformanceJson.f32(sb, m.vx);
         sb.append(",\"vy\":");
-        Json.f32(sb, m.vy);
+        ConformanceJson.f32(sb, m.vy);
         sb.append(",\"vz\":");
-        Json.f32(sb, m.vz);
+        ConformanceJson.f32(sb, m.vz);
         sb.append(",\"afx\":");
-        Json.f32(sb, m.afx);
+        ConformanceJson.f32(sb, m.afx);
         sb.append(",\"afy\":");
-        Json.f32(sb, m.afy);
+        ConformanceJson.f32(sb, m.afy);
         sb.append(",\"afz\":");
-        Json.f32(sb, m.afz);
+        ConformanceJson.f32(sb, m.afz);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
         sb.append(",\"yaw_rate\":");
-        Json.f32(sb, m.yaw_rate);
+        ConformanceJson.f32(sb, m.yaw_rate);
     }
 
     private static void fields85(ttctl.ttapi.msg.PositionTargetLocalNed m, StringBuilder sb) {
@@ -1947,27 +1944,27 @@ public final class Conformance {
         sb.append(",\"type_mask\":");
         sb.append(m.type_mask);
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"vx\":");
-        Json.f32(sb, m.vx);
+        ConformanceJson.f32(sb, m.vx);
         sb.append(",\"vy\":");
-        Json.f32(sb, m.vy);
+        ConformanceJson.f32(sb, m.vy);
         sb.append(",\"vz\":");
-        Json.f32(sb, m.vz);
+        ConformanceJson.f32(sb, m.vz);
         sb.append(",\"afx\":");
-        Json.f32(sb, m.afx);
+        ConformanceJson.f32(sb, m.afx);
         sb.append(",\"afy\":");
-        Json.f32(sb, m.afy);
+        ConformanceJson.f32(sb, m.afy);
         sb.append(",\"afz\":");
-        Json.f32(sb, m.afz);
+        ConformanceJson.f32(sb, m.afz);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
         sb.append(",\"yaw_rate\":");
-        Json.f32(sb, m.yaw_rate);
+        ConformanceJson.f32(sb, m.yaw_rate);
     }
 
     private static void fields86(ttctl.ttapi.msg.SetPositionTargetGlobalInt m, StringBuilder sb) {
@@ -1986,23 +1983,23 @@ public final class Conformance {
         sb.append(",\"lon_int\":");
         sb.append(m.lon_int);
         sb.append(",\"alt\":");
-        Json.f32(sb, m.alt);
+        ConformanceJson.f32(sb, m.alt);
         sb.append(",\"vx\":");
-        Json.f32(sb, m.vx);
+        ConformanceJson.f32(sb, m.vx);
         sb.append(",\"vy\":");
-        Json.f32(sb, m.vy);
+        ConformanceJson.f32(sb, m.vy);
         sb.append(",\"vz\":");
-        Json.f32(sb, m.vz);
+        ConformanceJson.f32(sb, m.vz);
         sb.append(",\"afx\":");
-        Json.f32(sb, m.afx);
+        ConformanceJson.f32(sb, m.afx);
         sb.append(",\"afy\":");
-        Json.f32(sb, m.afy);
+        ConformanceJson.f32(sb, m.afy);
         sb.append(",\"afz\":");
-        Json.f32(sb, m.afz);
+        ConformanceJson.f32(sb, m.afz);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
         sb.append(",\"yaw_rate\":");
-        Json.f32(sb, m.yaw_rate);
+        ConformanceJson.f32(sb, m.yaw_rate);
     }
 
     private static void fields87(ttctl.ttapi.msg.PositionTargetGlobalInt m, StringBuilder sb) {
@@ -2017,57 +2014,57 @@ public final class Conformance {
         sb.append(",\"lon_int\":");
         sb.append(m.lon_int);
         sb.append(",\"alt\":");
-        Json.f32(sb, m.alt);
+        ConformanceJson.f32(sb, m.alt);
         sb.append(",\"vx\":");
-        Json.f32(sb, m.vx);
+        ConformanceJson.f32(sb, m.vx);
         sb.append(",\"vy\":");
-        Json.f32(sb, m.vy);
+        ConformanceJson.f32(sb, m.vy);
         sb.append(",\"vz\":");
-        Json.f32(sb, m.vz);
+        ConformanceJson.f32(sb, m.vz);
         sb.append(",\"afx\":");
-        Json.f32(sb, m.afx);
+        ConformanceJson.f32(sb, m.afx);
         sb.append(",\"afy\":");
-        Json.f32(sb, m.afy);
+        ConformanceJson.f32(sb, m.afy);
         sb.append(",\"afz\":");
-        Json.f32(sb, m.afz);
+        ConformanceJson.f32(sb, m.afz);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
         sb.append(",\"yaw_rate\":");
-        Json.f32(sb, m.yaw_rate);
+        ConformanceJson.f32(sb, m.yaw_rate);
     }
 
     private static void fields89(ttctl.ttapi.msg.LocalPositionNedSystemGlobalOffset m, StringBuilder sb) {
         sb.append("\"time_boot_ms\":");
         sb.append(m.time_boot_ms);
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"roll\":");
-        Json.f32(sb, m.roll);
+        ConformanceJson.f32(sb, m.roll);
         sb.append(",\"pitch\":");
-        Json.f32(sb, m.pitch);
+        ConformanceJson.f32(sb, m.pitch);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
     }
 
     private static void fields90(ttctl.ttapi.msg.HilState m, StringBuilder sb) {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"roll\":");
-        Json.f32(sb, m.roll);
+        ConformanceJson.f32(sb, m.roll);
         sb.append(",\"pitch\":");
-        Json.f32(sb, m.pitch);
+        ConformanceJson.f32(sb, m.pitch);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
         sb.append(",\"rollspeed\":");
-        Json.f32(sb, m.rollspeed);
+        ConformanceJson.f32(sb, m.rollspeed);
         sb.append(",\"pitchspeed\":");
-        Json.f32(sb, m.pitchspeed);
+        ConformanceJson.f32(sb, m.pitchspeed);
         sb.append(",\"yawspeed\":");
-        Json.f32(sb, m.yawspeed);
+        ConformanceJson.f32(sb, m.yawspeed);
         sb.append(",\"lat\":");
         sb.append(m.lat);
         sb.append(",\"lon\":");
@@ -2092,21 +2089,21 @@ public final class Conformance {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"roll_ailerons\":");
-        Json.f32(sb, m.roll_ailerons);
+        ConformanceJson.f32(sb, m.roll_ailerons);
         sb.append(",\"pitch_elevator\":");
-        Json.f32(sb, m.pitch_elevator);
+        ConformanceJson.f32(sb, m.pitch_elevator);
         sb.append(",\"yaw_rudder\":");
-        Json.f32(sb, m.yaw_rudder);
+        ConformanceJson.f32(sb, m.yaw_rudder);
         sb.append(",\"throttle\":");
-        Json.f32(sb, m.throttle);
+        ConformanceJson.f32(sb, m.throttle);
         sb.append(",\"aux1\":");
-        Json.f32(sb, m.aux1);
+        ConformanceJson.f32(sb, m.aux1);
         sb.append(",\"aux2\":");
-        Json.f32(sb, m.aux2);
+        ConformanceJson.f32(sb, m.aux2);
         sb.append(",\"aux3\":");
-        Json.f32(sb, m.aux3);
+        ConformanceJson.f32(sb, m.aux3);
         sb.append(",\"aux4\":");
-        Json.f32(sb, m.aux4);
+        ConformanceJson.f32(sb, m.aux4);
         sb.append(",\"mode\":");
         sb.append(m.mode);
         sb.append(",\"nav_mode\":");
@@ -2148,7 +2145,7 @@ public final class Conformance {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"controls\":");
-        Json.f32s(sb, m.controls);
+        ConformanceJson.f32s(sb, m.controls);
         sb.append(",\"mode\":");
         sb.append(m.mode);
         sb.append(",\"flags\":");
@@ -2165,36 +2162,36 @@ public final class Conformance {
         sb.append(",\"flow_y\":");
         sb.append(m.flow_y);
         sb.append(",\"flow_comp_m_x\":");
-        Json.f32(sb, m.flow_comp_m_x);
+        ConformanceJson.f32(sb, m.flow_comp_m_x);
         sb.append(",\"flow_comp_m_y\":");
-        Json.f32(sb, m.flow_comp_m_y);
+        ConformanceJson.f32(sb, m.flow_comp_m_y);
         sb.append(",\"quality\":");
         sb.append(m.quality);
         sb.append(",\"ground_distance\":");
-        Json.f32(sb, m.ground_distance);
+        ConformanceJson.f32(sb, m.ground_distance);
         sb.append(",\"flow_rate_x\":");
-        Json.f32(sb, m.flow_rate_x);
+        ConformanceJson.f32(sb, m.flow_rate_x);
         sb.append(",\"flow_rate_y\":");
-        Json.f32(sb, m.flow_rate_y);
+        ConformanceJson.f32(sb, m.flow_rate_y);
     }
 
     private static void fields101(ttctl.ttapi.msg.GlobalVisionPositionEstimate m, StringBuilder sb) {
         sb.append("\"usec\":");
         sb.append(Unsigned.toString(m.usec));
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"roll\":");
-        Json.f32(sb, m.roll);
+        ConformanceJson.f32(sb, m.roll);
         sb.append(",\"pitch\":");
-        Json.f32(sb, m.pitch);
+        ConformanceJson.f32(sb, m.pitch);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
         sb.append(",\"covariance\":");
-        Json.f32s(sb, m.covariance);
+        ConformanceJson.f32s(sb, m.covariance);
         sb.append(",\"reset_counter\":");
         sb.append(m.reset_counter);
     }
@@ -2203,19 +2200,19 @@ public final class Conformance {
         sb.append("\"usec\":");
         sb.append(Unsigned.toString(m.usec));
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"roll\":");
-        Json.f32(sb, m.roll);
+        ConformanceJson.f32(sb, m.roll);
         sb.append(",\"pitch\":");
-        Json.f32(sb, m.pitch);
+        ConformanceJson.f32(sb, m.pitch);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
         sb.append(",\"covariance\":");
-        Json.f32s(sb, m.covariance);
+        ConformanceJson.f32s(sb, m.covariance);
         sb.append(",\"reset_counter\":");
         sb.append(m.reset_counter);
     }
@@ -2224,13 +2221,13 @@ public final class Conformance {
         sb.append("\"usec\":");
         sb.append(Unsigned.toString(m.usec));
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"covariance\":");
-        Json.f32s(sb, m.covariance);
+        ConformanceJson.f32s(sb, m.covariance);
         sb.append(",\"reset_counter\":");
         sb.append(m.reset_counter);
     }
@@ -2239,50 +2236,50 @@ public final class Conformance {
         sb.append("\"usec\":");
         sb.append(Unsigned.toString(m.usec));
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"roll\":");
-        Json.f32(sb, m.roll);
+        ConformanceJson.f32(sb, m.roll);
         sb.append(",\"pitch\":");
-        Json.f32(sb, m.pitch);
+        ConformanceJson.f32(sb, m.pitch);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
         sb.append(",\"covariance\":");
-        Json.f32s(sb, m.covariance);
+        ConformanceJson.f32s(sb, m.covariance);
     }
 
     private static void fields105(ttctl.ttapi.msg.HighresImu m, StringBuilder sb) {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"xacc\":");
-        Json.f32(sb, m.xacc);
+        ConformanceJson.f32(sb, m.xacc);
         sb.append(",\"yacc\":");
-        Json.f32(sb, m.yacc);
+        ConformanceJson.f32(sb, m.yacc);
         sb.append(",\"zacc\":");
-        Json.f32(sb, m.zacc);
+        ConformanceJson.f32(sb, m.zacc);
         sb.append(",\"xgyro\":");
-        Json.f32(sb, m.xgyro);
+        ConformanceJson.f32(sb, m.xgyro);
         sb.append(",\"ygyro\":");
-        Json.f32(sb, m.ygyro);
+        ConformanceJson.f32(sb, m.ygyro);
         sb.append(",\"zgyro\":");
-        Json.f32(sb, m.zgyro);
+        ConformanceJson.f32(sb, m.zgyro);
         sb.append(",\"xmag\":");
-        Json.f32(sb, m.xmag);
+        ConformanceJson.f32(sb, m.xmag);
         sb.append(",\"ymag\":");
-        Json.f32(sb, m.ymag);
+        ConformanceJson.f32(sb, m.ymag);
         sb.append(",\"zmag\":");
-        Json.f32(sb, m.zmag);
+        ConformanceJson.f32(sb, m.zmag);
         sb.append(",\"abs_pressure\":");
-        Json.f32(sb, m.abs_pressure);
+        ConformanceJson.f32(sb, m.abs_pressure);
         sb.append(",\"diff_pressure\":");
-        Json.f32(sb, m.diff_pressure);
+        ConformanceJson.f32(sb, m.diff_pressure);
         sb.append(",\"pressure_alt\":");
-        Json.f32(sb, m.pressure_alt);
+        ConformanceJson.f32(sb, m.pressure_alt);
         sb.append(",\"temperature\":");
-        Json.f32(sb, m.temperature);
+        ConformanceJson.f32(sb, m.temperature);
         sb.append(",\"fields_updated\":");
         sb.append(m.fields_updated);
         sb.append(",\"id\":");
@@ -2297,15 +2294,15 @@ public final class Conformance {
         sb.append(",\"integration_time_us\":");
         sb.append(m.integration_time_us);
         sb.append(",\"integrated_x\":");
-        Json.f32(sb, m.integrated_x);
+        ConformanceJson.f32(sb, m.integrated_x);
         sb.append(",\"integrated_y\":");
-        Json.f32(sb, m.integrated_y);
+        ConformanceJson.f32(sb, m.integrated_y);
         sb.append(",\"integrated_xgyro\":");
-        Json.f32(sb, m.integrated_xgyro);
+        ConformanceJson.f32(sb, m.integrated_xgyro);
         sb.append(",\"integrated_ygyro\":");
-        Json.f32(sb, m.integrated_ygyro);
+        ConformanceJson.f32(sb, m.integrated_ygyro);
         sb.append(",\"integrated_zgyro\":");
-        Json.f32(sb, m.integrated_zgyro);
+        ConformanceJson.f32(sb, m.integrated_zgyro);
         sb.append(",\"temperature\":");
         sb.append(m.temperature);
         sb.append(",\"quality\":");
@@ -2313,38 +2310,38 @@ public final class Conformance {
         sb.append(",\"time_delta_distance_us\":");
         sb.append(m.time_delta_distance_us);
         sb.append(",\"distance\":");
-        Json.f32(sb, m.distance);
+        ConformanceJson.f32(sb, m.distance);
     }
 
     private static void fields107(ttctl.ttapi.msg.HilSensor m, StringBuilder sb) {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"xacc\":");
-        Json.f32(sb, m.xacc);
+        ConformanceJson.f32(sb, m.xacc);
         sb.append(",\"yacc\":");
-        Json.f32(sb, m.yacc);
+        ConformanceJson.f32(sb, m.yacc);
         sb.append(",\"zacc\":");
-        Json.f32(sb, m.zacc);
+        ConformanceJson.f32(sb, m.zacc);
         sb.append(",\"xgyro\":");
-        Json.f32(sb, m.xgyro);
+        ConformanceJson.f32(sb, m.xgyro);
         sb.append(",\"ygyro\":");
-        Json.f32(sb, m.ygyro);
+        ConformanceJson.f32(sb, m.ygyro);
         sb.append(",\"zgyro\":");
-        Json.f32(sb, m.zgyro);
+        ConformanceJson.f32(sb, m.zgyro);
         sb.append(",\"xmag\":");
-        Json.f32(sb, m.xmag);
+        ConformanceJson.f32(sb, m.xmag);
         sb.append(",\"ymag\":");
-        Json.f32(sb, m.ymag);
+        ConformanceJson.f32(sb, m.ymag);
         sb.append(",\"zmag\":");
-        Json.f32(sb, m.zmag);
+        ConformanceJson.f32(sb, m.zmag);
         sb.append(",\"abs_pressure\":");
-        Json.f32(sb, m.abs_pressure);
+        ConformanceJson.f32(sb, m.abs_pressure);
         sb.append(",\"diff_pressure\":");
-        Json.f32(sb, m.diff_pressure);
+        ConformanceJson.f32(sb, m.diff_pressure);
         sb.append(",\"pressure_alt\":");
-        Json.f32(sb, m.pressure_alt);
+        ConformanceJson.f32(sb, m.pressure_alt);
         sb.append(",\"temperature\":");
-        Json.f32(sb, m.temperature);
+        ConformanceJson.f32(sb, m.temperature);
         sb.append(",\"fields_updated\":");
         sb.append(m.fields_updated);
         sb.append(",\"id\":");
@@ -2353,47 +2350,47 @@ public final class Conformance {
 
     private static void fields108(ttctl.ttapi.msg.SimState m, StringBuilder sb) {
         sb.append("\"q1\":");
-        Json.f32(sb, m.q1);
+        ConformanceJson.f32(sb, m.q1);
         sb.append(",\"q2\":");
-        Json.f32(sb, m.q2);
+        ConformanceJson.f32(sb, m.q2);
         sb.append(",\"q3\":");
-        Json.f32(sb, m.q3);
+        ConformanceJson.f32(sb, m.q3);
         sb.append(",\"q4\":");
-        Json.f32(sb, m.q4);
+        ConformanceJson.f32(sb, m.q4);
         sb.append(",\"roll\":");
-        Json.f32(sb, m.roll);
+        ConformanceJson.f32(sb, m.roll);
         sb.append(",\"pitch\":");
-        Json.f32(sb, m.pitch);
+        ConformanceJson.f32(sb, m.pitch);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
         sb.append(",\"xacc\":");
-        Json.f32(sb, m.xacc);
+        ConformanceJson.f32(sb, m.xacc);
         sb.append(",\"yacc\":");
-        Json.f32(sb, m.yacc);
+        ConformanceJson.f32(sb, m.yacc);
         sb.append(",\"zacc\":");
-        Json.f32(sb, m.zacc);
+        ConformanceJson.f32(sb, m.zacc);
         sb.append(",\"xgyro\":");
-        Json.f32(sb, m.xgyro);
+        ConformanceJson.f32(sb, m.xgyro);
         sb.append(",\"ygyro\":");
-        Json.f32(sb, m.ygyro);
+        ConformanceJson.f32(sb, m.ygyro);
         sb.append(",\"zgyro\":");
-        Json.f32(sb, m.zgyro);
+        ConformanceJson.f32(sb, m.zgyro);
         sb.append(",\"lat\":");
-        Json.f32(sb, m.lat);
+        ConformanceJson.f32(sb, m.lat);
         sb.append(",\"lon\":");
-        Json.f32(sb, m.lon);
+        ConformanceJson.f32(sb, m.lon);
         sb.append(",\"alt\":");
-        Json.f32(sb, m.alt);
+        ConformanceJson.f32(sb, m.alt);
         sb.append(",\"std_dev_horz\":");
-        Json.f32(sb, m.std_dev_horz);
+        ConformanceJson.f32(sb, m.std_dev_horz);
         sb.append(",\"std_dev_vert\":");
-        Json.f32(sb, m.std_dev_vert);
+        ConformanceJson.f32(sb, m.std_dev_vert);
         sb.append(",\"vn\":");
-        Json.f32(sb, m.vn);
+        ConformanceJson.f32(sb, m.vn);
         sb.append(",\"ve\":");
-        Json.f32(sb, m.ve);
+        ConformanceJson.f32(sb, m.ve);
         sb.append(",\"vd\":");
-        Json.f32(sb, m.vd);
+        ConformanceJson.f32(sb, m.vd);
         sb.append(",\"lat_int\":");
         sb.append(m.lat_int);
         sb.append(",\"lon_int\":");
@@ -2425,7 +2422,7 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"payload\":");
-        Json.u8s(sb, m.payload);
+        ConformanceJson.u8s(sb, m.payload);
     }
 
     private static void fields111(ttctl.ttapi.msg.Timesync m, StringBuilder sb) {
@@ -2483,15 +2480,15 @@ public final class Conformance {
         sb.append(",\"integration_time_us\":");
         sb.append(m.integration_time_us);
         sb.append(",\"integrated_x\":");
-        Json.f32(sb, m.integrated_x);
+        ConformanceJson.f32(sb, m.integrated_x);
         sb.append(",\"integrated_y\":");
-        Json.f32(sb, m.integrated_y);
+        ConformanceJson.f32(sb, m.integrated_y);
         sb.append(",\"integrated_xgyro\":");
-        Json.f32(sb, m.integrated_xgyro);
+        ConformanceJson.f32(sb, m.integrated_xgyro);
         sb.append(",\"integrated_ygyro\":");
-        Json.f32(sb, m.integrated_ygyro);
+        ConformanceJson.f32(sb, m.integrated_ygyro);
         sb.append(",\"integrated_zgyro\":");
-        Json.f32(sb, m.integrated_zgyro);
+        ConformanceJson.f32(sb, m.integrated_zgyro);
         sb.append(",\"temperature\":");
         sb.append(m.temperature);
         sb.append(",\"quality\":");
@@ -2499,20 +2496,20 @@ public final class Conformance {
         sb.append(",\"time_delta_distance_us\":");
         sb.append(m.time_delta_distance_us);
         sb.append(",\"distance\":");
-        Json.f32(sb, m.distance);
+        ConformanceJson.f32(sb, m.distance);
     }
 
     private static void fields115(ttctl.ttapi.msg.HilStateQuaternion m, StringBuilder sb) {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"attitude_quaternion\":");
-        Json.f32s(sb, m.attitude_quaternion);
+        ConformanceJson.f32s(sb, m.attitude_quaternion);
         sb.append(",\"rollspeed\":");
-        Json.f32(sb, m.rollspeed);
+        ConformanceJson.f32(sb, m.rollspeed);
         sb.append(",\"pitchspeed\":");
-        Json.f32(sb, m.pitchspeed);
+        ConformanceJson.f32(sb, m.pitchspeed);
         sb.append(",\"yawspeed\":");
-        Json.f32(sb, m.yawspeed);
+        ConformanceJson.f32(sb, m.yawspeed);
         sb.append(",\"lat\":");
         sb.append(m.lat);
         sb.append(",\"lon\":");
@@ -2607,7 +2604,7 @@ public final class Conformance {
         sb.append(",\"count\":");
         sb.append(m.count);
         sb.append(",\"data\":");
-        Json.u8s(sb, m.data);
+        ConformanceJson.u8s(sb, m.data);
     }
 
     private static void fields121(ttctl.ttapi.msg.LogErase m, StringBuilder sb) {
@@ -2632,7 +2629,7 @@ public final class Conformance {
         sb.append(",\"len\":");
         sb.append(m.len);
         sb.append(",\"data\":");
-        Json.u8s(sb, m.data);
+        ConformanceJson.u8s(sb, m.data);
     }
 
     private static void fields124(ttctl.ttapi.msg.Gps2Raw m, StringBuilder sb) {
@@ -2695,7 +2692,7 @@ public final class Conformance {
         sb.append(",\"count\":");
         sb.append(m.count);
         sb.append(",\"data\":");
-        Json.u8s(sb, m.data);
+        ConformanceJson.u8s(sb, m.data);
     }
 
     private static void fields127(ttctl.ttapi.msg.GpsRtk m, StringBuilder sb) {
@@ -2802,7 +2799,7 @@ public final class Conformance {
         sb.append("\"seqnr\":");
         sb.append(m.seqnr);
         sb.append(",\"data\":");
-        Json.u8s(sb, m.data);
+        ConformanceJson.u8s(sb, m.data);
     }
 
     private static void fields132(ttctl.ttapi.msg.DistanceSensor m, StringBuilder sb) {
@@ -2823,11 +2820,11 @@ public final class Conformance {
         sb.append(",\"covariance\":");
         sb.append(m.covariance);
         sb.append(",\"horizontal_fov\":");
-        Json.f32(sb, m.horizontal_fov);
+        ConformanceJson.f32(sb, m.horizontal_fov);
         sb.append(",\"vertical_fov\":");
-        Json.f32(sb, m.vertical_fov);
+        ConformanceJson.f32(sb, m.vertical_fov);
         sb.append(",\"quaternion\":");
-        Json.f32s(sb, m.quaternion);
+        ConformanceJson.f32s(sb, m.quaternion);
         sb.append(",\"signal_quality\":");
         sb.append(m.signal_quality);
     }
@@ -2853,7 +2850,7 @@ public final class Conformance {
         sb.append(",\"gridbit\":");
         sb.append(m.gridbit);
         sb.append(",\"data\":");
-        Json.shorts(sb, m.data);
+        ConformanceJson.shorts(sb, m.data);
     }
 
     private static void fields135(ttctl.ttapi.msg.TerrainCheck m, StringBuilder sb) {
@@ -2871,9 +2868,9 @@ public final class Conformance {
         sb.append(",\"spacing\":");
         sb.append(m.spacing);
         sb.append(",\"terrain_height\":");
-        Json.f32(sb, m.terrain_height);
+        ConformanceJson.f32(sb, m.terrain_height);
         sb.append(",\"current_height\":");
-        Json.f32(sb, m.current_height);
+        ConformanceJson.f32(sb, m.current_height);
         sb.append(",\"pending\":");
         sb.append(m.pending);
         sb.append(",\"loaded\":");
@@ -2884,9 +2881,9 @@ public final class Conformance {
         sb.append("\"time_boot_ms\":");
         sb.append(m.time_boot_ms);
         sb.append(",\"press_abs\":");
-        Json.f32(sb, m.press_abs);
+        ConformanceJson.f32(sb, m.press_abs);
         sb.append(",\"press_diff\":");
-        Json.f32(sb, m.press_diff);
+        ConformanceJson.f32(sb, m.press_diff);
         sb.append(",\"temperature\":");
         sb.append(m.temperature);
         sb.append(",\"temperature_press_diff\":");
@@ -2897,15 +2894,15 @@ public final class Conformance {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"covariance\":");
-        Json.f32s(sb, m.covariance);
+        ConformanceJson.f32s(sb, m.covariance);
     }
 
     private static void fields139(ttctl.ttapi.msg.SetActuatorControlTarget m, StringBuilder sb) {
@@ -2918,7 +2915,7 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"controls\":");
-        Json.f32s(sb, m.controls);
+        ConformanceJson.f32s(sb, m.controls);
     }
 
     private static void fields140(ttctl.ttapi.msg.ActuatorControlTarget m, StringBuilder sb) {
@@ -2927,24 +2924,24 @@ public final class Conformance {
         sb.append(",\"group_mlx\":");
         sb.append(m.group_mlx);
         sb.append(",\"controls\":");
-        Json.f32s(sb, m.controls);
+        ConformanceJson.f32s(sb, m.controls);
     }
 
     private static void fields141(ttctl.ttapi.msg.Altitude m, StringBuilder sb) {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"altitude_monotonic\":");
-        Json.f32(sb, m.altitude_monotonic);
+        ConformanceJson.f32(sb, m.altitude_monotonic);
         sb.append(",\"altitude_amsl\":");
-        Json.f32(sb, m.altitude_amsl);
+        ConformanceJson.f32(sb, m.altitude_amsl);
         sb.append(",\"altitude_local\":");
-        Json.f32(sb, m.altitude_local);
+        ConformanceJson.f32(sb, m.altitude_local);
         sb.append(",\"altitude_relative\":");
-        Json.f32(sb, m.altitude_relative);
+        ConformanceJson.f32(sb, m.altitude_relative);
         sb.append(",\"altitude_terrain\":");
-        Json.f32(sb, m.altitude_terrain);
+        ConformanceJson.f32(sb, m.altitude_terrain);
         sb.append(",\"bottom_clearance\":");
-        Json.f32(sb, m.bottom_clearance);
+        ConformanceJson.f32(sb, m.bottom_clearance);
     }
 
     private static void fields142(ttctl.ttapi.msg.ResourceRequest m, StringBuilder sb) {
@@ -2953,20 +2950,20 @@ public final class Conformance {
         sb.append(",\"uri_type\":");
         sb.append(m.uri_type);
         sb.append(",\"uri\":");
-        Json.u8s(sb, m.uri);
+        ConformanceJson.u8s(sb, m.uri);
         sb.append(",\"transfer_type\":");
         sb.append(m.transfer_type);
         sb.append(",\"storage\":");
-        Json.u8s(sb, m.storage);
+        ConformanceJson.u8s(sb, m.storage);
     }
 
     private static void fields143(ttctl.ttapi.msg.ScaledPressure3 m, StringBuilder sb) {
         sb.append("\"time_boot_ms\":");
         sb.append(m.time_boot_ms);
         sb.append(",\"press_abs\":");
-        Json.f32(sb, m.press_abs);
+        ConformanceJson.f32(sb, m.press_abs);
         sb.append(",\"press_diff\":");
-        Json.f32(sb, m.press_diff);
+        ConformanceJson.f32(sb, m.press_diff);
         sb.append(",\"temperature\":");
         sb.append(m.temperature);
         sb.append(",\"temperature_press_diff\":");
@@ -2983,17 +2980,17 @@ public final class Conformance {
         sb.append(",\"lon\":");
         sb.append(m.lon);
         sb.append(",\"alt\":");
-        Json.f32(sb, m.alt);
+        ConformanceJson.f32(sb, m.alt);
         sb.append(",\"vel\":");
-        Json.f32s(sb, m.vel);
+        ConformanceJson.f32s(sb, m.vel);
         sb.append(",\"acc\":");
-        Json.f32s(sb, m.acc);
+        ConformanceJson.f32s(sb, m.acc);
         sb.append(",\"attitude_q\":");
-        Json.f32s(sb, m.attitude_q);
+        ConformanceJson.f32s(sb, m.attitude_q);
         sb.append(",\"rates\":");
-        Json.f32s(sb, m.rates);
+        ConformanceJson.f32s(sb, m.rates);
         sb.append(",\"position_cov\":");
-        Json.f32s(sb, m.position_cov);
+        ConformanceJson.f32s(sb, m.position_cov);
         sb.append(",\"custom_state\":");
         sb.append(Unsigned.toString(m.custom_state));
     }
@@ -3002,37 +2999,37 @@ public final class Conformance {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"x_acc\":");
-        Json.f32(sb, m.x_acc);
+        ConformanceJson.f32(sb, m.x_acc);
         sb.append(",\"y_acc\":");
-        Json.f32(sb, m.y_acc);
+        ConformanceJson.f32(sb, m.y_acc);
         sb.append(",\"z_acc\":");
-        Json.f32(sb, m.z_acc);
+        ConformanceJson.f32(sb, m.z_acc);
         sb.append(",\"x_vel\":");
-        Json.f32(sb, m.x_vel);
+        ConformanceJson.f32(sb, m.x_vel);
         sb.append(",\"y_vel\":");
-        Json.f32(sb, m.y_vel);
+        ConformanceJson.f32(sb, m.y_vel);
         sb.append(",\"z_vel\":");
-        Json.f32(sb, m.z_vel);
+        ConformanceJson.f32(sb, m.z_vel);
         sb.append(",\"x_pos\":");
-        Json.f32(sb, m.x_pos);
+        ConformanceJson.f32(sb, m.x_pos);
         sb.append(",\"y_pos\":");
-        Json.f32(sb, m.y_pos);
+        ConformanceJson.f32(sb, m.y_pos);
         sb.append(",\"z_pos\":");
-        Json.f32(sb, m.z_pos);
+        ConformanceJson.f32(sb, m.z_pos);
         sb.append(",\"airspeed\":");
-        Json.f32(sb, m.airspeed);
+        ConformanceJson.f32(sb, m.airspeed);
         sb.append(",\"vel_variance\":");
-        Json.f32s(sb, m.vel_variance);
+        ConformanceJson.f32s(sb, m.vel_variance);
         sb.append(",\"pos_variance\":");
-        Json.f32s(sb, m.pos_variance);
+        ConformanceJson.f32s(sb, m.pos_variance);
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"roll_rate\":");
-        Json.f32(sb, m.roll_rate);
+        ConformanceJson.f32(sb, m.roll_rate);
         sb.append(",\"pitch_rate\":");
-        Json.f32(sb, m.pitch_rate);
+        ConformanceJson.f32(sb, m.pitch_rate);
         sb.append(",\"yaw_rate\":");
-        Json.f32(sb, m.yaw_rate);
+        ConformanceJson.f32(sb, m.yaw_rate);
     }
 
     private static void fields147(ttctl.ttapi.msg.BatteryStatus m, StringBuilder sb) {
@@ -3045,7 +3042,7 @@ public final class Conformance {
         sb.append(",\"temperature\":");
         sb.append(m.temperature);
         sb.append(",\"voltages\":");
-        Json.ints(sb, m.voltages);
+        ConformanceJson.ints(sb, m.voltages);
         sb.append(",\"current_battery\":");
         sb.append(m.current_battery);
         sb.append(",\"current_consumed\":");
@@ -3059,7 +3056,7 @@ public final class Conformance {
         sb.append(",\"charge_state\":");
         sb.append(m.charge_state);
         sb.append(",\"voltages_ext\":");
-        Json.ints(sb, m.voltages_ext);
+        ConformanceJson.ints(sb, m.voltages_ext);
         sb.append(",\"mode\":");
         sb.append(m.mode);
         sb.append(",\"fault_bitmask\":");
@@ -3078,11 +3075,11 @@ public final class Conformance {
         sb.append(",\"board_version\":");
         sb.append(m.board_version);
         sb.append(",\"flight_custom_version\":");
-        Json.u8s(sb, m.flight_custom_version);
+        ConformanceJson.u8s(sb, m.flight_custom_version);
         sb.append(",\"middleware_custom_version\":");
-        Json.u8s(sb, m.middleware_custom_version);
+        ConformanceJson.u8s(sb, m.middleware_custom_version);
         sb.append(",\"os_custom_version\":");
-        Json.u8s(sb, m.os_custom_version);
+        ConformanceJson.u8s(sb, m.os_custom_version);
         sb.append(",\"vendor_id\":");
         sb.append(m.vendor_id);
         sb.append(",\"product_id\":");
@@ -3090,7 +3087,7 @@ public final class Conformance {
         sb.append(",\"uid\":");
         sb.append(Unsigned.toString(m.uid));
         sb.append(",\"uid2\":");
-        Json.u8s(sb, m.uid2);
+        ConformanceJson.u8s(sb, m.uid2);
     }
 
     private static void fields149(ttctl.ttapi.msg.LandingTarget m, StringBuilder sb) {
@@ -3101,23 +3098,23 @@ public final class Conformance {
         sb.append(",\"frame\":");
         sb.append(m.frame);
         sb.append(",\"angle_x\":");
-        Json.f32(sb, m.angle_x);
+        ConformanceJson.f32(sb, m.angle_x);
         sb.append(",\"angle_y\":");
-        Json.f32(sb, m.angle_y);
+        ConformanceJson.f32(sb, m.angle_y);
         sb.append(",\"distance\":");
-        Json.f32(sb, m.distance);
+        ConformanceJson.f32(sb, m.distance);
         sb.append(",\"size_x\":");
-        Json.f32(sb, m.size_x);
+        ConformanceJson.f32(sb, m.size_x);
         sb.append(",\"size_y\":");
-        Json.f32(sb, m.size_y);
+        ConformanceJson.f32(sb, m.size_y);
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"type\":");
         sb.append(m.type);
         sb.append(",\"position_valid\":");
@@ -3147,74 +3144,74 @@ public final class Conformance {
         sb.append(",\"autosaved\":");
         sb.append(m.autosaved);
         sb.append(",\"fitness\":");
-        Json.f32(sb, m.fitness);
+        ConformanceJson.f32(sb, m.fitness);
         sb.append(",\"ofs_x\":");
-        Json.f32(sb, m.ofs_x);
+        ConformanceJson.f32(sb, m.ofs_x);
         sb.append(",\"ofs_y\":");
-        Json.f32(sb, m.ofs_y);
+        ConformanceJson.f32(sb, m.ofs_y);
         sb.append(",\"ofs_z\":");
-        Json.f32(sb, m.ofs_z);
+        ConformanceJson.f32(sb, m.ofs_z);
         sb.append(",\"diag_x\":");
-        Json.f32(sb, m.diag_x);
+        ConformanceJson.f32(sb, m.diag_x);
         sb.append(",\"diag_y\":");
-        Json.f32(sb, m.diag_y);
+        ConformanceJson.f32(sb, m.diag_y);
         sb.append(",\"diag_z\":");
-        Json.f32(sb, m.diag_z);
+        ConformanceJson.f32(sb, m.diag_z);
         sb.append(",\"offdiag_x\":");
-        Json.f32(sb, m.offdiag_x);
+        ConformanceJson.f32(sb, m.offdiag_x);
         sb.append(",\"offdiag_y\":");
-        Json.f32(sb, m.offdiag_y);
+        ConformanceJson.f32(sb, m.offdiag_y);
         sb.append(",\"offdiag_z\":");
-        Json.f32(sb, m.offdiag_z);
+        ConformanceJson.f32(sb, m.offdiag_z);
         sb.append(",\"orientation_confidence\":");
-        Json.f32(sb, m.orientation_confidence);
+        ConformanceJson.f32(sb, m.orientation_confidence);
         sb.append(",\"old_orientation\":");
         sb.append(m.old_orientation);
         sb.append(",\"new_orientation\":");
         sb.append(m.new_orientation);
         sb.append(",\"scale_factor\":");
-        Json.f32(sb, m.scale_factor);
+        ConformanceJson.f32(sb, m.scale_factor);
     }
 
     private static void fields225(ttctl.ttapi.msg.EfiStatus m, StringBuilder sb) {
         sb.append("\"health\":");
         sb.append(m.health);
         sb.append(",\"ecu_index\":");
-        Json.f32(sb, m.ecu_index);
+        ConformanceJson.f32(sb, m.ecu_index);
         sb.append(",\"rpm\":");
-        Json.f32(sb, m.rpm);
+        ConformanceJson.f32(sb, m.rpm);
         sb.append(",\"fuel_consumed\":");
-        Json.f32(sb, m.fuel_consumed);
+        ConformanceJson.f32(sb, m.fuel_consumed);
         sb.append(",\"fuel_flow\":");
-        Json.f32(sb, m.fuel_flow);
+        ConformanceJson.f32(sb, m.fuel_flow);
         sb.append(",\"engine_load\":");
-        Json.f32(sb, m.engine_load);
+        ConformanceJson.f32(sb, m.engine_load);
         sb.append(",\"throttle_position\":");
-        Json.f32(sb, m.throttle_position);
+        ConformanceJson.f32(sb, m.throttle_position);
         sb.append(",\"spark_dwell_time\":");
-        Json.f32(sb, m.spark_dwell_time);
+        ConformanceJson.f32(sb, m.spark_dwell_time);
         sb.append(",\"barometric_pressure\":");
-        Json.f32(sb, m.barometric_pressure);
+        ConformanceJson.f32(sb, m.barometric_pressure);
         sb.append(",\"intake_manifold_pressure\":");
-        Json.f32(sb, m.intake_manifold_pressure);
+        ConformanceJson.f32(sb, m.intake_manifold_pressure);
         sb.append(",\"intake_manifold_temperature\":");
-        Json.f32(sb, m.intake_manifold_temperature);
+        ConformanceJson.f32(sb, m.intake_manifold_temperature);
         sb.append(",\"cylinder_head_temperature\":");
-        Json.f32(sb, m.cylinder_head_temperature);
+        ConformanceJson.f32(sb, m.cylinder_head_temperature);
         sb.append(",\"ignition_timing\":");
-        Json.f32(sb, m.ignition_timing);
+        ConformanceJson.f32(sb, m.ignition_timing);
         sb.append(",\"injection_time\":");
-        Json.f32(sb, m.injection_time);
+        ConformanceJson.f32(sb, m.injection_time);
         sb.append(",\"exhaust_gas_temperature\":");
-        Json.f32(sb, m.exhaust_gas_temperature);
+        ConformanceJson.f32(sb, m.exhaust_gas_temperature);
         sb.append(",\"throttle_out\":");
-        Json.f32(sb, m.throttle_out);
+        ConformanceJson.f32(sb, m.throttle_out);
         sb.append(",\"pt_compensation\":");
-        Json.f32(sb, m.pt_compensation);
+        ConformanceJson.f32(sb, m.pt_compensation);
         sb.append(",\"ignition_voltage\":");
-        Json.f32(sb, m.ignition_voltage);
+        ConformanceJson.f32(sb, m.ignition_voltage);
         sb.append(",\"fuel_pressure\":");
-        Json.f32(sb, m.fuel_pressure);
+        ConformanceJson.f32(sb, m.fuel_pressure);
     }
 
     private static void fields230(ttctl.ttapi.msg.EstimatorStatus m, StringBuilder sb) {
@@ -3223,42 +3220,42 @@ public final class Conformance {
         sb.append(",\"flags\":");
         sb.append(m.flags);
         sb.append(",\"vel_ratio\":");
-        Json.f32(sb, m.vel_ratio);
+        ConformanceJson.f32(sb, m.vel_ratio);
         sb.append(",\"pos_horiz_ratio\":");
-        Json.f32(sb, m.pos_horiz_ratio);
+        ConformanceJson.f32(sb, m.pos_horiz_ratio);
         sb.append(",\"pos_vert_ratio\":");
-        Json.f32(sb, m.pos_vert_ratio);
+        ConformanceJson.f32(sb, m.pos_vert_ratio);
         sb.append(",\"mag_ratio\":");
-        Json.f32(sb, m.mag_ratio);
+        ConformanceJson.f32(sb, m.mag_ratio);
         sb.append(",\"hagl_ratio\":");
-        Json.f32(sb, m.hagl_ratio);
+        ConformanceJson.f32(sb, m.hagl_ratio);
         sb.append(",\"tas_ratio\":");
-        Json.f32(sb, m.tas_ratio);
+        ConformanceJson.f32(sb, m.tas_ratio);
         sb.append(",\"pos_horiz_accuracy\":");
-        Json.f32(sb, m.pos_horiz_accuracy);
+        ConformanceJson.f32(sb, m.pos_horiz_accuracy);
         sb.append(",\"pos_vert_accuracy\":");
-        Json.f32(sb, m.pos_vert_accuracy);
+        ConformanceJson.f32(sb, m.pos_vert_accuracy);
     }
 
     private static void fields231(ttctl.ttapi.msg.WindCov m, StringBuilder sb) {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"wind_x\":");
-        Json.f32(sb, m.wind_x);
+        ConformanceJson.f32(sb, m.wind_x);
         sb.append(",\"wind_y\":");
-        Json.f32(sb, m.wind_y);
+        ConformanceJson.f32(sb, m.wind_y);
         sb.append(",\"wind_z\":");
-        Json.f32(sb, m.wind_z);
+        ConformanceJson.f32(sb, m.wind_z);
         sb.append(",\"var_horiz\":");
-        Json.f32(sb, m.var_horiz);
+        ConformanceJson.f32(sb, m.var_horiz);
         sb.append(",\"var_vert\":");
-        Json.f32(sb, m.var_vert);
+        ConformanceJson.f32(sb, m.var_vert);
         sb.append(",\"wind_alt\":");
-        Json.f32(sb, m.wind_alt);
+        ConformanceJson.f32(sb, m.wind_alt);
         sb.append(",\"horiz_accuracy\":");
-        Json.f32(sb, m.horiz_accuracy);
+        ConformanceJson.f32(sb, m.horiz_accuracy);
         sb.append(",\"vert_accuracy\":");
-        Json.f32(sb, m.vert_accuracy);
+        ConformanceJson.f32(sb, m.vert_accuracy);
     }
 
     private static void fields232(ttctl.ttapi.msg.GpsInput m, StringBuilder sb) {
@@ -3279,23 +3276,23 @@ public final class Conformance {
         sb.append(",\"lon\":");
         sb.append(m.lon);
         sb.append(",\"alt\":");
-        Json.f32(sb, m.alt);
+        ConformanceJson.f32(sb, m.alt);
         sb.append(",\"hdop\":");
-        Json.f32(sb, m.hdop);
+        ConformanceJson.f32(sb, m.hdop);
         sb.append(",\"vdop\":");
-        Json.f32(sb, m.vdop);
+        ConformanceJson.f32(sb, m.vdop);
         sb.append(",\"vn\":");
-        Json.f32(sb, m.vn);
+        ConformanceJson.f32(sb, m.vn);
         sb.append(",\"ve\":");
-        Json.f32(sb, m.ve);
+        ConformanceJson.f32(sb, m.ve);
         sb.append(",\"vd\":");
-        Json.f32(sb, m.vd);
+        ConformanceJson.f32(sb, m.vd);
         sb.append(",\"speed_accuracy\":");
-        Json.f32(sb, m.speed_accuracy);
+        ConformanceJson.f32(sb, m.speed_accuracy);
         sb.append(",\"horiz_accuracy\":");
-        Json.f32(sb, m.horiz_accuracy);
+        ConformanceJson.f32(sb, m.horiz_accuracy);
         sb.append(",\"vert_accuracy\":");
-        Json.f32(sb, m.vert_accuracy);
+        ConformanceJson.f32(sb, m.vert_accuracy);
         sb.append(",\"satellites_visible\":");
         sb.append(m.satellites_visible);
         sb.append(",\"yaw\":");
@@ -3308,7 +3305,7 @@ public final class Conformance {
         sb.append(",\"len\":");
         sb.append(m.len);
         sb.append(",\"data\":");
-        Json.u8s(sb, m.data);
+        ConformanceJson.u8s(sb, m.data);
     }
 
     private static void fields234(ttctl.ttapi.msg.HighLatency m, StringBuilder sb) {
@@ -3423,11 +3420,11 @@ public final class Conformance {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"vibration_x\":");
-        Json.f32(sb, m.vibration_x);
+        ConformanceJson.f32(sb, m.vibration_x);
         sb.append(",\"vibration_y\":");
-        Json.f32(sb, m.vibration_y);
+        ConformanceJson.f32(sb, m.vibration_y);
         sb.append(",\"vibration_z\":");
-        Json.f32(sb, m.vibration_z);
+        ConformanceJson.f32(sb, m.vibration_z);
         sb.append(",\"clipping_0\":");
         sb.append(m.clipping_0);
         sb.append(",\"clipping_1\":");
@@ -3444,19 +3441,19 @@ public final class Conformance {
         sb.append(",\"altitude\":");
         sb.append(m.altitude);
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"approach_x\":");
-        Json.f32(sb, m.approach_x);
+        ConformanceJson.f32(sb, m.approach_x);
         sb.append(",\"approach_y\":");
-        Json.f32(sb, m.approach_y);
+        ConformanceJson.f32(sb, m.approach_y);
         sb.append(",\"approach_z\":");
-        Json.f32(sb, m.approach_z);
+        ConformanceJson.f32(sb, m.approach_z);
         sb.append(",\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
     }
@@ -3471,19 +3468,19 @@ public final class Conformance {
         sb.append(",\"altitude\":");
         sb.append(m.altitude);
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"approach_x\":");
-        Json.f32(sb, m.approach_x);
+        ConformanceJson.f32(sb, m.approach_x);
         sb.append(",\"approach_y\":");
-        Json.f32(sb, m.approach_y);
+        ConformanceJson.f32(sb, m.approach_y);
         sb.append(",\"approach_z\":");
-        Json.f32(sb, m.approach_z);
+        ConformanceJson.f32(sb, m.approach_z);
         sb.append(",\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
     }
@@ -3520,7 +3517,7 @@ public final class Conformance {
         sb.append(",\"ver_velocity\":");
         sb.append(m.ver_velocity);
         sb.append(",\"callsign\":");
-        Json.text(sb, m.callsign);
+        ConformanceJson.text(sb, m.callsign);
         sb.append(",\"emitter_type\":");
         sb.append(m.emitter_type);
         sb.append(",\"tslc\":");
@@ -3541,11 +3538,11 @@ public final class Conformance {
         sb.append(",\"threat_level\":");
         sb.append(m.threat_level);
         sb.append(",\"time_to_minimum_delta\":");
-        Json.f32(sb, m.time_to_minimum_delta);
+        ConformanceJson.f32(sb, m.time_to_minimum_delta);
         sb.append(",\"altitude_minimum_delta\":");
-        Json.f32(sb, m.altitude_minimum_delta);
+        ConformanceJson.f32(sb, m.altitude_minimum_delta);
         sb.append(",\"horizontal_minimum_delta\":");
-        Json.f32(sb, m.horizontal_minimum_delta);
+        ConformanceJson.f32(sb, m.horizontal_minimum_delta);
     }
 
     private static void fields248(ttctl.ttapi.msg.V2Extension m, StringBuilder sb) {
@@ -3558,7 +3555,7 @@ public final class Conformance {
         sb.append(",\"message_type\":");
         sb.append(m.message_type);
         sb.append(",\"payload\":");
-        Json.u8s(sb, m.payload);
+        ConformanceJson.u8s(sb, m.payload);
     }
 
     private static void fields249(ttctl.ttapi.msg.MemoryVect m, StringBuilder sb) {
@@ -3569,36 +3566,36 @@ public final class Conformance {
         sb.append(",\"type\":");
         sb.append(m.type);
         sb.append(",\"value\":");
-        Json.i8s(sb, m.value);
+        ConformanceJson.i8s(sb, m.value);
     }
 
     private static void fields250(ttctl.ttapi.msg.DebugVect m, StringBuilder sb) {
         sb.append("\"name\":");
-        Json.text(sb, m.name);
+        ConformanceJson.text(sb, m.name);
         sb.append(",\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
     }
 
     private static void fields251(ttctl.ttapi.msg.NamedValueFloat m, StringBuilder sb) {
         sb.append("\"time_boot_ms\":");
         sb.append(m.time_boot_ms);
         sb.append(",\"name\":");
-        Json.text(sb, m.name);
+        ConformanceJson.text(sb, m.name);
         sb.append(",\"value\":");
-        Json.f32(sb, m.value);
+        ConformanceJson.f32(sb, m.value);
     }
 
     private static void fields252(ttctl.ttapi.msg.NamedValueInt m, StringBuilder sb) {
         sb.append("\"time_boot_ms\":");
         sb.append(m.time_boot_ms);
         sb.append(",\"name\":");
-        Json.text(sb, m.name);
+        ConformanceJson.text(sb, m.name);
         sb.append(",\"value\":");
         sb.append(m.value);
     }
@@ -3607,7 +3604,7 @@ public final class Conformance {
         sb.append("\"severity\":");
         sb.append(m.severity);
         sb.append(",\"text\":");
-        Json.text(sb, m.text);
+        ConformanceJson.text(sb, m.text);
         sb.append(",\"id\":");
         sb.append(m.id);
         sb.append(",\"chunk_seq\":");
@@ -3620,7 +3617,7 @@ public final class Conformance {
         sb.append(",\"ind\":");
         sb.append(m.ind);
         sb.append(",\"value\":");
-        Json.f32(sb, m.value);
+        ConformanceJson.f32(sb, m.value);
     }
 
     private static void fields256(ttctl.ttapi.msg.SetupSigning m, StringBuilder sb) {
@@ -3629,7 +3626,7 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"secret_key\":");
-        Json.u8s(sb, m.secret_key);
+        ConformanceJson.u8s(sb, m.secret_key);
         sb.append(",\"initial_timestamp\":");
         sb.append(Unsigned.toString(m.initial_timestamp));
     }
@@ -3649,26 +3646,26 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"tune\":");
-        Json.text(sb, m.tune);
+        ConformanceJson.text(sb, m.tune);
         sb.append(",\"tune2\":");
-        Json.text(sb, m.tune2);
+        ConformanceJson.text(sb, m.tune2);
     }
 
     private static void fields259(ttctl.ttapi.msg.CameraInformation m, StringBuilder sb) {
         sb.append("\"time_boot_ms\":");
         sb.append(m.time_boot_ms);
         sb.append(",\"vendor_name\":");
-        Json.u8s(sb, m.vendor_name);
+        ConformanceJson.u8s(sb, m.vendor_name);
         sb.append(",\"model_name\":");
-        Json.u8s(sb, m.model_name);
+        ConformanceJson.u8s(sb, m.model_name);
         sb.append(",\"firmware_version\":");
         sb.append(m.firmware_version);
         sb.append(",\"focal_length\":");
-        Json.f32(sb, m.focal_length);
+        ConformanceJson.f32(sb, m.focal_length);
         sb.append(",\"sensor_size_h\":");
-        Json.f32(sb, m.sensor_size_h);
+        ConformanceJson.f32(sb, m.sensor_size_h);
         sb.append(",\"sensor_size_v\":");
-        Json.f32(sb, m.sensor_size_v);
+        ConformanceJson.f32(sb, m.sensor_size_v);
         sb.append(",\"resolution_h\":");
         sb.append(m.resolution_h);
         sb.append(",\"resolution_v\":");
@@ -3680,7 +3677,7 @@ public final class Conformance {
         sb.append(",\"cam_definition_version\":");
         sb.append(m.cam_definition_version);
         sb.append(",\"cam_definition_uri\":");
-        Json.text(sb, m.cam_definition_uri);
+        ConformanceJson.text(sb, m.cam_definition_uri);
         sb.append(",\"gimbal_device_id\":");
         sb.append(m.gimbal_device_id);
         sb.append(",\"camera_device_id\":");
@@ -3693,9 +3690,9 @@ public final class Conformance {
         sb.append(",\"mode_id\":");
         sb.append(m.mode_id);
         sb.append(",\"zoomLevel\":");
-        Json.f32(sb, m.zoomLevel);
+        ConformanceJson.f32(sb, m.zoomLevel);
         sb.append(",\"focusLevel\":");
-        Json.f32(sb, m.focusLevel);
+        ConformanceJson.f32(sb, m.focusLevel);
         sb.append(",\"camera_device_id\":");
         sb.append(m.camera_device_id);
     }
@@ -3710,19 +3707,19 @@ public final class Conformance {
         sb.append(",\"status\":");
         sb.append(m.status);
         sb.append(",\"total_capacity\":");
-        Json.f32(sb, m.total_capacity);
+        ConformanceJson.f32(sb, m.total_capacity);
         sb.append(",\"used_capacity\":");
-        Json.f32(sb, m.used_capacity);
+        ConformanceJson.f32(sb, m.used_capacity);
         sb.append(",\"available_capacity\":");
-        Json.f32(sb, m.available_capacity);
+        ConformanceJson.f32(sb, m.available_capacity);
         sb.append(",\"read_speed\":");
-        Json.f32(sb, m.read_speed);
+        ConformanceJson.f32(sb, m.read_speed);
         sb.append(",\"write_speed\":");
-        Json.f32(sb, m.write_speed);
+        ConformanceJson.f32(sb, m.write_speed);
         sb.append(",\"type\":");
         sb.append(m.type);
         sb.append(",\"name\":");
-        Json.text(sb, m.name);
+        ConformanceJson.text(sb, m.name);
         sb.append(",\"storage_usage\":");
         sb.append(m.storage_usage);
     }
@@ -3735,11 +3732,11 @@ public final class Conformance {
         sb.append(",\"video_status\":");
         sb.append(m.video_status);
         sb.append(",\"image_interval\":");
-        Json.f32(sb, m.image_interval);
+        ConformanceJson.f32(sb, m.image_interval);
         sb.append(",\"recording_time_ms\":");
         sb.append(m.recording_time_ms);
         sb.append(",\"available_capacity\":");
-        Json.f32(sb, m.available_capacity);
+        ConformanceJson.f32(sb, m.available_capacity);
         sb.append(",\"image_count\":");
         sb.append(m.image_count);
         sb.append(",\"camera_device_id\":");
@@ -3762,13 +3759,13 @@ public final class Conformance {
         sb.append(",\"relative_alt\":");
         sb.append(m.relative_alt);
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"image_index\":");
         sb.append(m.image_index);
         sb.append(",\"capture_result\":");
         sb.append(m.capture_result);
         sb.append(",\"file_url\":");
-        Json.text(sb, m.file_url);
+        ConformanceJson.text(sb, m.file_url);
     }
 
     private static void fields264(ttctl.ttapi.msg.FlightInformation m, StringBuilder sb) {
@@ -3788,13 +3785,13 @@ public final class Conformance {
         sb.append("\"time_boot_ms\":");
         sb.append(m.time_boot_ms);
         sb.append(",\"roll\":");
-        Json.f32(sb, m.roll);
+        ConformanceJson.f32(sb, m.roll);
         sb.append(",\"pitch\":");
-        Json.f32(sb, m.pitch);
+        ConformanceJson.f32(sb, m.pitch);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
         sb.append(",\"yaw_absolute\":");
-        Json.f32(sb, m.yaw_absolute);
+        ConformanceJson.f32(sb, m.yaw_absolute);
     }
 
     private static void fields266(ttctl.ttapi.msg.LoggingData m, StringBuilder sb) {
@@ -3809,7 +3806,7 @@ public final class Conformance {
         sb.append(",\"first_message_offset\":");
         sb.append(m.first_message_offset);
         sb.append(",\"data\":");
-        Json.u8s(sb, m.data);
+        ConformanceJson.u8s(sb, m.data);
     }
 
     private static void fields267(ttctl.ttapi.msg.LoggingDataAcked m, StringBuilder sb) {
@@ -3824,7 +3821,7 @@ public final class Conformance {
         sb.append(",\"first_message_offset\":");
         sb.append(m.first_message_offset);
         sb.append(",\"data\":");
-        Json.u8s(sb, m.data);
+        ConformanceJson.u8s(sb, m.data);
     }
 
     private static void fields268(ttctl.ttapi.msg.LoggingAck m, StringBuilder sb) {
@@ -3846,7 +3843,7 @@ public final class Conformance {
         sb.append(",\"flags\":");
         sb.append(m.flags);
         sb.append(",\"framerate\":");
-        Json.f32(sb, m.framerate);
+        ConformanceJson.f32(sb, m.framerate);
         sb.append(",\"resolution_h\":");
         sb.append(m.resolution_h);
         sb.append(",\"resolution_v\":");
@@ -3858,9 +3855,9 @@ public final class Conformance {
         sb.append(",\"hfov\":");
         sb.append(m.hfov);
         sb.append(",\"name\":");
-        Json.text(sb, m.name);
+        ConformanceJson.text(sb, m.name);
         sb.append(",\"uri\":");
-        Json.text(sb, m.uri);
+        ConformanceJson.text(sb, m.uri);
         sb.append(",\"encoding\":");
         sb.append(m.encoding);
         sb.append(",\"camera_device_id\":");
@@ -3873,7 +3870,7 @@ public final class Conformance {
         sb.append(",\"flags\":");
         sb.append(m.flags);
         sb.append(",\"framerate\":");
-        Json.f32(sb, m.framerate);
+        ConformanceJson.f32(sb, m.framerate);
         sb.append(",\"resolution_h\":");
         sb.append(m.resolution_h);
         sb.append(",\"resolution_v\":");
@@ -3904,11 +3901,11 @@ public final class Conformance {
         sb.append(",\"alt_image\":");
         sb.append(m.alt_image);
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"hfov\":");
-        Json.f32(sb, m.hfov);
+        ConformanceJson.f32(sb, m.hfov);
         sb.append(",\"vfov\":");
-        Json.f32(sb, m.vfov);
+        ConformanceJson.f32(sb, m.vfov);
         sb.append(",\"camera_device_id\":");
         sb.append(m.camera_device_id);
     }
@@ -3921,19 +3918,19 @@ public final class Conformance {
         sb.append(",\"target_data\":");
         sb.append(m.target_data);
         sb.append(",\"point_x\":");
-        Json.f32(sb, m.point_x);
+        ConformanceJson.f32(sb, m.point_x);
         sb.append(",\"point_y\":");
-        Json.f32(sb, m.point_y);
+        ConformanceJson.f32(sb, m.point_y);
         sb.append(",\"radius\":");
-        Json.f32(sb, m.radius);
+        ConformanceJson.f32(sb, m.radius);
         sb.append(",\"rec_top_x\":");
-        Json.f32(sb, m.rec_top_x);
+        ConformanceJson.f32(sb, m.rec_top_x);
         sb.append(",\"rec_top_y\":");
-        Json.f32(sb, m.rec_top_y);
+        ConformanceJson.f32(sb, m.rec_top_y);
         sb.append(",\"rec_bottom_x\":");
-        Json.f32(sb, m.rec_bottom_x);
+        ConformanceJson.f32(sb, m.rec_bottom_x);
         sb.append(",\"rec_bottom_y\":");
-        Json.f32(sb, m.rec_bottom_y);
+        ConformanceJson.f32(sb, m.rec_bottom_y);
         sb.append(",\"camera_device_id\":");
         sb.append(m.camera_device_id);
     }
@@ -3946,25 +3943,25 @@ public final class Conformance {
         sb.append(",\"lon\":");
         sb.append(m.lon);
         sb.append(",\"alt\":");
-        Json.f32(sb, m.alt);
+        ConformanceJson.f32(sb, m.alt);
         sb.append(",\"h_acc\":");
-        Json.f32(sb, m.h_acc);
+        ConformanceJson.f32(sb, m.h_acc);
         sb.append(",\"v_acc\":");
-        Json.f32(sb, m.v_acc);
+        ConformanceJson.f32(sb, m.v_acc);
         sb.append(",\"vel_n\":");
-        Json.f32(sb, m.vel_n);
+        ConformanceJson.f32(sb, m.vel_n);
         sb.append(",\"vel_e\":");
-        Json.f32(sb, m.vel_e);
+        ConformanceJson.f32(sb, m.vel_e);
         sb.append(",\"vel_d\":");
-        Json.f32(sb, m.vel_d);
+        ConformanceJson.f32(sb, m.vel_d);
         sb.append(",\"vel_acc\":");
-        Json.f32(sb, m.vel_acc);
+        ConformanceJson.f32(sb, m.vel_acc);
         sb.append(",\"dist\":");
-        Json.f32(sb, m.dist);
+        ConformanceJson.f32(sb, m.dist);
         sb.append(",\"hdg\":");
-        Json.f32(sb, m.hdg);
+        ConformanceJson.f32(sb, m.hdg);
         sb.append(",\"hdg_acc\":");
-        Json.f32(sb, m.hdg_acc);
+        ConformanceJson.f32(sb, m.hdg_acc);
         sb.append(",\"camera_device_id\":");
         sb.append(m.camera_device_id);
     }
@@ -3977,17 +3974,17 @@ public final class Conformance {
         sb.append(",\"camera_device_id\":");
         sb.append(m.camera_device_id);
         sb.append(",\"max\":");
-        Json.f32(sb, m.max);
+        ConformanceJson.f32(sb, m.max);
         sb.append(",\"max_point_x\":");
-        Json.f32(sb, m.max_point_x);
+        ConformanceJson.f32(sb, m.max_point_x);
         sb.append(",\"max_point_y\":");
-        Json.f32(sb, m.max_point_y);
+        ConformanceJson.f32(sb, m.max_point_y);
         sb.append(",\"min\":");
-        Json.f32(sb, m.min);
+        ConformanceJson.f32(sb, m.min);
         sb.append(",\"min_point_x\":");
-        Json.f32(sb, m.min_point_x);
+        ConformanceJson.f32(sb, m.min_point_x);
         sb.append(",\"min_point_y\":");
-        Json.f32(sb, m.min_point_y);
+        ConformanceJson.f32(sb, m.min_point_y);
     }
 
     private static void fields280(ttctl.ttapi.msg.GimbalManagerInformation m, StringBuilder sb) {
@@ -3998,17 +3995,17 @@ public final class Conformance {
         sb.append(",\"gimbal_device_id\":");
         sb.append(m.gimbal_device_id);
         sb.append(",\"roll_min\":");
-        Json.f32(sb, m.roll_min);
+        ConformanceJson.f32(sb, m.roll_min);
         sb.append(",\"roll_max\":");
-        Json.f32(sb, m.roll_max);
+        ConformanceJson.f32(sb, m.roll_max);
         sb.append(",\"pitch_min\":");
-        Json.f32(sb, m.pitch_min);
+        ConformanceJson.f32(sb, m.pitch_min);
         sb.append(",\"pitch_max\":");
-        Json.f32(sb, m.pitch_max);
+        ConformanceJson.f32(sb, m.pitch_max);
         sb.append(",\"yaw_min\":");
-        Json.f32(sb, m.yaw_min);
+        ConformanceJson.f32(sb, m.yaw_min);
         sb.append(",\"yaw_max\":");
-        Json.f32(sb, m.yaw_max);
+        ConformanceJson.f32(sb, m.yaw_max);
     }
 
     private static void fields281(ttctl.ttapi.msg.GimbalManagerStatus m, StringBuilder sb) {
@@ -4038,24 +4035,24 @@ public final class Conformance {
         sb.append(",\"gimbal_device_id\":");
         sb.append(m.gimbal_device_id);
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"angular_velocity_x\":");
-        Json.f32(sb, m.angular_velocity_x);
+        ConformanceJson.f32(sb, m.angular_velocity_x);
         sb.append(",\"angular_velocity_y\":");
-        Json.f32(sb, m.angular_velocity_y);
+        ConformanceJson.f32(sb, m.angular_velocity_y);
         sb.append(",\"angular_velocity_z\":");
-        Json.f32(sb, m.angular_velocity_z);
+        ConformanceJson.f32(sb, m.angular_velocity_z);
     }
 
     private static void fields283(ttctl.ttapi.msg.GimbalDeviceInformation m, StringBuilder sb) {
         sb.append("\"time_boot_ms\":");
         sb.append(m.time_boot_ms);
         sb.append(",\"vendor_name\":");
-        Json.text(sb, m.vendor_name);
+        ConformanceJson.text(sb, m.vendor_name);
         sb.append(",\"model_name\":");
-        Json.text(sb, m.model_name);
+        ConformanceJson.text(sb, m.model_name);
         sb.append(",\"custom_name\":");
-        Json.text(sb, m.custom_name);
+        ConformanceJson.text(sb, m.custom_name);
         sb.append(",\"firmware_version\":");
         sb.append(m.firmware_version);
         sb.append(",\"hardware_version\":");
@@ -4067,17 +4064,17 @@ public final class Conformance {
         sb.append(",\"custom_cap_flags\":");
         sb.append(m.custom_cap_flags);
         sb.append(",\"roll_min\":");
-        Json.f32(sb, m.roll_min);
+        ConformanceJson.f32(sb, m.roll_min);
         sb.append(",\"roll_max\":");
-        Json.f32(sb, m.roll_max);
+        ConformanceJson.f32(sb, m.roll_max);
         sb.append(",\"pitch_min\":");
-        Json.f32(sb, m.pitch_min);
+        ConformanceJson.f32(sb, m.pitch_min);
         sb.append(",\"pitch_max\":");
-        Json.f32(sb, m.pitch_max);
+        ConformanceJson.f32(sb, m.pitch_max);
         sb.append(",\"yaw_min\":");
-        Json.f32(sb, m.yaw_min);
+        ConformanceJson.f32(sb, m.yaw_min);
         sb.append(",\"yaw_max\":");
-        Json.f32(sb, m.yaw_max);
+        ConformanceJson.f32(sb, m.yaw_max);
         sb.append(",\"gimbal_device_id\":");
         sb.append(m.gimbal_device_id);
         sb.append(",\"cap_flags2\":");
@@ -4092,13 +4089,13 @@ public final class Conformance {
         sb.append(",\"flags\":");
         sb.append(m.flags);
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"angular_velocity_x\":");
-        Json.f32(sb, m.angular_velocity_x);
+        ConformanceJson.f32(sb, m.angular_velocity_x);
         sb.append(",\"angular_velocity_y\":");
-        Json.f32(sb, m.angular_velocity_y);
+        ConformanceJson.f32(sb, m.angular_velocity_y);
         sb.append(",\"angular_velocity_z\":");
-        Json.f32(sb, m.angular_velocity_z);
+        ConformanceJson.f32(sb, m.angular_velocity_z);
     }
 
     private static void fields285(ttctl.ttapi.msg.GimbalDeviceAttitudeStatus m, StringBuilder sb) {
@@ -4111,19 +4108,19 @@ public final class Conformance {
         sb.append(",\"flags\":");
         sb.append(m.flags);
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"angular_velocity_x\":");
-        Json.f32(sb, m.angular_velocity_x);
+        ConformanceJson.f32(sb, m.angular_velocity_x);
         sb.append(",\"angular_velocity_y\":");
-        Json.f32(sb, m.angular_velocity_y);
+        ConformanceJson.f32(sb, m.angular_velocity_y);
         sb.append(",\"angular_velocity_z\":");
-        Json.f32(sb, m.angular_velocity_z);
+        ConformanceJson.f32(sb, m.angular_velocity_z);
         sb.append(",\"failure_flags\":");
         sb.append(m.failure_flags);
         sb.append(",\"delta_yaw\":");
-        Json.f32(sb, m.delta_yaw);
+        ConformanceJson.f32(sb, m.delta_yaw);
         sb.append(",\"delta_yaw_velocity\":");
-        Json.f32(sb, m.delta_yaw_velocity);
+        ConformanceJson.f32(sb, m.delta_yaw_velocity);
         sb.append(",\"gimbal_device_id\":");
         sb.append(m.gimbal_device_id);
     }
@@ -4136,25 +4133,25 @@ public final class Conformance {
         sb.append(",\"time_boot_us\":");
         sb.append(Unsigned.toString(m.time_boot_us));
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"q_estimated_delay_us\":");
         sb.append(m.q_estimated_delay_us);
         sb.append(",\"vx\":");
-        Json.f32(sb, m.vx);
+        ConformanceJson.f32(sb, m.vx);
         sb.append(",\"vy\":");
-        Json.f32(sb, m.vy);
+        ConformanceJson.f32(sb, m.vy);
         sb.append(",\"vz\":");
-        Json.f32(sb, m.vz);
+        ConformanceJson.f32(sb, m.vz);
         sb.append(",\"v_estimated_delay_us\":");
         sb.append(m.v_estimated_delay_us);
         sb.append(",\"feed_forward_angular_velocity_z\":");
-        Json.f32(sb, m.feed_forward_angular_velocity_z);
+        ConformanceJson.f32(sb, m.feed_forward_angular_velocity_z);
         sb.append(",\"estimator_status\":");
         sb.append(m.estimator_status);
         sb.append(",\"landed_state\":");
         sb.append(m.landed_state);
         sb.append(",\"angular_velocity_z\":");
-        Json.f32(sb, m.angular_velocity_z);
+        ConformanceJson.f32(sb, m.angular_velocity_z);
     }
 
     private static void fields287(ttctl.ttapi.msg.GimbalManagerSetPitchyaw m, StringBuilder sb) {
@@ -4167,13 +4164,13 @@ public final class Conformance {
         sb.append(",\"gimbal_device_id\":");
         sb.append(m.gimbal_device_id);
         sb.append(",\"pitch\":");
-        Json.f32(sb, m.pitch);
+        ConformanceJson.f32(sb, m.pitch);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
         sb.append(",\"pitch_rate\":");
-        Json.f32(sb, m.pitch_rate);
+        ConformanceJson.f32(sb, m.pitch_rate);
         sb.append(",\"yaw_rate\":");
-        Json.f32(sb, m.yaw_rate);
+        ConformanceJson.f32(sb, m.yaw_rate);
     }
 
     private static void fields288(ttctl.ttapi.msg.GimbalManagerSetManualControl m, StringBuilder sb) {
@@ -4186,24 +4183,24 @@ public final class Conformance {
         sb.append(",\"gimbal_device_id\":");
         sb.append(m.gimbal_device_id);
         sb.append(",\"pitch\":");
-        Json.f32(sb, m.pitch);
+        ConformanceJson.f32(sb, m.pitch);
         sb.append(",\"yaw\":");
-        Json.f32(sb, m.yaw);
+        ConformanceJson.f32(sb, m.yaw);
         sb.append(",\"pitch_rate\":");
-        Json.f32(sb, m.pitch_rate);
+        ConformanceJson.f32(sb, m.pitch_rate);
         sb.append(",\"yaw_rate\":");
-        Json.f32(sb, m.yaw_rate);
+        ConformanceJson.f32(sb, m.yaw_rate);
     }
 
     private static void fields295(ttctl.ttapi.msg.Airspeed m, StringBuilder sb) {
         sb.append("\"id\":");
         sb.append(m.id);
         sb.append(",\"airspeed\":");
-        Json.f32(sb, m.airspeed);
+        ConformanceJson.f32(sb, m.airspeed);
         sb.append(",\"temperature\":");
         sb.append(m.temperature);
         sb.append(",\"raw_press\":");
-        Json.f32(sb, m.raw_press);
+        ConformanceJson.f32(sb, m.raw_press);
         sb.append(",\"flags\":");
         sb.append(m.flags);
     }
@@ -4228,20 +4225,20 @@ public final class Conformance {
         sb.append(",\"lon\":");
         sb.append(m.lon);
         sb.append(",\"alt_ellipsoid\":");
-        Json.f32(sb, m.alt_ellipsoid);
+        ConformanceJson.f32(sb, m.alt_ellipsoid);
         sb.append(",\"alt\":");
-        Json.f32(sb, m.alt);
+        ConformanceJson.f32(sb, m.alt);
         sb.append(",\"eph\":");
-        Json.f32(sb, m.eph);
+        ConformanceJson.f32(sb, m.eph);
         sb.append(",\"epv\":");
-        Json.f32(sb, m.epv);
+        ConformanceJson.f32(sb, m.epv);
     }
 
     private static void fields299(ttctl.ttapi.msg.WifiConfigAp m, StringBuilder sb) {
         sb.append("\"ssid\":");
-        Json.text(sb, m.ssid);
+        ConformanceJson.text(sb, m.ssid);
         sb.append(",\"password\":");
-        Json.text(sb, m.password);
+        ConformanceJson.text(sb, m.password);
     }
 
     private static void fields301(ttctl.ttapi.msg.AisVessel m, StringBuilder sb) {
@@ -4272,9 +4269,9 @@ public final class Conformance {
         sb.append(",\"dimension_starboard\":");
         sb.append(m.dimension_starboard);
         sb.append(",\"callsign\":");
-        Json.text(sb, m.callsign);
+        ConformanceJson.text(sb, m.callsign);
         sb.append(",\"name\":");
-        Json.text(sb, m.name);
+        ConformanceJson.text(sb, m.name);
         sb.append(",\"tslc\":");
         sb.append(m.tslc);
         sb.append(",\"flags\":");
@@ -4302,13 +4299,13 @@ public final class Conformance {
         sb.append(",\"uptime_sec\":");
         sb.append(m.uptime_sec);
         sb.append(",\"name\":");
-        Json.text(sb, m.name);
+        ConformanceJson.text(sb, m.name);
         sb.append(",\"hw_version_major\":");
         sb.append(m.hw_version_major);
         sb.append(",\"hw_version_minor\":");
         sb.append(m.hw_version_minor);
         sb.append(",\"hw_unique_id\":");
-        Json.u8s(sb, m.hw_unique_id);
+        ConformanceJson.u8s(sb, m.hw_unique_id);
         sb.append(",\"sw_version_major\":");
         sb.append(m.sw_version_major);
         sb.append(",\"sw_version_minor\":");
@@ -4323,7 +4320,7 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"param_id\":");
-        Json.text(sb, m.param_id);
+        ConformanceJson.text(sb, m.param_id);
         sb.append(",\"param_index\":");
         sb.append(m.param_index);
     }
@@ -4337,9 +4334,9 @@ public final class Conformance {
 
     private static void fields322(ttctl.ttapi.msg.ParamExtValue m, StringBuilder sb) {
         sb.append("\"param_id\":");
-        Json.text(sb, m.param_id);
+        ConformanceJson.text(sb, m.param_id);
         sb.append(",\"param_value\":");
-        Json.text(sb, m.param_value);
+        ConformanceJson.text(sb, m.param_value);
         sb.append(",\"param_type\":");
         sb.append(m.param_type);
         sb.append(",\"param_count\":");
@@ -4354,18 +4351,18 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"param_id\":");
-        Json.text(sb, m.param_id);
+        ConformanceJson.text(sb, m.param_id);
         sb.append(",\"param_value\":");
-        Json.text(sb, m.param_value);
+        ConformanceJson.text(sb, m.param_value);
         sb.append(",\"param_type\":");
         sb.append(m.param_type);
     }
 
     private static void fields324(ttctl.ttapi.msg.ParamExtAck m, StringBuilder sb) {
         sb.append("\"param_id\":");
-        Json.text(sb, m.param_id);
+        ConformanceJson.text(sb, m.param_id);
         sb.append(",\"param_value\":");
-        Json.text(sb, m.param_value);
+        ConformanceJson.text(sb, m.param_value);
         sb.append(",\"param_type\":");
         sb.append(m.param_type);
         sb.append(",\"param_result\":");
@@ -4378,7 +4375,7 @@ public final class Conformance {
         sb.append(",\"sensor_type\":");
         sb.append(m.sensor_type);
         sb.append(",\"distances\":");
-        Json.ints(sb, m.distances);
+        ConformanceJson.ints(sb, m.distances);
         sb.append(",\"increment\":");
         sb.append(m.increment);
         sb.append(",\"min_distance\":");
@@ -4386,9 +4383,9 @@ public final class Conformance {
         sb.append(",\"max_distance\":");
         sb.append(m.max_distance);
         sb.append(",\"increment_f\":");
-        Json.f32(sb, m.increment_f);
+        ConformanceJson.f32(sb, m.increment_f);
         sb.append(",\"angle_offset\":");
-        Json.f32(sb, m.angle_offset);
+        ConformanceJson.f32(sb, m.angle_offset);
         sb.append(",\"frame\":");
         sb.append(m.frame);
     }
@@ -4401,29 +4398,29 @@ public final class Conformance {
         sb.append(",\"child_frame_id\":");
         sb.append(m.child_frame_id);
         sb.append(",\"x\":");
-        Json.f32(sb, m.x);
+        ConformanceJson.f32(sb, m.x);
         sb.append(",\"y\":");
-        Json.f32(sb, m.y);
+        ConformanceJson.f32(sb, m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
         sb.append(",\"q\":");
-        Json.f32s(sb, m.q);
+        ConformanceJson.f32s(sb, m.q);
         sb.append(",\"vx\":");
-        Json.f32(sb, m.vx);
+        ConformanceJson.f32(sb, m.vx);
         sb.append(",\"vy\":");
-        Json.f32(sb, m.vy);
+        ConformanceJson.f32(sb, m.vy);
         sb.append(",\"vz\":");
-        Json.f32(sb, m.vz);
+        ConformanceJson.f32(sb, m.vz);
         sb.append(",\"rollspeed\":");
-        Json.f32(sb, m.rollspeed);
+        ConformanceJson.f32(sb, m.rollspeed);
         sb.append(",\"pitchspeed\":");
-        Json.f32(sb, m.pitchspeed);
+        ConformanceJson.f32(sb, m.pitchspeed);
         sb.append(",\"yawspeed\":");
-        Json.f32(sb, m.yawspeed);
+        ConformanceJson.f32(sb, m.yawspeed);
         sb.append(",\"pose_covariance\":");
-        Json.f32s(sb, m.pose_covariance);
+        ConformanceJson.f32s(sb, m.pose_covariance);
         sb.append(",\"velocity_covariance\":");
-        Json.f32s(sb, m.velocity_covariance);
+        ConformanceJson.f32s(sb, m.velocity_covariance);
         sb.append(",\"reset_counter\":");
         sb.append(m.reset_counter);
         sb.append(",\"estimator_type\":");
@@ -4438,29 +4435,29 @@ public final class Conformance {
         sb.append(",\"valid_points\":");
         sb.append(m.valid_points);
         sb.append(",\"pos_x\":");
-        Json.f32s(sb, m.pos_x);
+        ConformanceJson.f32s(sb, m.pos_x);
         sb.append(",\"pos_y\":");
-        Json.f32s(sb, m.pos_y);
+        ConformanceJson.f32s(sb, m.pos_y);
         sb.append(",\"pos_z\":");
-        Json.f32s(sb, m.pos_z);
+        ConformanceJson.f32s(sb, m.pos_z);
         sb.append(",\"vel_x\":");
-        Json.f32s(sb, m.vel_x);
+        ConformanceJson.f32s(sb, m.vel_x);
         sb.append(",\"vel_y\":");
-        Json.f32s(sb, m.vel_y);
+        ConformanceJson.f32s(sb, m.vel_y);
         sb.append(",\"vel_z\":");
-        Json.f32s(sb, m.vel_z);
+        ConformanceJson.f32s(sb, m.vel_z);
         sb.append(",\"acc_x\":");
-        Json.f32s(sb, m.acc_x);
+        ConformanceJson.f32s(sb, m.acc_x);
         sb.append(",\"acc_y\":");
-        Json.f32s(sb, m.acc_y);
+        ConformanceJson.f32s(sb, m.acc_y);
         sb.append(",\"acc_z\":");
-        Json.f32s(sb, m.acc_z);
+        ConformanceJson.f32s(sb, m.acc_z);
         sb.append(",\"pos_yaw\":");
-        Json.f32s(sb, m.pos_yaw);
+        ConformanceJson.f32s(sb, m.pos_yaw);
         sb.append(",\"vel_yaw\":");
-        Json.f32s(sb, m.vel_yaw);
+        ConformanceJson.f32s(sb, m.vel_yaw);
         sb.append(",\"command\":");
-        Json.ints(sb, m.command);
+        ConformanceJson.ints(sb, m.command);
     }
 
     private static void fields333(ttctl.ttapi.msg.TrajectoryRepresentationBezier m, StringBuilder sb) {
@@ -4469,15 +4466,15 @@ public final class Conformance {
         sb.append(",\"valid_points\":");
         sb.append(m.valid_points);
         sb.append(",\"pos_x\":");
-        Json.f32s(sb, m.pos_x);
+        ConformanceJson.f32s(sb, m.pos_x);
         sb.append(",\"pos_y\":");
-        Json.f32s(sb, m.pos_y);
+        ConformanceJson.f32s(sb, m.pos_y);
         sb.append(",\"pos_z\":");
-        Json.f32s(sb, m.pos_z);
+        ConformanceJson.f32s(sb, m.pos_z);
         sb.append(",\"delta\":");
-        Json.f32s(sb, m.delta);
+        ConformanceJson.f32s(sb, m.delta);
         sb.append(",\"pos_yaw\":");
-        Json.f32s(sb, m.pos_yaw);
+        ConformanceJson.f32s(sb, m.pos_yaw);
     }
 
     private static void fields335(ttctl.ttapi.msg.IsbdLinkStatus m, StringBuilder sb) {
@@ -4503,14 +4500,14 @@ public final class Conformance {
         sb.append("\"index\":");
         sb.append(m.index);
         sb.append(",\"frequency\":");
-        Json.f32(sb, m.frequency);
+        ConformanceJson.f32(sb, m.frequency);
     }
 
     private static void fields340(ttctl.ttapi.msg.UtmGlobalPosition m, StringBuilder sb) {
         sb.append("\"time\":");
         sb.append(Unsigned.toString(m.time));
         sb.append(",\"uas_id\":");
-        Json.u8s(sb, m.uas_id);
+        ConformanceJson.u8s(sb, m.uas_id);
         sb.append(",\"lat\":");
         sb.append(m.lat);
         sb.append(",\"lon\":");
@@ -4551,7 +4548,7 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"param_id\":");
-        Json.text(sb, m.param_id);
+        ConformanceJson.text(sb, m.param_id);
         sb.append(",\"param_index\":");
         sb.append(m.param_index);
         sb.append(",\"error\":");
@@ -4562,18 +4559,18 @@ public final class Conformance {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"name\":");
-        Json.text(sb, m.name);
+        ConformanceJson.text(sb, m.name);
         sb.append(",\"array_id\":");
         sb.append(m.array_id);
         sb.append(",\"data\":");
-        Json.f32s(sb, m.data);
+        ConformanceJson.f32s(sb, m.data);
     }
 
     private static void fields360(ttctl.ttapi.msg.OrbitExecutionStatus m, StringBuilder sb) {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"radius\":");
-        Json.f32(sb, m.radius);
+        ConformanceJson.f32(sb, m.radius);
         sb.append(",\"frame\":");
         sb.append(m.frame);
         sb.append(",\"x\":");
@@ -4581,7 +4578,7 @@ public final class Conformance {
         sb.append(",\"y\":");
         sb.append(m.y);
         sb.append(",\"z\":");
-        Json.f32(sb, m.z);
+        ConformanceJson.f32(sb, m.z);
     }
 
     private static void fields370(ttctl.ttapi.msg.SmartBatteryInfo m, StringBuilder sb) {
@@ -4598,9 +4595,9 @@ public final class Conformance {
         sb.append(",\"cycle_count\":");
         sb.append(m.cycle_count);
         sb.append(",\"serial_number\":");
-        Json.text(sb, m.serial_number);
+        ConformanceJson.text(sb, m.serial_number);
         sb.append(",\"device_name\":");
-        Json.text(sb, m.device_name);
+        ConformanceJson.text(sb, m.device_name);
         sb.append(",\"weight\":");
         sb.append(m.weight);
         sb.append(",\"discharge_minimum_voltage\":");
@@ -4618,7 +4615,7 @@ public final class Conformance {
         sb.append(",\"discharge_maximum_burst_current\":");
         sb.append(m.discharge_maximum_burst_current);
         sb.append(",\"manufacture_date\":");
-        Json.text(sb, m.manufacture_date);
+        ConformanceJson.text(sb, m.manufacture_date);
     }
 
     private static void fields373(ttctl.ttapi.msg.GeneratorStatus m, StringBuilder sb) {
@@ -4627,17 +4624,17 @@ public final class Conformance {
         sb.append(",\"generator_speed\":");
         sb.append(m.generator_speed);
         sb.append(",\"battery_current\":");
-        Json.f32(sb, m.battery_current);
+        ConformanceJson.f32(sb, m.battery_current);
         sb.append(",\"load_current\":");
-        Json.f32(sb, m.load_current);
+        ConformanceJson.f32(sb, m.load_current);
         sb.append(",\"power_generated\":");
-        Json.f32(sb, m.power_generated);
+        ConformanceJson.f32(sb, m.power_generated);
         sb.append(",\"bus_voltage\":");
-        Json.f32(sb, m.bus_voltage);
+        ConformanceJson.f32(sb, m.bus_voltage);
         sb.append(",\"rectifier_temperature\":");
         sb.append(m.rectifier_temperature);
         sb.append(",\"bat_current_setpoint\":");
-        Json.f32(sb, m.bat_current_setpoint);
+        ConformanceJson.f32(sb, m.bat_current_setpoint);
         sb.append(",\"generator_temperature\":");
         sb.append(m.generator_temperature);
         sb.append(",\"runtime\":");
@@ -4652,7 +4649,7 @@ public final class Conformance {
         sb.append(",\"active\":");
         sb.append(m.active);
         sb.append(",\"actuator\":");
-        Json.f32s(sb, m.actuator);
+        ConformanceJson.f32s(sb, m.actuator);
     }
 
     private static void fields376(ttctl.ttapi.msg.RelayStatus m, StringBuilder sb) {
@@ -4674,7 +4671,7 @@ public final class Conformance {
         sb.append(",\"payload_length\":");
         sb.append(m.payload_length);
         sb.append(",\"payload\":");
-        Json.u8s(sb, m.payload);
+        ConformanceJson.u8s(sb, m.payload);
     }
 
     private static void fields386(ttctl.ttapi.msg.CanFrame m, StringBuilder sb) {
@@ -4689,7 +4686,7 @@ public final class Conformance {
         sb.append(",\"id\":");
         sb.append(m.id);
         sb.append(",\"data\":");
-        Json.u8s(sb, m.data);
+        ConformanceJson.u8s(sb, m.data);
     }
 
     private static void fields387(ttctl.ttapi.msg.CanfdFrame m, StringBuilder sb) {
@@ -4704,7 +4701,7 @@ public final class Conformance {
         sb.append(",\"id\":");
         sb.append(m.id);
         sb.append(",\"data\":");
-        Json.u8s(sb, m.data);
+        ConformanceJson.u8s(sb, m.data);
     }
 
     private static void fields388(ttctl.ttapi.msg.CanFilterModify m, StringBuilder sb) {
@@ -4719,7 +4716,7 @@ public final class Conformance {
         sb.append(",\"num_ids\":");
         sb.append(m.num_ids);
         sb.append(",\"ids\":");
-        Json.ints(sb, m.ids);
+        ConformanceJson.ints(sb, m.ids);
     }
 
     private static void fields390(ttctl.ttapi.msg.OnboardComputerStatus m, StringBuilder sb) {
@@ -4730,39 +4727,39 @@ public final class Conformance {
         sb.append(",\"type\":");
         sb.append(m.type);
         sb.append(",\"cpu_cores\":");
-        Json.u8s(sb, m.cpu_cores);
+        ConformanceJson.u8s(sb, m.cpu_cores);
         sb.append(",\"cpu_combined\":");
-        Json.u8s(sb, m.cpu_combined);
+        ConformanceJson.u8s(sb, m.cpu_combined);
         sb.append(",\"gpu_cores\":");
-        Json.u8s(sb, m.gpu_cores);
+        ConformanceJson.u8s(sb, m.gpu_cores);
         sb.append(",\"gpu_combined\":");
-        Json.u8s(sb, m.gpu_combined);
+        ConformanceJson.u8s(sb, m.gpu_combined);
         sb.append(",\"temperature_board\":");
         sb.append(m.temperature_board);
         sb.append(",\"temperature_core\":");
-        Json.i8s(sb, m.temperature_core);
+        ConformanceJson.i8s(sb, m.temperature_core);
         sb.append(",\"fan_speed\":");
-        Json.shorts(sb, m.fan_speed);
+        ConformanceJson.shorts(sb, m.fan_speed);
         sb.append(",\"ram_usage\":");
         sb.append(m.ram_usage);
         sb.append(",\"ram_total\":");
         sb.append(m.ram_total);
         sb.append(",\"storage_type\":");
-        Json.longs(sb, m.storage_type);
+        ConformanceJson.longs(sb, m.storage_type);
         sb.append(",\"storage_usage\":");
-        Json.longs(sb, m.storage_usage);
+        ConformanceJson.longs(sb, m.storage_usage);
         sb.append(",\"storage_total\":");
-        Json.longs(sb, m.storage_total);
+        ConformanceJson.longs(sb, m.storage_total);
         sb.append(",\"link_type\":");
-        Json.longs(sb, m.link_type);
+        ConformanceJson.longs(sb, m.link_type);
         sb.append(",\"link_tx_rate\":");
-        Json.longs(sb, m.link_tx_rate);
+        ConformanceJson.longs(sb, m.link_tx_rate);
         sb.append(",\"link_rx_rate\":");
-        Json.longs(sb, m.link_rx_rate);
+        ConformanceJson.longs(sb, m.link_rx_rate);
         sb.append(",\"link_tx_max\":");
-        Json.longs(sb, m.link_tx_max);
+        ConformanceJson.longs(sb, m.link_tx_max);
         sb.append(",\"link_rx_max\":");
-        Json.longs(sb, m.link_rx_max);
+        ConformanceJson.longs(sb, m.link_rx_max);
         sb.append(",\"status_flags\":");
         sb.append(m.status_flags);
     }
@@ -4773,22 +4770,22 @@ public final class Conformance {
         sb.append(",\"count\":");
         sb.append(m.count);
         sb.append(",\"distance\":");
-        Json.f64s(sb, m.distance);
+        ConformanceJson.f64s(sb, m.distance);
     }
 
     private static void fields9005(ttctl.ttapi.msg.WinchStatus m, StringBuilder sb) {
         sb.append("\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"line_length\":");
-        Json.f32(sb, m.line_length);
+        ConformanceJson.f32(sb, m.line_length);
         sb.append(",\"speed\":");
-        Json.f32(sb, m.speed);
+        ConformanceJson.f32(sb, m.speed);
         sb.append(",\"tension\":");
-        Json.f32(sb, m.tension);
+        ConformanceJson.f32(sb, m.tension);
         sb.append(",\"voltage\":");
-        Json.f32(sb, m.voltage);
+        ConformanceJson.f32(sb, m.voltage);
         sb.append(",\"current\":");
-        Json.f32(sb, m.current);
+        ConformanceJson.f32(sb, m.current);
         sb.append(",\"temperature\":");
         sb.append(m.temperature);
         sb.append(",\"status\":");
@@ -4801,13 +4798,13 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"id_or_mac\":");
-        Json.u8s(sb, m.id_or_mac);
+        ConformanceJson.u8s(sb, m.id_or_mac);
         sb.append(",\"id_type\":");
         sb.append(m.id_type);
         sb.append(",\"ua_type\":");
         sb.append(m.ua_type);
         sb.append(",\"uas_id\":");
-        Json.u8s(sb, m.uas_id);
+        ConformanceJson.u8s(sb, m.uas_id);
     }
 
     private static void fields12901(ttctl.ttapi.msg.OpenDroneIdLocation m, StringBuilder sb) {
@@ -4816,7 +4813,7 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"id_or_mac\":");
-        Json.u8s(sb, m.id_or_mac);
+        ConformanceJson.u8s(sb, m.id_or_mac);
         sb.append(",\"status\":");
         sb.append(m.status);
         sb.append(",\"direction\":");
@@ -4830,13 +4827,13 @@ public final class Conformance {
         sb.append(",\"longitude\":");
         sb.append(m.longitude);
         sb.append(",\"altitude_barometric\":");
-        Json.f32(sb, m.altitude_barometric);
+        ConformanceJson.f32(sb, m.altitude_barometric);
         sb.append(",\"altitude_geodetic\":");
-        Json.f32(sb, m.altitude_geodetic);
+        ConformanceJson.f32(sb, m.altitude_geodetic);
         sb.append(",\"height_reference\":");
         sb.append(m.height_reference);
         sb.append(",\"height\":");
-        Json.f32(sb, m.height);
+        ConformanceJson.f32(sb, m.height);
         sb.append(",\"horizontal_accuracy\":");
         sb.append(m.horizontal_accuracy);
         sb.append(",\"vertical_accuracy\":");
@@ -4846,7 +4843,7 @@ public final class Conformance {
         sb.append(",\"speed_accuracy\":");
         sb.append(m.speed_accuracy);
         sb.append(",\"timestamp\":");
-        Json.f32(sb, m.timestamp);
+        ConformanceJson.f32(sb, m.timestamp);
         sb.append(",\"timestamp_accuracy\":");
         sb.append(m.timestamp_accuracy);
     }
@@ -4857,7 +4854,7 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"id_or_mac\":");
-        Json.u8s(sb, m.id_or_mac);
+        ConformanceJson.u8s(sb, m.id_or_mac);
         sb.append(",\"authentication_type\":");
         sb.append(m.authentication_type);
         sb.append(",\"data_page\":");
@@ -4869,7 +4866,7 @@ public final class Conformance {
         sb.append(",\"timestamp\":");
         sb.append(m.timestamp);
         sb.append(",\"authentication_data\":");
-        Json.u8s(sb, m.authentication_data);
+        ConformanceJson.u8s(sb, m.authentication_data);
     }
 
     private static void fields12903(ttctl.ttapi.msg.OpenDroneIdSelfId m, StringBuilder sb) {
@@ -4878,11 +4875,11 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"id_or_mac\":");
-        Json.u8s(sb, m.id_or_mac);
+        ConformanceJson.u8s(sb, m.id_or_mac);
         sb.append(",\"description_type\":");
         sb.append(m.description_type);
         sb.append(",\"description\":");
-        Json.text(sb, m.description);
+        ConformanceJson.text(sb, m.description);
     }
 
     private static void fields12904(ttctl.ttapi.msg.OpenDroneIdSystem m, StringBuilder sb) {
@@ -4891,7 +4888,7 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"id_or_mac\":");
-        Json.u8s(sb, m.id_or_mac);
+        ConformanceJson.u8s(sb, m.id_or_mac);
         sb.append(",\"operator_location_type\":");
         sb.append(m.operator_location_type);
         sb.append(",\"classification_type\":");
@@ -4905,15 +4902,15 @@ public final class Conformance {
         sb.append(",\"area_radius\":");
         sb.append(m.area_radius);
         sb.append(",\"area_ceiling\":");
-        Json.f32(sb, m.area_ceiling);
+        ConformanceJson.f32(sb, m.area_ceiling);
         sb.append(",\"area_floor\":");
-        Json.f32(sb, m.area_floor);
+        ConformanceJson.f32(sb, m.area_floor);
         sb.append(",\"category_eu\":");
         sb.append(m.category_eu);
         sb.append(",\"class_eu\":");
         sb.append(m.class_eu);
         sb.append(",\"operator_altitude_geo\":");
-        Json.f32(sb, m.operator_altitude_geo);
+        ConformanceJson.f32(sb, m.operator_altitude_geo);
         sb.append(",\"timestamp\":");
         sb.append(m.timestamp);
     }
@@ -4924,11 +4921,11 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"id_or_mac\":");
-        Json.u8s(sb, m.id_or_mac);
+        ConformanceJson.u8s(sb, m.id_or_mac);
         sb.append(",\"operator_id_type\":");
         sb.append(m.operator_id_type);
         sb.append(",\"operator_id\":");
-        Json.text(sb, m.operator_id);
+        ConformanceJson.text(sb, m.operator_id);
     }
 
     private static void fields12915(ttctl.ttapi.msg.OpenDroneIdMessagePack m, StringBuilder sb) {
@@ -4937,20 +4934,20 @@ public final class Conformance {
         sb.append(",\"target_component\":");
         sb.append(m.target_component);
         sb.append(",\"id_or_mac\":");
-        Json.u8s(sb, m.id_or_mac);
+        ConformanceJson.u8s(sb, m.id_or_mac);
         sb.append(",\"single_message_size\":");
         sb.append(m.single_message_size);
         sb.append(",\"msg_pack_size\":");
         sb.append(m.msg_pack_size);
         sb.append(",\"messages\":");
-        Json.u8s(sb, m.messages);
+        ConformanceJson.u8s(sb, m.messages);
     }
 
     private static void fields12918(ttctl.ttapi.msg.OpenDroneIdArmStatus m, StringBuilder sb) {
         sb.append("\"status\":");
         sb.append(m.status);
         sb.append(",\"error\":");
-        Json.text(sb, m.error);
+        ConformanceJson.text(sb, m.error);
     }
 
     private static void fields12919(ttctl.ttapi.msg.OpenDroneIdSystemUpdate m, StringBuilder sb) {
@@ -4963,7 +4960,7 @@ public final class Conformance {
         sb.append(",\"operator_longitude\":");
         sb.append(m.operator_longitude);
         sb.append(",\"operator_altitude_geo\":");
-        Json.f32(sb, m.operator_altitude_geo);
+        ConformanceJson.f32(sb, m.operator_altitude_geo);
         sb.append(",\"timestamp\":");
         sb.append(m.timestamp);
     }
@@ -4995,7 +4992,7 @@ public final class Conformance {
         sb.append(",\"meta_offset\":");
         sb.append(m.meta_offset);
         sb.append(",\"meta\":");
-        Json.u8s(sb, m.meta);
+        ConformanceJson.u8s(sb, m.meta);
     }
 
     private static void fields50001(ttctl.ttapi.msg.TtFileStatus m, StringBuilder sb) {
@@ -5022,7 +5019,7 @@ public final class Conformance {
         sb.append(",\"meta_check\":");
         sb.append(m.meta_check);
         sb.append(",\"ranges\":");
-        Json.longs(sb, m.ranges);
+        ConformanceJson.longs(sb, m.ranges);
     }
 
     private static void fields50002(ttctl.ttapi.msg.TtFileData m, StringBuilder sb) {
@@ -5031,7 +5028,7 @@ public final class Conformance {
         sb.append(",\"offset\":");
         sb.append(m.offset);
         sb.append(",\"data\":");
-        Json.u8s(sb, m.data);
+        ConformanceJson.u8s(sb, m.data);
     }
 
     private static void fields50003(ttctl.ttapi.msg.TtFileRequest m, StringBuilder sb) {
@@ -5046,7 +5043,7 @@ public final class Conformance {
         sb.append(",\"name_offset\":");
         sb.append(m.name_offset);
         sb.append(",\"name\":");
-        Json.u8s(sb, m.name);
+        ConformanceJson.u8s(sb, m.name);
     }
 
     private static void fields50004(ttctl.ttapi.msg.DjiPoseStamped m, StringBuilder sb) {
@@ -5059,9 +5056,9 @@ public final class Conformance {
         sb.append(",\"topic_name\":");
         sb.append(m.topic_name);
         sb.append(",\"position\":");
-        Json.f64s(sb, m.position);
+        ConformanceJson.f64s(sb, m.position);
         sb.append(",\"orientation\":");
-        Json.f64s(sb, m.orientation);
+        ConformanceJson.f64s(sb, m.orientation);
     }
 
     private static void fields50005(ttctl.ttapi.msg.TtActionCommand m, StringBuilder sb) {
@@ -5076,9 +5073,9 @@ public final class Conformance {
         sb.append(",\"time_usec\":");
         sb.append(Unsigned.toString(m.time_usec));
         sb.append(",\"param\":");
-        Json.f32s(sb, m.param);
+        ConformanceJson.f32s(sb, m.param);
         sb.append(",\"argument\":");
-        Json.text(sb, m.argument);
+        ConformanceJson.text(sb, m.argument);
     }
 
     private static void fields50006(ttctl.ttapi.msg.TtNavSatFix m, StringBuilder sb) {
@@ -5089,9 +5086,9 @@ public final class Conformance {
         sb.append(",\"longitude\":");
         sb.append(m.longitude);
         sb.append(",\"altitude\":");
-        Json.f32(sb, m.altitude);
+        ConformanceJson.f32(sb, m.altitude);
         sb.append(",\"position_covariance\":");
-        Json.f32s(sb, m.position_covariance);
+        ConformanceJson.f32s(sb, m.position_covariance);
         sb.append(",\"status\":");
         sb.append(m.status);
         sb.append(",\"service\":");
@@ -5110,15 +5107,15 @@ public final class Conformance {
         sb.append(",\"child_frame_id\":");
         sb.append(m.child_frame_id);
         sb.append(",\"position\":");
-        Json.f32s(sb, m.position);
+        ConformanceJson.f32s(sb, m.position);
         sb.append(",\"orientation\":");
-        Json.f32s(sb, m.orientation);
+        ConformanceJson.f32s(sb, m.orientation);
         sb.append(",\"linear\":");
-        Json.f32s(sb, m.linear);
+        ConformanceJson.f32s(sb, m.linear);
         sb.append(",\"angular\":");
-        Json.f32s(sb, m.angular);
+        ConformanceJson.f32s(sb, m.angular);
         sb.append(",\"pose_variance\":");
-        Json.f32s(sb, m.pose_variance);
+        ConformanceJson.f32s(sb, m.pose_variance);
     }
 
     private static void fields50008(ttctl.ttapi.msg.TtLog m, StringBuilder sb) {
@@ -5131,7 +5128,7 @@ public final class Conformance {
         sb.append(",\"chunk_seq\":");
         sb.append(m.chunk_seq);
         sb.append(",\"text\":");
-        Json.text(sb, m.text);
+        ConformanceJson.text(sb, m.text);
     }
 
     private static void fields50009(ttctl.ttapi.msg.TtFileDataWide m, StringBuilder sb) {
@@ -5140,7 +5137,7 @@ public final class Conformance {
         sb.append(",\"offset\":");
         sb.append(m.offset);
         sb.append(",\"data\":");
-        Json.u8s(sb, m.data);
+        ConformanceJson.u8s(sb, m.data);
     }
 
     private static void fields50010(ttctl.ttapi.msg.TtCommandAck m, StringBuilder sb) {
@@ -5170,13 +5167,13 @@ public final class Conformance {
         sb.append(",\"flags\":");
         sb.append(m.flags);
         sb.append(",\"position\":");
-        Json.f32s(sb, m.position);
+        ConformanceJson.f32s(sb, m.position);
         sb.append(",\"orientation\":");
-        Json.f32s(sb, m.orientation);
+        ConformanceJson.f32s(sb, m.orientation);
         sb.append(",\"velocity\":");
-        Json.f32s(sb, m.velocity);
+        ConformanceJson.f32s(sb, m.velocity);
         sb.append(",\"angular_velocity\":");
-        Json.f32s(sb, m.angular_velocity);
+        ConformanceJson.f32s(sb, m.angular_velocity);
     }
 
     private static void fields50012(ttctl.ttapi.msg.TtVrController m, StringBuilder sb) {
@@ -5189,11 +5186,11 @@ public final class Conformance {
         sb.append(",\"role\":");
         sb.append(m.role);
         sb.append(",\"trigger\":");
-        Json.f32(sb, m.trigger);
+        ConformanceJson.f32(sb, m.trigger);
         sb.append(",\"pad_x\":");
-        Json.f32(sb, m.pad_x);
+        ConformanceJson.f32(sb, m.pad_x);
         sb.append(",\"pad_y\":");
-        Json.f32(sb, m.pad_y);
+        ConformanceJson.f32(sb, m.pad_y);
         sb.append(",\"buttons\":");
         sb.append(m.buttons);
     }
@@ -5208,13 +5205,13 @@ public final class Conformance {
         sb.append(",\"result\":");
         sb.append(m.result);
         sb.append(",\"text\":");
-        Json.text(sb, m.text);
+        ConformanceJson.text(sb, m.text);
     }
 
     // --- E ---------------------------------------------------------------------------------
 
     static String encodeLine(String text) {
-        Object doc = Json.parse(text);
+        Object doc = ConformanceJson.parse(text);
         if (!(doc instanceof Map)) {
             return error("expected a JSON object");
         }
@@ -5222,13 +5219,15 @@ public final class Conformance {
         MessageInfo info;
         if (obj.containsKey("name")) {
             Object n = obj.get("name");
-            info = n instanceof String ? ttctl.ttapi.Ttapi.INSTANCE.info((String) n) : null;
+            if (!(n instanceof String)) {
+                throw ConformanceJson.refuse("name", "a string", ConformanceJson.got(n));
+            }
+            info = ttctl.ttapi.Ttapi.INSTANCE.info((String) n);
             if (info == null) {
-                return error("unknown message " + (n instanceof String ? "'" + n + "'" : "?"));
+                return error("unknown message '" + n + "'");
             }
         } else if (obj.containsKey("msgid")) {
-            Object id = obj.get("msgid");
-            long msgId = Json.integer(id, 0, 0xFFFFFF, "msgid");
+            long msgId = ConformanceJson.integer(obj.get("msgid"), 0, 0xFFFFFF, "msgid");
             info = ttctl.ttapi.Ttapi.INSTANCE.info((int) msgId);
             if (info == null) {
                 return error("unknown message " + msgId);
@@ -5236,20 +5235,25 @@ public final class Conformance {
         } else {
             return error("the object names no message (\"name\" or \"msgid\")");
         }
+        int seq = headerByte(obj, "seq", "0");
+        int sysId = headerByte(obj, "sysid", "1");
+        int compId = headerByte(obj, "compid", "1");
         Object f = obj.get("fields");
         Map<?, ?> fields;
-        if (f == null || f == Json.NULL) {
+        if (f == null || f == ConformanceJson.NULL) {
             fields = Collections.emptyMap();
         } else if (f instanceof Map) {
             fields = (Map<?, ?>) f;
         } else {
-            return error("\"fields\" is not an object");
+            throw ConformanceJson.refuse("fields", "an object", ConformanceJson.got(f));
         }
-        int seq = (int) Json.integer(obj.containsKey("seq") ? obj.get("seq") : Json.number("0"), 0, 255, "seq");
-        int sysId = (int) Json.integer(obj.containsKey("sysid") ? obj.get("sysid") : Json.number("1"), 0, 255, "sysid");
-        int compId = (int) Json.integer(obj.containsKey("compid") ? obj.get("compid") : Json.number("1"), 0, 255, "compid");
         MavlinkMessage m = build(info.msgId(), fields);
         return hex(m.pack(seq, sysId, compId));
+    }
+
+    private static int headerByte(Map<?, ?> obj, String key, String fallback) {
+        Object v = obj.containsKey(key) ? obj.get(key) : ConformanceJson.number(fallback);
+        return (int) ConformanceJson.integer(v, 0, 255, key);
     }
 
     private static MavlinkMessage build(int msgId, Map<?, ?> fields) {
@@ -5713,22 +5717,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "type":
-                    m.type = (int) Json.integer(v, 0, 255, "type");
+                    m.type = (int) ConformanceJson.integer(v, 0, 255, "HEARTBEAT.type");
                     break;
                 case "autopilot":
-                    m.autopilot = (int) Json.integer(v, 0, 255, "autopilot");
+                    m.autopilot = (int) ConformanceJson.integer(v, 0, 255, "HEARTBEAT.autopilot");
                     break;
                 case "base_mode":
-                    m.base_mode = (int) Json.integer(v, 0, 255, "base_mode");
+                    m.base_mode = (int) ConformanceJson.integer(v, 0, 255, "HEARTBEAT.base_mode");
                     break;
                 case "custom_mode":
-                    m.custom_mode = Json.integer(v, 0, 4294967295L, "custom_mode");
+                    m.custom_mode = ConformanceJson.integer(v, 0, 4294967295L, "HEARTBEAT.custom_mode");
                     break;
                 case "system_status":
-                    m.system_status = (int) Json.integer(v, 0, 255, "system_status");
+                    m.system_status = (int) ConformanceJson.integer(v, 0, 255, "HEARTBEAT.system_status");
                     break;
                 case "mavlink_version":
-                    m.mavlink_version = (int) Json.integer(v, 0, 255, "mavlink_version");
+                    m.mavlink_version = (int) ConformanceJson.integer(v, 0, 255, "HEARTBEAT.mavlink_version");
                     break;
                 default:
                     throw new Refusal("HEARTBEAT has no field '" + e.getKey() + "'");
@@ -5743,52 +5747,52 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "onboard_control_sensors_present":
-                    m.onboard_control_sensors_present = Json.integer(v, 0, 4294967295L, "onboard_control_sensors_present");
+                    m.onboard_control_sensors_present = ConformanceJson.integer(v, 0, 4294967295L, "SYS_STATUS.onboard_control_sensors_present");
                     break;
                 case "onboard_control_sensors_enabled":
-                    m.onboard_control_sensors_enabled = Json.integer(v, 0, 4294967295L, "onboard_control_sensors_enabled");
+                    m.onboard_control_sensors_enabled = ConformanceJson.integer(v, 0, 4294967295L, "SYS_STATUS.onboard_control_sensors_enabled");
                     break;
                 case "onboard_control_sensors_health":
-                    m.onboard_control_sensors_health = Json.integer(v, 0, 4294967295L, "onboard_control_sensors_health");
+                    m.onboard_control_sensors_health = ConformanceJson.integer(v, 0, 4294967295L, "SYS_STATUS.onboard_control_sensors_health");
                     break;
                 case "load":
-                    m.load = (int) Json.integer(v, 0, 65535, "load");
+                    m.load = (int) ConformanceJson.integer(v, 0, 65535, "SYS_STATUS.load");
                     break;
                 case "voltage_battery":
-                    m.voltage_battery = (int) Json.integer(v, 0, 65535, "voltage_battery");
+                    m.voltage_battery = (int) ConformanceJson.integer(v, 0, 65535, "SYS_STATUS.voltage_battery");
                     break;
                 case "current_battery":
-                    m.current_battery = (short) Json.integer(v, -32768, 32767, "current_battery");
+                    m.current_battery = (short) ConformanceJson.integer(v, -32768, 32767, "SYS_STATUS.current_battery");
                     break;
                 case "battery_remaining":
-                    m.battery_remaining = (byte) Json.integer(v, -128, 127, "battery_remaining");
+                    m.battery_remaining = (byte) ConformanceJson.integer(v, -128, 127, "SYS_STATUS.battery_remaining");
                     break;
                 case "drop_rate_comm":
-                    m.drop_rate_comm = (int) Json.integer(v, 0, 65535, "drop_rate_comm");
+                    m.drop_rate_comm = (int) ConformanceJson.integer(v, 0, 65535, "SYS_STATUS.drop_rate_comm");
                     break;
                 case "errors_comm":
-                    m.errors_comm = (int) Json.integer(v, 0, 65535, "errors_comm");
+                    m.errors_comm = (int) ConformanceJson.integer(v, 0, 65535, "SYS_STATUS.errors_comm");
                     break;
                 case "errors_count1":
-                    m.errors_count1 = (int) Json.integer(v, 0, 65535, "errors_count1");
+                    m.errors_count1 = (int) ConformanceJson.integer(v, 0, 65535, "SYS_STATUS.errors_count1");
                     break;
                 case "errors_count2":
-                    m.errors_count2 = (int) Json.integer(v, 0, 65535, "errors_count2");
+                    m.errors_count2 = (int) ConformanceJson.integer(v, 0, 65535, "SYS_STATUS.errors_count2");
                     break;
                 case "errors_count3":
-                    m.errors_count3 = (int) Json.integer(v, 0, 65535, "errors_count3");
+                    m.errors_count3 = (int) ConformanceJson.integer(v, 0, 65535, "SYS_STATUS.errors_count3");
                     break;
                 case "errors_count4":
-                    m.errors_count4 = (int) Json.integer(v, 0, 65535, "errors_count4");
+                    m.errors_count4 = (int) ConformanceJson.integer(v, 0, 65535, "SYS_STATUS.errors_count4");
                     break;
                 case "onboard_control_sensors_present_extended":
-                    m.onboard_control_sensors_present_extended = Json.integer(v, 0, 4294967295L, "onboard_control_sensors_present_extended");
+                    m.onboard_control_sensors_present_extended = ConformanceJson.integer(v, 0, 4294967295L, "SYS_STATUS.onboard_control_sensors_present_extended");
                     break;
                 case "onboard_control_sensors_enabled_extended":
-                    m.onboard_control_sensors_enabled_extended = Json.integer(v, 0, 4294967295L, "onboard_control_sensors_enabled_extended");
+                    m.onboard_control_sensors_enabled_extended = ConformanceJson.integer(v, 0, 4294967295L, "SYS_STATUS.onboard_control_sensors_enabled_extended");
                     break;
                 case "onboard_control_sensors_health_extended":
-                    m.onboard_control_sensors_health_extended = Json.integer(v, 0, 4294967295L, "onboard_control_sensors_health_extended");
+                    m.onboard_control_sensors_health_extended = ConformanceJson.integer(v, 0, 4294967295L, "SYS_STATUS.onboard_control_sensors_health_extended");
                     break;
                 default:
                     throw new Refusal("SYS_STATUS has no field '" + e.getKey() + "'");
@@ -5803,10 +5807,10 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_unix_usec":
-                    m.time_unix_usec = Json.uint64(v, "time_unix_usec");
+                    m.time_unix_usec = ConformanceJson.uint64(v, "SYSTEM_TIME.time_unix_usec");
                     break;
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "SYSTEM_TIME.time_boot_ms");
                     break;
                 default:
                     throw new Refusal("SYSTEM_TIME has no field '" + e.getKey() + "'");
@@ -5821,16 +5825,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "PING.time_usec");
                     break;
                 case "seq":
-                    m.seq = Json.integer(v, 0, 4294967295L, "seq");
+                    m.seq = ConformanceJson.integer(v, 0, 4294967295L, "PING.seq");
                     break;
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "PING.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "PING.target_component");
                     break;
                 default:
                     throw new Refusal("PING has no field '" + e.getKey() + "'");
@@ -5845,16 +5849,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "CHANGE_OPERATOR_CONTROL.target_system");
                     break;
                 case "control_request":
-                    m.control_request = (int) Json.integer(v, 0, 255, "control_request");
+                    m.control_request = (int) ConformanceJson.integer(v, 0, 255, "CHANGE_OPERATOR_CONTROL.control_request");
                     break;
                 case "version":
-                    m.version = (int) Json.integer(v, 0, 255, "version");
+                    m.version = (int) ConformanceJson.integer(v, 0, 255, "CHANGE_OPERATOR_CONTROL.version");
                     break;
                 case "passkey":
-                    m.passkey = Json.text(v, 25, "passkey");
+                    m.passkey = ConformanceJson.text(v, 25, "CHANGE_OPERATOR_CONTROL.passkey");
                     break;
                 default:
                     throw new Refusal("CHANGE_OPERATOR_CONTROL has no field '" + e.getKey() + "'");
@@ -5869,13 +5873,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "gcs_system_id":
-                    m.gcs_system_id = (int) Json.integer(v, 0, 255, "gcs_system_id");
+                    m.gcs_system_id = (int) ConformanceJson.integer(v, 0, 255, "CHANGE_OPERATOR_CONTROL_ACK.gcs_system_id");
                     break;
                 case "control_request":
-                    m.control_request = (int) Json.integer(v, 0, 255, "control_request");
+                    m.control_request = (int) ConformanceJson.integer(v, 0, 255, "CHANGE_OPERATOR_CONTROL_ACK.control_request");
                     break;
                 case "ack":
-                    m.ack = (int) Json.integer(v, 0, 255, "ack");
+                    m.ack = (int) ConformanceJson.integer(v, 0, 255, "CHANGE_OPERATOR_CONTROL_ACK.ack");
                     break;
                 default:
                     throw new Refusal("CHANGE_OPERATOR_CONTROL_ACK has no field '" + e.getKey() + "'");
@@ -5890,7 +5894,7 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "key":
-                    m.key = Json.text(v, 32, "key");
+                    m.key = ConformanceJson.text(v, 32, "AUTH_KEY.key");
                     break;
                 default:
                     throw new Refusal("AUTH_KEY has no field '" + e.getKey() + "'");
@@ -5905,13 +5909,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "SET_MODE.target_system");
                     break;
                 case "base_mode":
-                    m.base_mode = (int) Json.integer(v, 0, 255, "base_mode");
+                    m.base_mode = (int) ConformanceJson.integer(v, 0, 255, "SET_MODE.base_mode");
                     break;
                 case "custom_mode":
-                    m.custom_mode = Json.integer(v, 0, 4294967295L, "custom_mode");
+                    m.custom_mode = ConformanceJson.integer(v, 0, 4294967295L, "SET_MODE.custom_mode");
                     break;
                 default:
                     throw new Refusal("SET_MODE has no field '" + e.getKey() + "'");
@@ -5926,16 +5930,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "PARAM_REQUEST_READ.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "PARAM_REQUEST_READ.target_component");
                     break;
                 case "param_id":
-                    m.param_id = Json.text(v, 16, "param_id");
+                    m.param_id = ConformanceJson.text(v, 16, "PARAM_REQUEST_READ.param_id");
                     break;
                 case "param_index":
-                    m.param_index = (short) Json.integer(v, -32768, 32767, "param_index");
+                    m.param_index = (short) ConformanceJson.integer(v, -32768, 32767, "PARAM_REQUEST_READ.param_index");
                     break;
                 default:
                     throw new Refusal("PARAM_REQUEST_READ has no field '" + e.getKey() + "'");
@@ -5950,10 +5954,10 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "PARAM_REQUEST_LIST.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "PARAM_REQUEST_LIST.target_component");
                     break;
                 default:
                     throw new Refusal("PARAM_REQUEST_LIST has no field '" + e.getKey() + "'");
@@ -5968,19 +5972,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "param_id":
-                    m.param_id = Json.text(v, 16, "param_id");
+                    m.param_id = ConformanceJson.text(v, 16, "PARAM_VALUE.param_id");
                     break;
                 case "param_value":
-                    m.param_value = Json.f32(v, "param_value");
+                    m.param_value = ConformanceJson.f32(v, "PARAM_VALUE.param_value");
                     break;
                 case "param_type":
-                    m.param_type = (int) Json.integer(v, 0, 255, "param_type");
+                    m.param_type = (int) ConformanceJson.integer(v, 0, 255, "PARAM_VALUE.param_type");
                     break;
                 case "param_count":
-                    m.param_count = (int) Json.integer(v, 0, 65535, "param_count");
+                    m.param_count = (int) ConformanceJson.integer(v, 0, 65535, "PARAM_VALUE.param_count");
                     break;
                 case "param_index":
-                    m.param_index = (int) Json.integer(v, 0, 65535, "param_index");
+                    m.param_index = (int) ConformanceJson.integer(v, 0, 65535, "PARAM_VALUE.param_index");
                     break;
                 default:
                     throw new Refusal("PARAM_VALUE has no field '" + e.getKey() + "'");
@@ -5995,19 +5999,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "PARAM_SET.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "PARAM_SET.target_component");
                     break;
                 case "param_id":
-                    m.param_id = Json.text(v, 16, "param_id");
+                    m.param_id = ConformanceJson.text(v, 16, "PARAM_SET.param_id");
                     break;
                 case "param_value":
-                    m.param_value = Json.f32(v, "param_value");
+                    m.param_value = ConformanceJson.f32(v, "PARAM_SET.param_value");
                     break;
                 case "param_type":
-                    m.param_type = (int) Json.integer(v, 0, 255, "param_type");
+                    m.param_type = (int) ConformanceJson.integer(v, 0, 255, "PARAM_SET.param_type");
                     break;
                 default:
                     throw new Refusal("PARAM_SET has no field '" + e.getKey() + "'");
@@ -6022,52 +6026,52 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "GPS_RAW_INT.time_usec");
                     break;
                 case "fix_type":
-                    m.fix_type = (int) Json.integer(v, 0, 255, "fix_type");
+                    m.fix_type = (int) ConformanceJson.integer(v, 0, 255, "GPS_RAW_INT.fix_type");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS_RAW_INT.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS_RAW_INT.lon");
                     break;
                 case "alt":
-                    m.alt = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "alt");
+                    m.alt = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS_RAW_INT.alt");
                     break;
                 case "eph":
-                    m.eph = (int) Json.integer(v, 0, 65535, "eph");
+                    m.eph = (int) ConformanceJson.integer(v, 0, 65535, "GPS_RAW_INT.eph");
                     break;
                 case "epv":
-                    m.epv = (int) Json.integer(v, 0, 65535, "epv");
+                    m.epv = (int) ConformanceJson.integer(v, 0, 65535, "GPS_RAW_INT.epv");
                     break;
                 case "vel":
-                    m.vel = (int) Json.integer(v, 0, 65535, "vel");
+                    m.vel = (int) ConformanceJson.integer(v, 0, 65535, "GPS_RAW_INT.vel");
                     break;
                 case "cog":
-                    m.cog = (int) Json.integer(v, 0, 65535, "cog");
+                    m.cog = (int) ConformanceJson.integer(v, 0, 65535, "GPS_RAW_INT.cog");
                     break;
                 case "satellites_visible":
-                    m.satellites_visible = (int) Json.integer(v, 0, 255, "satellites_visible");
+                    m.satellites_visible = (int) ConformanceJson.integer(v, 0, 255, "GPS_RAW_INT.satellites_visible");
                     break;
                 case "alt_ellipsoid":
-                    m.alt_ellipsoid = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "alt_ellipsoid");
+                    m.alt_ellipsoid = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS_RAW_INT.alt_ellipsoid");
                     break;
                 case "h_acc":
-                    m.h_acc = Json.integer(v, 0, 4294967295L, "h_acc");
+                    m.h_acc = ConformanceJson.integer(v, 0, 4294967295L, "GPS_RAW_INT.h_acc");
                     break;
                 case "v_acc":
-                    m.v_acc = Json.integer(v, 0, 4294967295L, "v_acc");
+                    m.v_acc = ConformanceJson.integer(v, 0, 4294967295L, "GPS_RAW_INT.v_acc");
                     break;
                 case "vel_acc":
-                    m.vel_acc = Json.integer(v, 0, 4294967295L, "vel_acc");
+                    m.vel_acc = ConformanceJson.integer(v, 0, 4294967295L, "GPS_RAW_INT.vel_acc");
                     break;
                 case "hdg_acc":
-                    m.hdg_acc = Json.integer(v, 0, 4294967295L, "hdg_acc");
+                    m.hdg_acc = ConformanceJson.integer(v, 0, 4294967295L, "GPS_RAW_INT.hdg_acc");
                     break;
                 case "yaw":
-                    m.yaw = (int) Json.integer(v, 0, 65535, "yaw");
+                    m.yaw = (int) ConformanceJson.integer(v, 0, 65535, "GPS_RAW_INT.yaw");
                     break;
                 default:
                     throw new Refusal("GPS_RAW_INT has no field '" + e.getKey() + "'");
@@ -6082,22 +6086,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "satellites_visible":
-                    m.satellites_visible = (int) Json.integer(v, 0, 255, "satellites_visible");
+                    m.satellites_visible = (int) ConformanceJson.integer(v, 0, 255, "GPS_STATUS.satellites_visible");
                     break;
                 case "satellite_prn":
-                    m.satellite_prn = Json.u8s(v, 20, "satellite_prn");
+                    m.satellite_prn = ConformanceJson.u8s(v, 20, "GPS_STATUS.satellite_prn");
                     break;
                 case "satellite_used":
-                    m.satellite_used = Json.u8s(v, 20, "satellite_used");
+                    m.satellite_used = ConformanceJson.u8s(v, 20, "GPS_STATUS.satellite_used");
                     break;
                 case "satellite_elevation":
-                    m.satellite_elevation = Json.u8s(v, 20, "satellite_elevation");
+                    m.satellite_elevation = ConformanceJson.u8s(v, 20, "GPS_STATUS.satellite_elevation");
                     break;
                 case "satellite_azimuth":
-                    m.satellite_azimuth = Json.u8s(v, 20, "satellite_azimuth");
+                    m.satellite_azimuth = ConformanceJson.u8s(v, 20, "GPS_STATUS.satellite_azimuth");
                     break;
                 case "satellite_snr":
-                    m.satellite_snr = Json.u8s(v, 20, "satellite_snr");
+                    m.satellite_snr = ConformanceJson.u8s(v, 20, "GPS_STATUS.satellite_snr");
                     break;
                 default:
                     throw new Refusal("GPS_STATUS has no field '" + e.getKey() + "'");
@@ -6112,37 +6116,37 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "SCALED_IMU.time_boot_ms");
                     break;
                 case "xacc":
-                    m.xacc = (short) Json.integer(v, -32768, 32767, "xacc");
+                    m.xacc = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU.xacc");
                     break;
                 case "yacc":
-                    m.yacc = (short) Json.integer(v, -32768, 32767, "yacc");
+                    m.yacc = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU.yacc");
                     break;
                 case "zacc":
-                    m.zacc = (short) Json.integer(v, -32768, 32767, "zacc");
+                    m.zacc = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU.zacc");
                     break;
                 case "xgyro":
-                    m.xgyro = (short) Json.integer(v, -32768, 32767, "xgyro");
+                    m.xgyro = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU.xgyro");
                     break;
                 case "ygyro":
-                    m.ygyro = (short) Json.integer(v, -32768, 32767, "ygyro");
+                    m.ygyro = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU.ygyro");
                     break;
                 case "zgyro":
-                    m.zgyro = (short) Json.integer(v, -32768, 32767, "zgyro");
+                    m.zgyro = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU.zgyro");
                     break;
                 case "xmag":
-                    m.xmag = (short) Json.integer(v, -32768, 32767, "xmag");
+                    m.xmag = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU.xmag");
                     break;
                 case "ymag":
-                    m.ymag = (short) Json.integer(v, -32768, 32767, "ymag");
+                    m.ymag = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU.ymag");
                     break;
                 case "zmag":
-                    m.zmag = (short) Json.integer(v, -32768, 32767, "zmag");
+                    m.zmag = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU.zmag");
                     break;
                 case "temperature":
-                    m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
+                    m.temperature = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU.temperature");
                     break;
                 default:
                     throw new Refusal("SCALED_IMU has no field '" + e.getKey() + "'");
@@ -6157,40 +6161,40 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "RAW_IMU.time_usec");
                     break;
                 case "xacc":
-                    m.xacc = (short) Json.integer(v, -32768, 32767, "xacc");
+                    m.xacc = (short) ConformanceJson.integer(v, -32768, 32767, "RAW_IMU.xacc");
                     break;
                 case "yacc":
-                    m.yacc = (short) Json.integer(v, -32768, 32767, "yacc");
+                    m.yacc = (short) ConformanceJson.integer(v, -32768, 32767, "RAW_IMU.yacc");
                     break;
                 case "zacc":
-                    m.zacc = (short) Json.integer(v, -32768, 32767, "zacc");
+                    m.zacc = (short) ConformanceJson.integer(v, -32768, 32767, "RAW_IMU.zacc");
                     break;
                 case "xgyro":
-                    m.xgyro = (short) Json.integer(v, -32768, 32767, "xgyro");
+                    m.xgyro = (short) ConformanceJson.integer(v, -32768, 32767, "RAW_IMU.xgyro");
                     break;
                 case "ygyro":
-                    m.ygyro = (short) Json.integer(v, -32768, 32767, "ygyro");
+                    m.ygyro = (short) ConformanceJson.integer(v, -32768, 32767, "RAW_IMU.ygyro");
                     break;
                 case "zgyro":
-                    m.zgyro = (short) Json.integer(v, -32768, 32767, "zgyro");
+                    m.zgyro = (short) ConformanceJson.integer(v, -32768, 32767, "RAW_IMU.zgyro");
                     break;
                 case "xmag":
-                    m.xmag = (short) Json.integer(v, -32768, 32767, "xmag");
+                    m.xmag = (short) ConformanceJson.integer(v, -32768, 32767, "RAW_IMU.xmag");
                     break;
                 case "ymag":
-                    m.ymag = (short) Json.integer(v, -32768, 32767, "ymag");
+                    m.ymag = (short) ConformanceJson.integer(v, -32768, 32767, "RAW_IMU.ymag");
                     break;
                 case "zmag":
-                    m.zmag = (short) Json.integer(v, -32768, 32767, "zmag");
+                    m.zmag = (short) ConformanceJson.integer(v, -32768, 32767, "RAW_IMU.zmag");
                     break;
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 255, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 255, "RAW_IMU.id");
                     break;
                 case "temperature":
-                    m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
+                    m.temperature = (short) ConformanceJson.integer(v, -32768, 32767, "RAW_IMU.temperature");
                     break;
                 default:
                     throw new Refusal("RAW_IMU has no field '" + e.getKey() + "'");
@@ -6205,19 +6209,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "RAW_PRESSURE.time_usec");
                     break;
                 case "press_abs":
-                    m.press_abs = (short) Json.integer(v, -32768, 32767, "press_abs");
+                    m.press_abs = (short) ConformanceJson.integer(v, -32768, 32767, "RAW_PRESSURE.press_abs");
                     break;
                 case "press_diff1":
-                    m.press_diff1 = (short) Json.integer(v, -32768, 32767, "press_diff1");
+                    m.press_diff1 = (short) ConformanceJson.integer(v, -32768, 32767, "RAW_PRESSURE.press_diff1");
                     break;
                 case "press_diff2":
-                    m.press_diff2 = (short) Json.integer(v, -32768, 32767, "press_diff2");
+                    m.press_diff2 = (short) ConformanceJson.integer(v, -32768, 32767, "RAW_PRESSURE.press_diff2");
                     break;
                 case "temperature":
-                    m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
+                    m.temperature = (short) ConformanceJson.integer(v, -32768, 32767, "RAW_PRESSURE.temperature");
                     break;
                 default:
                     throw new Refusal("RAW_PRESSURE has no field '" + e.getKey() + "'");
@@ -6232,19 +6236,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "SCALED_PRESSURE.time_boot_ms");
                     break;
                 case "press_abs":
-                    m.press_abs = Json.f32(v, "press_abs");
+                    m.press_abs = ConformanceJson.f32(v, "SCALED_PRESSURE.press_abs");
                     break;
                 case "press_diff":
-                    m.press_diff = Json.f32(v, "press_diff");
+                    m.press_diff = ConformanceJson.f32(v, "SCALED_PRESSURE.press_diff");
                     break;
                 case "temperature":
-                    m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
+                    m.temperature = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_PRESSURE.temperature");
                     break;
                 case "temperature_press_diff":
-                    m.temperature_press_diff = (short) Json.integer(v, -32768, 32767, "temperature_press_diff");
+                    m.temperature_press_diff = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_PRESSURE.temperature_press_diff");
                     break;
                 default:
                     throw new Refusal("SCALED_PRESSURE has no field '" + e.getKey() + "'");
@@ -6259,25 +6263,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "ATTITUDE.time_boot_ms");
                     break;
                 case "roll":
-                    m.roll = Json.f32(v, "roll");
+                    m.roll = ConformanceJson.f32(v, "ATTITUDE.roll");
                     break;
                 case "pitch":
-                    m.pitch = Json.f32(v, "pitch");
+                    m.pitch = ConformanceJson.f32(v, "ATTITUDE.pitch");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "ATTITUDE.yaw");
                     break;
                 case "rollspeed":
-                    m.rollspeed = Json.f32(v, "rollspeed");
+                    m.rollspeed = ConformanceJson.f32(v, "ATTITUDE.rollspeed");
                     break;
                 case "pitchspeed":
-                    m.pitchspeed = Json.f32(v, "pitchspeed");
+                    m.pitchspeed = ConformanceJson.f32(v, "ATTITUDE.pitchspeed");
                     break;
                 case "yawspeed":
-                    m.yawspeed = Json.f32(v, "yawspeed");
+                    m.yawspeed = ConformanceJson.f32(v, "ATTITUDE.yawspeed");
                     break;
                 default:
                     throw new Refusal("ATTITUDE has no field '" + e.getKey() + "'");
@@ -6292,31 +6296,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "ATTITUDE_QUATERNION.time_boot_ms");
                     break;
                 case "q1":
-                    m.q1 = Json.f32(v, "q1");
+                    m.q1 = ConformanceJson.f32(v, "ATTITUDE_QUATERNION.q1");
                     break;
                 case "q2":
-                    m.q2 = Json.f32(v, "q2");
+                    m.q2 = ConformanceJson.f32(v, "ATTITUDE_QUATERNION.q2");
                     break;
                 case "q3":
-                    m.q3 = Json.f32(v, "q3");
+                    m.q3 = ConformanceJson.f32(v, "ATTITUDE_QUATERNION.q3");
                     break;
                 case "q4":
-                    m.q4 = Json.f32(v, "q4");
+                    m.q4 = ConformanceJson.f32(v, "ATTITUDE_QUATERNION.q4");
                     break;
                 case "rollspeed":
-                    m.rollspeed = Json.f32(v, "rollspeed");
+                    m.rollspeed = ConformanceJson.f32(v, "ATTITUDE_QUATERNION.rollspeed");
                     break;
                 case "pitchspeed":
-                    m.pitchspeed = Json.f32(v, "pitchspeed");
+                    m.pitchspeed = ConformanceJson.f32(v, "ATTITUDE_QUATERNION.pitchspeed");
                     break;
                 case "yawspeed":
-                    m.yawspeed = Json.f32(v, "yawspeed");
+                    m.yawspeed = ConformanceJson.f32(v, "ATTITUDE_QUATERNION.yawspeed");
                     break;
                 case "repr_offset_q":
-                    m.repr_offset_q = Json.f32s(v, 4, "repr_offset_q");
+                    m.repr_offset_q = ConformanceJson.f32s(v, 4, "ATTITUDE_QUATERNION.repr_offset_q");
                     break;
                 default:
                     throw new Refusal("ATTITUDE_QUATERNION has no field '" + e.getKey() + "'");
@@ -6331,25 +6335,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "LOCAL_POSITION_NED.time_boot_ms");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "LOCAL_POSITION_NED.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "LOCAL_POSITION_NED.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "LOCAL_POSITION_NED.z");
                     break;
                 case "vx":
-                    m.vx = Json.f32(v, "vx");
+                    m.vx = ConformanceJson.f32(v, "LOCAL_POSITION_NED.vx");
                     break;
                 case "vy":
-                    m.vy = Json.f32(v, "vy");
+                    m.vy = ConformanceJson.f32(v, "LOCAL_POSITION_NED.vy");
                     break;
                 case "vz":
-                    m.vz = Json.f32(v, "vz");
+                    m.vz = ConformanceJson.f32(v, "LOCAL_POSITION_NED.vz");
                     break;
                 default:
                     throw new Refusal("LOCAL_POSITION_NED has no field '" + e.getKey() + "'");
@@ -6364,31 +6368,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "GLOBAL_POSITION_INT.time_boot_ms");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GLOBAL_POSITION_INT.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GLOBAL_POSITION_INT.lon");
                     break;
                 case "alt":
-                    m.alt = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "alt");
+                    m.alt = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GLOBAL_POSITION_INT.alt");
                     break;
                 case "relative_alt":
-                    m.relative_alt = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "relative_alt");
+                    m.relative_alt = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GLOBAL_POSITION_INT.relative_alt");
                     break;
                 case "vx":
-                    m.vx = (short) Json.integer(v, -32768, 32767, "vx");
+                    m.vx = (short) ConformanceJson.integer(v, -32768, 32767, "GLOBAL_POSITION_INT.vx");
                     break;
                 case "vy":
-                    m.vy = (short) Json.integer(v, -32768, 32767, "vy");
+                    m.vy = (short) ConformanceJson.integer(v, -32768, 32767, "GLOBAL_POSITION_INT.vy");
                     break;
                 case "vz":
-                    m.vz = (short) Json.integer(v, -32768, 32767, "vz");
+                    m.vz = (short) ConformanceJson.integer(v, -32768, 32767, "GLOBAL_POSITION_INT.vz");
                     break;
                 case "hdg":
-                    m.hdg = (int) Json.integer(v, 0, 65535, "hdg");
+                    m.hdg = (int) ConformanceJson.integer(v, 0, 65535, "GLOBAL_POSITION_INT.hdg");
                     break;
                 default:
                     throw new Refusal("GLOBAL_POSITION_INT has no field '" + e.getKey() + "'");
@@ -6403,37 +6407,37 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "RC_CHANNELS_SCALED.time_boot_ms");
                     break;
                 case "port":
-                    m.port = (int) Json.integer(v, 0, 255, "port");
+                    m.port = (int) ConformanceJson.integer(v, 0, 255, "RC_CHANNELS_SCALED.port");
                     break;
                 case "chan1_scaled":
-                    m.chan1_scaled = (short) Json.integer(v, -32768, 32767, "chan1_scaled");
+                    m.chan1_scaled = (short) ConformanceJson.integer(v, -32768, 32767, "RC_CHANNELS_SCALED.chan1_scaled");
                     break;
                 case "chan2_scaled":
-                    m.chan2_scaled = (short) Json.integer(v, -32768, 32767, "chan2_scaled");
+                    m.chan2_scaled = (short) ConformanceJson.integer(v, -32768, 32767, "RC_CHANNELS_SCALED.chan2_scaled");
                     break;
                 case "chan3_scaled":
-                    m.chan3_scaled = (short) Json.integer(v, -32768, 32767, "chan3_scaled");
+                    m.chan3_scaled = (short) ConformanceJson.integer(v, -32768, 32767, "RC_CHANNELS_SCALED.chan3_scaled");
                     break;
                 case "chan4_scaled":
-                    m.chan4_scaled = (short) Json.integer(v, -32768, 32767, "chan4_scaled");
+                    m.chan4_scaled = (short) ConformanceJson.integer(v, -32768, 32767, "RC_CHANNELS_SCALED.chan4_scaled");
                     break;
                 case "chan5_scaled":
-                    m.chan5_scaled = (short) Json.integer(v, -32768, 32767, "chan5_scaled");
+                    m.chan5_scaled = (short) ConformanceJson.integer(v, -32768, 32767, "RC_CHANNELS_SCALED.chan5_scaled");
                     break;
                 case "chan6_scaled":
-                    m.chan6_scaled = (short) Json.integer(v, -32768, 32767, "chan6_scaled");
+                    m.chan6_scaled = (short) ConformanceJson.integer(v, -32768, 32767, "RC_CHANNELS_SCALED.chan6_scaled");
                     break;
                 case "chan7_scaled":
-                    m.chan7_scaled = (short) Json.integer(v, -32768, 32767, "chan7_scaled");
+                    m.chan7_scaled = (short) ConformanceJson.integer(v, -32768, 32767, "RC_CHANNELS_SCALED.chan7_scaled");
                     break;
                 case "chan8_scaled":
-                    m.chan8_scaled = (short) Json.integer(v, -32768, 32767, "chan8_scaled");
+                    m.chan8_scaled = (short) ConformanceJson.integer(v, -32768, 32767, "RC_CHANNELS_SCALED.chan8_scaled");
                     break;
                 case "rssi":
-                    m.rssi = (int) Json.integer(v, 0, 255, "rssi");
+                    m.rssi = (int) ConformanceJson.integer(v, 0, 255, "RC_CHANNELS_SCALED.rssi");
                     break;
                 default:
                     throw new Refusal("RC_CHANNELS_SCALED has no field '" + e.getKey() + "'");
@@ -6448,37 +6452,37 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "RC_CHANNELS_RAW.time_boot_ms");
                     break;
                 case "port":
-                    m.port = (int) Json.integer(v, 0, 255, "port");
+                    m.port = (int) ConformanceJson.integer(v, 0, 255, "RC_CHANNELS_RAW.port");
                     break;
                 case "chan1_raw":
-                    m.chan1_raw = (int) Json.integer(v, 0, 65535, "chan1_raw");
+                    m.chan1_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_RAW.chan1_raw");
                     break;
                 case "chan2_raw":
-                    m.chan2_raw = (int) Json.integer(v, 0, 65535, "chan2_raw");
+                    m.chan2_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_RAW.chan2_raw");
                     break;
                 case "chan3_raw":
-                    m.chan3_raw = (int) Json.integer(v, 0, 65535, "chan3_raw");
+                    m.chan3_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_RAW.chan3_raw");
                     break;
                 case "chan4_raw":
-                    m.chan4_raw = (int) Json.integer(v, 0, 65535, "chan4_raw");
+                    m.chan4_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_RAW.chan4_raw");
                     break;
                 case "chan5_raw":
-                    m.chan5_raw = (int) Json.integer(v, 0, 65535, "chan5_raw");
+                    m.chan5_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_RAW.chan5_raw");
                     break;
                 case "chan6_raw":
-                    m.chan6_raw = (int) Json.integer(v, 0, 65535, "chan6_raw");
+                    m.chan6_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_RAW.chan6_raw");
                     break;
                 case "chan7_raw":
-                    m.chan7_raw = (int) Json.integer(v, 0, 65535, "chan7_raw");
+                    m.chan7_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_RAW.chan7_raw");
                     break;
                 case "chan8_raw":
-                    m.chan8_raw = (int) Json.integer(v, 0, 65535, "chan8_raw");
+                    m.chan8_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_RAW.chan8_raw");
                     break;
                 case "rssi":
-                    m.rssi = (int) Json.integer(v, 0, 255, "rssi");
+                    m.rssi = (int) ConformanceJson.integer(v, 0, 255, "RC_CHANNELS_RAW.rssi");
                     break;
                 default:
                     throw new Refusal("RC_CHANNELS_RAW has no field '" + e.getKey() + "'");
@@ -6493,58 +6497,58 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.integer(v, 0, 4294967295L, "time_usec");
+                    m.time_usec = ConformanceJson.integer(v, 0, 4294967295L, "SERVO_OUTPUT_RAW.time_usec");
                     break;
                 case "port":
-                    m.port = (int) Json.integer(v, 0, 255, "port");
+                    m.port = (int) ConformanceJson.integer(v, 0, 255, "SERVO_OUTPUT_RAW.port");
                     break;
                 case "servo1_raw":
-                    m.servo1_raw = (int) Json.integer(v, 0, 65535, "servo1_raw");
+                    m.servo1_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo1_raw");
                     break;
                 case "servo2_raw":
-                    m.servo2_raw = (int) Json.integer(v, 0, 65535, "servo2_raw");
+                    m.servo2_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo2_raw");
                     break;
                 case "servo3_raw":
-                    m.servo3_raw = (int) Json.integer(v, 0, 65535, "servo3_raw");
+                    m.servo3_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo3_raw");
                     break;
                 case "servo4_raw":
-                    m.servo4_raw = (int) Json.integer(v, 0, 65535, "servo4_raw");
+                    m.servo4_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo4_raw");
                     break;
                 case "servo5_raw":
-                    m.servo5_raw = (int) Json.integer(v, 0, 65535, "servo5_raw");
+                    m.servo5_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo5_raw");
                     break;
                 case "servo6_raw":
-                    m.servo6_raw = (int) Json.integer(v, 0, 65535, "servo6_raw");
+                    m.servo6_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo6_raw");
                     break;
                 case "servo7_raw":
-                    m.servo7_raw = (int) Json.integer(v, 0, 65535, "servo7_raw");
+                    m.servo7_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo7_raw");
                     break;
                 case "servo8_raw":
-                    m.servo8_raw = (int) Json.integer(v, 0, 65535, "servo8_raw");
+                    m.servo8_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo8_raw");
                     break;
                 case "servo9_raw":
-                    m.servo9_raw = (int) Json.integer(v, 0, 65535, "servo9_raw");
+                    m.servo9_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo9_raw");
                     break;
                 case "servo10_raw":
-                    m.servo10_raw = (int) Json.integer(v, 0, 65535, "servo10_raw");
+                    m.servo10_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo10_raw");
                     break;
                 case "servo11_raw":
-                    m.servo11_raw = (int) Json.integer(v, 0, 65535, "servo11_raw");
+                    m.servo11_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo11_raw");
                     break;
                 case "servo12_raw":
-                    m.servo12_raw = (int) Json.integer(v, 0, 65535, "servo12_raw");
+                    m.servo12_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo12_raw");
                     break;
                 case "servo13_raw":
-                    m.servo13_raw = (int) Json.integer(v, 0, 65535, "servo13_raw");
+                    m.servo13_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo13_raw");
                     break;
                 case "servo14_raw":
-                    m.servo14_raw = (int) Json.integer(v, 0, 65535, "servo14_raw");
+                    m.servo14_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo14_raw");
                     break;
                 case "servo15_raw":
-                    m.servo15_raw = (int) Json.integer(v, 0, 65535, "servo15_raw");
+                    m.servo15_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo15_raw");
                     break;
                 case "servo16_raw":
-                    m.servo16_raw = (int) Json.integer(v, 0, 65535, "servo16_raw");
+                    m.servo16_raw = (int) ConformanceJson.integer(v, 0, 65535, "SERVO_OUTPUT_RAW.servo16_raw");
                     break;
                 default:
                     throw new Refusal("SERVO_OUTPUT_RAW has no field '" + e.getKey() + "'");
@@ -6559,19 +6563,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "MISSION_REQUEST_PARTIAL_LIST.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "MISSION_REQUEST_PARTIAL_LIST.target_component");
                     break;
                 case "start_index":
-                    m.start_index = (short) Json.integer(v, -32768, 32767, "start_index");
+                    m.start_index = (short) ConformanceJson.integer(v, -32768, 32767, "MISSION_REQUEST_PARTIAL_LIST.start_index");
                     break;
                 case "end_index":
-                    m.end_index = (short) Json.integer(v, -32768, 32767, "end_index");
+                    m.end_index = (short) ConformanceJson.integer(v, -32768, 32767, "MISSION_REQUEST_PARTIAL_LIST.end_index");
                     break;
                 case "mission_type":
-                    m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
+                    m.mission_type = (int) ConformanceJson.integer(v, 0, 255, "MISSION_REQUEST_PARTIAL_LIST.mission_type");
                     break;
                 default:
                     throw new Refusal("MISSION_REQUEST_PARTIAL_LIST has no field '" + e.getKey() + "'");
@@ -6586,19 +6590,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "MISSION_WRITE_PARTIAL_LIST.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "MISSION_WRITE_PARTIAL_LIST.target_component");
                     break;
                 case "start_index":
-                    m.start_index = (short) Json.integer(v, -32768, 32767, "start_index");
+                    m.start_index = (short) ConformanceJson.integer(v, -32768, 32767, "MISSION_WRITE_PARTIAL_LIST.start_index");
                     break;
                 case "end_index":
-                    m.end_index = (short) Json.integer(v, -32768, 32767, "end_index");
+                    m.end_index = (short) ConformanceJson.integer(v, -32768, 32767, "MISSION_WRITE_PARTIAL_LIST.end_index");
                     break;
                 case "mission_type":
-                    m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
+                    m.mission_type = (int) ConformanceJson.integer(v, 0, 255, "MISSION_WRITE_PARTIAL_LIST.mission_type");
                     break;
                 default:
                     throw new Refusal("MISSION_WRITE_PARTIAL_LIST has no field '" + e.getKey() + "'");
@@ -6613,49 +6617,49 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ITEM.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ITEM.target_component");
                     break;
                 case "seq":
-                    m.seq = (int) Json.integer(v, 0, 65535, "seq");
+                    m.seq = (int) ConformanceJson.integer(v, 0, 65535, "MISSION_ITEM.seq");
                     break;
                 case "frame":
-                    m.frame = (int) Json.integer(v, 0, 255, "frame");
+                    m.frame = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ITEM.frame");
                     break;
                 case "command":
-                    m.command = (int) Json.integer(v, 0, 65535, "command");
+                    m.command = (int) ConformanceJson.integer(v, 0, 65535, "MISSION_ITEM.command");
                     break;
                 case "current":
-                    m.current = (int) Json.integer(v, 0, 255, "current");
+                    m.current = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ITEM.current");
                     break;
                 case "autocontinue":
-                    m.autocontinue = (int) Json.integer(v, 0, 255, "autocontinue");
+                    m.autocontinue = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ITEM.autocontinue");
                     break;
                 case "param1":
-                    m.param1 = Json.f32(v, "param1");
+                    m.param1 = ConformanceJson.f32(v, "MISSION_ITEM.param1");
                     break;
                 case "param2":
-                    m.param2 = Json.f32(v, "param2");
+                    m.param2 = ConformanceJson.f32(v, "MISSION_ITEM.param2");
                     break;
                 case "param3":
-                    m.param3 = Json.f32(v, "param3");
+                    m.param3 = ConformanceJson.f32(v, "MISSION_ITEM.param3");
                     break;
                 case "param4":
-                    m.param4 = Json.f32(v, "param4");
+                    m.param4 = ConformanceJson.f32(v, "MISSION_ITEM.param4");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "MISSION_ITEM.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "MISSION_ITEM.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "MISSION_ITEM.z");
                     break;
                 case "mission_type":
-                    m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
+                    m.mission_type = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ITEM.mission_type");
                     break;
                 default:
                     throw new Refusal("MISSION_ITEM has no field '" + e.getKey() + "'");
@@ -6670,16 +6674,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "MISSION_REQUEST.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "MISSION_REQUEST.target_component");
                     break;
                 case "seq":
-                    m.seq = (int) Json.integer(v, 0, 65535, "seq");
+                    m.seq = (int) ConformanceJson.integer(v, 0, 65535, "MISSION_REQUEST.seq");
                     break;
                 case "mission_type":
-                    m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
+                    m.mission_type = (int) ConformanceJson.integer(v, 0, 255, "MISSION_REQUEST.mission_type");
                     break;
                 default:
                     throw new Refusal("MISSION_REQUEST has no field '" + e.getKey() + "'");
@@ -6694,13 +6698,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "MISSION_SET_CURRENT.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "MISSION_SET_CURRENT.target_component");
                     break;
                 case "seq":
-                    m.seq = (int) Json.integer(v, 0, 65535, "seq");
+                    m.seq = (int) ConformanceJson.integer(v, 0, 65535, "MISSION_SET_CURRENT.seq");
                     break;
                 default:
                     throw new Refusal("MISSION_SET_CURRENT has no field '" + e.getKey() + "'");
@@ -6715,16 +6719,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "seq":
-                    m.seq = (int) Json.integer(v, 0, 65535, "seq");
+                    m.seq = (int) ConformanceJson.integer(v, 0, 65535, "MISSION_CURRENT.seq");
                     break;
                 case "total":
-                    m.total = (int) Json.integer(v, 0, 65535, "total");
+                    m.total = (int) ConformanceJson.integer(v, 0, 65535, "MISSION_CURRENT.total");
                     break;
                 case "mission_state":
-                    m.mission_state = (int) Json.integer(v, 0, 255, "mission_state");
+                    m.mission_state = (int) ConformanceJson.integer(v, 0, 255, "MISSION_CURRENT.mission_state");
                     break;
                 case "mission_mode":
-                    m.mission_mode = (int) Json.integer(v, 0, 255, "mission_mode");
+                    m.mission_mode = (int) ConformanceJson.integer(v, 0, 255, "MISSION_CURRENT.mission_mode");
                     break;
                 default:
                     throw new Refusal("MISSION_CURRENT has no field '" + e.getKey() + "'");
@@ -6739,13 +6743,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "MISSION_REQUEST_LIST.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "MISSION_REQUEST_LIST.target_component");
                     break;
                 case "mission_type":
-                    m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
+                    m.mission_type = (int) ConformanceJson.integer(v, 0, 255, "MISSION_REQUEST_LIST.mission_type");
                     break;
                 default:
                     throw new Refusal("MISSION_REQUEST_LIST has no field '" + e.getKey() + "'");
@@ -6760,16 +6764,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "MISSION_COUNT.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "MISSION_COUNT.target_component");
                     break;
                 case "count":
-                    m.count = (int) Json.integer(v, 0, 65535, "count");
+                    m.count = (int) ConformanceJson.integer(v, 0, 65535, "MISSION_COUNT.count");
                     break;
                 case "mission_type":
-                    m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
+                    m.mission_type = (int) ConformanceJson.integer(v, 0, 255, "MISSION_COUNT.mission_type");
                     break;
                 default:
                     throw new Refusal("MISSION_COUNT has no field '" + e.getKey() + "'");
@@ -6784,13 +6788,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "MISSION_CLEAR_ALL.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "MISSION_CLEAR_ALL.target_component");
                     break;
                 case "mission_type":
-                    m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
+                    m.mission_type = (int) ConformanceJson.integer(v, 0, 255, "MISSION_CLEAR_ALL.mission_type");
                     break;
                 default:
                     throw new Refusal("MISSION_CLEAR_ALL has no field '" + e.getKey() + "'");
@@ -6805,7 +6809,7 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "seq":
-                    m.seq = (int) Json.integer(v, 0, 65535, "seq");
+                    m.seq = (int) ConformanceJson.integer(v, 0, 65535, "MISSION_ITEM_REACHED.seq");
                     break;
                 default:
                     throw new Refusal("MISSION_ITEM_REACHED has no field '" + e.getKey() + "'");
@@ -6820,16 +6824,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ACK.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ACK.target_component");
                     break;
                 case "type":
-                    m.type = (int) Json.integer(v, 0, 255, "type");
+                    m.type = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ACK.type");
                     break;
                 case "mission_type":
-                    m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
+                    m.mission_type = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ACK.mission_type");
                     break;
                 default:
                     throw new Refusal("MISSION_ACK has no field '" + e.getKey() + "'");
@@ -6844,19 +6848,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "SET_GPS_GLOBAL_ORIGIN.target_system");
                     break;
                 case "latitude":
-                    m.latitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "latitude");
+                    m.latitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "SET_GPS_GLOBAL_ORIGIN.latitude");
                     break;
                 case "longitude":
-                    m.longitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "longitude");
+                    m.longitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "SET_GPS_GLOBAL_ORIGIN.longitude");
                     break;
                 case "altitude":
-                    m.altitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "altitude");
+                    m.altitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "SET_GPS_GLOBAL_ORIGIN.altitude");
                     break;
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "SET_GPS_GLOBAL_ORIGIN.time_usec");
                     break;
                 default:
                     throw new Refusal("SET_GPS_GLOBAL_ORIGIN has no field '" + e.getKey() + "'");
@@ -6871,16 +6875,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "latitude":
-                    m.latitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "latitude");
+                    m.latitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS_GLOBAL_ORIGIN.latitude");
                     break;
                 case "longitude":
-                    m.longitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "longitude");
+                    m.longitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS_GLOBAL_ORIGIN.longitude");
                     break;
                 case "altitude":
-                    m.altitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "altitude");
+                    m.altitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS_GLOBAL_ORIGIN.altitude");
                     break;
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "GPS_GLOBAL_ORIGIN.time_usec");
                     break;
                 default:
                     throw new Refusal("GPS_GLOBAL_ORIGIN has no field '" + e.getKey() + "'");
@@ -6895,31 +6899,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "PARAM_MAP_RC.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "PARAM_MAP_RC.target_component");
                     break;
                 case "param_id":
-                    m.param_id = Json.text(v, 16, "param_id");
+                    m.param_id = ConformanceJson.text(v, 16, "PARAM_MAP_RC.param_id");
                     break;
                 case "param_index":
-                    m.param_index = (short) Json.integer(v, -32768, 32767, "param_index");
+                    m.param_index = (short) ConformanceJson.integer(v, -32768, 32767, "PARAM_MAP_RC.param_index");
                     break;
                 case "parameter_rc_channel_index":
-                    m.parameter_rc_channel_index = (int) Json.integer(v, 0, 255, "parameter_rc_channel_index");
+                    m.parameter_rc_channel_index = (int) ConformanceJson.integer(v, 0, 255, "PARAM_MAP_RC.parameter_rc_channel_index");
                     break;
                 case "param_value0":
-                    m.param_value0 = Json.f32(v, "param_value0");
+                    m.param_value0 = ConformanceJson.f32(v, "PARAM_MAP_RC.param_value0");
                     break;
                 case "scale":
-                    m.scale = Json.f32(v, "scale");
+                    m.scale = ConformanceJson.f32(v, "PARAM_MAP_RC.scale");
                     break;
                 case "param_value_min":
-                    m.param_value_min = Json.f32(v, "param_value_min");
+                    m.param_value_min = ConformanceJson.f32(v, "PARAM_MAP_RC.param_value_min");
                     break;
                 case "param_value_max":
-                    m.param_value_max = Json.f32(v, "param_value_max");
+                    m.param_value_max = ConformanceJson.f32(v, "PARAM_MAP_RC.param_value_max");
                     break;
                 default:
                     throw new Refusal("PARAM_MAP_RC has no field '" + e.getKey() + "'");
@@ -6934,16 +6938,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "MISSION_REQUEST_INT.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "MISSION_REQUEST_INT.target_component");
                     break;
                 case "seq":
-                    m.seq = (int) Json.integer(v, 0, 65535, "seq");
+                    m.seq = (int) ConformanceJson.integer(v, 0, 65535, "MISSION_REQUEST_INT.seq");
                     break;
                 case "mission_type":
-                    m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
+                    m.mission_type = (int) ConformanceJson.integer(v, 0, 255, "MISSION_REQUEST_INT.mission_type");
                     break;
                 default:
                     throw new Refusal("MISSION_REQUEST_INT has no field '" + e.getKey() + "'");
@@ -6958,31 +6962,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "SAFETY_SET_ALLOWED_AREA.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "SAFETY_SET_ALLOWED_AREA.target_component");
                     break;
                 case "frame":
-                    m.frame = (int) Json.integer(v, 0, 255, "frame");
+                    m.frame = (int) ConformanceJson.integer(v, 0, 255, "SAFETY_SET_ALLOWED_AREA.frame");
                     break;
                 case "p1x":
-                    m.p1x = Json.f32(v, "p1x");
+                    m.p1x = ConformanceJson.f32(v, "SAFETY_SET_ALLOWED_AREA.p1x");
                     break;
                 case "p1y":
-                    m.p1y = Json.f32(v, "p1y");
+                    m.p1y = ConformanceJson.f32(v, "SAFETY_SET_ALLOWED_AREA.p1y");
                     break;
                 case "p1z":
-                    m.p1z = Json.f32(v, "p1z");
+                    m.p1z = ConformanceJson.f32(v, "SAFETY_SET_ALLOWED_AREA.p1z");
                     break;
                 case "p2x":
-                    m.p2x = Json.f32(v, "p2x");
+                    m.p2x = ConformanceJson.f32(v, "SAFETY_SET_ALLOWED_AREA.p2x");
                     break;
                 case "p2y":
-                    m.p2y = Json.f32(v, "p2y");
+                    m.p2y = ConformanceJson.f32(v, "SAFETY_SET_ALLOWED_AREA.p2y");
                     break;
                 case "p2z":
-                    m.p2z = Json.f32(v, "p2z");
+                    m.p2z = ConformanceJson.f32(v, "SAFETY_SET_ALLOWED_AREA.p2z");
                     break;
                 default:
                     throw new Refusal("SAFETY_SET_ALLOWED_AREA has no field '" + e.getKey() + "'");
@@ -6997,25 +7001,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "frame":
-                    m.frame = (int) Json.integer(v, 0, 255, "frame");
+                    m.frame = (int) ConformanceJson.integer(v, 0, 255, "SAFETY_ALLOWED_AREA.frame");
                     break;
                 case "p1x":
-                    m.p1x = Json.f32(v, "p1x");
+                    m.p1x = ConformanceJson.f32(v, "SAFETY_ALLOWED_AREA.p1x");
                     break;
                 case "p1y":
-                    m.p1y = Json.f32(v, "p1y");
+                    m.p1y = ConformanceJson.f32(v, "SAFETY_ALLOWED_AREA.p1y");
                     break;
                 case "p1z":
-                    m.p1z = Json.f32(v, "p1z");
+                    m.p1z = ConformanceJson.f32(v, "SAFETY_ALLOWED_AREA.p1z");
                     break;
                 case "p2x":
-                    m.p2x = Json.f32(v, "p2x");
+                    m.p2x = ConformanceJson.f32(v, "SAFETY_ALLOWED_AREA.p2x");
                     break;
                 case "p2y":
-                    m.p2y = Json.f32(v, "p2y");
+                    m.p2y = ConformanceJson.f32(v, "SAFETY_ALLOWED_AREA.p2y");
                     break;
                 case "p2z":
-                    m.p2z = Json.f32(v, "p2z");
+                    m.p2z = ConformanceJson.f32(v, "SAFETY_ALLOWED_AREA.p2z");
                     break;
                 default:
                     throw new Refusal("SAFETY_ALLOWED_AREA has no field '" + e.getKey() + "'");
@@ -7030,22 +7034,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "ATTITUDE_QUATERNION_COV.time_usec");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "ATTITUDE_QUATERNION_COV.q");
                     break;
                 case "rollspeed":
-                    m.rollspeed = Json.f32(v, "rollspeed");
+                    m.rollspeed = ConformanceJson.f32(v, "ATTITUDE_QUATERNION_COV.rollspeed");
                     break;
                 case "pitchspeed":
-                    m.pitchspeed = Json.f32(v, "pitchspeed");
+                    m.pitchspeed = ConformanceJson.f32(v, "ATTITUDE_QUATERNION_COV.pitchspeed");
                     break;
                 case "yawspeed":
-                    m.yawspeed = Json.f32(v, "yawspeed");
+                    m.yawspeed = ConformanceJson.f32(v, "ATTITUDE_QUATERNION_COV.yawspeed");
                     break;
                 case "covariance":
-                    m.covariance = Json.f32s(v, 9, "covariance");
+                    m.covariance = ConformanceJson.f32s(v, 9, "ATTITUDE_QUATERNION_COV.covariance");
                     break;
                 default:
                     throw new Refusal("ATTITUDE_QUATERNION_COV has no field '" + e.getKey() + "'");
@@ -7060,28 +7064,28 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "nav_roll":
-                    m.nav_roll = Json.f32(v, "nav_roll");
+                    m.nav_roll = ConformanceJson.f32(v, "NAV_CONTROLLER_OUTPUT.nav_roll");
                     break;
                 case "nav_pitch":
-                    m.nav_pitch = Json.f32(v, "nav_pitch");
+                    m.nav_pitch = ConformanceJson.f32(v, "NAV_CONTROLLER_OUTPUT.nav_pitch");
                     break;
                 case "nav_bearing":
-                    m.nav_bearing = (short) Json.integer(v, -32768, 32767, "nav_bearing");
+                    m.nav_bearing = (short) ConformanceJson.integer(v, -32768, 32767, "NAV_CONTROLLER_OUTPUT.nav_bearing");
                     break;
                 case "target_bearing":
-                    m.target_bearing = (short) Json.integer(v, -32768, 32767, "target_bearing");
+                    m.target_bearing = (short) ConformanceJson.integer(v, -32768, 32767, "NAV_CONTROLLER_OUTPUT.target_bearing");
                     break;
                 case "wp_dist":
-                    m.wp_dist = (int) Json.integer(v, 0, 65535, "wp_dist");
+                    m.wp_dist = (int) ConformanceJson.integer(v, 0, 65535, "NAV_CONTROLLER_OUTPUT.wp_dist");
                     break;
                 case "alt_error":
-                    m.alt_error = Json.f32(v, "alt_error");
+                    m.alt_error = ConformanceJson.f32(v, "NAV_CONTROLLER_OUTPUT.alt_error");
                     break;
                 case "aspd_error":
-                    m.aspd_error = Json.f32(v, "aspd_error");
+                    m.aspd_error = ConformanceJson.f32(v, "NAV_CONTROLLER_OUTPUT.aspd_error");
                     break;
                 case "xtrack_error":
-                    m.xtrack_error = Json.f32(v, "xtrack_error");
+                    m.xtrack_error = ConformanceJson.f32(v, "NAV_CONTROLLER_OUTPUT.xtrack_error");
                     break;
                 default:
                     throw new Refusal("NAV_CONTROLLER_OUTPUT has no field '" + e.getKey() + "'");
@@ -7096,34 +7100,34 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "GLOBAL_POSITION_INT_COV.time_usec");
                     break;
                 case "estimator_type":
-                    m.estimator_type = (int) Json.integer(v, 0, 255, "estimator_type");
+                    m.estimator_type = (int) ConformanceJson.integer(v, 0, 255, "GLOBAL_POSITION_INT_COV.estimator_type");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GLOBAL_POSITION_INT_COV.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GLOBAL_POSITION_INT_COV.lon");
                     break;
                 case "alt":
-                    m.alt = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "alt");
+                    m.alt = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GLOBAL_POSITION_INT_COV.alt");
                     break;
                 case "relative_alt":
-                    m.relative_alt = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "relative_alt");
+                    m.relative_alt = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GLOBAL_POSITION_INT_COV.relative_alt");
                     break;
                 case "vx":
-                    m.vx = Json.f32(v, "vx");
+                    m.vx = ConformanceJson.f32(v, "GLOBAL_POSITION_INT_COV.vx");
                     break;
                 case "vy":
-                    m.vy = Json.f32(v, "vy");
+                    m.vy = ConformanceJson.f32(v, "GLOBAL_POSITION_INT_COV.vy");
                     break;
                 case "vz":
-                    m.vz = Json.f32(v, "vz");
+                    m.vz = ConformanceJson.f32(v, "GLOBAL_POSITION_INT_COV.vz");
                     break;
                 case "covariance":
-                    m.covariance = Json.f32s(v, 36, "covariance");
+                    m.covariance = ConformanceJson.f32s(v, 36, "GLOBAL_POSITION_INT_COV.covariance");
                     break;
                 default:
                     throw new Refusal("GLOBAL_POSITION_INT_COV has no field '" + e.getKey() + "'");
@@ -7138,40 +7142,40 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "LOCAL_POSITION_NED_COV.time_usec");
                     break;
                 case "estimator_type":
-                    m.estimator_type = (int) Json.integer(v, 0, 255, "estimator_type");
+                    m.estimator_type = (int) ConformanceJson.integer(v, 0, 255, "LOCAL_POSITION_NED_COV.estimator_type");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "LOCAL_POSITION_NED_COV.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "LOCAL_POSITION_NED_COV.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "LOCAL_POSITION_NED_COV.z");
                     break;
                 case "vx":
-                    m.vx = Json.f32(v, "vx");
+                    m.vx = ConformanceJson.f32(v, "LOCAL_POSITION_NED_COV.vx");
                     break;
                 case "vy":
-                    m.vy = Json.f32(v, "vy");
+                    m.vy = ConformanceJson.f32(v, "LOCAL_POSITION_NED_COV.vy");
                     break;
                 case "vz":
-                    m.vz = Json.f32(v, "vz");
+                    m.vz = ConformanceJson.f32(v, "LOCAL_POSITION_NED_COV.vz");
                     break;
                 case "ax":
-                    m.ax = Json.f32(v, "ax");
+                    m.ax = ConformanceJson.f32(v, "LOCAL_POSITION_NED_COV.ax");
                     break;
                 case "ay":
-                    m.ay = Json.f32(v, "ay");
+                    m.ay = ConformanceJson.f32(v, "LOCAL_POSITION_NED_COV.ay");
                     break;
                 case "az":
-                    m.az = Json.f32(v, "az");
+                    m.az = ConformanceJson.f32(v, "LOCAL_POSITION_NED_COV.az");
                     break;
                 case "covariance":
-                    m.covariance = Json.f32s(v, 45, "covariance");
+                    m.covariance = ConformanceJson.f32s(v, 45, "LOCAL_POSITION_NED_COV.covariance");
                     break;
                 default:
                     throw new Refusal("LOCAL_POSITION_NED_COV has no field '" + e.getKey() + "'");
@@ -7186,67 +7190,67 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "RC_CHANNELS.time_boot_ms");
                     break;
                 case "chancount":
-                    m.chancount = (int) Json.integer(v, 0, 255, "chancount");
+                    m.chancount = (int) ConformanceJson.integer(v, 0, 255, "RC_CHANNELS.chancount");
                     break;
                 case "chan1_raw":
-                    m.chan1_raw = (int) Json.integer(v, 0, 65535, "chan1_raw");
+                    m.chan1_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan1_raw");
                     break;
                 case "chan2_raw":
-                    m.chan2_raw = (int) Json.integer(v, 0, 65535, "chan2_raw");
+                    m.chan2_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan2_raw");
                     break;
                 case "chan3_raw":
-                    m.chan3_raw = (int) Json.integer(v, 0, 65535, "chan3_raw");
+                    m.chan3_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan3_raw");
                     break;
                 case "chan4_raw":
-                    m.chan4_raw = (int) Json.integer(v, 0, 65535, "chan4_raw");
+                    m.chan4_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan4_raw");
                     break;
                 case "chan5_raw":
-                    m.chan5_raw = (int) Json.integer(v, 0, 65535, "chan5_raw");
+                    m.chan5_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan5_raw");
                     break;
                 case "chan6_raw":
-                    m.chan6_raw = (int) Json.integer(v, 0, 65535, "chan6_raw");
+                    m.chan6_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan6_raw");
                     break;
                 case "chan7_raw":
-                    m.chan7_raw = (int) Json.integer(v, 0, 65535, "chan7_raw");
+                    m.chan7_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan7_raw");
                     break;
                 case "chan8_raw":
-                    m.chan8_raw = (int) Json.integer(v, 0, 65535, "chan8_raw");
+                    m.chan8_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan8_raw");
                     break;
                 case "chan9_raw":
-                    m.chan9_raw = (int) Json.integer(v, 0, 65535, "chan9_raw");
+                    m.chan9_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan9_raw");
                     break;
                 case "chan10_raw":
-                    m.chan10_raw = (int) Json.integer(v, 0, 65535, "chan10_raw");
+                    m.chan10_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan10_raw");
                     break;
                 case "chan11_raw":
-                    m.chan11_raw = (int) Json.integer(v, 0, 65535, "chan11_raw");
+                    m.chan11_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan11_raw");
                     break;
                 case "chan12_raw":
-                    m.chan12_raw = (int) Json.integer(v, 0, 65535, "chan12_raw");
+                    m.chan12_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan12_raw");
                     break;
                 case "chan13_raw":
-                    m.chan13_raw = (int) Json.integer(v, 0, 65535, "chan13_raw");
+                    m.chan13_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan13_raw");
                     break;
                 case "chan14_raw":
-                    m.chan14_raw = (int) Json.integer(v, 0, 65535, "chan14_raw");
+                    m.chan14_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan14_raw");
                     break;
                 case "chan15_raw":
-                    m.chan15_raw = (int) Json.integer(v, 0, 65535, "chan15_raw");
+                    m.chan15_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan15_raw");
                     break;
                 case "chan16_raw":
-                    m.chan16_raw = (int) Json.integer(v, 0, 65535, "chan16_raw");
+                    m.chan16_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan16_raw");
                     break;
                 case "chan17_raw":
-                    m.chan17_raw = (int) Json.integer(v, 0, 65535, "chan17_raw");
+                    m.chan17_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan17_raw");
                     break;
                 case "chan18_raw":
-                    m.chan18_raw = (int) Json.integer(v, 0, 65535, "chan18_raw");
+                    m.chan18_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS.chan18_raw");
                     break;
                 case "rssi":
-                    m.rssi = (int) Json.integer(v, 0, 255, "rssi");
+                    m.rssi = (int) ConformanceJson.integer(v, 0, 255, "RC_CHANNELS.rssi");
                     break;
                 default:
                     throw new Refusal("RC_CHANNELS has no field '" + e.getKey() + "'");
@@ -7261,19 +7265,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "REQUEST_DATA_STREAM.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "REQUEST_DATA_STREAM.target_component");
                     break;
                 case "req_stream_id":
-                    m.req_stream_id = (int) Json.integer(v, 0, 255, "req_stream_id");
+                    m.req_stream_id = (int) ConformanceJson.integer(v, 0, 255, "REQUEST_DATA_STREAM.req_stream_id");
                     break;
                 case "req_message_rate":
-                    m.req_message_rate = (int) Json.integer(v, 0, 65535, "req_message_rate");
+                    m.req_message_rate = (int) ConformanceJson.integer(v, 0, 65535, "REQUEST_DATA_STREAM.req_message_rate");
                     break;
                 case "start_stop":
-                    m.start_stop = (int) Json.integer(v, 0, 255, "start_stop");
+                    m.start_stop = (int) ConformanceJson.integer(v, 0, 255, "REQUEST_DATA_STREAM.start_stop");
                     break;
                 default:
                     throw new Refusal("REQUEST_DATA_STREAM has no field '" + e.getKey() + "'");
@@ -7288,13 +7292,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "stream_id":
-                    m.stream_id = (int) Json.integer(v, 0, 255, "stream_id");
+                    m.stream_id = (int) ConformanceJson.integer(v, 0, 255, "DATA_STREAM.stream_id");
                     break;
                 case "message_rate":
-                    m.message_rate = (int) Json.integer(v, 0, 65535, "message_rate");
+                    m.message_rate = (int) ConformanceJson.integer(v, 0, 65535, "DATA_STREAM.message_rate");
                     break;
                 case "on_off":
-                    m.on_off = (int) Json.integer(v, 0, 255, "on_off");
+                    m.on_off = (int) ConformanceJson.integer(v, 0, 255, "DATA_STREAM.on_off");
                     break;
                 default:
                     throw new Refusal("DATA_STREAM has no field '" + e.getKey() + "'");
@@ -7309,52 +7313,52 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target":
-                    m.target = (int) Json.integer(v, 0, 255, "target");
+                    m.target = (int) ConformanceJson.integer(v, 0, 255, "MANUAL_CONTROL.target");
                     break;
                 case "x":
-                    m.x = (short) Json.integer(v, -32768, 32767, "x");
+                    m.x = (short) ConformanceJson.integer(v, -32768, 32767, "MANUAL_CONTROL.x");
                     break;
                 case "y":
-                    m.y = (short) Json.integer(v, -32768, 32767, "y");
+                    m.y = (short) ConformanceJson.integer(v, -32768, 32767, "MANUAL_CONTROL.y");
                     break;
                 case "z":
-                    m.z = (short) Json.integer(v, -32768, 32767, "z");
+                    m.z = (short) ConformanceJson.integer(v, -32768, 32767, "MANUAL_CONTROL.z");
                     break;
                 case "r":
-                    m.r = (short) Json.integer(v, -32768, 32767, "r");
+                    m.r = (short) ConformanceJson.integer(v, -32768, 32767, "MANUAL_CONTROL.r");
                     break;
                 case "buttons":
-                    m.buttons = (int) Json.integer(v, 0, 65535, "buttons");
+                    m.buttons = (int) ConformanceJson.integer(v, 0, 65535, "MANUAL_CONTROL.buttons");
                     break;
                 case "buttons2":
-                    m.buttons2 = (int) Json.integer(v, 0, 65535, "buttons2");
+                    m.buttons2 = (int) ConformanceJson.integer(v, 0, 65535, "MANUAL_CONTROL.buttons2");
                     break;
                 case "enabled_extensions":
-                    m.enabled_extensions = (int) Json.integer(v, 0, 255, "enabled_extensions");
+                    m.enabled_extensions = (int) ConformanceJson.integer(v, 0, 255, "MANUAL_CONTROL.enabled_extensions");
                     break;
                 case "s":
-                    m.s = (short) Json.integer(v, -32768, 32767, "s");
+                    m.s = (short) ConformanceJson.integer(v, -32768, 32767, "MANUAL_CONTROL.s");
                     break;
                 case "t":
-                    m.t = (short) Json.integer(v, -32768, 32767, "t");
+                    m.t = (short) ConformanceJson.integer(v, -32768, 32767, "MANUAL_CONTROL.t");
                     break;
                 case "aux1":
-                    m.aux1 = (short) Json.integer(v, -32768, 32767, "aux1");
+                    m.aux1 = (short) ConformanceJson.integer(v, -32768, 32767, "MANUAL_CONTROL.aux1");
                     break;
                 case "aux2":
-                    m.aux2 = (short) Json.integer(v, -32768, 32767, "aux2");
+                    m.aux2 = (short) ConformanceJson.integer(v, -32768, 32767, "MANUAL_CONTROL.aux2");
                     break;
                 case "aux3":
-                    m.aux3 = (short) Json.integer(v, -32768, 32767, "aux3");
+                    m.aux3 = (short) ConformanceJson.integer(v, -32768, 32767, "MANUAL_CONTROL.aux3");
                     break;
                 case "aux4":
-                    m.aux4 = (short) Json.integer(v, -32768, 32767, "aux4");
+                    m.aux4 = (short) ConformanceJson.integer(v, -32768, 32767, "MANUAL_CONTROL.aux4");
                     break;
                 case "aux5":
-                    m.aux5 = (short) Json.integer(v, -32768, 32767, "aux5");
+                    m.aux5 = (short) ConformanceJson.integer(v, -32768, 32767, "MANUAL_CONTROL.aux5");
                     break;
                 case "aux6":
-                    m.aux6 = (short) Json.integer(v, -32768, 32767, "aux6");
+                    m.aux6 = (short) ConformanceJson.integer(v, -32768, 32767, "MANUAL_CONTROL.aux6");
                     break;
                 default:
                     throw new Refusal("MANUAL_CONTROL has no field '" + e.getKey() + "'");
@@ -7369,64 +7373,64 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "RC_CHANNELS_OVERRIDE.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "RC_CHANNELS_OVERRIDE.target_component");
                     break;
                 case "chan1_raw":
-                    m.chan1_raw = (int) Json.integer(v, 0, 65535, "chan1_raw");
+                    m.chan1_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan1_raw");
                     break;
                 case "chan2_raw":
-                    m.chan2_raw = (int) Json.integer(v, 0, 65535, "chan2_raw");
+                    m.chan2_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan2_raw");
                     break;
                 case "chan3_raw":
-                    m.chan3_raw = (int) Json.integer(v, 0, 65535, "chan3_raw");
+                    m.chan3_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan3_raw");
                     break;
                 case "chan4_raw":
-                    m.chan4_raw = (int) Json.integer(v, 0, 65535, "chan4_raw");
+                    m.chan4_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan4_raw");
                     break;
                 case "chan5_raw":
-                    m.chan5_raw = (int) Json.integer(v, 0, 65535, "chan5_raw");
+                    m.chan5_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan5_raw");
                     break;
                 case "chan6_raw":
-                    m.chan6_raw = (int) Json.integer(v, 0, 65535, "chan6_raw");
+                    m.chan6_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan6_raw");
                     break;
                 case "chan7_raw":
-                    m.chan7_raw = (int) Json.integer(v, 0, 65535, "chan7_raw");
+                    m.chan7_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan7_raw");
                     break;
                 case "chan8_raw":
-                    m.chan8_raw = (int) Json.integer(v, 0, 65535, "chan8_raw");
+                    m.chan8_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan8_raw");
                     break;
                 case "chan9_raw":
-                    m.chan9_raw = (int) Json.integer(v, 0, 65535, "chan9_raw");
+                    m.chan9_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan9_raw");
                     break;
                 case "chan10_raw":
-                    m.chan10_raw = (int) Json.integer(v, 0, 65535, "chan10_raw");
+                    m.chan10_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan10_raw");
                     break;
                 case "chan11_raw":
-                    m.chan11_raw = (int) Json.integer(v, 0, 65535, "chan11_raw");
+                    m.chan11_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan11_raw");
                     break;
                 case "chan12_raw":
-                    m.chan12_raw = (int) Json.integer(v, 0, 65535, "chan12_raw");
+                    m.chan12_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan12_raw");
                     break;
                 case "chan13_raw":
-                    m.chan13_raw = (int) Json.integer(v, 0, 65535, "chan13_raw");
+                    m.chan13_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan13_raw");
                     break;
                 case "chan14_raw":
-                    m.chan14_raw = (int) Json.integer(v, 0, 65535, "chan14_raw");
+                    m.chan14_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan14_raw");
                     break;
                 case "chan15_raw":
-                    m.chan15_raw = (int) Json.integer(v, 0, 65535, "chan15_raw");
+                    m.chan15_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan15_raw");
                     break;
                 case "chan16_raw":
-                    m.chan16_raw = (int) Json.integer(v, 0, 65535, "chan16_raw");
+                    m.chan16_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan16_raw");
                     break;
                 case "chan17_raw":
-                    m.chan17_raw = (int) Json.integer(v, 0, 65535, "chan17_raw");
+                    m.chan17_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan17_raw");
                     break;
                 case "chan18_raw":
-                    m.chan18_raw = (int) Json.integer(v, 0, 65535, "chan18_raw");
+                    m.chan18_raw = (int) ConformanceJson.integer(v, 0, 65535, "RC_CHANNELS_OVERRIDE.chan18_raw");
                     break;
                 default:
                     throw new Refusal("RC_CHANNELS_OVERRIDE has no field '" + e.getKey() + "'");
@@ -7441,49 +7445,49 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ITEM_INT.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ITEM_INT.target_component");
                     break;
                 case "seq":
-                    m.seq = (int) Json.integer(v, 0, 65535, "seq");
+                    m.seq = (int) ConformanceJson.integer(v, 0, 65535, "MISSION_ITEM_INT.seq");
                     break;
                 case "frame":
-                    m.frame = (int) Json.integer(v, 0, 255, "frame");
+                    m.frame = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ITEM_INT.frame");
                     break;
                 case "command":
-                    m.command = (int) Json.integer(v, 0, 65535, "command");
+                    m.command = (int) ConformanceJson.integer(v, 0, 65535, "MISSION_ITEM_INT.command");
                     break;
                 case "current":
-                    m.current = (int) Json.integer(v, 0, 255, "current");
+                    m.current = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ITEM_INT.current");
                     break;
                 case "autocontinue":
-                    m.autocontinue = (int) Json.integer(v, 0, 255, "autocontinue");
+                    m.autocontinue = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ITEM_INT.autocontinue");
                     break;
                 case "param1":
-                    m.param1 = Json.f32(v, "param1");
+                    m.param1 = ConformanceJson.f32(v, "MISSION_ITEM_INT.param1");
                     break;
                 case "param2":
-                    m.param2 = Json.f32(v, "param2");
+                    m.param2 = ConformanceJson.f32(v, "MISSION_ITEM_INT.param2");
                     break;
                 case "param3":
-                    m.param3 = Json.f32(v, "param3");
+                    m.param3 = ConformanceJson.f32(v, "MISSION_ITEM_INT.param3");
                     break;
                 case "param4":
-                    m.param4 = Json.f32(v, "param4");
+                    m.param4 = ConformanceJson.f32(v, "MISSION_ITEM_INT.param4");
                     break;
                 case "x":
-                    m.x = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "x");
+                    m.x = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "MISSION_ITEM_INT.x");
                     break;
                 case "y":
-                    m.y = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "y");
+                    m.y = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "MISSION_ITEM_INT.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "MISSION_ITEM_INT.z");
                     break;
                 case "mission_type":
-                    m.mission_type = (int) Json.integer(v, 0, 255, "mission_type");
+                    m.mission_type = (int) ConformanceJson.integer(v, 0, 255, "MISSION_ITEM_INT.mission_type");
                     break;
                 default:
                     throw new Refusal("MISSION_ITEM_INT has no field '" + e.getKey() + "'");
@@ -7498,22 +7502,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "airspeed":
-                    m.airspeed = Json.f32(v, "airspeed");
+                    m.airspeed = ConformanceJson.f32(v, "VFR_HUD.airspeed");
                     break;
                 case "groundspeed":
-                    m.groundspeed = Json.f32(v, "groundspeed");
+                    m.groundspeed = ConformanceJson.f32(v, "VFR_HUD.groundspeed");
                     break;
                 case "heading":
-                    m.heading = (short) Json.integer(v, -32768, 32767, "heading");
+                    m.heading = (short) ConformanceJson.integer(v, -32768, 32767, "VFR_HUD.heading");
                     break;
                 case "throttle":
-                    m.throttle = (int) Json.integer(v, 0, 65535, "throttle");
+                    m.throttle = (int) ConformanceJson.integer(v, 0, 65535, "VFR_HUD.throttle");
                     break;
                 case "alt":
-                    m.alt = Json.f32(v, "alt");
+                    m.alt = ConformanceJson.f32(v, "VFR_HUD.alt");
                     break;
                 case "climb":
-                    m.climb = Json.f32(v, "climb");
+                    m.climb = ConformanceJson.f32(v, "VFR_HUD.climb");
                     break;
                 default:
                     throw new Refusal("VFR_HUD has no field '" + e.getKey() + "'");
@@ -7528,43 +7532,43 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "COMMAND_INT.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "COMMAND_INT.target_component");
                     break;
                 case "frame":
-                    m.frame = (int) Json.integer(v, 0, 255, "frame");
+                    m.frame = (int) ConformanceJson.integer(v, 0, 255, "COMMAND_INT.frame");
                     break;
                 case "command":
-                    m.command = (int) Json.integer(v, 0, 65535, "command");
+                    m.command = (int) ConformanceJson.integer(v, 0, 65535, "COMMAND_INT.command");
                     break;
                 case "current":
-                    m.current = (int) Json.integer(v, 0, 255, "current");
+                    m.current = (int) ConformanceJson.integer(v, 0, 255, "COMMAND_INT.current");
                     break;
                 case "autocontinue":
-                    m.autocontinue = (int) Json.integer(v, 0, 255, "autocontinue");
+                    m.autocontinue = (int) ConformanceJson.integer(v, 0, 255, "COMMAND_INT.autocontinue");
                     break;
                 case "param1":
-                    m.param1 = Json.f32(v, "param1");
+                    m.param1 = ConformanceJson.f32(v, "COMMAND_INT.param1");
                     break;
                 case "param2":
-                    m.param2 = Json.f32(v, "param2");
+                    m.param2 = ConformanceJson.f32(v, "COMMAND_INT.param2");
                     break;
                 case "param3":
-                    m.param3 = Json.f32(v, "param3");
+                    m.param3 = ConformanceJson.f32(v, "COMMAND_INT.param3");
                     break;
                 case "param4":
-                    m.param4 = Json.f32(v, "param4");
+                    m.param4 = ConformanceJson.f32(v, "COMMAND_INT.param4");
                     break;
                 case "x":
-                    m.x = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "x");
+                    m.x = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "COMMAND_INT.x");
                     break;
                 case "y":
-                    m.y = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "y");
+                    m.y = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "COMMAND_INT.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "COMMAND_INT.z");
                     break;
                 default:
                     throw new Refusal("COMMAND_INT has no field '" + e.getKey() + "'");
@@ -7579,37 +7583,37 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "COMMAND_LONG.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "COMMAND_LONG.target_component");
                     break;
                 case "command":
-                    m.command = (int) Json.integer(v, 0, 65535, "command");
+                    m.command = (int) ConformanceJson.integer(v, 0, 65535, "COMMAND_LONG.command");
                     break;
                 case "confirmation":
-                    m.confirmation = (int) Json.integer(v, 0, 255, "confirmation");
+                    m.confirmation = (int) ConformanceJson.integer(v, 0, 255, "COMMAND_LONG.confirmation");
                     break;
                 case "param1":
-                    m.param1 = Json.f32(v, "param1");
+                    m.param1 = ConformanceJson.f32(v, "COMMAND_LONG.param1");
                     break;
                 case "param2":
-                    m.param2 = Json.f32(v, "param2");
+                    m.param2 = ConformanceJson.f32(v, "COMMAND_LONG.param2");
                     break;
                 case "param3":
-                    m.param3 = Json.f32(v, "param3");
+                    m.param3 = ConformanceJson.f32(v, "COMMAND_LONG.param3");
                     break;
                 case "param4":
-                    m.param4 = Json.f32(v, "param4");
+                    m.param4 = ConformanceJson.f32(v, "COMMAND_LONG.param4");
                     break;
                 case "param5":
-                    m.param5 = Json.f32(v, "param5");
+                    m.param5 = ConformanceJson.f32(v, "COMMAND_LONG.param5");
                     break;
                 case "param6":
-                    m.param6 = Json.f32(v, "param6");
+                    m.param6 = ConformanceJson.f32(v, "COMMAND_LONG.param6");
                     break;
                 case "param7":
-                    m.param7 = Json.f32(v, "param7");
+                    m.param7 = ConformanceJson.f32(v, "COMMAND_LONG.param7");
                     break;
                 default:
                     throw new Refusal("COMMAND_LONG has no field '" + e.getKey() + "'");
@@ -7624,22 +7628,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "command":
-                    m.command = (int) Json.integer(v, 0, 65535, "command");
+                    m.command = (int) ConformanceJson.integer(v, 0, 65535, "COMMAND_ACK.command");
                     break;
                 case "result":
-                    m.result = (int) Json.integer(v, 0, 255, "result");
+                    m.result = (int) ConformanceJson.integer(v, 0, 255, "COMMAND_ACK.result");
                     break;
                 case "progress":
-                    m.progress = (int) Json.integer(v, 0, 255, "progress");
+                    m.progress = (int) ConformanceJson.integer(v, 0, 255, "COMMAND_ACK.progress");
                     break;
                 case "result_param2":
-                    m.result_param2 = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "result_param2");
+                    m.result_param2 = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "COMMAND_ACK.result_param2");
                     break;
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "COMMAND_ACK.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "COMMAND_ACK.target_component");
                     break;
                 default:
                     throw new Refusal("COMMAND_ACK has no field '" + e.getKey() + "'");
@@ -7654,25 +7658,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "MANUAL_SETPOINT.time_boot_ms");
                     break;
                 case "roll":
-                    m.roll = Json.f32(v, "roll");
+                    m.roll = ConformanceJson.f32(v, "MANUAL_SETPOINT.roll");
                     break;
                 case "pitch":
-                    m.pitch = Json.f32(v, "pitch");
+                    m.pitch = ConformanceJson.f32(v, "MANUAL_SETPOINT.pitch");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "MANUAL_SETPOINT.yaw");
                     break;
                 case "thrust":
-                    m.thrust = Json.f32(v, "thrust");
+                    m.thrust = ConformanceJson.f32(v, "MANUAL_SETPOINT.thrust");
                     break;
                 case "mode_switch":
-                    m.mode_switch = (int) Json.integer(v, 0, 255, "mode_switch");
+                    m.mode_switch = (int) ConformanceJson.integer(v, 0, 255, "MANUAL_SETPOINT.mode_switch");
                     break;
                 case "manual_override_switch":
-                    m.manual_override_switch = (int) Json.integer(v, 0, 255, "manual_override_switch");
+                    m.manual_override_switch = (int) ConformanceJson.integer(v, 0, 255, "MANUAL_SETPOINT.manual_override_switch");
                     break;
                 default:
                     throw new Refusal("MANUAL_SETPOINT has no field '" + e.getKey() + "'");
@@ -7687,31 +7691,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "SET_ATTITUDE_TARGET.time_boot_ms");
                     break;
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "SET_ATTITUDE_TARGET.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "SET_ATTITUDE_TARGET.target_component");
                     break;
                 case "type_mask":
-                    m.type_mask = (int) Json.integer(v, 0, 255, "type_mask");
+                    m.type_mask = (int) ConformanceJson.integer(v, 0, 255, "SET_ATTITUDE_TARGET.type_mask");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "SET_ATTITUDE_TARGET.q");
                     break;
                 case "body_roll_rate":
-                    m.body_roll_rate = Json.f32(v, "body_roll_rate");
+                    m.body_roll_rate = ConformanceJson.f32(v, "SET_ATTITUDE_TARGET.body_roll_rate");
                     break;
                 case "body_pitch_rate":
-                    m.body_pitch_rate = Json.f32(v, "body_pitch_rate");
+                    m.body_pitch_rate = ConformanceJson.f32(v, "SET_ATTITUDE_TARGET.body_pitch_rate");
                     break;
                 case "body_yaw_rate":
-                    m.body_yaw_rate = Json.f32(v, "body_yaw_rate");
+                    m.body_yaw_rate = ConformanceJson.f32(v, "SET_ATTITUDE_TARGET.body_yaw_rate");
                     break;
                 case "thrust":
-                    m.thrust = Json.f32(v, "thrust");
+                    m.thrust = ConformanceJson.f32(v, "SET_ATTITUDE_TARGET.thrust");
                     break;
                 default:
                     throw new Refusal("SET_ATTITUDE_TARGET has no field '" + e.getKey() + "'");
@@ -7726,25 +7730,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "ATTITUDE_TARGET.time_boot_ms");
                     break;
                 case "type_mask":
-                    m.type_mask = (int) Json.integer(v, 0, 255, "type_mask");
+                    m.type_mask = (int) ConformanceJson.integer(v, 0, 255, "ATTITUDE_TARGET.type_mask");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "ATTITUDE_TARGET.q");
                     break;
                 case "body_roll_rate":
-                    m.body_roll_rate = Json.f32(v, "body_roll_rate");
+                    m.body_roll_rate = ConformanceJson.f32(v, "ATTITUDE_TARGET.body_roll_rate");
                     break;
                 case "body_pitch_rate":
-                    m.body_pitch_rate = Json.f32(v, "body_pitch_rate");
+                    m.body_pitch_rate = ConformanceJson.f32(v, "ATTITUDE_TARGET.body_pitch_rate");
                     break;
                 case "body_yaw_rate":
-                    m.body_yaw_rate = Json.f32(v, "body_yaw_rate");
+                    m.body_yaw_rate = ConformanceJson.f32(v, "ATTITUDE_TARGET.body_yaw_rate");
                     break;
                 case "thrust":
-                    m.thrust = Json.f32(v, "thrust");
+                    m.thrust = ConformanceJson.f32(v, "ATTITUDE_TARGET.thrust");
                     break;
                 default:
                     throw new Refusal("ATTITUDE_TARGET has no field '" + e.getKey() + "'");
@@ -7759,52 +7763,52 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "SET_POSITION_TARGET_LOCAL_NED.time_boot_ms");
                     break;
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "SET_POSITION_TARGET_LOCAL_NED.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "SET_POSITION_TARGET_LOCAL_NED.target_component");
                     break;
                 case "coordinate_frame":
-                    m.coordinate_frame = (int) Json.integer(v, 0, 255, "coordinate_frame");
+                    m.coordinate_frame = (int) ConformanceJson.integer(v, 0, 255, "SET_POSITION_TARGET_LOCAL_NED.coordinate_frame");
                     break;
                 case "type_mask":
-                    m.type_mask = (int) Json.integer(v, 0, 65535, "type_mask");
+                    m.type_mask = (int) ConformanceJson.integer(v, 0, 65535, "SET_POSITION_TARGET_LOCAL_NED.type_mask");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "SET_POSITION_TARGET_LOCAL_NED.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "SET_POSITION_TARGET_LOCAL_NED.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "SET_POSITION_TARGET_LOCAL_NED.z");
                     break;
                 case "vx":
-                    m.vx = Json.f32(v, "vx");
+                    m.vx = ConformanceJson.f32(v, "SET_POSITION_TARGET_LOCAL_NED.vx");
                     break;
                 case "vy":
-                    m.vy = Json.f32(v, "vy");
+                    m.vy = ConformanceJson.f32(v, "SET_POSITION_TARGET_LOCAL_NED.vy");
                     break;
                 case "vz":
-                    m.vz = Json.f32(v, "vz");
+                    m.vz = ConformanceJson.f32(v, "SET_POSITION_TARGET_LOCAL_NED.vz");
                     break;
                 case "afx":
-                    m.afx = Json.f32(v, "afx");
+                    m.afx = ConformanceJson.f32(v, "SET_POSITION_TARGET_LOCAL_NED.afx");
                     break;
                 case "afy":
-                    m.afy = Json.f32(v, "afy");
+                    m.afy = ConformanceJson.f32(v, "SET_POSITION_TARGET_LOCAL_NED.afy");
                     break;
                 case "afz":
-                    m.afz = Json.f32(v, "afz");
+                    m.afz = ConformanceJson.f32(v, "SET_POSITION_TARGET_LOCAL_NED.afz");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "SET_POSITION_TARGET_LOCAL_NED.yaw");
                     break;
                 case "yaw_rate":
-                    m.yaw_rate = Json.f32(v, "yaw_rate");
+                    m.yaw_rate = ConformanceJson.f32(v, "SET_POSITION_TARGET_LOCAL_NED.yaw_rate");
                     break;
                 default:
                     throw new Refusal("SET_POSITION_TARGET_LOCAL_NED has no field '" + e.getKey() + "'");
@@ -7819,46 +7823,46 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "POSITION_TARGET_LOCAL_NED.time_boot_ms");
                     break;
                 case "coordinate_frame":
-                    m.coordinate_frame = (int) Json.integer(v, 0, 255, "coordinate_frame");
+                    m.coordinate_frame = (int) ConformanceJson.integer(v, 0, 255, "POSITION_TARGET_LOCAL_NED.coordinate_frame");
                     break;
                 case "type_mask":
-                    m.type_mask = (int) Json.integer(v, 0, 65535, "type_mask");
+                    m.type_mask = (int) ConformanceJson.integer(v, 0, 65535, "POSITION_TARGET_LOCAL_NED.type_mask");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "POSITION_TARGET_LOCAL_NED.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "POSITION_TARGET_LOCAL_NED.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "POSITION_TARGET_LOCAL_NED.z");
                     break;
                 case "vx":
-                    m.vx = Json.f32(v, "vx");
+                    m.vx = ConformanceJson.f32(v, "POSITION_TARGET_LOCAL_NED.vx");
                     break;
                 case "vy":
-                    m.vy = Json.f32(v, "vy");
+                    m.vy = ConformanceJson.f32(v, "POSITION_TARGET_LOCAL_NED.vy");
                     break;
                 case "vz":
-                    m.vz = Json.f32(v, "vz");
+                    m.vz = ConformanceJson.f32(v, "POSITION_TARGET_LOCAL_NED.vz");
                     break;
                 case "afx":
-                    m.afx = Json.f32(v, "afx");
+                    m.afx = ConformanceJson.f32(v, "POSITION_TARGET_LOCAL_NED.afx");
                     break;
                 case "afy":
-                    m.afy = Json.f32(v, "afy");
+                    m.afy = ConformanceJson.f32(v, "POSITION_TARGET_LOCAL_NED.afy");
                     break;
                 case "afz":
-                    m.afz = Json.f32(v, "afz");
+                    m.afz = ConformanceJson.f32(v, "POSITION_TARGET_LOCAL_NED.afz");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "POSITION_TARGET_LOCAL_NED.yaw");
                     break;
                 case "yaw_rate":
-                    m.yaw_rate = Json.f32(v, "yaw_rate");
+                    m.yaw_rate = ConformanceJson.f32(v, "POSITION_TARGET_LOCAL_NED.yaw_rate");
                     break;
                 default:
                     throw new Refusal("POSITION_TARGET_LOCAL_NED has no field '" + e.getKey() + "'");
@@ -7873,52 +7877,52 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "SET_POSITION_TARGET_GLOBAL_INT.time_boot_ms");
                     break;
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "SET_POSITION_TARGET_GLOBAL_INT.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "SET_POSITION_TARGET_GLOBAL_INT.target_component");
                     break;
                 case "coordinate_frame":
-                    m.coordinate_frame = (int) Json.integer(v, 0, 255, "coordinate_frame");
+                    m.coordinate_frame = (int) ConformanceJson.integer(v, 0, 255, "SET_POSITION_TARGET_GLOBAL_INT.coordinate_frame");
                     break;
                 case "type_mask":
-                    m.type_mask = (int) Json.integer(v, 0, 65535, "type_mask");
+                    m.type_mask = (int) ConformanceJson.integer(v, 0, 65535, "SET_POSITION_TARGET_GLOBAL_INT.type_mask");
                     break;
                 case "lat_int":
-                    m.lat_int = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat_int");
+                    m.lat_int = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "SET_POSITION_TARGET_GLOBAL_INT.lat_int");
                     break;
                 case "lon_int":
-                    m.lon_int = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon_int");
+                    m.lon_int = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "SET_POSITION_TARGET_GLOBAL_INT.lon_int");
                     break;
                 case "alt":
-                    m.alt = Json.f32(v, "alt");
+                    m.alt = ConformanceJson.f32(v, "SET_POSITION_TARGET_GLOBAL_INT.alt");
                     break;
                 case "vx":
-                    m.vx = Json.f32(v, "vx");
+                    m.vx = ConformanceJson.f32(v, "SET_POSITION_TARGET_GLOBAL_INT.vx");
                     break;
                 case "vy":
-                    m.vy = Json.f32(v, "vy");
+                    m.vy = ConformanceJson.f32(v, "SET_POSITION_TARGET_GLOBAL_INT.vy");
                     break;
                 case "vz":
-                    m.vz = Json.f32(v, "vz");
+                    m.vz = ConformanceJson.f32(v, "SET_POSITION_TARGET_GLOBAL_INT.vz");
                     break;
                 case "afx":
-                    m.afx = Json.f32(v, "afx");
+                    m.afx = ConformanceJson.f32(v, "SET_POSITION_TARGET_GLOBAL_INT.afx");
                     break;
                 case "afy":
-                    m.afy = Json.f32(v, "afy");
+                    m.afy = ConformanceJson.f32(v, "SET_POSITION_TARGET_GLOBAL_INT.afy");
                     break;
                 case "afz":
-                    m.afz = Json.f32(v, "afz");
+                    m.afz = ConformanceJson.f32(v, "SET_POSITION_TARGET_GLOBAL_INT.afz");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "SET_POSITION_TARGET_GLOBAL_INT.yaw");
                     break;
                 case "yaw_rate":
-                    m.yaw_rate = Json.f32(v, "yaw_rate");
+                    m.yaw_rate = ConformanceJson.f32(v, "SET_POSITION_TARGET_GLOBAL_INT.yaw_rate");
                     break;
                 default:
                     throw new Refusal("SET_POSITION_TARGET_GLOBAL_INT has no field '" + e.getKey() + "'");
@@ -7933,46 +7937,46 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "POSITION_TARGET_GLOBAL_INT.time_boot_ms");
                     break;
                 case "coordinate_frame":
-                    m.coordinate_frame = (int) Json.integer(v, 0, 255, "coordinate_frame");
+                    m.coordinate_frame = (int) ConformanceJson.integer(v, 0, 255, "POSITION_TARGET_GLOBAL_INT.coordinate_frame");
                     break;
                 case "type_mask":
-                    m.type_mask = (int) Json.integer(v, 0, 65535, "type_mask");
+                    m.type_mask = (int) ConformanceJson.integer(v, 0, 65535, "POSITION_TARGET_GLOBAL_INT.type_mask");
                     break;
                 case "lat_int":
-                    m.lat_int = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat_int");
+                    m.lat_int = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "POSITION_TARGET_GLOBAL_INT.lat_int");
                     break;
                 case "lon_int":
-                    m.lon_int = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon_int");
+                    m.lon_int = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "POSITION_TARGET_GLOBAL_INT.lon_int");
                     break;
                 case "alt":
-                    m.alt = Json.f32(v, "alt");
+                    m.alt = ConformanceJson.f32(v, "POSITION_TARGET_GLOBAL_INT.alt");
                     break;
                 case "vx":
-                    m.vx = Json.f32(v, "vx");
+                    m.vx = ConformanceJson.f32(v, "POSITION_TARGET_GLOBAL_INT.vx");
                     break;
                 case "vy":
-                    m.vy = Json.f32(v, "vy");
+                    m.vy = ConformanceJson.f32(v, "POSITION_TARGET_GLOBAL_INT.vy");
                     break;
                 case "vz":
-                    m.vz = Json.f32(v, "vz");
+                    m.vz = ConformanceJson.f32(v, "POSITION_TARGET_GLOBAL_INT.vz");
                     break;
                 case "afx":
-                    m.afx = Json.f32(v, "afx");
+                    m.afx = ConformanceJson.f32(v, "POSITION_TARGET_GLOBAL_INT.afx");
                     break;
                 case "afy":
-                    m.afy = Json.f32(v, "afy");
+                    m.afy = ConformanceJson.f32(v, "POSITION_TARGET_GLOBAL_INT.afy");
                     break;
                 case "afz":
-                    m.afz = Json.f32(v, "afz");
+                    m.afz = ConformanceJson.f32(v, "POSITION_TARGET_GLOBAL_INT.afz");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "POSITION_TARGET_GLOBAL_INT.yaw");
                     break;
                 case "yaw_rate":
-                    m.yaw_rate = Json.f32(v, "yaw_rate");
+                    m.yaw_rate = ConformanceJson.f32(v, "POSITION_TARGET_GLOBAL_INT.yaw_rate");
                     break;
                 default:
                     throw new Refusal("POSITION_TARGET_GLOBAL_INT has no field '" + e.getKey() + "'");
@@ -7987,25 +7991,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "LOCAL_POSITION_NED_SYSTEM_GLOBAL_OFFSET.time_boot_ms");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "LOCAL_POSITION_NED_SYSTEM_GLOBAL_OFFSET.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "LOCAL_POSITION_NED_SYSTEM_GLOBAL_OFFSET.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "LOCAL_POSITION_NED_SYSTEM_GLOBAL_OFFSET.z");
                     break;
                 case "roll":
-                    m.roll = Json.f32(v, "roll");
+                    m.roll = ConformanceJson.f32(v, "LOCAL_POSITION_NED_SYSTEM_GLOBAL_OFFSET.roll");
                     break;
                 case "pitch":
-                    m.pitch = Json.f32(v, "pitch");
+                    m.pitch = ConformanceJson.f32(v, "LOCAL_POSITION_NED_SYSTEM_GLOBAL_OFFSET.pitch");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "LOCAL_POSITION_NED_SYSTEM_GLOBAL_OFFSET.yaw");
                     break;
                 default:
                     throw new Refusal("LOCAL_POSITION_NED_SYSTEM_GLOBAL_OFFSET has no field '" + e.getKey() + "'");
@@ -8020,52 +8024,52 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "HIL_STATE.time_usec");
                     break;
                 case "roll":
-                    m.roll = Json.f32(v, "roll");
+                    m.roll = ConformanceJson.f32(v, "HIL_STATE.roll");
                     break;
                 case "pitch":
-                    m.pitch = Json.f32(v, "pitch");
+                    m.pitch = ConformanceJson.f32(v, "HIL_STATE.pitch");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "HIL_STATE.yaw");
                     break;
                 case "rollspeed":
-                    m.rollspeed = Json.f32(v, "rollspeed");
+                    m.rollspeed = ConformanceJson.f32(v, "HIL_STATE.rollspeed");
                     break;
                 case "pitchspeed":
-                    m.pitchspeed = Json.f32(v, "pitchspeed");
+                    m.pitchspeed = ConformanceJson.f32(v, "HIL_STATE.pitchspeed");
                     break;
                 case "yawspeed":
-                    m.yawspeed = Json.f32(v, "yawspeed");
+                    m.yawspeed = ConformanceJson.f32(v, "HIL_STATE.yawspeed");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HIL_STATE.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HIL_STATE.lon");
                     break;
                 case "alt":
-                    m.alt = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "alt");
+                    m.alt = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HIL_STATE.alt");
                     break;
                 case "vx":
-                    m.vx = (short) Json.integer(v, -32768, 32767, "vx");
+                    m.vx = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_STATE.vx");
                     break;
                 case "vy":
-                    m.vy = (short) Json.integer(v, -32768, 32767, "vy");
+                    m.vy = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_STATE.vy");
                     break;
                 case "vz":
-                    m.vz = (short) Json.integer(v, -32768, 32767, "vz");
+                    m.vz = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_STATE.vz");
                     break;
                 case "xacc":
-                    m.xacc = (short) Json.integer(v, -32768, 32767, "xacc");
+                    m.xacc = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_STATE.xacc");
                     break;
                 case "yacc":
-                    m.yacc = (short) Json.integer(v, -32768, 32767, "yacc");
+                    m.yacc = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_STATE.yacc");
                     break;
                 case "zacc":
-                    m.zacc = (short) Json.integer(v, -32768, 32767, "zacc");
+                    m.zacc = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_STATE.zacc");
                     break;
                 default:
                     throw new Refusal("HIL_STATE has no field '" + e.getKey() + "'");
@@ -8080,37 +8084,37 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "HIL_CONTROLS.time_usec");
                     break;
                 case "roll_ailerons":
-                    m.roll_ailerons = Json.f32(v, "roll_ailerons");
+                    m.roll_ailerons = ConformanceJson.f32(v, "HIL_CONTROLS.roll_ailerons");
                     break;
                 case "pitch_elevator":
-                    m.pitch_elevator = Json.f32(v, "pitch_elevator");
+                    m.pitch_elevator = ConformanceJson.f32(v, "HIL_CONTROLS.pitch_elevator");
                     break;
                 case "yaw_rudder":
-                    m.yaw_rudder = Json.f32(v, "yaw_rudder");
+                    m.yaw_rudder = ConformanceJson.f32(v, "HIL_CONTROLS.yaw_rudder");
                     break;
                 case "throttle":
-                    m.throttle = Json.f32(v, "throttle");
+                    m.throttle = ConformanceJson.f32(v, "HIL_CONTROLS.throttle");
                     break;
                 case "aux1":
-                    m.aux1 = Json.f32(v, "aux1");
+                    m.aux1 = ConformanceJson.f32(v, "HIL_CONTROLS.aux1");
                     break;
                 case "aux2":
-                    m.aux2 = Json.f32(v, "aux2");
+                    m.aux2 = ConformanceJson.f32(v, "HIL_CONTROLS.aux2");
                     break;
                 case "aux3":
-                    m.aux3 = Json.f32(v, "aux3");
+                    m.aux3 = ConformanceJson.f32(v, "HIL_CONTROLS.aux3");
                     break;
                 case "aux4":
-                    m.aux4 = Json.f32(v, "aux4");
+                    m.aux4 = ConformanceJson.f32(v, "HIL_CONTROLS.aux4");
                     break;
                 case "mode":
-                    m.mode = (int) Json.integer(v, 0, 255, "mode");
+                    m.mode = (int) ConformanceJson.integer(v, 0, 255, "HIL_CONTROLS.mode");
                     break;
                 case "nav_mode":
-                    m.nav_mode = (int) Json.integer(v, 0, 255, "nav_mode");
+                    m.nav_mode = (int) ConformanceJson.integer(v, 0, 255, "HIL_CONTROLS.nav_mode");
                     break;
                 default:
                     throw new Refusal("HIL_CONTROLS has no field '" + e.getKey() + "'");
@@ -8125,46 +8129,46 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "HIL_RC_INPUTS_RAW.time_usec");
                     break;
                 case "chan1_raw":
-                    m.chan1_raw = (int) Json.integer(v, 0, 65535, "chan1_raw");
+                    m.chan1_raw = (int) ConformanceJson.integer(v, 0, 65535, "HIL_RC_INPUTS_RAW.chan1_raw");
                     break;
                 case "chan2_raw":
-                    m.chan2_raw = (int) Json.integer(v, 0, 65535, "chan2_raw");
+                    m.chan2_raw = (int) ConformanceJson.integer(v, 0, 65535, "HIL_RC_INPUTS_RAW.chan2_raw");
                     break;
                 case "chan3_raw":
-                    m.chan3_raw = (int) Json.integer(v, 0, 65535, "chan3_raw");
+                    m.chan3_raw = (int) ConformanceJson.integer(v, 0, 65535, "HIL_RC_INPUTS_RAW.chan3_raw");
                     break;
                 case "chan4_raw":
-                    m.chan4_raw = (int) Json.integer(v, 0, 65535, "chan4_raw");
+                    m.chan4_raw = (int) ConformanceJson.integer(v, 0, 65535, "HIL_RC_INPUTS_RAW.chan4_raw");
                     break;
                 case "chan5_raw":
-                    m.chan5_raw = (int) Json.integer(v, 0, 65535, "chan5_raw");
+                    m.chan5_raw = (int) ConformanceJson.integer(v, 0, 65535, "HIL_RC_INPUTS_RAW.chan5_raw");
                     break;
                 case "chan6_raw":
-                    m.chan6_raw = (int) Json.integer(v, 0, 65535, "chan6_raw");
+                    m.chan6_raw = (int) ConformanceJson.integer(v, 0, 65535, "HIL_RC_INPUTS_RAW.chan6_raw");
                     break;
                 case "chan7_raw":
-                    m.chan7_raw = (int) Json.integer(v, 0, 65535, "chan7_raw");
+                    m.chan7_raw = (int) ConformanceJson.integer(v, 0, 65535, "HIL_RC_INPUTS_RAW.chan7_raw");
                     break;
                 case "chan8_raw":
-                    m.chan8_raw = (int) Json.integer(v, 0, 65535, "chan8_raw");
+                    m.chan8_raw = (int) ConformanceJson.integer(v, 0, 65535, "HIL_RC_INPUTS_RAW.chan8_raw");
                     break;
                 case "chan9_raw":
-                    m.chan9_raw = (int) Json.integer(v, 0, 65535, "chan9_raw");
+                    m.chan9_raw = (int) ConformanceJson.integer(v, 0, 65535, "HIL_RC_INPUTS_RAW.chan9_raw");
                     break;
                 case "chan10_raw":
-                    m.chan10_raw = (int) Json.integer(v, 0, 65535, "chan10_raw");
+                    m.chan10_raw = (int) ConformanceJson.integer(v, 0, 65535, "HIL_RC_INPUTS_RAW.chan10_raw");
                     break;
                 case "chan11_raw":
-                    m.chan11_raw = (int) Json.integer(v, 0, 65535, "chan11_raw");
+                    m.chan11_raw = (int) ConformanceJson.integer(v, 0, 65535, "HIL_RC_INPUTS_RAW.chan11_raw");
                     break;
                 case "chan12_raw":
-                    m.chan12_raw = (int) Json.integer(v, 0, 65535, "chan12_raw");
+                    m.chan12_raw = (int) ConformanceJson.integer(v, 0, 65535, "HIL_RC_INPUTS_RAW.chan12_raw");
                     break;
                 case "rssi":
-                    m.rssi = (int) Json.integer(v, 0, 255, "rssi");
+                    m.rssi = (int) ConformanceJson.integer(v, 0, 255, "HIL_RC_INPUTS_RAW.rssi");
                     break;
                 default:
                     throw new Refusal("HIL_RC_INPUTS_RAW has no field '" + e.getKey() + "'");
@@ -8179,16 +8183,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "HIL_ACTUATOR_CONTROLS.time_usec");
                     break;
                 case "controls":
-                    m.controls = Json.f32s(v, 16, "controls");
+                    m.controls = ConformanceJson.f32s(v, 16, "HIL_ACTUATOR_CONTROLS.controls");
                     break;
                 case "mode":
-                    m.mode = (int) Json.integer(v, 0, 255, "mode");
+                    m.mode = (int) ConformanceJson.integer(v, 0, 255, "HIL_ACTUATOR_CONTROLS.mode");
                     break;
                 case "flags":
-                    m.flags = Json.uint64(v, "flags");
+                    m.flags = ConformanceJson.uint64(v, "HIL_ACTUATOR_CONTROLS.flags");
                     break;
                 default:
                     throw new Refusal("HIL_ACTUATOR_CONTROLS has no field '" + e.getKey() + "'");
@@ -8203,34 +8207,34 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "OPTICAL_FLOW.time_usec");
                     break;
                 case "sensor_id":
-                    m.sensor_id = (int) Json.integer(v, 0, 255, "sensor_id");
+                    m.sensor_id = (int) ConformanceJson.integer(v, 0, 255, "OPTICAL_FLOW.sensor_id");
                     break;
                 case "flow_x":
-                    m.flow_x = (short) Json.integer(v, -32768, 32767, "flow_x");
+                    m.flow_x = (short) ConformanceJson.integer(v, -32768, 32767, "OPTICAL_FLOW.flow_x");
                     break;
                 case "flow_y":
-                    m.flow_y = (short) Json.integer(v, -32768, 32767, "flow_y");
+                    m.flow_y = (short) ConformanceJson.integer(v, -32768, 32767, "OPTICAL_FLOW.flow_y");
                     break;
                 case "flow_comp_m_x":
-                    m.flow_comp_m_x = Json.f32(v, "flow_comp_m_x");
+                    m.flow_comp_m_x = ConformanceJson.f32(v, "OPTICAL_FLOW.flow_comp_m_x");
                     break;
                 case "flow_comp_m_y":
-                    m.flow_comp_m_y = Json.f32(v, "flow_comp_m_y");
+                    m.flow_comp_m_y = ConformanceJson.f32(v, "OPTICAL_FLOW.flow_comp_m_y");
                     break;
                 case "quality":
-                    m.quality = (int) Json.integer(v, 0, 255, "quality");
+                    m.quality = (int) ConformanceJson.integer(v, 0, 255, "OPTICAL_FLOW.quality");
                     break;
                 case "ground_distance":
-                    m.ground_distance = Json.f32(v, "ground_distance");
+                    m.ground_distance = ConformanceJson.f32(v, "OPTICAL_FLOW.ground_distance");
                     break;
                 case "flow_rate_x":
-                    m.flow_rate_x = Json.f32(v, "flow_rate_x");
+                    m.flow_rate_x = ConformanceJson.f32(v, "OPTICAL_FLOW.flow_rate_x");
                     break;
                 case "flow_rate_y":
-                    m.flow_rate_y = Json.f32(v, "flow_rate_y");
+                    m.flow_rate_y = ConformanceJson.f32(v, "OPTICAL_FLOW.flow_rate_y");
                     break;
                 default:
                     throw new Refusal("OPTICAL_FLOW has no field '" + e.getKey() + "'");
@@ -8245,31 +8249,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "usec":
-                    m.usec = Json.uint64(v, "usec");
+                    m.usec = ConformanceJson.uint64(v, "GLOBAL_VISION_POSITION_ESTIMATE.usec");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "GLOBAL_VISION_POSITION_ESTIMATE.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "GLOBAL_VISION_POSITION_ESTIMATE.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "GLOBAL_VISION_POSITION_ESTIMATE.z");
                     break;
                 case "roll":
-                    m.roll = Json.f32(v, "roll");
+                    m.roll = ConformanceJson.f32(v, "GLOBAL_VISION_POSITION_ESTIMATE.roll");
                     break;
                 case "pitch":
-                    m.pitch = Json.f32(v, "pitch");
+                    m.pitch = ConformanceJson.f32(v, "GLOBAL_VISION_POSITION_ESTIMATE.pitch");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "GLOBAL_VISION_POSITION_ESTIMATE.yaw");
                     break;
                 case "covariance":
-                    m.covariance = Json.f32s(v, 21, "covariance");
+                    m.covariance = ConformanceJson.f32s(v, 21, "GLOBAL_VISION_POSITION_ESTIMATE.covariance");
                     break;
                 case "reset_counter":
-                    m.reset_counter = (int) Json.integer(v, 0, 255, "reset_counter");
+                    m.reset_counter = (int) ConformanceJson.integer(v, 0, 255, "GLOBAL_VISION_POSITION_ESTIMATE.reset_counter");
                     break;
                 default:
                     throw new Refusal("GLOBAL_VISION_POSITION_ESTIMATE has no field '" + e.getKey() + "'");
@@ -8284,31 +8288,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "usec":
-                    m.usec = Json.uint64(v, "usec");
+                    m.usec = ConformanceJson.uint64(v, "VISION_POSITION_ESTIMATE.usec");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "VISION_POSITION_ESTIMATE.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "VISION_POSITION_ESTIMATE.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "VISION_POSITION_ESTIMATE.z");
                     break;
                 case "roll":
-                    m.roll = Json.f32(v, "roll");
+                    m.roll = ConformanceJson.f32(v, "VISION_POSITION_ESTIMATE.roll");
                     break;
                 case "pitch":
-                    m.pitch = Json.f32(v, "pitch");
+                    m.pitch = ConformanceJson.f32(v, "VISION_POSITION_ESTIMATE.pitch");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "VISION_POSITION_ESTIMATE.yaw");
                     break;
                 case "covariance":
-                    m.covariance = Json.f32s(v, 21, "covariance");
+                    m.covariance = ConformanceJson.f32s(v, 21, "VISION_POSITION_ESTIMATE.covariance");
                     break;
                 case "reset_counter":
-                    m.reset_counter = (int) Json.integer(v, 0, 255, "reset_counter");
+                    m.reset_counter = (int) ConformanceJson.integer(v, 0, 255, "VISION_POSITION_ESTIMATE.reset_counter");
                     break;
                 default:
                     throw new Refusal("VISION_POSITION_ESTIMATE has no field '" + e.getKey() + "'");
@@ -8323,22 +8327,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "usec":
-                    m.usec = Json.uint64(v, "usec");
+                    m.usec = ConformanceJson.uint64(v, "VISION_SPEED_ESTIMATE.usec");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "VISION_SPEED_ESTIMATE.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "VISION_SPEED_ESTIMATE.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "VISION_SPEED_ESTIMATE.z");
                     break;
                 case "covariance":
-                    m.covariance = Json.f32s(v, 9, "covariance");
+                    m.covariance = ConformanceJson.f32s(v, 9, "VISION_SPEED_ESTIMATE.covariance");
                     break;
                 case "reset_counter":
-                    m.reset_counter = (int) Json.integer(v, 0, 255, "reset_counter");
+                    m.reset_counter = (int) ConformanceJson.integer(v, 0, 255, "VISION_SPEED_ESTIMATE.reset_counter");
                     break;
                 default:
                     throw new Refusal("VISION_SPEED_ESTIMATE has no field '" + e.getKey() + "'");
@@ -8353,28 +8357,28 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "usec":
-                    m.usec = Json.uint64(v, "usec");
+                    m.usec = ConformanceJson.uint64(v, "VICON_POSITION_ESTIMATE.usec");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "VICON_POSITION_ESTIMATE.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "VICON_POSITION_ESTIMATE.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "VICON_POSITION_ESTIMATE.z");
                     break;
                 case "roll":
-                    m.roll = Json.f32(v, "roll");
+                    m.roll = ConformanceJson.f32(v, "VICON_POSITION_ESTIMATE.roll");
                     break;
                 case "pitch":
-                    m.pitch = Json.f32(v, "pitch");
+                    m.pitch = ConformanceJson.f32(v, "VICON_POSITION_ESTIMATE.pitch");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "VICON_POSITION_ESTIMATE.yaw");
                     break;
                 case "covariance":
-                    m.covariance = Json.f32s(v, 21, "covariance");
+                    m.covariance = ConformanceJson.f32s(v, 21, "VICON_POSITION_ESTIMATE.covariance");
                     break;
                 default:
                     throw new Refusal("VICON_POSITION_ESTIMATE has no field '" + e.getKey() + "'");
@@ -8389,52 +8393,52 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "HIGHRES_IMU.time_usec");
                     break;
                 case "xacc":
-                    m.xacc = Json.f32(v, "xacc");
+                    m.xacc = ConformanceJson.f32(v, "HIGHRES_IMU.xacc");
                     break;
                 case "yacc":
-                    m.yacc = Json.f32(v, "yacc");
+                    m.yacc = ConformanceJson.f32(v, "HIGHRES_IMU.yacc");
                     break;
                 case "zacc":
-                    m.zacc = Json.f32(v, "zacc");
+                    m.zacc = ConformanceJson.f32(v, "HIGHRES_IMU.zacc");
                     break;
                 case "xgyro":
-                    m.xgyro = Json.f32(v, "xgyro");
+                    m.xgyro = ConformanceJson.f32(v, "HIGHRES_IMU.xgyro");
                     break;
                 case "ygyro":
-                    m.ygyro = Json.f32(v, "ygyro");
+                    m.ygyro = ConformanceJson.f32(v, "HIGHRES_IMU.ygyro");
                     break;
                 case "zgyro":
-                    m.zgyro = Json.f32(v, "zgyro");
+                    m.zgyro = ConformanceJson.f32(v, "HIGHRES_IMU.zgyro");
                     break;
                 case "xmag":
-                    m.xmag = Json.f32(v, "xmag");
+                    m.xmag = ConformanceJson.f32(v, "HIGHRES_IMU.xmag");
                     break;
                 case "ymag":
-                    m.ymag = Json.f32(v, "ymag");
+                    m.ymag = ConformanceJson.f32(v, "HIGHRES_IMU.ymag");
                     break;
                 case "zmag":
-                    m.zmag = Json.f32(v, "zmag");
+                    m.zmag = ConformanceJson.f32(v, "HIGHRES_IMU.zmag");
                     break;
                 case "abs_pressure":
-                    m.abs_pressure = Json.f32(v, "abs_pressure");
+                    m.abs_pressure = ConformanceJson.f32(v, "HIGHRES_IMU.abs_pressure");
                     break;
                 case "diff_pressure":
-                    m.diff_pressure = Json.f32(v, "diff_pressure");
+                    m.diff_pressure = ConformanceJson.f32(v, "HIGHRES_IMU.diff_pressure");
                     break;
                 case "pressure_alt":
-                    m.pressure_alt = Json.f32(v, "pressure_alt");
+                    m.pressure_alt = ConformanceJson.f32(v, "HIGHRES_IMU.pressure_alt");
                     break;
                 case "temperature":
-                    m.temperature = Json.f32(v, "temperature");
+                    m.temperature = ConformanceJson.f32(v, "HIGHRES_IMU.temperature");
                     break;
                 case "fields_updated":
-                    m.fields_updated = (int) Json.integer(v, 0, 65535, "fields_updated");
+                    m.fields_updated = (int) ConformanceJson.integer(v, 0, 65535, "HIGHRES_IMU.fields_updated");
                     break;
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 255, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 255, "HIGHRES_IMU.id");
                     break;
                 default:
                     throw new Refusal("HIGHRES_IMU has no field '" + e.getKey() + "'");
@@ -8449,40 +8453,40 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "OPTICAL_FLOW_RAD.time_usec");
                     break;
                 case "sensor_id":
-                    m.sensor_id = (int) Json.integer(v, 0, 255, "sensor_id");
+                    m.sensor_id = (int) ConformanceJson.integer(v, 0, 255, "OPTICAL_FLOW_RAD.sensor_id");
                     break;
                 case "integration_time_us":
-                    m.integration_time_us = Json.integer(v, 0, 4294967295L, "integration_time_us");
+                    m.integration_time_us = ConformanceJson.integer(v, 0, 4294967295L, "OPTICAL_FLOW_RAD.integration_time_us");
                     break;
                 case "integrated_x":
-                    m.integrated_x = Json.f32(v, "integrated_x");
+                    m.integrated_x = ConformanceJson.f32(v, "OPTICAL_FLOW_RAD.integrated_x");
                     break;
                 case "integrated_y":
-                    m.integrated_y = Json.f32(v, "integrated_y");
+                    m.integrated_y = ConformanceJson.f32(v, "OPTICAL_FLOW_RAD.integrated_y");
                     break;
                 case "integrated_xgyro":
-                    m.integrated_xgyro = Json.f32(v, "integrated_xgyro");
+                    m.integrated_xgyro = ConformanceJson.f32(v, "OPTICAL_FLOW_RAD.integrated_xgyro");
                     break;
                 case "integrated_ygyro":
-                    m.integrated_ygyro = Json.f32(v, "integrated_ygyro");
+                    m.integrated_ygyro = ConformanceJson.f32(v, "OPTICAL_FLOW_RAD.integrated_ygyro");
                     break;
                 case "integrated_zgyro":
-                    m.integrated_zgyro = Json.f32(v, "integrated_zgyro");
+                    m.integrated_zgyro = ConformanceJson.f32(v, "OPTICAL_FLOW_RAD.integrated_zgyro");
                     break;
                 case "temperature":
-                    m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
+                    m.temperature = (short) ConformanceJson.integer(v, -32768, 32767, "OPTICAL_FLOW_RAD.temperature");
                     break;
                 case "quality":
-                    m.quality = (int) Json.integer(v, 0, 255, "quality");
+                    m.quality = (int) ConformanceJson.integer(v, 0, 255, "OPTICAL_FLOW_RAD.quality");
                     break;
                 case "time_delta_distance_us":
-                    m.time_delta_distance_us = Json.integer(v, 0, 4294967295L, "time_delta_distance_us");
+                    m.time_delta_distance_us = ConformanceJson.integer(v, 0, 4294967295L, "OPTICAL_FLOW_RAD.time_delta_distance_us");
                     break;
                 case "distance":
-                    m.distance = Json.f32(v, "distance");
+                    m.distance = ConformanceJson.f32(v, "OPTICAL_FLOW_RAD.distance");
                     break;
                 default:
                     throw new Refusal("OPTICAL_FLOW_RAD has no field '" + e.getKey() + "'");
@@ -8497,52 +8501,52 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "HIL_SENSOR.time_usec");
                     break;
                 case "xacc":
-                    m.xacc = Json.f32(v, "xacc");
+                    m.xacc = ConformanceJson.f32(v, "HIL_SENSOR.xacc");
                     break;
                 case "yacc":
-                    m.yacc = Json.f32(v, "yacc");
+                    m.yacc = ConformanceJson.f32(v, "HIL_SENSOR.yacc");
                     break;
                 case "zacc":
-                    m.zacc = Json.f32(v, "zacc");
+                    m.zacc = ConformanceJson.f32(v, "HIL_SENSOR.zacc");
                     break;
                 case "xgyro":
-                    m.xgyro = Json.f32(v, "xgyro");
+                    m.xgyro = ConformanceJson.f32(v, "HIL_SENSOR.xgyro");
                     break;
                 case "ygyro":
-                    m.ygyro = Json.f32(v, "ygyro");
+                    m.ygyro = ConformanceJson.f32(v, "HIL_SENSOR.ygyro");
                     break;
                 case "zgyro":
-                    m.zgyro = Json.f32(v, "zgyro");
+                    m.zgyro = ConformanceJson.f32(v, "HIL_SENSOR.zgyro");
                     break;
                 case "xmag":
-                    m.xmag = Json.f32(v, "xmag");
+                    m.xmag = ConformanceJson.f32(v, "HIL_SENSOR.xmag");
                     break;
                 case "ymag":
-                    m.ymag = Json.f32(v, "ymag");
+                    m.ymag = ConformanceJson.f32(v, "HIL_SENSOR.ymag");
                     break;
                 case "zmag":
-                    m.zmag = Json.f32(v, "zmag");
+                    m.zmag = ConformanceJson.f32(v, "HIL_SENSOR.zmag");
                     break;
                 case "abs_pressure":
-                    m.abs_pressure = Json.f32(v, "abs_pressure");
+                    m.abs_pressure = ConformanceJson.f32(v, "HIL_SENSOR.abs_pressure");
                     break;
                 case "diff_pressure":
-                    m.diff_pressure = Json.f32(v, "diff_pressure");
+                    m.diff_pressure = ConformanceJson.f32(v, "HIL_SENSOR.diff_pressure");
                     break;
                 case "pressure_alt":
-                    m.pressure_alt = Json.f32(v, "pressure_alt");
+                    m.pressure_alt = ConformanceJson.f32(v, "HIL_SENSOR.pressure_alt");
                     break;
                 case "temperature":
-                    m.temperature = Json.f32(v, "temperature");
+                    m.temperature = ConformanceJson.f32(v, "HIL_SENSOR.temperature");
                     break;
                 case "fields_updated":
-                    m.fields_updated = Json.integer(v, 0, 4294967295L, "fields_updated");
+                    m.fields_updated = ConformanceJson.integer(v, 0, 4294967295L, "HIL_SENSOR.fields_updated");
                     break;
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 255, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 255, "HIL_SENSOR.id");
                     break;
                 default:
                     throw new Refusal("HIL_SENSOR has no field '" + e.getKey() + "'");
@@ -8557,73 +8561,73 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "q1":
-                    m.q1 = Json.f32(v, "q1");
+                    m.q1 = ConformanceJson.f32(v, "SIM_STATE.q1");
                     break;
                 case "q2":
-                    m.q2 = Json.f32(v, "q2");
+                    m.q2 = ConformanceJson.f32(v, "SIM_STATE.q2");
                     break;
                 case "q3":
-                    m.q3 = Json.f32(v, "q3");
+                    m.q3 = ConformanceJson.f32(v, "SIM_STATE.q3");
                     break;
                 case "q4":
-                    m.q4 = Json.f32(v, "q4");
+                    m.q4 = ConformanceJson.f32(v, "SIM_STATE.q4");
                     break;
                 case "roll":
-                    m.roll = Json.f32(v, "roll");
+                    m.roll = ConformanceJson.f32(v, "SIM_STATE.roll");
                     break;
                 case "pitch":
-                    m.pitch = Json.f32(v, "pitch");
+                    m.pitch = ConformanceJson.f32(v, "SIM_STATE.pitch");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "SIM_STATE.yaw");
                     break;
                 case "xacc":
-                    m.xacc = Json.f32(v, "xacc");
+                    m.xacc = ConformanceJson.f32(v, "SIM_STATE.xacc");
                     break;
                 case "yacc":
-                    m.yacc = Json.f32(v, "yacc");
+                    m.yacc = ConformanceJson.f32(v, "SIM_STATE.yacc");
                     break;
                 case "zacc":
-                    m.zacc = Json.f32(v, "zacc");
+                    m.zacc = ConformanceJson.f32(v, "SIM_STATE.zacc");
                     break;
                 case "xgyro":
-                    m.xgyro = Json.f32(v, "xgyro");
+                    m.xgyro = ConformanceJson.f32(v, "SIM_STATE.xgyro");
                     break;
                 case "ygyro":
-                    m.ygyro = Json.f32(v, "ygyro");
+                    m.ygyro = ConformanceJson.f32(v, "SIM_STATE.ygyro");
                     break;
                 case "zgyro":
-                    m.zgyro = Json.f32(v, "zgyro");
+                    m.zgyro = ConformanceJson.f32(v, "SIM_STATE.zgyro");
                     break;
                 case "lat":
-                    m.lat = Json.f32(v, "lat");
+                    m.lat = ConformanceJson.f32(v, "SIM_STATE.lat");
                     break;
                 case "lon":
-                    m.lon = Json.f32(v, "lon");
+                    m.lon = ConformanceJson.f32(v, "SIM_STATE.lon");
                     break;
                 case "alt":
-                    m.alt = Json.f32(v, "alt");
+                    m.alt = ConformanceJson.f32(v, "SIM_STATE.alt");
                     break;
                 case "std_dev_horz":
-                    m.std_dev_horz = Json.f32(v, "std_dev_horz");
+                    m.std_dev_horz = ConformanceJson.f32(v, "SIM_STATE.std_dev_horz");
                     break;
                 case "std_dev_vert":
-                    m.std_dev_vert = Json.f32(v, "std_dev_vert");
+                    m.std_dev_vert = ConformanceJson.f32(v, "SIM_STATE.std_dev_vert");
                     break;
                 case "vn":
-                    m.vn = Json.f32(v, "vn");
+                    m.vn = ConformanceJson.f32(v, "SIM_STATE.vn");
                     break;
                 case "ve":
-                    m.ve = Json.f32(v, "ve");
+                    m.ve = ConformanceJson.f32(v, "SIM_STATE.ve");
                     break;
                 case "vd":
-                    m.vd = Json.f32(v, "vd");
+                    m.vd = ConformanceJson.f32(v, "SIM_STATE.vd");
                     break;
                 case "lat_int":
-                    m.lat_int = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat_int");
+                    m.lat_int = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "SIM_STATE.lat_int");
                     break;
                 case "lon_int":
-                    m.lon_int = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon_int");
+                    m.lon_int = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "SIM_STATE.lon_int");
                     break;
                 default:
                     throw new Refusal("SIM_STATE has no field '" + e.getKey() + "'");
@@ -8638,25 +8642,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "rssi":
-                    m.rssi = (int) Json.integer(v, 0, 255, "rssi");
+                    m.rssi = (int) ConformanceJson.integer(v, 0, 255, "RADIO_STATUS.rssi");
                     break;
                 case "remrssi":
-                    m.remrssi = (int) Json.integer(v, 0, 255, "remrssi");
+                    m.remrssi = (int) ConformanceJson.integer(v, 0, 255, "RADIO_STATUS.remrssi");
                     break;
                 case "txbuf":
-                    m.txbuf = (int) Json.integer(v, 0, 255, "txbuf");
+                    m.txbuf = (int) ConformanceJson.integer(v, 0, 255, "RADIO_STATUS.txbuf");
                     break;
                 case "noise":
-                    m.noise = (int) Json.integer(v, 0, 255, "noise");
+                    m.noise = (int) ConformanceJson.integer(v, 0, 255, "RADIO_STATUS.noise");
                     break;
                 case "remnoise":
-                    m.remnoise = (int) Json.integer(v, 0, 255, "remnoise");
+                    m.remnoise = (int) ConformanceJson.integer(v, 0, 255, "RADIO_STATUS.remnoise");
                     break;
                 case "rxerrors":
-                    m.rxerrors = (int) Json.integer(v, 0, 65535, "rxerrors");
+                    m.rxerrors = (int) ConformanceJson.integer(v, 0, 65535, "RADIO_STATUS.rxerrors");
                     break;
                 case "fixed":
-                    m.fixed = (int) Json.integer(v, 0, 65535, "fixed");
+                    m.fixed = (int) ConformanceJson.integer(v, 0, 65535, "RADIO_STATUS.fixed");
                     break;
                 default:
                     throw new Refusal("RADIO_STATUS has no field '" + e.getKey() + "'");
@@ -8671,16 +8675,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_network":
-                    m.target_network = (int) Json.integer(v, 0, 255, "target_network");
+                    m.target_network = (int) ConformanceJson.integer(v, 0, 255, "FILE_TRANSFER_PROTOCOL.target_network");
                     break;
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "FILE_TRANSFER_PROTOCOL.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "FILE_TRANSFER_PROTOCOL.target_component");
                     break;
                 case "payload":
-                    m.payload = Json.u8s(v, 251, "payload");
+                    m.payload = ConformanceJson.u8s(v, 251, "FILE_TRANSFER_PROTOCOL.payload");
                     break;
                 default:
                     throw new Refusal("FILE_TRANSFER_PROTOCOL has no field '" + e.getKey() + "'");
@@ -8695,10 +8699,10 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "tc1":
-                    m.tc1 = Json.integer(v, Long.MIN_VALUE, Long.MAX_VALUE, "tc1");
+                    m.tc1 = ConformanceJson.integer(v, Long.MIN_VALUE, Long.MAX_VALUE, "TIMESYNC.tc1");
                     break;
                 case "ts1":
-                    m.ts1 = Json.integer(v, Long.MIN_VALUE, Long.MAX_VALUE, "ts1");
+                    m.ts1 = ConformanceJson.integer(v, Long.MIN_VALUE, Long.MAX_VALUE, "TIMESYNC.ts1");
                     break;
                 default:
                     throw new Refusal("TIMESYNC has no field '" + e.getKey() + "'");
@@ -8713,10 +8717,10 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "CAMERA_TRIGGER.time_usec");
                     break;
                 case "seq":
-                    m.seq = Json.integer(v, 0, 4294967295L, "seq");
+                    m.seq = ConformanceJson.integer(v, 0, 4294967295L, "CAMERA_TRIGGER.seq");
                     break;
                 default:
                     throw new Refusal("CAMERA_TRIGGER has no field '" + e.getKey() + "'");
@@ -8731,49 +8735,49 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "HIL_GPS.time_usec");
                     break;
                 case "fix_type":
-                    m.fix_type = (int) Json.integer(v, 0, 255, "fix_type");
+                    m.fix_type = (int) ConformanceJson.integer(v, 0, 255, "HIL_GPS.fix_type");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HIL_GPS.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HIL_GPS.lon");
                     break;
                 case "alt":
-                    m.alt = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "alt");
+                    m.alt = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HIL_GPS.alt");
                     break;
                 case "eph":
-                    m.eph = (int) Json.integer(v, 0, 65535, "eph");
+                    m.eph = (int) ConformanceJson.integer(v, 0, 65535, "HIL_GPS.eph");
                     break;
                 case "epv":
-                    m.epv = (int) Json.integer(v, 0, 65535, "epv");
+                    m.epv = (int) ConformanceJson.integer(v, 0, 65535, "HIL_GPS.epv");
                     break;
                 case "vel":
-                    m.vel = (int) Json.integer(v, 0, 65535, "vel");
+                    m.vel = (int) ConformanceJson.integer(v, 0, 65535, "HIL_GPS.vel");
                     break;
                 case "vn":
-                    m.vn = (short) Json.integer(v, -32768, 32767, "vn");
+                    m.vn = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_GPS.vn");
                     break;
                 case "ve":
-                    m.ve = (short) Json.integer(v, -32768, 32767, "ve");
+                    m.ve = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_GPS.ve");
                     break;
                 case "vd":
-                    m.vd = (short) Json.integer(v, -32768, 32767, "vd");
+                    m.vd = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_GPS.vd");
                     break;
                 case "cog":
-                    m.cog = (int) Json.integer(v, 0, 65535, "cog");
+                    m.cog = (int) ConformanceJson.integer(v, 0, 65535, "HIL_GPS.cog");
                     break;
                 case "satellites_visible":
-                    m.satellites_visible = (int) Json.integer(v, 0, 255, "satellites_visible");
+                    m.satellites_visible = (int) ConformanceJson.integer(v, 0, 255, "HIL_GPS.satellites_visible");
                     break;
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 255, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 255, "HIL_GPS.id");
                     break;
                 case "yaw":
-                    m.yaw = (int) Json.integer(v, 0, 65535, "yaw");
+                    m.yaw = (int) ConformanceJson.integer(v, 0, 65535, "HIL_GPS.yaw");
                     break;
                 default:
                     throw new Refusal("HIL_GPS has no field '" + e.getKey() + "'");
@@ -8788,40 +8792,40 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "HIL_OPTICAL_FLOW.time_usec");
                     break;
                 case "sensor_id":
-                    m.sensor_id = (int) Json.integer(v, 0, 255, "sensor_id");
+                    m.sensor_id = (int) ConformanceJson.integer(v, 0, 255, "HIL_OPTICAL_FLOW.sensor_id");
                     break;
                 case "integration_time_us":
-                    m.integration_time_us = Json.integer(v, 0, 4294967295L, "integration_time_us");
+                    m.integration_time_us = ConformanceJson.integer(v, 0, 4294967295L, "HIL_OPTICAL_FLOW.integration_time_us");
                     break;
                 case "integrated_x":
-                    m.integrated_x = Json.f32(v, "integrated_x");
+                    m.integrated_x = ConformanceJson.f32(v, "HIL_OPTICAL_FLOW.integrated_x");
                     break;
                 case "integrated_y":
-                    m.integrated_y = Json.f32(v, "integrated_y");
+                    m.integrated_y = ConformanceJson.f32(v, "HIL_OPTICAL_FLOW.integrated_y");
                     break;
                 case "integrated_xgyro":
-                    m.integrated_xgyro = Json.f32(v, "integrated_xgyro");
+                    m.integrated_xgyro = ConformanceJson.f32(v, "HIL_OPTICAL_FLOW.integrated_xgyro");
                     break;
                 case "integrated_ygyro":
-                    m.integrated_ygyro = Json.f32(v, "integrated_ygyro");
+                    m.integrated_ygyro = ConformanceJson.f32(v, "HIL_OPTICAL_FLOW.integrated_ygyro");
                     break;
                 case "integrated_zgyro":
-                    m.integrated_zgyro = Json.f32(v, "integrated_zgyro");
+                    m.integrated_zgyro = ConformanceJson.f32(v, "HIL_OPTICAL_FLOW.integrated_zgyro");
                     break;
                 case "temperature":
-                    m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
+                    m.temperature = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_OPTICAL_FLOW.temperature");
                     break;
                 case "quality":
-                    m.quality = (int) Json.integer(v, 0, 255, "quality");
+                    m.quality = (int) ConformanceJson.integer(v, 0, 255, "HIL_OPTICAL_FLOW.quality");
                     break;
                 case "time_delta_distance_us":
-                    m.time_delta_distance_us = Json.integer(v, 0, 4294967295L, "time_delta_distance_us");
+                    m.time_delta_distance_us = ConformanceJson.integer(v, 0, 4294967295L, "HIL_OPTICAL_FLOW.time_delta_distance_us");
                     break;
                 case "distance":
-                    m.distance = Json.f32(v, "distance");
+                    m.distance = ConformanceJson.f32(v, "HIL_OPTICAL_FLOW.distance");
                     break;
                 default:
                     throw new Refusal("HIL_OPTICAL_FLOW has no field '" + e.getKey() + "'");
@@ -8836,52 +8840,52 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "HIL_STATE_QUATERNION.time_usec");
                     break;
                 case "attitude_quaternion":
-                    m.attitude_quaternion = Json.f32s(v, 4, "attitude_quaternion");
+                    m.attitude_quaternion = ConformanceJson.f32s(v, 4, "HIL_STATE_QUATERNION.attitude_quaternion");
                     break;
                 case "rollspeed":
-                    m.rollspeed = Json.f32(v, "rollspeed");
+                    m.rollspeed = ConformanceJson.f32(v, "HIL_STATE_QUATERNION.rollspeed");
                     break;
                 case "pitchspeed":
-                    m.pitchspeed = Json.f32(v, "pitchspeed");
+                    m.pitchspeed = ConformanceJson.f32(v, "HIL_STATE_QUATERNION.pitchspeed");
                     break;
                 case "yawspeed":
-                    m.yawspeed = Json.f32(v, "yawspeed");
+                    m.yawspeed = ConformanceJson.f32(v, "HIL_STATE_QUATERNION.yawspeed");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HIL_STATE_QUATERNION.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HIL_STATE_QUATERNION.lon");
                     break;
                 case "alt":
-                    m.alt = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "alt");
+                    m.alt = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HIL_STATE_QUATERNION.alt");
                     break;
                 case "vx":
-                    m.vx = (short) Json.integer(v, -32768, 32767, "vx");
+                    m.vx = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_STATE_QUATERNION.vx");
                     break;
                 case "vy":
-                    m.vy = (short) Json.integer(v, -32768, 32767, "vy");
+                    m.vy = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_STATE_QUATERNION.vy");
                     break;
                 case "vz":
-                    m.vz = (short) Json.integer(v, -32768, 32767, "vz");
+                    m.vz = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_STATE_QUATERNION.vz");
                     break;
                 case "ind_airspeed":
-                    m.ind_airspeed = (int) Json.integer(v, 0, 65535, "ind_airspeed");
+                    m.ind_airspeed = (int) ConformanceJson.integer(v, 0, 65535, "HIL_STATE_QUATERNION.ind_airspeed");
                     break;
                 case "true_airspeed":
-                    m.true_airspeed = (int) Json.integer(v, 0, 65535, "true_airspeed");
+                    m.true_airspeed = (int) ConformanceJson.integer(v, 0, 65535, "HIL_STATE_QUATERNION.true_airspeed");
                     break;
                 case "xacc":
-                    m.xacc = (short) Json.integer(v, -32768, 32767, "xacc");
+                    m.xacc = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_STATE_QUATERNION.xacc");
                     break;
                 case "yacc":
-                    m.yacc = (short) Json.integer(v, -32768, 32767, "yacc");
+                    m.yacc = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_STATE_QUATERNION.yacc");
                     break;
                 case "zacc":
-                    m.zacc = (short) Json.integer(v, -32768, 32767, "zacc");
+                    m.zacc = (short) ConformanceJson.integer(v, -32768, 32767, "HIL_STATE_QUATERNION.zacc");
                     break;
                 default:
                     throw new Refusal("HIL_STATE_QUATERNION has no field '" + e.getKey() + "'");
@@ -8896,37 +8900,37 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "SCALED_IMU2.time_boot_ms");
                     break;
                 case "xacc":
-                    m.xacc = (short) Json.integer(v, -32768, 32767, "xacc");
+                    m.xacc = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU2.xacc");
                     break;
                 case "yacc":
-                    m.yacc = (short) Json.integer(v, -32768, 32767, "yacc");
+                    m.yacc = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU2.yacc");
                     break;
                 case "zacc":
-                    m.zacc = (short) Json.integer(v, -32768, 32767, "zacc");
+                    m.zacc = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU2.zacc");
                     break;
                 case "xgyro":
-                    m.xgyro = (short) Json.integer(v, -32768, 32767, "xgyro");
+                    m.xgyro = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU2.xgyro");
                     break;
                 case "ygyro":
-                    m.ygyro = (short) Json.integer(v, -32768, 32767, "ygyro");
+                    m.ygyro = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU2.ygyro");
                     break;
                 case "zgyro":
-                    m.zgyro = (short) Json.integer(v, -32768, 32767, "zgyro");
+                    m.zgyro = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU2.zgyro");
                     break;
                 case "xmag":
-                    m.xmag = (short) Json.integer(v, -32768, 32767, "xmag");
+                    m.xmag = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU2.xmag");
                     break;
                 case "ymag":
-                    m.ymag = (short) Json.integer(v, -32768, 32767, "ymag");
+                    m.ymag = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU2.ymag");
                     break;
                 case "zmag":
-                    m.zmag = (short) Json.integer(v, -32768, 32767, "zmag");
+                    m.zmag = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU2.zmag");
                     break;
                 case "temperature":
-                    m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
+                    m.temperature = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU2.temperature");
                     break;
                 default:
                     throw new Refusal("SCALED_IMU2 has no field '" + e.getKey() + "'");
@@ -8941,16 +8945,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "LOG_REQUEST_LIST.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "LOG_REQUEST_LIST.target_component");
                     break;
                 case "start":
-                    m.start = (int) Json.integer(v, 0, 65535, "start");
+                    m.start = (int) ConformanceJson.integer(v, 0, 65535, "LOG_REQUEST_LIST.start");
                     break;
                 case "end":
-                    m.end = (int) Json.integer(v, 0, 65535, "end");
+                    m.end = (int) ConformanceJson.integer(v, 0, 65535, "LOG_REQUEST_LIST.end");
                     break;
                 default:
                     throw new Refusal("LOG_REQUEST_LIST has no field '" + e.getKey() + "'");
@@ -8965,19 +8969,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 65535, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 65535, "LOG_ENTRY.id");
                     break;
                 case "num_logs":
-                    m.num_logs = (int) Json.integer(v, 0, 65535, "num_logs");
+                    m.num_logs = (int) ConformanceJson.integer(v, 0, 65535, "LOG_ENTRY.num_logs");
                     break;
                 case "last_log_num":
-                    m.last_log_num = (int) Json.integer(v, 0, 65535, "last_log_num");
+                    m.last_log_num = (int) ConformanceJson.integer(v, 0, 65535, "LOG_ENTRY.last_log_num");
                     break;
                 case "time_utc":
-                    m.time_utc = Json.integer(v, 0, 4294967295L, "time_utc");
+                    m.time_utc = ConformanceJson.integer(v, 0, 4294967295L, "LOG_ENTRY.time_utc");
                     break;
                 case "size":
-                    m.size = Json.integer(v, 0, 4294967295L, "size");
+                    m.size = ConformanceJson.integer(v, 0, 4294967295L, "LOG_ENTRY.size");
                     break;
                 default:
                     throw new Refusal("LOG_ENTRY has no field '" + e.getKey() + "'");
@@ -8992,19 +8996,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "LOG_REQUEST_DATA.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "LOG_REQUEST_DATA.target_component");
                     break;
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 65535, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 65535, "LOG_REQUEST_DATA.id");
                     break;
                 case "ofs":
-                    m.ofs = Json.integer(v, 0, 4294967295L, "ofs");
+                    m.ofs = ConformanceJson.integer(v, 0, 4294967295L, "LOG_REQUEST_DATA.ofs");
                     break;
                 case "count":
-                    m.count = Json.integer(v, 0, 4294967295L, "count");
+                    m.count = ConformanceJson.integer(v, 0, 4294967295L, "LOG_REQUEST_DATA.count");
                     break;
                 default:
                     throw new Refusal("LOG_REQUEST_DATA has no field '" + e.getKey() + "'");
@@ -9019,16 +9023,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 65535, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 65535, "LOG_DATA.id");
                     break;
                 case "ofs":
-                    m.ofs = Json.integer(v, 0, 4294967295L, "ofs");
+                    m.ofs = ConformanceJson.integer(v, 0, 4294967295L, "LOG_DATA.ofs");
                     break;
                 case "count":
-                    m.count = (int) Json.integer(v, 0, 255, "count");
+                    m.count = (int) ConformanceJson.integer(v, 0, 255, "LOG_DATA.count");
                     break;
                 case "data":
-                    m.data = Json.u8s(v, 90, "data");
+                    m.data = ConformanceJson.u8s(v, 90, "LOG_DATA.data");
                     break;
                 default:
                     throw new Refusal("LOG_DATA has no field '" + e.getKey() + "'");
@@ -9043,10 +9047,10 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "LOG_ERASE.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "LOG_ERASE.target_component");
                     break;
                 default:
                     throw new Refusal("LOG_ERASE has no field '" + e.getKey() + "'");
@@ -9061,10 +9065,10 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "LOG_REQUEST_END.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "LOG_REQUEST_END.target_component");
                     break;
                 default:
                     throw new Refusal("LOG_REQUEST_END has no field '" + e.getKey() + "'");
@@ -9079,16 +9083,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "GPS_INJECT_DATA.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "GPS_INJECT_DATA.target_component");
                     break;
                 case "len":
-                    m.len = (int) Json.integer(v, 0, 255, "len");
+                    m.len = (int) ConformanceJson.integer(v, 0, 255, "GPS_INJECT_DATA.len");
                     break;
                 case "data":
-                    m.data = Json.u8s(v, 110, "data");
+                    m.data = ConformanceJson.u8s(v, 110, "GPS_INJECT_DATA.data");
                     break;
                 default:
                     throw new Refusal("GPS_INJECT_DATA has no field '" + e.getKey() + "'");
@@ -9103,58 +9107,58 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "GPS2_RAW.time_usec");
                     break;
                 case "fix_type":
-                    m.fix_type = (int) Json.integer(v, 0, 255, "fix_type");
+                    m.fix_type = (int) ConformanceJson.integer(v, 0, 255, "GPS2_RAW.fix_type");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS2_RAW.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS2_RAW.lon");
                     break;
                 case "alt":
-                    m.alt = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "alt");
+                    m.alt = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS2_RAW.alt");
                     break;
                 case "eph":
-                    m.eph = (int) Json.integer(v, 0, 65535, "eph");
+                    m.eph = (int) ConformanceJson.integer(v, 0, 65535, "GPS2_RAW.eph");
                     break;
                 case "epv":
-                    m.epv = (int) Json.integer(v, 0, 65535, "epv");
+                    m.epv = (int) ConformanceJson.integer(v, 0, 65535, "GPS2_RAW.epv");
                     break;
                 case "vel":
-                    m.vel = (int) Json.integer(v, 0, 65535, "vel");
+                    m.vel = (int) ConformanceJson.integer(v, 0, 65535, "GPS2_RAW.vel");
                     break;
                 case "cog":
-                    m.cog = (int) Json.integer(v, 0, 65535, "cog");
+                    m.cog = (int) ConformanceJson.integer(v, 0, 65535, "GPS2_RAW.cog");
                     break;
                 case "satellites_visible":
-                    m.satellites_visible = (int) Json.integer(v, 0, 255, "satellites_visible");
+                    m.satellites_visible = (int) ConformanceJson.integer(v, 0, 255, "GPS2_RAW.satellites_visible");
                     break;
                 case "dgps_numch":
-                    m.dgps_numch = (int) Json.integer(v, 0, 255, "dgps_numch");
+                    m.dgps_numch = (int) ConformanceJson.integer(v, 0, 255, "GPS2_RAW.dgps_numch");
                     break;
                 case "dgps_age":
-                    m.dgps_age = Json.integer(v, 0, 4294967295L, "dgps_age");
+                    m.dgps_age = ConformanceJson.integer(v, 0, 4294967295L, "GPS2_RAW.dgps_age");
                     break;
                 case "yaw":
-                    m.yaw = (int) Json.integer(v, 0, 65535, "yaw");
+                    m.yaw = (int) ConformanceJson.integer(v, 0, 65535, "GPS2_RAW.yaw");
                     break;
                 case "alt_ellipsoid":
-                    m.alt_ellipsoid = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "alt_ellipsoid");
+                    m.alt_ellipsoid = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS2_RAW.alt_ellipsoid");
                     break;
                 case "h_acc":
-                    m.h_acc = Json.integer(v, 0, 4294967295L, "h_acc");
+                    m.h_acc = ConformanceJson.integer(v, 0, 4294967295L, "GPS2_RAW.h_acc");
                     break;
                 case "v_acc":
-                    m.v_acc = Json.integer(v, 0, 4294967295L, "v_acc");
+                    m.v_acc = ConformanceJson.integer(v, 0, 4294967295L, "GPS2_RAW.v_acc");
                     break;
                 case "vel_acc":
-                    m.vel_acc = Json.integer(v, 0, 4294967295L, "vel_acc");
+                    m.vel_acc = ConformanceJson.integer(v, 0, 4294967295L, "GPS2_RAW.vel_acc");
                     break;
                 case "hdg_acc":
-                    m.hdg_acc = Json.integer(v, 0, 4294967295L, "hdg_acc");
+                    m.hdg_acc = ConformanceJson.integer(v, 0, 4294967295L, "GPS2_RAW.hdg_acc");
                     break;
                 default:
                     throw new Refusal("GPS2_RAW has no field '" + e.getKey() + "'");
@@ -9169,13 +9173,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "Vcc":
-                    m.Vcc = (int) Json.integer(v, 0, 65535, "Vcc");
+                    m.Vcc = (int) ConformanceJson.integer(v, 0, 65535, "POWER_STATUS.Vcc");
                     break;
                 case "Vservo":
-                    m.Vservo = (int) Json.integer(v, 0, 65535, "Vservo");
+                    m.Vservo = (int) ConformanceJson.integer(v, 0, 65535, "POWER_STATUS.Vservo");
                     break;
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 65535, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 65535, "POWER_STATUS.flags");
                     break;
                 default:
                     throw new Refusal("POWER_STATUS has no field '" + e.getKey() + "'");
@@ -9190,22 +9194,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "device":
-                    m.device = (int) Json.integer(v, 0, 255, "device");
+                    m.device = (int) ConformanceJson.integer(v, 0, 255, "SERIAL_CONTROL.device");
                     break;
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 255, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 255, "SERIAL_CONTROL.flags");
                     break;
                 case "timeout":
-                    m.timeout = (int) Json.integer(v, 0, 65535, "timeout");
+                    m.timeout = (int) ConformanceJson.integer(v, 0, 65535, "SERIAL_CONTROL.timeout");
                     break;
                 case "baudrate":
-                    m.baudrate = Json.integer(v, 0, 4294967295L, "baudrate");
+                    m.baudrate = ConformanceJson.integer(v, 0, 4294967295L, "SERIAL_CONTROL.baudrate");
                     break;
                 case "count":
-                    m.count = (int) Json.integer(v, 0, 255, "count");
+                    m.count = (int) ConformanceJson.integer(v, 0, 255, "SERIAL_CONTROL.count");
                     break;
                 case "data":
-                    m.data = Json.u8s(v, 70, "data");
+                    m.data = ConformanceJson.u8s(v, 70, "SERIAL_CONTROL.data");
                     break;
                 default:
                     throw new Refusal("SERIAL_CONTROL has no field '" + e.getKey() + "'");
@@ -9220,43 +9224,43 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_last_baseline_ms":
-                    m.time_last_baseline_ms = Json.integer(v, 0, 4294967295L, "time_last_baseline_ms");
+                    m.time_last_baseline_ms = ConformanceJson.integer(v, 0, 4294967295L, "GPS_RTK.time_last_baseline_ms");
                     break;
                 case "rtk_receiver_id":
-                    m.rtk_receiver_id = (int) Json.integer(v, 0, 255, "rtk_receiver_id");
+                    m.rtk_receiver_id = (int) ConformanceJson.integer(v, 0, 255, "GPS_RTK.rtk_receiver_id");
                     break;
                 case "wn":
-                    m.wn = (int) Json.integer(v, 0, 65535, "wn");
+                    m.wn = (int) ConformanceJson.integer(v, 0, 65535, "GPS_RTK.wn");
                     break;
                 case "tow":
-                    m.tow = Json.integer(v, 0, 4294967295L, "tow");
+                    m.tow = ConformanceJson.integer(v, 0, 4294967295L, "GPS_RTK.tow");
                     break;
                 case "rtk_health":
-                    m.rtk_health = (int) Json.integer(v, 0, 255, "rtk_health");
+                    m.rtk_health = (int) ConformanceJson.integer(v, 0, 255, "GPS_RTK.rtk_health");
                     break;
                 case "rtk_rate":
-                    m.rtk_rate = (int) Json.integer(v, 0, 255, "rtk_rate");
+                    m.rtk_rate = (int) ConformanceJson.integer(v, 0, 255, "GPS_RTK.rtk_rate");
                     break;
                 case "nsats":
-                    m.nsats = (int) Json.integer(v, 0, 255, "nsats");
+                    m.nsats = (int) ConformanceJson.integer(v, 0, 255, "GPS_RTK.nsats");
                     break;
                 case "baseline_coords_type":
-                    m.baseline_coords_type = (int) Json.integer(v, 0, 255, "baseline_coords_type");
+                    m.baseline_coords_type = (int) ConformanceJson.integer(v, 0, 255, "GPS_RTK.baseline_coords_type");
                     break;
                 case "baseline_a_mm":
-                    m.baseline_a_mm = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "baseline_a_mm");
+                    m.baseline_a_mm = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS_RTK.baseline_a_mm");
                     break;
                 case "baseline_b_mm":
-                    m.baseline_b_mm = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "baseline_b_mm");
+                    m.baseline_b_mm = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS_RTK.baseline_b_mm");
                     break;
                 case "baseline_c_mm":
-                    m.baseline_c_mm = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "baseline_c_mm");
+                    m.baseline_c_mm = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS_RTK.baseline_c_mm");
                     break;
                 case "accuracy":
-                    m.accuracy = Json.integer(v, 0, 4294967295L, "accuracy");
+                    m.accuracy = ConformanceJson.integer(v, 0, 4294967295L, "GPS_RTK.accuracy");
                     break;
                 case "iar_num_hypotheses":
-                    m.iar_num_hypotheses = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "iar_num_hypotheses");
+                    m.iar_num_hypotheses = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS_RTK.iar_num_hypotheses");
                     break;
                 default:
                     throw new Refusal("GPS_RTK has no field '" + e.getKey() + "'");
@@ -9271,43 +9275,43 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_last_baseline_ms":
-                    m.time_last_baseline_ms = Json.integer(v, 0, 4294967295L, "time_last_baseline_ms");
+                    m.time_last_baseline_ms = ConformanceJson.integer(v, 0, 4294967295L, "GPS2_RTK.time_last_baseline_ms");
                     break;
                 case "rtk_receiver_id":
-                    m.rtk_receiver_id = (int) Json.integer(v, 0, 255, "rtk_receiver_id");
+                    m.rtk_receiver_id = (int) ConformanceJson.integer(v, 0, 255, "GPS2_RTK.rtk_receiver_id");
                     break;
                 case "wn":
-                    m.wn = (int) Json.integer(v, 0, 65535, "wn");
+                    m.wn = (int) ConformanceJson.integer(v, 0, 65535, "GPS2_RTK.wn");
                     break;
                 case "tow":
-                    m.tow = Json.integer(v, 0, 4294967295L, "tow");
+                    m.tow = ConformanceJson.integer(v, 0, 4294967295L, "GPS2_RTK.tow");
                     break;
                 case "rtk_health":
-                    m.rtk_health = (int) Json.integer(v, 0, 255, "rtk_health");
+                    m.rtk_health = (int) ConformanceJson.integer(v, 0, 255, "GPS2_RTK.rtk_health");
                     break;
                 case "rtk_rate":
-                    m.rtk_rate = (int) Json.integer(v, 0, 255, "rtk_rate");
+                    m.rtk_rate = (int) ConformanceJson.integer(v, 0, 255, "GPS2_RTK.rtk_rate");
                     break;
                 case "nsats":
-                    m.nsats = (int) Json.integer(v, 0, 255, "nsats");
+                    m.nsats = (int) ConformanceJson.integer(v, 0, 255, "GPS2_RTK.nsats");
                     break;
                 case "baseline_coords_type":
-                    m.baseline_coords_type = (int) Json.integer(v, 0, 255, "baseline_coords_type");
+                    m.baseline_coords_type = (int) ConformanceJson.integer(v, 0, 255, "GPS2_RTK.baseline_coords_type");
                     break;
                 case "baseline_a_mm":
-                    m.baseline_a_mm = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "baseline_a_mm");
+                    m.baseline_a_mm = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS2_RTK.baseline_a_mm");
                     break;
                 case "baseline_b_mm":
-                    m.baseline_b_mm = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "baseline_b_mm");
+                    m.baseline_b_mm = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS2_RTK.baseline_b_mm");
                     break;
                 case "baseline_c_mm":
-                    m.baseline_c_mm = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "baseline_c_mm");
+                    m.baseline_c_mm = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS2_RTK.baseline_c_mm");
                     break;
                 case "accuracy":
-                    m.accuracy = Json.integer(v, 0, 4294967295L, "accuracy");
+                    m.accuracy = ConformanceJson.integer(v, 0, 4294967295L, "GPS2_RTK.accuracy");
                     break;
                 case "iar_num_hypotheses":
-                    m.iar_num_hypotheses = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "iar_num_hypotheses");
+                    m.iar_num_hypotheses = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS2_RTK.iar_num_hypotheses");
                     break;
                 default:
                     throw new Refusal("GPS2_RTK has no field '" + e.getKey() + "'");
@@ -9322,37 +9326,37 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "SCALED_IMU3.time_boot_ms");
                     break;
                 case "xacc":
-                    m.xacc = (short) Json.integer(v, -32768, 32767, "xacc");
+                    m.xacc = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU3.xacc");
                     break;
                 case "yacc":
-                    m.yacc = (short) Json.integer(v, -32768, 32767, "yacc");
+                    m.yacc = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU3.yacc");
                     break;
                 case "zacc":
-                    m.zacc = (short) Json.integer(v, -32768, 32767, "zacc");
+                    m.zacc = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU3.zacc");
                     break;
                 case "xgyro":
-                    m.xgyro = (short) Json.integer(v, -32768, 32767, "xgyro");
+                    m.xgyro = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU3.xgyro");
                     break;
                 case "ygyro":
-                    m.ygyro = (short) Json.integer(v, -32768, 32767, "ygyro");
+                    m.ygyro = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU3.ygyro");
                     break;
                 case "zgyro":
-                    m.zgyro = (short) Json.integer(v, -32768, 32767, "zgyro");
+                    m.zgyro = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU3.zgyro");
                     break;
                 case "xmag":
-                    m.xmag = (short) Json.integer(v, -32768, 32767, "xmag");
+                    m.xmag = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU3.xmag");
                     break;
                 case "ymag":
-                    m.ymag = (short) Json.integer(v, -32768, 32767, "ymag");
+                    m.ymag = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU3.ymag");
                     break;
                 case "zmag":
-                    m.zmag = (short) Json.integer(v, -32768, 32767, "zmag");
+                    m.zmag = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU3.zmag");
                     break;
                 case "temperature":
-                    m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
+                    m.temperature = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_IMU3.temperature");
                     break;
                 default:
                     throw new Refusal("SCALED_IMU3 has no field '" + e.getKey() + "'");
@@ -9367,25 +9371,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "type":
-                    m.type = (int) Json.integer(v, 0, 255, "type");
+                    m.type = (int) ConformanceJson.integer(v, 0, 255, "DATA_TRANSMISSION_HANDSHAKE.type");
                     break;
                 case "size":
-                    m.size = Json.integer(v, 0, 4294967295L, "size");
+                    m.size = ConformanceJson.integer(v, 0, 4294967295L, "DATA_TRANSMISSION_HANDSHAKE.size");
                     break;
                 case "width":
-                    m.width = (int) Json.integer(v, 0, 65535, "width");
+                    m.width = (int) ConformanceJson.integer(v, 0, 65535, "DATA_TRANSMISSION_HANDSHAKE.width");
                     break;
                 case "height":
-                    m.height = (int) Json.integer(v, 0, 65535, "height");
+                    m.height = (int) ConformanceJson.integer(v, 0, 65535, "DATA_TRANSMISSION_HANDSHAKE.height");
                     break;
                 case "packets":
-                    m.packets = (int) Json.integer(v, 0, 65535, "packets");
+                    m.packets = (int) ConformanceJson.integer(v, 0, 65535, "DATA_TRANSMISSION_HANDSHAKE.packets");
                     break;
                 case "payload":
-                    m.payload = (int) Json.integer(v, 0, 255, "payload");
+                    m.payload = (int) ConformanceJson.integer(v, 0, 255, "DATA_TRANSMISSION_HANDSHAKE.payload");
                     break;
                 case "jpg_quality":
-                    m.jpg_quality = (int) Json.integer(v, 0, 255, "jpg_quality");
+                    m.jpg_quality = (int) ConformanceJson.integer(v, 0, 255, "DATA_TRANSMISSION_HANDSHAKE.jpg_quality");
                     break;
                 default:
                     throw new Refusal("DATA_TRANSMISSION_HANDSHAKE has no field '" + e.getKey() + "'");
@@ -9400,10 +9404,10 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "seqnr":
-                    m.seqnr = (int) Json.integer(v, 0, 65535, "seqnr");
+                    m.seqnr = (int) ConformanceJson.integer(v, 0, 65535, "ENCAPSULATED_DATA.seqnr");
                     break;
                 case "data":
-                    m.data = Json.u8s(v, 253, "data");
+                    m.data = ConformanceJson.u8s(v, 253, "ENCAPSULATED_DATA.data");
                     break;
                 default:
                     throw new Refusal("ENCAPSULATED_DATA has no field '" + e.getKey() + "'");
@@ -9418,40 +9422,40 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "DISTANCE_SENSOR.time_boot_ms");
                     break;
                 case "min_distance":
-                    m.min_distance = (int) Json.integer(v, 0, 65535, "min_distance");
+                    m.min_distance = (int) ConformanceJson.integer(v, 0, 65535, "DISTANCE_SENSOR.min_distance");
                     break;
                 case "max_distance":
-                    m.max_distance = (int) Json.integer(v, 0, 65535, "max_distance");
+                    m.max_distance = (int) ConformanceJson.integer(v, 0, 65535, "DISTANCE_SENSOR.max_distance");
                     break;
                 case "current_distance":
-                    m.current_distance = (int) Json.integer(v, 0, 65535, "current_distance");
+                    m.current_distance = (int) ConformanceJson.integer(v, 0, 65535, "DISTANCE_SENSOR.current_distance");
                     break;
                 case "type":
-                    m.type = (int) Json.integer(v, 0, 255, "type");
+                    m.type = (int) ConformanceJson.integer(v, 0, 255, "DISTANCE_SENSOR.type");
                     break;
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 255, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 255, "DISTANCE_SENSOR.id");
                     break;
                 case "orientation":
-                    m.orientation = (int) Json.integer(v, 0, 255, "orientation");
+                    m.orientation = (int) ConformanceJson.integer(v, 0, 255, "DISTANCE_SENSOR.orientation");
                     break;
                 case "covariance":
-                    m.covariance = (int) Json.integer(v, 0, 255, "covariance");
+                    m.covariance = (int) ConformanceJson.integer(v, 0, 255, "DISTANCE_SENSOR.covariance");
                     break;
                 case "horizontal_fov":
-                    m.horizontal_fov = Json.f32(v, "horizontal_fov");
+                    m.horizontal_fov = ConformanceJson.f32(v, "DISTANCE_SENSOR.horizontal_fov");
                     break;
                 case "vertical_fov":
-                    m.vertical_fov = Json.f32(v, "vertical_fov");
+                    m.vertical_fov = ConformanceJson.f32(v, "DISTANCE_SENSOR.vertical_fov");
                     break;
                 case "quaternion":
-                    m.quaternion = Json.f32s(v, 4, "quaternion");
+                    m.quaternion = ConformanceJson.f32s(v, 4, "DISTANCE_SENSOR.quaternion");
                     break;
                 case "signal_quality":
-                    m.signal_quality = (int) Json.integer(v, 0, 255, "signal_quality");
+                    m.signal_quality = (int) ConformanceJson.integer(v, 0, 255, "DISTANCE_SENSOR.signal_quality");
                     break;
                 default:
                     throw new Refusal("DISTANCE_SENSOR has no field '" + e.getKey() + "'");
@@ -9466,16 +9470,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "TERRAIN_REQUEST.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "TERRAIN_REQUEST.lon");
                     break;
                 case "grid_spacing":
-                    m.grid_spacing = (int) Json.integer(v, 0, 65535, "grid_spacing");
+                    m.grid_spacing = (int) ConformanceJson.integer(v, 0, 65535, "TERRAIN_REQUEST.grid_spacing");
                     break;
                 case "mask":
-                    m.mask = Json.uint64(v, "mask");
+                    m.mask = ConformanceJson.uint64(v, "TERRAIN_REQUEST.mask");
                     break;
                 default:
                     throw new Refusal("TERRAIN_REQUEST has no field '" + e.getKey() + "'");
@@ -9490,19 +9494,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "TERRAIN_DATA.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "TERRAIN_DATA.lon");
                     break;
                 case "grid_spacing":
-                    m.grid_spacing = (int) Json.integer(v, 0, 65535, "grid_spacing");
+                    m.grid_spacing = (int) ConformanceJson.integer(v, 0, 65535, "TERRAIN_DATA.grid_spacing");
                     break;
                 case "gridbit":
-                    m.gridbit = (int) Json.integer(v, 0, 255, "gridbit");
+                    m.gridbit = (int) ConformanceJson.integer(v, 0, 255, "TERRAIN_DATA.gridbit");
                     break;
                 case "data":
-                    m.data = Json.shorts(v, 16, "data");
+                    m.data = ConformanceJson.shorts(v, 16, "TERRAIN_DATA.data");
                     break;
                 default:
                     throw new Refusal("TERRAIN_DATA has no field '" + e.getKey() + "'");
@@ -9517,10 +9521,10 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "TERRAIN_CHECK.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "TERRAIN_CHECK.lon");
                     break;
                 default:
                     throw new Refusal("TERRAIN_CHECK has no field '" + e.getKey() + "'");
@@ -9535,25 +9539,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "TERRAIN_REPORT.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "TERRAIN_REPORT.lon");
                     break;
                 case "spacing":
-                    m.spacing = (int) Json.integer(v, 0, 65535, "spacing");
+                    m.spacing = (int) ConformanceJson.integer(v, 0, 65535, "TERRAIN_REPORT.spacing");
                     break;
                 case "terrain_height":
-                    m.terrain_height = Json.f32(v, "terrain_height");
+                    m.terrain_height = ConformanceJson.f32(v, "TERRAIN_REPORT.terrain_height");
                     break;
                 case "current_height":
-                    m.current_height = Json.f32(v, "current_height");
+                    m.current_height = ConformanceJson.f32(v, "TERRAIN_REPORT.current_height");
                     break;
                 case "pending":
-                    m.pending = (int) Json.integer(v, 0, 65535, "pending");
+                    m.pending = (int) ConformanceJson.integer(v, 0, 65535, "TERRAIN_REPORT.pending");
                     break;
                 case "loaded":
-                    m.loaded = (int) Json.integer(v, 0, 65535, "loaded");
+                    m.loaded = (int) ConformanceJson.integer(v, 0, 65535, "TERRAIN_REPORT.loaded");
                     break;
                 default:
                     throw new Refusal("TERRAIN_REPORT has no field '" + e.getKey() + "'");
@@ -9568,19 +9572,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "SCALED_PRESSURE2.time_boot_ms");
                     break;
                 case "press_abs":
-                    m.press_abs = Json.f32(v, "press_abs");
+                    m.press_abs = ConformanceJson.f32(v, "SCALED_PRESSURE2.press_abs");
                     break;
                 case "press_diff":
-                    m.press_diff = Json.f32(v, "press_diff");
+                    m.press_diff = ConformanceJson.f32(v, "SCALED_PRESSURE2.press_diff");
                     break;
                 case "temperature":
-                    m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
+                    m.temperature = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_PRESSURE2.temperature");
                     break;
                 case "temperature_press_diff":
-                    m.temperature_press_diff = (short) Json.integer(v, -32768, 32767, "temperature_press_diff");
+                    m.temperature_press_diff = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_PRESSURE2.temperature_press_diff");
                     break;
                 default:
                     throw new Refusal("SCALED_PRESSURE2 has no field '" + e.getKey() + "'");
@@ -9595,22 +9599,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "ATT_POS_MOCAP.time_usec");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "ATT_POS_MOCAP.q");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "ATT_POS_MOCAP.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "ATT_POS_MOCAP.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "ATT_POS_MOCAP.z");
                     break;
                 case "covariance":
-                    m.covariance = Json.f32s(v, 21, "covariance");
+                    m.covariance = ConformanceJson.f32s(v, 21, "ATT_POS_MOCAP.covariance");
                     break;
                 default:
                     throw new Refusal("ATT_POS_MOCAP has no field '" + e.getKey() + "'");
@@ -9625,19 +9629,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "SET_ACTUATOR_CONTROL_TARGET.time_usec");
                     break;
                 case "group_mlx":
-                    m.group_mlx = (int) Json.integer(v, 0, 255, "group_mlx");
+                    m.group_mlx = (int) ConformanceJson.integer(v, 0, 255, "SET_ACTUATOR_CONTROL_TARGET.group_mlx");
                     break;
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "SET_ACTUATOR_CONTROL_TARGET.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "SET_ACTUATOR_CONTROL_TARGET.target_component");
                     break;
                 case "controls":
-                    m.controls = Json.f32s(v, 8, "controls");
+                    m.controls = ConformanceJson.f32s(v, 8, "SET_ACTUATOR_CONTROL_TARGET.controls");
                     break;
                 default:
                     throw new Refusal("SET_ACTUATOR_CONTROL_TARGET has no field '" + e.getKey() + "'");
@@ -9652,13 +9656,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "ACTUATOR_CONTROL_TARGET.time_usec");
                     break;
                 case "group_mlx":
-                    m.group_mlx = (int) Json.integer(v, 0, 255, "group_mlx");
+                    m.group_mlx = (int) ConformanceJson.integer(v, 0, 255, "ACTUATOR_CONTROL_TARGET.group_mlx");
                     break;
                 case "controls":
-                    m.controls = Json.f32s(v, 8, "controls");
+                    m.controls = ConformanceJson.f32s(v, 8, "ACTUATOR_CONTROL_TARGET.controls");
                     break;
                 default:
                     throw new Refusal("ACTUATOR_CONTROL_TARGET has no field '" + e.getKey() + "'");
@@ -9673,25 +9677,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "ALTITUDE.time_usec");
                     break;
                 case "altitude_monotonic":
-                    m.altitude_monotonic = Json.f32(v, "altitude_monotonic");
+                    m.altitude_monotonic = ConformanceJson.f32(v, "ALTITUDE.altitude_monotonic");
                     break;
                 case "altitude_amsl":
-                    m.altitude_amsl = Json.f32(v, "altitude_amsl");
+                    m.altitude_amsl = ConformanceJson.f32(v, "ALTITUDE.altitude_amsl");
                     break;
                 case "altitude_local":
-                    m.altitude_local = Json.f32(v, "altitude_local");
+                    m.altitude_local = ConformanceJson.f32(v, "ALTITUDE.altitude_local");
                     break;
                 case "altitude_relative":
-                    m.altitude_relative = Json.f32(v, "altitude_relative");
+                    m.altitude_relative = ConformanceJson.f32(v, "ALTITUDE.altitude_relative");
                     break;
                 case "altitude_terrain":
-                    m.altitude_terrain = Json.f32(v, "altitude_terrain");
+                    m.altitude_terrain = ConformanceJson.f32(v, "ALTITUDE.altitude_terrain");
                     break;
                 case "bottom_clearance":
-                    m.bottom_clearance = Json.f32(v, "bottom_clearance");
+                    m.bottom_clearance = ConformanceJson.f32(v, "ALTITUDE.bottom_clearance");
                     break;
                 default:
                     throw new Refusal("ALTITUDE has no field '" + e.getKey() + "'");
@@ -9706,19 +9710,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "request_id":
-                    m.request_id = (int) Json.integer(v, 0, 255, "request_id");
+                    m.request_id = (int) ConformanceJson.integer(v, 0, 255, "RESOURCE_REQUEST.request_id");
                     break;
                 case "uri_type":
-                    m.uri_type = (int) Json.integer(v, 0, 255, "uri_type");
+                    m.uri_type = (int) ConformanceJson.integer(v, 0, 255, "RESOURCE_REQUEST.uri_type");
                     break;
                 case "uri":
-                    m.uri = Json.u8s(v, 120, "uri");
+                    m.uri = ConformanceJson.u8s(v, 120, "RESOURCE_REQUEST.uri");
                     break;
                 case "transfer_type":
-                    m.transfer_type = (int) Json.integer(v, 0, 255, "transfer_type");
+                    m.transfer_type = (int) ConformanceJson.integer(v, 0, 255, "RESOURCE_REQUEST.transfer_type");
                     break;
                 case "storage":
-                    m.storage = Json.u8s(v, 120, "storage");
+                    m.storage = ConformanceJson.u8s(v, 120, "RESOURCE_REQUEST.storage");
                     break;
                 default:
                     throw new Refusal("RESOURCE_REQUEST has no field '" + e.getKey() + "'");
@@ -9733,19 +9737,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "SCALED_PRESSURE3.time_boot_ms");
                     break;
                 case "press_abs":
-                    m.press_abs = Json.f32(v, "press_abs");
+                    m.press_abs = ConformanceJson.f32(v, "SCALED_PRESSURE3.press_abs");
                     break;
                 case "press_diff":
-                    m.press_diff = Json.f32(v, "press_diff");
+                    m.press_diff = ConformanceJson.f32(v, "SCALED_PRESSURE3.press_diff");
                     break;
                 case "temperature":
-                    m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
+                    m.temperature = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_PRESSURE3.temperature");
                     break;
                 case "temperature_press_diff":
-                    m.temperature_press_diff = (short) Json.integer(v, -32768, 32767, "temperature_press_diff");
+                    m.temperature_press_diff = (short) ConformanceJson.integer(v, -32768, 32767, "SCALED_PRESSURE3.temperature_press_diff");
                     break;
                 default:
                     throw new Refusal("SCALED_PRESSURE3 has no field '" + e.getKey() + "'");
@@ -9760,37 +9764,37 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "timestamp":
-                    m.timestamp = Json.uint64(v, "timestamp");
+                    m.timestamp = ConformanceJson.uint64(v, "FOLLOW_TARGET.timestamp");
                     break;
                 case "est_capabilities":
-                    m.est_capabilities = (int) Json.integer(v, 0, 255, "est_capabilities");
+                    m.est_capabilities = (int) ConformanceJson.integer(v, 0, 255, "FOLLOW_TARGET.est_capabilities");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "FOLLOW_TARGET.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "FOLLOW_TARGET.lon");
                     break;
                 case "alt":
-                    m.alt = Json.f32(v, "alt");
+                    m.alt = ConformanceJson.f32(v, "FOLLOW_TARGET.alt");
                     break;
                 case "vel":
-                    m.vel = Json.f32s(v, 3, "vel");
+                    m.vel = ConformanceJson.f32s(v, 3, "FOLLOW_TARGET.vel");
                     break;
                 case "acc":
-                    m.acc = Json.f32s(v, 3, "acc");
+                    m.acc = ConformanceJson.f32s(v, 3, "FOLLOW_TARGET.acc");
                     break;
                 case "attitude_q":
-                    m.attitude_q = Json.f32s(v, 4, "attitude_q");
+                    m.attitude_q = ConformanceJson.f32s(v, 4, "FOLLOW_TARGET.attitude_q");
                     break;
                 case "rates":
-                    m.rates = Json.f32s(v, 3, "rates");
+                    m.rates = ConformanceJson.f32s(v, 3, "FOLLOW_TARGET.rates");
                     break;
                 case "position_cov":
-                    m.position_cov = Json.f32s(v, 3, "position_cov");
+                    m.position_cov = ConformanceJson.f32s(v, 3, "FOLLOW_TARGET.position_cov");
                     break;
                 case "custom_state":
-                    m.custom_state = Json.uint64(v, "custom_state");
+                    m.custom_state = ConformanceJson.uint64(v, "FOLLOW_TARGET.custom_state");
                     break;
                 default:
                     throw new Refusal("FOLLOW_TARGET has no field '" + e.getKey() + "'");
@@ -9805,55 +9809,55 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "CONTROL_SYSTEM_STATE.time_usec");
                     break;
                 case "x_acc":
-                    m.x_acc = Json.f32(v, "x_acc");
+                    m.x_acc = ConformanceJson.f32(v, "CONTROL_SYSTEM_STATE.x_acc");
                     break;
                 case "y_acc":
-                    m.y_acc = Json.f32(v, "y_acc");
+                    m.y_acc = ConformanceJson.f32(v, "CONTROL_SYSTEM_STATE.y_acc");
                     break;
                 case "z_acc":
-                    m.z_acc = Json.f32(v, "z_acc");
+                    m.z_acc = ConformanceJson.f32(v, "CONTROL_SYSTEM_STATE.z_acc");
                     break;
                 case "x_vel":
-                    m.x_vel = Json.f32(v, "x_vel");
+                    m.x_vel = ConformanceJson.f32(v, "CONTROL_SYSTEM_STATE.x_vel");
                     break;
                 case "y_vel":
-                    m.y_vel = Json.f32(v, "y_vel");
+                    m.y_vel = ConformanceJson.f32(v, "CONTROL_SYSTEM_STATE.y_vel");
                     break;
                 case "z_vel":
-                    m.z_vel = Json.f32(v, "z_vel");
+                    m.z_vel = ConformanceJson.f32(v, "CONTROL_SYSTEM_STATE.z_vel");
                     break;
                 case "x_pos":
-                    m.x_pos = Json.f32(v, "x_pos");
+                    m.x_pos = ConformanceJson.f32(v, "CONTROL_SYSTEM_STATE.x_pos");
                     break;
                 case "y_pos":
-                    m.y_pos = Json.f32(v, "y_pos");
+                    m.y_pos = ConformanceJson.f32(v, "CONTROL_SYSTEM_STATE.y_pos");
                     break;
                 case "z_pos":
-                    m.z_pos = Json.f32(v, "z_pos");
+                    m.z_pos = ConformanceJson.f32(v, "CONTROL_SYSTEM_STATE.z_pos");
                     break;
                 case "airspeed":
-                    m.airspeed = Json.f32(v, "airspeed");
+                    m.airspeed = ConformanceJson.f32(v, "CONTROL_SYSTEM_STATE.airspeed");
                     break;
                 case "vel_variance":
-                    m.vel_variance = Json.f32s(v, 3, "vel_variance");
+                    m.vel_variance = ConformanceJson.f32s(v, 3, "CONTROL_SYSTEM_STATE.vel_variance");
                     break;
                 case "pos_variance":
-                    m.pos_variance = Json.f32s(v, 3, "pos_variance");
+                    m.pos_variance = ConformanceJson.f32s(v, 3, "CONTROL_SYSTEM_STATE.pos_variance");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "CONTROL_SYSTEM_STATE.q");
                     break;
                 case "roll_rate":
-                    m.roll_rate = Json.f32(v, "roll_rate");
+                    m.roll_rate = ConformanceJson.f32(v, "CONTROL_SYSTEM_STATE.roll_rate");
                     break;
                 case "pitch_rate":
-                    m.pitch_rate = Json.f32(v, "pitch_rate");
+                    m.pitch_rate = ConformanceJson.f32(v, "CONTROL_SYSTEM_STATE.pitch_rate");
                     break;
                 case "yaw_rate":
-                    m.yaw_rate = Json.f32(v, "yaw_rate");
+                    m.yaw_rate = ConformanceJson.f32(v, "CONTROL_SYSTEM_STATE.yaw_rate");
                     break;
                 default:
                     throw new Refusal("CONTROL_SYSTEM_STATE has no field '" + e.getKey() + "'");
@@ -9868,46 +9872,46 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 255, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 255, "BATTERY_STATUS.id");
                     break;
                 case "battery_function":
-                    m.battery_function = (int) Json.integer(v, 0, 255, "battery_function");
+                    m.battery_function = (int) ConformanceJson.integer(v, 0, 255, "BATTERY_STATUS.battery_function");
                     break;
                 case "type":
-                    m.type = (int) Json.integer(v, 0, 255, "type");
+                    m.type = (int) ConformanceJson.integer(v, 0, 255, "BATTERY_STATUS.type");
                     break;
                 case "temperature":
-                    m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
+                    m.temperature = (short) ConformanceJson.integer(v, -32768, 32767, "BATTERY_STATUS.temperature");
                     break;
                 case "voltages":
-                    m.voltages = Json.ints(v, 10, 0, 65535, "voltages");
+                    m.voltages = ConformanceJson.ints(v, 10, 0, 65535, "BATTERY_STATUS.voltages");
                     break;
                 case "current_battery":
-                    m.current_battery = (short) Json.integer(v, -32768, 32767, "current_battery");
+                    m.current_battery = (short) ConformanceJson.integer(v, -32768, 32767, "BATTERY_STATUS.current_battery");
                     break;
                 case "current_consumed":
-                    m.current_consumed = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "current_consumed");
+                    m.current_consumed = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "BATTERY_STATUS.current_consumed");
                     break;
                 case "energy_consumed":
-                    m.energy_consumed = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "energy_consumed");
+                    m.energy_consumed = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "BATTERY_STATUS.energy_consumed");
                     break;
                 case "battery_remaining":
-                    m.battery_remaining = (byte) Json.integer(v, -128, 127, "battery_remaining");
+                    m.battery_remaining = (byte) ConformanceJson.integer(v, -128, 127, "BATTERY_STATUS.battery_remaining");
                     break;
                 case "time_remaining":
-                    m.time_remaining = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "time_remaining");
+                    m.time_remaining = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "BATTERY_STATUS.time_remaining");
                     break;
                 case "charge_state":
-                    m.charge_state = (int) Json.integer(v, 0, 255, "charge_state");
+                    m.charge_state = (int) ConformanceJson.integer(v, 0, 255, "BATTERY_STATUS.charge_state");
                     break;
                 case "voltages_ext":
-                    m.voltages_ext = Json.ints(v, 4, 0, 65535, "voltages_ext");
+                    m.voltages_ext = ConformanceJson.ints(v, 4, 0, 65535, "BATTERY_STATUS.voltages_ext");
                     break;
                 case "mode":
-                    m.mode = (int) Json.integer(v, 0, 255, "mode");
+                    m.mode = (int) ConformanceJson.integer(v, 0, 255, "BATTERY_STATUS.mode");
                     break;
                 case "fault_bitmask":
-                    m.fault_bitmask = Json.integer(v, 0, 4294967295L, "fault_bitmask");
+                    m.fault_bitmask = ConformanceJson.integer(v, 0, 4294967295L, "BATTERY_STATUS.fault_bitmask");
                     break;
                 default:
                     throw new Refusal("BATTERY_STATUS has no field '" + e.getKey() + "'");
@@ -9922,40 +9926,40 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "capabilities":
-                    m.capabilities = Json.uint64(v, "capabilities");
+                    m.capabilities = ConformanceJson.uint64(v, "AUTOPILOT_VERSION.capabilities");
                     break;
                 case "flight_sw_version":
-                    m.flight_sw_version = Json.integer(v, 0, 4294967295L, "flight_sw_version");
+                    m.flight_sw_version = ConformanceJson.integer(v, 0, 4294967295L, "AUTOPILOT_VERSION.flight_sw_version");
                     break;
                 case "middleware_sw_version":
-                    m.middleware_sw_version = Json.integer(v, 0, 4294967295L, "middleware_sw_version");
+                    m.middleware_sw_version = ConformanceJson.integer(v, 0, 4294967295L, "AUTOPILOT_VERSION.middleware_sw_version");
                     break;
                 case "os_sw_version":
-                    m.os_sw_version = Json.integer(v, 0, 4294967295L, "os_sw_version");
+                    m.os_sw_version = ConformanceJson.integer(v, 0, 4294967295L, "AUTOPILOT_VERSION.os_sw_version");
                     break;
                 case "board_version":
-                    m.board_version = Json.integer(v, 0, 4294967295L, "board_version");
+                    m.board_version = ConformanceJson.integer(v, 0, 4294967295L, "AUTOPILOT_VERSION.board_version");
                     break;
                 case "flight_custom_version":
-                    m.flight_custom_version = Json.u8s(v, 8, "flight_custom_version");
+                    m.flight_custom_version = ConformanceJson.u8s(v, 8, "AUTOPILOT_VERSION.flight_custom_version");
                     break;
                 case "middleware_custom_version":
-                    m.middleware_custom_version = Json.u8s(v, 8, "middleware_custom_version");
+                    m.middleware_custom_version = ConformanceJson.u8s(v, 8, "AUTOPILOT_VERSION.middleware_custom_version");
                     break;
                 case "os_custom_version":
-                    m.os_custom_version = Json.u8s(v, 8, "os_custom_version");
+                    m.os_custom_version = ConformanceJson.u8s(v, 8, "AUTOPILOT_VERSION.os_custom_version");
                     break;
                 case "vendor_id":
-                    m.vendor_id = (int) Json.integer(v, 0, 65535, "vendor_id");
+                    m.vendor_id = (int) ConformanceJson.integer(v, 0, 65535, "AUTOPILOT_VERSION.vendor_id");
                     break;
                 case "product_id":
-                    m.product_id = (int) Json.integer(v, 0, 65535, "product_id");
+                    m.product_id = (int) ConformanceJson.integer(v, 0, 65535, "AUTOPILOT_VERSION.product_id");
                     break;
                 case "uid":
-                    m.uid = Json.uint64(v, "uid");
+                    m.uid = ConformanceJson.uint64(v, "AUTOPILOT_VERSION.uid");
                     break;
                 case "uid2":
-                    m.uid2 = Json.u8s(v, 18, "uid2");
+                    m.uid2 = ConformanceJson.u8s(v, 18, "AUTOPILOT_VERSION.uid2");
                     break;
                 default:
                     throw new Refusal("AUTOPILOT_VERSION has no field '" + e.getKey() + "'");
@@ -9970,46 +9974,46 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "LANDING_TARGET.time_usec");
                     break;
                 case "target_num":
-                    m.target_num = (int) Json.integer(v, 0, 255, "target_num");
+                    m.target_num = (int) ConformanceJson.integer(v, 0, 255, "LANDING_TARGET.target_num");
                     break;
                 case "frame":
-                    m.frame = (int) Json.integer(v, 0, 255, "frame");
+                    m.frame = (int) ConformanceJson.integer(v, 0, 255, "LANDING_TARGET.frame");
                     break;
                 case "angle_x":
-                    m.angle_x = Json.f32(v, "angle_x");
+                    m.angle_x = ConformanceJson.f32(v, "LANDING_TARGET.angle_x");
                     break;
                 case "angle_y":
-                    m.angle_y = Json.f32(v, "angle_y");
+                    m.angle_y = ConformanceJson.f32(v, "LANDING_TARGET.angle_y");
                     break;
                 case "distance":
-                    m.distance = Json.f32(v, "distance");
+                    m.distance = ConformanceJson.f32(v, "LANDING_TARGET.distance");
                     break;
                 case "size_x":
-                    m.size_x = Json.f32(v, "size_x");
+                    m.size_x = ConformanceJson.f32(v, "LANDING_TARGET.size_x");
                     break;
                 case "size_y":
-                    m.size_y = Json.f32(v, "size_y");
+                    m.size_y = ConformanceJson.f32(v, "LANDING_TARGET.size_y");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "LANDING_TARGET.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "LANDING_TARGET.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "LANDING_TARGET.z");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "LANDING_TARGET.q");
                     break;
                 case "type":
-                    m.type = (int) Json.integer(v, 0, 255, "type");
+                    m.type = (int) ConformanceJson.integer(v, 0, 255, "LANDING_TARGET.type");
                     break;
                 case "position_valid":
-                    m.position_valid = (int) Json.integer(v, 0, 255, "position_valid");
+                    m.position_valid = (int) ConformanceJson.integer(v, 0, 255, "LANDING_TARGET.position_valid");
                     break;
                 default:
                     throw new Refusal("LANDING_TARGET has no field '" + e.getKey() + "'");
@@ -10024,19 +10028,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "breach_status":
-                    m.breach_status = (int) Json.integer(v, 0, 255, "breach_status");
+                    m.breach_status = (int) ConformanceJson.integer(v, 0, 255, "FENCE_STATUS.breach_status");
                     break;
                 case "breach_count":
-                    m.breach_count = (int) Json.integer(v, 0, 65535, "breach_count");
+                    m.breach_count = (int) ConformanceJson.integer(v, 0, 65535, "FENCE_STATUS.breach_count");
                     break;
                 case "breach_type":
-                    m.breach_type = (int) Json.integer(v, 0, 255, "breach_type");
+                    m.breach_type = (int) ConformanceJson.integer(v, 0, 255, "FENCE_STATUS.breach_type");
                     break;
                 case "breach_time":
-                    m.breach_time = Json.integer(v, 0, 4294967295L, "breach_time");
+                    m.breach_time = ConformanceJson.integer(v, 0, 4294967295L, "FENCE_STATUS.breach_time");
                     break;
                 case "breach_mitigation":
-                    m.breach_mitigation = (int) Json.integer(v, 0, 255, "breach_mitigation");
+                    m.breach_mitigation = (int) ConformanceJson.integer(v, 0, 255, "FENCE_STATUS.breach_mitigation");
                     break;
                 default:
                     throw new Refusal("FENCE_STATUS has no field '" + e.getKey() + "'");
@@ -10051,58 +10055,58 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "compass_id":
-                    m.compass_id = (int) Json.integer(v, 0, 255, "compass_id");
+                    m.compass_id = (int) ConformanceJson.integer(v, 0, 255, "MAG_CAL_REPORT.compass_id");
                     break;
                 case "cal_mask":
-                    m.cal_mask = (int) Json.integer(v, 0, 255, "cal_mask");
+                    m.cal_mask = (int) ConformanceJson.integer(v, 0, 255, "MAG_CAL_REPORT.cal_mask");
                     break;
                 case "cal_status":
-                    m.cal_status = (int) Json.integer(v, 0, 255, "cal_status");
+                    m.cal_status = (int) ConformanceJson.integer(v, 0, 255, "MAG_CAL_REPORT.cal_status");
                     break;
                 case "autosaved":
-                    m.autosaved = (int) Json.integer(v, 0, 255, "autosaved");
+                    m.autosaved = (int) ConformanceJson.integer(v, 0, 255, "MAG_CAL_REPORT.autosaved");
                     break;
                 case "fitness":
-                    m.fitness = Json.f32(v, "fitness");
+                    m.fitness = ConformanceJson.f32(v, "MAG_CAL_REPORT.fitness");
                     break;
                 case "ofs_x":
-                    m.ofs_x = Json.f32(v, "ofs_x");
+                    m.ofs_x = ConformanceJson.f32(v, "MAG_CAL_REPORT.ofs_x");
                     break;
                 case "ofs_y":
-                    m.ofs_y = Json.f32(v, "ofs_y");
+                    m.ofs_y = ConformanceJson.f32(v, "MAG_CAL_REPORT.ofs_y");
                     break;
                 case "ofs_z":
-                    m.ofs_z = Json.f32(v, "ofs_z");
+                    m.ofs_z = ConformanceJson.f32(v, "MAG_CAL_REPORT.ofs_z");
                     break;
                 case "diag_x":
-                    m.diag_x = Json.f32(v, "diag_x");
+                    m.diag_x = ConformanceJson.f32(v, "MAG_CAL_REPORT.diag_x");
                     break;
                 case "diag_y":
-                    m.diag_y = Json.f32(v, "diag_y");
+                    m.diag_y = ConformanceJson.f32(v, "MAG_CAL_REPORT.diag_y");
                     break;
                 case "diag_z":
-                    m.diag_z = Json.f32(v, "diag_z");
+                    m.diag_z = ConformanceJson.f32(v, "MAG_CAL_REPORT.diag_z");
                     break;
                 case "offdiag_x":
-                    m.offdiag_x = Json.f32(v, "offdiag_x");
+                    m.offdiag_x = ConformanceJson.f32(v, "MAG_CAL_REPORT.offdiag_x");
                     break;
                 case "offdiag_y":
-                    m.offdiag_y = Json.f32(v, "offdiag_y");
+                    m.offdiag_y = ConformanceJson.f32(v, "MAG_CAL_REPORT.offdiag_y");
                     break;
                 case "offdiag_z":
-                    m.offdiag_z = Json.f32(v, "offdiag_z");
+                    m.offdiag_z = ConformanceJson.f32(v, "MAG_CAL_REPORT.offdiag_z");
                     break;
                 case "orientation_confidence":
-                    m.orientation_confidence = Json.f32(v, "orientation_confidence");
+                    m.orientation_confidence = ConformanceJson.f32(v, "MAG_CAL_REPORT.orientation_confidence");
                     break;
                 case "old_orientation":
-                    m.old_orientation = (int) Json.integer(v, 0, 255, "old_orientation");
+                    m.old_orientation = (int) ConformanceJson.integer(v, 0, 255, "MAG_CAL_REPORT.old_orientation");
                     break;
                 case "new_orientation":
-                    m.new_orientation = (int) Json.integer(v, 0, 255, "new_orientation");
+                    m.new_orientation = (int) ConformanceJson.integer(v, 0, 255, "MAG_CAL_REPORT.new_orientation");
                     break;
                 case "scale_factor":
-                    m.scale_factor = Json.f32(v, "scale_factor");
+                    m.scale_factor = ConformanceJson.f32(v, "MAG_CAL_REPORT.scale_factor");
                     break;
                 default:
                     throw new Refusal("MAG_CAL_REPORT has no field '" + e.getKey() + "'");
@@ -10117,61 +10121,61 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "health":
-                    m.health = (int) Json.integer(v, 0, 255, "health");
+                    m.health = (int) ConformanceJson.integer(v, 0, 255, "EFI_STATUS.health");
                     break;
                 case "ecu_index":
-                    m.ecu_index = Json.f32(v, "ecu_index");
+                    m.ecu_index = ConformanceJson.f32(v, "EFI_STATUS.ecu_index");
                     break;
                 case "rpm":
-                    m.rpm = Json.f32(v, "rpm");
+                    m.rpm = ConformanceJson.f32(v, "EFI_STATUS.rpm");
                     break;
                 case "fuel_consumed":
-                    m.fuel_consumed = Json.f32(v, "fuel_consumed");
+                    m.fuel_consumed = ConformanceJson.f32(v, "EFI_STATUS.fuel_consumed");
                     break;
                 case "fuel_flow":
-                    m.fuel_flow = Json.f32(v, "fuel_flow");
+                    m.fuel_flow = ConformanceJson.f32(v, "EFI_STATUS.fuel_flow");
                     break;
                 case "engine_load":
-                    m.engine_load = Json.f32(v, "engine_load");
+                    m.engine_load = ConformanceJson.f32(v, "EFI_STATUS.engine_load");
                     break;
                 case "throttle_position":
-                    m.throttle_position = Json.f32(v, "throttle_position");
+                    m.throttle_position = ConformanceJson.f32(v, "EFI_STATUS.throttle_position");
                     break;
                 case "spark_dwell_time":
-                    m.spark_dwell_time = Json.f32(v, "spark_dwell_time");
+                    m.spark_dwell_time = ConformanceJson.f32(v, "EFI_STATUS.spark_dwell_time");
                     break;
                 case "barometric_pressure":
-                    m.barometric_pressure = Json.f32(v, "barometric_pressure");
+                    m.barometric_pressure = ConformanceJson.f32(v, "EFI_STATUS.barometric_pressure");
                     break;
                 case "intake_manifold_pressure":
-                    m.intake_manifold_pressure = Json.f32(v, "intake_manifold_pressure");
+                    m.intake_manifold_pressure = ConformanceJson.f32(v, "EFI_STATUS.intake_manifold_pressure");
                     break;
                 case "intake_manifold_temperature":
-                    m.intake_manifold_temperature = Json.f32(v, "intake_manifold_temperature");
+                    m.intake_manifold_temperature = ConformanceJson.f32(v, "EFI_STATUS.intake_manifold_temperature");
                     break;
                 case "cylinder_head_temperature":
-                    m.cylinder_head_temperature = Json.f32(v, "cylinder_head_temperature");
+                    m.cylinder_head_temperature = ConformanceJson.f32(v, "EFI_STATUS.cylinder_head_temperature");
                     break;
                 case "ignition_timing":
-                    m.ignition_timing = Json.f32(v, "ignition_timing");
+                    m.ignition_timing = ConformanceJson.f32(v, "EFI_STATUS.ignition_timing");
                     break;
                 case "injection_time":
-                    m.injection_time = Json.f32(v, "injection_time");
+                    m.injection_time = ConformanceJson.f32(v, "EFI_STATUS.injection_time");
                     break;
                 case "exhaust_gas_temperature":
-                    m.exhaust_gas_temperature = Json.f32(v, "exhaust_gas_temperature");
+                    m.exhaust_gas_temperature = ConformanceJson.f32(v, "EFI_STATUS.exhaust_gas_temperature");
                     break;
                 case "throttle_out":
-                    m.throttle_out = Json.f32(v, "throttle_out");
+                    m.throttle_out = ConformanceJson.f32(v, "EFI_STATUS.throttle_out");
                     break;
                 case "pt_compensation":
-                    m.pt_compensation = Json.f32(v, "pt_compensation");
+                    m.pt_compensation = ConformanceJson.f32(v, "EFI_STATUS.pt_compensation");
                     break;
                 case "ignition_voltage":
-                    m.ignition_voltage = Json.f32(v, "ignition_voltage");
+                    m.ignition_voltage = ConformanceJson.f32(v, "EFI_STATUS.ignition_voltage");
                     break;
                 case "fuel_pressure":
-                    m.fuel_pressure = Json.f32(v, "fuel_pressure");
+                    m.fuel_pressure = ConformanceJson.f32(v, "EFI_STATUS.fuel_pressure");
                     break;
                 default:
                     throw new Refusal("EFI_STATUS has no field '" + e.getKey() + "'");
@@ -10186,34 +10190,34 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "ESTIMATOR_STATUS.time_usec");
                     break;
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 65535, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 65535, "ESTIMATOR_STATUS.flags");
                     break;
                 case "vel_ratio":
-                    m.vel_ratio = Json.f32(v, "vel_ratio");
+                    m.vel_ratio = ConformanceJson.f32(v, "ESTIMATOR_STATUS.vel_ratio");
                     break;
                 case "pos_horiz_ratio":
-                    m.pos_horiz_ratio = Json.f32(v, "pos_horiz_ratio");
+                    m.pos_horiz_ratio = ConformanceJson.f32(v, "ESTIMATOR_STATUS.pos_horiz_ratio");
                     break;
                 case "pos_vert_ratio":
-                    m.pos_vert_ratio = Json.f32(v, "pos_vert_ratio");
+                    m.pos_vert_ratio = ConformanceJson.f32(v, "ESTIMATOR_STATUS.pos_vert_ratio");
                     break;
                 case "mag_ratio":
-                    m.mag_ratio = Json.f32(v, "mag_ratio");
+                    m.mag_ratio = ConformanceJson.f32(v, "ESTIMATOR_STATUS.mag_ratio");
                     break;
                 case "hagl_ratio":
-                    m.hagl_ratio = Json.f32(v, "hagl_ratio");
+                    m.hagl_ratio = ConformanceJson.f32(v, "ESTIMATOR_STATUS.hagl_ratio");
                     break;
                 case "tas_ratio":
-                    m.tas_ratio = Json.f32(v, "tas_ratio");
+                    m.tas_ratio = ConformanceJson.f32(v, "ESTIMATOR_STATUS.tas_ratio");
                     break;
                 case "pos_horiz_accuracy":
-                    m.pos_horiz_accuracy = Json.f32(v, "pos_horiz_accuracy");
+                    m.pos_horiz_accuracy = ConformanceJson.f32(v, "ESTIMATOR_STATUS.pos_horiz_accuracy");
                     break;
                 case "pos_vert_accuracy":
-                    m.pos_vert_accuracy = Json.f32(v, "pos_vert_accuracy");
+                    m.pos_vert_accuracy = ConformanceJson.f32(v, "ESTIMATOR_STATUS.pos_vert_accuracy");
                     break;
                 default:
                     throw new Refusal("ESTIMATOR_STATUS has no field '" + e.getKey() + "'");
@@ -10228,31 +10232,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "WIND_COV.time_usec");
                     break;
                 case "wind_x":
-                    m.wind_x = Json.f32(v, "wind_x");
+                    m.wind_x = ConformanceJson.f32(v, "WIND_COV.wind_x");
                     break;
                 case "wind_y":
-                    m.wind_y = Json.f32(v, "wind_y");
+                    m.wind_y = ConformanceJson.f32(v, "WIND_COV.wind_y");
                     break;
                 case "wind_z":
-                    m.wind_z = Json.f32(v, "wind_z");
+                    m.wind_z = ConformanceJson.f32(v, "WIND_COV.wind_z");
                     break;
                 case "var_horiz":
-                    m.var_horiz = Json.f32(v, "var_horiz");
+                    m.var_horiz = ConformanceJson.f32(v, "WIND_COV.var_horiz");
                     break;
                 case "var_vert":
-                    m.var_vert = Json.f32(v, "var_vert");
+                    m.var_vert = ConformanceJson.f32(v, "WIND_COV.var_vert");
                     break;
                 case "wind_alt":
-                    m.wind_alt = Json.f32(v, "wind_alt");
+                    m.wind_alt = ConformanceJson.f32(v, "WIND_COV.wind_alt");
                     break;
                 case "horiz_accuracy":
-                    m.horiz_accuracy = Json.f32(v, "horiz_accuracy");
+                    m.horiz_accuracy = ConformanceJson.f32(v, "WIND_COV.horiz_accuracy");
                     break;
                 case "vert_accuracy":
-                    m.vert_accuracy = Json.f32(v, "vert_accuracy");
+                    m.vert_accuracy = ConformanceJson.f32(v, "WIND_COV.vert_accuracy");
                     break;
                 default:
                     throw new Refusal("WIND_COV has no field '" + e.getKey() + "'");
@@ -10267,61 +10271,61 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "GPS_INPUT.time_usec");
                     break;
                 case "gps_id":
-                    m.gps_id = (int) Json.integer(v, 0, 255, "gps_id");
+                    m.gps_id = (int) ConformanceJson.integer(v, 0, 255, "GPS_INPUT.gps_id");
                     break;
                 case "ignore_flags":
-                    m.ignore_flags = (int) Json.integer(v, 0, 65535, "ignore_flags");
+                    m.ignore_flags = (int) ConformanceJson.integer(v, 0, 65535, "GPS_INPUT.ignore_flags");
                     break;
                 case "time_week_ms":
-                    m.time_week_ms = Json.integer(v, 0, 4294967295L, "time_week_ms");
+                    m.time_week_ms = ConformanceJson.integer(v, 0, 4294967295L, "GPS_INPUT.time_week_ms");
                     break;
                 case "time_week":
-                    m.time_week = (int) Json.integer(v, 0, 65535, "time_week");
+                    m.time_week = (int) ConformanceJson.integer(v, 0, 65535, "GPS_INPUT.time_week");
                     break;
                 case "fix_type":
-                    m.fix_type = (int) Json.integer(v, 0, 255, "fix_type");
+                    m.fix_type = (int) ConformanceJson.integer(v, 0, 255, "GPS_INPUT.fix_type");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS_INPUT.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GPS_INPUT.lon");
                     break;
                 case "alt":
-                    m.alt = Json.f32(v, "alt");
+                    m.alt = ConformanceJson.f32(v, "GPS_INPUT.alt");
                     break;
                 case "hdop":
-                    m.hdop = Json.f32(v, "hdop");
+                    m.hdop = ConformanceJson.f32(v, "GPS_INPUT.hdop");
                     break;
                 case "vdop":
-                    m.vdop = Json.f32(v, "vdop");
+                    m.vdop = ConformanceJson.f32(v, "GPS_INPUT.vdop");
                     break;
                 case "vn":
-                    m.vn = Json.f32(v, "vn");
+                    m.vn = ConformanceJson.f32(v, "GPS_INPUT.vn");
                     break;
                 case "ve":
-                    m.ve = Json.f32(v, "ve");
+                    m.ve = ConformanceJson.f32(v, "GPS_INPUT.ve");
                     break;
                 case "vd":
-                    m.vd = Json.f32(v, "vd");
+                    m.vd = ConformanceJson.f32(v, "GPS_INPUT.vd");
                     break;
                 case "speed_accuracy":
-                    m.speed_accuracy = Json.f32(v, "speed_accuracy");
+                    m.speed_accuracy = ConformanceJson.f32(v, "GPS_INPUT.speed_accuracy");
                     break;
                 case "horiz_accuracy":
-                    m.horiz_accuracy = Json.f32(v, "horiz_accuracy");
+                    m.horiz_accuracy = ConformanceJson.f32(v, "GPS_INPUT.horiz_accuracy");
                     break;
                 case "vert_accuracy":
-                    m.vert_accuracy = Json.f32(v, "vert_accuracy");
+                    m.vert_accuracy = ConformanceJson.f32(v, "GPS_INPUT.vert_accuracy");
                     break;
                 case "satellites_visible":
-                    m.satellites_visible = (int) Json.integer(v, 0, 255, "satellites_visible");
+                    m.satellites_visible = (int) ConformanceJson.integer(v, 0, 255, "GPS_INPUT.satellites_visible");
                     break;
                 case "yaw":
-                    m.yaw = (int) Json.integer(v, 0, 65535, "yaw");
+                    m.yaw = (int) ConformanceJson.integer(v, 0, 65535, "GPS_INPUT.yaw");
                     break;
                 default:
                     throw new Refusal("GPS_INPUT has no field '" + e.getKey() + "'");
@@ -10336,13 +10340,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 255, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 255, "GPS_RTCM_DATA.flags");
                     break;
                 case "len":
-                    m.len = (int) Json.integer(v, 0, 255, "len");
+                    m.len = (int) ConformanceJson.integer(v, 0, 255, "GPS_RTCM_DATA.len");
                     break;
                 case "data":
-                    m.data = Json.u8s(v, 180, "data");
+                    m.data = ConformanceJson.u8s(v, 180, "GPS_RTCM_DATA.data");
                     break;
                 default:
                     throw new Refusal("GPS_RTCM_DATA has no field '" + e.getKey() + "'");
@@ -10357,76 +10361,76 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "base_mode":
-                    m.base_mode = (int) Json.integer(v, 0, 255, "base_mode");
+                    m.base_mode = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY.base_mode");
                     break;
                 case "custom_mode":
-                    m.custom_mode = Json.integer(v, 0, 4294967295L, "custom_mode");
+                    m.custom_mode = ConformanceJson.integer(v, 0, 4294967295L, "HIGH_LATENCY.custom_mode");
                     break;
                 case "landed_state":
-                    m.landed_state = (int) Json.integer(v, 0, 255, "landed_state");
+                    m.landed_state = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY.landed_state");
                     break;
                 case "roll":
-                    m.roll = (short) Json.integer(v, -32768, 32767, "roll");
+                    m.roll = (short) ConformanceJson.integer(v, -32768, 32767, "HIGH_LATENCY.roll");
                     break;
                 case "pitch":
-                    m.pitch = (short) Json.integer(v, -32768, 32767, "pitch");
+                    m.pitch = (short) ConformanceJson.integer(v, -32768, 32767, "HIGH_LATENCY.pitch");
                     break;
                 case "heading":
-                    m.heading = (int) Json.integer(v, 0, 65535, "heading");
+                    m.heading = (int) ConformanceJson.integer(v, 0, 65535, "HIGH_LATENCY.heading");
                     break;
                 case "throttle":
-                    m.throttle = (byte) Json.integer(v, -128, 127, "throttle");
+                    m.throttle = (byte) ConformanceJson.integer(v, -128, 127, "HIGH_LATENCY.throttle");
                     break;
                 case "heading_sp":
-                    m.heading_sp = (short) Json.integer(v, -32768, 32767, "heading_sp");
+                    m.heading_sp = (short) ConformanceJson.integer(v, -32768, 32767, "HIGH_LATENCY.heading_sp");
                     break;
                 case "latitude":
-                    m.latitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "latitude");
+                    m.latitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HIGH_LATENCY.latitude");
                     break;
                 case "longitude":
-                    m.longitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "longitude");
+                    m.longitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HIGH_LATENCY.longitude");
                     break;
                 case "altitude_amsl":
-                    m.altitude_amsl = (short) Json.integer(v, -32768, 32767, "altitude_amsl");
+                    m.altitude_amsl = (short) ConformanceJson.integer(v, -32768, 32767, "HIGH_LATENCY.altitude_amsl");
                     break;
                 case "altitude_sp":
-                    m.altitude_sp = (short) Json.integer(v, -32768, 32767, "altitude_sp");
+                    m.altitude_sp = (short) ConformanceJson.integer(v, -32768, 32767, "HIGH_LATENCY.altitude_sp");
                     break;
                 case "airspeed":
-                    m.airspeed = (int) Json.integer(v, 0, 255, "airspeed");
+                    m.airspeed = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY.airspeed");
                     break;
                 case "airspeed_sp":
-                    m.airspeed_sp = (int) Json.integer(v, 0, 255, "airspeed_sp");
+                    m.airspeed_sp = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY.airspeed_sp");
                     break;
                 case "groundspeed":
-                    m.groundspeed = (int) Json.integer(v, 0, 255, "groundspeed");
+                    m.groundspeed = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY.groundspeed");
                     break;
                 case "climb_rate":
-                    m.climb_rate = (byte) Json.integer(v, -128, 127, "climb_rate");
+                    m.climb_rate = (byte) ConformanceJson.integer(v, -128, 127, "HIGH_LATENCY.climb_rate");
                     break;
                 case "gps_nsat":
-                    m.gps_nsat = (int) Json.integer(v, 0, 255, "gps_nsat");
+                    m.gps_nsat = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY.gps_nsat");
                     break;
                 case "gps_fix_type":
-                    m.gps_fix_type = (int) Json.integer(v, 0, 255, "gps_fix_type");
+                    m.gps_fix_type = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY.gps_fix_type");
                     break;
                 case "battery_remaining":
-                    m.battery_remaining = (int) Json.integer(v, 0, 255, "battery_remaining");
+                    m.battery_remaining = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY.battery_remaining");
                     break;
                 case "temperature":
-                    m.temperature = (byte) Json.integer(v, -128, 127, "temperature");
+                    m.temperature = (byte) ConformanceJson.integer(v, -128, 127, "HIGH_LATENCY.temperature");
                     break;
                 case "temperature_air":
-                    m.temperature_air = (byte) Json.integer(v, -128, 127, "temperature_air");
+                    m.temperature_air = (byte) ConformanceJson.integer(v, -128, 127, "HIGH_LATENCY.temperature_air");
                     break;
                 case "failsafe":
-                    m.failsafe = (int) Json.integer(v, 0, 255, "failsafe");
+                    m.failsafe = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY.failsafe");
                     break;
                 case "wp_num":
-                    m.wp_num = (int) Json.integer(v, 0, 255, "wp_num");
+                    m.wp_num = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY.wp_num");
                     break;
                 case "wp_distance":
-                    m.wp_distance = (int) Json.integer(v, 0, 65535, "wp_distance");
+                    m.wp_distance = (int) ConformanceJson.integer(v, 0, 65535, "HIGH_LATENCY.wp_distance");
                     break;
                 default:
                     throw new Refusal("HIGH_LATENCY has no field '" + e.getKey() + "'");
@@ -10441,85 +10445,85 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "timestamp":
-                    m.timestamp = Json.integer(v, 0, 4294967295L, "timestamp");
+                    m.timestamp = ConformanceJson.integer(v, 0, 4294967295L, "HIGH_LATENCY2.timestamp");
                     break;
                 case "type":
-                    m.type = (int) Json.integer(v, 0, 255, "type");
+                    m.type = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY2.type");
                     break;
                 case "autopilot":
-                    m.autopilot = (int) Json.integer(v, 0, 255, "autopilot");
+                    m.autopilot = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY2.autopilot");
                     break;
                 case "custom_mode":
-                    m.custom_mode = (int) Json.integer(v, 0, 65535, "custom_mode");
+                    m.custom_mode = (int) ConformanceJson.integer(v, 0, 65535, "HIGH_LATENCY2.custom_mode");
                     break;
                 case "latitude":
-                    m.latitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "latitude");
+                    m.latitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HIGH_LATENCY2.latitude");
                     break;
                 case "longitude":
-                    m.longitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "longitude");
+                    m.longitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HIGH_LATENCY2.longitude");
                     break;
                 case "altitude":
-                    m.altitude = (short) Json.integer(v, -32768, 32767, "altitude");
+                    m.altitude = (short) ConformanceJson.integer(v, -32768, 32767, "HIGH_LATENCY2.altitude");
                     break;
                 case "target_altitude":
-                    m.target_altitude = (short) Json.integer(v, -32768, 32767, "target_altitude");
+                    m.target_altitude = (short) ConformanceJson.integer(v, -32768, 32767, "HIGH_LATENCY2.target_altitude");
                     break;
                 case "heading":
-                    m.heading = (int) Json.integer(v, 0, 255, "heading");
+                    m.heading = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY2.heading");
                     break;
                 case "target_heading":
-                    m.target_heading = (int) Json.integer(v, 0, 255, "target_heading");
+                    m.target_heading = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY2.target_heading");
                     break;
                 case "target_distance":
-                    m.target_distance = (int) Json.integer(v, 0, 65535, "target_distance");
+                    m.target_distance = (int) ConformanceJson.integer(v, 0, 65535, "HIGH_LATENCY2.target_distance");
                     break;
                 case "throttle":
-                    m.throttle = (int) Json.integer(v, 0, 255, "throttle");
+                    m.throttle = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY2.throttle");
                     break;
                 case "airspeed":
-                    m.airspeed = (int) Json.integer(v, 0, 255, "airspeed");
+                    m.airspeed = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY2.airspeed");
                     break;
                 case "airspeed_sp":
-                    m.airspeed_sp = (int) Json.integer(v, 0, 255, "airspeed_sp");
+                    m.airspeed_sp = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY2.airspeed_sp");
                     break;
                 case "groundspeed":
-                    m.groundspeed = (int) Json.integer(v, 0, 255, "groundspeed");
+                    m.groundspeed = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY2.groundspeed");
                     break;
                 case "windspeed":
-                    m.windspeed = (int) Json.integer(v, 0, 255, "windspeed");
+                    m.windspeed = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY2.windspeed");
                     break;
                 case "wind_heading":
-                    m.wind_heading = (int) Json.integer(v, 0, 255, "wind_heading");
+                    m.wind_heading = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY2.wind_heading");
                     break;
                 case "eph":
-                    m.eph = (int) Json.integer(v, 0, 255, "eph");
+                    m.eph = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY2.eph");
                     break;
                 case "epv":
-                    m.epv = (int) Json.integer(v, 0, 255, "epv");
+                    m.epv = (int) ConformanceJson.integer(v, 0, 255, "HIGH_LATENCY2.epv");
                     break;
                 case "temperature_air":
-                    m.temperature_air = (byte) Json.integer(v, -128, 127, "temperature_air");
+                    m.temperature_air = (byte) ConformanceJson.integer(v, -128, 127, "HIGH_LATENCY2.temperature_air");
                     break;
                 case "climb_rate":
-                    m.climb_rate = (byte) Json.integer(v, -128, 127, "climb_rate");
+                    m.climb_rate = (byte) ConformanceJson.integer(v, -128, 127, "HIGH_LATENCY2.climb_rate");
                     break;
                 case "battery":
-                    m.battery = (byte) Json.integer(v, -128, 127, "battery");
+                    m.battery = (byte) ConformanceJson.integer(v, -128, 127, "HIGH_LATENCY2.battery");
                     break;
                 case "wp_num":
-                    m.wp_num = (int) Json.integer(v, 0, 65535, "wp_num");
+                    m.wp_num = (int) ConformanceJson.integer(v, 0, 65535, "HIGH_LATENCY2.wp_num");
                     break;
                 case "failure_flags":
-                    m.failure_flags = (int) Json.integer(v, 0, 65535, "failure_flags");
+                    m.failure_flags = (int) ConformanceJson.integer(v, 0, 65535, "HIGH_LATENCY2.failure_flags");
                     break;
                 case "custom0":
-                    m.custom0 = (byte) Json.integer(v, -128, 127, "custom0");
+                    m.custom0 = (byte) ConformanceJson.integer(v, -128, 127, "HIGH_LATENCY2.custom0");
                     break;
                 case "custom1":
-                    m.custom1 = (byte) Json.integer(v, -128, 127, "custom1");
+                    m.custom1 = (byte) ConformanceJson.integer(v, -128, 127, "HIGH_LATENCY2.custom1");
                     break;
                 case "custom2":
-                    m.custom2 = (byte) Json.integer(v, -128, 127, "custom2");
+                    m.custom2 = (byte) ConformanceJson.integer(v, -128, 127, "HIGH_LATENCY2.custom2");
                     break;
                 default:
                     throw new Refusal("HIGH_LATENCY2 has no field '" + e.getKey() + "'");
@@ -10534,25 +10538,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "VIBRATION.time_usec");
                     break;
                 case "vibration_x":
-                    m.vibration_x = Json.f32(v, "vibration_x");
+                    m.vibration_x = ConformanceJson.f32(v, "VIBRATION.vibration_x");
                     break;
                 case "vibration_y":
-                    m.vibration_y = Json.f32(v, "vibration_y");
+                    m.vibration_y = ConformanceJson.f32(v, "VIBRATION.vibration_y");
                     break;
                 case "vibration_z":
-                    m.vibration_z = Json.f32(v, "vibration_z");
+                    m.vibration_z = ConformanceJson.f32(v, "VIBRATION.vibration_z");
                     break;
                 case "clipping_0":
-                    m.clipping_0 = Json.integer(v, 0, 4294967295L, "clipping_0");
+                    m.clipping_0 = ConformanceJson.integer(v, 0, 4294967295L, "VIBRATION.clipping_0");
                     break;
                 case "clipping_1":
-                    m.clipping_1 = Json.integer(v, 0, 4294967295L, "clipping_1");
+                    m.clipping_1 = ConformanceJson.integer(v, 0, 4294967295L, "VIBRATION.clipping_1");
                     break;
                 case "clipping_2":
-                    m.clipping_2 = Json.integer(v, 0, 4294967295L, "clipping_2");
+                    m.clipping_2 = ConformanceJson.integer(v, 0, 4294967295L, "VIBRATION.clipping_2");
                     break;
                 default:
                     throw new Refusal("VIBRATION has no field '" + e.getKey() + "'");
@@ -10567,37 +10571,37 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "latitude":
-                    m.latitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "latitude");
+                    m.latitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HOME_POSITION.latitude");
                     break;
                 case "longitude":
-                    m.longitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "longitude");
+                    m.longitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HOME_POSITION.longitude");
                     break;
                 case "altitude":
-                    m.altitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "altitude");
+                    m.altitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "HOME_POSITION.altitude");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "HOME_POSITION.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "HOME_POSITION.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "HOME_POSITION.z");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "HOME_POSITION.q");
                     break;
                 case "approach_x":
-                    m.approach_x = Json.f32(v, "approach_x");
+                    m.approach_x = ConformanceJson.f32(v, "HOME_POSITION.approach_x");
                     break;
                 case "approach_y":
-                    m.approach_y = Json.f32(v, "approach_y");
+                    m.approach_y = ConformanceJson.f32(v, "HOME_POSITION.approach_y");
                     break;
                 case "approach_z":
-                    m.approach_z = Json.f32(v, "approach_z");
+                    m.approach_z = ConformanceJson.f32(v, "HOME_POSITION.approach_z");
                     break;
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "HOME_POSITION.time_usec");
                     break;
                 default:
                     throw new Refusal("HOME_POSITION has no field '" + e.getKey() + "'");
@@ -10612,40 +10616,40 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "SET_HOME_POSITION.target_system");
                     break;
                 case "latitude":
-                    m.latitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "latitude");
+                    m.latitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "SET_HOME_POSITION.latitude");
                     break;
                 case "longitude":
-                    m.longitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "longitude");
+                    m.longitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "SET_HOME_POSITION.longitude");
                     break;
                 case "altitude":
-                    m.altitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "altitude");
+                    m.altitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "SET_HOME_POSITION.altitude");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "SET_HOME_POSITION.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "SET_HOME_POSITION.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "SET_HOME_POSITION.z");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "SET_HOME_POSITION.q");
                     break;
                 case "approach_x":
-                    m.approach_x = Json.f32(v, "approach_x");
+                    m.approach_x = ConformanceJson.f32(v, "SET_HOME_POSITION.approach_x");
                     break;
                 case "approach_y":
-                    m.approach_y = Json.f32(v, "approach_y");
+                    m.approach_y = ConformanceJson.f32(v, "SET_HOME_POSITION.approach_y");
                     break;
                 case "approach_z":
-                    m.approach_z = Json.f32(v, "approach_z");
+                    m.approach_z = ConformanceJson.f32(v, "SET_HOME_POSITION.approach_z");
                     break;
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "SET_HOME_POSITION.time_usec");
                     break;
                 default:
                     throw new Refusal("SET_HOME_POSITION has no field '" + e.getKey() + "'");
@@ -10660,10 +10664,10 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "message_id":
-                    m.message_id = (int) Json.integer(v, 0, 65535, "message_id");
+                    m.message_id = (int) ConformanceJson.integer(v, 0, 65535, "MESSAGE_INTERVAL.message_id");
                     break;
                 case "interval_us":
-                    m.interval_us = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "interval_us");
+                    m.interval_us = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "MESSAGE_INTERVAL.interval_us");
                     break;
                 default:
                     throw new Refusal("MESSAGE_INTERVAL has no field '" + e.getKey() + "'");
@@ -10678,10 +10682,10 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "vtol_state":
-                    m.vtol_state = (int) Json.integer(v, 0, 255, "vtol_state");
+                    m.vtol_state = (int) ConformanceJson.integer(v, 0, 255, "EXTENDED_SYS_STATE.vtol_state");
                     break;
                 case "landed_state":
-                    m.landed_state = (int) Json.integer(v, 0, 255, "landed_state");
+                    m.landed_state = (int) ConformanceJson.integer(v, 0, 255, "EXTENDED_SYS_STATE.landed_state");
                     break;
                 default:
                     throw new Refusal("EXTENDED_SYS_STATE has no field '" + e.getKey() + "'");
@@ -10696,43 +10700,43 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "ICAO_address":
-                    m.ICAO_address = Json.integer(v, 0, 4294967295L, "ICAO_address");
+                    m.ICAO_address = ConformanceJson.integer(v, 0, 4294967295L, "ADSB_VEHICLE.ICAO_address");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "ADSB_VEHICLE.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "ADSB_VEHICLE.lon");
                     break;
                 case "altitude_type":
-                    m.altitude_type = (int) Json.integer(v, 0, 255, "altitude_type");
+                    m.altitude_type = (int) ConformanceJson.integer(v, 0, 255, "ADSB_VEHICLE.altitude_type");
                     break;
                 case "altitude":
-                    m.altitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "altitude");
+                    m.altitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "ADSB_VEHICLE.altitude");
                     break;
                 case "heading":
-                    m.heading = (int) Json.integer(v, 0, 65535, "heading");
+                    m.heading = (int) ConformanceJson.integer(v, 0, 65535, "ADSB_VEHICLE.heading");
                     break;
                 case "hor_velocity":
-                    m.hor_velocity = (int) Json.integer(v, 0, 65535, "hor_velocity");
+                    m.hor_velocity = (int) ConformanceJson.integer(v, 0, 65535, "ADSB_VEHICLE.hor_velocity");
                     break;
                 case "ver_velocity":
-                    m.ver_velocity = (short) Json.integer(v, -32768, 32767, "ver_velocity");
+                    m.ver_velocity = (short) ConformanceJson.integer(v, -32768, 32767, "ADSB_VEHICLE.ver_velocity");
                     break;
                 case "callsign":
-                    m.callsign = Json.text(v, 9, "callsign");
+                    m.callsign = ConformanceJson.text(v, 9, "ADSB_VEHICLE.callsign");
                     break;
                 case "emitter_type":
-                    m.emitter_type = (int) Json.integer(v, 0, 255, "emitter_type");
+                    m.emitter_type = (int) ConformanceJson.integer(v, 0, 255, "ADSB_VEHICLE.emitter_type");
                     break;
                 case "tslc":
-                    m.tslc = (int) Json.integer(v, 0, 255, "tslc");
+                    m.tslc = (int) ConformanceJson.integer(v, 0, 255, "ADSB_VEHICLE.tslc");
                     break;
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 65535, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 65535, "ADSB_VEHICLE.flags");
                     break;
                 case "squawk":
-                    m.squawk = (int) Json.integer(v, 0, 65535, "squawk");
+                    m.squawk = (int) ConformanceJson.integer(v, 0, 65535, "ADSB_VEHICLE.squawk");
                     break;
                 default:
                     throw new Refusal("ADSB_VEHICLE has no field '" + e.getKey() + "'");
@@ -10747,25 +10751,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "src":
-                    m.src = (int) Json.integer(v, 0, 255, "src");
+                    m.src = (int) ConformanceJson.integer(v, 0, 255, "COLLISION.src");
                     break;
                 case "id":
-                    m.id = Json.integer(v, 0, 4294967295L, "id");
+                    m.id = ConformanceJson.integer(v, 0, 4294967295L, "COLLISION.id");
                     break;
                 case "action":
-                    m.action = (int) Json.integer(v, 0, 255, "action");
+                    m.action = (int) ConformanceJson.integer(v, 0, 255, "COLLISION.action");
                     break;
                 case "threat_level":
-                    m.threat_level = (int) Json.integer(v, 0, 255, "threat_level");
+                    m.threat_level = (int) ConformanceJson.integer(v, 0, 255, "COLLISION.threat_level");
                     break;
                 case "time_to_minimum_delta":
-                    m.time_to_minimum_delta = Json.f32(v, "time_to_minimum_delta");
+                    m.time_to_minimum_delta = ConformanceJson.f32(v, "COLLISION.time_to_minimum_delta");
                     break;
                 case "altitude_minimum_delta":
-                    m.altitude_minimum_delta = Json.f32(v, "altitude_minimum_delta");
+                    m.altitude_minimum_delta = ConformanceJson.f32(v, "COLLISION.altitude_minimum_delta");
                     break;
                 case "horizontal_minimum_delta":
-                    m.horizontal_minimum_delta = Json.f32(v, "horizontal_minimum_delta");
+                    m.horizontal_minimum_delta = ConformanceJson.f32(v, "COLLISION.horizontal_minimum_delta");
                     break;
                 default:
                     throw new Refusal("COLLISION has no field '" + e.getKey() + "'");
@@ -10780,19 +10784,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_network":
-                    m.target_network = (int) Json.integer(v, 0, 255, "target_network");
+                    m.target_network = (int) ConformanceJson.integer(v, 0, 255, "V2_EXTENSION.target_network");
                     break;
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "V2_EXTENSION.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "V2_EXTENSION.target_component");
                     break;
                 case "message_type":
-                    m.message_type = (int) Json.integer(v, 0, 65535, "message_type");
+                    m.message_type = (int) ConformanceJson.integer(v, 0, 65535, "V2_EXTENSION.message_type");
                     break;
                 case "payload":
-                    m.payload = Json.u8s(v, 249, "payload");
+                    m.payload = ConformanceJson.u8s(v, 249, "V2_EXTENSION.payload");
                     break;
                 default:
                     throw new Refusal("V2_EXTENSION has no field '" + e.getKey() + "'");
@@ -10807,16 +10811,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "address":
-                    m.address = (int) Json.integer(v, 0, 65535, "address");
+                    m.address = (int) ConformanceJson.integer(v, 0, 65535, "MEMORY_VECT.address");
                     break;
                 case "ver":
-                    m.ver = (int) Json.integer(v, 0, 255, "ver");
+                    m.ver = (int) ConformanceJson.integer(v, 0, 255, "MEMORY_VECT.ver");
                     break;
                 case "type":
-                    m.type = (int) Json.integer(v, 0, 255, "type");
+                    m.type = (int) ConformanceJson.integer(v, 0, 255, "MEMORY_VECT.type");
                     break;
                 case "value":
-                    m.value = Json.i8s(v, 32, "value");
+                    m.value = ConformanceJson.i8s(v, 32, "MEMORY_VECT.value");
                     break;
                 default:
                     throw new Refusal("MEMORY_VECT has no field '" + e.getKey() + "'");
@@ -10831,19 +10835,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "name":
-                    m.name = Json.text(v, 10, "name");
+                    m.name = ConformanceJson.text(v, 10, "DEBUG_VECT.name");
                     break;
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "DEBUG_VECT.time_usec");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "DEBUG_VECT.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "DEBUG_VECT.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "DEBUG_VECT.z");
                     break;
                 default:
                     throw new Refusal("DEBUG_VECT has no field '" + e.getKey() + "'");
@@ -10858,13 +10862,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "NAMED_VALUE_FLOAT.time_boot_ms");
                     break;
                 case "name":
-                    m.name = Json.text(v, 10, "name");
+                    m.name = ConformanceJson.text(v, 10, "NAMED_VALUE_FLOAT.name");
                     break;
                 case "value":
-                    m.value = Json.f32(v, "value");
+                    m.value = ConformanceJson.f32(v, "NAMED_VALUE_FLOAT.value");
                     break;
                 default:
                     throw new Refusal("NAMED_VALUE_FLOAT has no field '" + e.getKey() + "'");
@@ -10879,13 +10883,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "NAMED_VALUE_INT.time_boot_ms");
                     break;
                 case "name":
-                    m.name = Json.text(v, 10, "name");
+                    m.name = ConformanceJson.text(v, 10, "NAMED_VALUE_INT.name");
                     break;
                 case "value":
-                    m.value = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "value");
+                    m.value = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "NAMED_VALUE_INT.value");
                     break;
                 default:
                     throw new Refusal("NAMED_VALUE_INT has no field '" + e.getKey() + "'");
@@ -10900,16 +10904,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "severity":
-                    m.severity = (int) Json.integer(v, 0, 255, "severity");
+                    m.severity = (int) ConformanceJson.integer(v, 0, 255, "STATUSTEXT.severity");
                     break;
                 case "text":
-                    m.text = Json.text(v, 50, "text");
+                    m.text = ConformanceJson.text(v, 50, "STATUSTEXT.text");
                     break;
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 65535, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 65535, "STATUSTEXT.id");
                     break;
                 case "chunk_seq":
-                    m.chunk_seq = (int) Json.integer(v, 0, 255, "chunk_seq");
+                    m.chunk_seq = (int) ConformanceJson.integer(v, 0, 255, "STATUSTEXT.chunk_seq");
                     break;
                 default:
                     throw new Refusal("STATUSTEXT has no field '" + e.getKey() + "'");
@@ -10924,13 +10928,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "DEBUG.time_boot_ms");
                     break;
                 case "ind":
-                    m.ind = (int) Json.integer(v, 0, 255, "ind");
+                    m.ind = (int) ConformanceJson.integer(v, 0, 255, "DEBUG.ind");
                     break;
                 case "value":
-                    m.value = Json.f32(v, "value");
+                    m.value = ConformanceJson.f32(v, "DEBUG.value");
                     break;
                 default:
                     throw new Refusal("DEBUG has no field '" + e.getKey() + "'");
@@ -10945,16 +10949,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "SETUP_SIGNING.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "SETUP_SIGNING.target_component");
                     break;
                 case "secret_key":
-                    m.secret_key = Json.u8s(v, 32, "secret_key");
+                    m.secret_key = ConformanceJson.u8s(v, 32, "SETUP_SIGNING.secret_key");
                     break;
                 case "initial_timestamp":
-                    m.initial_timestamp = Json.uint64(v, "initial_timestamp");
+                    m.initial_timestamp = ConformanceJson.uint64(v, "SETUP_SIGNING.initial_timestamp");
                     break;
                 default:
                     throw new Refusal("SETUP_SIGNING has no field '" + e.getKey() + "'");
@@ -10969,13 +10973,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "BUTTON_CHANGE.time_boot_ms");
                     break;
                 case "last_change_ms":
-                    m.last_change_ms = Json.integer(v, 0, 4294967295L, "last_change_ms");
+                    m.last_change_ms = ConformanceJson.integer(v, 0, 4294967295L, "BUTTON_CHANGE.last_change_ms");
                     break;
                 case "state":
-                    m.state = (int) Json.integer(v, 0, 255, "state");
+                    m.state = (int) ConformanceJson.integer(v, 0, 255, "BUTTON_CHANGE.state");
                     break;
                 default:
                     throw new Refusal("BUTTON_CHANGE has no field '" + e.getKey() + "'");
@@ -10990,16 +10994,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "PLAY_TUNE.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "PLAY_TUNE.target_component");
                     break;
                 case "tune":
-                    m.tune = Json.text(v, 30, "tune");
+                    m.tune = ConformanceJson.text(v, 30, "PLAY_TUNE.tune");
                     break;
                 case "tune2":
-                    m.tune2 = Json.text(v, 200, "tune2");
+                    m.tune2 = ConformanceJson.text(v, 200, "PLAY_TUNE.tune2");
                     break;
                 default:
                     throw new Refusal("PLAY_TUNE has no field '" + e.getKey() + "'");
@@ -11014,49 +11018,49 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "CAMERA_INFORMATION.time_boot_ms");
                     break;
                 case "vendor_name":
-                    m.vendor_name = Json.u8s(v, 32, "vendor_name");
+                    m.vendor_name = ConformanceJson.u8s(v, 32, "CAMERA_INFORMATION.vendor_name");
                     break;
                 case "model_name":
-                    m.model_name = Json.u8s(v, 32, "model_name");
+                    m.model_name = ConformanceJson.u8s(v, 32, "CAMERA_INFORMATION.model_name");
                     break;
                 case "firmware_version":
-                    m.firmware_version = Json.integer(v, 0, 4294967295L, "firmware_version");
+                    m.firmware_version = ConformanceJson.integer(v, 0, 4294967295L, "CAMERA_INFORMATION.firmware_version");
                     break;
                 case "focal_length":
-                    m.focal_length = Json.f32(v, "focal_length");
+                    m.focal_length = ConformanceJson.f32(v, "CAMERA_INFORMATION.focal_length");
                     break;
                 case "sensor_size_h":
-                    m.sensor_size_h = Json.f32(v, "sensor_size_h");
+                    m.sensor_size_h = ConformanceJson.f32(v, "CAMERA_INFORMATION.sensor_size_h");
                     break;
                 case "sensor_size_v":
-                    m.sensor_size_v = Json.f32(v, "sensor_size_v");
+                    m.sensor_size_v = ConformanceJson.f32(v, "CAMERA_INFORMATION.sensor_size_v");
                     break;
                 case "resolution_h":
-                    m.resolution_h = (int) Json.integer(v, 0, 65535, "resolution_h");
+                    m.resolution_h = (int) ConformanceJson.integer(v, 0, 65535, "CAMERA_INFORMATION.resolution_h");
                     break;
                 case "resolution_v":
-                    m.resolution_v = (int) Json.integer(v, 0, 65535, "resolution_v");
+                    m.resolution_v = (int) ConformanceJson.integer(v, 0, 65535, "CAMERA_INFORMATION.resolution_v");
                     break;
                 case "lens_id":
-                    m.lens_id = (int) Json.integer(v, 0, 255, "lens_id");
+                    m.lens_id = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_INFORMATION.lens_id");
                     break;
                 case "flags":
-                    m.flags = Json.integer(v, 0, 4294967295L, "flags");
+                    m.flags = ConformanceJson.integer(v, 0, 4294967295L, "CAMERA_INFORMATION.flags");
                     break;
                 case "cam_definition_version":
-                    m.cam_definition_version = (int) Json.integer(v, 0, 65535, "cam_definition_version");
+                    m.cam_definition_version = (int) ConformanceJson.integer(v, 0, 65535, "CAMERA_INFORMATION.cam_definition_version");
                     break;
                 case "cam_definition_uri":
-                    m.cam_definition_uri = Json.text(v, 140, "cam_definition_uri");
+                    m.cam_definition_uri = ConformanceJson.text(v, 140, "CAMERA_INFORMATION.cam_definition_uri");
                     break;
                 case "gimbal_device_id":
-                    m.gimbal_device_id = (int) Json.integer(v, 0, 255, "gimbal_device_id");
+                    m.gimbal_device_id = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_INFORMATION.gimbal_device_id");
                     break;
                 case "camera_device_id":
-                    m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
+                    m.camera_device_id = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_INFORMATION.camera_device_id");
                     break;
                 default:
                     throw new Refusal("CAMERA_INFORMATION has no field '" + e.getKey() + "'");
@@ -11071,19 +11075,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "CAMERA_SETTINGS.time_boot_ms");
                     break;
                 case "mode_id":
-                    m.mode_id = (int) Json.integer(v, 0, 255, "mode_id");
+                    m.mode_id = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_SETTINGS.mode_id");
                     break;
                 case "zoomLevel":
-                    m.zoomLevel = Json.f32(v, "zoomLevel");
+                    m.zoomLevel = ConformanceJson.f32(v, "CAMERA_SETTINGS.zoomLevel");
                     break;
                 case "focusLevel":
-                    m.focusLevel = Json.f32(v, "focusLevel");
+                    m.focusLevel = ConformanceJson.f32(v, "CAMERA_SETTINGS.focusLevel");
                     break;
                 case "camera_device_id":
-                    m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
+                    m.camera_device_id = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_SETTINGS.camera_device_id");
                     break;
                 default:
                     throw new Refusal("CAMERA_SETTINGS has no field '" + e.getKey() + "'");
@@ -11098,40 +11102,40 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "STORAGE_INFORMATION.time_boot_ms");
                     break;
                 case "storage_id":
-                    m.storage_id = (int) Json.integer(v, 0, 255, "storage_id");
+                    m.storage_id = (int) ConformanceJson.integer(v, 0, 255, "STORAGE_INFORMATION.storage_id");
                     break;
                 case "storage_count":
-                    m.storage_count = (int) Json.integer(v, 0, 255, "storage_count");
+                    m.storage_count = (int) ConformanceJson.integer(v, 0, 255, "STORAGE_INFORMATION.storage_count");
                     break;
                 case "status":
-                    m.status = (int) Json.integer(v, 0, 255, "status");
+                    m.status = (int) ConformanceJson.integer(v, 0, 255, "STORAGE_INFORMATION.status");
                     break;
                 case "total_capacity":
-                    m.total_capacity = Json.f32(v, "total_capacity");
+                    m.total_capacity = ConformanceJson.f32(v, "STORAGE_INFORMATION.total_capacity");
                     break;
                 case "used_capacity":
-                    m.used_capacity = Json.f32(v, "used_capacity");
+                    m.used_capacity = ConformanceJson.f32(v, "STORAGE_INFORMATION.used_capacity");
                     break;
                 case "available_capacity":
-                    m.available_capacity = Json.f32(v, "available_capacity");
+                    m.available_capacity = ConformanceJson.f32(v, "STORAGE_INFORMATION.available_capacity");
                     break;
                 case "read_speed":
-                    m.read_speed = Json.f32(v, "read_speed");
+                    m.read_speed = ConformanceJson.f32(v, "STORAGE_INFORMATION.read_speed");
                     break;
                 case "write_speed":
-                    m.write_speed = Json.f32(v, "write_speed");
+                    m.write_speed = ConformanceJson.f32(v, "STORAGE_INFORMATION.write_speed");
                     break;
                 case "type":
-                    m.type = (int) Json.integer(v, 0, 255, "type");
+                    m.type = (int) ConformanceJson.integer(v, 0, 255, "STORAGE_INFORMATION.type");
                     break;
                 case "name":
-                    m.name = Json.text(v, 32, "name");
+                    m.name = ConformanceJson.text(v, 32, "STORAGE_INFORMATION.name");
                     break;
                 case "storage_usage":
-                    m.storage_usage = (int) Json.integer(v, 0, 255, "storage_usage");
+                    m.storage_usage = (int) ConformanceJson.integer(v, 0, 255, "STORAGE_INFORMATION.storage_usage");
                     break;
                 default:
                     throw new Refusal("STORAGE_INFORMATION has no field '" + e.getKey() + "'");
@@ -11146,28 +11150,28 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "CAMERA_CAPTURE_STATUS.time_boot_ms");
                     break;
                 case "image_status":
-                    m.image_status = (int) Json.integer(v, 0, 255, "image_status");
+                    m.image_status = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_CAPTURE_STATUS.image_status");
                     break;
                 case "video_status":
-                    m.video_status = (int) Json.integer(v, 0, 255, "video_status");
+                    m.video_status = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_CAPTURE_STATUS.video_status");
                     break;
                 case "image_interval":
-                    m.image_interval = Json.f32(v, "image_interval");
+                    m.image_interval = ConformanceJson.f32(v, "CAMERA_CAPTURE_STATUS.image_interval");
                     break;
                 case "recording_time_ms":
-                    m.recording_time_ms = Json.integer(v, 0, 4294967295L, "recording_time_ms");
+                    m.recording_time_ms = ConformanceJson.integer(v, 0, 4294967295L, "CAMERA_CAPTURE_STATUS.recording_time_ms");
                     break;
                 case "available_capacity":
-                    m.available_capacity = Json.f32(v, "available_capacity");
+                    m.available_capacity = ConformanceJson.f32(v, "CAMERA_CAPTURE_STATUS.available_capacity");
                     break;
                 case "image_count":
-                    m.image_count = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "image_count");
+                    m.image_count = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "CAMERA_CAPTURE_STATUS.image_count");
                     break;
                 case "camera_device_id":
-                    m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
+                    m.camera_device_id = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_CAPTURE_STATUS.camera_device_id");
                     break;
                 default:
                     throw new Refusal("CAMERA_CAPTURE_STATUS has no field '" + e.getKey() + "'");
@@ -11182,37 +11186,37 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "CAMERA_IMAGE_CAPTURED.time_boot_ms");
                     break;
                 case "time_utc":
-                    m.time_utc = Json.uint64(v, "time_utc");
+                    m.time_utc = ConformanceJson.uint64(v, "CAMERA_IMAGE_CAPTURED.time_utc");
                     break;
                 case "camera_id":
-                    m.camera_id = (int) Json.integer(v, 0, 255, "camera_id");
+                    m.camera_id = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_IMAGE_CAPTURED.camera_id");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "CAMERA_IMAGE_CAPTURED.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "CAMERA_IMAGE_CAPTURED.lon");
                     break;
                 case "alt":
-                    m.alt = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "alt");
+                    m.alt = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "CAMERA_IMAGE_CAPTURED.alt");
                     break;
                 case "relative_alt":
-                    m.relative_alt = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "relative_alt");
+                    m.relative_alt = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "CAMERA_IMAGE_CAPTURED.relative_alt");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "CAMERA_IMAGE_CAPTURED.q");
                     break;
                 case "image_index":
-                    m.image_index = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "image_index");
+                    m.image_index = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "CAMERA_IMAGE_CAPTURED.image_index");
                     break;
                 case "capture_result":
-                    m.capture_result = (byte) Json.integer(v, -128, 127, "capture_result");
+                    m.capture_result = (byte) ConformanceJson.integer(v, -128, 127, "CAMERA_IMAGE_CAPTURED.capture_result");
                     break;
                 case "file_url":
-                    m.file_url = Json.text(v, 205, "file_url");
+                    m.file_url = ConformanceJson.text(v, 205, "CAMERA_IMAGE_CAPTURED.file_url");
                     break;
                 default:
                     throw new Refusal("CAMERA_IMAGE_CAPTURED has no field '" + e.getKey() + "'");
@@ -11227,19 +11231,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "FLIGHT_INFORMATION.time_boot_ms");
                     break;
                 case "arming_time_utc":
-                    m.arming_time_utc = Json.uint64(v, "arming_time_utc");
+                    m.arming_time_utc = ConformanceJson.uint64(v, "FLIGHT_INFORMATION.arming_time_utc");
                     break;
                 case "takeoff_time_utc":
-                    m.takeoff_time_utc = Json.uint64(v, "takeoff_time_utc");
+                    m.takeoff_time_utc = ConformanceJson.uint64(v, "FLIGHT_INFORMATION.takeoff_time_utc");
                     break;
                 case "flight_uuid":
-                    m.flight_uuid = Json.uint64(v, "flight_uuid");
+                    m.flight_uuid = ConformanceJson.uint64(v, "FLIGHT_INFORMATION.flight_uuid");
                     break;
                 case "landing_time":
-                    m.landing_time = Json.integer(v, 0, 4294967295L, "landing_time");
+                    m.landing_time = ConformanceJson.integer(v, 0, 4294967295L, "FLIGHT_INFORMATION.landing_time");
                     break;
                 default:
                     throw new Refusal("FLIGHT_INFORMATION has no field '" + e.getKey() + "'");
@@ -11254,19 +11258,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "MOUNT_ORIENTATION.time_boot_ms");
                     break;
                 case "roll":
-                    m.roll = Json.f32(v, "roll");
+                    m.roll = ConformanceJson.f32(v, "MOUNT_ORIENTATION.roll");
                     break;
                 case "pitch":
-                    m.pitch = Json.f32(v, "pitch");
+                    m.pitch = ConformanceJson.f32(v, "MOUNT_ORIENTATION.pitch");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "MOUNT_ORIENTATION.yaw");
                     break;
                 case "yaw_absolute":
-                    m.yaw_absolute = Json.f32(v, "yaw_absolute");
+                    m.yaw_absolute = ConformanceJson.f32(v, "MOUNT_ORIENTATION.yaw_absolute");
                     break;
                 default:
                     throw new Refusal("MOUNT_ORIENTATION has no field '" + e.getKey() + "'");
@@ -11281,22 +11285,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "LOGGING_DATA.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "LOGGING_DATA.target_component");
                     break;
                 case "sequence":
-                    m.sequence = (int) Json.integer(v, 0, 65535, "sequence");
+                    m.sequence = (int) ConformanceJson.integer(v, 0, 65535, "LOGGING_DATA.sequence");
                     break;
                 case "length":
-                    m.length = (int) Json.integer(v, 0, 255, "length");
+                    m.length = (int) ConformanceJson.integer(v, 0, 255, "LOGGING_DATA.length");
                     break;
                 case "first_message_offset":
-                    m.first_message_offset = (int) Json.integer(v, 0, 255, "first_message_offset");
+                    m.first_message_offset = (int) ConformanceJson.integer(v, 0, 255, "LOGGING_DATA.first_message_offset");
                     break;
                 case "data":
-                    m.data = Json.u8s(v, 249, "data");
+                    m.data = ConformanceJson.u8s(v, 249, "LOGGING_DATA.data");
                     break;
                 default:
                     throw new Refusal("LOGGING_DATA has no field '" + e.getKey() + "'");
@@ -11311,22 +11315,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "LOGGING_DATA_ACKED.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "LOGGING_DATA_ACKED.target_component");
                     break;
                 case "sequence":
-                    m.sequence = (int) Json.integer(v, 0, 65535, "sequence");
+                    m.sequence = (int) ConformanceJson.integer(v, 0, 65535, "LOGGING_DATA_ACKED.sequence");
                     break;
                 case "length":
-                    m.length = (int) Json.integer(v, 0, 255, "length");
+                    m.length = (int) ConformanceJson.integer(v, 0, 255, "LOGGING_DATA_ACKED.length");
                     break;
                 case "first_message_offset":
-                    m.first_message_offset = (int) Json.integer(v, 0, 255, "first_message_offset");
+                    m.first_message_offset = (int) ConformanceJson.integer(v, 0, 255, "LOGGING_DATA_ACKED.first_message_offset");
                     break;
                 case "data":
-                    m.data = Json.u8s(v, 249, "data");
+                    m.data = ConformanceJson.u8s(v, 249, "LOGGING_DATA_ACKED.data");
                     break;
                 default:
                     throw new Refusal("LOGGING_DATA_ACKED has no field '" + e.getKey() + "'");
@@ -11341,13 +11345,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "LOGGING_ACK.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "LOGGING_ACK.target_component");
                     break;
                 case "sequence":
-                    m.sequence = (int) Json.integer(v, 0, 65535, "sequence");
+                    m.sequence = (int) ConformanceJson.integer(v, 0, 65535, "LOGGING_ACK.sequence");
                     break;
                 default:
                     throw new Refusal("LOGGING_ACK has no field '" + e.getKey() + "'");
@@ -11362,46 +11366,46 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "stream_id":
-                    m.stream_id = (int) Json.integer(v, 0, 255, "stream_id");
+                    m.stream_id = (int) ConformanceJson.integer(v, 0, 255, "VIDEO_STREAM_INFORMATION.stream_id");
                     break;
                 case "count":
-                    m.count = (int) Json.integer(v, 0, 255, "count");
+                    m.count = (int) ConformanceJson.integer(v, 0, 255, "VIDEO_STREAM_INFORMATION.count");
                     break;
                 case "type":
-                    m.type = (int) Json.integer(v, 0, 255, "type");
+                    m.type = (int) ConformanceJson.integer(v, 0, 255, "VIDEO_STREAM_INFORMATION.type");
                     break;
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 65535, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 65535, "VIDEO_STREAM_INFORMATION.flags");
                     break;
                 case "framerate":
-                    m.framerate = Json.f32(v, "framerate");
+                    m.framerate = ConformanceJson.f32(v, "VIDEO_STREAM_INFORMATION.framerate");
                     break;
                 case "resolution_h":
-                    m.resolution_h = (int) Json.integer(v, 0, 65535, "resolution_h");
+                    m.resolution_h = (int) ConformanceJson.integer(v, 0, 65535, "VIDEO_STREAM_INFORMATION.resolution_h");
                     break;
                 case "resolution_v":
-                    m.resolution_v = (int) Json.integer(v, 0, 65535, "resolution_v");
+                    m.resolution_v = (int) ConformanceJson.integer(v, 0, 65535, "VIDEO_STREAM_INFORMATION.resolution_v");
                     break;
                 case "bitrate":
-                    m.bitrate = Json.integer(v, 0, 4294967295L, "bitrate");
+                    m.bitrate = ConformanceJson.integer(v, 0, 4294967295L, "VIDEO_STREAM_INFORMATION.bitrate");
                     break;
                 case "rotation":
-                    m.rotation = (int) Json.integer(v, 0, 65535, "rotation");
+                    m.rotation = (int) ConformanceJson.integer(v, 0, 65535, "VIDEO_STREAM_INFORMATION.rotation");
                     break;
                 case "hfov":
-                    m.hfov = (int) Json.integer(v, 0, 65535, "hfov");
+                    m.hfov = (int) ConformanceJson.integer(v, 0, 65535, "VIDEO_STREAM_INFORMATION.hfov");
                     break;
                 case "name":
-                    m.name = Json.text(v, 32, "name");
+                    m.name = ConformanceJson.text(v, 32, "VIDEO_STREAM_INFORMATION.name");
                     break;
                 case "uri":
-                    m.uri = Json.text(v, 160, "uri");
+                    m.uri = ConformanceJson.text(v, 160, "VIDEO_STREAM_INFORMATION.uri");
                     break;
                 case "encoding":
-                    m.encoding = (int) Json.integer(v, 0, 255, "encoding");
+                    m.encoding = (int) ConformanceJson.integer(v, 0, 255, "VIDEO_STREAM_INFORMATION.encoding");
                     break;
                 case "camera_device_id":
-                    m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
+                    m.camera_device_id = (int) ConformanceJson.integer(v, 0, 255, "VIDEO_STREAM_INFORMATION.camera_device_id");
                     break;
                 default:
                     throw new Refusal("VIDEO_STREAM_INFORMATION has no field '" + e.getKey() + "'");
@@ -11416,31 +11420,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "stream_id":
-                    m.stream_id = (int) Json.integer(v, 0, 255, "stream_id");
+                    m.stream_id = (int) ConformanceJson.integer(v, 0, 255, "VIDEO_STREAM_STATUS.stream_id");
                     break;
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 65535, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 65535, "VIDEO_STREAM_STATUS.flags");
                     break;
                 case "framerate":
-                    m.framerate = Json.f32(v, "framerate");
+                    m.framerate = ConformanceJson.f32(v, "VIDEO_STREAM_STATUS.framerate");
                     break;
                 case "resolution_h":
-                    m.resolution_h = (int) Json.integer(v, 0, 65535, "resolution_h");
+                    m.resolution_h = (int) ConformanceJson.integer(v, 0, 65535, "VIDEO_STREAM_STATUS.resolution_h");
                     break;
                 case "resolution_v":
-                    m.resolution_v = (int) Json.integer(v, 0, 65535, "resolution_v");
+                    m.resolution_v = (int) ConformanceJson.integer(v, 0, 65535, "VIDEO_STREAM_STATUS.resolution_v");
                     break;
                 case "bitrate":
-                    m.bitrate = Json.integer(v, 0, 4294967295L, "bitrate");
+                    m.bitrate = ConformanceJson.integer(v, 0, 4294967295L, "VIDEO_STREAM_STATUS.bitrate");
                     break;
                 case "rotation":
-                    m.rotation = (int) Json.integer(v, 0, 65535, "rotation");
+                    m.rotation = (int) ConformanceJson.integer(v, 0, 65535, "VIDEO_STREAM_STATUS.rotation");
                     break;
                 case "hfov":
-                    m.hfov = (int) Json.integer(v, 0, 65535, "hfov");
+                    m.hfov = (int) ConformanceJson.integer(v, 0, 65535, "VIDEO_STREAM_STATUS.hfov");
                     break;
                 case "camera_device_id":
-                    m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
+                    m.camera_device_id = (int) ConformanceJson.integer(v, 0, 255, "VIDEO_STREAM_STATUS.camera_device_id");
                     break;
                 default:
                     throw new Refusal("VIDEO_STREAM_STATUS has no field '" + e.getKey() + "'");
@@ -11455,37 +11459,37 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "CAMERA_FOV_STATUS.time_boot_ms");
                     break;
                 case "lat_camera":
-                    m.lat_camera = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat_camera");
+                    m.lat_camera = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "CAMERA_FOV_STATUS.lat_camera");
                     break;
                 case "lon_camera":
-                    m.lon_camera = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon_camera");
+                    m.lon_camera = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "CAMERA_FOV_STATUS.lon_camera");
                     break;
                 case "alt_camera":
-                    m.alt_camera = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "alt_camera");
+                    m.alt_camera = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "CAMERA_FOV_STATUS.alt_camera");
                     break;
                 case "lat_image":
-                    m.lat_image = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat_image");
+                    m.lat_image = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "CAMERA_FOV_STATUS.lat_image");
                     break;
                 case "lon_image":
-                    m.lon_image = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon_image");
+                    m.lon_image = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "CAMERA_FOV_STATUS.lon_image");
                     break;
                 case "alt_image":
-                    m.alt_image = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "alt_image");
+                    m.alt_image = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "CAMERA_FOV_STATUS.alt_image");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "CAMERA_FOV_STATUS.q");
                     break;
                 case "hfov":
-                    m.hfov = Json.f32(v, "hfov");
+                    m.hfov = ConformanceJson.f32(v, "CAMERA_FOV_STATUS.hfov");
                     break;
                 case "vfov":
-                    m.vfov = Json.f32(v, "vfov");
+                    m.vfov = ConformanceJson.f32(v, "CAMERA_FOV_STATUS.vfov");
                     break;
                 case "camera_device_id":
-                    m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
+                    m.camera_device_id = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_FOV_STATUS.camera_device_id");
                     break;
                 default:
                     throw new Refusal("CAMERA_FOV_STATUS has no field '" + e.getKey() + "'");
@@ -11500,37 +11504,37 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "tracking_status":
-                    m.tracking_status = (int) Json.integer(v, 0, 255, "tracking_status");
+                    m.tracking_status = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_TRACKING_IMAGE_STATUS.tracking_status");
                     break;
                 case "tracking_mode":
-                    m.tracking_mode = (int) Json.integer(v, 0, 255, "tracking_mode");
+                    m.tracking_mode = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_TRACKING_IMAGE_STATUS.tracking_mode");
                     break;
                 case "target_data":
-                    m.target_data = (int) Json.integer(v, 0, 255, "target_data");
+                    m.target_data = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_TRACKING_IMAGE_STATUS.target_data");
                     break;
                 case "point_x":
-                    m.point_x = Json.f32(v, "point_x");
+                    m.point_x = ConformanceJson.f32(v, "CAMERA_TRACKING_IMAGE_STATUS.point_x");
                     break;
                 case "point_y":
-                    m.point_y = Json.f32(v, "point_y");
+                    m.point_y = ConformanceJson.f32(v, "CAMERA_TRACKING_IMAGE_STATUS.point_y");
                     break;
                 case "radius":
-                    m.radius = Json.f32(v, "radius");
+                    m.radius = ConformanceJson.f32(v, "CAMERA_TRACKING_IMAGE_STATUS.radius");
                     break;
                 case "rec_top_x":
-                    m.rec_top_x = Json.f32(v, "rec_top_x");
+                    m.rec_top_x = ConformanceJson.f32(v, "CAMERA_TRACKING_IMAGE_STATUS.rec_top_x");
                     break;
                 case "rec_top_y":
-                    m.rec_top_y = Json.f32(v, "rec_top_y");
+                    m.rec_top_y = ConformanceJson.f32(v, "CAMERA_TRACKING_IMAGE_STATUS.rec_top_y");
                     break;
                 case "rec_bottom_x":
-                    m.rec_bottom_x = Json.f32(v, "rec_bottom_x");
+                    m.rec_bottom_x = ConformanceJson.f32(v, "CAMERA_TRACKING_IMAGE_STATUS.rec_bottom_x");
                     break;
                 case "rec_bottom_y":
-                    m.rec_bottom_y = Json.f32(v, "rec_bottom_y");
+                    m.rec_bottom_y = ConformanceJson.f32(v, "CAMERA_TRACKING_IMAGE_STATUS.rec_bottom_y");
                     break;
                 case "camera_device_id":
-                    m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
+                    m.camera_device_id = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_TRACKING_IMAGE_STATUS.camera_device_id");
                     break;
                 default:
                     throw new Refusal("CAMERA_TRACKING_IMAGE_STATUS has no field '" + e.getKey() + "'");
@@ -11545,46 +11549,46 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "tracking_status":
-                    m.tracking_status = (int) Json.integer(v, 0, 255, "tracking_status");
+                    m.tracking_status = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_TRACKING_GEO_STATUS.tracking_status");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "CAMERA_TRACKING_GEO_STATUS.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "CAMERA_TRACKING_GEO_STATUS.lon");
                     break;
                 case "alt":
-                    m.alt = Json.f32(v, "alt");
+                    m.alt = ConformanceJson.f32(v, "CAMERA_TRACKING_GEO_STATUS.alt");
                     break;
                 case "h_acc":
-                    m.h_acc = Json.f32(v, "h_acc");
+                    m.h_acc = ConformanceJson.f32(v, "CAMERA_TRACKING_GEO_STATUS.h_acc");
                     break;
                 case "v_acc":
-                    m.v_acc = Json.f32(v, "v_acc");
+                    m.v_acc = ConformanceJson.f32(v, "CAMERA_TRACKING_GEO_STATUS.v_acc");
                     break;
                 case "vel_n":
-                    m.vel_n = Json.f32(v, "vel_n");
+                    m.vel_n = ConformanceJson.f32(v, "CAMERA_TRACKING_GEO_STATUS.vel_n");
                     break;
                 case "vel_e":
-                    m.vel_e = Json.f32(v, "vel_e");
+                    m.vel_e = ConformanceJson.f32(v, "CAMERA_TRACKING_GEO_STATUS.vel_e");
                     break;
                 case "vel_d":
-                    m.vel_d = Json.f32(v, "vel_d");
+                    m.vel_d = ConformanceJson.f32(v, "CAMERA_TRACKING_GEO_STATUS.vel_d");
                     break;
                 case "vel_acc":
-                    m.vel_acc = Json.f32(v, "vel_acc");
+                    m.vel_acc = ConformanceJson.f32(v, "CAMERA_TRACKING_GEO_STATUS.vel_acc");
                     break;
                 case "dist":
-                    m.dist = Json.f32(v, "dist");
+                    m.dist = ConformanceJson.f32(v, "CAMERA_TRACKING_GEO_STATUS.dist");
                     break;
                 case "hdg":
-                    m.hdg = Json.f32(v, "hdg");
+                    m.hdg = ConformanceJson.f32(v, "CAMERA_TRACKING_GEO_STATUS.hdg");
                     break;
                 case "hdg_acc":
-                    m.hdg_acc = Json.f32(v, "hdg_acc");
+                    m.hdg_acc = ConformanceJson.f32(v, "CAMERA_TRACKING_GEO_STATUS.hdg_acc");
                     break;
                 case "camera_device_id":
-                    m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
+                    m.camera_device_id = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_TRACKING_GEO_STATUS.camera_device_id");
                     break;
                 default:
                     throw new Refusal("CAMERA_TRACKING_GEO_STATUS has no field '" + e.getKey() + "'");
@@ -11599,31 +11603,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "CAMERA_THERMAL_RANGE.time_boot_ms");
                     break;
                 case "stream_id":
-                    m.stream_id = (int) Json.integer(v, 0, 255, "stream_id");
+                    m.stream_id = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_THERMAL_RANGE.stream_id");
                     break;
                 case "camera_device_id":
-                    m.camera_device_id = (int) Json.integer(v, 0, 255, "camera_device_id");
+                    m.camera_device_id = (int) ConformanceJson.integer(v, 0, 255, "CAMERA_THERMAL_RANGE.camera_device_id");
                     break;
                 case "max":
-                    m.max = Json.f32(v, "max");
+                    m.max = ConformanceJson.f32(v, "CAMERA_THERMAL_RANGE.max");
                     break;
                 case "max_point_x":
-                    m.max_point_x = Json.f32(v, "max_point_x");
+                    m.max_point_x = ConformanceJson.f32(v, "CAMERA_THERMAL_RANGE.max_point_x");
                     break;
                 case "max_point_y":
-                    m.max_point_y = Json.f32(v, "max_point_y");
+                    m.max_point_y = ConformanceJson.f32(v, "CAMERA_THERMAL_RANGE.max_point_y");
                     break;
                 case "min":
-                    m.min = Json.f32(v, "min");
+                    m.min = ConformanceJson.f32(v, "CAMERA_THERMAL_RANGE.min");
                     break;
                 case "min_point_x":
-                    m.min_point_x = Json.f32(v, "min_point_x");
+                    m.min_point_x = ConformanceJson.f32(v, "CAMERA_THERMAL_RANGE.min_point_x");
                     break;
                 case "min_point_y":
-                    m.min_point_y = Json.f32(v, "min_point_y");
+                    m.min_point_y = ConformanceJson.f32(v, "CAMERA_THERMAL_RANGE.min_point_y");
                     break;
                 default:
                     throw new Refusal("CAMERA_THERMAL_RANGE has no field '" + e.getKey() + "'");
@@ -11638,31 +11642,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "GIMBAL_MANAGER_INFORMATION.time_boot_ms");
                     break;
                 case "cap_flags":
-                    m.cap_flags = Json.integer(v, 0, 4294967295L, "cap_flags");
+                    m.cap_flags = ConformanceJson.integer(v, 0, 4294967295L, "GIMBAL_MANAGER_INFORMATION.cap_flags");
                     break;
                 case "gimbal_device_id":
-                    m.gimbal_device_id = (int) Json.integer(v, 0, 255, "gimbal_device_id");
+                    m.gimbal_device_id = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_INFORMATION.gimbal_device_id");
                     break;
                 case "roll_min":
-                    m.roll_min = Json.f32(v, "roll_min");
+                    m.roll_min = ConformanceJson.f32(v, "GIMBAL_MANAGER_INFORMATION.roll_min");
                     break;
                 case "roll_max":
-                    m.roll_max = Json.f32(v, "roll_max");
+                    m.roll_max = ConformanceJson.f32(v, "GIMBAL_MANAGER_INFORMATION.roll_max");
                     break;
                 case "pitch_min":
-                    m.pitch_min = Json.f32(v, "pitch_min");
+                    m.pitch_min = ConformanceJson.f32(v, "GIMBAL_MANAGER_INFORMATION.pitch_min");
                     break;
                 case "pitch_max":
-                    m.pitch_max = Json.f32(v, "pitch_max");
+                    m.pitch_max = ConformanceJson.f32(v, "GIMBAL_MANAGER_INFORMATION.pitch_max");
                     break;
                 case "yaw_min":
-                    m.yaw_min = Json.f32(v, "yaw_min");
+                    m.yaw_min = ConformanceJson.f32(v, "GIMBAL_MANAGER_INFORMATION.yaw_min");
                     break;
                 case "yaw_max":
-                    m.yaw_max = Json.f32(v, "yaw_max");
+                    m.yaw_max = ConformanceJson.f32(v, "GIMBAL_MANAGER_INFORMATION.yaw_max");
                     break;
                 default:
                     throw new Refusal("GIMBAL_MANAGER_INFORMATION has no field '" + e.getKey() + "'");
@@ -11677,25 +11681,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "GIMBAL_MANAGER_STATUS.time_boot_ms");
                     break;
                 case "flags":
-                    m.flags = Json.integer(v, 0, 4294967295L, "flags");
+                    m.flags = ConformanceJson.integer(v, 0, 4294967295L, "GIMBAL_MANAGER_STATUS.flags");
                     break;
                 case "gimbal_device_id":
-                    m.gimbal_device_id = (int) Json.integer(v, 0, 255, "gimbal_device_id");
+                    m.gimbal_device_id = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_STATUS.gimbal_device_id");
                     break;
                 case "primary_control_sysid":
-                    m.primary_control_sysid = (int) Json.integer(v, 0, 255, "primary_control_sysid");
+                    m.primary_control_sysid = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_STATUS.primary_control_sysid");
                     break;
                 case "primary_control_compid":
-                    m.primary_control_compid = (int) Json.integer(v, 0, 255, "primary_control_compid");
+                    m.primary_control_compid = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_STATUS.primary_control_compid");
                     break;
                 case "secondary_control_sysid":
-                    m.secondary_control_sysid = (int) Json.integer(v, 0, 255, "secondary_control_sysid");
+                    m.secondary_control_sysid = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_STATUS.secondary_control_sysid");
                     break;
                 case "secondary_control_compid":
-                    m.secondary_control_compid = (int) Json.integer(v, 0, 255, "secondary_control_compid");
+                    m.secondary_control_compid = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_STATUS.secondary_control_compid");
                     break;
                 default:
                     throw new Refusal("GIMBAL_MANAGER_STATUS has no field '" + e.getKey() + "'");
@@ -11710,28 +11714,28 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_SET_ATTITUDE.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_SET_ATTITUDE.target_component");
                     break;
                 case "flags":
-                    m.flags = Json.integer(v, 0, 4294967295L, "flags");
+                    m.flags = ConformanceJson.integer(v, 0, 4294967295L, "GIMBAL_MANAGER_SET_ATTITUDE.flags");
                     break;
                 case "gimbal_device_id":
-                    m.gimbal_device_id = (int) Json.integer(v, 0, 255, "gimbal_device_id");
+                    m.gimbal_device_id = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_SET_ATTITUDE.gimbal_device_id");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "GIMBAL_MANAGER_SET_ATTITUDE.q");
                     break;
                 case "angular_velocity_x":
-                    m.angular_velocity_x = Json.f32(v, "angular_velocity_x");
+                    m.angular_velocity_x = ConformanceJson.f32(v, "GIMBAL_MANAGER_SET_ATTITUDE.angular_velocity_x");
                     break;
                 case "angular_velocity_y":
-                    m.angular_velocity_y = Json.f32(v, "angular_velocity_y");
+                    m.angular_velocity_y = ConformanceJson.f32(v, "GIMBAL_MANAGER_SET_ATTITUDE.angular_velocity_y");
                     break;
                 case "angular_velocity_z":
-                    m.angular_velocity_z = Json.f32(v, "angular_velocity_z");
+                    m.angular_velocity_z = ConformanceJson.f32(v, "GIMBAL_MANAGER_SET_ATTITUDE.angular_velocity_z");
                     break;
                 default:
                     throw new Refusal("GIMBAL_MANAGER_SET_ATTITUDE has no field '" + e.getKey() + "'");
@@ -11746,55 +11750,55 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "GIMBAL_DEVICE_INFORMATION.time_boot_ms");
                     break;
                 case "vendor_name":
-                    m.vendor_name = Json.text(v, 32, "vendor_name");
+                    m.vendor_name = ConformanceJson.text(v, 32, "GIMBAL_DEVICE_INFORMATION.vendor_name");
                     break;
                 case "model_name":
-                    m.model_name = Json.text(v, 32, "model_name");
+                    m.model_name = ConformanceJson.text(v, 32, "GIMBAL_DEVICE_INFORMATION.model_name");
                     break;
                 case "custom_name":
-                    m.custom_name = Json.text(v, 32, "custom_name");
+                    m.custom_name = ConformanceJson.text(v, 32, "GIMBAL_DEVICE_INFORMATION.custom_name");
                     break;
                 case "firmware_version":
-                    m.firmware_version = Json.integer(v, 0, 4294967295L, "firmware_version");
+                    m.firmware_version = ConformanceJson.integer(v, 0, 4294967295L, "GIMBAL_DEVICE_INFORMATION.firmware_version");
                     break;
                 case "hardware_version":
-                    m.hardware_version = Json.integer(v, 0, 4294967295L, "hardware_version");
+                    m.hardware_version = ConformanceJson.integer(v, 0, 4294967295L, "GIMBAL_DEVICE_INFORMATION.hardware_version");
                     break;
                 case "uid":
-                    m.uid = Json.uint64(v, "uid");
+                    m.uid = ConformanceJson.uint64(v, "GIMBAL_DEVICE_INFORMATION.uid");
                     break;
                 case "cap_flags":
-                    m.cap_flags = (int) Json.integer(v, 0, 65535, "cap_flags");
+                    m.cap_flags = (int) ConformanceJson.integer(v, 0, 65535, "GIMBAL_DEVICE_INFORMATION.cap_flags");
                     break;
                 case "custom_cap_flags":
-                    m.custom_cap_flags = (int) Json.integer(v, 0, 65535, "custom_cap_flags");
+                    m.custom_cap_flags = (int) ConformanceJson.integer(v, 0, 65535, "GIMBAL_DEVICE_INFORMATION.custom_cap_flags");
                     break;
                 case "roll_min":
-                    m.roll_min = Json.f32(v, "roll_min");
+                    m.roll_min = ConformanceJson.f32(v, "GIMBAL_DEVICE_INFORMATION.roll_min");
                     break;
                 case "roll_max":
-                    m.roll_max = Json.f32(v, "roll_max");
+                    m.roll_max = ConformanceJson.f32(v, "GIMBAL_DEVICE_INFORMATION.roll_max");
                     break;
                 case "pitch_min":
-                    m.pitch_min = Json.f32(v, "pitch_min");
+                    m.pitch_min = ConformanceJson.f32(v, "GIMBAL_DEVICE_INFORMATION.pitch_min");
                     break;
                 case "pitch_max":
-                    m.pitch_max = Json.f32(v, "pitch_max");
+                    m.pitch_max = ConformanceJson.f32(v, "GIMBAL_DEVICE_INFORMATION.pitch_max");
                     break;
                 case "yaw_min":
-                    m.yaw_min = Json.f32(v, "yaw_min");
+                    m.yaw_min = ConformanceJson.f32(v, "GIMBAL_DEVICE_INFORMATION.yaw_min");
                     break;
                 case "yaw_max":
-                    m.yaw_max = Json.f32(v, "yaw_max");
+                    m.yaw_max = ConformanceJson.f32(v, "GIMBAL_DEVICE_INFORMATION.yaw_max");
                     break;
                 case "gimbal_device_id":
-                    m.gimbal_device_id = (int) Json.integer(v, 0, 255, "gimbal_device_id");
+                    m.gimbal_device_id = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_DEVICE_INFORMATION.gimbal_device_id");
                     break;
                 case "cap_flags2":
-                    m.cap_flags2 = Json.integer(v, 0, 4294967295L, "cap_flags2");
+                    m.cap_flags2 = ConformanceJson.integer(v, 0, 4294967295L, "GIMBAL_DEVICE_INFORMATION.cap_flags2");
                     break;
                 default:
                     throw new Refusal("GIMBAL_DEVICE_INFORMATION has no field '" + e.getKey() + "'");
@@ -11809,25 +11813,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_DEVICE_SET_ATTITUDE.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_DEVICE_SET_ATTITUDE.target_component");
                     break;
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 65535, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 65535, "GIMBAL_DEVICE_SET_ATTITUDE.flags");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "GIMBAL_DEVICE_SET_ATTITUDE.q");
                     break;
                 case "angular_velocity_x":
-                    m.angular_velocity_x = Json.f32(v, "angular_velocity_x");
+                    m.angular_velocity_x = ConformanceJson.f32(v, "GIMBAL_DEVICE_SET_ATTITUDE.angular_velocity_x");
                     break;
                 case "angular_velocity_y":
-                    m.angular_velocity_y = Json.f32(v, "angular_velocity_y");
+                    m.angular_velocity_y = ConformanceJson.f32(v, "GIMBAL_DEVICE_SET_ATTITUDE.angular_velocity_y");
                     break;
                 case "angular_velocity_z":
-                    m.angular_velocity_z = Json.f32(v, "angular_velocity_z");
+                    m.angular_velocity_z = ConformanceJson.f32(v, "GIMBAL_DEVICE_SET_ATTITUDE.angular_velocity_z");
                     break;
                 default:
                     throw new Refusal("GIMBAL_DEVICE_SET_ATTITUDE has no field '" + e.getKey() + "'");
@@ -11842,40 +11846,40 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_DEVICE_ATTITUDE_STATUS.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_DEVICE_ATTITUDE_STATUS.target_component");
                     break;
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "GIMBAL_DEVICE_ATTITUDE_STATUS.time_boot_ms");
                     break;
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 65535, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 65535, "GIMBAL_DEVICE_ATTITUDE_STATUS.flags");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "GIMBAL_DEVICE_ATTITUDE_STATUS.q");
                     break;
                 case "angular_velocity_x":
-                    m.angular_velocity_x = Json.f32(v, "angular_velocity_x");
+                    m.angular_velocity_x = ConformanceJson.f32(v, "GIMBAL_DEVICE_ATTITUDE_STATUS.angular_velocity_x");
                     break;
                 case "angular_velocity_y":
-                    m.angular_velocity_y = Json.f32(v, "angular_velocity_y");
+                    m.angular_velocity_y = ConformanceJson.f32(v, "GIMBAL_DEVICE_ATTITUDE_STATUS.angular_velocity_y");
                     break;
                 case "angular_velocity_z":
-                    m.angular_velocity_z = Json.f32(v, "angular_velocity_z");
+                    m.angular_velocity_z = ConformanceJson.f32(v, "GIMBAL_DEVICE_ATTITUDE_STATUS.angular_velocity_z");
                     break;
                 case "failure_flags":
-                    m.failure_flags = Json.integer(v, 0, 4294967295L, "failure_flags");
+                    m.failure_flags = ConformanceJson.integer(v, 0, 4294967295L, "GIMBAL_DEVICE_ATTITUDE_STATUS.failure_flags");
                     break;
                 case "delta_yaw":
-                    m.delta_yaw = Json.f32(v, "delta_yaw");
+                    m.delta_yaw = ConformanceJson.f32(v, "GIMBAL_DEVICE_ATTITUDE_STATUS.delta_yaw");
                     break;
                 case "delta_yaw_velocity":
-                    m.delta_yaw_velocity = Json.f32(v, "delta_yaw_velocity");
+                    m.delta_yaw_velocity = ConformanceJson.f32(v, "GIMBAL_DEVICE_ATTITUDE_STATUS.delta_yaw_velocity");
                     break;
                 case "gimbal_device_id":
-                    m.gimbal_device_id = (int) Json.integer(v, 0, 255, "gimbal_device_id");
+                    m.gimbal_device_id = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_DEVICE_ATTITUDE_STATUS.gimbal_device_id");
                     break;
                 default:
                     throw new Refusal("GIMBAL_DEVICE_ATTITUDE_STATUS has no field '" + e.getKey() + "'");
@@ -11890,43 +11894,43 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "AUTOPILOT_STATE_FOR_GIMBAL_DEVICE.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "AUTOPILOT_STATE_FOR_GIMBAL_DEVICE.target_component");
                     break;
                 case "time_boot_us":
-                    m.time_boot_us = Json.uint64(v, "time_boot_us");
+                    m.time_boot_us = ConformanceJson.uint64(v, "AUTOPILOT_STATE_FOR_GIMBAL_DEVICE.time_boot_us");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "AUTOPILOT_STATE_FOR_GIMBAL_DEVICE.q");
                     break;
                 case "q_estimated_delay_us":
-                    m.q_estimated_delay_us = Json.integer(v, 0, 4294967295L, "q_estimated_delay_us");
+                    m.q_estimated_delay_us = ConformanceJson.integer(v, 0, 4294967295L, "AUTOPILOT_STATE_FOR_GIMBAL_DEVICE.q_estimated_delay_us");
                     break;
                 case "vx":
-                    m.vx = Json.f32(v, "vx");
+                    m.vx = ConformanceJson.f32(v, "AUTOPILOT_STATE_FOR_GIMBAL_DEVICE.vx");
                     break;
                 case "vy":
-                    m.vy = Json.f32(v, "vy");
+                    m.vy = ConformanceJson.f32(v, "AUTOPILOT_STATE_FOR_GIMBAL_DEVICE.vy");
                     break;
                 case "vz":
-                    m.vz = Json.f32(v, "vz");
+                    m.vz = ConformanceJson.f32(v, "AUTOPILOT_STATE_FOR_GIMBAL_DEVICE.vz");
                     break;
                 case "v_estimated_delay_us":
-                    m.v_estimated_delay_us = Json.integer(v, 0, 4294967295L, "v_estimated_delay_us");
+                    m.v_estimated_delay_us = ConformanceJson.integer(v, 0, 4294967295L, "AUTOPILOT_STATE_FOR_GIMBAL_DEVICE.v_estimated_delay_us");
                     break;
                 case "feed_forward_angular_velocity_z":
-                    m.feed_forward_angular_velocity_z = Json.f32(v, "feed_forward_angular_velocity_z");
+                    m.feed_forward_angular_velocity_z = ConformanceJson.f32(v, "AUTOPILOT_STATE_FOR_GIMBAL_DEVICE.feed_forward_angular_velocity_z");
                     break;
                 case "estimator_status":
-                    m.estimator_status = (int) Json.integer(v, 0, 65535, "estimator_status");
+                    m.estimator_status = (int) ConformanceJson.integer(v, 0, 65535, "AUTOPILOT_STATE_FOR_GIMBAL_DEVICE.estimator_status");
                     break;
                 case "landed_state":
-                    m.landed_state = (int) Json.integer(v, 0, 255, "landed_state");
+                    m.landed_state = (int) ConformanceJson.integer(v, 0, 255, "AUTOPILOT_STATE_FOR_GIMBAL_DEVICE.landed_state");
                     break;
                 case "angular_velocity_z":
-                    m.angular_velocity_z = Json.f32(v, "angular_velocity_z");
+                    m.angular_velocity_z = ConformanceJson.f32(v, "AUTOPILOT_STATE_FOR_GIMBAL_DEVICE.angular_velocity_z");
                     break;
                 default:
                     throw new Refusal("AUTOPILOT_STATE_FOR_GIMBAL_DEVICE has no field '" + e.getKey() + "'");
@@ -11941,28 +11945,28 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_SET_PITCHYAW.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_SET_PITCHYAW.target_component");
                     break;
                 case "flags":
-                    m.flags = Json.integer(v, 0, 4294967295L, "flags");
+                    m.flags = ConformanceJson.integer(v, 0, 4294967295L, "GIMBAL_MANAGER_SET_PITCHYAW.flags");
                     break;
                 case "gimbal_device_id":
-                    m.gimbal_device_id = (int) Json.integer(v, 0, 255, "gimbal_device_id");
+                    m.gimbal_device_id = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_SET_PITCHYAW.gimbal_device_id");
                     break;
                 case "pitch":
-                    m.pitch = Json.f32(v, "pitch");
+                    m.pitch = ConformanceJson.f32(v, "GIMBAL_MANAGER_SET_PITCHYAW.pitch");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "GIMBAL_MANAGER_SET_PITCHYAW.yaw");
                     break;
                 case "pitch_rate":
-                    m.pitch_rate = Json.f32(v, "pitch_rate");
+                    m.pitch_rate = ConformanceJson.f32(v, "GIMBAL_MANAGER_SET_PITCHYAW.pitch_rate");
                     break;
                 case "yaw_rate":
-                    m.yaw_rate = Json.f32(v, "yaw_rate");
+                    m.yaw_rate = ConformanceJson.f32(v, "GIMBAL_MANAGER_SET_PITCHYAW.yaw_rate");
                     break;
                 default:
                     throw new Refusal("GIMBAL_MANAGER_SET_PITCHYAW has no field '" + e.getKey() + "'");
@@ -11977,28 +11981,28 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_SET_MANUAL_CONTROL.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_SET_MANUAL_CONTROL.target_component");
                     break;
                 case "flags":
-                    m.flags = Json.integer(v, 0, 4294967295L, "flags");
+                    m.flags = ConformanceJson.integer(v, 0, 4294967295L, "GIMBAL_MANAGER_SET_MANUAL_CONTROL.flags");
                     break;
                 case "gimbal_device_id":
-                    m.gimbal_device_id = (int) Json.integer(v, 0, 255, "gimbal_device_id");
+                    m.gimbal_device_id = (int) ConformanceJson.integer(v, 0, 255, "GIMBAL_MANAGER_SET_MANUAL_CONTROL.gimbal_device_id");
                     break;
                 case "pitch":
-                    m.pitch = Json.f32(v, "pitch");
+                    m.pitch = ConformanceJson.f32(v, "GIMBAL_MANAGER_SET_MANUAL_CONTROL.pitch");
                     break;
                 case "yaw":
-                    m.yaw = Json.f32(v, "yaw");
+                    m.yaw = ConformanceJson.f32(v, "GIMBAL_MANAGER_SET_MANUAL_CONTROL.yaw");
                     break;
                 case "pitch_rate":
-                    m.pitch_rate = Json.f32(v, "pitch_rate");
+                    m.pitch_rate = ConformanceJson.f32(v, "GIMBAL_MANAGER_SET_MANUAL_CONTROL.pitch_rate");
                     break;
                 case "yaw_rate":
-                    m.yaw_rate = Json.f32(v, "yaw_rate");
+                    m.yaw_rate = ConformanceJson.f32(v, "GIMBAL_MANAGER_SET_MANUAL_CONTROL.yaw_rate");
                     break;
                 default:
                     throw new Refusal("GIMBAL_MANAGER_SET_MANUAL_CONTROL has no field '" + e.getKey() + "'");
@@ -12013,19 +12017,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 255, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 255, "AIRSPEED.id");
                     break;
                 case "airspeed":
-                    m.airspeed = Json.f32(v, "airspeed");
+                    m.airspeed = ConformanceJson.f32(v, "AIRSPEED.airspeed");
                     break;
                 case "temperature":
-                    m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
+                    m.temperature = (short) ConformanceJson.integer(v, -32768, 32767, "AIRSPEED.temperature");
                     break;
                 case "raw_press":
-                    m.raw_press = Json.f32(v, "raw_press");
+                    m.raw_press = ConformanceJson.f32(v, "AIRSPEED.raw_press");
                     break;
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 255, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 255, "AIRSPEED.flags");
                     break;
                 default:
                     throw new Refusal("AIRSPEED has no field '" + e.getKey() + "'");
@@ -12040,43 +12044,43 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "GLOBAL_POSITION_SENSOR.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "GLOBAL_POSITION_SENSOR.target_component");
                     break;
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 255, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 255, "GLOBAL_POSITION_SENSOR.id");
                     break;
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "GLOBAL_POSITION_SENSOR.time_usec");
                     break;
                 case "processing_time":
-                    m.processing_time = Json.integer(v, 0, 4294967295L, "processing_time");
+                    m.processing_time = ConformanceJson.integer(v, 0, 4294967295L, "GLOBAL_POSITION_SENSOR.processing_time");
                     break;
                 case "source":
-                    m.source = (int) Json.integer(v, 0, 255, "source");
+                    m.source = (int) ConformanceJson.integer(v, 0, 255, "GLOBAL_POSITION_SENSOR.source");
                     break;
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 255, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 255, "GLOBAL_POSITION_SENSOR.flags");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GLOBAL_POSITION_SENSOR.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GLOBAL_POSITION_SENSOR.lon");
                     break;
                 case "alt_ellipsoid":
-                    m.alt_ellipsoid = Json.f32(v, "alt_ellipsoid");
+                    m.alt_ellipsoid = ConformanceJson.f32(v, "GLOBAL_POSITION_SENSOR.alt_ellipsoid");
                     break;
                 case "alt":
-                    m.alt = Json.f32(v, "alt");
+                    m.alt = ConformanceJson.f32(v, "GLOBAL_POSITION_SENSOR.alt");
                     break;
                 case "eph":
-                    m.eph = Json.f32(v, "eph");
+                    m.eph = ConformanceJson.f32(v, "GLOBAL_POSITION_SENSOR.eph");
                     break;
                 case "epv":
-                    m.epv = Json.f32(v, "epv");
+                    m.epv = ConformanceJson.f32(v, "GLOBAL_POSITION_SENSOR.epv");
                     break;
                 default:
                     throw new Refusal("GLOBAL_POSITION_SENSOR has no field '" + e.getKey() + "'");
@@ -12091,10 +12095,10 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "ssid":
-                    m.ssid = Json.text(v, 32, "ssid");
+                    m.ssid = ConformanceJson.text(v, 32, "WIFI_CONFIG_AP.ssid");
                     break;
                 case "password":
-                    m.password = Json.text(v, 64, "password");
+                    m.password = ConformanceJson.text(v, 64, "WIFI_CONFIG_AP.password");
                     break;
                 default:
                     throw new Refusal("WIFI_CONFIG_AP has no field '" + e.getKey() + "'");
@@ -12109,55 +12113,55 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "MMSI":
-                    m.MMSI = Json.integer(v, 0, 4294967295L, "MMSI");
+                    m.MMSI = ConformanceJson.integer(v, 0, 4294967295L, "AIS_VESSEL.MMSI");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "AIS_VESSEL.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "AIS_VESSEL.lon");
                     break;
                 case "COG":
-                    m.COG = (int) Json.integer(v, 0, 65535, "COG");
+                    m.COG = (int) ConformanceJson.integer(v, 0, 65535, "AIS_VESSEL.COG");
                     break;
                 case "heading":
-                    m.heading = (int) Json.integer(v, 0, 65535, "heading");
+                    m.heading = (int) ConformanceJson.integer(v, 0, 65535, "AIS_VESSEL.heading");
                     break;
                 case "velocity":
-                    m.velocity = (int) Json.integer(v, 0, 65535, "velocity");
+                    m.velocity = (int) ConformanceJson.integer(v, 0, 65535, "AIS_VESSEL.velocity");
                     break;
                 case "turn_rate":
-                    m.turn_rate = (byte) Json.integer(v, -128, 127, "turn_rate");
+                    m.turn_rate = (byte) ConformanceJson.integer(v, -128, 127, "AIS_VESSEL.turn_rate");
                     break;
                 case "navigational_status":
-                    m.navigational_status = (int) Json.integer(v, 0, 255, "navigational_status");
+                    m.navigational_status = (int) ConformanceJson.integer(v, 0, 255, "AIS_VESSEL.navigational_status");
                     break;
                 case "type":
-                    m.type = (int) Json.integer(v, 0, 255, "type");
+                    m.type = (int) ConformanceJson.integer(v, 0, 255, "AIS_VESSEL.type");
                     break;
                 case "dimension_bow":
-                    m.dimension_bow = (int) Json.integer(v, 0, 65535, "dimension_bow");
+                    m.dimension_bow = (int) ConformanceJson.integer(v, 0, 65535, "AIS_VESSEL.dimension_bow");
                     break;
                 case "dimension_stern":
-                    m.dimension_stern = (int) Json.integer(v, 0, 65535, "dimension_stern");
+                    m.dimension_stern = (int) ConformanceJson.integer(v, 0, 65535, "AIS_VESSEL.dimension_stern");
                     break;
                 case "dimension_port":
-                    m.dimension_port = (int) Json.integer(v, 0, 255, "dimension_port");
+                    m.dimension_port = (int) ConformanceJson.integer(v, 0, 255, "AIS_VESSEL.dimension_port");
                     break;
                 case "dimension_starboard":
-                    m.dimension_starboard = (int) Json.integer(v, 0, 255, "dimension_starboard");
+                    m.dimension_starboard = (int) ConformanceJson.integer(v, 0, 255, "AIS_VESSEL.dimension_starboard");
                     break;
                 case "callsign":
-                    m.callsign = Json.text(v, 7, "callsign");
+                    m.callsign = ConformanceJson.text(v, 7, "AIS_VESSEL.callsign");
                     break;
                 case "name":
-                    m.name = Json.text(v, 20, "name");
+                    m.name = ConformanceJson.text(v, 20, "AIS_VESSEL.name");
                     break;
                 case "tslc":
-                    m.tslc = (int) Json.integer(v, 0, 65535, "tslc");
+                    m.tslc = (int) ConformanceJson.integer(v, 0, 65535, "AIS_VESSEL.tslc");
                     break;
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 65535, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 65535, "AIS_VESSEL.flags");
                     break;
                 default:
                     throw new Refusal("AIS_VESSEL has no field '" + e.getKey() + "'");
@@ -12172,22 +12176,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "UAVCAN_NODE_STATUS.time_usec");
                     break;
                 case "uptime_sec":
-                    m.uptime_sec = Json.integer(v, 0, 4294967295L, "uptime_sec");
+                    m.uptime_sec = ConformanceJson.integer(v, 0, 4294967295L, "UAVCAN_NODE_STATUS.uptime_sec");
                     break;
                 case "health":
-                    m.health = (int) Json.integer(v, 0, 255, "health");
+                    m.health = (int) ConformanceJson.integer(v, 0, 255, "UAVCAN_NODE_STATUS.health");
                     break;
                 case "mode":
-                    m.mode = (int) Json.integer(v, 0, 255, "mode");
+                    m.mode = (int) ConformanceJson.integer(v, 0, 255, "UAVCAN_NODE_STATUS.mode");
                     break;
                 case "sub_mode":
-                    m.sub_mode = (int) Json.integer(v, 0, 255, "sub_mode");
+                    m.sub_mode = (int) ConformanceJson.integer(v, 0, 255, "UAVCAN_NODE_STATUS.sub_mode");
                     break;
                 case "vendor_specific_status_code":
-                    m.vendor_specific_status_code = (int) Json.integer(v, 0, 65535, "vendor_specific_status_code");
+                    m.vendor_specific_status_code = (int) ConformanceJson.integer(v, 0, 65535, "UAVCAN_NODE_STATUS.vendor_specific_status_code");
                     break;
                 default:
                     throw new Refusal("UAVCAN_NODE_STATUS has no field '" + e.getKey() + "'");
@@ -12202,31 +12206,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "UAVCAN_NODE_INFO.time_usec");
                     break;
                 case "uptime_sec":
-                    m.uptime_sec = Json.integer(v, 0, 4294967295L, "uptime_sec");
+                    m.uptime_sec = ConformanceJson.integer(v, 0, 4294967295L, "UAVCAN_NODE_INFO.uptime_sec");
                     break;
                 case "name":
-                    m.name = Json.text(v, 80, "name");
+                    m.name = ConformanceJson.text(v, 80, "UAVCAN_NODE_INFO.name");
                     break;
                 case "hw_version_major":
-                    m.hw_version_major = (int) Json.integer(v, 0, 255, "hw_version_major");
+                    m.hw_version_major = (int) ConformanceJson.integer(v, 0, 255, "UAVCAN_NODE_INFO.hw_version_major");
                     break;
                 case "hw_version_minor":
-                    m.hw_version_minor = (int) Json.integer(v, 0, 255, "hw_version_minor");
+                    m.hw_version_minor = (int) ConformanceJson.integer(v, 0, 255, "UAVCAN_NODE_INFO.hw_version_minor");
                     break;
                 case "hw_unique_id":
-                    m.hw_unique_id = Json.u8s(v, 16, "hw_unique_id");
+                    m.hw_unique_id = ConformanceJson.u8s(v, 16, "UAVCAN_NODE_INFO.hw_unique_id");
                     break;
                 case "sw_version_major":
-                    m.sw_version_major = (int) Json.integer(v, 0, 255, "sw_version_major");
+                    m.sw_version_major = (int) ConformanceJson.integer(v, 0, 255, "UAVCAN_NODE_INFO.sw_version_major");
                     break;
                 case "sw_version_minor":
-                    m.sw_version_minor = (int) Json.integer(v, 0, 255, "sw_version_minor");
+                    m.sw_version_minor = (int) ConformanceJson.integer(v, 0, 255, "UAVCAN_NODE_INFO.sw_version_minor");
                     break;
                 case "sw_vcs_commit":
-                    m.sw_vcs_commit = Json.integer(v, 0, 4294967295L, "sw_vcs_commit");
+                    m.sw_vcs_commit = ConformanceJson.integer(v, 0, 4294967295L, "UAVCAN_NODE_INFO.sw_vcs_commit");
                     break;
                 default:
                     throw new Refusal("UAVCAN_NODE_INFO has no field '" + e.getKey() + "'");
@@ -12241,16 +12245,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "PARAM_EXT_REQUEST_READ.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "PARAM_EXT_REQUEST_READ.target_component");
                     break;
                 case "param_id":
-                    m.param_id = Json.text(v, 16, "param_id");
+                    m.param_id = ConformanceJson.text(v, 16, "PARAM_EXT_REQUEST_READ.param_id");
                     break;
                 case "param_index":
-                    m.param_index = (short) Json.integer(v, -32768, 32767, "param_index");
+                    m.param_index = (short) ConformanceJson.integer(v, -32768, 32767, "PARAM_EXT_REQUEST_READ.param_index");
                     break;
                 default:
                     throw new Refusal("PARAM_EXT_REQUEST_READ has no field '" + e.getKey() + "'");
@@ -12265,10 +12269,10 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "PARAM_EXT_REQUEST_LIST.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "PARAM_EXT_REQUEST_LIST.target_component");
                     break;
                 default:
                     throw new Refusal("PARAM_EXT_REQUEST_LIST has no field '" + e.getKey() + "'");
@@ -12283,19 +12287,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "param_id":
-                    m.param_id = Json.text(v, 16, "param_id");
+                    m.param_id = ConformanceJson.text(v, 16, "PARAM_EXT_VALUE.param_id");
                     break;
                 case "param_value":
-                    m.param_value = Json.text(v, 128, "param_value");
+                    m.param_value = ConformanceJson.text(v, 128, "PARAM_EXT_VALUE.param_value");
                     break;
                 case "param_type":
-                    m.param_type = (int) Json.integer(v, 0, 255, "param_type");
+                    m.param_type = (int) ConformanceJson.integer(v, 0, 255, "PARAM_EXT_VALUE.param_type");
                     break;
                 case "param_count":
-                    m.param_count = (int) Json.integer(v, 0, 65535, "param_count");
+                    m.param_count = (int) ConformanceJson.integer(v, 0, 65535, "PARAM_EXT_VALUE.param_count");
                     break;
                 case "param_index":
-                    m.param_index = (int) Json.integer(v, 0, 65535, "param_index");
+                    m.param_index = (int) ConformanceJson.integer(v, 0, 65535, "PARAM_EXT_VALUE.param_index");
                     break;
                 default:
                     throw new Refusal("PARAM_EXT_VALUE has no field '" + e.getKey() + "'");
@@ -12310,19 +12314,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "PARAM_EXT_SET.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "PARAM_EXT_SET.target_component");
                     break;
                 case "param_id":
-                    m.param_id = Json.text(v, 16, "param_id");
+                    m.param_id = ConformanceJson.text(v, 16, "PARAM_EXT_SET.param_id");
                     break;
                 case "param_value":
-                    m.param_value = Json.text(v, 128, "param_value");
+                    m.param_value = ConformanceJson.text(v, 128, "PARAM_EXT_SET.param_value");
                     break;
                 case "param_type":
-                    m.param_type = (int) Json.integer(v, 0, 255, "param_type");
+                    m.param_type = (int) ConformanceJson.integer(v, 0, 255, "PARAM_EXT_SET.param_type");
                     break;
                 default:
                     throw new Refusal("PARAM_EXT_SET has no field '" + e.getKey() + "'");
@@ -12337,16 +12341,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "param_id":
-                    m.param_id = Json.text(v, 16, "param_id");
+                    m.param_id = ConformanceJson.text(v, 16, "PARAM_EXT_ACK.param_id");
                     break;
                 case "param_value":
-                    m.param_value = Json.text(v, 128, "param_value");
+                    m.param_value = ConformanceJson.text(v, 128, "PARAM_EXT_ACK.param_value");
                     break;
                 case "param_type":
-                    m.param_type = (int) Json.integer(v, 0, 255, "param_type");
+                    m.param_type = (int) ConformanceJson.integer(v, 0, 255, "PARAM_EXT_ACK.param_type");
                     break;
                 case "param_result":
-                    m.param_result = (int) Json.integer(v, 0, 255, "param_result");
+                    m.param_result = (int) ConformanceJson.integer(v, 0, 255, "PARAM_EXT_ACK.param_result");
                     break;
                 default:
                     throw new Refusal("PARAM_EXT_ACK has no field '" + e.getKey() + "'");
@@ -12361,31 +12365,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "OBSTACLE_DISTANCE.time_usec");
                     break;
                 case "sensor_type":
-                    m.sensor_type = (int) Json.integer(v, 0, 255, "sensor_type");
+                    m.sensor_type = (int) ConformanceJson.integer(v, 0, 255, "OBSTACLE_DISTANCE.sensor_type");
                     break;
                 case "distances":
-                    m.distances = Json.ints(v, 72, 0, 65535, "distances");
+                    m.distances = ConformanceJson.ints(v, 72, 0, 65535, "OBSTACLE_DISTANCE.distances");
                     break;
                 case "increment":
-                    m.increment = (int) Json.integer(v, 0, 255, "increment");
+                    m.increment = (int) ConformanceJson.integer(v, 0, 255, "OBSTACLE_DISTANCE.increment");
                     break;
                 case "min_distance":
-                    m.min_distance = (int) Json.integer(v, 0, 65535, "min_distance");
+                    m.min_distance = (int) ConformanceJson.integer(v, 0, 65535, "OBSTACLE_DISTANCE.min_distance");
                     break;
                 case "max_distance":
-                    m.max_distance = (int) Json.integer(v, 0, 65535, "max_distance");
+                    m.max_distance = (int) ConformanceJson.integer(v, 0, 65535, "OBSTACLE_DISTANCE.max_distance");
                     break;
                 case "increment_f":
-                    m.increment_f = Json.f32(v, "increment_f");
+                    m.increment_f = ConformanceJson.f32(v, "OBSTACLE_DISTANCE.increment_f");
                     break;
                 case "angle_offset":
-                    m.angle_offset = Json.f32(v, "angle_offset");
+                    m.angle_offset = ConformanceJson.f32(v, "OBSTACLE_DISTANCE.angle_offset");
                     break;
                 case "frame":
-                    m.frame = (int) Json.integer(v, 0, 255, "frame");
+                    m.frame = (int) ConformanceJson.integer(v, 0, 255, "OBSTACLE_DISTANCE.frame");
                     break;
                 default:
                     throw new Refusal("OBSTACLE_DISTANCE has no field '" + e.getKey() + "'");
@@ -12400,58 +12404,58 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "ODOMETRY.time_usec");
                     break;
                 case "frame_id":
-                    m.frame_id = (int) Json.integer(v, 0, 255, "frame_id");
+                    m.frame_id = (int) ConformanceJson.integer(v, 0, 255, "ODOMETRY.frame_id");
                     break;
                 case "child_frame_id":
-                    m.child_frame_id = (int) Json.integer(v, 0, 255, "child_frame_id");
+                    m.child_frame_id = (int) ConformanceJson.integer(v, 0, 255, "ODOMETRY.child_frame_id");
                     break;
                 case "x":
-                    m.x = Json.f32(v, "x");
+                    m.x = ConformanceJson.f32(v, "ODOMETRY.x");
                     break;
                 case "y":
-                    m.y = Json.f32(v, "y");
+                    m.y = ConformanceJson.f32(v, "ODOMETRY.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "ODOMETRY.z");
                     break;
                 case "q":
-                    m.q = Json.f32s(v, 4, "q");
+                    m.q = ConformanceJson.f32s(v, 4, "ODOMETRY.q");
                     break;
                 case "vx":
-                    m.vx = Json.f32(v, "vx");
+                    m.vx = ConformanceJson.f32(v, "ODOMETRY.vx");
                     break;
                 case "vy":
-                    m.vy = Json.f32(v, "vy");
+                    m.vy = ConformanceJson.f32(v, "ODOMETRY.vy");
                     break;
                 case "vz":
-                    m.vz = Json.f32(v, "vz");
+                    m.vz = ConformanceJson.f32(v, "ODOMETRY.vz");
                     break;
                 case "rollspeed":
-                    m.rollspeed = Json.f32(v, "rollspeed");
+                    m.rollspeed = ConformanceJson.f32(v, "ODOMETRY.rollspeed");
                     break;
                 case "pitchspeed":
-                    m.pitchspeed = Json.f32(v, "pitchspeed");
+                    m.pitchspeed = ConformanceJson.f32(v, "ODOMETRY.pitchspeed");
                     break;
                 case "yawspeed":
-                    m.yawspeed = Json.f32(v, "yawspeed");
+                    m.yawspeed = ConformanceJson.f32(v, "ODOMETRY.yawspeed");
                     break;
                 case "pose_covariance":
-                    m.pose_covariance = Json.f32s(v, 21, "pose_covariance");
+                    m.pose_covariance = ConformanceJson.f32s(v, 21, "ODOMETRY.pose_covariance");
                     break;
                 case "velocity_covariance":
-                    m.velocity_covariance = Json.f32s(v, 21, "velocity_covariance");
+                    m.velocity_covariance = ConformanceJson.f32s(v, 21, "ODOMETRY.velocity_covariance");
                     break;
                 case "reset_counter":
-                    m.reset_counter = (int) Json.integer(v, 0, 255, "reset_counter");
+                    m.reset_counter = (int) ConformanceJson.integer(v, 0, 255, "ODOMETRY.reset_counter");
                     break;
                 case "estimator_type":
-                    m.estimator_type = (int) Json.integer(v, 0, 255, "estimator_type");
+                    m.estimator_type = (int) ConformanceJson.integer(v, 0, 255, "ODOMETRY.estimator_type");
                     break;
                 case "quality":
-                    m.quality = (byte) Json.integer(v, -128, 127, "quality");
+                    m.quality = (byte) ConformanceJson.integer(v, -128, 127, "ODOMETRY.quality");
                     break;
                 default:
                     throw new Refusal("ODOMETRY has no field '" + e.getKey() + "'");
@@ -12466,46 +12470,46 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "TRAJECTORY_REPRESENTATION_WAYPOINTS.time_usec");
                     break;
                 case "valid_points":
-                    m.valid_points = (int) Json.integer(v, 0, 255, "valid_points");
+                    m.valid_points = (int) ConformanceJson.integer(v, 0, 255, "TRAJECTORY_REPRESENTATION_WAYPOINTS.valid_points");
                     break;
                 case "pos_x":
-                    m.pos_x = Json.f32s(v, 5, "pos_x");
+                    m.pos_x = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_WAYPOINTS.pos_x");
                     break;
                 case "pos_y":
-                    m.pos_y = Json.f32s(v, 5, "pos_y");
+                    m.pos_y = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_WAYPOINTS.pos_y");
                     break;
                 case "pos_z":
-                    m.pos_z = Json.f32s(v, 5, "pos_z");
+                    m.pos_z = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_WAYPOINTS.pos_z");
                     break;
                 case "vel_x":
-                    m.vel_x = Json.f32s(v, 5, "vel_x");
+                    m.vel_x = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_WAYPOINTS.vel_x");
                     break;
                 case "vel_y":
-                    m.vel_y = Json.f32s(v, 5, "vel_y");
+                    m.vel_y = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_WAYPOINTS.vel_y");
                     break;
                 case "vel_z":
-                    m.vel_z = Json.f32s(v, 5, "vel_z");
+                    m.vel_z = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_WAYPOINTS.vel_z");
                     break;
                 case "acc_x":
-                    m.acc_x = Json.f32s(v, 5, "acc_x");
+                    m.acc_x = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_WAYPOINTS.acc_x");
                     break;
                 case "acc_y":
-                    m.acc_y = Json.f32s(v, 5, "acc_y");
+                    m.acc_y = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_WAYPOINTS.acc_y");
                     break;
                 case "acc_z":
-                    m.acc_z = Json.f32s(v, 5, "acc_z");
+                    m.acc_z = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_WAYPOINTS.acc_z");
                     break;
                 case "pos_yaw":
-                    m.pos_yaw = Json.f32s(v, 5, "pos_yaw");
+                    m.pos_yaw = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_WAYPOINTS.pos_yaw");
                     break;
                 case "vel_yaw":
-                    m.vel_yaw = Json.f32s(v, 5, "vel_yaw");
+                    m.vel_yaw = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_WAYPOINTS.vel_yaw");
                     break;
                 case "command":
-                    m.command = Json.ints(v, 5, 0, 65535, "command");
+                    m.command = ConformanceJson.ints(v, 5, 0, 65535, "TRAJECTORY_REPRESENTATION_WAYPOINTS.command");
                     break;
                 default:
                     throw new Refusal("TRAJECTORY_REPRESENTATION_WAYPOINTS has no field '" + e.getKey() + "'");
@@ -12520,25 +12524,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "TRAJECTORY_REPRESENTATION_BEZIER.time_usec");
                     break;
                 case "valid_points":
-                    m.valid_points = (int) Json.integer(v, 0, 255, "valid_points");
+                    m.valid_points = (int) ConformanceJson.integer(v, 0, 255, "TRAJECTORY_REPRESENTATION_BEZIER.valid_points");
                     break;
                 case "pos_x":
-                    m.pos_x = Json.f32s(v, 5, "pos_x");
+                    m.pos_x = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_BEZIER.pos_x");
                     break;
                 case "pos_y":
-                    m.pos_y = Json.f32s(v, 5, "pos_y");
+                    m.pos_y = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_BEZIER.pos_y");
                     break;
                 case "pos_z":
-                    m.pos_z = Json.f32s(v, 5, "pos_z");
+                    m.pos_z = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_BEZIER.pos_z");
                     break;
                 case "delta":
-                    m.delta = Json.f32s(v, 5, "delta");
+                    m.delta = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_BEZIER.delta");
                     break;
                 case "pos_yaw":
-                    m.pos_yaw = Json.f32s(v, 5, "pos_yaw");
+                    m.pos_yaw = ConformanceJson.f32s(v, 5, "TRAJECTORY_REPRESENTATION_BEZIER.pos_yaw");
                     break;
                 default:
                     throw new Refusal("TRAJECTORY_REPRESENTATION_BEZIER has no field '" + e.getKey() + "'");
@@ -12553,28 +12557,28 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "timestamp":
-                    m.timestamp = Json.uint64(v, "timestamp");
+                    m.timestamp = ConformanceJson.uint64(v, "ISBD_LINK_STATUS.timestamp");
                     break;
                 case "last_heartbeat":
-                    m.last_heartbeat = Json.uint64(v, "last_heartbeat");
+                    m.last_heartbeat = ConformanceJson.uint64(v, "ISBD_LINK_STATUS.last_heartbeat");
                     break;
                 case "failed_sessions":
-                    m.failed_sessions = (int) Json.integer(v, 0, 65535, "failed_sessions");
+                    m.failed_sessions = (int) ConformanceJson.integer(v, 0, 65535, "ISBD_LINK_STATUS.failed_sessions");
                     break;
                 case "successful_sessions":
-                    m.successful_sessions = (int) Json.integer(v, 0, 65535, "successful_sessions");
+                    m.successful_sessions = (int) ConformanceJson.integer(v, 0, 65535, "ISBD_LINK_STATUS.successful_sessions");
                     break;
                 case "signal_quality":
-                    m.signal_quality = (int) Json.integer(v, 0, 255, "signal_quality");
+                    m.signal_quality = (int) ConformanceJson.integer(v, 0, 255, "ISBD_LINK_STATUS.signal_quality");
                     break;
                 case "ring_pending":
-                    m.ring_pending = (int) Json.integer(v, 0, 255, "ring_pending");
+                    m.ring_pending = (int) ConformanceJson.integer(v, 0, 255, "ISBD_LINK_STATUS.ring_pending");
                     break;
                 case "tx_session_pending":
-                    m.tx_session_pending = (int) Json.integer(v, 0, 255, "tx_session_pending");
+                    m.tx_session_pending = (int) ConformanceJson.integer(v, 0, 255, "ISBD_LINK_STATUS.tx_session_pending");
                     break;
                 case "rx_session_pending":
-                    m.rx_session_pending = (int) Json.integer(v, 0, 255, "rx_session_pending");
+                    m.rx_session_pending = (int) ConformanceJson.integer(v, 0, 255, "ISBD_LINK_STATUS.rx_session_pending");
                     break;
                 default:
                     throw new Refusal("ISBD_LINK_STATUS has no field '" + e.getKey() + "'");
@@ -12589,10 +12593,10 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "index":
-                    m.index = (int) Json.integer(v, 0, 255, "index");
+                    m.index = (int) ConformanceJson.integer(v, 0, 255, "RAW_RPM.index");
                     break;
                 case "frequency":
-                    m.frequency = Json.f32(v, "frequency");
+                    m.frequency = ConformanceJson.f32(v, "RAW_RPM.frequency");
                     break;
                 default:
                     throw new Refusal("RAW_RPM has no field '" + e.getKey() + "'");
@@ -12607,58 +12611,58 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time":
-                    m.time = Json.uint64(v, "time");
+                    m.time = ConformanceJson.uint64(v, "UTM_GLOBAL_POSITION.time");
                     break;
                 case "uas_id":
-                    m.uas_id = Json.u8s(v, 18, "uas_id");
+                    m.uas_id = ConformanceJson.u8s(v, 18, "UTM_GLOBAL_POSITION.uas_id");
                     break;
                 case "lat":
-                    m.lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lat");
+                    m.lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "UTM_GLOBAL_POSITION.lat");
                     break;
                 case "lon":
-                    m.lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "lon");
+                    m.lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "UTM_GLOBAL_POSITION.lon");
                     break;
                 case "alt":
-                    m.alt = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "alt");
+                    m.alt = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "UTM_GLOBAL_POSITION.alt");
                     break;
                 case "relative_alt":
-                    m.relative_alt = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "relative_alt");
+                    m.relative_alt = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "UTM_GLOBAL_POSITION.relative_alt");
                     break;
                 case "vx":
-                    m.vx = (short) Json.integer(v, -32768, 32767, "vx");
+                    m.vx = (short) ConformanceJson.integer(v, -32768, 32767, "UTM_GLOBAL_POSITION.vx");
                     break;
                 case "vy":
-                    m.vy = (short) Json.integer(v, -32768, 32767, "vy");
+                    m.vy = (short) ConformanceJson.integer(v, -32768, 32767, "UTM_GLOBAL_POSITION.vy");
                     break;
                 case "vz":
-                    m.vz = (short) Json.integer(v, -32768, 32767, "vz");
+                    m.vz = (short) ConformanceJson.integer(v, -32768, 32767, "UTM_GLOBAL_POSITION.vz");
                     break;
                 case "h_acc":
-                    m.h_acc = (int) Json.integer(v, 0, 65535, "h_acc");
+                    m.h_acc = (int) ConformanceJson.integer(v, 0, 65535, "UTM_GLOBAL_POSITION.h_acc");
                     break;
                 case "v_acc":
-                    m.v_acc = (int) Json.integer(v, 0, 65535, "v_acc");
+                    m.v_acc = (int) ConformanceJson.integer(v, 0, 65535, "UTM_GLOBAL_POSITION.v_acc");
                     break;
                 case "vel_acc":
-                    m.vel_acc = (int) Json.integer(v, 0, 65535, "vel_acc");
+                    m.vel_acc = (int) ConformanceJson.integer(v, 0, 65535, "UTM_GLOBAL_POSITION.vel_acc");
                     break;
                 case "next_lat":
-                    m.next_lat = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "next_lat");
+                    m.next_lat = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "UTM_GLOBAL_POSITION.next_lat");
                     break;
                 case "next_lon":
-                    m.next_lon = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "next_lon");
+                    m.next_lon = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "UTM_GLOBAL_POSITION.next_lon");
                     break;
                 case "next_alt":
-                    m.next_alt = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "next_alt");
+                    m.next_alt = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "UTM_GLOBAL_POSITION.next_alt");
                     break;
                 case "update_rate":
-                    m.update_rate = (int) Json.integer(v, 0, 65535, "update_rate");
+                    m.update_rate = (int) ConformanceJson.integer(v, 0, 65535, "UTM_GLOBAL_POSITION.update_rate");
                     break;
                 case "flight_state":
-                    m.flight_state = (int) Json.integer(v, 0, 255, "flight_state");
+                    m.flight_state = (int) ConformanceJson.integer(v, 0, 255, "UTM_GLOBAL_POSITION.flight_state");
                     break;
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 255, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 255, "UTM_GLOBAL_POSITION.flags");
                     break;
                 default:
                     throw new Refusal("UTM_GLOBAL_POSITION has no field '" + e.getKey() + "'");
@@ -12673,19 +12677,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "PARAM_ERROR.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "PARAM_ERROR.target_component");
                     break;
                 case "param_id":
-                    m.param_id = Json.text(v, 16, "param_id");
+                    m.param_id = ConformanceJson.text(v, 16, "PARAM_ERROR.param_id");
                     break;
                 case "param_index":
-                    m.param_index = (short) Json.integer(v, -32768, 32767, "param_index");
+                    m.param_index = (short) ConformanceJson.integer(v, -32768, 32767, "PARAM_ERROR.param_index");
                     break;
                 case "error":
-                    m.error = (int) Json.integer(v, 0, 255, "error");
+                    m.error = (int) ConformanceJson.integer(v, 0, 255, "PARAM_ERROR.error");
                     break;
                 default:
                     throw new Refusal("PARAM_ERROR has no field '" + e.getKey() + "'");
@@ -12700,16 +12704,16 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "DEBUG_FLOAT_ARRAY.time_usec");
                     break;
                 case "name":
-                    m.name = Json.text(v, 10, "name");
+                    m.name = ConformanceJson.text(v, 10, "DEBUG_FLOAT_ARRAY.name");
                     break;
                 case "array_id":
-                    m.array_id = (int) Json.integer(v, 0, 65535, "array_id");
+                    m.array_id = (int) ConformanceJson.integer(v, 0, 65535, "DEBUG_FLOAT_ARRAY.array_id");
                     break;
                 case "data":
-                    m.data = Json.f32s(v, 58, "data");
+                    m.data = ConformanceJson.f32s(v, 58, "DEBUG_FLOAT_ARRAY.data");
                     break;
                 default:
                     throw new Refusal("DEBUG_FLOAT_ARRAY has no field '" + e.getKey() + "'");
@@ -12724,22 +12728,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "ORBIT_EXECUTION_STATUS.time_usec");
                     break;
                 case "radius":
-                    m.radius = Json.f32(v, "radius");
+                    m.radius = ConformanceJson.f32(v, "ORBIT_EXECUTION_STATUS.radius");
                     break;
                 case "frame":
-                    m.frame = (int) Json.integer(v, 0, 255, "frame");
+                    m.frame = (int) ConformanceJson.integer(v, 0, 255, "ORBIT_EXECUTION_STATUS.frame");
                     break;
                 case "x":
-                    m.x = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "x");
+                    m.x = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "ORBIT_EXECUTION_STATUS.x");
                     break;
                 case "y":
-                    m.y = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "y");
+                    m.y = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "ORBIT_EXECUTION_STATUS.y");
                     break;
                 case "z":
-                    m.z = Json.f32(v, "z");
+                    m.z = ConformanceJson.f32(v, "ORBIT_EXECUTION_STATUS.z");
                     break;
                 default:
                     throw new Refusal("ORBIT_EXECUTION_STATUS has no field '" + e.getKey() + "'");
@@ -12754,55 +12758,55 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 255, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 255, "SMART_BATTERY_INFO.id");
                     break;
                 case "battery_function":
-                    m.battery_function = (int) Json.integer(v, 0, 255, "battery_function");
+                    m.battery_function = (int) ConformanceJson.integer(v, 0, 255, "SMART_BATTERY_INFO.battery_function");
                     break;
                 case "type":
-                    m.type = (int) Json.integer(v, 0, 255, "type");
+                    m.type = (int) ConformanceJson.integer(v, 0, 255, "SMART_BATTERY_INFO.type");
                     break;
                 case "capacity_full_specification":
-                    m.capacity_full_specification = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "capacity_full_specification");
+                    m.capacity_full_specification = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "SMART_BATTERY_INFO.capacity_full_specification");
                     break;
                 case "capacity_full":
-                    m.capacity_full = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "capacity_full");
+                    m.capacity_full = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "SMART_BATTERY_INFO.capacity_full");
                     break;
                 case "cycle_count":
-                    m.cycle_count = (int) Json.integer(v, 0, 65535, "cycle_count");
+                    m.cycle_count = (int) ConformanceJson.integer(v, 0, 65535, "SMART_BATTERY_INFO.cycle_count");
                     break;
                 case "serial_number":
-                    m.serial_number = Json.text(v, 16, "serial_number");
+                    m.serial_number = ConformanceJson.text(v, 16, "SMART_BATTERY_INFO.serial_number");
                     break;
                 case "device_name":
-                    m.device_name = Json.text(v, 50, "device_name");
+                    m.device_name = ConformanceJson.text(v, 50, "SMART_BATTERY_INFO.device_name");
                     break;
                 case "weight":
-                    m.weight = (int) Json.integer(v, 0, 65535, "weight");
+                    m.weight = (int) ConformanceJson.integer(v, 0, 65535, "SMART_BATTERY_INFO.weight");
                     break;
                 case "discharge_minimum_voltage":
-                    m.discharge_minimum_voltage = (int) Json.integer(v, 0, 65535, "discharge_minimum_voltage");
+                    m.discharge_minimum_voltage = (int) ConformanceJson.integer(v, 0, 65535, "SMART_BATTERY_INFO.discharge_minimum_voltage");
                     break;
                 case "charging_minimum_voltage":
-                    m.charging_minimum_voltage = (int) Json.integer(v, 0, 65535, "charging_minimum_voltage");
+                    m.charging_minimum_voltage = (int) ConformanceJson.integer(v, 0, 65535, "SMART_BATTERY_INFO.charging_minimum_voltage");
                     break;
                 case "resting_minimum_voltage":
-                    m.resting_minimum_voltage = (int) Json.integer(v, 0, 65535, "resting_minimum_voltage");
+                    m.resting_minimum_voltage = (int) ConformanceJson.integer(v, 0, 65535, "SMART_BATTERY_INFO.resting_minimum_voltage");
                     break;
                 case "charging_maximum_voltage":
-                    m.charging_maximum_voltage = (int) Json.integer(v, 0, 65535, "charging_maximum_voltage");
+                    m.charging_maximum_voltage = (int) ConformanceJson.integer(v, 0, 65535, "SMART_BATTERY_INFO.charging_maximum_voltage");
                     break;
                 case "cells_in_series":
-                    m.cells_in_series = (int) Json.integer(v, 0, 255, "cells_in_series");
+                    m.cells_in_series = (int) ConformanceJson.integer(v, 0, 255, "SMART_BATTERY_INFO.cells_in_series");
                     break;
                 case "discharge_maximum_current":
-                    m.discharge_maximum_current = Json.integer(v, 0, 4294967295L, "discharge_maximum_current");
+                    m.discharge_maximum_current = ConformanceJson.integer(v, 0, 4294967295L, "SMART_BATTERY_INFO.discharge_maximum_current");
                     break;
                 case "discharge_maximum_burst_current":
-                    m.discharge_maximum_burst_current = Json.integer(v, 0, 4294967295L, "discharge_maximum_burst_current");
+                    m.discharge_maximum_burst_current = ConformanceJson.integer(v, 0, 4294967295L, "SMART_BATTERY_INFO.discharge_maximum_burst_current");
                     break;
                 case "manufacture_date":
-                    m.manufacture_date = Json.text(v, 11, "manufacture_date");
+                    m.manufacture_date = ConformanceJson.text(v, 11, "SMART_BATTERY_INFO.manufacture_date");
                     break;
                 default:
                     throw new Refusal("SMART_BATTERY_INFO has no field '" + e.getKey() + "'");
@@ -12817,37 +12821,37 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "status":
-                    m.status = Json.uint64(v, "status");
+                    m.status = ConformanceJson.uint64(v, "GENERATOR_STATUS.status");
                     break;
                 case "generator_speed":
-                    m.generator_speed = (int) Json.integer(v, 0, 65535, "generator_speed");
+                    m.generator_speed = (int) ConformanceJson.integer(v, 0, 65535, "GENERATOR_STATUS.generator_speed");
                     break;
                 case "battery_current":
-                    m.battery_current = Json.f32(v, "battery_current");
+                    m.battery_current = ConformanceJson.f32(v, "GENERATOR_STATUS.battery_current");
                     break;
                 case "load_current":
-                    m.load_current = Json.f32(v, "load_current");
+                    m.load_current = ConformanceJson.f32(v, "GENERATOR_STATUS.load_current");
                     break;
                 case "power_generated":
-                    m.power_generated = Json.f32(v, "power_generated");
+                    m.power_generated = ConformanceJson.f32(v, "GENERATOR_STATUS.power_generated");
                     break;
                 case "bus_voltage":
-                    m.bus_voltage = Json.f32(v, "bus_voltage");
+                    m.bus_voltage = ConformanceJson.f32(v, "GENERATOR_STATUS.bus_voltage");
                     break;
                 case "rectifier_temperature":
-                    m.rectifier_temperature = (short) Json.integer(v, -32768, 32767, "rectifier_temperature");
+                    m.rectifier_temperature = (short) ConformanceJson.integer(v, -32768, 32767, "GENERATOR_STATUS.rectifier_temperature");
                     break;
                 case "bat_current_setpoint":
-                    m.bat_current_setpoint = Json.f32(v, "bat_current_setpoint");
+                    m.bat_current_setpoint = ConformanceJson.f32(v, "GENERATOR_STATUS.bat_current_setpoint");
                     break;
                 case "generator_temperature":
-                    m.generator_temperature = (short) Json.integer(v, -32768, 32767, "generator_temperature");
+                    m.generator_temperature = (short) ConformanceJson.integer(v, -32768, 32767, "GENERATOR_STATUS.generator_temperature");
                     break;
                 case "runtime":
-                    m.runtime = Json.integer(v, 0, 4294967295L, "runtime");
+                    m.runtime = ConformanceJson.integer(v, 0, 4294967295L, "GENERATOR_STATUS.runtime");
                     break;
                 case "time_until_maintenance":
-                    m.time_until_maintenance = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "time_until_maintenance");
+                    m.time_until_maintenance = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "GENERATOR_STATUS.time_until_maintenance");
                     break;
                 default:
                     throw new Refusal("GENERATOR_STATUS has no field '" + e.getKey() + "'");
@@ -12862,13 +12866,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "ACTUATOR_OUTPUT_STATUS.time_usec");
                     break;
                 case "active":
-                    m.active = Json.integer(v, 0, 4294967295L, "active");
+                    m.active = ConformanceJson.integer(v, 0, 4294967295L, "ACTUATOR_OUTPUT_STATUS.active");
                     break;
                 case "actuator":
-                    m.actuator = Json.f32s(v, 32, "actuator");
+                    m.actuator = ConformanceJson.f32s(v, 32, "ACTUATOR_OUTPUT_STATUS.actuator");
                     break;
                 default:
                     throw new Refusal("ACTUATOR_OUTPUT_STATUS has no field '" + e.getKey() + "'");
@@ -12883,13 +12887,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "RELAY_STATUS.time_boot_ms");
                     break;
                 case "on":
-                    m.on = (int) Json.integer(v, 0, 65535, "on");
+                    m.on = (int) ConformanceJson.integer(v, 0, 65535, "RELAY_STATUS.on");
                     break;
                 case "present":
-                    m.present = (int) Json.integer(v, 0, 65535, "present");
+                    m.present = (int) ConformanceJson.integer(v, 0, 65535, "RELAY_STATUS.present");
                     break;
                 default:
                     throw new Refusal("RELAY_STATUS has no field '" + e.getKey() + "'");
@@ -12904,19 +12908,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "TUNNEL.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "TUNNEL.target_component");
                     break;
                 case "payload_type":
-                    m.payload_type = (int) Json.integer(v, 0, 65535, "payload_type");
+                    m.payload_type = (int) ConformanceJson.integer(v, 0, 65535, "TUNNEL.payload_type");
                     break;
                 case "payload_length":
-                    m.payload_length = (int) Json.integer(v, 0, 255, "payload_length");
+                    m.payload_length = (int) ConformanceJson.integer(v, 0, 255, "TUNNEL.payload_length");
                     break;
                 case "payload":
-                    m.payload = Json.u8s(v, 128, "payload");
+                    m.payload = ConformanceJson.u8s(v, 128, "TUNNEL.payload");
                     break;
                 default:
                     throw new Refusal("TUNNEL has no field '" + e.getKey() + "'");
@@ -12931,22 +12935,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "CAN_FRAME.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "CAN_FRAME.target_component");
                     break;
                 case "bus":
-                    m.bus = (int) Json.integer(v, 0, 255, "bus");
+                    m.bus = (int) ConformanceJson.integer(v, 0, 255, "CAN_FRAME.bus");
                     break;
                 case "len":
-                    m.len = (int) Json.integer(v, 0, 255, "len");
+                    m.len = (int) ConformanceJson.integer(v, 0, 255, "CAN_FRAME.len");
                     break;
                 case "id":
-                    m.id = Json.integer(v, 0, 4294967295L, "id");
+                    m.id = ConformanceJson.integer(v, 0, 4294967295L, "CAN_FRAME.id");
                     break;
                 case "data":
-                    m.data = Json.u8s(v, 8, "data");
+                    m.data = ConformanceJson.u8s(v, 8, "CAN_FRAME.data");
                     break;
                 default:
                     throw new Refusal("CAN_FRAME has no field '" + e.getKey() + "'");
@@ -12961,22 +12965,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "CANFD_FRAME.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "CANFD_FRAME.target_component");
                     break;
                 case "bus":
-                    m.bus = (int) Json.integer(v, 0, 255, "bus");
+                    m.bus = (int) ConformanceJson.integer(v, 0, 255, "CANFD_FRAME.bus");
                     break;
                 case "len":
-                    m.len = (int) Json.integer(v, 0, 255, "len");
+                    m.len = (int) ConformanceJson.integer(v, 0, 255, "CANFD_FRAME.len");
                     break;
                 case "id":
-                    m.id = Json.integer(v, 0, 4294967295L, "id");
+                    m.id = ConformanceJson.integer(v, 0, 4294967295L, "CANFD_FRAME.id");
                     break;
                 case "data":
-                    m.data = Json.u8s(v, 64, "data");
+                    m.data = ConformanceJson.u8s(v, 64, "CANFD_FRAME.data");
                     break;
                 default:
                     throw new Refusal("CANFD_FRAME has no field '" + e.getKey() + "'");
@@ -12991,22 +12995,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "CAN_FILTER_MODIFY.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "CAN_FILTER_MODIFY.target_component");
                     break;
                 case "bus":
-                    m.bus = (int) Json.integer(v, 0, 255, "bus");
+                    m.bus = (int) ConformanceJson.integer(v, 0, 255, "CAN_FILTER_MODIFY.bus");
                     break;
                 case "operation":
-                    m.operation = (int) Json.integer(v, 0, 255, "operation");
+                    m.operation = (int) ConformanceJson.integer(v, 0, 255, "CAN_FILTER_MODIFY.operation");
                     break;
                 case "num_ids":
-                    m.num_ids = (int) Json.integer(v, 0, 255, "num_ids");
+                    m.num_ids = (int) ConformanceJson.integer(v, 0, 255, "CAN_FILTER_MODIFY.num_ids");
                     break;
                 case "ids":
-                    m.ids = Json.ints(v, 16, 0, 65535, "ids");
+                    m.ids = ConformanceJson.ints(v, 16, 0, 65535, "CAN_FILTER_MODIFY.ids");
                     break;
                 default:
                     throw new Refusal("CAN_FILTER_MODIFY has no field '" + e.getKey() + "'");
@@ -13021,67 +13025,67 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "ONBOARD_COMPUTER_STATUS.time_usec");
                     break;
                 case "uptime":
-                    m.uptime = Json.integer(v, 0, 4294967295L, "uptime");
+                    m.uptime = ConformanceJson.integer(v, 0, 4294967295L, "ONBOARD_COMPUTER_STATUS.uptime");
                     break;
                 case "type":
-                    m.type = (int) Json.integer(v, 0, 255, "type");
+                    m.type = (int) ConformanceJson.integer(v, 0, 255, "ONBOARD_COMPUTER_STATUS.type");
                     break;
                 case "cpu_cores":
-                    m.cpu_cores = Json.u8s(v, 8, "cpu_cores");
+                    m.cpu_cores = ConformanceJson.u8s(v, 8, "ONBOARD_COMPUTER_STATUS.cpu_cores");
                     break;
                 case "cpu_combined":
-                    m.cpu_combined = Json.u8s(v, 10, "cpu_combined");
+                    m.cpu_combined = ConformanceJson.u8s(v, 10, "ONBOARD_COMPUTER_STATUS.cpu_combined");
                     break;
                 case "gpu_cores":
-                    m.gpu_cores = Json.u8s(v, 4, "gpu_cores");
+                    m.gpu_cores = ConformanceJson.u8s(v, 4, "ONBOARD_COMPUTER_STATUS.gpu_cores");
                     break;
                 case "gpu_combined":
-                    m.gpu_combined = Json.u8s(v, 10, "gpu_combined");
+                    m.gpu_combined = ConformanceJson.u8s(v, 10, "ONBOARD_COMPUTER_STATUS.gpu_combined");
                     break;
                 case "temperature_board":
-                    m.temperature_board = (byte) Json.integer(v, -128, 127, "temperature_board");
+                    m.temperature_board = (byte) ConformanceJson.integer(v, -128, 127, "ONBOARD_COMPUTER_STATUS.temperature_board");
                     break;
                 case "temperature_core":
-                    m.temperature_core = Json.i8s(v, 8, "temperature_core");
+                    m.temperature_core = ConformanceJson.i8s(v, 8, "ONBOARD_COMPUTER_STATUS.temperature_core");
                     break;
                 case "fan_speed":
-                    m.fan_speed = Json.shorts(v, 4, "fan_speed");
+                    m.fan_speed = ConformanceJson.shorts(v, 4, "ONBOARD_COMPUTER_STATUS.fan_speed");
                     break;
                 case "ram_usage":
-                    m.ram_usage = Json.integer(v, 0, 4294967295L, "ram_usage");
+                    m.ram_usage = ConformanceJson.integer(v, 0, 4294967295L, "ONBOARD_COMPUTER_STATUS.ram_usage");
                     break;
                 case "ram_total":
-                    m.ram_total = Json.integer(v, 0, 4294967295L, "ram_total");
+                    m.ram_total = ConformanceJson.integer(v, 0, 4294967295L, "ONBOARD_COMPUTER_STATUS.ram_total");
                     break;
                 case "storage_type":
-                    m.storage_type = Json.longs(v, 4, 0, 4294967295L, "storage_type");
+                    m.storage_type = ConformanceJson.longs(v, 4, 0, 4294967295L, "ONBOARD_COMPUTER_STATUS.storage_type");
                     break;
                 case "storage_usage":
-                    m.storage_usage = Json.longs(v, 4, 0, 4294967295L, "storage_usage");
+                    m.storage_usage = ConformanceJson.longs(v, 4, 0, 4294967295L, "ONBOARD_COMPUTER_STATUS.storage_usage");
                     break;
                 case "storage_total":
-                    m.storage_total = Json.longs(v, 4, 0, 4294967295L, "storage_total");
+                    m.storage_total = ConformanceJson.longs(v, 4, 0, 4294967295L, "ONBOARD_COMPUTER_STATUS.storage_total");
                     break;
                 case "link_type":
-                    m.link_type = Json.longs(v, 6, 0, 4294967295L, "link_type");
+                    m.link_type = ConformanceJson.longs(v, 6, 0, 4294967295L, "ONBOARD_COMPUTER_STATUS.link_type");
                     break;
                 case "link_tx_rate":
-                    m.link_tx_rate = Json.longs(v, 6, 0, 4294967295L, "link_tx_rate");
+                    m.link_tx_rate = ConformanceJson.longs(v, 6, 0, 4294967295L, "ONBOARD_COMPUTER_STATUS.link_tx_rate");
                     break;
                 case "link_rx_rate":
-                    m.link_rx_rate = Json.longs(v, 6, 0, 4294967295L, "link_rx_rate");
+                    m.link_rx_rate = ConformanceJson.longs(v, 6, 0, 4294967295L, "ONBOARD_COMPUTER_STATUS.link_rx_rate");
                     break;
                 case "link_tx_max":
-                    m.link_tx_max = Json.longs(v, 6, 0, 4294967295L, "link_tx_max");
+                    m.link_tx_max = ConformanceJson.longs(v, 6, 0, 4294967295L, "ONBOARD_COMPUTER_STATUS.link_tx_max");
                     break;
                 case "link_rx_max":
-                    m.link_rx_max = Json.longs(v, 6, 0, 4294967295L, "link_rx_max");
+                    m.link_rx_max = ConformanceJson.longs(v, 6, 0, 4294967295L, "ONBOARD_COMPUTER_STATUS.link_rx_max");
                     break;
                 case "status_flags":
-                    m.status_flags = (int) Json.integer(v, 0, 65535, "status_flags");
+                    m.status_flags = (int) ConformanceJson.integer(v, 0, 65535, "ONBOARD_COMPUTER_STATUS.status_flags");
                     break;
                 default:
                     throw new Refusal("ONBOARD_COMPUTER_STATUS has no field '" + e.getKey() + "'");
@@ -13096,13 +13100,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "WHEEL_DISTANCE.time_usec");
                     break;
                 case "count":
-                    m.count = (int) Json.integer(v, 0, 255, "count");
+                    m.count = (int) ConformanceJson.integer(v, 0, 255, "WHEEL_DISTANCE.count");
                     break;
                 case "distance":
-                    m.distance = Json.f64s(v, 16, "distance");
+                    m.distance = ConformanceJson.f64s(v, 16, "WHEEL_DISTANCE.distance");
                     break;
                 default:
                     throw new Refusal("WHEEL_DISTANCE has no field '" + e.getKey() + "'");
@@ -13117,28 +13121,28 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "WINCH_STATUS.time_usec");
                     break;
                 case "line_length":
-                    m.line_length = Json.f32(v, "line_length");
+                    m.line_length = ConformanceJson.f32(v, "WINCH_STATUS.line_length");
                     break;
                 case "speed":
-                    m.speed = Json.f32(v, "speed");
+                    m.speed = ConformanceJson.f32(v, "WINCH_STATUS.speed");
                     break;
                 case "tension":
-                    m.tension = Json.f32(v, "tension");
+                    m.tension = ConformanceJson.f32(v, "WINCH_STATUS.tension");
                     break;
                 case "voltage":
-                    m.voltage = Json.f32(v, "voltage");
+                    m.voltage = ConformanceJson.f32(v, "WINCH_STATUS.voltage");
                     break;
                 case "current":
-                    m.current = Json.f32(v, "current");
+                    m.current = ConformanceJson.f32(v, "WINCH_STATUS.current");
                     break;
                 case "temperature":
-                    m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
+                    m.temperature = (short) ConformanceJson.integer(v, -32768, 32767, "WINCH_STATUS.temperature");
                     break;
                 case "status":
-                    m.status = Json.integer(v, 0, 4294967295L, "status");
+                    m.status = ConformanceJson.integer(v, 0, 4294967295L, "WINCH_STATUS.status");
                     break;
                 default:
                     throw new Refusal("WINCH_STATUS has no field '" + e.getKey() + "'");
@@ -13153,22 +13157,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_BASIC_ID.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_BASIC_ID.target_component");
                     break;
                 case "id_or_mac":
-                    m.id_or_mac = Json.u8s(v, 20, "id_or_mac");
+                    m.id_or_mac = ConformanceJson.u8s(v, 20, "OPEN_DRONE_ID_BASIC_ID.id_or_mac");
                     break;
                 case "id_type":
-                    m.id_type = (int) Json.integer(v, 0, 255, "id_type");
+                    m.id_type = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_BASIC_ID.id_type");
                     break;
                 case "ua_type":
-                    m.ua_type = (int) Json.integer(v, 0, 255, "ua_type");
+                    m.ua_type = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_BASIC_ID.ua_type");
                     break;
                 case "uas_id":
-                    m.uas_id = Json.u8s(v, 20, "uas_id");
+                    m.uas_id = ConformanceJson.u8s(v, 20, "OPEN_DRONE_ID_BASIC_ID.uas_id");
                     break;
                 default:
                     throw new Refusal("OPEN_DRONE_ID_BASIC_ID has no field '" + e.getKey() + "'");
@@ -13183,61 +13187,61 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_LOCATION.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_LOCATION.target_component");
                     break;
                 case "id_or_mac":
-                    m.id_or_mac = Json.u8s(v, 20, "id_or_mac");
+                    m.id_or_mac = ConformanceJson.u8s(v, 20, "OPEN_DRONE_ID_LOCATION.id_or_mac");
                     break;
                 case "status":
-                    m.status = (int) Json.integer(v, 0, 255, "status");
+                    m.status = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_LOCATION.status");
                     break;
                 case "direction":
-                    m.direction = (int) Json.integer(v, 0, 65535, "direction");
+                    m.direction = (int) ConformanceJson.integer(v, 0, 65535, "OPEN_DRONE_ID_LOCATION.direction");
                     break;
                 case "speed_horizontal":
-                    m.speed_horizontal = (int) Json.integer(v, 0, 65535, "speed_horizontal");
+                    m.speed_horizontal = (int) ConformanceJson.integer(v, 0, 65535, "OPEN_DRONE_ID_LOCATION.speed_horizontal");
                     break;
                 case "speed_vertical":
-                    m.speed_vertical = (short) Json.integer(v, -32768, 32767, "speed_vertical");
+                    m.speed_vertical = (short) ConformanceJson.integer(v, -32768, 32767, "OPEN_DRONE_ID_LOCATION.speed_vertical");
                     break;
                 case "latitude":
-                    m.latitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "latitude");
+                    m.latitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "OPEN_DRONE_ID_LOCATION.latitude");
                     break;
                 case "longitude":
-                    m.longitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "longitude");
+                    m.longitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "OPEN_DRONE_ID_LOCATION.longitude");
                     break;
                 case "altitude_barometric":
-                    m.altitude_barometric = Json.f32(v, "altitude_barometric");
+                    m.altitude_barometric = ConformanceJson.f32(v, "OPEN_DRONE_ID_LOCATION.altitude_barometric");
                     break;
                 case "altitude_geodetic":
-                    m.altitude_geodetic = Json.f32(v, "altitude_geodetic");
+                    m.altitude_geodetic = ConformanceJson.f32(v, "OPEN_DRONE_ID_LOCATION.altitude_geodetic");
                     break;
                 case "height_reference":
-                    m.height_reference = (int) Json.integer(v, 0, 255, "height_reference");
+                    m.height_reference = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_LOCATION.height_reference");
                     break;
                 case "height":
-                    m.height = Json.f32(v, "height");
+                    m.height = ConformanceJson.f32(v, "OPEN_DRONE_ID_LOCATION.height");
                     break;
                 case "horizontal_accuracy":
-                    m.horizontal_accuracy = (int) Json.integer(v, 0, 255, "horizontal_accuracy");
+                    m.horizontal_accuracy = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_LOCATION.horizontal_accuracy");
                     break;
                 case "vertical_accuracy":
-                    m.vertical_accuracy = (int) Json.integer(v, 0, 255, "vertical_accuracy");
+                    m.vertical_accuracy = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_LOCATION.vertical_accuracy");
                     break;
                 case "barometer_accuracy":
-                    m.barometer_accuracy = (int) Json.integer(v, 0, 255, "barometer_accuracy");
+                    m.barometer_accuracy = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_LOCATION.barometer_accuracy");
                     break;
                 case "speed_accuracy":
-                    m.speed_accuracy = (int) Json.integer(v, 0, 255, "speed_accuracy");
+                    m.speed_accuracy = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_LOCATION.speed_accuracy");
                     break;
                 case "timestamp":
-                    m.timestamp = Json.f32(v, "timestamp");
+                    m.timestamp = ConformanceJson.f32(v, "OPEN_DRONE_ID_LOCATION.timestamp");
                     break;
                 case "timestamp_accuracy":
-                    m.timestamp_accuracy = (int) Json.integer(v, 0, 255, "timestamp_accuracy");
+                    m.timestamp_accuracy = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_LOCATION.timestamp_accuracy");
                     break;
                 default:
                     throw new Refusal("OPEN_DRONE_ID_LOCATION has no field '" + e.getKey() + "'");
@@ -13252,31 +13256,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_AUTHENTICATION.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_AUTHENTICATION.target_component");
                     break;
                 case "id_or_mac":
-                    m.id_or_mac = Json.u8s(v, 20, "id_or_mac");
+                    m.id_or_mac = ConformanceJson.u8s(v, 20, "OPEN_DRONE_ID_AUTHENTICATION.id_or_mac");
                     break;
                 case "authentication_type":
-                    m.authentication_type = (int) Json.integer(v, 0, 255, "authentication_type");
+                    m.authentication_type = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_AUTHENTICATION.authentication_type");
                     break;
                 case "data_page":
-                    m.data_page = (int) Json.integer(v, 0, 255, "data_page");
+                    m.data_page = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_AUTHENTICATION.data_page");
                     break;
                 case "last_page_index":
-                    m.last_page_index = (int) Json.integer(v, 0, 255, "last_page_index");
+                    m.last_page_index = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_AUTHENTICATION.last_page_index");
                     break;
                 case "length":
-                    m.length = (int) Json.integer(v, 0, 255, "length");
+                    m.length = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_AUTHENTICATION.length");
                     break;
                 case "timestamp":
-                    m.timestamp = Json.integer(v, 0, 4294967295L, "timestamp");
+                    m.timestamp = ConformanceJson.integer(v, 0, 4294967295L, "OPEN_DRONE_ID_AUTHENTICATION.timestamp");
                     break;
                 case "authentication_data":
-                    m.authentication_data = Json.u8s(v, 23, "authentication_data");
+                    m.authentication_data = ConformanceJson.u8s(v, 23, "OPEN_DRONE_ID_AUTHENTICATION.authentication_data");
                     break;
                 default:
                     throw new Refusal("OPEN_DRONE_ID_AUTHENTICATION has no field '" + e.getKey() + "'");
@@ -13291,19 +13295,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_SELF_ID.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_SELF_ID.target_component");
                     break;
                 case "id_or_mac":
-                    m.id_or_mac = Json.u8s(v, 20, "id_or_mac");
+                    m.id_or_mac = ConformanceJson.u8s(v, 20, "OPEN_DRONE_ID_SELF_ID.id_or_mac");
                     break;
                 case "description_type":
-                    m.description_type = (int) Json.integer(v, 0, 255, "description_type");
+                    m.description_type = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_SELF_ID.description_type");
                     break;
                 case "description":
-                    m.description = Json.text(v, 23, "description");
+                    m.description = ConformanceJson.text(v, 23, "OPEN_DRONE_ID_SELF_ID.description");
                     break;
                 default:
                     throw new Refusal("OPEN_DRONE_ID_SELF_ID has no field '" + e.getKey() + "'");
@@ -13318,49 +13322,49 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_SYSTEM.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_SYSTEM.target_component");
                     break;
                 case "id_or_mac":
-                    m.id_or_mac = Json.u8s(v, 20, "id_or_mac");
+                    m.id_or_mac = ConformanceJson.u8s(v, 20, "OPEN_DRONE_ID_SYSTEM.id_or_mac");
                     break;
                 case "operator_location_type":
-                    m.operator_location_type = (int) Json.integer(v, 0, 255, "operator_location_type");
+                    m.operator_location_type = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_SYSTEM.operator_location_type");
                     break;
                 case "classification_type":
-                    m.classification_type = (int) Json.integer(v, 0, 255, "classification_type");
+                    m.classification_type = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_SYSTEM.classification_type");
                     break;
                 case "operator_latitude":
-                    m.operator_latitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "operator_latitude");
+                    m.operator_latitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "OPEN_DRONE_ID_SYSTEM.operator_latitude");
                     break;
                 case "operator_longitude":
-                    m.operator_longitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "operator_longitude");
+                    m.operator_longitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "OPEN_DRONE_ID_SYSTEM.operator_longitude");
                     break;
                 case "area_count":
-                    m.area_count = (int) Json.integer(v, 0, 65535, "area_count");
+                    m.area_count = (int) ConformanceJson.integer(v, 0, 65535, "OPEN_DRONE_ID_SYSTEM.area_count");
                     break;
                 case "area_radius":
-                    m.area_radius = (int) Json.integer(v, 0, 65535, "area_radius");
+                    m.area_radius = (int) ConformanceJson.integer(v, 0, 65535, "OPEN_DRONE_ID_SYSTEM.area_radius");
                     break;
                 case "area_ceiling":
-                    m.area_ceiling = Json.f32(v, "area_ceiling");
+                    m.area_ceiling = ConformanceJson.f32(v, "OPEN_DRONE_ID_SYSTEM.area_ceiling");
                     break;
                 case "area_floor":
-                    m.area_floor = Json.f32(v, "area_floor");
+                    m.area_floor = ConformanceJson.f32(v, "OPEN_DRONE_ID_SYSTEM.area_floor");
                     break;
                 case "category_eu":
-                    m.category_eu = (int) Json.integer(v, 0, 255, "category_eu");
+                    m.category_eu = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_SYSTEM.category_eu");
                     break;
                 case "class_eu":
-                    m.class_eu = (int) Json.integer(v, 0, 255, "class_eu");
+                    m.class_eu = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_SYSTEM.class_eu");
                     break;
                 case "operator_altitude_geo":
-                    m.operator_altitude_geo = Json.f32(v, "operator_altitude_geo");
+                    m.operator_altitude_geo = ConformanceJson.f32(v, "OPEN_DRONE_ID_SYSTEM.operator_altitude_geo");
                     break;
                 case "timestamp":
-                    m.timestamp = Json.integer(v, 0, 4294967295L, "timestamp");
+                    m.timestamp = ConformanceJson.integer(v, 0, 4294967295L, "OPEN_DRONE_ID_SYSTEM.timestamp");
                     break;
                 default:
                     throw new Refusal("OPEN_DRONE_ID_SYSTEM has no field '" + e.getKey() + "'");
@@ -13375,19 +13379,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_OPERATOR_ID.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_OPERATOR_ID.target_component");
                     break;
                 case "id_or_mac":
-                    m.id_or_mac = Json.u8s(v, 20, "id_or_mac");
+                    m.id_or_mac = ConformanceJson.u8s(v, 20, "OPEN_DRONE_ID_OPERATOR_ID.id_or_mac");
                     break;
                 case "operator_id_type":
-                    m.operator_id_type = (int) Json.integer(v, 0, 255, "operator_id_type");
+                    m.operator_id_type = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_OPERATOR_ID.operator_id_type");
                     break;
                 case "operator_id":
-                    m.operator_id = Json.text(v, 20, "operator_id");
+                    m.operator_id = ConformanceJson.text(v, 20, "OPEN_DRONE_ID_OPERATOR_ID.operator_id");
                     break;
                 default:
                     throw new Refusal("OPEN_DRONE_ID_OPERATOR_ID has no field '" + e.getKey() + "'");
@@ -13402,22 +13406,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_MESSAGE_PACK.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_MESSAGE_PACK.target_component");
                     break;
                 case "id_or_mac":
-                    m.id_or_mac = Json.u8s(v, 20, "id_or_mac");
+                    m.id_or_mac = ConformanceJson.u8s(v, 20, "OPEN_DRONE_ID_MESSAGE_PACK.id_or_mac");
                     break;
                 case "single_message_size":
-                    m.single_message_size = (int) Json.integer(v, 0, 255, "single_message_size");
+                    m.single_message_size = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_MESSAGE_PACK.single_message_size");
                     break;
                 case "msg_pack_size":
-                    m.msg_pack_size = (int) Json.integer(v, 0, 255, "msg_pack_size");
+                    m.msg_pack_size = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_MESSAGE_PACK.msg_pack_size");
                     break;
                 case "messages":
-                    m.messages = Json.u8s(v, 225, "messages");
+                    m.messages = ConformanceJson.u8s(v, 225, "OPEN_DRONE_ID_MESSAGE_PACK.messages");
                     break;
                 default:
                     throw new Refusal("OPEN_DRONE_ID_MESSAGE_PACK has no field '" + e.getKey() + "'");
@@ -13432,10 +13436,10 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "status":
-                    m.status = (int) Json.integer(v, 0, 255, "status");
+                    m.status = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_ARM_STATUS.status");
                     break;
                 case "error":
-                    m.error = Json.text(v, 50, "error");
+                    m.error = ConformanceJson.text(v, 50, "OPEN_DRONE_ID_ARM_STATUS.error");
                     break;
                 default:
                     throw new Refusal("OPEN_DRONE_ID_ARM_STATUS has no field '" + e.getKey() + "'");
@@ -13450,22 +13454,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_SYSTEM_UPDATE.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "OPEN_DRONE_ID_SYSTEM_UPDATE.target_component");
                     break;
                 case "operator_latitude":
-                    m.operator_latitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "operator_latitude");
+                    m.operator_latitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "OPEN_DRONE_ID_SYSTEM_UPDATE.operator_latitude");
                     break;
                 case "operator_longitude":
-                    m.operator_longitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "operator_longitude");
+                    m.operator_longitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "OPEN_DRONE_ID_SYSTEM_UPDATE.operator_longitude");
                     break;
                 case "operator_altitude_geo":
-                    m.operator_altitude_geo = Json.f32(v, "operator_altitude_geo");
+                    m.operator_altitude_geo = ConformanceJson.f32(v, "OPEN_DRONE_ID_SYSTEM_UPDATE.operator_altitude_geo");
                     break;
                 case "timestamp":
-                    m.timestamp = Json.integer(v, 0, 4294967295L, "timestamp");
+                    m.timestamp = ConformanceJson.integer(v, 0, 4294967295L, "OPEN_DRONE_ID_SYSTEM_UPDATE.timestamp");
                     break;
                 default:
                     throw new Refusal("OPEN_DRONE_ID_SYSTEM_UPDATE has no field '" + e.getKey() + "'");
@@ -13480,13 +13484,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 255, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 255, "HYGROMETER_SENSOR.id");
                     break;
                 case "temperature":
-                    m.temperature = (short) Json.integer(v, -32768, 32767, "temperature");
+                    m.temperature = (short) ConformanceJson.integer(v, -32768, 32767, "HYGROMETER_SENSOR.temperature");
                     break;
                 case "humidity":
-                    m.humidity = (int) Json.integer(v, 0, 65535, "humidity");
+                    m.humidity = (int) ConformanceJson.integer(v, 0, 65535, "HYGROMETER_SENSOR.humidity");
                     break;
                 default:
                     throw new Refusal("HYGROMETER_SENSOR has no field '" + e.getKey() + "'");
@@ -13501,31 +13505,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_OFFER.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_OFFER.target_component");
                     break;
                 case "transfer_id":
-                    m.transfer_id = Json.integer(v, 0, 4294967295L, "transfer_id");
+                    m.transfer_id = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_OFFER.transfer_id");
                     break;
                 case "request_id":
-                    m.request_id = Json.integer(v, 0, 4294967295L, "request_id");
+                    m.request_id = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_OFFER.request_id");
                     break;
                 case "size":
-                    m.size = Json.integer(v, 0, 4294967295L, "size");
+                    m.size = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_OFFER.size");
                     break;
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 255, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_OFFER.flags");
                     break;
                 case "meta_length":
-                    m.meta_length = (int) Json.integer(v, 0, 255, "meta_length");
+                    m.meta_length = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_OFFER.meta_length");
                     break;
                 case "meta_offset":
-                    m.meta_offset = (int) Json.integer(v, 0, 255, "meta_offset");
+                    m.meta_offset = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_OFFER.meta_offset");
                     break;
                 case "meta":
-                    m.meta = Json.u8s(v, 71, "meta");
+                    m.meta = ConformanceJson.u8s(v, 71, "TT_FILE_OFFER.meta");
                     break;
                 default:
                     throw new Refusal("TT_FILE_OFFER has no field '" + e.getKey() + "'");
@@ -13540,40 +13544,40 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_STATUS.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_STATUS.target_component");
                     break;
                 case "transfer_id":
-                    m.transfer_id = Json.integer(v, 0, 4294967295L, "transfer_id");
+                    m.transfer_id = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_STATUS.transfer_id");
                     break;
                 case "result":
-                    m.result = (int) Json.integer(v, 0, 255, "result");
+                    m.result = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_STATUS.result");
                     break;
                 case "received_contiguous":
-                    m.received_contiguous = Json.integer(v, 0, 4294967295L, "received_contiguous");
+                    m.received_contiguous = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_STATUS.received_contiguous");
                     break;
                 case "region_start":
-                    m.region_start = Json.integer(v, 0, 4294967295L, "region_start");
+                    m.region_start = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_STATUS.region_start");
                     break;
                 case "received_end":
-                    m.received_end = Json.integer(v, 0, 4294967295L, "received_end");
+                    m.received_end = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_STATUS.received_end");
                     break;
                 case "last_offset":
-                    m.last_offset = Json.integer(v, 0, 4294967295L, "last_offset");
+                    m.last_offset = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_STATUS.last_offset");
                     break;
                 case "hold_ms":
-                    m.hold_ms = (int) Json.integer(v, 0, 65535, "hold_ms");
+                    m.hold_ms = (int) ConformanceJson.integer(v, 0, 65535, "TT_FILE_STATUS.hold_ms");
                     break;
                 case "range_count":
-                    m.range_count = (int) Json.integer(v, 0, 255, "range_count");
+                    m.range_count = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_STATUS.range_count");
                     break;
                 case "meta_check":
-                    m.meta_check = Json.integer(v, 0, 4294967295L, "meta_check");
+                    m.meta_check = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_STATUS.meta_check");
                     break;
                 case "ranges":
-                    m.ranges = Json.longs(v, 14, 0, 4294967295L, "ranges");
+                    m.ranges = ConformanceJson.longs(v, 14, 0, 4294967295L, "TT_FILE_STATUS.ranges");
                     break;
                 default:
                     throw new Refusal("TT_FILE_STATUS has no field '" + e.getKey() + "'");
@@ -13588,13 +13592,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "transfer_id":
-                    m.transfer_id = Json.integer(v, 0, 4294967295L, "transfer_id");
+                    m.transfer_id = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_DATA.transfer_id");
                     break;
                 case "offset":
-                    m.offset = Json.integer(v, 0, 4294967295L, "offset");
+                    m.offset = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_DATA.offset");
                     break;
                 case "data":
-                    m.data = Json.u8s(v, 80, "data");
+                    m.data = ConformanceJson.u8s(v, 80, "TT_FILE_DATA.data");
                     break;
                 default:
                     throw new Refusal("TT_FILE_DATA has no field '" + e.getKey() + "'");
@@ -13609,22 +13613,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_REQUEST.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_REQUEST.target_component");
                     break;
                 case "request_id":
-                    m.request_id = Json.integer(v, 0, 4294967295L, "request_id");
+                    m.request_id = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_REQUEST.request_id");
                     break;
                 case "name_length":
-                    m.name_length = (int) Json.integer(v, 0, 255, "name_length");
+                    m.name_length = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_REQUEST.name_length");
                     break;
                 case "name_offset":
-                    m.name_offset = (int) Json.integer(v, 0, 255, "name_offset");
+                    m.name_offset = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_REQUEST.name_offset");
                     break;
                 case "name":
-                    m.name = Json.u8s(v, 80, "name");
+                    m.name = ConformanceJson.u8s(v, 80, "TT_FILE_REQUEST.name");
                     break;
                 default:
                     throw new Refusal("TT_FILE_REQUEST has no field '" + e.getKey() + "'");
@@ -13639,22 +13643,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "DJI_POSE_STAMPED.target_system");
                     break;
                 case "sec":
-                    m.sec = Json.integer(v, 0, 4294967295L, "sec");
+                    m.sec = ConformanceJson.integer(v, 0, 4294967295L, "DJI_POSE_STAMPED.sec");
                     break;
                 case "nsec":
-                    m.nsec = Json.integer(v, 0, 4294967295L, "nsec");
+                    m.nsec = ConformanceJson.integer(v, 0, 4294967295L, "DJI_POSE_STAMPED.nsec");
                     break;
                 case "topic_name":
-                    m.topic_name = (int) Json.integer(v, 0, 255, "topic_name");
+                    m.topic_name = (int) ConformanceJson.integer(v, 0, 255, "DJI_POSE_STAMPED.topic_name");
                     break;
                 case "position":
-                    m.position = Json.f64s(v, 3, "position");
+                    m.position = ConformanceJson.f64s(v, 3, "DJI_POSE_STAMPED.position");
                     break;
                 case "orientation":
-                    m.orientation = Json.f64s(v, 4, "orientation");
+                    m.orientation = ConformanceJson.f64s(v, 4, "DJI_POSE_STAMPED.orientation");
                     break;
                 default:
                     throw new Refusal("DJI_POSE_STAMPED has no field '" + e.getKey() + "'");
@@ -13669,25 +13673,25 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "TT_ACTION_COMMAND.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "TT_ACTION_COMMAND.target_component");
                     break;
                 case "command_id":
-                    m.command_id = (int) Json.integer(v, 0, 65535, "command_id");
+                    m.command_id = (int) ConformanceJson.integer(v, 0, 65535, "TT_ACTION_COMMAND.command_id");
                     break;
                 case "action":
-                    m.action = (int) Json.integer(v, 0, 255, "action");
+                    m.action = (int) ConformanceJson.integer(v, 0, 255, "TT_ACTION_COMMAND.action");
                     break;
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "TT_ACTION_COMMAND.time_usec");
                     break;
                 case "param":
-                    m.param = Json.f32s(v, 4, "param");
+                    m.param = ConformanceJson.f32s(v, 4, "TT_ACTION_COMMAND.param");
                     break;
                 case "argument":
-                    m.argument = Json.text(v, 48, "argument");
+                    m.argument = ConformanceJson.text(v, 48, "TT_ACTION_COMMAND.argument");
                     break;
                 default:
                     throw new Refusal("TT_ACTION_COMMAND has no field '" + e.getKey() + "'");
@@ -13702,31 +13706,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "TT_NAV_SAT_FIX.time_usec");
                     break;
                 case "latitude":
-                    m.latitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "latitude");
+                    m.latitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "TT_NAV_SAT_FIX.latitude");
                     break;
                 case "longitude":
-                    m.longitude = (int) Json.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "longitude");
+                    m.longitude = (int) ConformanceJson.integer(v, Integer.MIN_VALUE, Integer.MAX_VALUE, "TT_NAV_SAT_FIX.longitude");
                     break;
                 case "altitude":
-                    m.altitude = Json.f32(v, "altitude");
+                    m.altitude = ConformanceJson.f32(v, "TT_NAV_SAT_FIX.altitude");
                     break;
                 case "position_covariance":
-                    m.position_covariance = Json.f32s(v, 9, "position_covariance");
+                    m.position_covariance = ConformanceJson.f32s(v, 9, "TT_NAV_SAT_FIX.position_covariance");
                     break;
                 case "status":
-                    m.status = (int) Json.integer(v, 0, 255, "status");
+                    m.status = (int) ConformanceJson.integer(v, 0, 255, "TT_NAV_SAT_FIX.status");
                     break;
                 case "service":
-                    m.service = (int) Json.integer(v, 0, 65535, "service");
+                    m.service = (int) ConformanceJson.integer(v, 0, 65535, "TT_NAV_SAT_FIX.service");
                     break;
                 case "covariance_type":
-                    m.covariance_type = (int) Json.integer(v, 0, 255, "covariance_type");
+                    m.covariance_type = (int) ConformanceJson.integer(v, 0, 255, "TT_NAV_SAT_FIX.covariance_type");
                     break;
                 case "satellites":
-                    m.satellites = (int) Json.integer(v, 0, 255, "satellites");
+                    m.satellites = (int) ConformanceJson.integer(v, 0, 255, "TT_NAV_SAT_FIX.satellites");
                     break;
                 default:
                     throw new Refusal("TT_NAV_SAT_FIX has no field '" + e.getKey() + "'");
@@ -13741,28 +13745,28 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "TT_ODOMETRY.time_usec");
                     break;
                 case "frame_id":
-                    m.frame_id = (int) Json.integer(v, 0, 255, "frame_id");
+                    m.frame_id = (int) ConformanceJson.integer(v, 0, 255, "TT_ODOMETRY.frame_id");
                     break;
                 case "child_frame_id":
-                    m.child_frame_id = (int) Json.integer(v, 0, 255, "child_frame_id");
+                    m.child_frame_id = (int) ConformanceJson.integer(v, 0, 255, "TT_ODOMETRY.child_frame_id");
                     break;
                 case "position":
-                    m.position = Json.f32s(v, 3, "position");
+                    m.position = ConformanceJson.f32s(v, 3, "TT_ODOMETRY.position");
                     break;
                 case "orientation":
-                    m.orientation = Json.f32s(v, 4, "orientation");
+                    m.orientation = ConformanceJson.f32s(v, 4, "TT_ODOMETRY.orientation");
                     break;
                 case "linear":
-                    m.linear = Json.f32s(v, 3, "linear");
+                    m.linear = ConformanceJson.f32s(v, 3, "TT_ODOMETRY.linear");
                     break;
                 case "angular":
-                    m.angular = Json.f32s(v, 3, "angular");
+                    m.angular = ConformanceJson.f32s(v, 3, "TT_ODOMETRY.angular");
                     break;
                 case "pose_variance":
-                    m.pose_variance = Json.f32s(v, 6, "pose_variance");
+                    m.pose_variance = ConformanceJson.f32s(v, 6, "TT_ODOMETRY.pose_variance");
                     break;
                 default:
                     throw new Refusal("TT_ODOMETRY has no field '" + e.getKey() + "'");
@@ -13777,19 +13781,19 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_boot_ms":
-                    m.time_boot_ms = Json.integer(v, 0, 4294967295L, "time_boot_ms");
+                    m.time_boot_ms = ConformanceJson.integer(v, 0, 4294967295L, "TT_LOG.time_boot_ms");
                     break;
                 case "id":
-                    m.id = (int) Json.integer(v, 0, 65535, "id");
+                    m.id = (int) ConformanceJson.integer(v, 0, 65535, "TT_LOG.id");
                     break;
                 case "severity":
-                    m.severity = (int) Json.integer(v, 0, 255, "severity");
+                    m.severity = (int) ConformanceJson.integer(v, 0, 255, "TT_LOG.severity");
                     break;
                 case "chunk_seq":
-                    m.chunk_seq = (int) Json.integer(v, 0, 255, "chunk_seq");
+                    m.chunk_seq = (int) ConformanceJson.integer(v, 0, 255, "TT_LOG.chunk_seq");
                     break;
                 case "text":
-                    m.text = Json.text(v, 80, "text");
+                    m.text = ConformanceJson.text(v, 80, "TT_LOG.text");
                     break;
                 default:
                     throw new Refusal("TT_LOG has no field '" + e.getKey() + "'");
@@ -13804,13 +13808,13 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "transfer_id":
-                    m.transfer_id = Json.integer(v, 0, 4294967295L, "transfer_id");
+                    m.transfer_id = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_DATA_WIDE.transfer_id");
                     break;
                 case "offset":
-                    m.offset = Json.integer(v, 0, 4294967295L, "offset");
+                    m.offset = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_DATA_WIDE.offset");
                     break;
                 case "data":
-                    m.data = Json.u8s(v, 247, "data");
+                    m.data = ConformanceJson.u8s(v, 247, "TT_FILE_DATA_WIDE.data");
                     break;
                 default:
                     throw new Refusal("TT_FILE_DATA_WIDE has no field '" + e.getKey() + "'");
@@ -13825,22 +13829,22 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "TT_COMMAND_ACK.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "TT_COMMAND_ACK.target_component");
                     break;
                 case "command_id":
-                    m.command_id = (int) Json.integer(v, 0, 65535, "command_id");
+                    m.command_id = (int) ConformanceJson.integer(v, 0, 65535, "TT_COMMAND_ACK.command_id");
                     break;
                 case "action":
-                    m.action = (int) Json.integer(v, 0, 255, "action");
+                    m.action = (int) ConformanceJson.integer(v, 0, 255, "TT_COMMAND_ACK.action");
                     break;
                 case "result":
-                    m.result = (int) Json.integer(v, 0, 255, "result");
+                    m.result = (int) ConformanceJson.integer(v, 0, 255, "TT_COMMAND_ACK.result");
                     break;
                 case "progress":
-                    m.progress = (int) Json.integer(v, 0, 255, "progress");
+                    m.progress = (int) ConformanceJson.integer(v, 0, 255, "TT_COMMAND_ACK.progress");
                     break;
                 default:
                     throw new Refusal("TT_COMMAND_ACK has no field '" + e.getKey() + "'");
@@ -13855,31 +13859,31 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "TT_VR_POSE.time_usec");
                     break;
                 case "device":
-                    m.device = (int) Json.integer(v, 0, 255, "device");
+                    m.device = (int) ConformanceJson.integer(v, 0, 255, "TT_VR_POSE.device");
                     break;
                 case "role":
-                    m.role = (int) Json.integer(v, 0, 255, "role");
+                    m.role = (int) ConformanceJson.integer(v, 0, 255, "TT_VR_POSE.role");
                     break;
                 case "index":
-                    m.index = (int) Json.integer(v, 0, 255, "index");
+                    m.index = (int) ConformanceJson.integer(v, 0, 255, "TT_VR_POSE.index");
                     break;
                 case "flags":
-                    m.flags = (int) Json.integer(v, 0, 255, "flags");
+                    m.flags = (int) ConformanceJson.integer(v, 0, 255, "TT_VR_POSE.flags");
                     break;
                 case "position":
-                    m.position = Json.f32s(v, 3, "position");
+                    m.position = ConformanceJson.f32s(v, 3, "TT_VR_POSE.position");
                     break;
                 case "orientation":
-                    m.orientation = Json.f32s(v, 4, "orientation");
+                    m.orientation = ConformanceJson.f32s(v, 4, "TT_VR_POSE.orientation");
                     break;
                 case "velocity":
-                    m.velocity = Json.f32s(v, 3, "velocity");
+                    m.velocity = ConformanceJson.f32s(v, 3, "TT_VR_POSE.velocity");
                     break;
                 case "angular_velocity":
-                    m.angular_velocity = Json.f32s(v, 3, "angular_velocity");
+                    m.angular_velocity = ConformanceJson.f32s(v, 3, "TT_VR_POSE.angular_velocity");
                     break;
                 default:
                     throw new Refusal("TT_VR_POSE has no field '" + e.getKey() + "'");
@@ -13894,28 +13898,28 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "time_usec":
-                    m.time_usec = Json.uint64(v, "time_usec");
+                    m.time_usec = ConformanceJson.uint64(v, "TT_VR_CONTROLLER.time_usec");
                     break;
                 case "packet_num":
-                    m.packet_num = Json.integer(v, 0, 4294967295L, "packet_num");
+                    m.packet_num = ConformanceJson.integer(v, 0, 4294967295L, "TT_VR_CONTROLLER.packet_num");
                     break;
                 case "index":
-                    m.index = (int) Json.integer(v, 0, 255, "index");
+                    m.index = (int) ConformanceJson.integer(v, 0, 255, "TT_VR_CONTROLLER.index");
                     break;
                 case "role":
-                    m.role = (int) Json.integer(v, 0, 255, "role");
+                    m.role = (int) ConformanceJson.integer(v, 0, 255, "TT_VR_CONTROLLER.role");
                     break;
                 case "trigger":
-                    m.trigger = Json.f32(v, "trigger");
+                    m.trigger = ConformanceJson.f32(v, "TT_VR_CONTROLLER.trigger");
                     break;
                 case "pad_x":
-                    m.pad_x = Json.f32(v, "pad_x");
+                    m.pad_x = ConformanceJson.f32(v, "TT_VR_CONTROLLER.pad_x");
                     break;
                 case "pad_y":
-                    m.pad_y = Json.f32(v, "pad_y");
+                    m.pad_y = ConformanceJson.f32(v, "TT_VR_CONTROLLER.pad_y");
                     break;
                 case "buttons":
-                    m.buttons = (int) Json.integer(v, 0, 65535, "buttons");
+                    m.buttons = (int) ConformanceJson.integer(v, 0, 65535, "TT_VR_CONTROLLER.buttons");
                     break;
                 default:
                     throw new Refusal("TT_VR_CONTROLLER has no field '" + e.getKey() + "'");
@@ -13930,574 +13934,24 @@ public final class Conformance {
             Object v = e.getValue();
             switch ((String) e.getKey()) {
                 case "target_system":
-                    m.target_system = (int) Json.integer(v, 0, 255, "target_system");
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_REASON.target_system");
                     break;
                 case "target_component":
-                    m.target_component = (int) Json.integer(v, 0, 255, "target_component");
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_REASON.target_component");
                     break;
                 case "transfer_id":
-                    m.transfer_id = Json.integer(v, 0, 4294967295L, "transfer_id");
+                    m.transfer_id = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_REASON.transfer_id");
                     break;
                 case "result":
-                    m.result = (int) Json.integer(v, 0, 255, "result");
+                    m.result = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_REASON.result");
                     break;
                 case "text":
-                    m.text = Json.text(v, 80, "text");
+                    m.text = ConformanceJson.text(v, 80, "TT_FILE_REASON.text");
                     break;
                 default:
                     throw new Refusal("TT_FILE_REASON has no field '" + e.getKey() + "'");
             }
         }
         return m;
-    }
-
-    /** A minimal JSON reader and writer: objects, arrays, strings, numbers (kept as text), literals. */
-    static final class Json {
-        /** JSON null (a Java null means absent). */
-        static final Object NULL = new Object() {
-            @Override
-            public String toString() {
-                return "null";
-            }
-        };
-        private static final int MAX_DEPTH = 512;
-
-        /** A number, as its text. */
-        static final class Num {
-            final String text;
-
-            Num(String text) {
-                this.text = text;
-            }
-
-            boolean integral() {
-                return text.indexOf('.') < 0 && text.indexOf('e') < 0 && text.indexOf('E') < 0;
-            }
-
-            @Override
-            public String toString() {
-                return text;
-            }
-        }
-
-        private final String s;
-        private int i;
-
-        private Json(String s) {
-            this.s = s;
-        }
-
-        static Num number(String text) {
-            return new Num(text);
-        }
-
-        static Object parse(String text) {
-            Json p = new Json(text);
-            p.ws();
-            Object v = p.value(0);
-            p.ws();
-            if (p.i != text.length()) {
-                throw p.fail("trailing characters");
-            }
-            return v;
-        }
-
-        private IllegalArgumentException fail(String what) {
-            return new Refusal("bad JSON at offset " + i);  // only where: the three parsers' words differ
-        }
-
-        private void ws() {
-            while (i < s.length()) {
-                char c = s.charAt(i);
-                if (c != ' ' && c != '\t' && c != '\n' && c != '\r') {
-                    break;
-                }
-                i++;
-            }
-        }
-
-        private Object value(int depth) {
-            if (depth > MAX_DEPTH) {
-                throw fail("nested too deeply");
-            }
-            if (i >= s.length()) {
-                throw fail("unexpected end");
-            }
-            char c = s.charAt(i);
-            if (c == '{') {
-                i++;
-                Map<String, Object> map = new LinkedHashMap<>();
-                ws();
-                if (i < s.length() && s.charAt(i) == '}') {
-                    i++;
-                    return map;
-                }
-                while (true) {
-                    ws();
-                    if (i >= s.length() || s.charAt(i) != '"') {
-                        throw fail("expected a key");
-                    }
-                    String key = string();
-                    ws();
-                    expect(':');
-                    ws();
-                    map.put(key, value(depth + 1));
-                    ws();
-                    if (i < s.length() && s.charAt(i) == ',') {
-                        i++;
-                        continue;
-                    }
-                    expect('}');
-                    return map;
-                }
-            }
-            if (c == '[') {
-                i++;
-                List<Object> list = new ArrayList<>();
-                ws();
-                if (i < s.length() && s.charAt(i) == ']') {
-                    i++;
-                    return list;
-                }
-                while (true) {
-                    ws();
-                    list.add(value(depth + 1));
-                    ws();
-                    if (i < s.length() && s.charAt(i) == ',') {
-                        i++;
-                        continue;
-                    }
-                    expect(']');
-                    return list;
-                }
-            }
-            if (c == '"') {
-                return string();
-            }
-            if (s.startsWith("true", i)) {
-                i += 4;
-                return Boolean.TRUE;
-            }
-            if (s.startsWith("false", i)) {
-                i += 5;
-                return Boolean.FALSE;
-            }
-            if (s.startsWith("null", i)) {
-                i += 4;
-                return NULL;
-            }
-            return num();
-        }
-
-        private void expect(char c) {
-            if (i >= s.length() || s.charAt(i) != c) {
-                throw fail("expected '" + c + "'");
-            }
-            i++;
-        }
-
-        private Num num() {
-            int start = i;
-            if (i < s.length() && s.charAt(i) == '-') {
-                i++;
-            }
-            if (i < s.length() && s.charAt(i) == '0') {
-                i++;
-            } else if (digits() == 0) {
-                throw fail("unexpected character");
-            }
-            if (i < s.length() && s.charAt(i) == '.') {
-                i++;
-                if (digits() == 0) {
-                    throw fail("digits expected after '.'");
-                }
-            }
-            if (i < s.length() && (s.charAt(i) == 'e' || s.charAt(i) == 'E')) {
-                i++;
-                if (i < s.length() && (s.charAt(i) == '+' || s.charAt(i) == '-')) {
-                    i++;
-                }
-                if (digits() == 0) {
-                    throw fail("digits expected in the exponent");
-                }
-            }
-            return new Num(s.substring(start, i));
-        }
-
-        private int digits() {
-            int start = i;
-            while (i < s.length() && s.charAt(i) >= '0' && s.charAt(i) <= '9') {
-                i++;
-            }
-            return i - start;
-        }
-
-        private String string() {
-            i++; // opening quote
-            StringBuilder sb = new StringBuilder();
-            while (true) {
-                if (i >= s.length()) {
-                    throw fail("unterminated string");
-                }
-                char c = s.charAt(i++);
-                if (c == '"') {
-                    return sb.toString();
-                }
-                if (c < 0x20) {
-                    throw fail("control character in a string");
-                }
-                if (c != '\\') {
-                    sb.append(c);
-                    continue;
-                }
-                if (i >= s.length()) {
-                    throw fail("unterminated escape");
-                }
-                char e = s.charAt(i++);
-                switch (e) {
-                    case '"':
-                    case '\\':
-                    case '/':
-                        sb.append(e);
-                        break;
-                    case 'b':
-                        sb.append('\b');
-                        break;
-                    case 'f':
-                        sb.append('\f');
-                        break;
-                    case 'n':
-                        sb.append('\n');
-                        break;
-                    case 'r':
-                        sb.append('\r');
-                        break;
-                    case 't':
-                        sb.append('\t');
-                        break;
-                    case 'u':
-                        if (i + 4 > s.length()) {
-                            throw fail("short \\u escape");
-                        }
-                        int code = 0;
-                        for (int k = 0; k < 4; k++) {
-                            int d = Character.digit(s.charAt(i + k), 16);
-                            if (d < 0) {
-                                throw fail("bad \\u escape");
-                            }
-                            code = code << 4 | d;
-                        }
-                        i += 4;
-                        sb.append((char) code);
-                        break;
-                    default:
-                        throw fail("bad escape");
-                }
-            }
-        }
-
-        // writing
-
-        static void string(StringBuilder sb, String v) {
-            sb.append('"');
-            for (int k = 0; k < v.length(); k++) {
-                char c = v.charAt(k);
-                if (c == '"' || c == '\\') {
-                    sb.append('\\').append(c);
-                } else if (c < 0x20 || c > 0x7E) {
-                    sb.append(String.format("\\u%04x", (int) c));
-                } else {
-                    sb.append(c);
-                }
-            }
-            sb.append('"');
-        }
-
-        static String show(Object v) {
-            if (v instanceof String) {
-                StringBuilder sb = new StringBuilder();
-                string(sb, (String) v);
-                return sb.toString();
-            }
-            return String.valueOf(v);
-        }
-
-        static void text(StringBuilder sb, byte[] v) {
-            int n = 0;
-            while (n < v.length && v[n] != 0) {
-                n++;
-            }
-            char[] chars = new char[n];
-            for (int k = 0; k < n; k++) {
-                chars[k] = (char) (v[k] & 0xFF);
-            }
-            string(sb, new String(chars));
-        }
-
-        static void textChar(StringBuilder sb, byte v) {
-            text(sb, new byte[] {v});
-        }
-
-        static void f32(StringBuilder sb, float v) {
-            if (Float.isNaN(v)) {
-                sb.append("\"NaN\"");
-            } else if (Float.isInfinite(v)) {
-                sb.append(v > 0 ? "\"Infinity\"" : "\"-Infinity\"");
-            } else {
-                String t = Float.toString(v);
-                if (Float.floatToRawIntBits((float) Double.parseDouble(t)) != Float.floatToRawIntBits(v)) {
-                    t = Double.toString(v); // the float's exact double: parses back to it
-                }
-                sb.append(t);
-            }
-        }
-
-        static void f64(StringBuilder sb, double v) {
-            if (Double.isNaN(v)) {
-                sb.append("\"NaN\"");
-            } else if (Double.isInfinite(v)) {
-                sb.append(v > 0 ? "\"Infinity\"" : "\"-Infinity\"");
-            } else {
-                String t = Double.toString(v);
-                if (Double.doubleToRawLongBits(Double.parseDouble(t)) != Double.doubleToRawLongBits(v)) {
-                    t = new java.math.BigDecimal(v).toString();
-                }
-                sb.append(t);
-            }
-        }
-
-        static void u8s(StringBuilder sb, byte[] v) {
-            sb.append('[');
-            for (int k = 0; k < v.length; k++) {
-                sb.append(k == 0 ? "" : ",").append(v[k] & 0xFF);
-            }
-            sb.append(']');
-        }
-
-        static void i8s(StringBuilder sb, byte[] v) {
-            sb.append('[');
-            for (int k = 0; k < v.length; k++) {
-                sb.append(k == 0 ? "" : ",").append(v[k]);
-            }
-            sb.append(']');
-        }
-
-        static void shorts(StringBuilder sb, short[] v) {
-            sb.append('[');
-            for (int k = 0; k < v.length; k++) {
-                sb.append(k == 0 ? "" : ",").append(v[k]);
-            }
-            sb.append(']');
-        }
-
-        static void ints(StringBuilder sb, int[] v) {
-            sb.append('[');
-            for (int k = 0; k < v.length; k++) {
-                sb.append(k == 0 ? "" : ",").append(v[k]);
-            }
-            sb.append(']');
-        }
-
-        static void longs(StringBuilder sb, long[] v) {
-            sb.append('[');
-            for (int k = 0; k < v.length; k++) {
-                sb.append(k == 0 ? "" : ",").append(v[k]);
-            }
-            sb.append(']');
-        }
-
-        static void ulongs(StringBuilder sb, long[] v) {
-            sb.append('[');
-            for (int k = 0; k < v.length; k++) {
-                sb.append(k == 0 ? "" : ",").append(Unsigned.toString(v[k]));
-            }
-            sb.append(']');
-        }
-
-        static void f32s(StringBuilder sb, float[] v) {
-            sb.append('[');
-            for (int k = 0; k < v.length; k++) {
-                if (k > 0) {
-                    sb.append(',');
-                }
-                f32(sb, v[k]);
-            }
-            sb.append(']');
-        }
-
-        static void f64s(StringBuilder sb, double[] v) {
-            sb.append('[');
-            for (int k = 0; k < v.length; k++) {
-                if (k > 0) {
-                    sb.append(',');
-                }
-                f64(sb, v[k]);
-            }
-            sb.append(']');
-        }
-
-        // converting to field values
-
-        private static Num integralNum(Object v, String where) {
-            if (!(v instanceof Num) || !((Num) v).integral()) {
-                throw new IllegalArgumentException(where + ": not an integer: " + show(v));
-            }
-            return (Num) v;
-        }
-
-        static long integer(Object v, long lo, long hi, String where) {
-            Num n = integralNum(v, where);
-            long x;
-            try {
-                x = Long.parseLong(n.text);
-            } catch (NumberFormatException e) {
-                throw new IllegalArgumentException(where + ": " + n.text + " out of range");
-            }
-            if (x < lo || x > hi) {
-                throw new IllegalArgumentException(where + ": " + n.text + " out of range " + lo + ".." + hi);
-            }
-            return x;
-        }
-
-        static long uint64(Object v, String where) {
-            Num n = integralNum(v, where);
-            String t = n.text.equals("-0") ? "0" : n.text;
-            try {
-                return Unsigned.parse(t);
-            } catch (NumberFormatException e) {
-                throw new IllegalArgumentException(where + ": " + n.text + " is not a uint64");
-            }
-        }
-
-        static double f64(Object v, String where) {
-            if (v instanceof Num) {
-                return Double.parseDouble(((Num) v).text);
-            }
-            if ("NaN".equals(v)) {
-                return Double.NaN;
-            }
-            if ("Infinity".equals(v)) {
-                return Double.POSITIVE_INFINITY;
-            }
-            if ("-Infinity".equals(v)) {
-                return Double.NEGATIVE_INFINITY;
-            }
-            throw new IllegalArgumentException(where + ": not a number: " + show(v));
-        }
-
-        static float f32(Object v, String where) {
-            double d = f64(v, where);
-            float f = (float) d;
-            if (Float.isInfinite(f) && !Double.isInfinite(d)) {
-                throw new IllegalArgumentException(where + ": " + v + " is too large for a float");
-            }
-            return f;
-        }
-
-        static byte[] text(Object v, int n, String where) {
-            if (!(v instanceof String)) {
-                throw new IllegalArgumentException(where + ": not a string: " + show(v));
-            }
-            String t = (String) v;
-            if (t.length() > n) {
-                throw new IllegalArgumentException(where + ": " + t.length() + " bytes do not fit char[" + n + "]");
-            }
-            byte[] b = new byte[n];
-            for (int k = 0; k < t.length(); k++) {
-                char c = t.charAt(k);
-                if (c > 0xFF) {
-                    throw new IllegalArgumentException(where + ": character " + (int) c + " is not Latin-1");
-                }
-                b[k] = (byte) c;
-            }
-            return b;
-        }
-
-        static byte textChar(Object v, String where) {
-            return text(v, 1, where)[0];
-        }
-
-        private static List<?> list(Object v, int n, boolean exact, String where) {
-            if (!(v instanceof List)) {
-                throw new IllegalArgumentException(where + ": not a list: " + show(v));
-            }
-            List<?> l = (List<?>) v;
-            if (exact ? l.size() != n : l.size() > n) {
-                throw new IllegalArgumentException(where + ": " + l.size() + " values for [" + n + "]");
-            }
-            return l;
-        }
-
-        static byte[] u8s(Object v, int n, String where) {
-            List<?> l = list(v, n, false, where);
-            byte[] out = new byte[n];
-            for (int k = 0; k < l.size(); k++) {
-                out[k] = (byte) integer(l.get(k), 0, 255, where);
-            }
-            return out;
-        }
-
-        static byte[] i8s(Object v, int n, String where) {
-            List<?> l = list(v, n, true, where);
-            byte[] out = new byte[n];
-            for (int k = 0; k < n; k++) {
-                out[k] = (byte) integer(l.get(k), -128, 127, where);
-            }
-            return out;
-        }
-
-        static short[] shorts(Object v, int n, String where) {
-            List<?> l = list(v, n, true, where);
-            short[] out = new short[n];
-            for (int k = 0; k < n; k++) {
-                out[k] = (short) integer(l.get(k), Short.MIN_VALUE, Short.MAX_VALUE, where);
-            }
-            return out;
-        }
-
-        static int[] ints(Object v, int n, long lo, long hi, String where) {
-            List<?> l = list(v, n, true, where);
-            int[] out = new int[n];
-            for (int k = 0; k < n; k++) {
-                out[k] = (int) integer(l.get(k), lo, hi, where);
-            }
-            return out;
-        }
-
-        static long[] longs(Object v, int n, long lo, long hi, String where) {
-            List<?> l = list(v, n, true, where);
-            long[] out = new long[n];
-            for (int k = 0; k < n; k++) {
-                out[k] = integer(l.get(k), lo, hi, where);
-            }
-            return out;
-        }
-
-        static long[] ulongs(Object v, int n, String where) {
-            List<?> l = list(v, n, true, where);
-            long[] out = new long[n];
-            for (int k = 0; k < n; k++) {
-                out[k] = uint64(l.get(k), where);
-            }
-            return out;
-        }
-
-        static float[] f32s(Object v, int n, String where) {
-            List<?> l = list(v, n, true, where);
-            float[] out = new float[n];
-            for (int k = 0; k < n; k++) {
-                out[k] = f32(l.get(k), where);
-            }
-            return out;
-        }
-
-        static double[] f64s(Object v, int n, String where) {
-            List<?> l = list(v, n, true, where);
-            double[] out = new double[n];
-            for (int k = 0; k < n; k++) {
-                out[k] = f64(l.get(k), where);
-            }
-            return out;
-        }
     }
 }

@@ -313,57 +313,386 @@ def decode_line(hexframe: str) -> str:
             f'"compid":{msg.get_srcComponent()},"seq":{msg.get_seq()},"fields":{{{fields}}}}}')
 
 
-def _number(v: Any) -> float:
+# per message, per field in XML order: (wire type, array length) for the E requests' checks
+_TYPES: dict[str, list[tuple[str, int]]] = {
+    "HEARTBEAT": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "SYS_STATUS": [("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("int16_t", 0), ("int8_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0)],
+    "SYSTEM_TIME": [("uint64_t", 0), ("uint32_t", 0)],
+    "PING": [("uint64_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "CHANGE_OPERATOR_CONTROL": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("char", 25)],
+    "CHANGE_OPERATOR_CONTROL_ACK": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "AUTH_KEY": [("char", 32)],
+    "SET_MODE": [("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0)],
+    "PARAM_REQUEST_READ": [("uint8_t", 0), ("uint8_t", 0), ("char", 16), ("int16_t", 0)],
+    "PARAM_REQUEST_LIST": [("uint8_t", 0), ("uint8_t", 0)],
+    "PARAM_VALUE": [("char", 16), ("float", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint16_t", 0)],
+    "PARAM_SET": [("uint8_t", 0), ("uint8_t", 0), ("char", 16), ("float", 0), ("uint8_t", 0)],
+    "GPS_RAW_INT": [("uint64_t", 0), ("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("int32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint16_t", 0)],
+    "GPS_STATUS": [("uint8_t", 0), ("uint8_t", 20), ("uint8_t", 20), ("uint8_t", 20), ("uint8_t", 20), ("uint8_t", 20)],
+    "SCALED_IMU": [("uint32_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0)],
+    "RAW_IMU": [("uint64_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("uint8_t", 0), ("int16_t", 0)],
+    "RAW_PRESSURE": [("uint64_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0)],
+    "SCALED_PRESSURE": [("uint32_t", 0), ("float", 0), ("float", 0), ("int16_t", 0), ("int16_t", 0)],
+    "ATTITUDE": [("uint32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "ATTITUDE_QUATERNION": [("uint32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 4)],
+    "LOCAL_POSITION_NED": [("uint32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "GLOBAL_POSITION_INT": [("uint32_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("uint16_t", 0)],
+    "RC_CHANNELS_SCALED": [("uint32_t", 0), ("uint8_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("uint8_t", 0)],
+    "RC_CHANNELS_RAW": [("uint32_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0)],
+    "SERVO_OUTPUT_RAW": [("uint32_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0)],
+    "MISSION_REQUEST_PARTIAL_LIST": [("uint8_t", 0), ("uint8_t", 0), ("int16_t", 0), ("int16_t", 0), ("uint8_t", 0)],
+    "MISSION_WRITE_PARTIAL_LIST": [("uint8_t", 0), ("uint8_t", 0), ("int16_t", 0), ("int16_t", 0), ("uint8_t", 0)],
+    "MISSION_ITEM": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("uint8_t", 0)],
+    "MISSION_REQUEST": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0)],
+    "MISSION_SET_CURRENT": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0)],
+    "MISSION_CURRENT": [("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "MISSION_REQUEST_LIST": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "MISSION_COUNT": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0)],
+    "MISSION_CLEAR_ALL": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "MISSION_ITEM_REACHED": [("uint16_t", 0)],
+    "MISSION_ACK": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "SET_GPS_GLOBAL_ORIGIN": [("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("uint64_t", 0)],
+    "GPS_GLOBAL_ORIGIN": [("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("uint64_t", 0)],
+    "PARAM_MAP_RC": [("uint8_t", 0), ("uint8_t", 0), ("char", 16), ("int16_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "MISSION_REQUEST_INT": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0)],
+    "SAFETY_SET_ALLOWED_AREA": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "SAFETY_ALLOWED_AREA": [("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "ATTITUDE_QUATERNION_COV": [("uint64_t", 0), ("float", 4), ("float", 0), ("float", 0), ("float", 0), ("float", 9)],
+    "NAV_CONTROLLER_OUTPUT": [("float", 0), ("float", 0), ("int16_t", 0), ("int16_t", 0), ("uint16_t", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "GLOBAL_POSITION_INT_COV": [("uint64_t", 0), ("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 36)],
+    "LOCAL_POSITION_NED_COV": [("uint64_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 45)],
+    "RC_CHANNELS": [("uint32_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0)],
+    "REQUEST_DATA_STREAM": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0)],
+    "DATA_STREAM": [("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0)],
+    "MANUAL_CONTROL": [("uint8_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0)],
+    "RC_CHANNELS_OVERRIDE": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0)],
+    "MISSION_ITEM_INT": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0), ("uint8_t", 0)],
+    "VFR_HUD": [("float", 0), ("float", 0), ("int16_t", 0), ("uint16_t", 0), ("float", 0), ("float", 0)],
+    "COMMAND_INT": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0)],
+    "COMMAND_LONG": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "COMMAND_ACK": [("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("int32_t", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "MANUAL_SETPOINT": [("uint32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "SET_ATTITUDE_TARGET": [("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 4), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "ATTITUDE_TARGET": [("uint32_t", 0), ("uint8_t", 0), ("float", 4), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "SET_POSITION_TARGET_LOCAL_NED": [("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "POSITION_TARGET_LOCAL_NED": [("uint32_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "SET_POSITION_TARGET_GLOBAL_INT": [("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "POSITION_TARGET_GLOBAL_INT": [("uint32_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "LOCAL_POSITION_NED_SYSTEM_GLOBAL_OFFSET": [("uint32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "HIL_STATE": [("uint64_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0)],
+    "HIL_CONTROLS": [("uint64_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "HIL_RC_INPUTS_RAW": [("uint64_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0)],
+    "HIL_ACTUATOR_CONTROLS": [("uint64_t", 0), ("float", 16), ("uint8_t", 0), ("uint64_t", 0)],
+    "OPTICAL_FLOW": [("uint64_t", 0), ("uint8_t", 0), ("int16_t", 0), ("int16_t", 0), ("float", 0), ("float", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "GLOBAL_VISION_POSITION_ESTIMATE": [("uint64_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 21), ("uint8_t", 0)],
+    "VISION_POSITION_ESTIMATE": [("uint64_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 21), ("uint8_t", 0)],
+    "VISION_SPEED_ESTIMATE": [("uint64_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 9), ("uint8_t", 0)],
+    "VICON_POSITION_ESTIMATE": [("uint64_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 21)],
+    "HIGHRES_IMU": [("uint64_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("uint16_t", 0), ("uint8_t", 0)],
+    "OPTICAL_FLOW_RAD": [("uint64_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("int16_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("float", 0)],
+    "HIL_SENSOR": [("uint64_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("uint32_t", 0), ("uint8_t", 0)],
+    "SIM_STATE": [("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("int32_t", 0), ("int32_t", 0)],
+    "RADIO_STATUS": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint16_t", 0)],
+    "FILE_TRANSFER_PROTOCOL": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 251)],
+    "TIMESYNC": [("int64_t", 0), ("int64_t", 0)],
+    "CAMERA_TRIGGER": [("uint64_t", 0), ("uint32_t", 0)],
+    "HIL_GPS": [("uint64_t", 0), ("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0)],
+    "HIL_OPTICAL_FLOW": [("uint64_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("int16_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("float", 0)],
+    "HIL_STATE_QUATERNION": [("uint64_t", 0), ("float", 4), ("float", 0), ("float", 0), ("float", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0)],
+    "SCALED_IMU2": [("uint32_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0)],
+    "LOG_REQUEST_LIST": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint16_t", 0)],
+    "LOG_ENTRY": [("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint32_t", 0), ("uint32_t", 0)],
+    "LOG_REQUEST_DATA": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint32_t", 0), ("uint32_t", 0)],
+    "LOG_DATA": [("uint16_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 90)],
+    "LOG_ERASE": [("uint8_t", 0), ("uint8_t", 0)],
+    "LOG_REQUEST_END": [("uint8_t", 0), ("uint8_t", 0)],
+    "GPS_INJECT_DATA": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 110)],
+    "GPS2_RAW": [("uint64_t", 0), ("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint16_t", 0), ("int32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0)],
+    "POWER_STATUS": [("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0)],
+    "SERIAL_CONTROL": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 70)],
+    "GPS_RTK": [("uint32_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("uint32_t", 0), ("int32_t", 0)],
+    "GPS2_RTK": [("uint32_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("uint32_t", 0), ("int32_t", 0)],
+    "SCALED_IMU3": [("uint32_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0)],
+    "DATA_TRANSMISSION_HANDSHAKE": [("uint8_t", 0), ("uint32_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "ENCAPSULATED_DATA": [("uint16_t", 0), ("uint8_t", 253)],
+    "DISTANCE_SENSOR": [("uint32_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 4), ("uint8_t", 0)],
+    "TERRAIN_REQUEST": [("int32_t", 0), ("int32_t", 0), ("uint16_t", 0), ("uint64_t", 0)],
+    "TERRAIN_DATA": [("int32_t", 0), ("int32_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("int16_t", 16)],
+    "TERRAIN_CHECK": [("int32_t", 0), ("int32_t", 0)],
+    "TERRAIN_REPORT": [("int32_t", 0), ("int32_t", 0), ("uint16_t", 0), ("float", 0), ("float", 0), ("uint16_t", 0), ("uint16_t", 0)],
+    "SCALED_PRESSURE2": [("uint32_t", 0), ("float", 0), ("float", 0), ("int16_t", 0), ("int16_t", 0)],
+    "ATT_POS_MOCAP": [("uint64_t", 0), ("float", 4), ("float", 0), ("float", 0), ("float", 0), ("float", 21)],
+    "SET_ACTUATOR_CONTROL_TARGET": [("uint64_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 8)],
+    "ACTUATOR_CONTROL_TARGET": [("uint64_t", 0), ("uint8_t", 0), ("float", 8)],
+    "ALTITUDE": [("uint64_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "RESOURCE_REQUEST": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 120), ("uint8_t", 0), ("uint8_t", 120)],
+    "SCALED_PRESSURE3": [("uint32_t", 0), ("float", 0), ("float", 0), ("int16_t", 0), ("int16_t", 0)],
+    "FOLLOW_TARGET": [("uint64_t", 0), ("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0), ("float", 3), ("float", 3), ("float", 4), ("float", 3), ("float", 3), ("uint64_t", 0)],
+    "CONTROL_SYSTEM_STATE": [("uint64_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 3), ("float", 3), ("float", 4), ("float", 0), ("float", 0), ("float", 0)],
+    "BATTERY_STATUS": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("int16_t", 0), ("uint16_t", 10), ("int16_t", 0), ("int32_t", 0), ("int32_t", 0), ("int8_t", 0), ("int32_t", 0), ("uint8_t", 0), ("uint16_t", 4), ("uint8_t", 0), ("uint32_t", 0)],
+    "AUTOPILOT_VERSION": [("uint64_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint8_t", 8), ("uint8_t", 8), ("uint8_t", 8), ("uint16_t", 0), ("uint16_t", 0), ("uint64_t", 0), ("uint8_t", 18)],
+    "LANDING_TARGET": [("uint64_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 4), ("uint8_t", 0), ("uint8_t", 0)],
+    "FENCE_STATUS": [("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 0)],
+    "MAG_CAL_REPORT": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0)],
+    "EFI_STATUS": [("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "ESTIMATOR_STATUS": [("uint64_t", 0), ("uint16_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "WIND_COV": [("uint64_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "GPS_INPUT": [("uint64_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint32_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("uint8_t", 0), ("uint16_t", 0)],
+    "GPS_RTCM_DATA": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 180)],
+    "HIGH_LATENCY": [("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("int16_t", 0), ("int16_t", 0), ("uint16_t", 0), ("int8_t", 0), ("int16_t", 0), ("int32_t", 0), ("int32_t", 0), ("int16_t", 0), ("int16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("int8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("int8_t", 0), ("int8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0)],
+    "HIGH_LATENCY2": [("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("int32_t", 0), ("int32_t", 0), ("int16_t", 0), ("int16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("int8_t", 0), ("int8_t", 0), ("int8_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("int8_t", 0), ("int8_t", 0), ("int8_t", 0)],
+    "VIBRATION": [("uint64_t", 0), ("float", 0), ("float", 0), ("float", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0)],
+    "HOME_POSITION": [("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 4), ("float", 0), ("float", 0), ("float", 0), ("uint64_t", 0)],
+    "SET_HOME_POSITION": [("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 4), ("float", 0), ("float", 0), ("float", 0), ("uint64_t", 0)],
+    "MESSAGE_INTERVAL": [("uint16_t", 0), ("int32_t", 0)],
+    "EXTENDED_SYS_STATE": [("uint8_t", 0), ("uint8_t", 0)],
+    "ADSB_VEHICLE": [("uint32_t", 0), ("int32_t", 0), ("int32_t", 0), ("uint8_t", 0), ("int32_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("int16_t", 0), ("char", 9), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint16_t", 0)],
+    "COLLISION": [("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "V2_EXTENSION": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 249)],
+    "MEMORY_VECT": [("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("int8_t", 32)],
+    "DEBUG_VECT": [("char", 10), ("uint64_t", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "NAMED_VALUE_FLOAT": [("uint32_t", 0), ("char", 10), ("float", 0)],
+    "NAMED_VALUE_INT": [("uint32_t", 0), ("char", 10), ("int32_t", 0)],
+    "STATUSTEXT": [("uint8_t", 0), ("char", 50), ("uint16_t", 0), ("uint8_t", 0)],
+    "DEBUG": [("uint32_t", 0), ("uint8_t", 0), ("float", 0)],
+    "SETUP_SIGNING": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 32), ("uint64_t", 0)],
+    "BUTTON_CHANGE": [("uint32_t", 0), ("uint32_t", 0), ("uint8_t", 0)],
+    "PLAY_TUNE": [("uint8_t", 0), ("uint8_t", 0), ("char", 30), ("char", 200)],
+    "CAMERA_INFORMATION": [("uint32_t", 0), ("uint8_t", 32), ("uint8_t", 32), ("uint32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint16_t", 0), ("char", 140), ("uint8_t", 0), ("uint8_t", 0)],
+    "CAMERA_SETTINGS": [("uint32_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("uint8_t", 0)],
+    "STORAGE_INFORMATION": [("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("uint8_t", 0), ("char", 32), ("uint8_t", 0)],
+    "CAMERA_CAPTURE_STATUS": [("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("uint32_t", 0), ("float", 0), ("int32_t", 0), ("uint8_t", 0)],
+    "CAMERA_IMAGE_CAPTURED": [("uint32_t", 0), ("uint64_t", 0), ("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 4), ("int32_t", 0), ("int8_t", 0), ("char", 205)],
+    "FLIGHT_INFORMATION": [("uint32_t", 0), ("uint64_t", 0), ("uint64_t", 0), ("uint64_t", 0), ("uint32_t", 0)],
+    "MOUNT_ORIENTATION": [("uint32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "LOGGING_DATA": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 249)],
+    "LOGGING_DATA_ACKED": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 249)],
+    "LOGGING_ACK": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0)],
+    "VIDEO_STREAM_INFORMATION": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("float", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint32_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("char", 32), ("char", 160), ("uint8_t", 0), ("uint8_t", 0)],
+    "VIDEO_STREAM_STATUS": [("uint8_t", 0), ("uint16_t", 0), ("float", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint32_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0)],
+    "CAMERA_FOV_STATUS": [("uint32_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 4), ("float", 0), ("float", 0), ("uint8_t", 0)],
+    "CAMERA_TRACKING_IMAGE_STATUS": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("uint8_t", 0)],
+    "CAMERA_TRACKING_GEO_STATUS": [("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("uint8_t", 0)],
+    "CAMERA_THERMAL_RANGE": [("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "GIMBAL_MANAGER_INFORMATION": [("uint32_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "GIMBAL_MANAGER_STATUS": [("uint32_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "GIMBAL_MANAGER_SET_ATTITUDE": [("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("float", 4), ("float", 0), ("float", 0), ("float", 0)],
+    "GIMBAL_DEVICE_INFORMATION": [("uint32_t", 0), ("char", 32), ("char", 32), ("char", 32), ("uint32_t", 0), ("uint32_t", 0), ("uint64_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("uint8_t", 0), ("uint32_t", 0)],
+    "GIMBAL_DEVICE_SET_ATTITUDE": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("float", 4), ("float", 0), ("float", 0), ("float", 0)],
+    "GIMBAL_DEVICE_ATTITUDE_STATUS": [("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint16_t", 0), ("float", 4), ("float", 0), ("float", 0), ("float", 0), ("uint32_t", 0), ("float", 0), ("float", 0), ("uint8_t", 0)],
+    "AUTOPILOT_STATE_FOR_GIMBAL_DEVICE": [("uint8_t", 0), ("uint8_t", 0), ("uint64_t", 0), ("float", 4), ("uint32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("uint32_t", 0), ("float", 0), ("uint16_t", 0), ("uint8_t", 0), ("float", 0)],
+    "GIMBAL_MANAGER_SET_PITCHYAW": [("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "GIMBAL_MANAGER_SET_MANUAL_CONTROL": [("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "AIRSPEED": [("uint8_t", 0), ("float", 0), ("int16_t", 0), ("float", 0), ("uint8_t", 0)],
+    "GLOBAL_POSITION_SENSOR": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint64_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0)],
+    "WIFI_CONFIG_AP": [("char", 32), ("char", 64)],
+    "AIS_VESSEL": [("uint32_t", 0), ("int32_t", 0), ("int32_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("int8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("char", 7), ("char", 20), ("uint16_t", 0), ("uint16_t", 0)],
+    "UAVCAN_NODE_STATUS": [("uint64_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0)],
+    "UAVCAN_NODE_INFO": [("uint64_t", 0), ("uint32_t", 0), ("char", 80), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 16), ("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0)],
+    "PARAM_EXT_REQUEST_READ": [("uint8_t", 0), ("uint8_t", 0), ("char", 16), ("int16_t", 0)],
+    "PARAM_EXT_REQUEST_LIST": [("uint8_t", 0), ("uint8_t", 0)],
+    "PARAM_EXT_VALUE": [("char", 16), ("char", 128), ("uint8_t", 0), ("uint16_t", 0), ("uint16_t", 0)],
+    "PARAM_EXT_SET": [("uint8_t", 0), ("uint8_t", 0), ("char", 16), ("char", 128), ("uint8_t", 0)],
+    "PARAM_EXT_ACK": [("char", 16), ("char", 128), ("uint8_t", 0), ("uint8_t", 0)],
+    "OBSTACLE_DISTANCE": [("uint64_t", 0), ("uint8_t", 0), ("uint16_t", 72), ("uint8_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("float", 0), ("float", 0), ("uint8_t", 0)],
+    "ODOMETRY": [("uint64_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 4), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 21), ("float", 21), ("uint8_t", 0), ("uint8_t", 0), ("int8_t", 0)],
+    "TRAJECTORY_REPRESENTATION_WAYPOINTS": [("uint64_t", 0), ("uint8_t", 0), ("float", 5), ("float", 5), ("float", 5), ("float", 5), ("float", 5), ("float", 5), ("float", 5), ("float", 5), ("float", 5), ("float", 5), ("float", 5), ("uint16_t", 5)],
+    "TRAJECTORY_REPRESENTATION_BEZIER": [("uint64_t", 0), ("uint8_t", 0), ("float", 5), ("float", 5), ("float", 5), ("float", 5), ("float", 5)],
+    "ISBD_LINK_STATUS": [("uint64_t", 0), ("uint64_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "RAW_RPM": [("uint8_t", 0), ("float", 0)],
+    "UTM_GLOBAL_POSITION": [("uint64_t", 0), ("uint8_t", 18), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("int16_t", 0), ("int16_t", 0), ("int16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("int32_t", 0), ("int32_t", 0), ("int32_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "PARAM_ERROR": [("uint8_t", 0), ("uint8_t", 0), ("char", 16), ("int16_t", 0), ("uint8_t", 0)],
+    "DEBUG_FLOAT_ARRAY": [("uint64_t", 0), ("char", 10), ("uint16_t", 0), ("float", 58)],
+    "ORBIT_EXECUTION_STATUS": [("uint64_t", 0), ("float", 0), ("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0)],
+    "SMART_BATTERY_INFO": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("uint16_t", 0), ("char", 16), ("char", 50), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("char", 11)],
+    "GENERATOR_STATUS": [("uint64_t", 0), ("uint16_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("int16_t", 0), ("float", 0), ("int16_t", 0), ("uint32_t", 0), ("int32_t", 0)],
+    "ACTUATOR_OUTPUT_STATUS": [("uint64_t", 0), ("uint32_t", 0), ("float", 32)],
+    "RELAY_STATUS": [("uint32_t", 0), ("uint16_t", 0), ("uint16_t", 0)],
+    "TUNNEL": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 128)],
+    "CAN_FRAME": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 8)],
+    "CANFD_FRAME": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 64)],
+    "CAN_FILTER_MODIFY": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 16)],
+    "ONBOARD_COMPUTER_STATUS": [("uint64_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 8), ("uint8_t", 10), ("uint8_t", 4), ("uint8_t", 10), ("int8_t", 0), ("int8_t", 8), ("int16_t", 4), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 4), ("uint32_t", 4), ("uint32_t", 4), ("uint32_t", 6), ("uint32_t", 6), ("uint32_t", 6), ("uint32_t", 6), ("uint32_t", 6), ("uint16_t", 0)],
+    "WHEEL_DISTANCE": [("uint64_t", 0), ("uint8_t", 0), ("double", 16)],
+    "WINCH_STATUS": [("uint64_t", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("float", 0), ("int16_t", 0), ("uint32_t", 0)],
+    "OPEN_DRONE_ID_BASIC_ID": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 20), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 20)],
+    "OPEN_DRONE_ID_LOCATION": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 20), ("uint8_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("int16_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0), ("float", 0), ("uint8_t", 0), ("float", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("uint8_t", 0)],
+    "OPEN_DRONE_ID_AUTHENTICATION": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 20), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 23)],
+    "OPEN_DRONE_ID_SELF_ID": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 20), ("uint8_t", 0), ("char", 23)],
+    "OPEN_DRONE_ID_SYSTEM": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 20), ("uint8_t", 0), ("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("float", 0), ("float", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("uint32_t", 0)],
+    "OPEN_DRONE_ID_OPERATOR_ID": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 20), ("uint8_t", 0), ("char", 20)],
+    "OPEN_DRONE_ID_MESSAGE_PACK": [("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 20), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 225)],
+    "OPEN_DRONE_ID_ARM_STATUS": [("uint8_t", 0), ("char", 50)],
+    "OPEN_DRONE_ID_SYSTEM_UPDATE": [("uint8_t", 0), ("uint8_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0), ("uint32_t", 0)],
+    "HYGROMETER_SENSOR": [("uint8_t", 0), ("int16_t", 0), ("uint16_t", 0)],
+    "TT_FILE_OFFER": [("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 71)],
+    "TT_FILE_STATUS": [("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint32_t", 14)],
+    "TT_FILE_DATA": [("uint32_t", 0), ("uint32_t", 0), ("uint8_t", 80)],
+    "TT_FILE_REQUEST": [("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 80)],
+    "DJI_POSE_STAMPED": [("uint8_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("double", 3), ("double", 4)],
+    "TT_ACTION_COMMAND": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint64_t", 0), ("float", 4), ("char", 48)],
+    "TT_NAV_SAT_FIX": [("uint64_t", 0), ("int32_t", 0), ("int32_t", 0), ("float", 0), ("float", 9), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "TT_ODOMETRY": [("uint64_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 3), ("float", 4), ("float", 3), ("float", 3), ("float", 6)],
+    "TT_LOG": [("uint32_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("char", 80)],
+    "TT_FILE_DATA_WIDE": [("uint32_t", 0), ("uint32_t", 0), ("uint8_t", 247)],
+    "TT_COMMAND_ACK": [("uint8_t", 0), ("uint8_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0)],
+    "TT_VR_POSE": [("uint64_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 3), ("float", 4), ("float", 3), ("float", 3)],
+    "TT_VR_CONTROLLER": [("uint64_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("uint16_t", 0)],
+    "TT_FILE_REASON": [("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("char", 80)],
+}
+
+# The refusals of field values, worded alike in the three programs: "<where>: expected <what>,
+# got <what came>", where is MESSAGE.field (MESSAGE.field[k] for an element of an array, or seq,
+# sysid, compid, msgid, name, fields) and a number that came is quoted as written.
+_LIMITS = {"int8_t": (-128, 127), "uint8_t": (0, 255), "int16_t": (-32768, 32767), "uint16_t": (0, 65535),
+           "int32_t": (-(1 << 31), (1 << 31) - 1), "uint32_t": (0, (1 << 32) - 1),
+           "int64_t": (-(1 << 63), (1 << 63) - 1), "uint64_t": (0, (1 << 64) - 1)}
+_SPECIAL = {"NaN": math.nan, "Infinity": math.inf, "-Infinity": -math.inf}
+_REAL = {"float": "-3.4028235e38..3.4028235e38", "double": "-1.7976931348623157e308..1.7976931348623157e308"}
+
+
+class _Num:
+    """A JSON number as its token, as the C++ and Java readers keep it."""
+
+    __slots__ = ("text",)
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+
+    def integral(self) -> bool:
+        return not any(c in self.text for c in ".eE")
+
+
+def _values(n: int) -> str:
+    return f"{n} value" if n == 1 else f"{n} values"
+
+
+def _got(v: Any) -> str:
+    if isinstance(v, _Num):
+        return v.text
+    if v is None or isinstance(v, bool):
+        return {None: "null", True: "true", False: "false"}[v]
     if isinstance(v, str):
-        table = {"NaN": math.nan, "Infinity": math.inf, "-Infinity": -math.inf}
-        if v not in table:
-            raise ValueError(f"not a number: {v!r}")
-        return table[v]
-    if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise TypeError(f"not a number: {v!r}")
-    return float(v)
+        return "a string"
+    if isinstance(v, list):
+        return f"a list of {_values(len(v))}"
+    return "an object"
 
 
-def _integer(v: Any) -> int:
-    if isinstance(v, bool) or not isinstance(v, int):
-        raise TypeError(f"not an integer: {v!r}")
-    return v
+def _refuse(where: str, what: str, got: str) -> Refusal:
+    return Refusal(f"{where}: expected {what}, got {got}")
+
+
+def _int_in(v: Any, type_: str, where: str, limits: tuple[int, int] | None = None) -> int:
+    lo, hi = limits or _LIMITS[type_]
+    # (no int() of a thousand digits: Python refuses those in words of its own)
+    if isinstance(v, _Num) and v.integral() and len(v.text) <= 24 and lo <= int(v.text) <= hi:
+        return int(v.text)
+    raise _refuse(where, f"an integer in {lo}..{hi}", _got(v))
+
+
+def _real_in(v: Any, type_: str, where: str) -> float:
+    if isinstance(v, str) and v in _SPECIAL:
+        return _SPECIAL[v]
+    if isinstance(v, _Num):
+        x = float(v.text)
+        if not math.isinf(x):
+            try:
+                if type_ == "float":
+                    _F32.pack(x)  # OverflowError where the nearest float is an infinity
+                return x
+            except OverflowError:
+                pass
+    raise _refuse(where, f'a number in {_REAL[type_]}, "NaN", "Infinity" or "-Infinity"', _got(v))
+
+
+def _text_in(v: Any, n: int, where: str) -> str:
+    what = f"a string of at most {n} Latin-1 character{'' if n == 1 else 's'}"
+    if not isinstance(v, str):
+        raise _refuse(where, what, _got(v))
+    if any(ord(c) > 0xFF for c in v):
+        raise _refuse(where, what, "a string with a character beyond U+00FF")
+    if len(v) > n:
+        raise _refuse(where, what, f"a string of {len(v)} characters")
+    return v.encode("latin-1").decode("utf-8", "surrogateescape")
+
+
+def _value_in(v: Any, type_: str, n: int, where: str) -> Any:
+    """A field's value from JSON, or a Refusal."""
+    if type_ == "char":
+        return _text_in(v, max(n, 1), where)
+    scalar = _real_in if type_ in _REAL else _int_in
+    if not n:
+        return scalar(v, type_, where)
+    exact = type_ != "uint8_t"  # uint8_t arrays (bytes) may be shorter, zero-padded
+    if not isinstance(v, list) or (len(v) != n if exact else len(v) > n):
+        raise _refuse(where, f"a list of {'' if exact else 'at most '}{_values(n)}", _got(v))
+    if type_ == "uint8_t":
+        return bytes(_int_in(x, type_, f"{where}[{k}]") for k, x in enumerate(v))
+    return [scalar(x, type_, f"{where}[{k}]") for k, x in enumerate(v)]
+
+
+class _Constant(ValueError):
+    """NaN, Infinity or -Infinity bare in a request: not JSON (the C++ and Java readers refuse them)."""
+
+
+def _constant(name: str) -> Any:
+    raise _Constant(name)
+
+
+def _constant_at(text: str) -> int:
+    """Where the C++ and Java readers stop: at the first bare NaN, Infinity or -Infinity."""
+    i, quoted = 0, False
+    while i < len(text):
+        c = text[i]
+        if quoted:
+            i += 2 if c == "\\" else 1
+            quoted = c != '"'
+            continue
+        if c == '"':
+            quoted = True
+        elif text.startswith(("NaN", "Infinity", "-Infinity"), i):
+            return i
+        i += 1
+    return len(text)
 
 
 def encode_line(text: str) -> str:
     try:
-        obj = json.loads(text)
+        obj = json.loads(text, parse_int=_Num, parse_float=_Num, parse_constant=_constant)
     except json.JSONDecodeError as e:
         raise Refusal(f"bad JSON at offset {e.pos}") from None
+    except _Constant:
+        raise Refusal(f"bad JSON at offset {_constant_at(text)}") from None
     if not isinstance(obj, dict):
         raise Refusal("expected a JSON object")
     cls: type[Message] | None = None
     if "name" in obj:
+        if not isinstance(obj["name"], str):
+            raise _refuse("name", "a string", _got(obj["name"]))
         cls = BY_NAME.get(obj["name"])
+        if cls is None:
+            raise Refusal(f"unknown message '{obj['name']}'")  # quoted as the C++ and Java programs do
     elif "msgid" in obj:
-        info = REGISTRY.get(obj["msgid"])
-        cls = info.cls if info else None
-    if "name" not in obj and "msgid" not in obj:
+        msgid = _int_in(obj["msgid"], "uint32_t", "msgid", (0, 0xFFFFFF))
+        info = REGISTRY.get(msgid)
+        if info is None:
+            raise Refusal(f"unknown message {msgid}")
+        cls = info.cls
+    else:
         raise Refusal('the object names no message ("name" or "msgid")')
-    if cls is None:
-        raise Refusal(f"unknown message {obj.get('name', obj.get('msgid'))!r}")
-    kinds = dict(zip(cls.FIELDS, _KINDS[cls.NAME]))
+    seq, sysid, compid = (_int_in(obj.get(k, _Num(d)), "uint8_t", k) for k, d in
+                          (("seq", "0"), ("sysid", "1"), ("compid", "1")))
+    given = obj.get("fields")
+    if given is not None and not isinstance(given, dict):
+        raise _refuse("fields", "an object", _got(given))
+    types = dict(zip(cls.FIELDS, _TYPES[cls.NAME]))
     values: dict[str, Any] = {}
-    for name, v in (obj.get("fields") or {}).items():
-        if name not in kinds:
-            raise Refusal(f"{cls.NAME} has no field {name!r}")
-        kind, _ = kinds[name]
-        if kind == "text":
-            values[name] = v.encode("latin-1").decode("utf-8", "surrogateescape")
-        elif kind == "bytes":
-            values[name] = bytes(_integer(x) for x in v)
-        elif kind == "float":
-            values[name] = [_number(x) for x in v] if isinstance(v, list) else _number(v)
-        else:
-            values[name] = [_integer(x) for x in v] if isinstance(v, list) else _integer(v)
-    msg = cls(**values)
-    frame = msg.pack(_integer(obj.get("seq", 0)), _integer(obj.get("sysid", 1)), _integer(obj.get("compid", 1)))
-    return frame.hex()
+    for name, v in (given or {}).items():
+        if name not in types:
+            raise Refusal(f"{cls.NAME} has no field '{name}'")
+        values[name] = _value_in(v, *types[name], f"{cls.NAME}.{name}")
+    return cls(**values).pack(seq, sysid, compid).hex()
 
 
 def main() -> None:

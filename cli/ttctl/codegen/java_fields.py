@@ -265,19 +265,19 @@ def json_out(f: Field) -> str:
     n = f.array_length
     t = f.type
     if t == "char":
-        return f"Json.text(sb, {ref});" if n else f"Json.textChar(sb, {ref});"
+        return f"ConformanceJson.text(sb, {ref});" if n else f"ConformanceJson.textChar(sb, {ref});"
     if n:
         fn = {
             "uint8_t": "u8s", "int8_t": "i8s", "int16_t": "shorts", "uint16_t": "ints", "int32_t": "ints",
             "uint32_t": "longs", "int64_t": "longs", "uint64_t": "ulongs", "float": "f32s", "double": "f64s",
         }[t]
-        return f"Json.{fn}(sb, {ref});"
+        return f"ConformanceJson.{fn}(sb, {ref});"
     if t == "uint64_t":
         return f"sb.append(Unsigned.toString({ref}));"
     if t == "float":
-        return f"Json.f32(sb, {ref});"
+        return f"ConformanceJson.f32(sb, {ref});"
     if t == "double":
-        return f"Json.f64(sb, {ref});"
+        return f"ConformanceJson.f64(sb, {ref});"
     return f"sb.append({ref});"
 
 
@@ -292,41 +292,42 @@ _INT_LIMITS = {
 }
 
 
-def json_in(f: Field) -> str:
-    """Expression converting JSON value v to the field's Java type."""
+def json_in(f: Field, message: str = "") -> str:
+    """Expression converting JSON value v to the field's Java type (a refusal names the field as
+    MESSAGE.field)."""
     n = f.array_length
     t = f.type
-    w = f'"{f.name}"'
+    w = f'"{message}.{f.name}"' if message else f'"{f.name}"'
     if t == "char":
-        return f"Json.text(v, {n}, {w})" if n else f"Json.textChar(v, {w})"
+        return f"ConformanceJson.text(v, {n}, {w})" if n else f"ConformanceJson.textChar(v, {w})"
     if n:
         if t == "uint8_t":
-            return f"Json.u8s(v, {n}, {w})"
+            return f"ConformanceJson.u8s(v, {n}, {w})"
         if t == "int8_t":
-            return f"Json.i8s(v, {n}, {w})"
+            return f"ConformanceJson.i8s(v, {n}, {w})"
         if t == "int16_t":
-            return f"Json.shorts(v, {n}, {w})"
+            return f"ConformanceJson.shorts(v, {n}, {w})"
         if t in ("uint16_t", "int32_t"):
             lo, hi = _INT_LIMITS[t]
-            return f"Json.ints(v, {n}, {lo}, {hi}, {w})"
+            return f"ConformanceJson.ints(v, {n}, {lo}, {hi}, {w})"
         if t in ("uint32_t", "int64_t"):
             lo, hi = _INT_LIMITS[t]
-            return f"Json.longs(v, {n}, {lo}, {hi}, {w})"
+            return f"ConformanceJson.longs(v, {n}, {lo}, {hi}, {w})"
         if t == "uint64_t":
-            return f"Json.ulongs(v, {n}, {w})"
+            return f"ConformanceJson.ulongs(v, {n}, {w})"
         if t == "float":
-            return f"Json.f32s(v, {n}, {w})"
-        return f"Json.f64s(v, {n}, {w})"
+            return f"ConformanceJson.f32s(v, {n}, {w})"
+        return f"ConformanceJson.f64s(v, {n}, {w})"
     if t == "uint64_t":
-        return f"Json.uint64(v, {w})"
+        return f"ConformanceJson.uint64(v, {w})"
     if t == "float":
-        return f"Json.f32(v, {w})"
+        return f"ConformanceJson.f32(v, {w})"
     if t == "double":
-        return f"Json.f64(v, {w})"
+        return f"ConformanceJson.f64(v, {w})"
     lo, hi = _INT_LIMITS[t]
     cast = {"int8_t": "(byte) ", "int16_t": "(short) ", "uint8_t": "(int) ", "uint16_t": "(int) ",
             "int32_t": "(int) "}.get(t, "")
-    return f"{cast}Json.integer(v, {lo}, {hi}, {w})"
+    return f"{cast}ConformanceJson.integer(v, {lo}, {hi}, {w})"
 
 
 # --- skeletons ----------------------------------------------------------------------------

@@ -24,6 +24,7 @@ the link, in namespace <ns>::link:
   cpp/<ident>/messages.hpp    one struct per message
   cpp/<ident>/<ident>.hpp     umbrella header
   cpp/conformance.cpp         the D/E line-protocol program of the conformance tests
+  cpp/conformance_json.hpp    its JSON: answers written, requests read, values to fields
   cpp/onboard/<ident>_plugin.hpp   skeleton: handler stubs for what the onboard end receives
 """
 
@@ -92,6 +93,17 @@ def answers_setpoints(d: Dialect) -> bool:
     return (carries_link(d) and pose is not None and topic is not None
             and topic.entry("DJI_TOPIC_NAME_SETPOINT") is not None
             and {"target_system", "sec", "nsec", "topic_name"} <= {f.name for f in pose.fields})
+
+
+def confirms_vr_controller(d: Dialect) -> bool:
+    """Whether the node confirms every TT_VR_CONTROLLER with NAMED_VALUE_INT "vrbtn<index>" =
+    its packet_num, as ttctl's onboard end does (ttctl.ends.onboard.vr_controller), so that
+    `ttctl hmd dump --to` sees its button changes confirmed."""
+    fields = {m.name: {f.name: (f.type, f.array_length) for f in m.fields} for m in d.messages}
+    vr, named = fields.get("TT_VR_CONTROLLER", {}), fields.get("NAMED_VALUE_INT", {})
+    return (carries_link(d) and vr.get("index") == ("uint8_t", 0) and vr.get("packet_num") == ("uint32_t", 0)
+            and named.get("name") == ("char", 10) and named.get("value") == ("int32_t", 0)
+            and named.get("time_boot_ms") == ("uint32_t", 0))
 
 
 def namespace(d: Dialect, override: str | None = None) -> str:
@@ -256,6 +268,7 @@ class _Cpp:
             Output(f"cpp/{ident}/messages.hpp", "cpp/messages.hpp.j2"),
             Output(f"cpp/{umbrella(d, self.override)}", "cpp/umbrella.hpp.j2"),
             Output("cpp/conformance.cpp", "cpp/conformance.cpp.j2"),
+            Output("cpp/conformance_json.hpp", "cpp/conformance_json.hpp.j2"),
             Output(f"cpp/onboard/{dialect_ident(d)}_plugin.hpp", "cpp/plugin.hpp.j2", skeleton=True),
         ]
 
@@ -268,6 +281,7 @@ class _Cpp:
             "ns": namespace(d, self.override),
             "link": carries_link(d),
             "setpoints": answers_setpoints(d),
+            "vr_confirm": confirms_vr_controller(d),
             "folder": folder(d, self.override),
             "umbrella": umbrella(d, self.override),
             "guard": lambda part: guard(d, part, self.override),

@@ -10,6 +10,7 @@ Layout under the output root, for a dialect whose identifier is `ttapi`:
   java/ttctl/ttapi/commands/         skeletons: Send<Msg> per message the tablet sends,
                                      Receive<Msg> per message it receives (yours to edit)
   java/Conformance.java              the `D <hex>` / `E <json>` conformance program
+  java/ConformanceJson.java          its JSON: answers written, requests read, values to fields
 
 Field types and expressions: java_fields; the tablet's command contract: java_tablet.
 """
@@ -86,7 +87,8 @@ def registry_class(d: Dialect) -> str:
     """The registry class: the dialect's name in CamelCase, + "Dialect" if that would shadow a
     java.lang or runtime class."""
     n = camel(dialect_ident(d))
-    return f"{n}Dialect" if n in JAVA_RESERVED_TYPES or n in RUNTIME_CLASSES or n == "Conformance" else n
+    taken = n in JAVA_RESERVED_TYPES or n in RUNTIME_CLASSES or n in ("Conformance", "ConformanceJson")
+    return f"{n}Dialect" if taken else n
 
 
 
@@ -151,6 +153,7 @@ class _Java:
         for e in sorted(d.enums, key=lambda e: e.name):
             outs.append(Output(f"{root}/enums/{camel(e.name)}.java", "java/Enum.java.j2", context={"e": e}))
         outs.append(Output("java/Conformance.java", "java/Conformance.java.j2"))
+        outs.append(Output("java/ConformanceJson.java", "java/ConformanceJson.java.j2"))
         for m in sends(d, "tablet"):
             outs.append(Output(f"{root}/commands/Send{class_name(m)}.java", "java/SendSkeleton.java.j2",
                                skeleton=True, context={"m": m, "cls": f"Send{class_name(m)}"}))

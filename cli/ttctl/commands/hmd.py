@@ -344,7 +344,7 @@ def _link_verdict(o: DumpOptions, link: _Link) -> int:
     if lost and not link.stream.stats.confirmed:
         err(f"error: the onboard end at {o.to} confirmed none of {lost} button change{'s' if lost != 1 else ''}: it "
             "must answer each TT_VR_CONTROLLER with NAMED_VALUE_INT 'vrbtn<index>' = its packet_num "
-            "(ttctl emulate onboard does)")
+            "(ttctl emulate onboard and the generated C++ node do)")
         return 1
     if lost:
         err(f"error: {lost} button change{'s' if lost != 1 else ''} not confirmed by the onboard end: none "

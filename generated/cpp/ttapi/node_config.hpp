@@ -85,11 +85,13 @@ struct NodeStats {
     std::uint64_t ignored = 0;  // frames for another system or component
     std::uint64_t bad_frames = 0;  // whole frames refused (CRC, signature, decoding)
     std::uint64_t refused_signature = 0;  // of those: refused by the Signing (bad, replayed, unsigned)
+    std::uint64_t unknown = 0;  // whole frames of messages this dialect lacks (the peer speaks another one)
     std::uint64_t sources_forgotten = 0;  // packet receivers dropped for newer sources
     std::uint64_t requests_forgotten = 0;  // fetch requests whose name never came whole, dropped for newer ones
     std::uint64_t files_received = 0;
     std::uint64_t files_refused = 0;
     std::uint64_t files_served = 0;
+    std::uint64_t vr_confirmed = 0;  // TT_VR_CONTROLLER confirmed (NAMED_VALUE_INT "vrbtn<index>")
 };
 
 }  // namespace ttapi::link

@@ -4,6 +4,9 @@
 // per source (the least recently heard of MAX_SOURCES makes room); each valid frame from a peer
 // addressed to this end (its target_system and target_component ours or 0) goes to the node's own
 // part (file transfer, commands: each run once, acknowledged) and then to the user's handlers.
+// Every TT_VR_CONTROLLER (the tablet's VR controller input, `ttctl hmd dump --to`) is confirmed
+// ahead of telemetry with NAMED_VALUE_INT name "vrbtn<index>", value = its packet_num (as int32),
+// before your handlers get it: the tablet resends a button change until it is confirmed.
 // A part of node.hpp, which includes it after the class; included on its own, it includes
 // node.hpp.
 #ifndef TTCTL_TTAPI_NODE_RECEIVE_HPP
@@ -125,6 +128,31 @@ inline std::uint8_t payload_byte(const Frame& f, std::uint8_t at) noexcept
     return at < f.payload_length ? f.payload[at] : 0;  // truncated: zero
 }
 
+// The confirmation of a TT_VR_CONTROLLER: NAMED_VALUE_INT "vrbtn<index>" (decimal, no padding) =
+// its packet_num as int32 (2^31 and above go as packet_num - 2^32), as ttctl's onboard end sends.
+inline NamedValueInt vr_confirmation(const TtVrController& m) noexcept
+{
+    NamedValueInt ack;
+    ack.time_boot_ms = 0;
+    const char prefix[] = "vrbtn";
+    std::size_t n = 0;
+    for (; prefix[n] != '\0'; ++n) {
+        ack.name[n] = prefix[n];
+    }
+    const unsigned index = m.index;
+    if (index >= 100) {
+        ack.name[n++] = static_cast<char>('0' + index / 100);
+    }
+    if (index >= 10) {
+        ack.name[n++] = static_cast<char>('0' + index / 10 % 10);
+    }
+    ack.name[n] = static_cast<char>('0' + index % 10);
+    const std::int64_t packet = m.packet_num;
+    const std::int64_t wrap = std::int64_t{1} << 32;
+    ack.value = static_cast<std::int32_t>(packet >= wrap / 2 ? packet - wrap : packet);
+    return ack;
+}
+
 }  // namespace impl
 
 inline std::size_t Node::receive(double now, const std::uint8_t* packet, std::size_t n, std::uint64_t source)
@@ -203,6 +231,7 @@ inline std::size_t Node::feed(Source& s, const std::uint8_t* packet, std::size_t
 {
     const std::uint64_t bad_before = s.rx.stats().bad_frames;
     const std::uint64_t sig_before = s.rx.stats().bad_signatures;
+    const std::uint64_t unknown_before = s.rx.stats().unknown;
     std::size_t peers = 0;
     auto on_frame = [&](const Frame& f) { peers += handle(f) ? 1u : 0u; };
     if (flushing) {
@@ -211,6 +240,7 @@ inline std::size_t Node::feed(Source& s, const std::uint8_t* packet, std::size_t
         s.rx.feed(packet, n, on_frame);
     }
     stats_.bad_frames += s.rx.stats().bad_frames - bad_before;
+    stats_.unknown += s.rx.stats().unknown - unknown_before;
     const std::uint64_t refused = s.rx.stats().bad_signatures - sig_before;
     stats_.refused_signature += refused;
     if (refused != 0 && !s.told_refused) {
@@ -292,6 +322,11 @@ inline bool Node::handle(const Frame& f)
         break;
     case TtActionCommand::MSG_ID:
         on_command(f);
+        break;
+    case TtVrController::MSG_ID:
+        if (send(impl::vr_confirmation(f.as<TtVrController>()), Priority::control)) {
+            ++stats_.vr_confirmed;
+        }
         break;
     default:
         break;

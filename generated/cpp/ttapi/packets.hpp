@@ -111,6 +111,7 @@ struct ReceiverStats {
     std::uint64_t bad_signatures = 0;  // of those: refused by the Signing (bad, replayed, unsigned)
     std::uint64_t carries_dropped = 0;  // spanning frames whose continuation never came
     std::uint64_t rescans = 0;  // packets taken for a continuation, scanned on their own after all
+    std::uint64_t unknown = 0;  // whole frames of a message this dialect does not have (another dialect's)
 };
 
 /// Frames out of packets, by the rule of ttctl.wire.packets (whose PacketReceiver this one
@@ -333,11 +334,33 @@ private:
         return n;
     }
 
+    static constexpr std::size_t NO_BOUNDARY = static_cast<std::size_t>(-1);
+
+    // A frame at a frame boundary (where the packing rule puts one: the packet's start or right
+    // after a frame) whose msgid this dialect lacks, ending at the packet's end or at the next magic
+    // byte (or running past the end of the packet it starts): counted; where it ends, the next
+    // boundary (NO_BOUNDARY if it was not one). The scan goes on as before: this only counts.
+    std::size_t unknown_at(const std::uint8_t* pkt, std::size_t n, std::size_t j) noexcept
+    {
+        const std::uint8_t incompat = pkt[j + 2];
+        if ((incompat & ~INCOMPAT_SIGNED) != 0 || message_info(detail::frame_msgid(pkt + j)) != nullptr) {
+            return NO_BOUNDARY;  // known, but longer than its definition allows: not a frame
+        }
+        const std::size_t end =
+            j + HEADER_LENGTH + pkt[j + 1] + CHECKSUM_LENGTH + (incompat != 0 ? SIGNATURE_LENGTH : 0);
+        if (end == n || (end < n && pkt[end] == MAGIC) || (j == 0 && end > n)) {
+            ++stats_.unknown;
+            return end;
+        }
+        return NO_BOUNDARY;
+    }
+
     template <class OnFrame>
     void scan(const std::uint8_t* pkt, std::size_t n, std::size_t pos, OnFrame& on_frame)
     {
         std::size_t head = n;  // a frame that runs past the end of this packet
         std::size_t i = pos;
+        std::size_t boundary = pos;  // where the packing rule would begin the next frame
         for (;;) {
             const std::size_t j = find_magic(pkt, n, i);
             if (j >= n) {
@@ -351,6 +374,9 @@ private:
             }
             const std::size_t total = total_at(pkt, n, j);
             if (total == 0) {
+                if (j == boundary) {
+                    boundary = unknown_at(pkt, n, j);
+                }
                 i = j + 1;
                 continue;
             }
@@ -359,7 +385,7 @@ private:
                 if (valid(pkt + j, total, frame, true)) {
                     deliver(frame, on_frame);
                     head = n;  // a complete frame after it: that head was false
-                    i = j + total;
+                    i = boundary = j + total;
                 } else {
                     ++stats_.bad_frames;
                     i = j + 1;

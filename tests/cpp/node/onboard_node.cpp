@@ -329,7 +329,8 @@ int main(int argc, char** argv)
                 "\"setpoints_forgotten\": %llu, "
                 "\"files_received\": %llu, "
                 "\"files_refused\": %llu, \"files_served\": %llu, \"oversize\": %llu, \"requests_forgotten\": %llu, "
-                "\"sources_forgotten\": %llu, \"commands_forgotten\": %llu, \"dropped_control\": %llu}\n",
+                "\"sources_forgotten\": %llu, \"commands_forgotten\": %llu, \"dropped_control\": %llu, "
+                "\"vr_confirmed\": %llu, \"plugin_vr_messages\": %llu, \"plugin_vr_changes\": %llu, \"unknown\": %llu}\n",
                 static_cast<unsigned long long>(s.packets_in), static_cast<unsigned long long>(s.packets_out),
                 static_cast<unsigned long long>(s.frames_in), static_cast<unsigned long long>(s.bad_frames),
                 static_cast<unsigned long long>(s.refused_signature), static_cast<unsigned long long>(s.ignored),
@@ -344,7 +345,9 @@ int main(int argc, char** argv)
                 static_cast<unsigned long long>(s.files_served), static_cast<unsigned long long>(udp.oversize()),
                 static_cast<unsigned long long>(s.requests_forgotten),
                 static_cast<unsigned long long>(s.sources_forgotten), static_cast<unsigned long long>(c.forgotten),
-                static_cast<unsigned long long>(node.scheduler_stats().dropped_control));
+                static_cast<unsigned long long>(node.scheduler_stats().dropped_control),
+                static_cast<unsigned long long>(s.vr_confirmed), static_cast<unsigned long long>(plugin.vr_messages),
+                static_cast<unsigned long long>(plugin.vr_changes), static_cast<unsigned long long>(s.unknown));
     std::fflush(stdout);
     return 0;
 }

@@ -26,7 +26,7 @@
 //   driver packets <key|-> [--allow-unsigned] [--timestamp <ts>]
 //       each line a packet for one PacketReceiver, or "FLUSH" -> "F <frame hex>" per frame it
 //       delivers, then "E"; "RESET" (a new case: a new receiver and Signing) and the end of the
-//       input -> "S <packets> <frames> <bad_frames> <carries_dropped> <rescans>" of the case.
+//       input -> "S <packets> <frames> <bad_frames> <carries_dropped> <rescans> <unknown>" of the case.
 //   driver noalloc <key>
 //       signs, verifies, parses and receives packets with operator new counting: "ok <n>" if
 //       nothing allocated (not in -DTTCTL_TEST_SANITIZE builds: prints "ok skipped").
@@ -262,9 +262,10 @@ int cmd_packets(int argc, char** argv)
     mav::PacketReceiver rx(keyed ? &signing : nullptr);
     auto stats = [&rx]() {
         const mav::ReceiverStats& s = rx.stats();
-        std::printf("S %llu %llu %llu %llu %llu\n", static_cast<unsigned long long>(s.packets),
+        std::printf("S %llu %llu %llu %llu %llu %llu\n", static_cast<unsigned long long>(s.packets),
                     static_cast<unsigned long long>(s.frames), static_cast<unsigned long long>(s.bad_frames),
-                    static_cast<unsigned long long>(s.carries_dropped), static_cast<unsigned long long>(s.rescans));
+                    static_cast<unsigned long long>(s.carries_dropped), static_cast<unsigned long long>(s.rescans),
+                    static_cast<unsigned long long>(s.unknown));
     };
     std::string line;
     Bytes packet;
