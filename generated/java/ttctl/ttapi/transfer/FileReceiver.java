@@ -306,6 +306,18 @@ final class FileReceiver {
         t.decided = true;
         byte[] meta = t.meta;
         t.check = Names.metaCheck(meta);
+        // a flag this receiver does not know (DEFLATE: it does not inflate) is refused in words
+        // naming it; the sender offers again without it
+        int unknown = t.flags & 0xFF & ~(TtFileFlags.TT_FILE_FLAGS_OVERWRITE | TtFileFlags.TT_FILE_FLAGS_CANCEL);
+        if (unknown != 0) {
+            String text = "offer flags 0x" + (unknown < 16 ? "0" : "") + Integer.toHexString(unknown)
+                    + " not understood here";
+            if (unknown == TtFileFlags.TT_FILE_FLAGS_DEFLATE) {
+                text += ": this receiver does not decompress";
+            }
+            refuse(t, now, TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED, text);
+            return;
+        }
         t.sha256 = Arrays.copyOf(meta, Math.min(Names.SHA_LEN, meta.length));
         byte[] rawName = Arrays.copyOfRange(meta, Math.min(Names.SHA_LEN, meta.length), meta.length);
         String name = Names.strictUtf8(rawName);
@@ -655,7 +667,8 @@ final class FileReceiver {
                 || result == TtFileResult.TT_FILE_RESULT_REFUSED_QUOTA || result == TtFileResult.TT_FILE_RESULT_REFUSED_BUSY
                 || result == TtFileResult.TT_FILE_RESULT_FAILED_CHECKSUM
                 || result == TtFileResult.TT_FILE_RESULT_FAILED_DISK_FULL || result == TtFileResult.TT_FILE_RESULT_FAILED_IO
-                || result == TtFileResult.TT_FILE_RESULT_CANCELLED;
+                || result == TtFileResult.TT_FILE_RESULT_CANCELLED
+                || result == TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED;
     }
 
     /**

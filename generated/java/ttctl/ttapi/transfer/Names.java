@@ -163,6 +163,8 @@ public final class Names {
             return "the peer does not serve that file";
         } else if ("CANCELLED".equals(code)) {
             return "cancelled";
+        } else if ("REFUSED_UNSUPPORTED".equals(code)) {
+            return "the receiver does not understand the offer's flags";
         }
         return otherwise;
     }
