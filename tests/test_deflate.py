@@ -212,3 +212,25 @@ def test_a_fetch_comes_deflated(tmp_path: Path) -> None:
     done = w.event("file-complete")
     assert done and done[0].original == len(log) and done[0].size < len(log) / 3, req
     assert (tmp_path / "tab" / "log.csv").read_bytes() == log
+
+
+def test_a_partial_of_the_file_as_it_is_makes_a_deflating_sender_resume_it(tmp_path: Path) -> None:
+    """Half of the file arrived as it is (--no-compress, or a sender from before deflate); the
+    same file offered deflated would orphan it: the receiver says so, the sender falls back and
+    resumes the bytes already there."""
+    on = tmp_path / "on"
+    payload = flight_log_csv(seconds=120)
+    w = World(tmp_path, onboard_dir=on)
+    s = w.tablet.send_file("log.csv", ONBOARD, source=BytesSource(payload, "log.csv"), compress=False)
+    w.run(20)
+    assert not s.done and s.acked_bytes > 5000
+    w.tablet.close()
+    w.onboard.close()
+    w2 = World(tmp_path, onboard_dir=on, seed=2)
+    s2 = w2.tablet.send_file("log.csv", ONBOARD, source=BytesSource(payload, "log.csv"))
+    assert s2.flags & DEFLATE
+    w2.run(900, stop=lambda: s2.done)
+    assert s2.result is not None and s2.result.ok, s2.result
+    assert s2.fallback is not None and "as it is are here: send it uncompressed to resume" in s2.fallback
+    assert s2.stats.resumed_bytes > 5000 and s2.stats.bytes_sent < len(payload) - 5000
+    assert (on / "log.csv").read_bytes() == payload

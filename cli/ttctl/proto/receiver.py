@@ -171,6 +171,17 @@ class FileReceiver:
         if t.meta_have.covers(0, t.meta_length):
             self._decide(t, now)
 
+    def _held_as_it_is(self, t: Incoming) -> int:
+        """Bytes held of the file a deflated offer carries, received as it is."""
+        assert t.original is not None
+        group = self.groups.get(partial_key(t.name, t.original, t.sha256))
+        if group is not None:
+            return group[0].ranges.total()
+        try:
+            return self.store.partial(t.name, t.original, t.sha256).ranges.total()
+        except (OSError, StorageError):
+            return 0
+
     def _forget_one(self) -> bool:
         """Room for one more: forget the transfer heard from least recently among those not
         receiving (finished, refused, waiting); False if every one is receiving."""
@@ -222,6 +233,11 @@ class FileReceiver:
                                     f"this end did not ask {t.who} for {t.name}")
         elif not self.unsolicited:
             return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_NAME, "this end takes only the files it asks for")
+        if t.original is not None and (held := self._held_as_it_is(t)):
+            # what arrived of the file sent as it is (an older sender, --no-compress) would be
+            # orphaned by its stream: the sender falls back to the file and resumes it
+            return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_UNSUPPORTED,
+                                f"{held} bytes of it as it is are here: send it uncompressed to resume")
         group = partial_key(t.name, t.size, t.sha256, t.original)
         if group not in self.groups:
             for other in list(self.transfers.values()):
