@@ -105,6 +105,7 @@ async def _recv(o: RecvOptions, b: Any, spec: Any, link: LinkChoice, store: Any,
     wake = asyncio.Event()
     completed = 0  # distinct files (path and content) completed
     seen: set[tuple[str, bytes]] = set()
+    latest: dict[str, bytes] = {}  # path -> the SHA-256 last completed there
 
     def out(event: str, text: str, **fields: Any) -> None:
         if o.as_json:
@@ -141,14 +142,17 @@ async def _recv(o: RecvOptions, b: Any, spec: Any, link: LinkChoice, store: Any,
         elif what == "file-complete":
             secs = (t.finished_at or loop.time()) - t.started
             key = (str(t.final_path), t.sha256)
-            if key in seen:  # the sender asked again (it had not heard COMPLETE): one file, counted once
+            again = key in seen and latest.get(key[0]) == t.sha256
+            latest[key[0]] = t.sha256
+            if again:  # the sender asked again (it had not heard COMPLETE): one file, counted once
                 out("complete-again", f"{name} from {peer} is complete already -> {t.final_path} (sent again; "
                     f"counted once)", name=name, bytes=t.file_size, peer=peer, path=t.final_path,
                     sha256=t.sha256.hex())
                 wake.set()
                 return
-            seen.add(key)
-            completed += 1
+            if key not in seen:  # content that was there before another replaced it: a completion, counted once
+                seen.add(key)
+                completed += 1
             how = " (an identical file was there already)" if t.identical else ""
             out("complete", f"complete {name}: {t.file_size} bytes in {secs:.2f} s from {peer} -> "
                 f"{t.final_path}{how}",
