@@ -82,18 +82,21 @@ def flight_log_csv(seconds: float = 600.0, rate_hz: float = 5.0, seed: int = 11)
         r = 120.0 * phase
         a = t / 60.0
         north, east = r * math.cos(a), r * math.sin(a)
-        rel = 40.0 * phase + rng.gauss(0, 0.05)
-        lat = lat0 + north / 111_320.0 + rng.gauss(0, 3e-7)
-        lon = lon0 + east / (111_320.0 * math.cos(math.radians(lat0))) + rng.gauss(0, 3e-7)
+        # the estimator's outputs are smooth (wind sway, the circle); the noise is in the low digits
+        rel = 40.0 * phase + rng.gauss(0, 0.02)
+        lat = lat0 + north / 111_320.0 + rng.gauss(0, 1e-7)
+        lon = lon0 + east / (111_320.0 * math.cos(math.radians(lat0))) + rng.gauss(0, 1e-7)
         vx, vy = -r * math.sin(a) / 60.0, r * math.cos(a) / 60.0
-        current = 18.0 + 4.0 * phase + rng.gauss(0, 0.3)
+        roll = 1.5 * math.sin(0.7 * t) + 0.6 * math.sin(2.3 * t + 1.0) + rng.gauss(0, 0.03)
+        pitch = -2.0 * phase + 1.0 * math.sin(0.5 * t + 2.0) + rng.gauss(0, 0.03)
+        current = 18.0 + 4.0 * phase + 0.5 * math.sin(0.7 * t) + rng.gauss(0, 0.05)
         volts -= current / 3600.0 / rate_hz * 0.9
         pct -= current / 3600.0 / rate_hz * 100 / 4.5
         mode = "TAKEOFF" if t < 30 else "MISSION"
         out.append(
-            f"{t:.1f},{lat:.7f},{lon:.7f},{alt0 + rel:.2f},{rel:.2f},{rng.gauss(0, 1.2):.2f},"
-            f"{rng.gauss(-2.0 * phase, 1.0):.2f},{math.degrees(a + math.pi / 2) % 360:.2f},"
-            f"{vx + rng.gauss(0, 0.05):.2f},"
-            f"{vy + rng.gauss(0, 0.05):.2f},{rng.gauss(0, 0.08):.2f},{volts + rng.gauss(0, 0.01):.2f},{pct:.1f},"
+            f"{t:.1f},{lat:.7f},{lon:.7f},{alt0 + rel:.2f},{rel:.2f},{roll:.2f},"
+            f"{pitch:.2f},{math.degrees(a + math.pi / 2) % 360:.2f},"
+            f"{vx + rng.gauss(0, 0.02):.2f},"
+            f"{vy + rng.gauss(0, 0.02):.2f},{rng.gauss(0, 0.02):.2f},{volts + rng.gauss(0, 0.005):.2f},{pct:.1f},"
             f"{current:.2f},{sats},{hdop:.1f},{mode},{rssi}")
     return ("\n".join(out) + "\n").encode()
