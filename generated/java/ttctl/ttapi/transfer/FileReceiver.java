@@ -306,16 +306,9 @@ final class FileReceiver {
         t.decided = true;
         byte[] meta = t.meta;
         t.check = Names.metaCheck(meta);
-        // a flag this receiver does not know (DEFLATE: it does not inflate) is refused in words
-        // naming it; the sender offers again without it
-        int unknown = t.flags & 0xFF & ~(TtFileFlags.TT_FILE_FLAGS_OVERWRITE | TtFileFlags.TT_FILE_FLAGS_CANCEL);
-        if (unknown != 0) {
-            String text = "offer flags 0x" + (unknown < 16 ? "0" : "") + Integer.toHexString(unknown)
-                    + " not understood here";
-            if (unknown == TtFileFlags.TT_FILE_FLAGS_DEFLATE) {
-                text += ": this receiver does not decompress";
-            }
-            refuse(t, now, TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED, text);
+        String unsupported = Names.unknownFlags(t.flags);  // the sender offers again without them
+        if (unsupported != null) {
+            refuse(t, now, TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED, unsupported);
             return;
         }
         t.sha256 = Arrays.copyOf(meta, Math.min(Names.SHA_LEN, meta.length));

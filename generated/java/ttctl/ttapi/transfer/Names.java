@@ -10,6 +10,7 @@ import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.util.Locale;
 
+import ttctl.ttapi.enums.TtFileFlags;
 import ttctl.ttapi.enums.TtFileResult;
 
 /**
@@ -131,6 +132,20 @@ public final class Names {
         byte[] d = sha256().digest(meta);
         long v = (d[0] & 0xFFL) | (d[1] & 0xFFL) << 8 | (d[2] & 0xFFL) << 16 | (d[3] & 0xFFL) << 24;
         return v == 0 ? 1 : v;
+    }
+
+    /**
+     * Why an offer's flags are refused here, in words naming the flags this receiver does not know
+     * (DEFLATE: it does not inflate); null if it knows them all.
+     */
+    static String unknownFlags(int flags) {
+        int unknown = flags & 0xFF & ~(TtFileFlags.TT_FILE_FLAGS_OVERWRITE | TtFileFlags.TT_FILE_FLAGS_CANCEL);
+        if (unknown == 0) {
+            return null;
+        }
+        String text = "offer flags 0x" + (unknown < 16 ? "0" : "") + Integer.toHexString(unknown)
+                + " not understood here";
+        return unknown == TtFileFlags.TT_FILE_FLAGS_DEFLATE ? text + ": this receiver does not decompress" : text;
     }
 
     /** A TT_FILE_RESULT value's name without the prefix (COMPLETE, REFUSED_EXISTS...). */
