@@ -16,6 +16,7 @@ named in its reason.
 
 from __future__ import annotations
 
+import errno
 from collections import OrderedDict
 from collections.abc import Callable
 from typing import Any
@@ -376,7 +377,8 @@ class FileReceiver:
             self._end_group(group, now, R.TT_FILE_RESULT_FAILED_CHECKSUM, str(e), keep=False)
             return
         except OSError as e:
-            self._end_group(group, now, R.TT_FILE_RESULT_FAILED_IO,
+            full = e.errno in (errno.ENOSPC, errno.EDQUOT)
+            self._end_group(group, now, R.TT_FILE_RESULT_FAILED_DISK_FULL if full else R.TT_FILE_RESULT_FAILED_IO,
                             f"{partial.name}: inflating: {e.strerror or e} (the stream is kept for a resume)",
                             keep=True)
             return
