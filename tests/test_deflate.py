@@ -234,3 +234,20 @@ def test_a_partial_of_the_file_as_it_is_makes_a_deflating_sender_resume_it(tmp_p
     assert s2.fallback is not None and "as it is are here: send it uncompressed to resume" in s2.fallback
     assert s2.stats.resumed_bytes > 5000 and s2.stats.bytes_sent < len(payload) - 5000
     assert (on / "log.csv").read_bytes() == payload
+
+
+def test_a_large_stream_is_spooled_to_a_temporary_file_not_memory(tmp_path: Path,
+                                                                  monkeypatch: pytest.MonkeyPatch) -> None:
+    import ttctl.proto.deflate as d
+
+    monkeypatch.setattr(d, "IN_MEMORY", 4096)  # as for a file whose stream passes 8 MiB
+    log = flight_log_csv(seconds=120)
+    z = deflated(BytesSource(log), b"log.csv")
+    assert z is not None and z._data is None and z._spool is not None
+    assert zlib.decompress(z.read(0, z.size)) == log
+    w = World(tmp_path, onboard_dir=tmp_path / "on")
+    s = w.tablet.send_file("log.csv", ONBOARD, source=BytesSource(log, "log.csv"))
+    w.run(300, stop=lambda: s.done)
+    assert s.result is not None and s.result.ok and (tmp_path / "on" / "log.csv").read_bytes() == log
+    w.tablet.close()
+    assert s.deflated is not None and s.deflated._spool is None  # closed when the transfer is retired

@@ -109,8 +109,7 @@ def deflated(raw: Any, name_raw: bytes) -> DeflatedSource | None:
     parts: list[bytes] = []
     size = 0
     try:
-        for chunk in _chunks(raw):
-            out = z.compress(chunk)
+        for out in _outputs(z, raw):
             size += len(out)
             if size >= limit:
                 _drop(spool)
@@ -123,20 +122,19 @@ def deflated(raw: Any, name_raw: bytes) -> DeflatedSource | None:
                 spool.write(out)
             else:
                 parts.append(out)
-        out = z.flush()
-        size += len(out)
-        if size >= limit:
-            _drop(spool)
-            return None
         if spool is not None:
-            spool.write(out)
             spool.flush()
             return DeflatedSource(raw, None, spool, size)
-        parts.append(out)
         return DeflatedSource(raw, b"".join(parts), None, size)
     except OSError:
         _drop(spool)
         return None  # no room for the temporary stream: send the file as it is
+
+
+def _outputs(z: Any, raw: Any) -> Any:
+    for chunk in _chunks(raw):
+        yield z.compress(chunk)
+    yield z.flush()
 
 
 def _drop(spool: Any) -> None:
