@@ -94,3 +94,30 @@ def test_a_fetch_comes_deflated(tmp_path: Path, start: Start) -> None:
     assert (dl / "log.csv").read_bytes() == (served / "log.csv").read_bytes()
     recv.signal(signal.SIGINT)
     assert recv.wait() == 0
+
+
+def test_a_fetch_resumes_what_arrived_as_it_is(tmp_path: Path, start: Start) -> None:
+    """Part of the file is here as it was sent before (raw: by a server that did not deflate);
+    the server now offers it deflated, the requester says it holds the file as it is, the server
+    sends it as it is and only the rest moves."""
+    import hashlib
+
+    from ttctl.proto.storage import ReceiveDir
+
+    served = tmp_path / "served"
+    served.mkdir()
+    log = flight_log_csv(seconds=120)
+    (served / "log.csv").write_bytes(log)
+    dl = tmp_path / "dl"
+    part = ReceiveDir(dl).partial("log.csv", len(log), hashlib.sha256(log).digest())
+    part.write(0, log[:30_000])
+    part.save()
+    part.close()
+    port = free_port()
+    recv = receiver(start, tmp_path, f"udpin:{LOCAL}:{port}", "--serve", str(served), "--rate", "200000")
+    proc, r = send("log.csv", "--from", f"udpout:{LOCAL}:{port}", "--dir", str(dl), "--rate", "200000")
+    assert proc.returncode == 0 and r["ok"], proc.stderr
+    assert r["deflated_bytes"] is None and (dl / "log.csv").read_bytes() == log
+    assert r["frames_received"] * 80 < len(log) - 20_000, r  # only the rest moved
+    recv.signal(signal.SIGINT)
+    assert recv.wait() == 0

@@ -52,3 +52,24 @@ def test_the_java_inbox_refuses_deflate_and_the_sender_falls_back(tmp_path: Path
     assert r["deflate_fallback"] == REFUSAL and r["deflated_bytes"] is None, r
     assert sha(tmp_path / "inbox" / "mission.yaml") == sha(text)
     stop(j, tmp_path)
+
+
+@pytest.mark.skipif(shutil.which("javac") is None or shutil.which("java") is None, reason="needs a JDK")
+def test_a_java_fetch_of_text_from_recv_file_serve_falls_back_to_the_file(tmp_path: Path, start: Start) -> None:
+    """The server (recv-file --serve) offers the text deflated; the Java requester refuses that
+    in words and the server sends the file as it is."""
+    from conformance_lib import build_java
+    from e2e_lib import free_port, receiver
+    from test_java_transfer import DRIVERS, Driver
+    from ttctl.bench.textfiles import flight_log_csv
+
+    classes, _ = build_java(tmp_path / "build", sorted(DRIVERS.glob("*.java")))
+    (tmp_path / "serve").mkdir()
+    (tmp_path / "serve" / "log.csv").write_bytes(flight_log_csv(seconds=60))
+    port = free_port()
+    rx = receiver(start, tmp_path, f"udpin:{LOCAL}:{port}", "--rate", "50000", "--serve", str(tmp_path / "serve"))
+    r = Driver(classes, tmp_path, "java", link="udp", port=port, rate=50000, timeout=30, fetch="log.csv",
+               dir="got").finish(120)
+    assert r["fetch_ok"], r["_text"][-3000:]
+    assert sha(tmp_path / "got" / "log.csv") == sha(tmp_path / "serve" / "log.csv") == r["fetch_sha256"]
+    rx.wait_for("served log.csv", where="stdout")

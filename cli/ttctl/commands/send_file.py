@@ -286,7 +286,7 @@ async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, sto
         if what == "request-failed" and obj is req:
             state["error"], state["code"] = obj.error or "failed", obj.code or "FAILED"
         elif what.startswith("file-") and req is not None and obj.key[:2] == target \
-                and getattr(obj, "request_id", 0) == req.id:
+                and getattr(obj, "request_id", 0) == req.id and not obj.offered_again:
             state["t"] = obj
             if what == "file-complete":
                 state["done"] = True

@@ -88,6 +88,13 @@ class Incoming:
         return f"{self.key[0]}/{self.key[1]}"
 
     @property
+    def offered_again(self) -> bool:
+        """Refused for what the offer carried (REFUSED_UNSUPPORTED: deflate, where the file as it
+        is was wanted): its sender offers the file again without it, under a new transfer id; a
+        download waits for that offer rather than failing."""
+        return self.result == R.TT_FILE_RESULT_REFUSED_UNSUPPORTED
+
+    @property
     def file_size(self) -> int:
         return self.size if self.original is None else self.original
 
