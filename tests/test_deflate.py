@@ -251,3 +251,21 @@ def test_a_large_stream_is_spooled_to_a_temporary_file_not_memory(tmp_path: Path
     assert s.result is not None and s.result.ok and (tmp_path / "on" / "log.csv").read_bytes() == log
     w.tablet.close()
     assert s.deflated is not None and s.deflated._spool is None  # closed when the transfer is retired
+
+
+def test_a_served_file_over_the_cap_goes_as_it_is(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Deflating blocks the serving end while it runs: served files over 16 MiB go as they are."""
+    import ttctl.proto.endpoint as ep
+
+    monkeypatch.setattr(ep, "SERVE_DEFLATE_MAX", 10_000)
+    serve = tmp_path / "results"
+    serve.mkdir()
+    (serve / "small.csv").write_bytes(flight_log_csv(seconds=10))
+    (serve / "big.csv").write_bytes(flight_log_csv(seconds=60))
+    w = World(tmp_path, tablet_dir=tmp_path / "tab", serve=serve)
+    for name in ("small.csv", "big.csv"):
+        w.tablet.request_file(name, ONBOARD)
+    w.run(300, stop=lambda: len(w.event("file-complete")) == 2)
+    done = {t.name: t for t in w.event("file-complete")}
+    assert done["small.csv"].original is not None and done["big.csv"].original is None
+    assert (tmp_path / "tab" / "big.csv").read_bytes() == flight_log_csv(seconds=60)

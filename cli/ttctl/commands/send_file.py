@@ -139,9 +139,17 @@ def _upload_prepare(o: SendOptions, link: LinkChoice, side: _End) -> Outcome:
         src = FileSource(o.file)  # reads the file once for its SHA-256, before the link starts
     except StorageError as e:
         raise Fail(str(e)) from None
+    stream = None
     try:
-        return asyncio.run(_upload(o, side, spec, link, src, name))
+        if o.compress:  # deflated (when that saves) before the link starts too
+            from ..proto.deflate import deflated
+            from ..proto.names import encoded
+
+            stream = deflated(src, encoded(name))
+        return asyncio.run(_upload(o, side, spec, link, src, name, stream or False))
     finally:
+        if stream is not None:
+            stream.close()
         src.close()
 
 
@@ -174,7 +182,8 @@ async def _open_end(o: SendOptions, side: _End, spec: Any, link: LinkChoice, bar
     return ep, runner
 
 
-async def _upload(o: SendOptions, side: _End, spec: Any, link: LinkChoice, src: Any, name: str) -> Outcome:
+async def _upload(o: SendOptions, side: _End, spec: Any, link: LinkChoice, src: Any, name: str,
+                  compress: Any) -> Outcome:
     loop = asyncio.get_running_loop()
     wake = asyncio.Event()
     target = (o.target_sysid, o.target_compid)
@@ -188,7 +197,7 @@ async def _upload(o: SendOptions, side: _End, spec: Any, link: LinkChoice, src: 
             return Outcome(False, {}, interrupted=True)
         runner.sync()
         sender = ep.send_file(src.path, target, name=name, overwrite=o.overwrite, source=src,
-                              on_progress=lambda s: wake.set(), compress=o.compress)
+                              on_progress=lambda s: wake.set(), compress=compress)
         runner.kick()
         while not sender.done and not sigs.stop.is_set():
             await tick(wake)

@@ -22,6 +22,7 @@ from ..wire.bindings import Bindings
 from ..wire.contract import TtFileResult as R
 from ..wire.packets import PacketReceiver
 from .commands import FINAL_OK, Action, Command, CommandClient, CommandServer, log_chunks
+from .deflate import DeflatedSource
 from .names import Refused, check_name, encoded
 from .ranges import RangeSet
 from .receiver import FileReceiver
@@ -33,6 +34,7 @@ from .transfer import NARROW, REQUEST_PART, RESULT_TEXT, WIDE, TransferConfig, r
 TARGETED = "target_system"
 STATUS_BYTES = 60  # typical TT_FILE_STATUS frame
 MAX_SOURCES = 64  # packet receivers kept for distinct sources (the least recently heard goes first)
+SERVE_DEFLATE_MAX = 16 << 20  # served files up to this size may go deflated (deflating blocks this end meanwhile)
 MAX_PARTIAL_REQUESTS = 64  # TT_FILE_REQUEST names still arriving, kept at once (the stalest goes first)
 
 
@@ -207,7 +209,7 @@ class Endpoint:
     def send_file(self, path: str | Path, target: tuple[int, int], name: str | None = None,
                   overwrite: bool = False, request_id: int = 0,
                   on_progress: Callable[[FileSender], None] | None = None, source: Any = None,
-                  compress: bool | None = None) -> FileSender:
+                  compress: bool | DeflatedSource | None = None) -> FileSender:
         """Start sending a file (ValueError for a name no receiver would take, StorageError for
         a file that cannot be sent)."""
         src = source if source is not None else FileSource(path)
@@ -473,7 +475,11 @@ class Endpoint:
         del self._served[key]
         try:
             path, name = self._servable(bytes(part.name))
-            self.send_file(path, src, name=name, request_id=msg.request_id)
+            try:
+                small = os.stat(path).st_size <= SERVE_DEFLATE_MAX
+            except OSError:
+                small = False  # opening it says what is wrong
+            self.send_file(path, src, name=name, request_id=msg.request_id, compress=self.compress and small)
         except Refused as e:
             result = R.TT_FILE_RESULT_NOT_FOUND if e.code == "NOT_FOUND" else R.TT_FILE_RESULT_REQUEST_REFUSED
             self._refuse_request(src, msg.request_id, result, e.reason)

@@ -48,7 +48,7 @@ class FileSender:
     def __init__(self, bindings: Bindings, new_id: Callable[[], int], source: Any, name: str, target: tuple[int, int],
                  config: TransferConfig | None = None, request_id: int = 0, overwrite: bool = False,
                  now: float = 0.0, on_progress: Callable[[FileSender], None] | None = None,
-                 compress: bool = True) -> None:
+                 compress: bool | DeflatedSource = True) -> None:
         try:
             check_name(name)
         except Refused as e:
@@ -65,7 +65,10 @@ class FileSender:
         self.request_id = request_id
         self._flags = int(TtFileFlags.TT_FILE_FLAGS_OVERWRITE) if overwrite else 0
         self.fallback: str | None = None  # why a deflated offer went back to the file as it is
-        self._use(deflated(source, encoded(name)) if compress else None)
+        # compress: True decides here; a DeflatedSource of this file was decided before (the
+        # command line deflates before its link starts, so that a big file blocks nothing)
+        self._use(compress if isinstance(compress, DeflatedSource)
+                  else deflated(source, encoded(name)) if compress else None)
         self.result: TransferResult | None = None
         self.stats = TransferStats(started=now)
         self.on_progress = on_progress
