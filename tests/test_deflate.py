@@ -163,6 +163,11 @@ def test_a_bomb_is_stopped_at_its_declared_size_and_refused_in_words(tmp_path: P
     # declared larger than the quota: refused at the offer, before any data
     s2, _, _ = send_forged(tmp_path / "q", zlib.compress(big, 9), big, len(big), Quota(max_file_bytes=100_000))
     assert s2.result is not None and s2.result.code == "REFUSED_QUOTA" and s2.stats.bytes_sent == 0
+    # a small file declared with a stream larger than the quota: refused at the offer too
+    s3, _, _ = send_forged(tmp_path / "s", random.Random(1).randbytes(150_000), b"tiny", 4,
+                           Quota(max_file_bytes=100_000))
+    assert s3.result is not None and s3.result.code == "REFUSED_QUOTA" and s3.stats.bytes_sent == 0
+    assert "150000-byte stream exceeds the per-file quota" in s3.result.message
 
 
 def test_a_corrupt_stream_is_refused_in_words_and_not_kept(tmp_path: Path) -> None:

@@ -404,6 +404,8 @@ class ReceiveDir:
         self.check_parents(name)
         if size > q.max_file_bytes:
             raise Refused("QUOTA", f"{size} bytes exceed the per-file quota of {q.max_file_bytes} bytes")
+        if stream > q.max_file_bytes:  # a stream larger than its file: nothing a real deflater writes
+            raise Refused("QUOTA", f"a {stream}-byte stream exceeds the per-file quota of {q.max_file_bytes} bytes")
         if os.path.lexists(final) and self.identical(final, size, sha256):
             return True
         self.check_target(name, final, wants_overwrite)
