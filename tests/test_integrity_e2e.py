@@ -25,12 +25,13 @@ from ttctl.bench.integrity import run as run_integrity
 @pytest.mark.parametrize(("topology", "seed"), [("direct", 101), ("relay", 202)])
 def test_exit_0_means_the_receiver_holds_that_file(tmp_path: Path, topology: str, seed: int) -> None:
     """Rounds of 1-4 concurrent send-file processes (equal ids, shared names, same and other
-    bytes at equal sizes, --overwrite or not), senders and the receiver killed with SIGKILL and
-    started again, strangers sending garbage, through a lossy relay or not (see
+    bytes at equal sizes, random bytes or text that goes deflated, --overwrite or not), senders
+    and the receiver killed with SIGKILL and started again, strangers sending garbage, through a lossy relay or not (see
     ttctl/bench/integrity.py for every check). `ttctl bench integrity` runs it longer."""
     report = run_integrity(tmp_path, rounds=10, seed=seed, relay=topology == "relay")
     assert report.violations == []
     assert report.rounds == 10 and report.delivered >= 8 and report.checks > 100
+    assert report.deflated >= 2  # the compressed rounds: text files went as their zlib stream
     assert report.stranger_datagrams > 100
 
 

@@ -295,7 +295,7 @@ def test_bytes_corrupted_once_are_healed_by_a_fresh_start(tmp_path: Path) -> Non
     on = tmp_path / "on"
     payload = data(3000)
     w = World(tmp_path, onboard_dir=on)
-    s = w.tablet.send_file("x.bin", ONBOARD, source=Once(payload, "x.bin"))
+    s = w.tablet.send_file("x.bin", ONBOARD, source=Once(payload, "x.bin"), compress=False)  # spoil the first send
     first_id = s.id
     w.run(120, stop=lambda: s.done)
     assert s.result is not None and s.result.ok, s.result

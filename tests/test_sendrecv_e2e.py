@@ -282,3 +282,21 @@ def test_bad_input_is_one_line(tmp_path: Path) -> None:
     finally:
         busy.close()
     assert not (tmp_path / "in").exists()  # no refusal left a directory behind
+
+
+def test_content_that_comes_back_after_another_replaced_it_is_complete_not_again(tmp_path: Path,
+                                                                                  start: Start) -> None:
+    """A, then B over it, then A over B: the third is a completion (the directory changed), not a
+    'complete-again' of the first; --count counts distinct contents."""
+    a, b = data_file(tmp_path, "a.bin", 3000, seed=1), data_file(tmp_path, "b.bin", 3000, seed=2)
+    port = free_port()
+    recv = receiver(start, tmp_path, f"udpin:{LOCAL}:{port}", "--overwrite", "--json", "--rate", "200000")
+    for src in (a, b, a):
+        proc, r = send(str(src), "--name", "x.bin", "--overwrite", "--to", f"udpout:{LOCAL}:{port}", "--rate",
+                       "200000")
+        assert proc.returncode == 0 and r["ok"], proc.stderr
+    assert (tmp_path / "inbox" / "x.bin").read_bytes() == a.read_bytes()
+    recv.signal(signal.SIGINT)
+    assert recv.wait() == 0
+    events = [json.loads(line)["event"] for line in recv.stdout.splitlines()]
+    assert events.count("complete") == 3 and "complete-again" not in events, events

@@ -229,13 +229,18 @@ def send_file_cmd(
     accept_unsigned: AcceptUnsignedOpt = False,
     dialect: DialectOpt = None,
     include: DialectIncludeOpt = None,
+    no_compress: Annotated[bool, typer.Option("--no-compress", help="Send the file as it is, never as its zlib "
+                                                                    "stream (by default a file that deflates "
+                                                                    "well goes deflated).")] = False,
 ) -> None:
     """Send a file to a receiver (ttctl recv-file, or the onboard end), or fetch one with --from.
 
     A progress bar on stderr when it is a terminal; at the end a summary: bytes, seconds, goodput,
-    efficiency against the link capacity (known from --rate or --profile), retransmitted bytes.
+    efficiency against the link capacity (known from --rate or --profile), retransmitted bytes, and
+    the compression when the file went deflated (text usually does; JPEG and archives never).
     --json prints one JSON object instead: ok, code, message, name, bytes, seconds, goodput_Bps,
-    capacity_Bps, efficiency, retransmitted_bytes, frames_sent, bytes_sent, resumed_bytes.
+    capacity_Bps, efficiency, retransmitted_bytes, frames_sent, bytes_sent, resumed_bytes,
+    deflated_bytes (the zlib stream's size, null when sent as it is), deflate_fallback.
     Sending a file again after an interruption resumes where the receiver got to.
 
     Exit status: 0 delivered and verified, 1 refused (with the receiver's reason), failed or timed out,
@@ -247,7 +252,7 @@ def send_file_cmd(
 
     code = send_file(SendOptions(file, to, from_, name, overwrite, json_out, rate, profile, distance, sysid, compid,
                                  target_sysid, target_compid, timeout, folder, key, accept_unsigned, profile_file,
-                                 dialect, include or []))
+                                 dialect, include or [], compress=not no_compress))
     raise typer.Exit(code)
 
 

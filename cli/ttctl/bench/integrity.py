@@ -3,7 +3,8 @@ name with that SHA-256, whatever else happens meanwhile.
 
 Each round starts a few `ttctl send-file` processes at once, all with the default MAVLink ids,
 against one `ttctl recv-file` (directly, or through `ttctl link relay` with loss): names shared
-between senders, contents the same or different at the same size, `--overwrite` or not; at
+between senders, contents the same or different at the same size, random bytes or text (a CSV
+log, which goes deflated: the compressed rounds), `--overwrite` or not; at
 random a sender is killed with SIGKILL and started again, the receiver is killed and started
 again, strangers send garbage datagrams. Checked, all the time:
 - every file visible under its final name is a whole file that some sender offered under that
@@ -36,6 +37,7 @@ from pathlib import Path
 from typing import Any
 
 from .procs import console_script
+from .textfiles import flight_log_csv
 
 LOCAL = "127.0.0.1"
 NAMES = ["m.yaml", "data/run.bin", "r.csv", "big.bin"]
@@ -49,6 +51,7 @@ class Report:
     rounds: int = 0
     sends: int = 0
     delivered: int = 0  # exit 0
+    deflated: int = 0  # exit 0, the file went as its zlib stream
     nothing_sent: int = 0  # exit 0, the receiver had it already
     refused: int = 0  # exit 1 with a REFUSED_* code
     failed: int = 0  # exit 1 otherwise
@@ -186,7 +189,10 @@ class Harness:
         same_size = made and self.rng.random() < 0.5  # the same size, other bytes: what tripped the old ids
         size = made[-1][0].stat().st_size if same_size else self.rng.choice(SIZES)
         path = self.src / f"{len(list(self.src.iterdir())):05d}.bin"
-        body = self.rng.randbytes(size)
+        if self.rng.random() < 0.5:  # text, which deflates: a CSV log cut to the size
+            body = flight_log_csv(seconds=size / 80 + 1, seed=self.rng.randrange(1 << 30))[:size]
+        else:
+            body = self.rng.randbytes(size)
         path.write_bytes(body)
         sha = hashlib.sha256(body).hexdigest()
         made.append((path, sha))
@@ -344,6 +350,7 @@ class Harness:
             return
         self.report.delivered += 1
         self.report.nothing_sent += bool(report.get("nothing_sent"))
+        self.report.deflated += bool(report.get("deflated_bytes"))
         if not report.get("ok") or report.get("sha256") != s.sha:
             self.violation(f"send-file {s.name} exited 0 but reported {report.get('ok')} / "
                            f"{str(report.get('sha256'))[:12]} for {s.sha[:12]}")
@@ -454,7 +461,7 @@ def main(rounds: int, seed: int, relay: str, strangers: bool, keep: Path | None,
         t.add_column("")
         for topo in reports:
             t.add_column(topo, justify="right")
-        cols = ("rounds", "sends", "delivered", "nothing_sent", "refused", "failed", "senders_killed",
+        cols = ("rounds", "sends", "delivered", "deflated", "nothing_sent", "refused", "failed", "senders_killed",
                 "receivers_killed", "stranger_datagrams", "checks", "seconds")
         for c in cols:
             t.add_row(c.replace("_", " "), *(str(getattr(r, c)) for r in reports.values()))

@@ -5,7 +5,8 @@ Rows: {"protocol","direction","loss","loss_model","file_bytes","seconds","goodpu
 packets and no protocol, and efficiency = goodput / capacity. seconds runs from the moment the
 sender starts until the verified file is in place at the receiver. Each case runs with several
 fixed seeds; the row reports the median. Latency rows {"case","p50_ms","p95_ms"} time
-TT_ACTION_COMMAND -> TT_COMMAND_ACK round trips, idle and during a bulk upload.
+TT_ACTION_COMMAND -> TT_COMMAND_ACK round trips, idle and during a bulk upload. "compressed"
+rows (not with --quick): text files deflated and as they are, see transfer_text.py.
 
 "ttctl-signed" is ttctl with MAVLink 2 signing on both ends (as `send-file --key` and `recv-file
 --key`): every frame carries a 13-byte signature (MAVLink 2 specification, "Message Signing"), so
@@ -242,12 +243,16 @@ def run(profile: Profile, distance: float, file_bytes: int, seeds: int, protocol
                {"case": "during_upload", "p50_ms": round(1000 * percentile(busy, 0.5), 1),
                 "p95_ms": round(1000 * percentile(busy, 0.95), 1), "count": len(busy)}]
     bounds = checks(rows, latency, latency_bound_s(profile, distance))
+    from . import transfer_text  # deflate's rows: text files, 10 % loss (not in --quick)
+
+    text = [] if quick else transfer_text.rows(profile, distance, seed_list[:3])
+    bounds += transfer_text.checks(text)
     report = {"profile": profile.name, "distance_m": distance, "extrapolated": extrapolated,
               "file_bytes": file_bytes, "seeds": seed_list,
               "frame_efficiency": {"narrow": NARROW / NARROW_FRAME, "wide": WIDE / WIDE_FRAME,
                                    "narrow_signed": round(NARROW / (NARROW_FRAME + SIGNATURE_OVERHEAD), 4),
                                    "wide_signed": round(WIDE / (WIDE_FRAME + SIGNATURE_OVERHEAD), 4)},
-              "rows": [asdict(r) for r in rows], "latency": latency,
+              "rows": [asdict(r) for r in rows], "latency": latency, "compressed": transfer_text.as_dicts(text),
               "checks": bounds}
     if plot:
         from .plots import plot_transfer
@@ -348,6 +353,10 @@ def _print_tables(report: dict[str, Any]) -> None:
     for r in report["latency"]:
         lt.add_row(r["case"], f"{r['p50_ms']:.0f}", f"{r['p95_ms']:.0f}", str(r["count"]))
     console.print(lt)
+    if report.get("compressed"):
+        from .transfer_text import print_table
+
+        print_table(report["compressed"])
     titles = {"ttctl": "ttctl against one-packet frames' ceiling, 0.80 x (1 - the loss each seed realised)",
               "ttctl-signed": "signed ttctl against signed frames' ceiling: 80 file bytes in 113 under loss "
                               "(two packets, both must arrive), 247 in 280 (wide) on a clean link, at the loss "

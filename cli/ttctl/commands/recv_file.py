@@ -105,6 +105,7 @@ async def _recv(o: RecvOptions, b: Any, spec: Any, link: LinkChoice, store: Any,
     wake = asyncio.Event()
     completed = 0  # distinct files (path and content) completed
     seen: set[tuple[str, bytes]] = set()
+    latest: dict[str, bytes] = {}  # path -> the SHA-256 last completed there
 
     def out(event: str, text: str, **fields: Any) -> None:
         if o.as_json:
@@ -127,31 +128,38 @@ async def _recv(o: RecvOptions, b: Any, spec: Any, link: LinkChoice, store: Any,
         if what == "file-accepted":
             have = t.partial.ranges.total() if t.partial is not None else 0
             resumed = f", resuming with {have} bytes already here" if have else ""
-            out("accepted", f"accepted {name} ({t.size} bytes) from {peer}{resumed}", name=name, bytes=t.size,
-                peer=peer, resumed_bytes=have)
+            if t.original is not None:
+                resumed = f", deflated to {t.size} B on the link{resumed}"
+            out("accepted", f"accepted {name} ({t.file_size} bytes) from {peer}{resumed}", name=name,
+                bytes=t.file_size, peer=peer, resumed_bytes=have,
+                deflated_bytes=t.size if t.original is not None else None)
         elif what == "file-busy":
-            out("waiting", f"{name} from {peer} waits: {t.reason}", name=name, bytes=t.size, peer=peer,
+            out("waiting", f"{name} from {peer} waits: {t.reason}", name=name, bytes=t.file_size, peer=peer,
                 reason=t.reason)
         elif what == "file-refused":
-            out("refused", f"refused {name} from {peer}: {t.reason}", name=name, bytes=t.size, peer=peer,
+            out("refused", f"refused {name} from {peer}: {t.reason}", name=name, bytes=t.file_size, peer=peer,
                 reason=t.reason)
         elif what == "file-complete":
             secs = (t.finished_at or loop.time()) - t.started
             key = (str(t.final_path), t.sha256)
-            if key in seen:  # the sender asked again (it had not heard COMPLETE): one file, counted once
+            again = key in seen and latest.get(key[0]) == t.sha256
+            latest[key[0]] = t.sha256
+            if again:  # the sender asked again (it had not heard COMPLETE): one file, counted once
                 out("complete-again", f"{name} from {peer} is complete already -> {t.final_path} (sent again; "
-                    f"counted once)", name=name, bytes=t.size, peer=peer, path=t.final_path,
+                    f"counted once)", name=name, bytes=t.file_size, peer=peer, path=t.final_path,
                     sha256=t.sha256.hex())
                 wake.set()
                 return
-            seen.add(key)
-            completed += 1
+            if key not in seen:  # content that was there before another replaced it: a completion, counted once
+                seen.add(key)
+                completed += 1
             how = " (an identical file was there already)" if t.identical else ""
-            out("complete", f"complete {name}: {t.size} bytes in {secs:.2f} s from {peer} -> {t.final_path}{how}",
-                name=name, bytes=t.size, seconds=round(secs, 3), peer=peer, path=t.final_path,
+            out("complete", f"complete {name}: {t.file_size} bytes in {secs:.2f} s from {peer} -> "
+                f"{t.final_path}{how}",
+                name=name, bytes=t.file_size, seconds=round(secs, 3), peer=peer, path=t.final_path,
                 sha256=t.sha256.hex())
         elif what == "file-failed":
-            out("failed", f"failed {name} from {peer}: {t.reason}", name=name, bytes=t.size, peer=peer,
+            out("failed", f"failed {name} from {peer}: {t.reason}", name=name, bytes=t.file_size, peer=peer,
                 reason=t.reason)
         wake.set()
 
@@ -207,13 +215,14 @@ def _report_served(ep: Any, served: dict[int, Any], out: Callable[..., None]) ->
         peer = who(s.target)
         if seen is None:
             served[id(s)] = "started"
-            out("serving", f"serving {s.name} ({s.size} bytes) to {peer}", name=s.name, bytes=s.size, peer=peer)
+            out("serving", f"serving {s.name} ({s.file_size} bytes) to {peer}", name=s.name, bytes=s.file_size,
+                peer=peer)
         if s.done and served.get(id(s)) != "done":
             served[id(s)] = "done"
             r = s.result
             if r.ok:
-                out("served", f"served {s.name}: {s.size} bytes in {r.seconds:.2f} s to {peer}", name=s.name,
-                    bytes=s.size, seconds=round(r.seconds, 3), peer=peer)
+                out("served", f"served {s.name}: {s.file_size} bytes in {r.seconds:.2f} s to {peer}", name=s.name,
+                    bytes=s.file_size, seconds=round(r.seconds, 3), peer=peer)
             else:
                 out("serve-failed", f"serving {s.name} to {peer} failed: {r.message}", name=s.name, peer=peer,
                     reason=r.message)

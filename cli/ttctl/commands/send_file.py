@@ -56,6 +56,7 @@ class SendOptions:
     profile_file: Path | None = None
     dialect: Path | None = None
     include_dirs: list[Path] = field(default_factory=list)
+    compress: bool = True
 
 
 @dataclass
@@ -138,9 +139,17 @@ def _upload_prepare(o: SendOptions, link: LinkChoice, side: _End) -> Outcome:
         src = FileSource(o.file)  # reads the file once for its SHA-256, before the link starts
     except StorageError as e:
         raise Fail(str(e)) from None
+    stream = None
     try:
-        return asyncio.run(_upload(o, side, spec, link, src, name))
+        if o.compress:  # deflated (when that saves) before the link starts too
+            from ..proto.deflate import deflated
+            from ..proto.names import encoded
+
+            stream = deflated(src, encoded(name))
+        return asyncio.run(_upload(o, side, spec, link, src, name, stream or False))
     finally:
+        if stream is not None:
+            stream.close()
         src.close()
 
 
@@ -173,7 +182,8 @@ async def _open_end(o: SendOptions, side: _End, spec: Any, link: LinkChoice, bar
     return ep, runner
 
 
-async def _upload(o: SendOptions, side: _End, spec: Any, link: LinkChoice, src: Any, name: str) -> Outcome:
+async def _upload(o: SendOptions, side: _End, spec: Any, link: LinkChoice, src: Any, name: str,
+                  compress: Any) -> Outcome:
     loop = asyncio.get_running_loop()
     wake = asyncio.Event()
     target = (o.target_sysid, o.target_compid)
@@ -187,7 +197,7 @@ async def _upload(o: SendOptions, side: _End, spec: Any, link: LinkChoice, src: 
             return Outcome(False, {}, interrupted=True)
         runner.sync()
         sender = ep.send_file(src.path, target, name=name, overwrite=o.overwrite, source=src,
-                              on_progress=lambda s: wake.set())
+                              on_progress=lambda s: wake.set(), compress=compress)
         runner.kick()
         while not sender.done and not sigs.stop.is_set():
             await tick(wake)
@@ -207,7 +217,9 @@ async def _upload(o: SendOptions, side: _End, spec: Any, link: LinkChoice, src: 
     r = sender.result
     assert r is not None
     st = r.stats
-    resumed = min(st.resumed_bytes, r.size) if r.ok else 0
+    resumed = min(st.resumed_bytes, r.deflated or r.size) if r.ok else 0
+    if r.deflated:  # the receiver's bytes count the stream: the file's share of them
+        resumed = round(resumed * r.size / r.deflated)
     moved = max(0, r.size - resumed)
     goodput = moved / r.seconds if r.seconds > 0 else 0.0
     cap = link.send_capacity
@@ -219,6 +231,7 @@ async def _upload(o: SendOptions, side: _End, spec: Any, link: LinkChoice, src: 
         "efficiency": round(goodput / cap, 4) if cap and r.ok and moved else None,
         "retransmitted_bytes": st.bytes_retransmitted, "frames_sent": st.frames_sent, "bytes_sent": st.bytes_sent,
         "resumed_bytes": resumed, "nothing_sent": r.nothing_sent, "restarts": st.restarts,
+        "deflated_bytes": r.deflated, "deflate_fallback": r.fallback,
         "peer": who(target), "endpoint": transport.describe(), "direction": "send",
     }
     if sigs.stop.is_set() and not r.ok:
@@ -282,7 +295,7 @@ async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, sto
         if what == "request-failed" and obj is req:
             state["error"], state["code"] = obj.error or "failed", obj.code or "FAILED"
         elif what.startswith("file-") and req is not None and obj.key[:2] == target \
-                and getattr(obj, "request_id", 0) == req.id:
+                and getattr(obj, "request_id", 0) == req.id and not obj.offered_again:
             state["t"] = obj
             if what == "file-complete":
                 state["done"] = True
@@ -338,7 +351,7 @@ async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, sto
     t = state["t"]
     end = t.finished_at if t is not None and t.finished_at else loop.time()
     secs = end - started
-    size = t.size if t is not None else 0
+    size = t.file_size if t is not None else 0
     ok = bool(state["done"])
     goodput = size / secs if ok and secs > 0 else None
     cap = link.recv_capacity
@@ -352,7 +365,7 @@ async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, sto
         "efficiency": round(goodput / cap, 4) if cap and goodput is not None else None,
         "retransmitted_bytes": None, "frames_sent": None, "frames_received": t.frames if t is not None else 0,
         "path": t.final_path if t is not None else None, "peer": peer, "endpoint": transport.describe(),
-        "direction": "fetch",
+        "direction": "fetch", "deflated_bytes": t.size if t is not None and t.original is not None else None,
     }
     if sigs.stop.is_set() and not ok:
         return Outcome(False, report, interrupted=True)
@@ -384,6 +397,11 @@ def _summary(r: dict[str, Any]) -> str:
         parts.append(f"{r['retransmitted_bytes']} bytes retransmitted")
     if r.get("resumed_bytes"):
         parts.append(f"resumed: {r['resumed_bytes']} bytes were already there")
+    if r.get("deflated_bytes"):
+        parts.append(f"deflate {r['bytes'] / r['deflated_bytes']:.1f}x: {r['deflated_bytes']:,} B on the link for "
+                     f"{r['bytes']:,} B")
+    elif r.get("deflate_fallback"):
+        parts.append(f"sent as it is: {r['deflate_fallback']}")
     text = ", ".join(parts)
     if r.get("path"):
         text += f" -> {r['path']}"

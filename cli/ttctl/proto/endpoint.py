@@ -22,6 +22,7 @@ from ..wire.bindings import Bindings
 from ..wire.contract import TtFileResult as R
 from ..wire.packets import PacketReceiver
 from .commands import FINAL_OK, Action, Command, CommandClient, CommandServer, log_chunks
+from .deflate import DeflatedSource
 from .names import Refused, check_name, encoded
 from .ranges import RangeSet
 from .receiver import FileReceiver
@@ -33,6 +34,7 @@ from .transfer import NARROW, REQUEST_PART, RESULT_TEXT, WIDE, TransferConfig, r
 TARGETED = "target_system"
 STATUS_BYTES = 60  # typical TT_FILE_STATUS frame
 MAX_SOURCES = 64  # packet receivers kept for distinct sources (the least recently heard goes first)
+SERVE_DEFLATE_MAX = 16 << 20  # served files up to this size may go deflated (deflating blocks this end meanwhile)
 MAX_PARTIAL_REQUESTS = 64  # TT_FILE_REQUEST names still arriving, kept at once (the stalest goes first)
 
 
@@ -84,7 +86,8 @@ class Endpoint:
                  action: Action | None = None, clock_ms: Callable[[float], int] | None = None,
                  on_message: Callable[[float, Any], None] | None = None,
                  on_event: Callable[[str, Any], None] | None = None, accept_commands: bool = True,
-                 unsolicited: bool = True, rng: random.Random | None = None) -> None:
+                 unsolicited: bool = True, rng: random.Random | None = None, compress: bool = True,
+                 inflate: bool = True) -> None:
         self.b = bindings
         self.sysid = sysid
         self.compid = compid
@@ -96,7 +99,7 @@ class Endpoint:
         self._last_rx: dict[Hashable, float] = {}
         self.scheduler = Scheduler(mtu, rate_Bps, sign=bindings.sign(signing) if signing is not None else None)
         self.receiver = (FileReceiver(bindings, receive_dir, sysid, compid, self.cfg, on_event=self._file_event,
-                                      unsolicited=unsolicited)
+                                      unsolicited=unsolicited, inflate=inflate)
                          if receive_dir is not None else None)
         if self.receiver is not None and rate_Bps:
             # statuses go back over our own link: on a slow one, fewer of them
@@ -106,6 +109,7 @@ class Endpoint:
                 "status_min_interval": max(self.cfg.status_min_interval, 3 * STATUS_BYTES / rate_Bps),
                 "status_tail_interval": max(self.cfg.status_tail_interval, 1.2 * STATUS_BYTES / rate_Bps)})
         self.serve_dir = Path(serve_dir).resolve() if serve_dir else None
+        self.compress = compress  # offer files deflated when that saves (sends and served fetches)
         self.senders: dict[int, FileSender] = {}
         self.requests: dict[int, Request] = {}
         self._served: dict[tuple[int, int, int], _ServedRequest] = {}
@@ -204,12 +208,13 @@ class Endpoint:
 
     def send_file(self, path: str | Path, target: tuple[int, int], name: str | None = None,
                   overwrite: bool = False, request_id: int = 0,
-                  on_progress: Callable[[FileSender], None] | None = None, source: Any = None) -> FileSender:
+                  on_progress: Callable[[FileSender], None] | None = None, source: Any = None,
+                  compress: bool | DeflatedSource | None = None) -> FileSender:
         """Start sending a file (ValueError for a name no receiver would take, StorageError for
         a file that cannot be sent)."""
         src = source if source is not None else FileSource(path)
         sender = FileSender(self.b, self._new_id, src, name or Path(path).name, target, self.cfg, request_id, overwrite,
-                            self.now, on_progress)
+                            self.now, on_progress, self.compress if compress is None else compress)
         sender.owns_source = source is None
         rate = self.scheduler.pacer.rate
         sender.byte_time = 1.0 / rate if rate else 0.0
@@ -254,8 +259,9 @@ class Endpoint:
         if self.senders.get(s.id) is s:
             del self.senders[s.id]
         self.scheduler.remove_source(getattr(s, "_pull", None))  # type: ignore[arg-type]
+        s.close()
         if s.owns_source:
-            s.source.close()
+            s.raw_source.close()
             s.owns_source = False
 
     def add_stream(self, stream: Any) -> None:
@@ -469,7 +475,11 @@ class Endpoint:
         del self._served[key]
         try:
             path, name = self._servable(bytes(part.name))
-            self.send_file(path, src, name=name, request_id=msg.request_id)
+            try:
+                small = os.stat(path).st_size <= SERVE_DEFLATE_MAX
+            except OSError:
+                small = False  # opening it says what is wrong
+            self.send_file(path, src, name=name, request_id=msg.request_id, compress=self.compress and small)
         except Refused as e:
             result = R.TT_FILE_RESULT_NOT_FOUND if e.code == "NOT_FOUND" else R.TT_FILE_RESULT_REQUEST_REFUSED
             self._refuse_request(src, msg.request_id, result, e.reason)

@@ -7,10 +7,16 @@ Transfers of the same file under the same name share one partial file (a sender 
 restarted self, or two senders of one file), so each one's bytes count for all. A status only
 ever reports bytes that were saved to disk before it was built, so whatever a sender learns
 survives a crash of the receiver.
+
+A deflated offer (TT_FILE_FLAGS_DEFLATE) is received as its zlib stream, resumed like any
+file, and inflated only when the stream is whole, bounded by the size offered (storage.py); an
+offer with a flag this receiver does not know is refused with REFUSED_UNSUPPORTED, the flag
+named in its reason.
 """
 
 from __future__ import annotations
 
+import errno
 from collections import OrderedDict
 from collections.abc import Callable
 from typing import Any
@@ -18,6 +24,7 @@ from typing import Any
 from ..wire.bindings import Bindings
 from ..wire.contract import TtFileFlags
 from ..wire.contract import TtFileResult as R
+from .deflate import InflateError, parse_deflate_meta
 from .names import SHA_LEN, Refused, check_name
 from .ranges import RangeSet
 from .storage import DiskFull, Partial, ReceiveDir, StorageError, partial_key
@@ -35,7 +42,9 @@ _REFUSAL = {
 }
 _EXPLAINED = {R.TT_FILE_RESULT_REFUSED_NAME, R.TT_FILE_RESULT_REFUSED_EXISTS, R.TT_FILE_RESULT_REFUSED_QUOTA,
               R.TT_FILE_RESULT_REFUSED_BUSY, R.TT_FILE_RESULT_FAILED_CHECKSUM, R.TT_FILE_RESULT_FAILED_DISK_FULL,
-              R.TT_FILE_RESULT_FAILED_IO}
+              R.TT_FILE_RESULT_FAILED_IO, R.TT_FILE_RESULT_REFUSED_UNSUPPORTED}
+DEFLATE = int(TtFileFlags.TT_FILE_FLAGS_DEFLATE)
+KNOWN_FLAGS = int(TtFileFlags.TT_FILE_FLAGS_OVERWRITE | TtFileFlags.TT_FILE_FLAGS_CANCEL) | DEFLATE
 
 
 class Incoming:
@@ -46,7 +55,8 @@ class Incoming:
         self.meta = bytearray()
         self.meta_have = RangeSet()
         self.meta_length = 0
-        self.size = 0
+        self.size = 0  # bytes on the link: the file's, or its zlib stream's
+        self.original: int | None = None  # the file's size, when a zlib stream of it is offered
         self.flags = 0
         self.request_id = 0
         self.name = ""
@@ -78,6 +88,17 @@ class Incoming:
         return f"{self.key[0]}/{self.key[1]}"
 
     @property
+    def offered_again(self) -> bool:
+        """Refused for what the offer carried (REFUSED_UNSUPPORTED: deflate, where the file as it
+        is was wanted): its sender offers the file again without it, under a new transfer id; a
+        download waits for that offer rather than failing."""
+        return self.result == R.TT_FILE_RESULT_REFUSED_UNSUPPORTED
+
+    @property
+    def file_size(self) -> int:
+        return self.size if self.original is None else self.original
+
+    @property
     def overwrite(self) -> bool:
         return bool(self.flags & TtFileFlags.TT_FILE_FLAGS_OVERWRITE)
 
@@ -88,7 +109,8 @@ class FileReceiver:
 
     def __init__(self, bindings: Bindings, store: ReceiveDir, sysid: int, compid: int,
                  config: TransferConfig | None = None, max_transfers: int = 8,
-                 on_event: Callable[[str, Incoming], None] | None = None, unsolicited: bool = True) -> None:
+                 on_event: Callable[[str, Incoming], None] | None = None, unsolicited: bool = True,
+                 inflate: bool = True) -> None:
         self.b = bindings
         self.store = store
         self.sysid = sysid
@@ -96,6 +118,7 @@ class FileReceiver:
         self.cfg = config or TransferConfig()
         self.max_transfers = max_transfers
         self.unsolicited = unsolicited
+        self.known_flags = KNOWN_FLAGS if inflate else KNOWN_FLAGS & ~DEFLATE
         self.transfers: dict[Key, Incoming] = {}
         self.groups: dict[str, tuple[Partial, set[Key]]] = {}  # partial key -> the partial, who shares it
         self.on_event = on_event
@@ -156,6 +179,17 @@ class FileReceiver:
         if t.meta_have.covers(0, t.meta_length):
             self._decide(t, now)
 
+    def _held_as_it_is(self, t: Incoming) -> int:
+        """Bytes held of the file a deflated offer carries, received as it is."""
+        assert t.original is not None
+        group = self.groups.get(partial_key(t.name, t.original, t.sha256))
+        if group is not None:
+            return group[0].ranges.total()
+        try:
+            return self.store.partial(t.name, t.original, t.sha256).ranges.total()
+        except (OSError, StorageError):
+            return 0
+
     def _forget_one(self) -> bool:
         """Room for one more: forget the transfer heard from least recently among those not
         receiving (finished, refused, waiting); False if every one is receiving."""
@@ -180,11 +214,22 @@ class FileReceiver:
         meta = bytes(t.meta)
         t.check = meta_check(meta)
         t.sha256 = meta[:SHA_LEN]
+        raw_name = meta[SHA_LEN:]
+        unknown = t.flags & ~self.known_flags
+        if unknown:
+            what = ": this receiver does not decompress" if unknown == DEFLATE else ""
+            return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_UNSUPPORTED,
+                                f"offer flags 0x{unknown:02x} not understood here{what}")
+        if t.flags & DEFLATE:
+            parsed = parse_deflate_meta(meta)
+            if parsed is None:
+                return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_NAME, "the deflate offer carries no name")
+            t.sha256, t.original, raw_name = parsed
         try:
-            t.name = meta[SHA_LEN:].decode("utf-8")
+            t.name = raw_name.decode("utf-8")
             check_name(t.name)
         except UnicodeDecodeError:
-            t.name = meta[SHA_LEN:].decode("utf-8", "replace")
+            t.name = raw_name.decode("utf-8", "replace")
             return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_NAME, "the name is not valid UTF-8")
         except Refused as e:
             return self._refuse(t, now, _REFUSAL[e.code], e.reason)
@@ -196,7 +241,12 @@ class FileReceiver:
                                     f"this end did not ask {t.who} for {t.name}")
         elif not self.unsolicited:
             return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_NAME, "this end takes only the files it asks for")
-        group = partial_key(t.name, t.size, t.sha256)
+        if t.original is not None and (held := self._held_as_it_is(t)):
+            # what arrived of the file sent as it is (an older sender, --no-compress) would be
+            # orphaned by its stream: the sender falls back to the file and resumes it
+            return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_UNSUPPORTED,
+                                f"{held} bytes of it as it is are here: send it uncompressed to resume")
+        group = partial_key(t.name, t.size, t.sha256, t.original)
         if group not in self.groups:
             for other in list(self.transfers.values()):
                 if other.partial is None or other.name != t.name or other is t:
@@ -209,7 +259,8 @@ class FileReceiver:
                 return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_BUSY,
                                     f"{self.max_transfers} transfers are running here")
             try:
-                already = self.store.admit(t.name, t.size, t.overwrite, t.sha256)
+                already = self.store.admit(t.name, t.file_size, t.overwrite, t.sha256,
+                                           stream=t.size if t.original is not None else 0)
             except Refused as e:
                 return self._refuse(t, now, _REFUSAL[e.code], e.reason)
             except (StorageError, OSError) as e:
@@ -220,7 +271,7 @@ class FileReceiver:
                 self._event("complete", t)
                 self._status_now(t, now)
                 return None
-            self.groups[group] = (self.store.partial(t.name, t.size, t.sha256), set())
+            self.groups[group] = (self.store.partial(t.name, t.size, t.sha256, t.original), set())
         partial, members = self.groups[group]
         members.add(t.key)
         t.group, t.partial = group, partial
@@ -326,7 +377,19 @@ class FileReceiver:
 
     def _complete(self, group: str, now: float) -> None:
         partial, members = self.groups[group]
-        if not partial.verify():
+        try:
+            verified = partial.verify()
+        except InflateError as e:
+            partial.discard()  # a whole stream that is not the file: no resume can use it
+            self._end_group(group, now, R.TT_FILE_RESULT_FAILED_CHECKSUM, str(e), keep=False)
+            return
+        except OSError as e:
+            full = e.errno in (errno.ENOSPC, errno.EDQUOT)
+            self._end_group(group, now, R.TT_FILE_RESULT_FAILED_DISK_FULL if full else R.TT_FILE_RESULT_FAILED_IO,
+                            f"{partial.name}: inflating: {e.strerror or e} (the stream is kept for a resume)",
+                            keep=True)
+            return
+        if not verified:
             partial.discard()
             self._end_group(group, now, R.TT_FILE_RESULT_FAILED_CHECKSUM,
                             "the SHA-256 of the bytes received differs from the offer's; they were discarded",

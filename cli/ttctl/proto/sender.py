@@ -4,6 +4,11 @@ The endpoint calls `control(now)` for offers, `next_data(now, space)` when the s
 room, `on_status(now, msg)` and `on_reason(now, msg)` on answers. A transfer ends exactly once:
 COMPLETE only on a status that carries its own transfer id and metadata check, anything else
 with a code and the receiver's reason when it gave one.
+
+With `compress`, a file that deflates well is offered as its zlib stream (deflate.py); a
+receiver that refuses that (REFUSED_UNSUPPORTED: it does not inflate; or, as receivers from
+before deflate do, the name the longer metadata makes; or a stream it could not inflate to the
+file) gets the file again, uncompressed, under a new transfer id: `fallback` says why.
 """
 
 from __future__ import annotations
@@ -14,6 +19,7 @@ from typing import Any
 from ..wire.bindings import Bindings
 from ..wire.contract import TtFileFlags
 from ..wire.contract import TtFileResult as R
+from .deflate import DeflatedSource, deflate_meta, deflated
 from .names import Refused, check_name, encoded
 from .ranges import RangeSet
 from .transfer import (
@@ -41,7 +47,8 @@ class FileSender:
 
     def __init__(self, bindings: Bindings, new_id: Callable[[], int], source: Any, name: str, target: tuple[int, int],
                  config: TransferConfig | None = None, request_id: int = 0, overwrite: bool = False,
-                 now: float = 0.0, on_progress: Callable[[FileSender], None] | None = None) -> None:
+                 now: float = 0.0, on_progress: Callable[[FileSender], None] | None = None,
+                 compress: bool | DeflatedSource = True) -> None:
         try:
             check_name(name)
         except Refused as e:
@@ -49,16 +56,19 @@ class FileSender:
         self.b = bindings
         self.new_id = new_id
         self.id = new_id()
-        self.source = source
+        self.raw_source = source  # the file
         self.owns_source = False  # the endpoint opened it, and closes it when the transfer is retired
         self.name = name
-        self.size = source.size
+        self.file_size = source.size
         self.target = target
         self.cfg = config or TransferConfig()
         self.request_id = request_id
-        self.flags = int(TtFileFlags.TT_FILE_FLAGS_OVERWRITE) if overwrite else 0
-        self.meta = source.sha256 + encoded(name)
-        self.check = meta_check(self.meta)
+        self._flags = int(TtFileFlags.TT_FILE_FLAGS_OVERWRITE) if overwrite else 0
+        self.fallback: str | None = None  # why a deflated offer went back to the file as it is
+        # compress: True decides here; a DeflatedSource of this file was decided before (the
+        # command line deflates before its link starts, so that a big file blocks nothing)
+        self._use(compress if isinstance(compress, DeflatedSource)
+                  else deflated(source, encoded(name)) if compress else None)
         self.result: TransferResult | None = None
         self.stats = TransferStats(started=now)
         self.on_progress = on_progress
@@ -93,6 +103,33 @@ class FileSender:
         self._since: dict[int, int] = {}  # offset -> sends since it was last known to be missing
         self._answers = 0
 
+    def _use(self, z: DeflatedSource | None) -> None:
+        """Offer the zlib stream `z`, or the file as it is (None)."""
+        self.deflated = z
+        self.source: Any = z if z is not None else self.raw_source
+        self.size = self.source.size  # bytes on the link: the file's, or its stream's
+        if z is not None:
+            self.flags = self._flags | int(TtFileFlags.TT_FILE_FLAGS_DEFLATE)
+            self.meta = deflate_meta(self.raw_source.sha256, self.file_size, encoded(self.name))
+        else:
+            self.flags = self._flags
+            self.meta = self.raw_source.sha256 + encoded(self.name)
+        self.check = meta_check(self.meta)
+
+    def _fall_back(self, now: float, why: str, count: bool = False) -> None:
+        """The receiver did not take the zlib stream: the file as it is, under a new id."""
+        self.fallback = why
+        if self.deflated is not None:
+            self.deflated.close()
+        self._use(None)
+        self._restart(now, count)
+        self.last_progress = now
+
+    def close(self) -> None:
+        """Release what the transfer made for itself (a large stream's temporary file)."""
+        if self.deflated is not None:
+            self.deflated.close()
+
     # -- progress -----------------------------------------------------------------------------
     @property
     def done(self) -> bool:
@@ -107,8 +144,9 @@ class FileSender:
             return
         self.state = "complete" if ok else "failed"
         self.stats.finished = now
-        self.result = TransferResult(ok, code, message, self.name, self.size, now - self.stats.started, self.stats,
-                                     nothing_sent)
+        self.result = TransferResult(ok, code, message, self.name, self.file_size, now - self.stats.started,
+                                     self.stats, nothing_sent, self.size if self.deflated is not None else None,
+                                     self.fallback)
         if self.on_progress:
             self.on_progress(self)
 
@@ -336,7 +374,7 @@ class FileSender:
             self.acked.add(0, self.size)
             nothing = self.stats.bytes_sent == 0 and self.size > 0
             how = "verified there (it had them already)" if nothing else "delivered and verified"
-            self._finish(now, True, "COMPLETE", f"{self.name}: {self.size} bytes {how}", nothing)
+            self._finish(now, True, "COMPLETE", f"{self.name}: {self.file_size} bytes {how}", nothing)
             return
         if code == R.TT_FILE_RESULT_UNKNOWN_TRANSFER:
             self.state = "offering"  # the receiver restarted: offer again, it resumes from disk
@@ -345,6 +383,13 @@ class FileSender:
         if code == R.TT_FILE_RESULT_REFUSED_BUSY:
             self.busy = self.busy or RESULT_TEXT["REFUSED_BUSY"]
             self.state = "offering"  # keep offering (with backoff) until there is room or time is up
+            return
+        if self.deflated is not None and code in (R.TT_FILE_RESULT_REFUSED_UNSUPPORTED, R.TT_FILE_RESULT_REFUSED_NAME,
+                                                  R.TT_FILE_RESULT_FAILED_CHECKSUM):
+            # it does not inflate, or (a receiver from before deflate) took the original size
+            # for part of the name, or the stream did not inflate to the file there
+            why = self.reason or RESULT_TEXT.get(result_name(code), "refused")
+            self._fall_back(now, why, count=code == R.TT_FILE_RESULT_FAILED_CHECKSUM)
             return
         if code == R.TT_FILE_RESULT_FAILED_CHECKSUM and self.stats.restarts < self.cfg.checksum_restarts \
                 and not self.source.changed():

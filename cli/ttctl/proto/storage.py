@@ -8,6 +8,10 @@ completion; and where sent files come from.
   already written, the key made of its SHA-256, name and size; only when every byte is there
   and the SHA-256 matches is it renamed to its name: never visible half-written, never
   silently overwriting (unless the directory allows it and the sender asks).
+- A deflated offer (TT_FILE_FLAGS_DEFLATE) is received the same way as its zlib stream (its
+  own partial, never shared with the file sent raw); when the stream is whole it is inflated
+  into `<key>.out`, bounded by the original size offered, and only that file, its SHA-256
+  checked, takes the name.
 - A full disk (ENOSPC/EDQUOT) stops the transfer with its partial state kept: offering the same
   file again resumes it.
 - One receiving process per directory (an advisory lock on it), so that two never write the
@@ -27,6 +31,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
+from .deflate import inflate_to
 from .names import PARTIAL_DIR, Refused, check_name, encoded
 from .ranges import RangeSet
 
@@ -72,23 +77,27 @@ def file_sha256(fd: int, size: int) -> tuple[bytes, int]:
     return h.digest(), pos
 
 
-def partial_key(name: str, size: int, sha256: bytes) -> str:
+def partial_key(name: str, size: int, sha256: bytes, original: int | None = None) -> str:
     """One partial file per (content, name): two transfers of one file under two names never
-    share a partial file, two of the same file under the same name always do."""
-    return f"{hashlib.sha256(sha256 + encoded(name)).hexdigest()[:40]}-{size}"
+    share a partial file, two of the same file under the same name always do (and the file and
+    its zlib stream, `original` being the file's size, never do)."""
+    key = f"{hashlib.sha256(sha256 + encoded(name)).hexdigest()[:40]}-{size}"
+    return key if original is None else f"{key}-z{original}"
 
 
 class Partial:
     """One file being received. Several transfers of the same file under the same name (a
     sender and its restarted self, say) share one Partial; FileReceiver sees to that."""
 
-    def __init__(self, store: ReceiveDir, name: str, size: int, sha256: bytes) -> None:
+    def __init__(self, store: ReceiveDir, name: str, size: int, sha256: bytes, original: int | None = None) -> None:
         self.store = store
         self.name = name
-        self.size = size
-        self.sha256 = sha256
-        self.key = partial_key(name, size, sha256)
+        self.size = size  # of what arrives: the file, or its zlib stream
+        self.sha256 = sha256  # of the file
+        self.original = original  # the file's size when what arrives is its zlib stream
+        self.key = partial_key(name, size, sha256, original)
         self.data_path = store.partial_dir / f"{self.key}.part"
+        self.out_path = store.partial_dir / f"{self.key}.out"  # the inflated file, before it takes its name
         self.state_path = store.partial_dir / f"{self.key}.json"
         self.ranges = RangeSet()
         self._unsaved = 0
@@ -102,7 +111,7 @@ class Partial:
         except (OSError, ValueError):
             return
         if not isinstance(state, dict) or state.get("name") != self.name or state.get("size") != self.size \
-                or state.get("sha256") != self.sha256.hex():
+                or state.get("sha256") != self.sha256.hex() or state.get("original") != self.original:
             return
         try:
             actual = self.data_path.stat().st_size
@@ -158,7 +167,7 @@ class Partial:
         self._unsaved = 0
 
     def _record(self) -> None:
-        state = {"name": self.name, "size": self.size, "sha256": self.sha256.hex(),
+        state = {"name": self.name, "size": self.size, "sha256": self.sha256.hex(), "original": self.original,
                  "ranges": self.ranges.to_list(), "updated": time.time()}
         text = json.dumps(state).encode()
         tmp = self.state_path.with_name(self.state_path.name + ".tmp")
@@ -188,6 +197,13 @@ class Partial:
             self._fd = None
 
     def verify(self) -> bool:
+        """Whether the bytes received are the file offered. A zlib stream is inflated into
+        `out_path` first (InflateError, with the reason, if it is not the file; OSError if it
+        cannot be written)."""
+        if self.original is not None:
+            os.fsync(self._open())
+            inflate_to(self._open(), self.size, self.out_path, self.original, self.sha256)
+            return True
         digest, got = file_sha256(self._open(), self.size)
         return got == self.size and digest == self.sha256
 
@@ -198,6 +214,8 @@ class Partial:
         os.fsync(fd)
         os.ftruncate(fd, self.size)
         self.close()
+        done = self.data_path if self.original is None else self.out_path
+        size = self.size if self.original is None else self.original
         final = self.store.final_path(self.name)
         self.store.check_parents(self.name)
         try:
@@ -206,20 +224,23 @@ class Partial:
             raise Refused("NAME", f"a parent of {self.name} is not a directory here") from None
         if overwrite:
             self.store.check_target(self.name, final, overwrite=True)
-            os.replace(self.data_path, final)
+            os.replace(done, final)
         else:
             try:
-                os.link(self.data_path, final)  # fails if the name exists: no silent overwrite
+                os.link(done, final)  # fails if the name exists: no silent overwrite
             except FileExistsError:
-                if not self.store.identical(final, self.size, self.sha256):
+                if not self.store.identical(final, size, self.sha256):
                     raise Refused("EXISTS", f"{self.name} appeared here while it was being received") from None
-            os.unlink(self.data_path)
+            os.unlink(done)
+        if done != self.data_path:
+            with contextlib.suppress(FileNotFoundError):
+                os.unlink(self.data_path)
         self.discard_state()
         return final
 
     def discard(self) -> None:
         self.close()
-        for p in (self.data_path, self.state_path):
+        for p in (self.data_path, self.state_path, self.out_path):
             with contextlib.suppress(FileNotFoundError):
                 p.unlink()
         self.ranges = RangeSet()
@@ -372,24 +393,28 @@ class ReceiveDir:
                     total += os.lstat(os.path.join(dirpath, f)).st_size
         return total
 
-    def admit(self, name: str, size: int, wants_overwrite: bool, sha256: bytes) -> bool:
+    def admit(self, name: str, size: int, wants_overwrite: bool, sha256: bytes, stream: int = 0) -> bool:
         """Check an offer. True if a file with this size and SHA-256 is there already under the
-        name (nothing to receive); False if it may be received; Refused otherwise."""
+        name (nothing to receive); False if it may be received; Refused otherwise. `stream`:
+        the size of the zlib stream a deflated offer sends (on disk beside the file while it
+        is inflated)."""
         q = self.quota
         check_name(name)
         final = self.final_path(name)
         self.check_parents(name)
         if size > q.max_file_bytes:
             raise Refused("QUOTA", f"{size} bytes exceed the per-file quota of {q.max_file_bytes} bytes")
+        if stream > q.max_file_bytes:  # a stream larger than its file: nothing a real deflater writes
+            raise Refused("QUOTA", f"a {stream}-byte stream exceeds the per-file quota of {q.max_file_bytes} bytes")
         if os.path.lexists(final) and self.identical(final, size, sha256):
             return True
         self.check_target(name, final, wants_overwrite)
-        if self.usage() + size > q.max_dir_bytes:
+        if self.usage() + size + stream > q.max_dir_bytes:
             raise Refused("QUOTA", f"the directory quota of {q.max_dir_bytes} bytes would be exceeded")
         return False
 
-    def partial(self, name: str, size: int, sha256: bytes) -> Partial:
-        return Partial(self, name, size, sha256)
+    def partial(self, name: str, size: int, sha256: bytes, original: int | None = None) -> Partial:
+        return Partial(self, name, size, sha256, original)
 
 
 class FileSource:

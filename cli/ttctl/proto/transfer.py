@@ -18,7 +18,8 @@ Protocol (messages of dialects/ttapi.xml):
    what it has: everything below an offset, and up to 7 missing ranges above it. The sender
    repeats confirmed-missing ranges before new data; a retransmission is never repeated within
    an RTT.
-4. When every byte is there the receiver checks the SHA-256 and renames the file into place,
+4. When every byte is there the receiver checks the SHA-256 (of the inflated file, when the
+   offer was TT_FILE_FLAGS_DEFLATE: see deflate.py) and renames the file into place,
    then reports COMPLETE (and repeats that to any late offer or data of that transfer). A
    SHA-256 mismatch discards the data; the sender starts again under a new id (twice at most).
 """
@@ -93,6 +94,8 @@ class TransferResult:
     seconds: float
     stats: TransferStats = field(default_factory=TransferStats)
     nothing_sent: bool = False  # the receiver had every byte already (an identical file, or a whole partial)
+    deflated: int | None = None  # the zlib stream's size, when the file went deflated
+    fallback: str | None = None  # why a deflated offer went back to the file as it is
 
 
 def result_name(value: int) -> str:
@@ -161,5 +164,6 @@ RESULT_TEXT = {
     "NOT_FOUND": "no such file there",
     "REQUEST_REFUSED": "the peer does not serve that file",
     "CANCELLED": "cancelled",
+    "REFUSED_UNSUPPORTED": "the receiver does not understand the offer's flags",
 }
 

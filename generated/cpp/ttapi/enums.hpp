@@ -4173,6 +4173,14 @@ enum class TtFileFlags : std::uint8_t {
     TT_FILE_FLAGS_OVERWRITE = 1,
     /// The sender abandons this transfer; the receiver keeps its partial state for a later resume.
     TT_FILE_FLAGS_CANCEL = 2,
+    /// The offered bytes are a zlib stream (RFC 1950) of the file: size counts the stream's bytes
+    /// (what TT_FILE_DATA carries and TT_FILE_STATUS ranges count), and the metadata blob is the
+    /// original file's SHA-256 (32 bytes), its size (uint32, little-endian), then its UTF-8 name
+    /// (at most 219 bytes). The receiver inflates the whole stream, at most to that size, and
+    /// checks the SHA-256 on the inflated bytes before the file takes its name. A receiver that
+    /// does not inflate refuses the offer with REFUSED_UNSUPPORTED, and the sender offers the file
+    /// again uncompressed under a new transfer id.
+    TT_FILE_FLAGS_DEFLATE = 4,
 };
 
 template <>
@@ -4211,6 +4219,10 @@ enum class TtFileResult : std::uint8_t {
     /// Answer to a TT_FILE_REQUEST (transfer_id = its request_id): the peer does not serve that
     /// name.
     TT_FILE_RESULT_REQUEST_REFUSED = 12,
+    /// The offer carries a flag this receiver does not understand (e.g. DEFLATE at a receiver that
+    /// does not inflate); the TT_FILE_REASON names it. The sender may offer again without it, under
+    /// a new transfer id.
+    TT_FILE_RESULT_REFUSED_UNSUPPORTED = 13,
 };
 
 /// GNSS fix status (ROS sensor_msgs/NavSatStatus, shifted by one to stay unsigned).

@@ -17767,10 +17767,11 @@ struct HygrometerSensor {
 
 /// TT_FILE_OFFER (id 50000): [sender: any] [runtime] Offer a file to the receiver, or answer a
 /// TT_FILE_REQUEST. The metadata blob is the file's 32-byte SHA-256 followed by its UTF-8 name (at
-/// most 223 bytes); it is sent in parts (meta_offset, up to 71 bytes each), each part repeating the
-/// other fields. The receiver answers with TT_FILE_STATUS; no file data is sent before it accepts.
-/// Offering a file whose partial state the receiver kept (same name, size and SHA-256) resumes it,
-/// whatever its transfer id was.
+/// most 223 bytes; with TT_FILE_FLAGS_DEFLATE the original size comes between them); it is sent in
+/// parts (meta_offset, up to 71 bytes each), each part repeating the other fields. The receiver
+/// answers with TT_FILE_STATUS; no file data is sent before it accepts. Offering a file whose
+/// partial state the receiver kept (same name, size and SHA-256) resumes it, whatever its transfer
+/// id was.
 struct TtFileOffer {
     static constexpr std::uint32_t MSG_ID = 50000;
     static constexpr std::uint8_t CRC_EXTRA = 88;
@@ -17792,13 +17793,14 @@ struct TtFileOffer {
     /// The TT_FILE_REQUEST (its request_id) this answers, 0 if unsolicited.
     std::uint32_t request_id{};
 
-    /// File size. [bytes]
+    /// File size (with TT_FILE_FLAGS_DEFLATE: the zlib stream's size). [bytes]
     std::uint32_t size{};
 
     /// Offer flags. (enum TtFileFlags)
     std::uint8_t flags{};
 
-    /// Length of the whole metadata blob (32 + name length). [bytes]
+    /// Length of the whole metadata blob (32 + name length; 36 + name length with
+    /// TT_FILE_FLAGS_DEFLATE). [bytes]
     std::uint8_t meta_length{};
 
     /// Offset of this part in the metadata blob. [bytes]

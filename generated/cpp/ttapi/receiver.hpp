@@ -221,6 +221,7 @@ private:
         case TtFileResult::TT_FILE_RESULT_FAILED_CHECKSUM:
         case TtFileResult::TT_FILE_RESULT_FAILED_DISK_FULL:
         case TtFileResult::TT_FILE_RESULT_FAILED_IO:
+        case TtFileResult::TT_FILE_RESULT_REFUSED_UNSUPPORTED:
             return true;
         default:
             return false;

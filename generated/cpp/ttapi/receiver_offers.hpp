@@ -103,6 +103,23 @@ inline void FileReceiver::decide(int at, double now)
     Incoming& t = tr(at);
     t.decided = true;
     t.check = meta_check(t.meta, t.meta_length);
+    // a flag this receiver does not know (DEFLATE: it does not inflate) is refused in words
+    // naming it; the sender offers again without it
+    const auto deflate = static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_DEFLATE);
+    const auto known = static_cast<std::uint8_t>(static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_OVERWRITE)
+                                                 | static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_CANCEL));
+    const auto unknown = static_cast<std::uint8_t>(t.flags & static_cast<std::uint8_t>(~known));
+    if (unknown != 0) {
+        static constexpr char hex[] = "0123456789abcdef";
+        const char code[4] = {'0', 'x', hex[unknown >> 4], hex[unknown & 0x0F]};
+        Words text;
+        text << "offer flags " << std::string_view(code, 4) << " not understood here";
+        if (unknown == deflate) {
+            text << ": this receiver does not decompress";
+        }
+        refuse(t, now, TtFileResult::TT_FILE_RESULT_REFUSED_UNSUPPORTED, text.view());
+        return;
+    }
     Words why;
     const std::string_view name = t.name();
     if (name_problem(name, why)) {

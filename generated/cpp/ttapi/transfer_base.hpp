@@ -175,6 +175,8 @@ inline const char* result_name(std::uint8_t value) noexcept
         return "NOT_FOUND";
     case TtFileResult::TT_FILE_RESULT_REQUEST_REFUSED:
         return "REQUEST_REFUSED";
+    case TtFileResult::TT_FILE_RESULT_REFUSED_UNSUPPORTED:
+        return "REFUSED_UNSUPPORTED";
     }
     return "RESULT_?";
 }
@@ -203,6 +205,8 @@ inline const char* result_text(std::uint8_t value) noexcept
         return "the peer does not serve that file";
     case TtFileResult::TT_FILE_RESULT_CANCELLED:
         return "cancelled";
+    case TtFileResult::TT_FILE_RESULT_REFUSED_UNSUPPORTED:
+        return "the receiver does not understand the offer's flags";
     default:
         return "refused";
     }

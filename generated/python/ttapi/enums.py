@@ -3678,6 +3678,8 @@ class TtFileFlags(IntFlag):
     """Replace an existing file of the same name (the receiver may still refuse)."""
     TT_FILE_FLAGS_CANCEL = 2
     """The sender abandons this transfer; the receiver keeps its partial state for a later resume."""
+    TT_FILE_FLAGS_DEFLATE = 4
+    """The offered bytes are a zlib stream (RFC 1950) of the file: size counts the stream's bytes (what TT_FILE_DATA carries and TT_FILE_STATUS ranges count), and the metadata blob is the original file's SHA-256 (32 bytes), its size (uint32, little-endian), then its UTF-8 name (at most 219 bytes). The receiver inflates the whole stream, at most to that size, and checks the SHA-256 on the inflated bytes before the file takes its name. A receiver that does not inflate refuses the offer with REFUSED_UNSUPPORTED, and the sender offers the file again uncompressed under a new transfer id."""
 
 
 class TtFileResult(IntEnum):
@@ -3709,6 +3711,8 @@ class TtFileResult(IntEnum):
     """Answer to a TT_FILE_REQUEST (transfer_id = its request_id): no such file."""
     TT_FILE_RESULT_REQUEST_REFUSED = 12
     """Answer to a TT_FILE_REQUEST (transfer_id = its request_id): the peer does not serve that name."""
+    TT_FILE_RESULT_REFUSED_UNSUPPORTED = 13
+    """The offer carries a flag this receiver does not understand (e.g. DEFLATE at a receiver that does not inflate); the TT_FILE_REASON names it. The sender may offer again without it, under a new transfer id."""
 
 
 class TtFixType(IntEnum):

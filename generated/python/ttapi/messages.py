@@ -19803,7 +19803,7 @@ class HygrometerSensor(Message):
 
 
 class TtFileOffer(Message):
-    """TT_FILE_OFFER (id 50000): [sender: any] [runtime] Offer a file to the receiver, or answer a TT_FILE_REQUEST. The metadata blob is the file's 32-byte SHA-256 followed by its UTF-8 name (at most 223 bytes); it is sent in parts (meta_offset, up to 71 bytes each), each part repeating the other fields. The receiver answers with TT_FILE_STATUS; no file data is sent before it accepts. Offering a file whose partial state the receiver kept (same name, size and SHA-256) resumes it, whatever its transfer id was."""
+    """TT_FILE_OFFER (id 50000): [sender: any] [runtime] Offer a file to the receiver, or answer a TT_FILE_REQUEST. The metadata blob is the file's 32-byte SHA-256 followed by its UTF-8 name (at most 223 bytes; with TT_FILE_FLAGS_DEFLATE the original size comes between them); it is sent in parts (meta_offset, up to 71 bytes each), each part repeating the other fields. The receiver answers with TT_FILE_STATUS; no file data is sent before it accepts. Offering a file whose partial state the receiver kept (same name, size and SHA-256) resumes it, whatever its transfer id was."""
 
     __slots__ = ("flags", "meta", "meta_length", "meta_offset", "request_id", "size", "target_component", "target_system", "transfer_id",)
     MSG_ID: ClassVar[int] = 50000
@@ -19831,13 +19831,13 @@ class TtFileOffer(Message):
     """The TT_FILE_REQUEST (its request_id) this answers, 0 if unsolicited."""
 
     size: int
-    """File size. [bytes]"""
+    """File size (with TT_FILE_FLAGS_DEFLATE: the zlib stream's size). [bytes]"""
 
     flags: int
     """Offer flags. (enum TtFileFlags)"""
 
     meta_length: int
-    """Length of the whole metadata blob (32 + name length). [bytes]"""
+    """Length of the whole metadata blob (32 + name length; 36 + name length with TT_FILE_FLAGS_DEFLATE). [bytes]"""
 
     meta_offset: int
     """Offset of this part in the metadata blob. [bytes]"""

@@ -379,9 +379,9 @@ class TabletSession:
             if req.error is not None:
                 return False, req.error
             for obj, what in list(self._file_events.items()):
-                if getattr(obj, "request_id", None) == req.id:
+                if getattr(obj, "request_id", None) == req.id and not obj.offered_again:
                     if what == "file-complete":
-                        return True, f"{name}: {obj.size} bytes received -> {obj.final_path}"
+                        return True, f"{name}: {obj.file_size} bytes received -> {obj.final_path}"
                     if what in ("file-refused", "file-failed"):
                         return False, obj.reason
             await self.changed(0.25)

@@ -14,13 +14,24 @@ public final class TtFileFlags {
      * The sender abandons this transfer; the receiver keeps its partial state for a later resume.
      */
     public static final int TT_FILE_FLAGS_CANCEL = 2;
+    /**
+     * The offered bytes are a zlib stream (RFC 1950) of the file: size counts the stream's bytes
+     * (what TT_FILE_DATA carries and TT_FILE_STATUS ranges count), and the metadata blob is the
+     * original file's SHA-256 (32 bytes), its size (uint32, little-endian), then its UTF-8 name (at
+     * most 219 bytes). The receiver inflates the whole stream, at most to that size, and checks the
+     * SHA-256 on the inflated bytes before the file takes its name. A receiver that does not
+     * inflate refuses the offer with REFUSED_UNSUPPORTED, and the sender offers the file again
+     * uncompressed under a new transfer id.
+     */
+    public static final int TT_FILE_FLAGS_DEFLATE = 4;
 
     private static final long[] ENTRY_VALUES = {
-        1, 2,
+        1, 2, 4,
     };
     private static final String[] ENTRY_NAMES = {
         "TT_FILE_FLAGS_OVERWRITE",
         "TT_FILE_FLAGS_CANCEL",
+        "TT_FILE_FLAGS_DEFLATE",
     };
 
     private TtFileFlags() {

@@ -46,10 +46,16 @@ public final class TtFileResult {
      * name.
      */
     public static final int TT_FILE_RESULT_REQUEST_REFUSED = 12;
+    /**
+     * The offer carries a flag this receiver does not understand (e.g. DEFLATE at a receiver that
+     * does not inflate); the TT_FILE_REASON names it. The sender may offer again without it, under
+     * a new transfer id.
+     */
+    public static final int TT_FILE_RESULT_REFUSED_UNSUPPORTED = 13;
 
     private static final long[] ENTRY_VALUES = {
         0, 1, 2, 3, 4, 5, 6, 7,
-        8, 9, 10, 11, 12,
+        8, 9, 10, 11, 12, 13,
     };
     private static final String[] ENTRY_NAMES = {
         "TT_FILE_RESULT_IN_PROGRESS",
@@ -65,6 +71,7 @@ public final class TtFileResult {
         "TT_FILE_RESULT_UNKNOWN_TRANSFER",
         "TT_FILE_RESULT_NOT_FOUND",
         "TT_FILE_RESULT_REQUEST_REFUSED",
+        "TT_FILE_RESULT_REFUSED_UNSUPPORTED",
     };
 
     private TtFileResult() {

@@ -8,10 +8,11 @@ import ttctl.ttapi.runtime.Wire;
 /**
  * TT_FILE_OFFER (id 50000): [sender: any] [runtime] Offer a file to the receiver, or answer a
  * TT_FILE_REQUEST. The metadata blob is the file's 32-byte SHA-256 followed by its UTF-8 name (at
- * most 223 bytes); it is sent in parts (meta_offset, up to 71 bytes each), each part repeating the
- * other fields. The receiver answers with TT_FILE_STATUS; no file data is sent before it accepts.
- * Offering a file whose partial state the receiver kept (same name, size and SHA-256) resumes it,
- * whatever its transfer id was.
+ * most 223 bytes; with TT_FILE_FLAGS_DEFLATE the original size comes between them); it is sent in
+ * parts (meta_offset, up to 71 bytes each), each part repeating the other fields. The receiver
+ * answers with TT_FILE_STATUS; no file data is sent before it accepts. Offering a file whose
+ * partial state the receiver kept (same name, size and SHA-256) resumes it, whatever its transfer
+ * id was.
  * <p>
  * Fields are public, named as in the XML, in XML order; their Java types follow the mapping in
  * {@link MavlinkMessage}: int8_t byte, uint8_t int, int16_t short, uint16_t int, int32_t int,
@@ -44,13 +45,16 @@ public final class TtFileOffer extends MavlinkMessage {
     /** The TT_FILE_REQUEST (its request_id) this answers, 0 if unsolicited. (uint32_t) */
     public long request_id;
 
-    /** File size. [bytes] (uint32_t) */
+    /** File size (with TT_FILE_FLAGS_DEFLATE: the zlib stream's size). [bytes] (uint32_t) */
     public long size;
 
     /** Offer flags. (uint8_t; enum {@link ttctl.ttapi.enums.TtFileFlags}) */
     public int flags;
 
-    /** Length of the whole metadata blob (32 + name length). [bytes] (uint8_t) */
+    /**
+     * Length of the whole metadata blob (32 + name length; 36 + name length with
+     * TT_FILE_FLAGS_DEFLATE). [bytes] (uint8_t)
+     */
     public int meta_length;
 
     /** Offset of this part in the metadata blob. [bytes] (uint8_t) */

@@ -155,6 +155,14 @@ final class FileFetch {
                         + (incoming.identical ? "already here (the same SHA-256)" : "received and verified"));
                 return out;
             }
+            if (r == TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED) {
+                // the offer carried what this end cannot take (deflate): the peer offers the file
+                // again as it is, under a new transfer id, for the same request
+                incoming = null;
+                lastProgress = now;
+                due = now + interval;
+                return out;
+            }
             if (r != TtFileResult.TT_FILE_RESULT_IN_PROGRESS && r != TtFileResult.TT_FILE_RESULT_REFUSED_BUSY) {
                 String why = incoming.reason.isEmpty() ? Names.resultText(Names.resultName(r), "failed") : incoming.reason;
                 finish(now, false, Names.resultName(r).equals("FAILED_IO") ? "LOCAL_IO" : Names.resultName(r),

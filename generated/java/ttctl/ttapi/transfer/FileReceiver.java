@@ -306,6 +306,11 @@ final class FileReceiver {
         t.decided = true;
         byte[] meta = t.meta;
         t.check = Names.metaCheck(meta);
+        String unsupported = Names.unknownFlags(t.flags);  // the sender offers again without them
+        if (unsupported != null) {
+            refuse(t, now, TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED, unsupported);
+            return;
+        }
         t.sha256 = Arrays.copyOf(meta, Math.min(Names.SHA_LEN, meta.length));
         byte[] rawName = Arrays.copyOfRange(meta, Math.min(Names.SHA_LEN, meta.length), meta.length);
         String name = Names.strictUtf8(rawName);
@@ -655,7 +660,8 @@ final class FileReceiver {
                 || result == TtFileResult.TT_FILE_RESULT_REFUSED_QUOTA || result == TtFileResult.TT_FILE_RESULT_REFUSED_BUSY
                 || result == TtFileResult.TT_FILE_RESULT_FAILED_CHECKSUM
                 || result == TtFileResult.TT_FILE_RESULT_FAILED_DISK_FULL || result == TtFileResult.TT_FILE_RESULT_FAILED_IO
-                || result == TtFileResult.TT_FILE_RESULT_CANCELLED;
+                || result == TtFileResult.TT_FILE_RESULT_CANCELLED
+                || result == TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED;
     }
 
     /**

@@ -10,6 +10,7 @@ import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.util.Locale;
 
+import ttctl.ttapi.enums.TtFileFlags;
 import ttctl.ttapi.enums.TtFileResult;
 
 /**
@@ -133,6 +134,20 @@ public final class Names {
         return v == 0 ? 1 : v;
     }
 
+    /**
+     * Why an offer's flags are refused here, in words naming the flags this receiver does not know
+     * (DEFLATE: it does not inflate); null if it knows them all.
+     */
+    static String unknownFlags(int flags) {
+        int unknown = flags & 0xFF & ~(TtFileFlags.TT_FILE_FLAGS_OVERWRITE | TtFileFlags.TT_FILE_FLAGS_CANCEL);
+        if (unknown == 0) {
+            return null;
+        }
+        String text = "offer flags 0x" + (unknown < 16 ? "0" : "") + Integer.toHexString(unknown)
+                + " not understood here";
+        return unknown == TtFileFlags.TT_FILE_FLAGS_DEFLATE ? text + ": this receiver does not decompress" : text;
+    }
+
     /** A TT_FILE_RESULT value's name without the prefix (COMPLETE, REFUSED_EXISTS...). */
     public static String resultName(int value) {
         String n = TtFileResult.name(value);
@@ -163,6 +178,8 @@ public final class Names {
             return "the peer does not serve that file";
         } else if ("CANCELLED".equals(code)) {
             return "cancelled";
+        } else if ("REFUSED_UNSUPPORTED".equals(code)) {
+            return "the receiver does not understand the offer's flags";
         }
         return otherwise;
     }
