@@ -83,7 +83,10 @@ EDITS = [
 
 
 def gxx(*args: str) -> None:
-    proc = subprocess.run(["g++", *args], capture_output=True, text=True, timeout=600)
+    """g++ with `args`; a program (not -fsyntax-only) is linked with zlib (the runtime's
+    deflate.hpp inflates with it)."""
+    link = [] if "-fsyntax-only" in args or "-c" in args else ["-lz"]
+    proc = subprocess.run(["g++", *args, *link], capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stderr[-5000:]
 
 

@@ -298,7 +298,7 @@ inline void Node::file_event(FileEvent what, const Incoming& t, const char* fina
     e.sysid = t.sysid;
     e.compid = t.compid;
     e.name = t.name();
-    e.size = t.size;
+    e.size = t.file_size();
     e.reason = std::string_view(t.reason);
     e.path = final_path;
     e.seconds = (t.finished ? t.finished_at : now_) - t.started;

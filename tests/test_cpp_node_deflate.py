@@ -1,0 +1,225 @@
+"""Deflate at the generated C++ onboard end (templates/cpp/deflate.hpp.j2): real onboard_node
+processes (tests/cpp_node_lib.py) against ttctl's Python ends.
+
+- receiving: `ttctl send-file` of text (it deflates by default) to the node, through the m100
+  relay at 10 % loss, arrives as the file, the stream counted on the link; killed mid-transfer
+  and restarted, the node resumes the stream from its partial file;
+- hostile streams sent frame by frame to the node under the sanitizers (a bomb declaring a small
+  size, corrupt bytes, a stream that inflates to less, a stream over the quota, a deflate offer
+  without a name): each refused with the words ttctl's Python receiver uses, nothing under the
+  final name, nothing kept;
+- built with TTCTL_NO_ZLIB, the node refuses deflated offers in words (REFUSED_UNSUPPORTED):
+  `ttctl send-file` then sends the file as it is.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import random
+import subprocess
+import time
+import zlib
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+import ttapi
+from cpp_node_lib import PROGRAM, WARN, Raw, generate, needs_gxx, sha
+from e2e_lib import LOCAL, Start, free_port, relay, send
+from ttctl.bench.textfiles import flight_log_csv, mission_yaml
+
+pytestmark = needs_gxx
+
+R = ttapi.TtFileResult
+DEFLATE = int(ttapi.TtFileFlags.TT_FILE_FLAGS_DEFLATE)
+
+
+def finals(folder: Path) -> list[str]:
+    """Files under their final names (not the partial folder)."""
+    return sorted(str(p.relative_to(folder)) for p in folder.rglob("*")
+                  if p.is_file() and ".ttctl-partial" not in p.parts)
+
+
+def leftovers(folder: Path) -> list[str]:
+    part = folder / ".ttctl-partial"
+    return sorted(p.name for p in part.iterdir()) if part.exists() else []
+
+
+# -- receiving what ttctl send-file deflates ------------------------------------------------------
+
+def test_text_goes_deflated_to_the_node_through_the_m100_relay(cpp_node_bins: dict[str, Path], tmp_path: Path,
+                                                              start: Start, cpp_nodes: Any) -> None:
+    log = tmp_path / "flight.csv"
+    log.write_bytes(flight_log_csv(seconds=60))
+    inbox = tmp_path / "inbox"
+    b = free_port()
+    node = cpp_nodes(cpp_node_bins["plain"], tmp_path, "node", "--listen", f"udpin:{LOCAL}:{b}", "--inbox",
+                     str(inbox), "--rate", "8000")
+    a = free_port()
+    relay(start, a, b, "--profile", "m100", "--rate", "8000", "--loss", "0.1", "--seed", "5", "--stats-interval", "0")
+    proc, r = send(str(log), "--to", f"udpout:{LOCAL}:{a}", "--rate", "8000", "--timeout", "30", timeout=120)
+    assert proc.returncode == 0 and r["ok"], proc.stderr
+    size = log.stat().st_size
+    assert r["deflate_fallback"] is None and r["deflated_bytes"] is not None and r["deflated_bytes"] < size / 3, r
+    assert sha(inbox / "flight.csv") == sha(log)
+    assert finals(inbox) == ["flight.csv"] and leftovers(inbox) == []
+    done = node.wait_event("complete", name="flight.csv")
+    assert done["bytes"] == size, done  # the file's size, not the stream's
+    stats = node.stop()
+    assert stats["files_received"] == 1 and stats["files_refused"] == 0, stats
+
+
+def test_the_node_killed_mid_deflated_upload_resumes_the_stream(cpp_node_bins: dict[str, Path], tmp_path: Path,
+                                                              start: Start, cpp_nodes: Any) -> None:
+    """The node is SIGKILLed once part of the stream is in its partial file; restarted, it
+    resumes from there (the record names the file's size as `original`), and the file that
+    takes the name is the file."""
+    log = tmp_path / "flight.csv"
+    log.write_bytes(flight_log_csv(seconds=120))
+    inbox = tmp_path / "inbox"
+    b = free_port()
+    args = ("--listen", f"udpin:{LOCAL}:{b}", "--inbox", str(inbox), "--rate", "4000")
+    node = cpp_nodes(cpp_node_bins["plain"], tmp_path, "node", *args)
+    sender = start("send", "send-file", str(log), "--to", f"udpout:{LOCAL}:{b}", "--rate", "4000", "--timeout", "60",
+                   "--json")
+    had = stream_held(inbox, 8000)
+    node.kill()
+    node = cpp_nodes(cpp_node_bins["plain"], tmp_path, "node2", *args)
+    assert sender.wait(90) == 0, sender.stderr
+    r = json.loads(sender.stdout)
+    assert r["ok"] and r["deflated_bytes"] is not None and r["deflate_fallback"] is None, r
+    assert sha(inbox / "flight.csv") == sha(log)
+    accepted = node.wait_event("accepted", name="flight.csv")
+    assert accepted["resumed_bytes"] >= had, accepted
+    assert finals(inbox) == ["flight.csv"] and leftovers(inbox) == []
+    node.stop()
+
+
+def stream_held(inbox: Path, least: int, timeout: float = 30.0) -> int:
+    """Bytes of a zlib stream (a partial whose key ends in -z<size>) the record says arrived,
+    once at least `least`."""
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        for rec in (inbox / ".ttctl-partial").glob("*-z*.json"):
+            try:
+                state = json.loads(rec.read_text())
+            except (OSError, ValueError):
+                continue
+            assert isinstance(state["original"], int), state
+            held = sum(b - a for a, b in state["ranges"])
+            if held >= least:
+                return held
+        time.sleep(0.02)
+    raise AssertionError(f"no partial stream of {least} bytes")
+
+
+# -- hostile streams, frame by frame --------------------------------------------------------------
+
+class Hostile:
+    """Offers a zlib stream to the node with metadata of its choosing, sends every byte, and
+    gathers the node's answers."""
+
+    def __init__(self, port: int) -> None:
+        self.raw = Raw(port)
+        self.tid = 7000
+
+    def offer(self, stream: bytes, original: bytes, declared: int, name: bytes = b"x.txt") -> tuple[int, str]:
+        """(final result, reason) of offering `stream` as the deflated file `original` declared
+        at `declared` bytes."""
+        self.tid += 1
+        tid = self.tid
+        meta = hashlib.sha256(original).digest() + declared.to_bytes(4, "little") + name
+        self.raw.frames(*[ttapi.TtFileOffer(target_system=1, target_component=240, transfer_id=tid, size=len(stream),
+                                            flags=DEFLATE, meta_length=len(meta), meta_offset=off,
+                                            meta=meta[off:off + 71]) for off in range(0, len(meta), 71)])
+        got = self._until(tid, lambda m: True)
+        first = next(m for m in got if isinstance(m, ttapi.TtFileStatus) and m.transfer_id == tid)
+        if first.result == R.TT_FILE_RESULT_IN_PROGRESS:
+            for off in range(0, len(stream), 80):
+                self.raw.frames(ttapi.TtFileData(transfer_id=tid, offset=off, data=stream[off:off + 80]))
+            got = self._until(tid, lambda m: m.result != R.TT_FILE_RESULT_IN_PROGRESS)
+        final = [m for m in got if isinstance(m, ttapi.TtFileStatus) and m.transfer_id == tid][-1]
+        reasons = [m.text for m in got if isinstance(m, ttapi.TtFileReason) and m.transfer_id == tid]
+        return final.result, reasons[-1] if reasons else ""
+
+    def _until(self, tid: int, done: Any) -> list[Any]:
+        return self.raw.collect(10.0, until=lambda ms: any(
+            isinstance(m, ttapi.TtFileStatus) and m.transfer_id == tid and done(m) for m in ms))
+
+
+def test_hostile_streams_are_stopped_and_refused_in_words(cpp_node_bins: dict[str, Path], tmp_path: Path,
+                                                         cpp_nodes: Any) -> None:
+    """Under ASan/UBSan: each is refused with the Python receiver's words (proto/deflate.py),
+    nothing under the final name and nothing kept (no resume can use a stream that is not the
+    file), and the node then takes a good stream."""
+    inbox = tmp_path / "inbox"
+    node = cpp_nodes(cpp_node_bins["asan"], tmp_path, "node", "--listen", f"udpin:{LOCAL}:0", "--inbox", str(inbox),
+                     "--max-file", "100000")
+    h = Hostile(node.port)
+    try:
+        big = b"\0" * (1 << 20)  # a 1 MiB bomb declared as 4096 bytes: stopped at the 4097th
+        assert h.offer(zlib.compress(big, 9), big[:4096], 4096) == (
+            R.TT_FILE_RESULT_FAILED_CHECKSUM, "the stream inflates to more than the 4096 bytes offered")
+        assert finals(inbox) == [] and leftovers(inbox) == []
+        text = mission_yaml()
+        corrupt = bytearray(zlib.compress(text, 6))
+        corrupt[len(corrupt) // 2] ^= 0xFF
+        code, why = h.offer(bytes(corrupt), text, len(text))
+        assert code == R.TT_FILE_RESULT_FAILED_CHECKSUM and (why.startswith("the stream") or "SHA-256" in why), why
+        less = f"the stream inflates to {len(text) - 100} bytes, not the {len(text)} offered"
+        assert h.offer(zlib.compress(text[:-100], 6), text, len(text)) == (R.TT_FILE_RESULT_FAILED_CHECKSUM, less)
+        short = zlib.compress(text, 6)
+        assert h.offer(short[:-10], text, len(text))[0] == R.TT_FILE_RESULT_FAILED_CHECKSUM
+        assert h.offer(b"not zlib at all" * 20, text, len(text)) == (
+            R.TT_FILE_RESULT_FAILED_CHECKSUM, "the stream does not inflate (incorrect header check)")
+        assert h.offer(short + b"tail", text, len(text)) == (
+            R.TT_FILE_RESULT_FAILED_CHECKSUM, "the stream has bytes after its end")
+        assert finals(inbox) == [] and leftovers(inbox) == []
+        # refused at the offer, before any data: a stream over the per-file quota, no name
+        assert h.offer(random.Random(1).randbytes(150_000), b"tiny", 4) == (
+            R.TT_FILE_RESULT_REFUSED_QUOTA, "a 150000-byte stream exceeds the per-file quota of 100000 bytes")
+        assert h.offer(zlib.compress(big, 9), big, len(big))[0] == R.TT_FILE_RESULT_REFUSED_QUOTA
+        assert h.offer(short, text, len(text), name=b"") == (
+            R.TT_FILE_RESULT_REFUSED_NAME, "the deflate offer carries no name")
+        # and a good stream still goes in
+        assert h.offer(short, text, len(text), name=b"m.yaml") == (R.TT_FILE_RESULT_COMPLETE, "")
+        assert (inbox / "m.yaml").read_bytes() == text
+        assert finals(inbox) == ["m.yaml"] and leftovers(inbox) == []
+    finally:
+        h.raw.close()
+    node.stop()
+
+
+# -- without zlib ---------------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def nozlib_node(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """onboard_node built with -DTTCTL_NO_ZLIB and without -lz: the runtime needs no zlib."""
+    tmp = tmp_path_factory.mktemp("nozlib")
+    exe = tmp / "onboard_node_nozlib"
+    proc = subprocess.run(["g++", *WARN, "-O0", "-DTTCTL_NO_ZLIB", *generate(tmp), str(PROGRAM), "-o", str(exe)],
+                          capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stderr[-5000:]
+    return exe
+
+
+REFUSAL = "offer flags 0x04 not understood here: this receiver does not decompress"
+
+
+def test_without_zlib_the_node_refuses_deflate_and_the_sender_falls_back(nozlib_node: Path, tmp_path: Path,
+                                                                        cpp_nodes: Any) -> None:
+    text = tmp_path / "mission.yaml"
+    text.write_bytes(mission_yaml())
+    inbox = tmp_path / "inbox"
+    node = cpp_nodes(nozlib_node, tmp_path, "node", "--listen", f"udpin:{LOCAL}:0", "--inbox", str(inbox))
+    proc, r = send(str(text), "--to", f"udpout:{LOCAL}:{node.port}", "--rate", "8000", timeout=60)
+    assert proc.returncode == 0 and r["ok"], proc.stderr
+    assert r["deflate_fallback"] == REFUSAL and r["deflated_bytes"] is None, r
+    assert sha(inbox / "mission.yaml") == sha(text)
+    refused = node.events("refused")
+    assert len(refused) == 1 and refused[0]["reason"] == REFUSAL, refused
+    assert finals(inbox) == ["mission.yaml"]
+    node.stop()
+
