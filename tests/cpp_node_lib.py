@@ -21,6 +21,8 @@ The tests, by topic:
   several at once, an upload from the node;
 - test_cpp_node_hostile.py: garbage, strangers, signing, and hostile input under the
   sanitizers.
+- test_cpp_node_deflate.py: deflated transfers both ways against ttctl's Python ends, hostile
+  streams, and the node built without zlib (TTCTL_NO_ZLIB).
 """
 
 from __future__ import annotations

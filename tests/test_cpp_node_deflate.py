@@ -8,8 +8,11 @@ processes (tests/cpp_node_lib.py) against ttctl's Python ends.
   size, corrupt bytes, a stream that inflates to less, a stream over the quota, a deflate offer
   without a name): each refused with the words ttctl's Python receiver uses, nothing under the
   final name, nothing kept;
+- sending: the node's uploads (Node::send_file) to `ttctl recv-file` through the m100 relay go
+  deflated when the file compresses (its stream counted by both ends), as they are when it
+  does not (random bytes);
 - built with TTCTL_NO_ZLIB, the node refuses deflated offers in words (REFUSED_UNSUPPORTED):
-  `ttctl send-file` then sends the file as it is.
+  `ttctl send-file` and a deflating C++ node then send the file as it is.
 """
 
 from __future__ import annotations
@@ -26,8 +29,8 @@ from typing import Any
 import pytest
 
 import ttapi
-from cpp_node_lib import PROGRAM, WARN, Raw, generate, needs_gxx, sha
-from e2e_lib import LOCAL, Start, free_port, relay, send
+from cpp_node_lib import PROGRAM, WARN, Raw, generate, needs_gxx, sha, write
+from e2e_lib import LOCAL, Start, free_port, receiver, relay, send
 from ttctl.bench.textfiles import flight_log_csv, mission_yaml
 
 pytestmark = needs_gxx
@@ -71,11 +74,13 @@ def test_text_goes_deflated_to_the_node_through_the_m100_relay(cpp_node_bins: di
     assert stats["files_received"] == 1 and stats["files_refused"] == 0, stats
 
 
+@pytest.mark.parametrize("then", ["cpp", "python"])
 def test_the_node_killed_mid_deflated_upload_resumes_the_stream(cpp_node_bins: dict[str, Path], tmp_path: Path,
-                                                              start: Start, cpp_nodes: Any) -> None:
-    """The node is SIGKILLed once part of the stream is in its partial file; restarted, it
-    resumes from there (the record names the file's size as `original`), and the file that
-    takes the name is the file."""
+                                                              start: Start, cpp_nodes: Any, then: str) -> None:
+    """The node is SIGKILLed once part of the stream is in its partial file; restarted (or
+    `ttctl recv-file` started on the same folder: the partial and its record are the same
+    format), it resumes from there (the record names the file's size as `original`), and the
+    file that takes the name is the file."""
     log = tmp_path / "flight.csv"
     log.write_bytes(flight_log_csv(seconds=120))
     inbox = tmp_path / "inbox"
@@ -86,15 +91,21 @@ def test_the_node_killed_mid_deflated_upload_resumes_the_stream(cpp_node_bins: d
                    "--json")
     had = stream_held(inbox, 8000)
     node.kill()
-    node = cpp_nodes(cpp_node_bins["plain"], tmp_path, "node2", *args)
+    if then == "cpp":
+        node = cpp_nodes(cpp_node_bins["plain"], tmp_path, "node2", *args)
+    else:
+        py = receiver(start, tmp_path, f"udpin:{LOCAL}:{b}", "--rate", "4000", "--json")
     assert sender.wait(90) == 0, sender.stderr
     r = json.loads(sender.stdout)
     assert r["ok"] and r["deflated_bytes"] is not None and r["deflate_fallback"] is None, r
     assert sha(inbox / "flight.csv") == sha(log)
-    accepted = node.wait_event("accepted", name="flight.csv")
+    if then == "cpp":
+        accepted = node.wait_event("accepted", name="flight.csv")
+        node.stop()
+    else:
+        accepted = next(json.loads(line) for line in py.stdout.splitlines() if '"accepted"' in line)
     assert accepted["resumed_bytes"] >= had, accepted
     assert finals(inbox) == ["flight.csv"] and leftovers(inbox) == []
-    node.stop()
 
 
 def stream_held(inbox: Path, least: int, timeout: float = 30.0) -> int:
@@ -113,6 +124,66 @@ def stream_held(inbox: Path, least: int, timeout: float = 30.0) -> int:
                 return held
         time.sleep(0.02)
     raise AssertionError(f"no partial stream of {least} bytes")
+
+
+# -- sending: the node's uploads ------------------------------------------------------------------
+
+@pytest.mark.parametrize("kind", ["text", "random"])
+def test_the_node_uploads_deflated_what_compresses(cpp_node_bins: dict[str, Path], tmp_path: Path, start: Start,
+                                                   cpp_nodes: Any, kind: str) -> None:
+    """Node::send_file to `ttctl recv-file` through the m100 relay at 10 % loss: a CSV log goes
+    as its zlib stream (under a third of the file on the link) and arrives as the file; random
+    bytes go as they are."""
+    if kind == "text":
+        src = tmp_path / "flight.csv"
+        src.write_bytes(flight_log_csv(seconds=60))
+    else:
+        src = write(tmp_path / "noise.bin", 20_000, 31)
+    size = src.stat().st_size
+    b = free_port()
+    rx = receiver(start, tmp_path, f"udpin:{LOCAL}:{b}", "--rate", "8000", "--json")
+    a = free_port()
+    relay(start, a, b, "--profile", "m100", "--rate", "8000", "--loss", "0.1", "--seed", "9", "--stats-interval", "0")
+    node = cpp_nodes(cpp_node_bins["plain"], tmp_path, "node", "--to", f"udpout:{LOCAL}:{a}", "--sysid", "2", "--rate",
+                     "8000", "--send", str(src), "--send-to", "1/240")
+    sent = node.wait_event("sent", 60)
+    assert sent["ok"] and sent["code"] == "COMPLETE", sent
+    assert sent["message"] == f"{src.name}: {size} bytes delivered and verified", sent
+    assert sent["deflate_fallback"] is None, sent
+    rx.wait_for('"event": "complete"', 10, where="stdout")
+    assert sha(tmp_path / "inbox" / src.name) == sha(src)
+    if kind == "text":
+        assert 0 < sent["deflated_bytes"] < size / 3, sent
+        assert sent["bytes_sent"] < size / 2, sent  # what moved is the stream
+        assert f'"deflated_bytes": {sent["deflated_bytes"]}' in rx.stdout, rx.stdout
+    else:
+        assert sent["deflated_bytes"] == 0 and sent["bytes_sent"] >= size, sent
+    node.stop()
+
+
+def test_a_fetch_from_the_node_comes_deflated(cpp_node_bins: dict[str, Path], tmp_path: Path, start: Start,
+                                              cpp_nodes: Any) -> None:
+    """`ttctl send-file --from` the node's serve folder through the m100 relay: the node serves
+    the CSV log as its zlib stream, and the file that arrives is the file."""
+    serve = tmp_path / "serve"
+    serve.mkdir()
+    (serve / "flight.csv").write_bytes(flight_log_csv(seconds=60))
+    size = (serve / "flight.csv").stat().st_size
+    b = free_port()
+    node = cpp_nodes(cpp_node_bins["plain"], tmp_path, "node", "--listen", f"udpin:{LOCAL}:{b}", "--serve", str(serve),
+                     "--rate", "8000")
+    a = free_port()
+    relay(start, a, b, "--profile", "m100", "--rate", "8000", "--loss", "0.1", "--seed", "6", "--stats-interval", "0")
+    got = tmp_path / "got"
+    got.mkdir()
+    proc, r = send("flight.csv", "--from", f"udpout:{LOCAL}:{a}", "--dir", str(got), "--rate", "8000", "--timeout",
+                   "30", timeout=120)
+    assert proc.returncode == 0 and r["ok"], proc.stderr
+    assert r["deflated_bytes"] is not None and r["deflated_bytes"] < size / 3, r
+    assert sha(got / "flight.csv") == sha(serve / "flight.csv")
+    served = node.wait_event("served", name="flight.csv")
+    assert served["bytes"] == size, served
+    node.stop()
 
 
 # -- hostile streams, frame by frame --------------------------------------------------------------
@@ -223,3 +294,21 @@ def test_without_zlib_the_node_refuses_deflate_and_the_sender_falls_back(nozlib_
     assert finals(inbox) == ["mission.yaml"]
     node.stop()
 
+
+def test_a_deflating_node_falls_back_to_the_file_at_a_node_without_zlib(cpp_node_bins: dict[str, Path],
+                                                                        nozlib_node: Path, tmp_path: Path,
+                                                                        cpp_nodes: Any) -> None:
+    """C++ to C++: the receiver built with TTCTL_NO_ZLIB refuses the stream in words; the
+    sender offers the file as it is under a new id and says why."""
+    src = tmp_path / "mission.yaml"
+    src.write_bytes(mission_yaml())
+    inbox = tmp_path / "inbox"
+    rx = cpp_nodes(nozlib_node, tmp_path, "rx", "--listen", f"udpin:{LOCAL}:0", "--inbox", str(inbox))
+    tx = cpp_nodes(cpp_node_bins["plain"], tmp_path, "tx", "--to", f"udpout:{LOCAL}:{rx.port}", "--sysid", "2",
+                   "--send", str(src), "--send-to", "1/240")
+    sent = tx.wait_event("sent", 30)
+    assert sent["ok"] and sent["deflate_fallback"] == REFUSAL and sent["deflated_bytes"] == 0, sent
+    assert sha(inbox / "mission.yaml") == sha(src)
+    assert [e["reason"] for e in rx.events("refused")] == [REFUSAL]
+    tx.stop()
+    rx.stop()

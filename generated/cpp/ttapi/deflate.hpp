@@ -4,7 +4,10 @@
 // deflated offer's bytes are a zlib stream (RFC 1950) of the file; the receiver keeps the stream
 // in its partial file like any data (so it resumes the same way) and, once the stream is whole,
 // inflates it into `<key>.out` beside it, never writing more than the size offered, and checks
-// the SHA-256 of the inflated bytes before the file takes its name (partial.hpp).
+// the SHA-256 of the inflated bytes before the file takes its name (partial.hpp). A sender
+// (DeflatedStream) offers a file's stream instead of the file when that saves, by ttctl's rules
+// (proto/deflate.py): a 64 KiB sample must shrink below 0.9, the whole stream below 0.97 of the
+// file; level 6, so the same file always gives the same stream and a restarted sender resumes.
 //
 // zlib is optional: link with -lz. Define TTCTL_NO_ZLIB (or build where <zlib.h> is missing)
 // and the runtime needs no zlib: its receiver then refuses deflated offers with
@@ -53,6 +56,18 @@ inline constexpr bool INFLATES = TTCTL_ZLIB != 0;
 
 /// A deflate offer's metadata: the file's SHA-256, its size (uint32 little-endian), its name.
 inline constexpr std::size_t DEFLATE_META = SHA_LEN + 4;
+
+/// What a sender deflates, and how (ttctl's proto/deflate.py: the same rules everywhere).
+struct DeflateRules {
+    static constexpr int LEVEL = 6;  // zlib's default: the same stream for the same file
+    static constexpr std::size_t SAMPLE = 64 * 1024;  // deflated first, to decide
+    static constexpr double SAMPLE_RATIO = 0.9;  // the sample must shrink below this
+    static constexpr double KEEP_RATIO = 0.97;  // the whole stream must be below this fraction of the file
+    static constexpr std::uint64_t MIN_FILE = 200;  // two packets: less has nothing to win
+    static constexpr std::size_t MAX_NAME = MAX_NAME_BYTES - 4;  // 219: a longer name goes as it is
+    // deflating runs on the node's loop (commands wait meanwhile): larger files go as they are
+    static constexpr std::uint64_t MAX_FILE = std::uint64_t{16} << 20;
+};
 
 /// What inflate_to() made of a stream: the file offered (`ok`), a stream that is not it
 /// (`bad`, the inflater's words: no resume can use it), or a disk that could not take it (`io`,
@@ -189,6 +204,170 @@ inline Inflated inflate_to(int src_fd, std::uint64_t stream_size, const char* de
     return result;
 }
 #endif
+
+/// The zlib stream of a file, in an unnamed temporary file (TMPDIR, else /tmp), read by offset
+/// like the file itself. make() decides whether the file is worth it.
+class DeflatedStream {
+public:
+    DeflatedStream() noexcept = default;
+    DeflatedStream(const DeflatedStream&) = delete;
+    DeflatedStream& operator=(const DeflatedStream&) = delete;
+    ~DeflatedStream() { close(); }
+
+    bool active() const noexcept { return fd_ >= 0; }
+    std::uint64_t size() const noexcept { return size_; }
+
+    /// Deflate `src` (a FileSource: size(), read()) sent under a name of `name_len` bytes; false
+    /// (nothing kept) when that would not save, or cannot be done here (no zlib, no room).
+    template <class Source>
+    bool make(const Source& src, std::size_t name_len) noexcept
+    {
+        close();
+#if TTCTL_ZLIB
+        const std::uint64_t n = src.size();
+        if (name_len > DeflateRules::MAX_NAME || n < DeflateRules::MIN_FILE || n > DeflateRules::MAX_FILE) {
+            return false;
+        }
+        const std::uint64_t sample = std::min<std::uint64_t>(DeflateRules::SAMPLE, n);
+        std::uint64_t out = 0;
+        if (!run(src, sample, ~std::uint64_t{0}, -1, out)
+            || static_cast<double>(out) >= DeflateRules::SAMPLE_RATIO * static_cast<double>(sample)) {
+            return false;
+        }
+        const int fd = temporary();
+        if (fd < 0) {
+            return false;  // no room for the stream: the file goes as it is
+        }
+        const auto limit = static_cast<std::uint64_t>(DeflateRules::KEEP_RATIO * static_cast<double>(n));
+        if (!run(src, n, limit, fd, out)) {
+            ::close(fd);
+            return false;
+        }
+        fd_ = fd;
+        size_ = out;
+        return true;
+#else
+        (void)src;
+        (void)name_len;
+        return false;
+#endif
+    }
+
+    /// Up to `n` bytes of the stream at `offset`; how many were read.
+    std::size_t read(std::uint64_t offset, std::uint8_t* out, std::size_t n) const noexcept
+    {
+        std::size_t done = 0;
+        while (done < n) {
+            const ssize_t r = ::pread(fd_, out + done, n - done, static_cast<off_t>(offset + done));
+            if (r < 0 && errno == EINTR) {
+                continue;
+            }
+            if (r <= 0) {
+                break;
+            }
+            done += static_cast<std::size_t>(r);
+        }
+        return done;
+    }
+
+    void close() noexcept
+    {
+        if (fd_ >= 0) {
+            ::close(fd_);
+            fd_ = -1;
+        }
+        size_ = 0;
+    }
+
+private:
+#if TTCTL_ZLIB
+    static int temporary() noexcept
+    {
+        const char* dir = std::getenv("TMPDIR");
+        if (dir == nullptr || *dir == '\0') {
+            dir = "/tmp";
+        }
+#ifdef O_TMPFILE
+        const int fd = ::open(dir, O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+        if (fd >= 0) {
+            return fd;
+        }
+#endif
+        char path[PATH_MAX];
+        const int k = std::snprintf(path, sizeof path, "%s/ttctl-deflate-XXXXXX", dir);
+        if (k < 0 || static_cast<std::size_t>(k) >= sizeof path) {
+            return -1;
+        }
+        const int fd2 = ::mkstemp(path);
+        if (fd2 >= 0) {
+            ::unlink(path);  // unnamed: gone with the descriptor
+        }
+        return fd2;
+    }
+
+    // Deflate the first `n` bytes of `src`, writing the stream to `fd` (-1: only count it),
+    // its size in `out`; false if it reaches `limit` bytes, or on an error.
+    template <class Source>
+    static bool run(const Source& src, std::uint64_t n, std::uint64_t limit, int fd, std::uint64_t& out) noexcept
+    {
+        z_stream zs;
+        std::memset(&zs, 0, sizeof zs);
+        if (deflateInit(&zs, DeflateRules::LEVEL) != Z_OK) {
+            return false;
+        }
+        static constexpr std::size_t CHUNK = 16 * 1024;
+        std::uint8_t in[CHUNK];
+        std::uint8_t buf[CHUNK];
+        std::uint64_t pos = 0;
+        out = 0;
+        bool ok = true;
+        for (bool last = false; ok && !last;) {
+            const std::size_t want = static_cast<std::size_t>(std::min<std::uint64_t>(CHUNK, n - pos));
+            if (want != 0 && src.read(pos, in, want) != want) {
+                ok = false;  // the file shrank: it goes as it is (the receiver's check says the rest)
+                break;
+            }
+            pos += want;
+            last = pos >= n;
+            zs.next_in = in;
+            zs.avail_in = static_cast<uInt>(want);
+            int rc = Z_OK;
+            do {
+                zs.next_out = buf;
+                zs.avail_out = static_cast<uInt>(CHUNK);
+                rc = ::deflate(&zs, last ? Z_FINISH : Z_NO_FLUSH);
+                if (rc == Z_STREAM_ERROR) {
+                    ok = false;
+                    break;
+                }
+                const std::size_t got = CHUNK - zs.avail_out;
+                out += got;
+                if (out >= limit) {
+                    ok = false;
+                    break;
+                }
+                std::size_t done = 0;
+                while (fd >= 0 && done < got) {
+                    const ssize_t w = ::pwrite(fd, buf + done, got - done, static_cast<off_t>(out - got + done));
+                    if (w < 0 && errno == EINTR) {
+                        continue;
+                    }
+                    if (w <= 0) {
+                        ok = false;
+                        break;
+                    }
+                    done += static_cast<std::size_t>(w);
+                }
+            } while (ok && (zs.avail_out == 0 || (last && rc != Z_STREAM_END)));
+        }
+        ::deflateEnd(&zs);
+        return ok;
+    }
+#endif
+
+    int fd_ = -1;
+    std::uint64_t size_ = 0;
+};
 
 }  // namespace ttapi::link
 

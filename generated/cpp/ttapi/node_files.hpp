@@ -41,7 +41,7 @@ inline bool Node::send_file(const char* path, std::string_view name, std::uint8_
         e.sysid = sysid;
         e.compid = compid;
         e.name = s->name();
-        e.size = s->size();
+        e.size = s->file_size();
         events_(e);
     }
     return true;
@@ -270,7 +270,7 @@ inline void Node::sender_finished(const FileSender& s)
         e.sysid = s.target_sysid();
         e.compid = s.target_compid();
         e.name = s.name();
-        e.size = s.size();
+        e.size = s.file_size();
         e.seconds = r.seconds;
         e.reason = r.message.view();
         events_(e);
