@@ -3,14 +3,15 @@ processes (tests/cpp_node_lib.py) against ttctl's Python ends.
 
 - receiving: `ttctl send-file` of text (it deflates by default) to the node, through the m100
   relay at 10 % loss, arrives as the file, the stream counted on the link; killed mid-transfer
-  and restarted, the node resumes the stream from its partial file;
+  and restarted, the node (or recv-file on its folder) resumes the stream from its partial file;
 - hostile streams sent frame by frame to the node under the sanitizers (a bomb declaring a small
   size, corrupt bytes, a stream that inflates to less, a stream over the quota, a deflate offer
   without a name): each refused with the words ttctl's Python receiver uses, nothing under the
   final name, nothing kept;
 - sending: the node's uploads (Node::send_file) to `ttctl recv-file` through the m100 relay go
   deflated when the file compresses (its stream counted by both ends), as they are when it
-  does not (random bytes);
+  does not (random bytes); a sending node killed and started again resumes (the same stream);
+  a fetch from the node's serve folder comes deflated;
 - built with TTCTL_NO_ZLIB, the node refuses deflated offers in words (REFUSED_UNSUPPORTED):
   `ttctl send-file` and a deflating C++ node then send the file as it is.
 """
@@ -158,6 +159,31 @@ def test_the_node_uploads_deflated_what_compresses(cpp_node_bins: dict[str, Path
         assert f'"deflated_bytes": {sent["deflated_bytes"]}' in rx.stdout, rx.stdout
     else:
         assert sent["deflated_bytes"] == 0 and sent["bytes_sent"] >= size, sent
+    node.stop()
+
+
+def test_the_node_killed_mid_deflated_upload_resumes_when_it_sends_again(cpp_node_bins: dict[str, Path],
+                                                                        tmp_path: Path, start: Start,
+                                                                        cpp_nodes: Any) -> None:
+    """The sending node SIGKILLed half way through a deflated upload to `ttctl recv-file`, then
+    started again with the same file: it deflates it to the same stream, so recv-file resumes
+    its partial stream and only the rest is sent."""
+    src = tmp_path / "flight.csv"
+    src.write_bytes(flight_log_csv(seconds=120))
+    b = free_port()
+    rx = receiver(start, tmp_path, f"udpin:{LOCAL}:{b}", "--rate", "4000", "--json")
+    args = ("--to", f"udpout:{LOCAL}:{b}", "--sysid", "2", "--rate", "4000", "--send", str(src), "--send-to", "1/240")
+    node = cpp_nodes(cpp_node_bins["plain"], tmp_path, "node", *args)
+    had = stream_held(tmp_path / "inbox", 8000)
+    node.kill()
+    node = cpp_nodes(cpp_node_bins["plain"], tmp_path, "node2", *args)
+    sent = node.wait_event("sent", 60)
+    assert sent["ok"] and sent["deflated_bytes"] > 0, sent
+    assert sent["bytes_sent"] <= sent["deflated_bytes"] - had + 4000, sent
+    rx.wait_for('"event": "complete"', 10, where="stdout")
+    assert sha(tmp_path / "inbox" / "flight.csv") == sha(src)
+    accepted = [json.loads(line) for line in rx.stdout.splitlines() if '"accepted"' in line]
+    assert len(accepted) == 2 and accepted[1]["resumed_bytes"] >= had, accepted
     node.stop()
 
 
