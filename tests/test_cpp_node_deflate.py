@@ -222,14 +222,15 @@ class Hostile:
         self.raw = Raw(port)
         self.tid = 7000
 
-    def offer(self, stream: bytes, original: bytes, declared: int, name: bytes = b"x.txt") -> tuple[int, str]:
+    def offer(self, stream: bytes, original: bytes, declared: int, name: bytes = b"x.txt",
+              flags: int = DEFLATE) -> tuple[int, str]:
         """(final result, reason) of offering `stream` as the deflated file `original` declared
         at `declared` bytes."""
         self.tid += 1
         tid = self.tid
         meta = hashlib.sha256(original).digest() + declared.to_bytes(4, "little") + name
         self.raw.frames(*[ttapi.TtFileOffer(target_system=1, target_component=240, transfer_id=tid, size=len(stream),
-                                            flags=DEFLATE, meta_length=len(meta), meta_offset=off,
+                                            flags=flags, meta_length=len(meta), meta_offset=off,
                                             meta=meta[off:off + 71]) for off in range(0, len(meta), 71)])
         got = self._until(tid, lambda m: True)
         first = next(m for m in got if isinstance(m, ttapi.TtFileStatus) and m.transfer_id == tid)
@@ -280,6 +281,9 @@ def test_hostile_streams_are_stopped_and_refused_in_words(cpp_node_bins: dict[st
         assert h.offer(zlib.compress(big, 9), big, len(big))[0] == R.TT_FILE_RESULT_REFUSED_QUOTA
         assert h.offer(short, text, len(text), name=b"") == (
             R.TT_FILE_RESULT_REFUSED_NAME, "the deflate offer carries no name")
+        # a flag this node does not know, beside DEFLATE: refused naming it
+        assert h.offer(short, text, len(text), name=b"m.yaml", flags=DEFLATE | 0x40) == (
+            R.TT_FILE_RESULT_REFUSED_UNSUPPORTED, "offer flags 0x40 not understood here")
         # and a good stream still goes in
         assert h.offer(short, text, len(text), name=b"m.yaml") == (R.TT_FILE_RESULT_COMPLETE, "")
         assert (inbox / "m.yaml").read_bytes() == text
