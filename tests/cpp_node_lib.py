@@ -22,6 +22,8 @@ The tests, by topic:
   several at once, an upload from the node;
 - test_cpp_node_hostile.py: garbage, strangers, signing, and hostile input under the
   sanitizers.
+- test_cpp_node_deflate.py: deflated transfers both ways against ttctl's Python ends, hostile
+  streams, and the node built without zlib (TTCTL_NO_ZLIB).
 """
 
 from __future__ import annotations
@@ -94,7 +96,10 @@ EDITS = [
 
 
 def gxx(*args: str) -> None:
-    proc = subprocess.run(["g++", *args], capture_output=True, text=True, timeout=600)
+    """g++ with `args`; a program (not -fsyntax-only) is linked with zlib (the runtime's
+    deflate.hpp inflates with it)."""
+    link = [] if "-fsyntax-only" in args or "-c" in args else ["-lz"]
+    proc = subprocess.run(["g++", *args, *link], capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stderr[-5000:]
 
 

@@ -1,5 +1,6 @@
-"""A deflating `ttctl send-file` against the receivers that do not inflate yet (the generated C++
-onboard node and the Java FileTransfers inbox): each refuses the DEFLATE offer with
+"""A deflating `ttctl send-file` against the receivers that do not inflate yet (the Java
+FileTransfers inbox; the generated C++ onboard node built with TTCTL_NO_ZLIB is in
+test_cpp_node_deflate.py): each refuses the DEFLATE offer with
 REFUSED_UNSUPPORTED in words naming the flag, and the sender offers the file again as it is
 and completes; the receiver holds the file, nothing else."""
 
@@ -7,32 +8,14 @@ from __future__ import annotations
 
 import shutil
 from pathlib import Path
-from typing import Any
 
 import pytest
 
-from cpp_node_lib import needs_gxx, sha
-from e2e_lib import LOCAL, Start, send
+from cpp_node_lib import sha
+from e2e_lib import LOCAL, Start
 from ttctl.bench.textfiles import mission_yaml
 
 REFUSAL = "offer flags 0x04 not understood here: this receiver does not decompress"
-
-
-@needs_gxx
-def test_the_cpp_node_refuses_deflate_and_the_sender_falls_back(cpp_node_bins: dict[str, Path], tmp_path: Path,
-                                                                 cpp_nodes: Any) -> None:
-    text = tmp_path / "mission.yaml"
-    text.write_bytes(mission_yaml())
-    inbox = tmp_path / "inbox"
-    node = cpp_nodes(cpp_node_bins["plain"], tmp_path, "node", "--listen", f"udpin:{LOCAL}:0", "--inbox", str(inbox))
-    proc, r = send(str(text), "--to", f"udpout:{LOCAL}:{node.port}", "--rate", "8000", timeout=60)
-    assert proc.returncode == 0 and r["ok"], proc.stderr
-    assert r["deflate_fallback"] == REFUSAL and r["deflated_bytes"] is None, r
-    assert sha(inbox / "mission.yaml") == sha(text)
-    refused = node.events("refused")
-    assert len(refused) == 1 and refused[0]["reason"] == REFUSAL, refused
-    assert sorted(p.name for p in inbox.iterdir() if p.is_file()) == ["mission.yaml"]
-    node.stop()
 
 
 @pytest.mark.skipif(shutil.which("javac") is None or shutil.which("java") is None, reason="needs a JDK")

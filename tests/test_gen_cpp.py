@@ -96,7 +96,7 @@ int main()
 }}
 """)
     exe = tree["tmp"] / "plugin_main"
-    gxx(*WARN, "-O0", "-I", str(cpp), str(main), "-o", str(exe))
+    gxx(*WARN, "-O0", "-I", str(cpp), str(main), "-o", str(exe), "-lz")  # the node inflates with zlib
     assert subprocess.run([str(exe)], timeout=30).returncode == 0
     text = plugin.read_text()
     for m in expected:

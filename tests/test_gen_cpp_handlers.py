@@ -152,7 +152,7 @@ def test_handlers_reply_and_commands_run_once_through_the_node(skeleton: Path, t
     main = tmp_path / "main.cpp"
     main.write_text(MAIN)
     exe = tmp_path / "handlers"
-    build = subprocess.run(["g++", *WARN, "-O1", "-I", str(skeleton / "cpp"), str(main), "-o", str(exe)],
+    build = subprocess.run(["g++", *WARN, "-O1", "-I", str(skeleton / "cpp"), str(main), "-o", str(exe), "-lz"],
                            capture_output=True, text=True, timeout=600)
     assert build.returncode == 0, build.stderr[-5000:]
     cmd = ttapi.TtActionCommand(target_system=1, target_component=191, command_id=4242,

@@ -255,7 +255,7 @@ def test_cpp_namespace_builds_and_runs(tmp_path: Path) -> None:
     main = tmp_path / "main.cpp"
     main.write_text(CPP_MAIN)
     exe, conf = tmp_path / "main", tmp_path / "conformance"
-    jobs = [subprocess.Popen(["g++", *WARN, "-O0", "-I", str(cpp), str(src), "-o", str(dst)],
+    jobs = [subprocess.Popen(["g++", *WARN, "-O0", "-I", str(cpp), str(src), "-o", str(dst), "-lz"],
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
             for src, dst in ((main, exe), (cpp / "conformance.cpp", conf))]
     for job in jobs:

@@ -81,8 +81,8 @@ def built(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     exes = {"main": tmp / "main", "laptop": tmp / "laptop"}
     with ThreadPoolExecutor(max_workers=2) as pool:
         jobs = [pool.submit(gxx, *WARN, "-O1", *inc, "-I", str(FAKE_OSDK), str(tmp / "main.cpp"), "-pthread", "-o",
-                            str(exes["main"])),
-                pool.submit(gxx, *WARN, "-O1", *inc, str(tmp / "laptop.cpp"), "-o", str(exes["laptop"]))]
+                            str(exes["main"]), "-lz"),
+                pool.submit(gxx, *WARN, "-O1", *inc, str(tmp / "laptop.cpp"), "-o", str(exes["laptop"]), "-lz")]
         for job in jobs:
             job.result()
     return exes

@@ -41,7 +41,7 @@ inline bool Node::send_file(const char* path, std::string_view name, std::uint8_
         e.sysid = sysid;
         e.compid = compid;
         e.name = s->name();
-        e.size = s->size();
+        e.size = s->file_size();
         events_(e);
     }
     return true;
@@ -270,7 +270,7 @@ inline void Node::sender_finished(const FileSender& s)
         e.sysid = s.target_sysid();
         e.compid = s.target_compid();
         e.name = s.name();
-        e.size = s.size();
+        e.size = s.file_size();
         e.seconds = r.seconds;
         e.reason = r.message.view();
         events_(e);
@@ -298,7 +298,7 @@ inline void Node::file_event(FileEvent what, const Incoming& t, const char* fina
     e.sysid = t.sysid;
     e.compid = t.compid;
     e.name = t.name();
-    e.size = t.size;
+    e.size = t.file_size();
     e.reason = std::string_view(t.reason);
     e.path = final_path;
     e.seconds = (t.finished ? t.finished_at : now_) - t.started;

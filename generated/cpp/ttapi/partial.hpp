@@ -4,7 +4,9 @@
 // data in `.ttctl-partial/<key>.part` inside the receive folder (receive_dir.hpp), beside a JSON
 // record of the byte ranges written, `<key>.json`: the very files ttctl's Python receiver keeps, so
 // that either resumes the other's partial file. The record is rewritten after the data it
-// describes was synced; a verified file appears under its name whole or not at all.
+// describes was synced; a verified file appears under its name whole or not at all. A deflated
+// offer's zlib stream is received the same way (its own partial, key ending in `-z<size>`), then
+// inflated into `<key>.out` (deflate.hpp), and only that file, checked, takes the name.
 #ifndef TTCTL_TTAPI_PARTIAL_HPP
 #define TTCTL_TTAPI_PARTIAL_HPP
 
@@ -22,6 +24,7 @@
 #include <cstring>
 #include <ctime>
 
+#include "deflate.hpp"
 #include "json.hpp"
 #include "posix_files.hpp"
 #include "ranges.hpp"
@@ -56,14 +59,17 @@ public:
     ~Partial() { close(); }
 
     /// Start on (name, size, sha256) in `store`, loading a record left by an earlier run.
+    /// `deflated`: what arrives is a zlib stream of `size` bytes of the file of `original` bytes.
     void open(ReceiveDir& store, const char* name, std::size_t name_len, std::uint64_t size,
-              const std::uint8_t sha256[SHA_LEN]) noexcept;
+              const std::uint8_t sha256[SHA_LEN], bool zlib_stream = false, std::uint64_t file_bytes = 0) noexcept;
 
     const char* key() const noexcept { return key_; }
     const char* name() const noexcept { return name_; }
     std::uint64_t size() const noexcept { return size_; }
     const std::uint8_t* sha256() const noexcept { return sha_; }
     bool resumed() const noexcept { return resumed_; }
+    bool deflated() const noexcept { return deflated_; }
+    std::uint64_t original() const noexcept { return original_; }
     const RangeSet<TransferLimits::FILE_RANGES>& ranges() const noexcept { return ranges_; }
 
     bool complete() const noexcept { return size_ == 0 || ranges_.covers(0, size_); }
@@ -78,6 +84,11 @@ public:
 
     /// Whether the file's bytes have the offer's SHA-256.
     bool verify() noexcept;
+
+#if TTCTL_ZLIB
+    /// A deflated partial's whole stream inflated into `<key>.out`, checked (deflate.hpp).
+    Inflated inflate(Words& why, int& err) noexcept;
+#endif
 
     /// Move the verified file to its name (`final_path` gets where); REFUSED_NAME or
     /// REFUSED_EXISTS (a different file appeared there meanwhile) or FAILED_IO with words.
@@ -114,8 +125,10 @@ private:
     char name_[MAX_NAME_BYTES + 1] = {};
     std::size_t name_len_ = 0;
     std::uint64_t size_ = 0;
+    bool deflated_ = false;
+    std::uint64_t original_ = 0;
     std::uint8_t sha_[SHA_LEN] = {};
-    char key_[64] = {};
+    char key_[96] = {};
     RangeSet<TransferLimits::FILE_RANGES> ranges_;
     std::uint64_t unsaved_ = 0;
     bool resumed_ = false;
@@ -138,9 +151,11 @@ inline bool Partial::path(char* out, const char* suffix) const noexcept
 }
 
 inline void Partial::open(ReceiveDir& store, const char* name, std::size_t name_len, std::uint64_t size,
-                          const std::uint8_t sha256[SHA_LEN]) noexcept
+                          const std::uint8_t sha256[SHA_LEN], bool zlib_stream, std::uint64_t file_bytes) noexcept
 {
     reset();
+    deflated_ = zlib_stream;
+    original_ = zlib_stream ? file_bytes : 0;
     store_ = &store;
     name_len_ = std::min(name_len, MAX_NAME_BYTES);
     std::memcpy(name_, name, name_len_);
@@ -155,7 +170,12 @@ inline void Partial::open(ReceiveDir& store, const char* name, std::size_t name_
     h.final(d);
     char hex[2 * Sha256::DIGEST_LENGTH + 1];
     hex_of(d, sizeof d, hex);
-    std::snprintf(key_, sizeof key_, "%.40s-%llu", hex, static_cast<unsigned long long>(size));
+    if (deflated_) {  // the file and its zlib stream never share a partial
+        std::snprintf(key_, sizeof key_, "%.40s-%llu-z%llu", hex, static_cast<unsigned long long>(size),
+                      static_cast<unsigned long long>(original_));
+    } else {
+        std::snprintf(key_, sizeof key_, "%.40s-%llu", hex, static_cast<unsigned long long>(size));
+    }
     load();
 }
 
@@ -192,6 +212,8 @@ inline void Partial::load() noexcept
     bool have_name = false;
     bool have_size = false;
     bool have_sha = false;
+    bool original_null = true;  // "original": null or absent: the file as it is
+    std::int64_t orig = -1;
     std::int64_t size = -1;
     const char* ranges_at = nullptr;
     if (!j.eat('{')) {
@@ -249,6 +271,16 @@ inline void Partial::load() noexcept
                         return;
                     }
                 }
+            } else if (k == "original") {
+                bool integer = false;
+                if (j.peek() == '-' || (j.peek() >= '0' && j.peek() <= '9')) {
+                    original_null = !(j.number(orig, integer) && integer);
+                    if (original_null) {
+                        return;
+                    }
+                } else if (!j.skip()) {
+                    return;
+                }
             } else if (k == "ranges") {
                 ranges_at = j.where();
                 if (!j.skip()) {
@@ -266,7 +298,8 @@ inline void Partial::load() noexcept
         }
     }
     if (!have_name || name_len != name_len_ || std::memcmp(name, name_, name_len) != 0 || !have_size
-        || size < 0 || static_cast<std::uint64_t>(size) != size_ || !have_sha) {
+        || size < 0 || static_cast<std::uint64_t>(size) != size_ || !have_sha || original_null == deflated_
+        || (deflated_ && (orig < 0 || static_cast<std::uint64_t>(orig) != original_))) {
         return;
     }
     char data_path[PATH_MAX];
@@ -401,7 +434,13 @@ inline void Partial::record() noexcept
     char hex[2 * SHA_LEN + 1];
     hex_of(sha_, SHA_LEN, hex);
     puts(hex);
-    puts("\", \"ranges\": [");
+    if (deflated_) {
+        std::snprintf(num, sizeof num, "\", \"original\": %llu, \"ranges\": [",
+                      static_cast<unsigned long long>(original_));
+        puts(num);
+    } else {
+        puts("\", \"original\": null, \"ranges\": [");
+    }
     for (std::size_t i = 0; i < ranges_.size(); ++i) {
         std::snprintf(num, sizeof num, "%s[%llu, %llu]", i == 0 ? "" : ", ",
                       static_cast<unsigned long long>(ranges_.start(i)),
@@ -455,11 +494,26 @@ inline bool Partial::verify() noexcept
     return impl::sha256_fd(fd, size_, d, got) && std::memcmp(d, sha_, SHA_LEN) == 0;
 }
 
+#if TTCTL_ZLIB
+inline Inflated Partial::inflate(Words& why, int& err) noexcept
+{
+    const int fd = open_fd();
+    char out[PATH_MAX];
+    if (fd < 0 || !path(out, ".out")) {
+        err = fd < 0 ? errno : ENAMETOOLONG;
+        return Inflated::io;
+    }
+    ::fsync(fd);
+    return inflate_to(fd, size_, out, original_, sha_, why, err);
+}
+#endif
+
 inline TtFileResult Partial::finish(bool overwrite, char* final, Words& why) noexcept
 {
     const int fd = open_fd();
-    char data[PATH_MAX];
-    if (fd < 0 || !path(data, ".part")) {
+    char stream[PATH_MAX];
+    char data[PATH_MAX];  // what takes the name: the data received, or the file inflated from it
+    if (fd < 0 || !path(stream, ".part") || !path(data, deflated_ ? ".out" : ".part")) {
         why.clear();
         why << name_ << ": cannot open the received data";
         return TtFileResult::TT_FILE_RESULT_FAILED_IO;
@@ -504,13 +558,16 @@ inline TtFileResult Partial::finish(bool overwrite, char* final, Words& why) noe
                 why << name_ << ": " << std::strerror(errno);
                 return TtFileResult::TT_FILE_RESULT_FAILED_IO;
             }
-            if (!store_->identical(final, size_, sha_)) {
+            if (!store_->identical(final, deflated_ ? original_ : size_, sha_)) {
                 why.clear();
                 why << name_ << " appeared here while it was being received";
                 return TtFileResult::TT_FILE_RESULT_REFUSED_EXISTS;
             }
         }
         ::unlink(data);
+    }
+    if (deflated_) {
+        ::unlink(stream);
     }
     if (slash != nullptr) {  // the new name is durable once its folder is
         const int dir = ::open(slash == parent ? "/" : parent, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
@@ -534,6 +591,9 @@ inline void Partial::discard() noexcept
         ::unlink(p);
     }
     if (path(p, ".json")) {
+        ::unlink(p);
+    }
+    if (path(p, ".out")) {
         ::unlink(p);
     }
     ranges_.clear();

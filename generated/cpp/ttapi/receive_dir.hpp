@@ -203,8 +203,11 @@ public:
 
     /// Check an offer: COMPLETE if a file with this size and SHA-256 is there already under the
     /// name (nothing to receive), IN_PROGRESS if it may be received, else a refusal with words.
+    /// `stream`: the size of the zlib stream a deflated offer sends (on disk beside the file
+    /// while it is inflated), 0 for a file sent as it is.
     TtFileResult admit(const char* name, std::size_t name_len, std::uint64_t size, bool wants_overwrite,
-                       const std::uint8_t sha[SHA_LEN], char* final, Words& why) const noexcept
+                       const std::uint8_t sha[SHA_LEN], char* final, Words& why,
+                       std::uint64_t stream = 0) const noexcept
     {
         if (name_problem(reinterpret_cast<const std::uint8_t*>(name), name_len, why)) {
             return TtFileResult::TT_FILE_RESULT_REFUSED_NAME;
@@ -220,6 +223,11 @@ public:
             why << size << " bytes exceed the per-file quota of " << quota_.max_file_bytes << " bytes";
             return TtFileResult::TT_FILE_RESULT_REFUSED_QUOTA;
         }
+        if (stream > quota_.max_file_bytes) {  // a stream larger than its file: nothing a real deflater writes
+            why.clear();
+            why << "a " << stream << "-byte stream exceeds the per-file quota of " << quota_.max_file_bytes << " bytes";
+            return TtFileResult::TT_FILE_RESULT_REFUSED_QUOTA;
+        }
         struct stat st {};
         if (::lstat(final, &st) == 0 && identical(final, size, sha)) {
             return TtFileResult::TT_FILE_RESULT_COMPLETE;
@@ -229,7 +237,7 @@ public:
         if (target != TtFileResult::TT_FILE_RESULT_IN_PROGRESS) {
             return target;
         }
-        if (usage() + size > quota_.max_dir_bytes) {
+        if (usage() + size + stream > quota_.max_dir_bytes) {
             why.clear();
             why << "the directory quota of " << quota_.max_dir_bytes << " bytes would be exceeded";
             return TtFileResult::TT_FILE_RESULT_REFUSED_QUOTA;

@@ -51,11 +51,12 @@ struct Incoming {
     std::uint8_t sysid = 0;
     std::uint8_t compid = 0;
     std::uint32_t id = 0;
-    std::uint32_t size = 0;
+    std::uint32_t size = 0;  // bytes on the link: the file's, or its zlib stream's (deflated())
+    std::uint32_t original = 0;  // the file's size, when a zlib stream of it is offered
     std::uint8_t flags = 0;
     std::uint32_t request_id = 0;
     std::uint8_t meta_length = 0;
-    std::uint8_t meta[META_MAX] = {};  // the file's SHA-256, then its name
+    std::uint8_t meta[META_MAX] = {};  // the file's SHA-256, (deflated: its size,) then its name
     std::uint8_t meta_have[32] = {};  // a bit per metadata byte received
     std::uint32_t check = 0;  // meta_check, once the metadata is whole
     bool decided = false;  // accepted, refused, busy, finished
@@ -90,13 +91,23 @@ struct Incoming {
         return (flags & static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_OVERWRITE)) != 0;
     }
 
+    /// Whether the offer is the file's zlib stream (TT_FILE_FLAGS_DEFLATE).
+    bool deflated() const noexcept
+    {
+        return (flags & static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_DEFLATE)) != 0;
+    }
+
+    /// The file's size (`size` counts the stream's bytes when it is deflated).
+    std::uint64_t file_size() const noexcept { return deflated() ? original : size; }
+
     /// The name offered (bytes as they came: check name_ok() before trusting them).
     std::string_view name() const noexcept
     {
-        if (meta_length <= SHA_LEN) {
+        const std::size_t at = deflated() ? DEFLATE_META : SHA_LEN;
+        if (meta_length <= at) {
             return std::string_view();
         }
-        return std::string_view(reinterpret_cast<const char*>(meta) + SHA_LEN, meta_length - SHA_LEN);
+        return std::string_view(reinterpret_cast<const char*>(meta) + at, meta_length - at);
     }
 
     const std::uint8_t* sha256() const noexcept { return meta; }
@@ -362,7 +373,9 @@ private:
     void refuse(Incoming& t, double now, TtFileResult code, std::string_view reason);
     bool same_name(const Incoming& a, const Incoming& b) const noexcept { return a.name() == b.name(); }
     void decide(int at, double now);
-    int group_of(std::string_view name, std::uint64_t size, const std::uint8_t* sha) const noexcept;
+    int group_of(std::string_view name, std::uint64_t size, const std::uint8_t* sha,
+                 bool deflated = false) const noexcept;
+    std::uint64_t held_as_it_is(const Incoming& t);
     std::size_t live_groups(double now) const noexcept;
     int free_group(double now) noexcept;
 

@@ -12,9 +12,11 @@
 #define TTCTL_TTAPI_RECEIVER_DATA_HPP
 
 #include <algorithm>
+#include <cerrno>
 #include <climits>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string_view>
 
 namespace ttapi::link {
@@ -132,6 +134,27 @@ inline void FileReceiver::end_group(int g, double now, TtFileResult code, std::s
 inline void FileReceiver::complete(int g, double now)
 {
     Partial& partial = grp(g);
+#if TTCTL_ZLIB
+    if (partial.deflated()) {
+        Words words;
+        int err = 0;
+        const Inflated got = partial.inflate(words, err);
+        if (got == Inflated::bad) {
+            partial.discard();  // a whole stream that is not the file: no resume can use it
+            end_group(g, now, TtFileResult::TT_FILE_RESULT_FAILED_CHECKSUM, words.view(), false);
+            return;
+        }
+        if (got == Inflated::io) {
+            words.clear();
+            words << partial.name() << ": inflating: " << std::strerror(err) << " (the stream is kept for a resume)";
+            end_group(g, now,
+                      err == ENOSPC || err == EDQUOT ? TtFileResult::TT_FILE_RESULT_FAILED_DISK_FULL
+                                                     : TtFileResult::TT_FILE_RESULT_FAILED_IO,
+                      words.view(), true);
+            return;
+        }
+    } else
+#endif
     if (!partial.verify()) {
         partial.discard();
         end_group(g, now, TtFileResult::TT_FILE_RESULT_FAILED_CHECKSUM,

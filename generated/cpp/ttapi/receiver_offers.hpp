@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <string_view>
 
 namespace ttapi::link {
@@ -107,7 +108,8 @@ inline void FileReceiver::decide(int at, double now)
     // naming it; the sender offers again without it
     const auto deflate = static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_DEFLATE);
     const auto known = static_cast<std::uint8_t>(static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_OVERWRITE)
-                                                 | static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_CANCEL));
+                                                 | static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_CANCEL)
+                                                 | (INFLATES ? deflate : 0));
     const auto unknown = static_cast<std::uint8_t>(t.flags & static_cast<std::uint8_t>(~known));
     if (unknown != 0) {
         static constexpr char hex[] = "0123456789abcdef";
@@ -119,6 +121,15 @@ inline void FileReceiver::decide(int at, double now)
         }
         refuse(t, now, TtFileResult::TT_FILE_RESULT_REFUSED_UNSUPPORTED, text.view());
         return;
+    }
+    if (t.deflated()) {  // the metadata: SHA-256, the file's size (uint32 LE), the name
+        if (t.meta_length <= DEFLATE_META) {
+            refuse(t, now, TtFileResult::TT_FILE_RESULT_REFUSED_NAME, "the deflate offer carries no name");
+            return;
+        }
+        t.original = static_cast<std::uint32_t>(t.meta[SHA_LEN]) | static_cast<std::uint32_t>(t.meta[SHA_LEN + 1]) << 8
+                     | static_cast<std::uint32_t>(t.meta[SHA_LEN + 2]) << 16
+                     | static_cast<std::uint32_t>(t.meta[SHA_LEN + 3]) << 24;
     }
     Words why;
     const std::string_view name = t.name();
@@ -134,10 +145,20 @@ inline void FileReceiver::decide(int at, double now)
         refuse(t, now, TtFileResult::TT_FILE_RESULT_REFUSED_NAME, text.view());
         return;
     }
+    if (t.deflated()) {
+        if (const std::uint64_t held = held_as_it_is(t)) {
+            // what arrived of the file sent as it is (an older sender, --no-compress) would be
+            // orphaned by its stream: the sender falls back to the file and resumes it
+            Words text;
+            text << held << " bytes of it as it is are here: send it uncompressed to resume";
+            refuse(t, now, TtFileResult::TT_FILE_RESULT_REFUSED_UNSUPPORTED, text.view());
+            return;
+        }
+    }
     char name_z[MAX_NAME_BYTES + 1];
     std::memcpy(name_z, name.data(), name.size());
     name_z[name.size()] = '\0';
-    int g = group_of(name, t.size, t.sha256());
+    int g = group_of(name, t.size, t.sha256(), t.deflated());
     if (g < 0) {
         for (int i = head_; i >= 0;) {
             Incoming& other = tr(i);
@@ -162,7 +183,8 @@ inline void FileReceiver::decide(int at, double now)
         }
         char final[PATH_MAX];
         const TtFileResult admitted =
-            store_.admit(name_z, name.size(), t.size, t.overwrite(), t.sha256(), final, why);
+            store_.admit(name_z, name.size(), t.file_size(), t.overwrite(), t.sha256(), final, why,
+                         t.deflated() ? t.size : 0);
         if (admitted == TtFileResult::TT_FILE_RESULT_COMPLETE) {
             t.result = static_cast<std::uint8_t>(TtFileResult::TT_FILE_RESULT_COMPLETE);
             t.nothing_sent = t.identical = t.finished = true;
@@ -182,7 +204,7 @@ inline void FileReceiver::decide(int at, double now)
             refuse(t, now, TtFileResult::TT_FILE_RESULT_REFUSED_BUSY, text.view());
             return;
         }
-        grp(g).open(store_, name_z, name.size(), t.size, t.sha256());
+        grp(g).open(store_, name_z, name.size(), t.size, t.sha256(), t.deflated(), t.original);
     }
     ++mem(g);
     t.group = g;
@@ -197,16 +219,30 @@ inline void FileReceiver::decide(int at, double now)
     status_now(t, now);
 }
 
-inline int FileReceiver::group_of(std::string_view name, std::uint64_t size, const std::uint8_t* sha) const noexcept
+inline int FileReceiver::group_of(std::string_view name, std::uint64_t size, const std::uint8_t* sha,
+                                   bool deflated) const noexcept
 {
     for (std::size_t g = 0; g < TransferLimits::MAX_FILES; ++g) {
         const Partial& p = grp(g);
         if (p.is_open() && p.size() == size && std::memcmp(p.sha256(), sha, SHA_LEN) == 0
-            && std::string_view(p.name()) == name) {
+            && std::string_view(p.name()) == name && p.deflated() == deflated) {
             return static_cast<int>(g);
         }
     }
     return -1;
+}
+
+// Bytes held of the file a deflated offer carries, received as it is (open here, or on disk).
+inline std::uint64_t FileReceiver::held_as_it_is(const Incoming& t)
+{
+    const std::string_view name = t.name();
+    const int g = group_of(name, t.original, t.sha256(), false);
+    if (g >= 0) {
+        return grp(g).ranges().total();
+    }
+    std::unique_ptr<Partial> probe(new Partial);
+    probe->open(store_, name.data(), name.size(), t.original, t.sha256());
+    return probe->ranges().total();
 }
 
 inline std::size_t FileReceiver::live_groups(double now) const noexcept

@@ -2,7 +2,10 @@
 //
 // Sending files, for the ttapi dialect's file transfer (POSIX; a C++ port of ttctl's
 // proto/sender.py, with the same decisions): FileSender, the sending side of one transfer (an
-// upload, or a served fetch) of a FileSource, its data frames pulled by the scheduler. This header
+// upload, or a served fetch) of a FileSource, its data frames pulled by the scheduler. A file
+// that deflates well is offered as its zlib stream (TT_FILE_FLAGS_DEFLATE, deflate.hpp); a
+// receiver that refuses that (REFUSED_UNSUPPORTED, or the name or the checksum of the stream) gets
+// the file as it is, under a new transfer id. This header
 // holds the class, its start and its end; the rest of its work is in three parts, included after
 // the class:
 //   sender_control.hpp      offers and probes out; the receiver's statuses and reasons in
@@ -19,6 +22,7 @@
 #include <memory>
 #include <string_view>
 
+#include "deflate.hpp"
 #include "enums.hpp"
 #include "file_names.hpp"
 #include "file_source.hpp"
@@ -38,7 +42,7 @@ public:
 };
 
 struct TransferStats {
-    std::uint64_t bytes_sent = 0;  // file bytes put in data frames, repeats included
+    std::uint64_t bytes_sent = 0;  // bytes put in data frames (the file's or its stream's), repeats included
     std::uint64_t bytes_retransmitted = 0;
     std::uint64_t frames_sent = 0;
     std::uint64_t narrow_frames = 0;
@@ -59,6 +63,9 @@ struct TransferResult {
     Words message;
     double seconds = 0.0;
     bool nothing_sent = false;  // the receiver had every byte already
+    std::uint64_t deflated_bytes = 0;  // the zlib stream's size when the file went deflated, else 0
+    bool fell_back = false;  // a deflated offer went back to the file as it is: `fallback` says why
+    Words fallback;
 };
 
 /// The sending side of one file transfer (a served fetch, or an upload). A transfer ends exactly
@@ -87,6 +94,8 @@ public:
         if (!source_.open(path, why)) {
             return false;
         }
+        fell_back_ = false;
+        fallback_.clear();
         ids_ = &ids;
         encoder_ = &encoder;
         cfg_ = cfg;
@@ -94,15 +103,12 @@ public:
         name_len_ = name.size();
         std::memcpy(name_, name.data(), name.size());
         name_[name_len_] = '\0';
-        size_ = source_.size();
+        file_size_ = source_.size();
         target_sysid_ = target_sysid;
         target_compid_ = target_compid;
         request_id_ = request_id;
-        flags_ = overwrite ? static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_OVERWRITE) : 0;
-        std::memcpy(meta_, source_.sha256(), SHA_LEN);
-        std::memcpy(meta_ + SHA_LEN, name.data(), name.size());
-        meta_len_ = SHA_LEN + name.size();
-        check_ = meta_check(meta_, meta_len_);
+        base_flags_ = overwrite ? static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_OVERWRITE) : 0;
+        use(cfg.compress && stream_.make(source_, name.size()));
         result_ = TransferResult();
         done_ = false;
         stats_ = TransferStats();
@@ -122,6 +128,7 @@ public:
     void release() noexcept
     {
         source_.close();
+        stream_.close();
         state_ = State::idle;
     }
 
@@ -133,7 +140,9 @@ public:
     std::uint8_t target_sysid() const noexcept { return target_sysid_; }
     std::uint8_t target_compid() const noexcept { return target_compid_; }
     std::string_view name() const noexcept { return std::string_view(name_, name_len_); }
-    std::uint64_t size() const noexcept { return size_; }
+    std::uint64_t size() const noexcept { return size_; }  // bytes on the link: the file's or its stream's
+    std::uint64_t file_size() const noexcept { return file_size_; }
+    bool deflated() const noexcept { return deflated_; }
     const TransferResult& result() const noexcept { return result_; }
     const TransferStats& stats() const noexcept { return stats_; }
     std::uint64_t acked_bytes() const noexcept { return acked_.total(); }
@@ -230,6 +239,47 @@ private:
         result_.message << message;
         result_.seconds = now - stats_.started;
         result_.nothing_sent = nothing_sent;
+        result_.deflated_bytes = deflated_ ? size_ : 0;
+        result_.fell_back = fell_back_;
+        result_.fallback.clear();
+        result_.fallback << fallback_.view();
+    }
+
+    // Offer the zlib stream (`deflated`: stream_ holds it) or the file as it is.
+    void use(bool zlib) noexcept
+    {
+        deflated_ = zlib;
+        size_ = zlib ? stream_.size() : file_size_;
+        flags_ = static_cast<std::uint8_t>(
+            base_flags_ | (zlib ? static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_DEFLATE) : 0));
+        std::memcpy(meta_, source_.sha256(), SHA_LEN);
+        std::size_t at = SHA_LEN;
+        if (zlib) {  // the file's size, uint32 little-endian, between the SHA-256 and the name
+            for (int i = 0; i < 4; ++i) {
+                meta_[at++] = static_cast<std::uint8_t>(file_size_ >> (8 * i));
+            }
+        }
+        std::memcpy(meta_ + at, name_, name_len_);
+        meta_len_ = at + name_len_;
+        check_ = meta_check(meta_, meta_len_);
+    }
+
+    // The receiver did not take the zlib stream: the file as it is, under a new id.
+    void fall_back(double now, std::string_view why, bool count)
+    {
+        fell_back_ = true;
+        fallback_.clear();
+        fallback_ << why;
+        stream_.close();
+        use(false);
+        restart(now, count);
+        last_progress_ = now;
+    }
+
+    // Bytes of what is offered (the file, or its stream) at `offset`.
+    std::size_t read(std::uint64_t offset, std::uint8_t* out, std::size_t n) const noexcept
+    {
+        return deflated_ ? stream_.read(offset, out, n) : source_.read(offset, out, n);
     }
 
     void restart(double now, bool count)
@@ -283,6 +333,17 @@ private:
 
     void refuse(double now, std::uint8_t code)
     {
+        using R = TtFileResult;
+        if (deflated_
+            && (code == static_cast<std::uint8_t>(R::TT_FILE_RESULT_REFUSED_UNSUPPORTED)
+                || code == static_cast<std::uint8_t>(R::TT_FILE_RESULT_REFUSED_NAME)
+                || code == static_cast<std::uint8_t>(R::TT_FILE_RESULT_FAILED_CHECKSUM))) {
+            // it does not inflate, or (a receiver from before deflate) took the file's size for
+            // part of the name, or the stream did not inflate to the file there
+            fall_back(now, has_reason_ ? reason_.view() : std::string_view(result_text(code)),
+                      code == static_cast<std::uint8_t>(R::TT_FILE_RESULT_FAILED_CHECKSUM));
+            return;
+        }
         Words text;
         if (code == static_cast<std::uint8_t>(TtFileResult::TT_FILE_RESULT_FAILED_CHECKSUM) && source_.changed()) {
             text << source_.path() << " changed while it was being sent";
@@ -319,6 +380,12 @@ private:
     Encoder* encoder_ = nullptr;
     TransferConfig cfg_;
     FileSource source_;
+    DeflatedStream stream_;  // the file's zlib stream, when it is offered deflated
+    bool deflated_ = false;
+    std::uint64_t file_size_ = 0;
+    std::uint8_t base_flags_ = 0;  // the offer's flags but DEFLATE
+    bool fell_back_ = false;
+    Words fallback_;  // why a deflated offer went back to the file as it is
     std::uint32_t id_ = 0;
     char name_[MAX_NAME_BYTES + 1] = {};
     std::size_t name_len_ = 0;

@@ -128,7 +128,7 @@ inline void FileSender::on_status(double now, const TtFileStatus& msg)
         acked_.add(0, size_);
         const bool nothing = stats_.bytes_sent == 0 && size_ > 0;
         Words text;
-        text << name() << ": " << size_ << " bytes "
+        text << name() << ": " << file_size_ << " bytes "
              << (nothing ? "verified there (it had them already)" : "delivered and verified");
         finish(now, true, "COMPLETE", text.view(), nothing);
         return;
@@ -147,7 +147,7 @@ inline void FileSender::on_status(double now, const TtFileStatus& msg)
         state_ = State::offering;  // keep offering (with backoff) until there is room or time is up
         return;
     }
-    if (code == static_cast<std::uint8_t>(R::TT_FILE_RESULT_FAILED_CHECKSUM)
+    if (code == static_cast<std::uint8_t>(R::TT_FILE_RESULT_FAILED_CHECKSUM) && !deflated_
         && stats_.restarts < cfg_.checksum_restarts && !source_.changed()) {
         restart(now, true);  // the receiver discarded what it had: again, from scratch
         last_progress_ = now;

@@ -64,7 +64,7 @@ inline std::size_t FileSender::pull(double now, std::size_t space, std::uint8_t*
     }
     const std::size_t length = static_cast<std::size_t>(std::min<std::uint64_t>(cap, size_ - offset));
     std::uint8_t data[WIDE] = {};
-    if (source_.read(offset, data, length) != length) {
+    if (read(offset, data, length) != length) {
         std::memset(data, 0, length);  // the file shrank: the receiver's SHA-256 check will say so
     }
     History& h = history(offset);

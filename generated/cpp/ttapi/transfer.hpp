@@ -36,6 +36,7 @@
 //   posix_files.hpp     paths joined and resolved inside a folder, the SHA-256 of a file
 //   json.hpp            JSON as ttctl's Python writes and reads it (the partial files' records)
 //   receive_dir.hpp     ReceiveDir: the jail files are received into, and its Quota
+//   deflate.hpp         zlib for deflated offers (link -lz; TTCTL_NO_ZLIB: refused instead)
 //   partial.hpp         Partial: one file being received, and its record
 //   file_source.hpp     FileSource: a file to send
 //   receiver.hpp        FileReceiver: every incoming transfer (parts: receiver_offers, _data, _status)
@@ -50,6 +51,7 @@
 #include "posix_files.hpp"
 #include "json.hpp"
 #include "receive_dir.hpp"
+#include "deflate.hpp"
 #include "partial.hpp"
 #include "file_source.hpp"
 #include "receiver.hpp"

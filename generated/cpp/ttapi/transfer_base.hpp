@@ -70,6 +70,7 @@ struct TransferConfig {
     std::uint64_t probe_frames = 24;  // narrow frames sent before the first choice of frame size
     int checksum_restarts = 2;  // sender: start again from scratch after a SHA-256 mismatch, this often
     double reason_wait = 1.0;  // sender: wait this long for the words of a refusal before giving the code's
+    bool compress = true;  // sender: offer a file deflated when that saves (deflate.hpp)
 };
 
 // --- words -----------------------------------------------------------------------------------

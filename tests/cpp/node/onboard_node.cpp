@@ -308,11 +308,14 @@ int main(int argc, char** argv)
                     const ttapi::link::TransferResult& r = s.result();
                     const ttapi::link::TransferStats& st = s.stats();
                     std::printf("{\"event\": \"sent\", \"ok\": %s, \"code\": \"%s\", \"message\": %s, \"seconds\": %.3f, "
-                                "\"bytes_sent\": %llu, \"retransmitted\": %llu, \"resumed_bytes\": %llu}\n",
+                                "\"bytes_sent\": %llu, \"retransmitted\": %llu, \"resumed_bytes\": %llu, "
+                                "\"deflated_bytes\": %llu, \"deflate_fallback\": %s}\n",
                                 r.ok ? "true" : "false", r.code, json(r.message.view()).c_str(), r.seconds,
                                 static_cast<unsigned long long>(st.bytes_sent),
                                 static_cast<unsigned long long>(st.bytes_retransmitted),
-                                static_cast<unsigned long long>(st.resumed_bytes));
+                                static_cast<unsigned long long>(st.resumed_bytes),
+                                static_cast<unsigned long long>(r.deflated_bytes),
+                                r.fell_back ? json(r.fallback.view()).c_str() : "null");
                     std::fflush(stdout);
                     sent_reported = true;
                 }
