@@ -274,3 +274,30 @@ def test_a_served_file_over_the_cap_goes_as_it_is(tmp_path: Path, monkeypatch: p
     done = {t.name: t for t in w.event("file-complete")}
     assert done["small.csv"].original is not None and done["big.csv"].original is None
     assert (tmp_path / "tab" / "big.csv").read_bytes() == flight_log_csv(seconds=60)
+
+
+@pytest.mark.parametrize("words_come", [True, False])
+def test_a_deflated_offers_refusal_waits_for_the_receivers_words(tmp_path: Path, words_come: bool) -> None:
+    """The status may overtake its TT_FILE_REASON (CI: the fallback said the code's generic text
+    once in three runs against the Java inbox): the sender waits a moment for the words, asks
+    again, and falls back with them; without words, with the code's own text."""
+    import ttapi
+
+    w = World(tmp_path, onboard_dir=tmp_path / "on")
+    s = w.tablet.send_file("m.yaml", ONBOARD, source=BytesSource(mission_yaml(), "m.yaml"))
+    first, now = s.id, 1.0
+    refused = int(TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED)
+    s.on_status(now, ttapi.TtFileStatus(target_system=s.target[0], transfer_id=first, result=refused,
+                                        meta_check=s.check))
+    assert s.id == first and s.fallback is None  # not yet: the words may be on their way
+    assert s.control(now)  # and it asks again, so that a lost reason is said once more
+    words = "offer flags 0x04 not understood here: this receiver does not decompress"
+    if words_come:
+        s.on_reason(now + 0.2, ttapi.TtFileReason(transfer_id=first, result=refused, text=words))
+        assert s.fallback == words
+    else:
+        s.control(now + 0.5)
+        assert s.fallback is None
+        s.control(now + 10.0)
+        assert s.fallback is not None and s.fallback != words
+    assert s.id != first and not s.flags & DEFLATE

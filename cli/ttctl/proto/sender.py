@@ -86,6 +86,7 @@ class FileSender:
         self.state = "offering"
         self.reason: str | None = None  # the receiver's words for a refusal or failure
         self._refusal: tuple[str, float] | None = None  # (code, when) of a refusal awaiting its words
+        self._unzip_refusal: tuple[int, float] | None = None  # (code, when): a deflated offer refused, words awaited
         self.acked = RangeSet()
         self.retx = RangeSet()
         self.next_new = 0
@@ -176,6 +177,10 @@ class FileSender:
         if self._refusal is not None and now >= self._refusal[1] + max(self.cfg.reason_wait, 3 * self.rtt):
             self._refuse(now, self._refusal[0])
             return []
+        if self._unzip_refusal is not None and now >= self._unzip_refusal[1] + max(self.cfg.reason_wait, 3 * self.rtt):
+            code = self._unzip_refusal[0]  # no words came: the code's
+            self._fall_back(now, RESULT_TEXT.get(result_name(code), "refused"),
+                            count=code == R.TT_FILE_RESULT_FAILED_CHECKSUM)
         # each time compared as deadline() computes it: `now - a >= b` can be false at now == a + b
         if now >= self.last_progress + self.cfg.give_up_after:
             self._time_out(now)
@@ -342,6 +347,8 @@ class FileSender:
         self.reason = text
         if self._refusal is not None:
             self._refuse(now, self._refusal[0])
+        elif self._unzip_refusal is not None:
+            self._fall_back(now, text, count=self._unzip_refusal[0] == R.TT_FILE_RESULT_FAILED_CHECKSUM)
 
     def on_status(self, now: float, msg: Any) -> None:
         if self.done or msg.transfer_id != self.id:
@@ -388,8 +395,12 @@ class FileSender:
                                                   R.TT_FILE_RESULT_FAILED_CHECKSUM):
             # it does not inflate, or (a receiver from before deflate) took the original size
             # for part of the name, or the stream did not inflate to the file there
-            why = self.reason or RESULT_TEXT.get(result_name(code), "refused")
-            self._fall_back(now, why, count=code == R.TT_FILE_RESULT_FAILED_CHECKSUM)
+            if self.reason is not None:
+                self._fall_back(now, self.reason, count=code == R.TT_FILE_RESULT_FAILED_CHECKSUM)
+            elif self._unzip_refusal is None:  # the words may come after the status: wait a moment, ask again
+                self._unzip_refusal = (code, now)
+                self._offer_due = now
+                self.state = "offering"
             return
         if code == R.TT_FILE_RESULT_FAILED_CHECKSUM and self.stats.restarts < self.cfg.checksum_restarts \
                 and not self.source.changed():
@@ -511,8 +522,9 @@ class FileSender:
             due = self._tail_due()
             if due is not None and due > now:
                 times.append(due)
-        if self._refusal is not None:
-            times.append(self._refusal[1] + max(self.cfg.reason_wait, 3 * self.rtt))
+        for waiting in (self._refusal, self._unzip_refusal):
+            if waiting is not None:
+                times.append(waiting[1] + max(self.cfg.reason_wait, 3 * self.rtt))
         if self.state == "offering":
             times.append(self._offer_due)
         elif self._probe_due is not None:
