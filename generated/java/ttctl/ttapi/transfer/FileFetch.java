@@ -77,8 +77,10 @@ final class FileFetch {
         }
         long size = size();
         long moved = Math.max(0, (ok ? size : have) - resumed());
-        result = new TransferResult(ok, code, message, name, size, now - started, 0, 0, resumed(), moved,
-                ok && incoming != null && incoming.nothingSent, ok ? incoming.finalPath : null);
+        boolean z = incoming != null && incoming.original >= 0; // it came deflated: size() counts the stream
+        result = new TransferResult(ok, code, message, name, z ? incoming.original : size, now - started, 0, 0,
+                resumed(), moved, ok && incoming != null && incoming.nothingSent, ok ? incoming.finalPath : null,
+                z ? size : -1);
         finishedAt = now;
     }
 
@@ -151,7 +153,7 @@ final class FileFetch {
             }
             int r = incoming.result;
             if (r == TtFileResult.TT_FILE_RESULT_COMPLETE) {
-                finish(now, true, "COMPLETE", name + ": " + incoming.size + " bytes "
+                finish(now, true, "COMPLETE", name + ": " + incoming.fileSize() + " bytes "
                         + (incoming.identical ? "already here (the same SHA-256)" : "received and verified"));
                 return out;
             }

@@ -98,7 +98,8 @@ final class FileReceiver {
         byte[] meta = new byte[0];
         RangeSet metaHave = new RangeSet();
         int metaLength;
-        long size;
+        long size; // bytes on the link: the file's, or its zlib stream's
+        long original = -1; // the file's size when its zlib stream is offered (Deflate)
         int flags;
         long requestId;
         String name = "";
@@ -142,6 +143,10 @@ final class FileReceiver {
 
         boolean overwrite() {
             return (flags & TtFileFlags.TT_FILE_FLAGS_OVERWRITE) != 0;
+        }
+
+        long fileSize() {
+            return original < 0 ? size : original;
         }
 
         /** Bytes of the file here (all of it once complete). */
@@ -312,7 +317,12 @@ final class FileReceiver {
             return;
         }
         t.sha256 = Arrays.copyOf(meta, Math.min(Names.SHA_LEN, meta.length));
-        byte[] rawName = Arrays.copyOfRange(meta, Math.min(Names.SHA_LEN, meta.length), meta.length);
+        boolean deflated = (t.flags & Deflate.FLAG) != 0;
+        if (deflated && (t.original = Deflate.original(meta)) < 0) {
+            refuse(t, now, TtFileResult.TT_FILE_RESULT_REFUSED_NAME, "the deflate offer carries no name");
+            return;
+        }
+        byte[] rawName = Deflate.name(meta, deflated);
         String name = Names.strictUtf8(rawName);
         if (name == null) {
             t.name = new String(rawName, Names.UTF8);
@@ -340,7 +350,13 @@ final class FileReceiver {
         } else {
             store = inbox;
         }
-        String group = store.root.getPath() + "\u0000" + Partial.key(t.name, t.size, t.sha256);
+        long held = t.original < 0 ? 0 : heldAsItIs(t, store);
+        if (held > 0) { // orphaned by its stream: the sender falls back to the file and resumes it
+            refuse(t, now, TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED, held
+                    + " bytes of it as it is are here: send it uncompressed to resume");
+            return;
+        }
+        String group = store.root.getPath() + "\u0000" + Partial.key(t.name, t.size, t.sha256, t.original);
         if (!groups.containsKey(group)) {
             for (Incoming other : new ArrayList<>(transfers.values())) {
                 if (other.partial == null || other == t || !other.name.equals(t.name) || other.store != store) {
@@ -359,7 +375,7 @@ final class FileReceiver {
             }
             boolean already;
             try {
-                already = store.admit(t.name, t.size, t.overwrite(), t.sha256);
+                already = store.admit(t.name, t.fileSize(), t.overwrite(), t.sha256, t.original < 0 ? 0 : t.size);
             } catch (ReceiveDir.Refused e) {
                 refuse(t, now, refusal(e.code), e.reason);
                 return;
@@ -383,7 +399,7 @@ final class FileReceiver {
                 t.statusDue = now;
                 return;
             }
-            groups.put(group, new Group(store.partial(t.name, t.size, t.sha256)));
+            groups.put(group, new Group(store.partial(t.name, t.size, t.sha256, t.original)));
         }
         Group g = groups.get(group);
         g.members.add(t.key);
@@ -399,6 +415,12 @@ final class FileReceiver {
             complete(group, now);
         }
         t.statusDue = now;
+    }
+
+    /** Bytes held of the file a deflated offer carries, received as it is. */
+    private long heldAsItIs(Incoming t, ReceiveDir store) {
+        Group g = groups.get(store.root.getPath() + "\u0000" + Partial.key(t.name, t.original, t.sha256, -1));
+        return g != null ? g.partial.ranges.total() : store.partial(t.name, t.original, t.sha256, -1).ranges.total();
     }
 
     // -- data --------------------------------------------------------------------------------
@@ -532,8 +554,21 @@ final class FileReceiver {
         boolean good;
         try {
             good = g.partial.verify();
+        } catch (Deflate.Failed e) {
+            g.partial.discard(); // a whole stream that is not the file: no resume can use it
+            endGroup(group, now, TtFileResult.TT_FILE_RESULT_FAILED_CHECKSUM, e.getMessage(), false, null);
+            return;
         } catch (IOException e) {
-            good = false;
+            if (g.partial.original < 0) {
+                good = false;
+            } else { // inflating: the stream is whole and stays
+                String why = String.valueOf(e.getMessage());
+                boolean full = why.contains("No space left") || why.contains("Disk quota");
+                endGroup(group, now, full ? TtFileResult.TT_FILE_RESULT_FAILED_DISK_FULL
+                        : TtFileResult.TT_FILE_RESULT_FAILED_IO, g.partial.name + ": inflating: " + why
+                        + " (the stream is kept for a resume)", true, null);
+                return;
+            }
         }
         if (!good) {
             g.partial.discard();

@@ -1,0 +1,240 @@
+"""Deflate (TT_FILE_FLAGS_DEFLATE) in the generated Java transfer runtime, against real ttctl
+processes on 127.0.0.1: the Java inbox (tests/java/session/SessionDriver.java) takes a text file
+`ttctl send-file` deflates, through `ttctl link relay --profile m100 --loss 0.1`, inflates it and
+checks its SHA-256 before it takes its name; a forged stream (a small Python process driving the
+sans-IO sender with a metadata blob of its choosing) that inflates to more than it declares, to
+less, or not at all, is refused in the Python receiver's words and leaves nothing under the
+name."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+import zlib
+from pathlib import Path
+
+import pytest
+
+from conformance_lib import build_java
+from conftest import ROOT
+from e2e_lib import LOCAL, Start, free_port, receiver, relay
+from test_java_session import DRIVERS, drone_send, sha, stop, tablet_inbox
+from test_java_transfer import DRIVERS as TABLET_DRIVERS
+from test_java_transfer import Driver
+from ttctl.bench.textfiles import flight_log_csv, mission_yaml
+
+pytestmark = pytest.mark.skipif(shutil.which("javac") is None or shutil.which("java") is None,
+                                reason="needs a JDK (javac, java)")
+
+
+@pytest.fixture(scope="module")
+def classes(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """SessionDriver (the inbox) and TabletDriver (uploads, fetches), from a freshly generated tree."""
+    cls, _ = build_java(tmp_path_factory.mktemp("java_deflate"), [*DRIVERS, *sorted(TABLET_DRIVERS.glob("*.java"))])
+    return cls
+
+FORGE = r'''
+import hashlib, json, socket, sys, time
+from pathlib import Path
+import ttapi
+from ttctl.wire.bindings import Bindings
+from ttctl.proto.deflate import deflate_meta
+from ttctl.proto.endpoint import Endpoint
+from ttctl.proto.storage import BytesSource
+from ttctl.proto.transfer import TransferConfig, meta_check
+
+port, stream_path, original_path, declared = int(sys.argv[1]), sys.argv[2], sys.argv[3], int(sys.argv[4])
+stream = Path(stream_path).read_bytes()
+original = Path(original_path).read_bytes()
+cfg = TransferConfig()
+cfg.give_up_after = 20.0
+ep = Endpoint(Bindings(ttapi), 1, 240, rate_Bps=20000, config=cfg)
+src = BytesSource(stream, "x.txt")
+src.sha256 = hashlib.sha256(original).digest()
+s = ep.send_file("x.txt", (255, 190), source=src, compress=False)
+s._flags |= 4  # TT_FILE_FLAGS_DEFLATE, with the metadata a deflated offer carries
+s.flags = s._flags
+s.meta = deflate_meta(src.sha256, declared, b"x.txt")
+s.check = meta_check(s.meta)
+s.deflated = None  # no fallback: a hostile sender does not give up
+sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+sock.bind(("127.0.0.1", 0))
+sock.settimeout(0.005)
+t0 = time.monotonic()
+while not s.done and time.monotonic() - t0 < 40:
+    now = time.monotonic() - t0
+    while (p := ep.poll(now)) is not None:
+        sock.sendto(p, ("127.0.0.1", port))
+    try:
+        data, _ = sock.recvfrom(65536)
+        ep.receive(time.monotonic() - t0, data, "java")
+    except socket.timeout:
+        pass
+r = s.result
+print(json.dumps({"done": s.done, "code": r.code if r else None, "message": r.message if r else None,
+                  "sent": s.stats.bytes_sent}), flush=True)
+'''
+
+
+def forge(tmp: Path, port: int, stream: bytes, original: bytes, declared: int) -> dict:
+    (tmp / "stream.z").write_bytes(stream)
+    (tmp / "original.bin").write_bytes(original)
+    proc = subprocess.run([sys.executable, "-c", FORGE, str(port), str(tmp / "stream.z"), str(tmp / "original.bin"),
+                           str(declared)], capture_output=True, text=True, timeout=90,
+                          env={**os.environ, "PYTHONPATH": str(ROOT / "generated" / "python")})
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    out: dict = json.loads(proc.stdout.strip().splitlines()[-1])
+    return out
+
+
+def finals(inbox: Path) -> list[str]:
+    return sorted(p.name for p in inbox.iterdir() if p.is_file()) if inbox.exists() else []
+
+
+def test_a_deflated_upload_through_the_lossy_relay_lands_inflated_and_verified(classes: Path, tmp_path: Path,
+                                                                              start: Start) -> None:
+    """send-file deflates a CSV flight log (the default) to the Java inbox through the m100
+    relay at 10 % loss: the inbox takes the stream, inflates it, checks the SHA-256 and renames
+    the file into place: byte for byte the log, nothing left in .ttctl-partial."""
+    (tmp_path / "outbox").mkdir()
+    a, b = free_port(), free_port()
+    relay(start, a, b, "--profile", "m100", "--rate", "8000", "--loss", "0.1", "--seed", "21", "--stats-interval", "0")
+    log = tmp_path / "log.csv"
+    log.write_bytes(flight_log_csv(seconds=30))
+    size = len(log.read_bytes())
+    j = tablet_inbox(classes, tmp_path, "tablet", b)
+    proc, r = drone_send(str(log), "--to", f"udpout:{LOCAL}:{a}", "--rate", "8000", "--timeout", "30")
+    assert proc.returncode == 0 and r["ok"], proc.stdout + proc.stderr
+    assert r["deflated_bytes"] and r["deflated_bytes"] < size / 3 and r["deflate_fallback"] is None, r
+    res = stop(j, tmp_path)
+    assert sha(tmp_path / "inbox" / "log.csv") == sha(log)
+    (done,) = [x for x in res["results"] if x["name"] == "log.csv"]
+    assert done["ok"] and done["size"] == size and done["deflated"] == r["deflated_bytes"], done
+    assert f"deflated to {r['deflated_bytes']} B on the link" in done["message"], done
+    assert finals(tmp_path / "inbox") == ["log.csv"]
+    assert not list((tmp_path / "inbox" / ".ttctl-partial").glob("*"))
+
+
+def test_forged_streams_are_refused_in_words_and_leave_nothing(classes: Path, tmp_path: Path, start: Start) -> None:
+    """Straight to the Java inbox's socket: a bomb (1 MiB of zeros declared as 4096 bytes) is
+    stopped at the declared size; a stream of less than declared, and a corrupt one, are refused
+    with the inflater's words; each is FAILED_CHECKSUM as the Python receiver says it, nothing
+    under the name, no partial kept (no resume can use it)."""
+    (tmp_path / "outbox").mkdir()
+    port = free_port()
+    j = tablet_inbox(classes, tmp_path, "tablet", port)
+    big = b"\0" * (1 << 20)
+    r = forge(tmp_path, port, zlib.compress(big, 9), big[:4096], 4096)
+    assert r["code"] == "FAILED_CHECKSUM" and "the stream inflates to more than the 4096 bytes offered" in \
+        r["message"], r
+    text = mission_yaml()
+    r = forge(tmp_path, port, zlib.compress(text[:-100], 6), text, len(text))
+    assert r["code"] == "FAILED_CHECKSUM" and \
+        f"the stream inflates to {len(text) - 100} bytes, not the {len(text)} offered" in r["message"], r
+    corrupt = bytearray(zlib.compress(text, 6))
+    corrupt[2] ^= 0xFF  # the first block's header: the inflater says what is wrong
+    try:
+        zlib.decompress(bytes(corrupt))
+        raise AssertionError("the corruption went unnoticed")
+    except zlib.error as e:
+        words = str(e).split(": ", 1)[-1]  # zlib's own words, as Python's receiver quotes them
+    r = forge(tmp_path, port, bytes(corrupt), text, len(text))
+    assert r["code"] == "FAILED_CHECKSUM" and f"the stream does not inflate ({words})" in r["message"], r
+    res = stop(j, tmp_path)
+    assert finals(tmp_path / "inbox") == []
+    assert not list((tmp_path / "inbox" / ".ttctl-partial").glob("*.part"))
+    assert not list((tmp_path / "inbox" / ".ttctl-partial").glob("*.out"))
+    assert all(not x["ok"] and x["code"] == "FAILED_CHECKSUM" for x in res["results"]), res["results"]
+
+
+
+def test_a_java_fetch_of_text_from_recv_file_serve_comes_deflated(classes: Path, tmp_path: Path,
+                                                                  start: Start) -> None:
+    """The server (recv-file --serve) offers a CSV log deflated; the Java requester takes the
+    stream, inflates it and checks it: the file as served, fewer bytes on the link."""
+    (tmp_path / "serve").mkdir()
+    (tmp_path / "serve" / "log.csv").write_bytes(flight_log_csv(seconds=60))
+    size = (tmp_path / "serve" / "log.csv").stat().st_size
+    port = free_port()
+    rx = receiver(start, tmp_path, f"udpin:{LOCAL}:{port}", "--rate", "50000", "--serve", str(tmp_path / "serve"))
+    r = Driver(classes, tmp_path, "java", link="udp", port=port, rate=50000, timeout=30, fetch="log.csv",
+               dir="got").finish(120)
+    assert r["fetch_ok"], r["_text"][-3000:]
+    assert sha(tmp_path / "got" / "log.csv") == sha(tmp_path / "serve" / "log.csv") == r["fetch_sha256"]
+    assert r["fetch_bytes"] == size and 0 < r["fetch_deflated"] < size / 3, r
+    rx.wait_for("served log.csv", where="stdout")
+    assert not list((tmp_path / "got" / ".ttctl-partial").glob("*.part"))
+
+
+NO_INFLATE = r'''
+import json, socket, sys, time
+from pathlib import Path
+import ttapi
+from ttctl.wire.bindings import Bindings
+from ttctl.proto.endpoint import Endpoint
+from ttctl.proto.storage import ReceiveDir
+
+sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+sock.bind(("127.0.0.1", 0))
+sock.settimeout(0.005)
+print(sock.getsockname()[1], flush=True)
+ep = Endpoint(Bindings(ttapi), 1, 240, rate_Bps=20000, receive_dir=ReceiveDir(Path(sys.argv[1])), inflate=False)
+peer = None
+t0 = time.monotonic()
+while time.monotonic() - t0 < float(sys.argv[2]) and not Path(sys.argv[1] + ".stop").exists():
+    now = time.monotonic() - t0
+    while peer is not None and (p := ep.poll(now)) is not None:
+        sock.sendto(p, peer)
+    try:
+        data, peer = sock.recvfrom(65536)
+        ep.receive(time.monotonic() - t0, data, peer)
+    except socket.timeout:
+        pass
+'''
+
+
+def test_the_java_sender_deflates_text_and_sends_the_rest_as_it_is(classes: Path, tmp_path: Path,
+                                                                   start: Start) -> None:
+    """The Java sender (FileTransfers.send) through the m100 relay at 10 % loss to `ttctl
+    recv-file`: a CSV log goes deflated (recv-file says so; the file verified byte for byte),
+    random bytes go as they are (the sample does not shrink)."""
+    a, b = free_port(), free_port()
+    rx = receiver(start, tmp_path, f"udpin:{LOCAL}:{b}", "--rate", "8000")
+    relay(start, a, b, "--profile", "m100", "--rate", "8000", "--loss", "0.1", "--seed", "22", "--stats-interval", "0")
+    (tmp_path / "log.csv").write_bytes(flight_log_csv(seconds=30))
+    size = (tmp_path / "log.csv").stat().st_size
+    r = Driver(classes, tmp_path, "java", link="udp", port=a, rate=8000, timeout=30, send="log.csv").finish(120)
+    assert r["send_ok"] and r["send_bytes"] == size and 0 < r["send_deflated"] < size / 3, r["_text"][-3000:]
+    assert sha(tmp_path / "inbox" / "log.csv") == sha(tmp_path / "log.csv")
+    rx.wait_for(f"accepted log.csv ({size} bytes) from 255/190, deflated to {r['send_deflated']} B on the link",
+                where="stdout")
+    (tmp_path / "noise.bin").write_bytes(os.urandom(6000))
+    r = Driver(classes, tmp_path, "java2", link="udp", port=a, rate=8000, timeout=30, send="noise.bin").finish(120)
+    assert r["send_ok"] and r["send_bytes"] == 6000 and r["send_deflated"] == -1, r["_text"][-3000:]
+    assert sha(tmp_path / "inbox" / "noise.bin") == sha(tmp_path / "noise.bin")
+
+
+def test_the_java_sender_falls_back_where_the_receiver_does_not_inflate(classes: Path, tmp_path: Path) -> None:
+    """A receiver that does not inflate (Python's, inflate=False, as a process) refuses the
+    deflated offer in words; the Java sender offers the file as it is under a new id, it
+    arrives verified, and the result says why it went as it is."""
+    (tmp_path / "mission.yaml").write_bytes(mission_yaml())
+    inbox = tmp_path / "inbox"
+    p = subprocess.Popen([sys.executable, "-c", NO_INFLATE, str(inbox), "60"], stdout=subprocess.PIPE, text=True,
+                         env={**os.environ, "PYTHONPATH": str(ROOT / "generated" / "python")})
+    try:
+        assert p.stdout is not None
+        port = int(p.stdout.readline())
+        r = Driver(classes, tmp_path, "java", link="udp", port=port, rate=20000, timeout=20,
+                   send="mission.yaml").finish(60)
+    finally:
+        Path(str(inbox) + ".stop").write_text("")
+        p.wait(10)
+    assert r["send_ok"] and r["send_deflated"] == -1, r["_text"][-3000:]
+    assert "(sent as it is: offer flags 0x04 not understood here: this receiver does not decompress)" in \
+        r["send_message"], r["send_message"]
+    assert sha(inbox / "mission.yaml") == sha(tmp_path / "mission.yaml")
+
