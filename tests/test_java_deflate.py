@@ -13,6 +13,7 @@ import os
 import shutil
 import subprocess
 import sys
+import time
 import zlib
 from pathlib import Path
 
@@ -21,7 +22,7 @@ import pytest
 from conformance_lib import build_java
 from conftest import ROOT
 from e2e_lib import LOCAL, Start, free_port, receiver, relay
-from test_java_session import DRIVERS, drone_send, sha, stop, tablet_inbox
+from test_java_session import DRIVERS, _ttctl, drone_send, sha, stop, tablet_inbox
 from test_java_transfer import DRIVERS as TABLET_DRIVERS
 from test_java_transfer import Driver
 from ttctl.bench.textfiles import flight_log_csv, mission_yaml
@@ -238,3 +239,75 @@ def test_the_java_sender_falls_back_where_the_receiver_does_not_inflate(classes:
         r["send_message"], r["send_message"]
     assert sha(inbox / "mission.yaml") == sha(tmp_path / "mission.yaml")
 
+
+def test_the_java_inbox_resumes_the_stream_ttctl_recv_file_left(classes: Path, tmp_path: Path,
+                                                                start: Start) -> None:
+    """A deflated upload resumes across receivers: `ttctl recv-file` takes the first part of
+    the zlib stream and is killed; the Java inbox, on the same port and folder, resumes from
+    the partial stream and record it left (KEY-zSIZE), inflates and verifies the file, and the
+    one send-file completes."""
+    (tmp_path / "outbox").mkdir()
+    port = free_port()
+    log = tmp_path / "big.csv"
+    log.write_bytes(flight_log_csv(seconds=300))
+    rx = start("recv", "recv-file", "--listen", f"udpin:{LOCAL}:{port}", "--dir", str(tmp_path / "inbox"),
+               "--rate", "4000", "--sysid", "255", "--compid", "190")
+    rx.wait_for("receiving into")
+    sender = subprocess.Popen([*_ttctl(), "send-file", str(log), "--to", f"udpout:{LOCAL}:{port}", "--rate", "4000",
+                               "--timeout", "30", "--json", "--sysid", "1", "--compid", "240", "--target-sysid", "255",
+                               "--target-compid", "190"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        rx.wait_for("accepted big.csv", where="stdout")
+        time.sleep(3.0)
+        rx.kill()
+        records = list((tmp_path / "inbox" / ".ttctl-partial").glob("*-z*.json"))
+        assert records and json.loads(records[0].read_text())["original"] == log.stat().st_size
+        j = tablet_inbox(classes, tmp_path, "tablet", port)
+        out, err = sender.communicate(timeout=90)
+    finally:
+        if sender.poll() is None:
+            sender.kill()
+    report = json.loads(out)
+    assert sender.returncode == 0 and report["ok"] and report["deflated_bytes"], err
+    r = stop(j, tmp_path)
+    (res,) = [x for x in r["results"] if x["name"] == "big.csv"]
+    assert res["ok"] and 0 < res["resumed"] < res["deflated"] == report["deflated_bytes"], res
+    assert res["moved"] == res["deflated"] - res["resumed"] and res["size"] == log.stat().st_size, res
+    assert sha(tmp_path / "inbox" / "big.csv") == sha(log)
+    assert not list((tmp_path / "inbox" / ".ttctl-partial").glob("*"))
+
+
+def test_ttctl_recv_file_resumes_the_stream_the_java_inbox_left(classes: Path, tmp_path: Path,
+                                                                start: Start) -> None:
+    """The other way: the Java inbox takes the first part of the zlib stream and its JVM is
+    killed (SIGKILL); `ttctl recv-file` on the same port and folder reads the partial stream
+    and record the Java end wrote ("original": the file's size) and resumes it."""
+    (tmp_path / "outbox").mkdir()
+    port = free_port()
+    log = tmp_path / "big.csv"
+    log.write_bytes(flight_log_csv(seconds=300))
+    j = tablet_inbox(classes, tmp_path, "tablet", port, rate=4000)
+    sender = subprocess.Popen([*_ttctl(), "send-file", str(log), "--to", f"udpout:{LOCAL}:{port}", "--rate", "4000",
+                               "--timeout", "30", "--json", "--sysid", "1", "--compid", "240", "--target-sysid", "255",
+                               "--target-compid", "190"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        j.wait_for("incoming incoming big.csv", timeout=30)
+        time.sleep(3.0)
+        j.kill()
+        records = list((tmp_path / "inbox" / ".ttctl-partial").glob("*-z*.json"))
+        assert records and json.loads(records[0].read_text())["original"] == log.stat().st_size
+        rx = start("recv", "recv-file", "--listen", f"udpin:{LOCAL}:{port}", "--dir", str(tmp_path / "inbox"),
+                   "--rate", "4000", "--sysid", "255", "--compid", "190")
+        rx.wait_for("receiving into")
+        out, err = sender.communicate(timeout=90)
+    finally:
+        if sender.poll() is None:
+            sender.kill()
+    report = json.loads(out)
+    assert sender.returncode == 0 and report["ok"] and report["deflated_bytes"], err
+    rx.wait_for("accepted big.csv", where="stdout")
+    (line,) = [ln for ln in rx.stdout.splitlines() if ln.startswith("accepted big.csv")]
+    assert f"deflated to {report['deflated_bytes']} B on the link, resuming with" in line, line
+    held = int(line.split("resuming with ")[1].split()[0])
+    assert 0 < held < report["deflated_bytes"], line
+    assert sha(tmp_path / "inbox" / "big.csv") == sha(log)
