@@ -311,3 +311,27 @@ def test_ttctl_recv_file_resumes_the_stream_the_java_inbox_left(classes: Path, t
     held = int(line.split("resuming with ")[1].split()[0])
     assert 0 < held < report["deflated_bytes"], line
     assert sha(tmp_path / "inbox" / "big.csv") == sha(log)
+
+
+def test_the_drone_fetches_text_the_java_end_serves_deflated(classes: Path, tmp_path: Path, start: Start) -> None:
+    """`ttctl send-file NAME --from` the Java end's served folder through the m100 relay at
+    10 % loss: the Java server offers the CSV log deflated, the Python requester inflates and
+    verifies it; random bytes served the same way go as they are."""
+    (tmp_path / "outbox").mkdir()
+    served = tmp_path / "outbox" / "log.csv"
+    served.write_bytes(flight_log_csv(seconds=30))
+    (tmp_path / "outbox" / "noise.bin").write_bytes(os.urandom(4000))
+    a, b = free_port(), free_port()
+    relay(start, a, b, "--profile", "m100", "--rate", "8000", "--loss", "0.1", "--seed", "23", "--stats-interval", "0")
+    j = tablet_inbox(classes, tmp_path, "tablet", b)
+    proc, rep = drone_send("log.csv", "--from", f"udpout:{LOCAL}:{a}", "--dir", str(tmp_path / "got"), "--rate", "8000",
+                           "--timeout", "30")
+    assert proc.returncode == 0 and rep["ok"], proc.stdout + proc.stderr
+    assert rep["deflated_bytes"] and rep["deflated_bytes"] < served.stat().st_size / 3, rep
+    assert sha(tmp_path / "got" / "log.csv") == sha(served)
+    proc, rep = drone_send("noise.bin", "--from", f"udpout:{LOCAL}:{a}", "--dir", str(tmp_path / "got"), "--rate",
+                           "8000", "--timeout", "30")
+    assert proc.returncode == 0 and rep["ok"] and not rep["deflated_bytes"], proc.stdout + proc.stderr
+    assert sha(tmp_path / "got" / "noise.bin") == sha(tmp_path / "outbox" / "noise.bin")
+    r = stop(j, tmp_path)
+    assert any(x["name"] == "log.csv" and x["ok"] and x["served"] for x in r["results"]), r
