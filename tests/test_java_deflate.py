@@ -355,3 +355,32 @@ def test_a_killed_java_sender_resumes_its_deflated_upload(classes: Path, tmp_pat
     assert r["send_moved"] == r["send_deflated"] - r["send_resumed"], r
     assert sha(tmp_path / "inbox" / "big.csv") == sha(tmp_path / "big.csv")
     rx.wait_for("resuming with", where="stdout")
+
+
+def test_what_arrived_as_it_is_is_not_orphaned_by_a_deflated_offer(classes: Path, tmp_path: Path,
+                                                                   start: Start) -> None:
+    """Part of the log reached the Java inbox as it is (`send-file --no-compress`, killed); the
+    same file offered deflated would orphan it: the inbox refuses that in the Python receiver's
+    words, the sender sends the file as it is and resumes what is there."""
+    (tmp_path / "outbox").mkdir()
+    port = free_port()
+    log = tmp_path / "big.csv"
+    log.write_bytes(flight_log_csv(seconds=100))
+    j = tablet_inbox(classes, tmp_path, "tablet", port, rate=4000)
+    first = subprocess.Popen([*_ttctl(), "send-file", str(log), "--to", f"udpout:{LOCAL}:{port}", "--rate", "4000",
+                              "--no-compress", "--timeout", "30", "--json", "--sysid", "1", "--compid", "240",
+                              "--target-sysid", "255", "--target-compid", "190"],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        j.wait_for("progress big.csv 8", timeout=30)
+    finally:
+        first.kill()
+        first.wait(10)
+    proc, r = drone_send(str(log), "--to", f"udpout:{LOCAL}:{port}", "--rate", "4000", "--timeout", "30")
+    assert proc.returncode == 0 and r["ok"] and r["deflated_bytes"] is None, proc.stdout + proc.stderr
+    assert r["deflate_fallback"] and r["deflate_fallback"].endswith(
+        "bytes of it as it is are here: send it uncompressed to resume"), r
+    held = int(r["deflate_fallback"].split()[0])
+    assert held >= 8192 and r["resumed_bytes"] >= held, r
+    stop(j, tmp_path)
+    assert sha(tmp_path / "inbox" / "big.csv") == sha(log)
