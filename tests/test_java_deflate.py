@@ -48,6 +48,7 @@ from ttctl.proto.storage import BytesSource
 from ttctl.proto.transfer import TransferConfig, meta_check
 
 port, stream_path, original_path, declared = int(sys.argv[1]), sys.argv[2], sys.argv[3], int(sys.argv[4])
+name = sys.argv[5].encode()
 stream = Path(stream_path).read_bytes()
 original = Path(original_path).read_bytes()
 cfg = TransferConfig()
@@ -58,7 +59,7 @@ src.sha256 = hashlib.sha256(original).digest()
 s = ep.send_file("x.txt", (255, 190), source=src, compress=False)
 s._flags |= 4  # TT_FILE_FLAGS_DEFLATE, with the metadata a deflated offer carries
 s.flags = s._flags
-s.meta = deflate_meta(src.sha256, declared, b"x.txt")
+s.meta = deflate_meta(src.sha256, declared, name)
 s.check = meta_check(s.meta)
 s.deflated = None  # no fallback: a hostile sender does not give up
 sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
@@ -80,11 +81,11 @@ print(json.dumps({"done": s.done, "code": r.code if r else None, "message": r.me
 '''
 
 
-def forge(tmp: Path, port: int, stream: bytes, original: bytes, declared: int) -> dict:
+def forge(tmp: Path, port: int, stream: bytes, original: bytes, declared: int, name: str = "x.txt") -> dict:
     (tmp / "stream.z").write_bytes(stream)
     (tmp / "original.bin").write_bytes(original)
     proc = subprocess.run([sys.executable, "-c", FORGE, str(port), str(tmp / "stream.z"), str(tmp / "original.bin"),
-                           str(declared)], capture_output=True, text=True, timeout=90,
+                           str(declared), name], capture_output=True, text=True, timeout=90,
                           env={**os.environ, "PYTHONPATH": str(ROOT / "generated" / "python")})
     assert proc.returncode == 0, proc.stderr[-3000:]
     out: dict = json.loads(proc.stdout.strip().splitlines()[-1])
@@ -123,7 +124,8 @@ def test_forged_streams_are_refused_in_words_and_leave_nothing(classes: Path, tm
     """Straight to the Java inbox's socket: a bomb (1 MiB of zeros declared as 4096 bytes) is
     stopped at the declared size; a stream of less than declared, and a corrupt one, are refused
     with the inflater's words; each is FAILED_CHECKSUM as the Python receiver says it, nothing
-    under the name, no partial kept (no resume can use it)."""
+    under the name, no partial kept (no resume can use it). A deflate offer whose metadata ends
+    at the size (no name) is REFUSED_NAME at the offer, before any data."""
     (tmp_path / "outbox").mkdir()
     port = free_port()
     j = tablet_inbox(classes, tmp_path, "tablet", port)
@@ -144,11 +146,14 @@ def test_forged_streams_are_refused_in_words_and_leave_nothing(classes: Path, tm
         words = str(e).split(": ", 1)[-1]  # zlib's own words, as Python's receiver quotes them
     r = forge(tmp_path, port, bytes(corrupt), text, len(text))
     assert r["code"] == "FAILED_CHECKSUM" and f"the stream does not inflate ({words})" in r["message"], r
+    r = forge(tmp_path, port, zlib.compress(text, 6), text, len(text), name="")  # the size, then no name
+    assert r["code"] == "REFUSED_NAME" and "the deflate offer carries no name" in r["message"] and r["sent"] == 0, r
     res = stop(j, tmp_path)
     assert finals(tmp_path / "inbox") == []
     assert not list((tmp_path / "inbox" / ".ttctl-partial").glob("*.part"))
     assert not list((tmp_path / "inbox" / ".ttctl-partial").glob("*.out"))
-    assert all(not x["ok"] and x["code"] == "FAILED_CHECKSUM" for x in res["results"]), res["results"]
+    assert not any(x["ok"] for x in res["results"]), res["results"]
+    assert {x["code"] for x in res["results"]} == {"FAILED_CHECKSUM", "REFUSED_NAME"}, res["results"]
 
 
 
