@@ -342,19 +342,33 @@ def test_the_drone_fetches_text_the_java_end_serves_deflated(classes: Path, tmp_
     assert any(x["name"] == "log.csv" and x["ok"] and x["served"] for x in r["results"]), r
 
 
-def test_a_killed_java_sender_resumes_its_deflated_upload(classes: Path, tmp_path: Path, start: Start) -> None:
-    """The Java sender's JVM is killed (SIGKILL) a fifth of the way into a deflated upload to
-    `ttctl recv-file`; a new one sending the same file makes the same stream (level 6, whole
-    file), so the receiver's partial stream resumes: only the rest moves, and the file lands
-    verified."""
+@pytest.mark.parametrize("first", ["java", "python"])
+def test_a_killed_sender_s_deflated_upload_is_resumed_by_the_java_sender(classes: Path, tmp_path: Path,
+                                                                         start: Start, first: str) -> None:
+    """The first sender (the Java runtime, or `ttctl send-file`) is killed (SIGKILL) a fifth
+    of the way into a deflated upload to `ttctl recv-file`; the Java sender sending the same
+    file makes the same stream (zlib level 6, whole file: java.util.zip and Python's zlib write
+    the same bytes), so the receiver's partial stream resumes: only the rest moves, and the
+    file lands verified."""
     port = free_port()
     rx = receiver(start, tmp_path, f"udpin:{LOCAL}:{port}", "--rate", "4000")
     (tmp_path / "big.csv").write_bytes(flight_log_csv(seconds=300))
-    d = Driver(classes, tmp_path, "java", link="udp", port=port, rate=4000, timeout=30, send="big.csv")
-    d.wait_for("EVENT progress send")  # printed every 8 KiB
-    d.p.kill()
-    d.p.wait(10)
-    d._out.close()
+    if first == "java":
+        d = Driver(classes, tmp_path, "java", link="udp", port=port, rate=4000, timeout=30, send="big.csv")
+        d.wait_for("EVENT progress send")  # printed every 8 KiB
+        d.p.kill()
+        d.p.wait(10)
+        d._out.close()
+    else:
+        p = subprocess.Popen([*_ttctl(), "send-file", str(tmp_path / "big.csv"), "--to", f"udpout:{LOCAL}:{port}",
+                              "--rate", "4000", "--timeout", "30", "--sysid", "255", "--compid", "190"],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        try:
+            rx.wait_for("accepted big.csv", where="stdout")
+            time.sleep(3.0)
+        finally:
+            p.kill()
+            p.wait(10)
     r = Driver(classes, tmp_path, "java2", link="udp", port=port, rate=4000, timeout=30, send="big.csv").finish(120)
     assert r["send_ok"] and r["send_deflated"] > 0 and 0 < r["send_resumed"] < r["send_deflated"], r["_text"][-3000:]
     assert r["send_moved"] == r["send_deflated"] - r["send_resumed"], r
