@@ -40,7 +40,7 @@ final class FileFetch {
     double refusalAt;
     TransferResult result;
     double finishedAt = Double.NaN;
-    FileReceiver.Incoming incoming;
+    Incoming incoming;
     long have;
 
     FileFetch(long requestId, String name, int targetSys, int targetComp, ReceiveDir store, TransferConfig cfg,
@@ -133,7 +133,7 @@ final class FileFetch {
     }
 
     /** The peer offered the file: the receiver's transfer is this download's from now on. */
-    void attach(double now, FileReceiver.Incoming t) {
+    void attach(double now, Incoming t) {
         answered = true;
         incoming = t;
         lastProgress = now;

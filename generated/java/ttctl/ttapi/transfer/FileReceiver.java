@@ -13,10 +13,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
-import ttctl.ttapi.enums.TtFileFlags;
 import ttctl.ttapi.enums.TtFileResult;
 import ttctl.ttapi.msg.TtFileOffer;
-import ttctl.ttapi.msg.TtFileReason;
 import ttctl.ttapi.msg.TtFileStatus;
 import ttctl.ttapi.runtime.MavlinkMessage;
 
@@ -33,7 +31,8 @@ import ttctl.ttapi.runtime.MavlinkMessage;
  * disk before it was built. Floods are bounded: at most {@value #MAX_PENDING_OFFERS} offers
  * whose metadata is still arriving (beyond that the one heard least recently is forgotten, so a
  * flood of them never locks a real sender out), {@value #MAX_KNOWN} transfers remembered, and
- * answers to data of unknown transfers at most once per offer interval each. Not thread-safe:
+ * answers to data of unknown transfers at most once per offer interval each. Each transfer is an
+ * {@link Incoming}, which also words its statuses and reasons. Not thread-safe:
  * {@link FileTransfers} calls it under its lock; times are its seconds.
  */
 final class FileReceiver {
@@ -89,72 +88,6 @@ final class FileReceiver {
         Expected(String name, ReceiveDir store) {
             this.name = name;
             this.store = store;
-        }
-    }
-
-    /** The receiving side of one transfer. */
-    static final class Incoming {
-        final Key key;
-        byte[] meta = new byte[0];
-        RangeSet metaHave = new RangeSet();
-        int metaLength;
-        long size; // bytes on the link: the file's, or its zlib stream's
-        long original = -1; // the file's size when its zlib stream is offered (Deflate)
-        int flags;
-        long requestId;
-        String name = "";
-        byte[] sha256;
-        long check;
-        boolean decided;
-        ReceiveDir store;
-        String group;
-        Partial partial;
-        int result = TtFileResult.TT_FILE_RESULT_IN_PROGRESS;
-        String reason = "";
-        long frames;
-        double lastActivity;
-        double statusDue = Double.NaN;
-        double lastStatus = -1e9;
-        File finalPath;
-        double finishedAt = Double.NaN;
-        boolean nothingSent;
-        boolean identical;
-        final double started;
-        double lastData = Double.NaN;
-        long lastOffset;
-        boolean seenEnd;
-        double gapDt = 0.05;
-        double quietDue = Double.NaN;
-        boolean saidBusy;
-        // for the app: the Transfer it sees, and what the partial held when this transfer began
-        Transfer transfer;
-        long resumed = -1;
-        long have;
-
-        Incoming(Key key, double now) {
-            this.key = key;
-            this.lastActivity = now;
-            this.started = now;
-        }
-
-        String who() {
-            return key.sys + "/" + key.comp;
-        }
-
-        boolean overwrite() {
-            return (flags & TtFileFlags.TT_FILE_FLAGS_OVERWRITE) != 0;
-        }
-
-        long fileSize() {
-            return original < 0 ? size : original;
-        }
-
-        /** Bytes of the file here (all of it once complete). */
-        long held() {
-            if (result == TtFileResult.TT_FILE_RESULT_COMPLETE) {
-                return size;
-            }
-            return partial != null ? partial.ranges.total() : have;
         }
     }
 
@@ -643,62 +576,6 @@ final class FileReceiver {
     }
 
     // -- statuses ----------------------------------------------------------------------------
-    private List<MavlinkMessage> statuses(Incoming t) {
-        List<MavlinkMessage> out = new ArrayList<>();
-        if (t.partial == null) {
-            long done = t.result == TtFileResult.TT_FILE_RESULT_COMPLETE ? t.size : 0;
-            out.add(status(t, done, done, done, new ArrayList<long[]>()));
-            return out;
-        }
-        RangeSet ranges = t.partial.ranges;
-        long rc = ranges.prefix();
-        long last = ranges.last();
-        List<long[]> gaps = ranges.gaps(rc, last);
-        long start = rc;
-        for (int k = 0; k < Math.max(1, cfg.statusBatches); k++) {
-            int from = k * MAX_RANGES;
-            List<long[]> batch = gaps.subList(Math.min(from, gaps.size()), Math.min(from + MAX_RANGES, gaps.size()));
-            boolean more = gaps.size() > (k + 1) * MAX_RANGES;
-            long end = more ? batch.get(batch.size() - 1)[1] : last;
-            out.add(status(t, rc, start, end, batch));
-            start = end;
-            if (!more) {
-                break;
-            }
-        }
-        return out;
-    }
-
-    private TtFileStatus status(Incoming t, long rc, long region, long re, List<long[]> gaps) {
-        TtFileStatus s = new TtFileStatus();
-        s.target_system = t.key.sys;
-        s.target_component = t.key.comp;
-        s.transfer_id = t.key.id;
-        s.result = t.result;
-        s.received_contiguous = rc;
-        s.region_start = region;
-        s.received_end = re;
-        s.last_offset = t.lastOffset;
-        s.hold_ms = Double.isNaN(t.lastData) ? 65535 : (int) Math.min(65535, 1000 * (now - t.lastData));
-        s.range_count = gaps.size();
-        s.meta_check = t.check;
-        s.ranges = new long[2 * MAX_RANGES];
-        for (int i = 0; i < gaps.size(); i++) {
-            s.ranges[2 * i] = gaps.get(i)[0];
-            s.ranges[2 * i + 1] = gaps.get(i)[1];
-        }
-        return s;
-    }
-
-    private static boolean explained(int result) {
-        return result == TtFileResult.TT_FILE_RESULT_REFUSED_NAME || result == TtFileResult.TT_FILE_RESULT_REFUSED_EXISTS
-                || result == TtFileResult.TT_FILE_RESULT_REFUSED_QUOTA || result == TtFileResult.TT_FILE_RESULT_REFUSED_BUSY
-                || result == TtFileResult.TT_FILE_RESULT_FAILED_CHECKSUM
-                || result == TtFileResult.TT_FILE_RESULT_FAILED_DISK_FULL || result == TtFileResult.TT_FILE_RESULT_FAILED_IO
-                || result == TtFileResult.TT_FILE_RESULT_CANCELLED
-                || result == TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED;
-    }
-
     /**
      * Statuses due now (each after the reason for a refusal or failure); forgets silent
      * transfers. Partial state is saved before the statuses that report it leave.
@@ -718,16 +595,7 @@ final class FileReceiver {
             if (t.partial != null) {
                 t.partial.save();
             }
-            if (explained(t.result) && !t.reason.isEmpty()) {
-                TtFileReason r = new TtFileReason();
-                r.target_system = t.key.sys;
-                r.target_component = t.key.comp;
-                r.transfer_id = t.key.id;
-                r.result = t.result;
-                r.text = Arrays.copyOf(Names.fit(t.reason, 80), 80);
-                out.add(r);
-            }
-            out.addAll(statuses(t));
+            out.addAll(t.answers(Math.max(1, cfg.statusBatches), now));
             t.lastStatus = now;
             t.quietDue = Double.NaN;
             boolean flowing = t.result == TtFileResult.TT_FILE_RESULT_IN_PROGRESS && t.partial != null

@@ -96,7 +96,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
     private final Map<Transfer, FileSender> senders = new HashMap<>();
     private final Map<Transfer, LinkScheduler.BulkSource> pulls = new HashMap<>();
     private final Map<Transfer, FileFetch> fetches = new HashMap<>();
-    private final Map<Transfer, FileReceiver.Incoming> incoming = new LinkedHashMap<>();
+    private final Map<Transfer, Incoming> incoming = new LinkedHashMap<>();
     private final Map<FileReceiver.Key, ServedRequest> served = new LinkedHashMap<>();
     private final List<Transfer> announce = new ArrayList<>();
     private final FileReceiver receiver;
@@ -140,7 +140,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         this.listeners = listeners == null ? ownListeners : Callbacks.serial(listeners);
         this.receiver = new FileReceiver(receiverConfig(scheduler.rate()), 8, new FileReceiver.Events() {
             @Override
-            public void event(String what, FileReceiver.Incoming t) {
+            public void event(String what, Incoming t) {
                 onReceiverEvent(what, t);
             }
         });
@@ -411,7 +411,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
                     receiver.cancel(f.incoming, now);
                 }
             }
-            FileReceiver.Incoming in = incoming.get(t);
+            Incoming in = incoming.get(t);
             if (in != null && !finalResult(in.result)) {
                 receiver.cancel(in, now);
             }
@@ -591,7 +591,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         }
         receiver.onOffer(now, o.sysId(), o.compId(), o);
         if (fetch != null && fetch.incoming == null) {
-            FileReceiver.Incoming t = receiver.transfers.get(new FileReceiver.Key(o.sysId(), o.compId(), o.transfer_id));
+            Incoming t = receiver.transfers.get(new FileReceiver.Key(o.sysId(), o.compId(), o.transfer_id));
             if (t != null) {
                 fetch.attach(now, t);
             }
@@ -763,7 +763,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
 
     // -- the inbox ---------------------------------------------------------------------------
     /** Under the lock, from the receiver: a transfer the peer pushes gets its Transfer when decided. */
-    private void onReceiverEvent(String what, FileReceiver.Incoming t) {
+    private void onReceiverEvent(String what, Incoming t) {
         if (t.requestId != 0 || t.transfer != null || "busy".equals(what)) {
             return; // a download (its fetch follows it), one told already, or one still waiting
         }
@@ -775,7 +775,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
     }
 
     /** Under the lock: the end of a pushed file's transfer, once it has one. */
-    private TransferResult incomingResult(double now, Transfer tr, FileReceiver.Incoming t, String problem) {
+    private TransferResult incomingResult(double now, Transfer tr, Incoming t, String problem) {
         int r = t.result;
         long resumed = Math.max(0, t.resumed);
         String from = " from " + t.who();
@@ -920,11 +920,11 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
             out.add(encode(m));
         }
         next = min(next, receiver.deadline());
-        Iterator<Map.Entry<Transfer, FileReceiver.Incoming>> kt = incoming.entrySet().iterator();
+        Iterator<Map.Entry<Transfer, Incoming>> kt = incoming.entrySet().iterator();
         while (kt.hasNext()) {
-            Map.Entry<Transfer, FileReceiver.Incoming> e = kt.next();
+            Map.Entry<Transfer, Incoming> e = kt.next();
             Transfer tr = e.getKey();
-            FileReceiver.Incoming t = e.getValue();
+            Incoming t = e.getValue();
             if (!tr.isDone()) {
                 TransferResult r = incomingResult(now, tr, t, problem);
                 progress(tr, t.held(), t.size, r, calls);
@@ -1000,8 +1000,8 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
                 e.getValue().cancel(now);
                 progress(e.getKey(), e.getValue().have, e.getValue().size(), e.getValue().result, calls);
             }
-            for (Map.Entry<Transfer, FileReceiver.Incoming> e : incoming.entrySet()) {
-                FileReceiver.Incoming t = e.getValue();
+            for (Map.Entry<Transfer, Incoming> e : incoming.entrySet()) {
+                Incoming t = e.getValue();
                 progress(e.getKey(), t.held(), t.size, new TransferResult(false, "CANCELLED", t.name + " from " + t.who()
                         + ": cancelled (what arrived is kept for a resume)", t.name, t.size, now - t.started, 0, 0,
                         Math.max(0, t.resumed), Math.max(0, t.held() - Math.max(0, t.resumed)), false, null), calls);
