@@ -410,7 +410,8 @@ public final class SessionDriver {
                     Json j = new Json().put("name", r.name).put("ok", r.ok).put("code", r.code).put("message", r.message)
                             .put("size", r.size).put("resumed", r.resumedBytes).put("moved", r.bytesMoved)
                             .put("seconds", r.seconds).put("goodput", r.goodput()).put("served", tr.isUpload())
-                            .put("peer", tr.peer()).put("file", r.file == null ? null : r.file.getPath());
+                            .put("peer", tr.peer()).put("file", r.file == null ? null : r.file.getPath())
+                            .put("deflated", r.deflatedSize);
                     results.add(j.toString());
                     event("done " + j);
                 }

@@ -40,7 +40,7 @@ final class FileFetch {
     double refusalAt;
     TransferResult result;
     double finishedAt = Double.NaN;
-    FileReceiver.Incoming incoming;
+    Incoming incoming;
     long have;
 
     FileFetch(long requestId, String name, int targetSys, int targetComp, ReceiveDir store, TransferConfig cfg,
@@ -77,8 +77,10 @@ final class FileFetch {
         }
         long size = size();
         long moved = Math.max(0, (ok ? size : have) - resumed());
-        result = new TransferResult(ok, code, message, name, size, now - started, 0, 0, resumed(), moved,
-                ok && incoming != null && incoming.nothingSent, ok ? incoming.finalPath : null);
+        boolean z = incoming != null && incoming.original >= 0; // it came deflated: size() counts the stream
+        result = new TransferResult(ok, code, message, name, z ? incoming.original : size, now - started, 0, 0,
+                resumed(), moved, ok && incoming != null && incoming.nothingSent, ok ? incoming.finalPath : null,
+                z ? size : -1);
         finishedAt = now;
     }
 
@@ -131,7 +133,7 @@ final class FileFetch {
     }
 
     /** The peer offered the file: the receiver's transfer is this download's from now on. */
-    void attach(double now, FileReceiver.Incoming t) {
+    void attach(double now, Incoming t) {
         answered = true;
         incoming = t;
         lastProgress = now;
@@ -151,7 +153,7 @@ final class FileFetch {
             }
             int r = incoming.result;
             if (r == TtFileResult.TT_FILE_RESULT_COMPLETE) {
-                finish(now, true, "COMPLETE", name + ": " + incoming.size + " bytes "
+                finish(now, true, "COMPLETE", name + ": " + incoming.fileSize() + " bytes "
                         + (incoming.identical ? "already here (the same SHA-256)" : "received and verified"));
                 return out;
             }

@@ -13,10 +13,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
-import ttctl.ttapi.enums.TtFileFlags;
 import ttctl.ttapi.enums.TtFileResult;
 import ttctl.ttapi.msg.TtFileOffer;
-import ttctl.ttapi.msg.TtFileReason;
 import ttctl.ttapi.msg.TtFileStatus;
 import ttctl.ttapi.runtime.MavlinkMessage;
 
@@ -33,7 +31,8 @@ import ttctl.ttapi.runtime.MavlinkMessage;
  * disk before it was built. Floods are bounded: at most {@value #MAX_PENDING_OFFERS} offers
  * whose metadata is still arriving (beyond that the one heard least recently is forgotten, so a
  * flood of them never locks a real sender out), {@value #MAX_KNOWN} transfers remembered, and
- * answers to data of unknown transfers at most once per offer interval each. Not thread-safe:
+ * answers to data of unknown transfers at most once per offer interval each. Each transfer is an
+ * {@link Incoming}, which also words its statuses and reasons. Not thread-safe:
  * {@link FileTransfers} calls it under its lock; times are its seconds.
  */
 final class FileReceiver {
@@ -89,67 +88,6 @@ final class FileReceiver {
         Expected(String name, ReceiveDir store) {
             this.name = name;
             this.store = store;
-        }
-    }
-
-    /** The receiving side of one transfer. */
-    static final class Incoming {
-        final Key key;
-        byte[] meta = new byte[0];
-        RangeSet metaHave = new RangeSet();
-        int metaLength;
-        long size;
-        int flags;
-        long requestId;
-        String name = "";
-        byte[] sha256;
-        long check;
-        boolean decided;
-        ReceiveDir store;
-        String group;
-        Partial partial;
-        int result = TtFileResult.TT_FILE_RESULT_IN_PROGRESS;
-        String reason = "";
-        long frames;
-        double lastActivity;
-        double statusDue = Double.NaN;
-        double lastStatus = -1e9;
-        File finalPath;
-        double finishedAt = Double.NaN;
-        boolean nothingSent;
-        boolean identical;
-        final double started;
-        double lastData = Double.NaN;
-        long lastOffset;
-        boolean seenEnd;
-        double gapDt = 0.05;
-        double quietDue = Double.NaN;
-        boolean saidBusy;
-        // for the app: the Transfer it sees, and what the partial held when this transfer began
-        Transfer transfer;
-        long resumed = -1;
-        long have;
-
-        Incoming(Key key, double now) {
-            this.key = key;
-            this.lastActivity = now;
-            this.started = now;
-        }
-
-        String who() {
-            return key.sys + "/" + key.comp;
-        }
-
-        boolean overwrite() {
-            return (flags & TtFileFlags.TT_FILE_FLAGS_OVERWRITE) != 0;
-        }
-
-        /** Bytes of the file here (all of it once complete). */
-        long held() {
-            if (result == TtFileResult.TT_FILE_RESULT_COMPLETE) {
-                return size;
-            }
-            return partial != null ? partial.ranges.total() : have;
         }
     }
 
@@ -312,7 +250,12 @@ final class FileReceiver {
             return;
         }
         t.sha256 = Arrays.copyOf(meta, Math.min(Names.SHA_LEN, meta.length));
-        byte[] rawName = Arrays.copyOfRange(meta, Math.min(Names.SHA_LEN, meta.length), meta.length);
+        boolean deflated = (t.flags & Deflate.FLAG) != 0;
+        if (deflated && (t.original = Deflate.original(meta)) < 0) {
+            refuse(t, now, TtFileResult.TT_FILE_RESULT_REFUSED_NAME, "the deflate offer carries no name");
+            return;
+        }
+        byte[] rawName = Deflate.name(meta, deflated);
         String name = Names.strictUtf8(rawName);
         if (name == null) {
             t.name = new String(rawName, Names.UTF8);
@@ -340,7 +283,13 @@ final class FileReceiver {
         } else {
             store = inbox;
         }
-        String group = store.root.getPath() + "\u0000" + Partial.key(t.name, t.size, t.sha256);
+        long held = t.original < 0 ? 0 : heldAsItIs(t, store);
+        if (held > 0) { // orphaned by its stream: the sender falls back to the file and resumes it
+            refuse(t, now, TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED, held
+                    + " bytes of it as it is are here: send it uncompressed to resume");
+            return;
+        }
+        String group = store.root.getPath() + "\u0000" + Partial.key(t.name, t.size, t.sha256, t.original);
         if (!groups.containsKey(group)) {
             for (Incoming other : new ArrayList<>(transfers.values())) {
                 if (other.partial == null || other == t || !other.name.equals(t.name) || other.store != store) {
@@ -359,7 +308,7 @@ final class FileReceiver {
             }
             boolean already;
             try {
-                already = store.admit(t.name, t.size, t.overwrite(), t.sha256);
+                already = store.admit(t.name, t.fileSize(), t.overwrite(), t.sha256, t.original < 0 ? 0 : t.size);
             } catch (ReceiveDir.Refused e) {
                 refuse(t, now, refusal(e.code), e.reason);
                 return;
@@ -383,7 +332,7 @@ final class FileReceiver {
                 t.statusDue = now;
                 return;
             }
-            groups.put(group, new Group(store.partial(t.name, t.size, t.sha256)));
+            groups.put(group, new Group(store.partial(t.name, t.size, t.sha256, t.original)));
         }
         Group g = groups.get(group);
         g.members.add(t.key);
@@ -399,6 +348,12 @@ final class FileReceiver {
             complete(group, now);
         }
         t.statusDue = now;
+    }
+
+    /** Bytes held of the file a deflated offer carries, received as it is. */
+    private long heldAsItIs(Incoming t, ReceiveDir store) {
+        Group g = groups.get(store.root.getPath() + "\u0000" + Partial.key(t.name, t.original, t.sha256, -1));
+        return g != null ? g.partial.ranges.total() : store.partial(t.name, t.original, t.sha256, -1).ranges.total();
     }
 
     // -- data --------------------------------------------------------------------------------
@@ -532,8 +487,21 @@ final class FileReceiver {
         boolean good;
         try {
             good = g.partial.verify();
+        } catch (Deflate.Failed e) {
+            g.partial.discard(); // a whole stream that is not the file: no resume can use it
+            endGroup(group, now, TtFileResult.TT_FILE_RESULT_FAILED_CHECKSUM, e.getMessage(), false, null);
+            return;
         } catch (IOException e) {
-            good = false;
+            if (g.partial.original < 0) {
+                good = false;
+            } else { // inflating: the stream is whole and stays
+                String why = String.valueOf(e.getMessage());
+                boolean full = why.contains("No space left") || why.contains("Disk quota");
+                endGroup(group, now, full ? TtFileResult.TT_FILE_RESULT_FAILED_DISK_FULL
+                        : TtFileResult.TT_FILE_RESULT_FAILED_IO, g.partial.name + ": inflating: " + why
+                        + " (the stream is kept for a resume)", true, null);
+                return;
+            }
         }
         if (!good) {
             g.partial.discard();
@@ -608,62 +576,6 @@ final class FileReceiver {
     }
 
     // -- statuses ----------------------------------------------------------------------------
-    private List<MavlinkMessage> statuses(Incoming t) {
-        List<MavlinkMessage> out = new ArrayList<>();
-        if (t.partial == null) {
-            long done = t.result == TtFileResult.TT_FILE_RESULT_COMPLETE ? t.size : 0;
-            out.add(status(t, done, done, done, new ArrayList<long[]>()));
-            return out;
-        }
-        RangeSet ranges = t.partial.ranges;
-        long rc = ranges.prefix();
-        long last = ranges.last();
-        List<long[]> gaps = ranges.gaps(rc, last);
-        long start = rc;
-        for (int k = 0; k < Math.max(1, cfg.statusBatches); k++) {
-            int from = k * MAX_RANGES;
-            List<long[]> batch = gaps.subList(Math.min(from, gaps.size()), Math.min(from + MAX_RANGES, gaps.size()));
-            boolean more = gaps.size() > (k + 1) * MAX_RANGES;
-            long end = more ? batch.get(batch.size() - 1)[1] : last;
-            out.add(status(t, rc, start, end, batch));
-            start = end;
-            if (!more) {
-                break;
-            }
-        }
-        return out;
-    }
-
-    private TtFileStatus status(Incoming t, long rc, long region, long re, List<long[]> gaps) {
-        TtFileStatus s = new TtFileStatus();
-        s.target_system = t.key.sys;
-        s.target_component = t.key.comp;
-        s.transfer_id = t.key.id;
-        s.result = t.result;
-        s.received_contiguous = rc;
-        s.region_start = region;
-        s.received_end = re;
-        s.last_offset = t.lastOffset;
-        s.hold_ms = Double.isNaN(t.lastData) ? 65535 : (int) Math.min(65535, 1000 * (now - t.lastData));
-        s.range_count = gaps.size();
-        s.meta_check = t.check;
-        s.ranges = new long[2 * MAX_RANGES];
-        for (int i = 0; i < gaps.size(); i++) {
-            s.ranges[2 * i] = gaps.get(i)[0];
-            s.ranges[2 * i + 1] = gaps.get(i)[1];
-        }
-        return s;
-    }
-
-    private static boolean explained(int result) {
-        return result == TtFileResult.TT_FILE_RESULT_REFUSED_NAME || result == TtFileResult.TT_FILE_RESULT_REFUSED_EXISTS
-                || result == TtFileResult.TT_FILE_RESULT_REFUSED_QUOTA || result == TtFileResult.TT_FILE_RESULT_REFUSED_BUSY
-                || result == TtFileResult.TT_FILE_RESULT_FAILED_CHECKSUM
-                || result == TtFileResult.TT_FILE_RESULT_FAILED_DISK_FULL || result == TtFileResult.TT_FILE_RESULT_FAILED_IO
-                || result == TtFileResult.TT_FILE_RESULT_CANCELLED
-                || result == TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED;
-    }
-
     /**
      * Statuses due now (each after the reason for a refusal or failure); forgets silent
      * transfers. Partial state is saved before the statuses that report it leave.
@@ -683,16 +595,7 @@ final class FileReceiver {
             if (t.partial != null) {
                 t.partial.save();
             }
-            if (explained(t.result) && !t.reason.isEmpty()) {
-                TtFileReason r = new TtFileReason();
-                r.target_system = t.key.sys;
-                r.target_component = t.key.comp;
-                r.transfer_id = t.key.id;
-                r.result = t.result;
-                r.text = Arrays.copyOf(Names.fit(t.reason, 80), 80);
-                out.add(r);
-            }
-            out.addAll(statuses(t));
+            out.addAll(t.answers(Math.max(1, cfg.statusBatches), now));
             t.lastStatus = now;
             t.quietDue = Double.NaN;
             boolean flowing = t.result == TtFileResult.TT_FILE_RESULT_IN_PROGRESS && t.partial != null

@@ -22,7 +22,9 @@ import ttctl.ttapi.runtime.MavlinkMessage;
  * The sending side of one file transfer, sans-IO: a faithful port of ttctl's Python
  * proto/sender.py (the same offers, nonce, metadata check, narrow/wide choice from the measured
  * loss, retransmission rules). Not thread-safe: {@link FileTransfers} calls it under its lock.
- * Times are seconds on one monotonic clock.
+ * Times are seconds on one monotonic clock. Given a {@link Deflate.Stream} of the file, it offers
+ * that (TT_FILE_FLAGS_DEFLATE) and, if the receiver will not take it, the file as it is under a
+ * new id ({@link #fallback} says why), as the Python sender does.
  */
 final class FileSender {
     static final int NARROW = 80;
@@ -37,14 +39,19 @@ final class FileSender {
     final RandomAccessFile raf;
     final long fileModified;
     final String name;
-    final long size;
+    final long fileSize;
+    long size; // bytes on the link: the file's, or its zlib stream's
     final int targetSys;
     final int targetComp;
     final TransferConfig cfg;
     final long requestId;
-    final int flags;
-    final byte[] meta;
-    final long check;
+    private final int baseFlags;
+    private final byte[] sha256;
+    int flags;
+    byte[] meta;
+    long check;
+    Deflate.Stream deflated; // null: the file as it is
+    String fallback; // why a deflated offer went back to the file as it is
     TransferResult result;
     String busy;
     double started;
@@ -85,28 +92,42 @@ final class FileSender {
     int answers;
 
     FileSender(LongSupplier newId, File file, byte[] sha256, String name, int targetSys, int targetComp,
-               TransferConfig cfg, long requestId, boolean overwrite, double now) throws IOException {
+               TransferConfig cfg, long requestId, boolean overwrite, double now, Deflate.Stream deflated)
+            throws IOException {
         this.newId = newId;
         this.id = newId.getAsLong();
         this.file = file;
         this.raf = new RandomAccessFile(file, "r");
         this.fileModified = file.lastModified();
-        this.size = raf.length();
+        this.fileSize = raf.length();
         this.name = name;
         this.targetSys = targetSys;
         this.targetComp = targetComp;
         this.cfg = cfg;
         this.requestId = requestId;
-        this.flags = overwrite ? TtFileFlags.TT_FILE_FLAGS_OVERWRITE : 0;
-        byte[] n = Names.utf8(name);
-        this.meta = new byte[sha256.length + n.length];
-        System.arraycopy(sha256, 0, meta, 0, sha256.length);
-        System.arraycopy(n, 0, meta, sha256.length, n.length);
-        this.check = Names.metaCheck(meta);
+        this.baseFlags = overwrite ? TtFileFlags.TT_FILE_FLAGS_OVERWRITE : 0;
+        this.sha256 = sha256;
+        use(deflated);
         this.started = now;
         this.lastHeard = now;
         this.lastProgress = now;
         begin(now);
+    }
+
+    /** Offers the zlib stream {@code z}, or the file as it is (null). */
+    private void use(Deflate.Stream z) {
+        deflated = z;
+        size = z != null ? z.size : fileSize;
+        flags = baseFlags | (z != null ? Deflate.FLAG : 0);
+        byte[] n = Names.utf8(name);
+        if (z != null) {
+            meta = Deflate.meta(sha256, fileSize, n);
+        } else {
+            meta = new byte[sha256.length + n.length];
+            System.arraycopy(sha256, 0, meta, 0, sha256.length);
+            System.arraycopy(n, 0, meta, sha256.length, n.length);
+        }
+        check = Names.metaCheck(meta);
     }
 
     private void begin(double now) {
@@ -144,8 +165,12 @@ final class FileSender {
         state = ok ? "complete" : "failed";
         long resumed = ok ? Math.min(resumedBytes, size) : resumedBytes;
         long moved = Math.max(0, (ok ? size : acked.total()) - resumed);
-        result = new TransferResult(ok, code, message, name, size, now - started, bytesSent, bytesRetransmitted,
-                resumed, moved, nothingSent, null);
+        result = new TransferResult(ok, code, fallback != null && ok ? message + " (sent as it is: " + fallback + ")"
+                : message, name, fileSize, now - started, bytesSent, bytesRetransmitted, resumed, moved, nothingSent,
+                null, deflated != null ? size : -1);
+        if (deflated != null) {
+            deflated.close();
+        }
         try {
             raf.close();
         } catch (IOException e) {
@@ -166,7 +191,7 @@ final class FileSender {
     }
 
     private boolean changed() {
-        return file.lastModified() != fileModified || file.length() != size;
+        return file.lastModified() != fileModified || file.length() != fileSize;
     }
 
     // -- offers ------------------------------------------------------------------------------
@@ -321,8 +346,12 @@ final class FileSender {
             bytesRetransmitted += length;
         }
         byte[] data = new byte[cap];
-        raf.seek(offset);
-        raf.readFully(data, 0, length);
+        if (deflated != null) {
+            deflated.read(offset, data, length);
+        } else {
+            raf.seek(offset);
+            raf.readFully(data, 0, length);
+        }
         double[] prev = sends.get(offset);
         sends.put(offset, new double[] {now, prev == null ? 1 : prev[1] + 1});
         Integer sc = since.get(offset);
@@ -446,7 +475,7 @@ final class FileSender {
         if (code == TtFileResult.TT_FILE_RESULT_COMPLETE) {
             acked.add(0, size);
             boolean nothing = bytesSent == 0 && size > 0;
-            finish(now, true, "COMPLETE", name + ": " + size + " bytes "
+            finish(now, true, "COMPLETE", name + ": " + fileSize + " bytes "
                     + (nothing ? "verified there (it had them already)" : "delivered and verified"), nothing);
             return;
         }
@@ -458,6 +487,14 @@ final class FileSender {
         if (code == TtFileResult.TT_FILE_RESULT_REFUSED_BUSY) {
             busy = busy != null ? busy : Names.resultText("REFUSED_BUSY", "busy");
             state = "offering";
+            return;
+        }
+        if (deflated != null && Deflate.fallsBack(code)) { // the file as it is, under a new id
+            fallback = reason != null ? reason : Names.resultText(Names.resultName(code), "refused");
+            deflated.close();
+            use(null);
+            restart(now, code == TtFileResult.TT_FILE_RESULT_FAILED_CHECKSUM);
+            lastProgress = now;
             return;
         }
         if (code == TtFileResult.TT_FILE_RESULT_FAILED_CHECKSUM && restarts < cfg.checksumRestarts && !changed()) {

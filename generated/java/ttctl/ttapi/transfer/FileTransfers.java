@@ -65,6 +65,8 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
     static final int MAX_SERVED_REQUESTS = 64;
     /** Files sent to fetching peers at once, at most; more requests are refused as busy. */
     static final int MAX_SERVING = 8;
+    /** Served files up to this size may go deflated (deflating blocks this end meanwhile). */
+    static final long SERVE_DEFLATE_MAX = 16L << 20;
     static final long DEFAULT_MAX_FILE_BYTES = 1L << 30;
     static final long DEFAULT_MAX_DIR_BYTES = 8L << 30;
     private static final int STATUS_BYTES = 60;
@@ -94,7 +96,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
     private final Map<Transfer, FileSender> senders = new HashMap<>();
     private final Map<Transfer, LinkScheduler.BulkSource> pulls = new HashMap<>();
     private final Map<Transfer, FileFetch> fetches = new HashMap<>();
-    private final Map<Transfer, FileReceiver.Incoming> incoming = new LinkedHashMap<>();
+    private final Map<Transfer, Incoming> incoming = new LinkedHashMap<>();
     private final Map<FileReceiver.Key, ServedRequest> served = new LinkedHashMap<>();
     private final List<Transfer> announce = new ArrayList<>();
     private final FileReceiver receiver;
@@ -138,7 +140,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         this.listeners = listeners == null ? ownListeners : Callbacks.serial(listeners);
         this.receiver = new FileReceiver(receiverConfig(scheduler.rate()), 8, new FileReceiver.Events() {
             @Override
-            public void event(String what, FileReceiver.Incoming t) {
+            public void event(String what, Incoming t) {
                 onReceiverEvent(what, t);
             }
         });
@@ -196,6 +198,18 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
     }
 
     private volatile double linkRate;
+    private volatile boolean compress = true;
+
+    /**
+     * Whether sent and served files that deflate well go as their zlib stream
+     * (TT_FILE_FLAGS_DEFLATE; true, the default), falling back to the file as it is where the
+     * receiver does not inflate; false: always as they are (as {@code ttctl send-file
+     * --no-compress}). Files arriving deflated are inflated either way.
+     */
+    public FileTransfers setCompress(boolean on) {
+        compress = on;
+        return this;
+    }
 
     /**
      * The link's rate in bytes per second, for timing estimates when the scheduler is not
@@ -305,6 +319,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
             throw new IOException(file + " is not a readable file");
         }
         byte[] sha = Names.sha256(file, -1);
+        Deflate.Stream z = compress ? Deflate.of(file, n) : null; // here, not under the lock: a big file takes a while
         Transfer t = new Transfer(this, n, true, false, targetSys + "/" + targetComp, file.length(), file, listener);
         LinkScheduler.BulkSource pull;
         // lock order: the scheduler's, then ours (it pulls under its lock); never the other way
@@ -313,7 +328,12 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
             if (closed) {
                 throw new IOException("file transfers are closed");
             }
-            pull = startSender(t, new FileSender(newId, file, sha, n, targetSys, targetComp, cfg, 0, overwrite, now()));
+            pull = startSender(t, new FileSender(newId, file, sha, n, targetSys, targetComp, cfg, 0, overwrite, now(), z));
+        } catch (IOException | RuntimeException e) {
+            if (z != null) {
+                z.close();
+            }
+            throw e;
         } finally {
             lock.unlock();
         }
@@ -391,7 +411,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
                     receiver.cancel(f.incoming, now);
                 }
             }
-            FileReceiver.Incoming in = incoming.get(t);
+            Incoming in = incoming.get(t);
             if (in != null && !finalResult(in.result)) {
                 receiver.cancel(in, now);
             }
@@ -571,7 +591,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         }
         receiver.onOffer(now, o.sysId(), o.compId(), o);
         if (fetch != null && fetch.incoming == null) {
-            FileReceiver.Incoming t = receiver.transfers.get(new FileReceiver.Key(o.sysId(), o.compId(), o.transfer_id));
+            Incoming t = receiver.transfers.get(new FileReceiver.Key(o.sysId(), o.compId(), o.transfer_id));
             if (t != null) {
                 fetch.attach(now, t);
             }
@@ -673,8 +693,10 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         Transfer t = new Transfer(this, name, true, true, ss + "/" + sc, path.length(), path, null);
         LinkScheduler.BulkSource pull;
         try {
+            // deflated when that saves, up to SERVE_DEFLATE_MAX (this runs under the lock, as the Python server's loop)
+            Deflate.Stream z = compress && path.length() <= SERVE_DEFLATE_MAX ? Deflate.of(path, name) : null;
             FileSender s = new FileSender(newId, path, Names.sha256(path, -1), name, ss, sc, cfg, msg.request_id,
-                    false, now);
+                    false, now, z);
             pull = startSender(t, s);
         } catch (IOException e) {
             refuseRequest(ss, sc, msg.request_id, TtFileResult.TT_FILE_RESULT_REQUEST_REFUSED, name + ": "
@@ -741,7 +763,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
 
     // -- the inbox ---------------------------------------------------------------------------
     /** Under the lock, from the receiver: a transfer the peer pushes gets its Transfer when decided. */
-    private void onReceiverEvent(String what, FileReceiver.Incoming t) {
+    private void onReceiverEvent(String what, Incoming t) {
         if (t.requestId != 0 || t.transfer != null || "busy".equals(what)) {
             return; // a download (its fetch follows it), one told already, or one still waiting
         }
@@ -753,16 +775,17 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
     }
 
     /** Under the lock: the end of a pushed file's transfer, once it has one. */
-    private TransferResult incomingResult(double now, Transfer tr, FileReceiver.Incoming t, String problem) {
+    private TransferResult incomingResult(double now, Transfer tr, Incoming t, String problem) {
         int r = t.result;
         long resumed = Math.max(0, t.resumed);
         String from = " from " + t.who();
         if (r == TtFileResult.TT_FILE_RESULT_COMPLETE) {
             String how = t.identical ? "already here (the same SHA-256)"
                     : t.nothingSent ? "already received (a whole partial file), verified" : "received and verified";
-            return new TransferResult(true, "COMPLETE", t.name + ": " + t.size + " bytes" + from + ", " + how + " -> "
-                    + t.finalPath, t.name, t.size, now - t.started, 0, 0, resumed, Math.max(0, t.size - resumed),
-                    t.nothingSent, t.finalPath);
+            String z = t.original < 0 ? "" : " (deflated to " + t.size + " B on the link)";
+            return new TransferResult(true, "COMPLETE", t.name + ": " + t.fileSize() + " bytes" + z + from + ", " + how
+                    + " -> " + t.finalPath, t.name, t.fileSize(), now - t.started, 0, 0, resumed,
+                    Math.max(0, t.size - resumed), t.nothingSent, t.finalPath, t.original < 0 ? -1 : t.size);
         }
         boolean live = receiver.transfers.get(t.key) == t;
         if (finalResult(r)) {
@@ -897,11 +920,11 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
             out.add(encode(m));
         }
         next = min(next, receiver.deadline());
-        Iterator<Map.Entry<Transfer, FileReceiver.Incoming>> kt = incoming.entrySet().iterator();
+        Iterator<Map.Entry<Transfer, Incoming>> kt = incoming.entrySet().iterator();
         while (kt.hasNext()) {
-            Map.Entry<Transfer, FileReceiver.Incoming> e = kt.next();
+            Map.Entry<Transfer, Incoming> e = kt.next();
             Transfer tr = e.getKey();
-            FileReceiver.Incoming t = e.getValue();
+            Incoming t = e.getValue();
             if (!tr.isDone()) {
                 TransferResult r = incomingResult(now, tr, t, problem);
                 progress(tr, t.held(), t.size, r, calls);
@@ -977,8 +1000,8 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
                 e.getValue().cancel(now);
                 progress(e.getKey(), e.getValue().have, e.getValue().size(), e.getValue().result, calls);
             }
-            for (Map.Entry<Transfer, FileReceiver.Incoming> e : incoming.entrySet()) {
-                FileReceiver.Incoming t = e.getValue();
+            for (Map.Entry<Transfer, Incoming> e : incoming.entrySet()) {
+                Incoming t = e.getValue();
                 progress(e.getKey(), t.held(), t.size, new TransferResult(false, "CANCELLED", t.name + " from " + t.who()
                         + ": cancelled (what arrived is kept for a resume)", t.name, t.size, now - t.started, 0, 0,
                         Math.max(0, t.resumed), Math.max(0, t.held() - Math.max(0, t.resumed)), false, null), calls);

@@ -136,16 +136,15 @@ public final class Names {
 
     /**
      * Why an offer's flags are refused here, in words naming the flags this receiver does not know
-     * (DEFLATE: it does not inflate); null if it knows them all.
+     * (DEFLATE, which it inflates, is known); null if it knows them all.
      */
     static String unknownFlags(int flags) {
-        int unknown = flags & 0xFF & ~(TtFileFlags.TT_FILE_FLAGS_OVERWRITE | TtFileFlags.TT_FILE_FLAGS_CANCEL);
+        int unknown = flags & 0xFF & ~(TtFileFlags.TT_FILE_FLAGS_OVERWRITE | TtFileFlags.TT_FILE_FLAGS_CANCEL
+                | TtFileFlags.TT_FILE_FLAGS_DEFLATE);
         if (unknown == 0) {
             return null;
         }
-        String text = "offer flags 0x" + (unknown < 16 ? "0" : "") + Integer.toHexString(unknown)
-                + " not understood here";
-        return unknown == TtFileFlags.TT_FILE_FLAGS_DEFLATE ? text + ": this receiver does not decompress" : text;
+        return "offer flags 0x" + (unknown < 16 ? "0" : "") + Integer.toHexString(unknown) + " not understood here";
     }
 
     /** A TT_FILE_RESULT value's name without the prefix (COMPLETE, REFUSED_EXISTS...). */

@@ -21,39 +21,51 @@ import java.util.Map;
  * receiver (proto/storage.py Partial), so either end resumes what the other left. The record is
  * rewritten after the data it describes is flushed to disk, and before any status reports it.
  * Several transfers of the same file under the same name share one Partial. Not thread-safe.
+ *
+ * <p>A deflated offer ({@link Deflate}) is received the same way as its zlib stream, under its
+ * own key (the file's size after a {@code -z}: never shared with the file sent as it is); when
+ * the stream is whole it is inflated into {@code KEY.out}, and only that file takes the name.
  */
 final class Partial {
     static final int SAVE_EVERY = 64 * 1024;
 
     final ReceiveDir store;
     final String name;
-    final long size;
-    final byte[] sha256;
+    final long size; // of what arrives: the file, or its zlib stream
+    final byte[] sha256; // of the file
+    final long original; // the file's size when what arrives is its zlib stream, else -1
     final String key;
     final File dataPath;
+    final File outPath; // the inflated file, before it takes its name
     final File statePath;
     RangeSet ranges = new RangeSet();
     boolean resumed;
     private long unsaved;
     private RandomAccessFile file;
 
-    Partial(ReceiveDir store, String name, long size, byte[] sha256) {
+    Partial(ReceiveDir store, String name, long size, byte[] sha256, long original) {
         this.store = store;
         this.name = name;
         this.size = size;
         this.sha256 = sha256;
-        this.key = key(name, size, sha256);
+        this.original = original;
+        this.key = key(name, size, sha256, original);
         this.dataPath = new File(store.partialDir, key + ".part");
+        this.outPath = new File(store.partialDir, key + ".out");
         this.statePath = new File(store.partialDir, key + ".json");
         load();
     }
 
-    /** One partial file per (content, name): the first 40 hex digits of SHA-256(sha256 + name), then the size. */
-    static String key(String name, long size, byte[] sha256) {
+    /**
+     * One partial file per (content, name): the first 40 hex digits of SHA-256(sha256 + name), then
+     * the size, then for a zlib stream "-z" and the file's size ({@code original}; -1: the file itself).
+     */
+    static String key(String name, long size, byte[] sha256, long original) {
         java.security.MessageDigest md = Names.sha256();
         md.update(sha256);
         md.update(Names.utf8(name));
-        return Names.hex(md.digest()).substring(0, 40) + "-" + size;
+        String key = Names.hex(md.digest()).substring(0, 40) + "-" + size;
+        return original < 0 ? key : key + "-z" + original;
     }
 
     private void load() {
@@ -71,7 +83,8 @@ final class Partial {
         }
         Map<?, ?> m = (Map<?, ?>) state;
         if (!name.equals(m.get("name")) || !Long.valueOf(size).equals(m.get("size"))
-                || !Names.hex(sha256).equals(m.get("sha256")) || !(m.get("ranges") instanceof List)) {
+                || !Names.hex(sha256).equals(m.get("sha256")) || !(m.get("ranges") instanceof List)
+                || !(original < 0 ? m.get("original") == null : Long.valueOf(original).equals(m.get("original")))) {
             return;
         }
         long actual = dataPath.length();
@@ -163,6 +176,7 @@ final class Partial {
         state.put("name", name);
         state.put("size", size);
         state.put("sha256", Names.hex(sha256));
+        state.put("original", original < 0 ? null : (Object) original);
         List<Object> rs = new ArrayList<>();
         for (int i = 0; i < ranges.size(); i++) {
             long[] r = ranges.get(i);
@@ -218,10 +232,18 @@ final class Partial {
         }
     }
 
-    /** Whether the first {@code size} bytes have the offer's SHA-256. */
-    boolean verify() throws IOException {
+    /**
+     * Whether the bytes received are the file offered: the first {@code size} bytes have the offer's
+     * SHA-256, or (a zlib stream) inflate into {@code outPath} to the file (Deflate.Failed, with the
+     * reason, if not; IOException if it cannot be written).
+     */
+    boolean verify() throws IOException, Deflate.Failed {
         if (file != null) {
             file.getFD().sync();
+        }
+        if (original >= 0) {
+            Deflate.inflateTo(open(), size, outPath, original, sha256);
+            return true;
         }
         return dataPath.length() >= size && java.util.Arrays.equals(Names.sha256(dataPath, size), sha256);
     }
@@ -236,6 +258,8 @@ final class Partial {
         f.getFD().sync();
         f.setLength(size);
         close();
+        File done = original < 0 ? dataPath : outPath;
+        long fileSize = original < 0 ? size : original;
         File fin = store.finalPath(name);
         store.checkParents(name);
         File parent = fin.getParentFile();
@@ -244,18 +268,21 @@ final class Partial {
         }
         if (overwrite) {
             store.checkTarget(name, fin, true);
-            if (!dataPath.renameTo(fin)) {
-                throw new IOException("cannot rename " + dataPath + " to " + fin);
+            if (!done.renameTo(fin)) {
+                throw new IOException("cannot rename " + done + " to " + fin);
             }
         } else {
             if (fin.exists() || ReceiveDir.isLink(fin)) {
-                if (!store.identical(fin, size, sha256)) {
+                if (!store.identical(fin, fileSize, sha256)) {
                     throw new ReceiveDir.Refused("EXISTS", name + " appeared here while it was being received");
                 }
-                dataPath.delete();
-            } else if (!dataPath.renameTo(fin)) {
-                throw new IOException("cannot rename " + dataPath + " to " + fin);
+                done.delete();
+            } else if (!done.renameTo(fin)) {
+                throw new IOException("cannot rename " + done + " to " + fin);
             }
+        }
+        if (done != dataPath) {
+            dataPath.delete();
         }
         statePath.delete();
         return fin;
@@ -266,6 +293,7 @@ final class Partial {
         close();
         dataPath.delete();
         statePath.delete();
+        outPath.delete();
         ranges = new RangeSet();
     }
 

@@ -195,9 +195,10 @@ final class ReceiveDir {
 
     /**
      * Checks an offer: true if a file with this size and SHA-256 is there already under the
-     * name (nothing to receive), false if it may be received; Refused otherwise.
+     * name (nothing to receive), false if it may be received; Refused otherwise. {@code stream}: the
+     * size of the zlib stream a deflated offer sends (on disk beside the file while it is inflated).
      */
-    boolean admit(String name, long size, boolean wantsOverwrite, byte[] sha256) throws Refused {
+    boolean admit(String name, long size, boolean wantsOverwrite, byte[] sha256, long stream) throws Refused {
         String why = Names.problem(name);
         if (why != null) {
             throw new Refused("NAME", why);
@@ -207,17 +208,21 @@ final class ReceiveDir {
         if (size > maxFileBytes) {
             throw new Refused("QUOTA", size + " bytes exceed the per-file quota of " + maxFileBytes + " bytes");
         }
+        if (stream > maxFileBytes) { // a stream larger than its file: nothing a real deflater writes
+            throw new Refused("QUOTA", "a " + stream + "-byte stream exceeds the per-file quota of " + maxFileBytes
+                    + " bytes");
+        }
         if ((fin.exists() || isLink(fin)) && identical(fin, size, sha256)) {
             return true;
         }
         checkTarget(name, fin, wantsOverwrite);
-        if (usage() + size > maxDirBytes) {
+        if (usage() + size + stream > maxDirBytes) {
             throw new Refused("QUOTA", "the directory quota of " + maxDirBytes + " bytes would be exceeded");
         }
         return false;
     }
 
-    Partial partial(String name, long size, byte[] sha256) {
-        return new Partial(this, name, size, sha256);
+    Partial partial(String name, long size, byte[] sha256, long original) {
+        return new Partial(this, name, size, sha256, original);
     }
 }

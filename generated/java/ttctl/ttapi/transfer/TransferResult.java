@@ -33,10 +33,22 @@ public final class TransferResult {
     public final boolean nothingSent;
     /** Where the file is here: a download's or a received file's final name; null for an upload. */
     public final File file;
+    /**
+     * The zlib stream's size when the file crossed the link deflated (TT_FILE_FLAGS_DEFLATE), -1 if
+     * it went as it is; the byte counts above then count the stream's bytes.
+     */
+    public final long deflatedSize;
 
     public TransferResult(boolean ok, String code, String message, String name, long size, double seconds,
                           long bytesSent, long bytesRetransmitted, long resumedBytes, long bytesMoved,
                           boolean nothingSent, File file) {
+        this(ok, code, message, name, size, seconds, bytesSent, bytesRetransmitted, resumedBytes, bytesMoved,
+                nothingSent, file, -1);
+    }
+
+    public TransferResult(boolean ok, String code, String message, String name, long size, double seconds,
+                          long bytesSent, long bytesRetransmitted, long resumedBytes, long bytesMoved,
+                          boolean nothingSent, File file, long deflatedSize) {
         this.ok = ok;
         this.code = code;
         this.message = message;
@@ -49,6 +61,7 @@ public final class TransferResult {
         this.bytesMoved = bytesMoved;
         this.nothingSent = nothingSent;
         this.file = file;
+        this.deflatedSize = deflatedSize;
     }
 
     /** Bytes per second over this attempt only: {@link #bytesMoved} / {@link #seconds} (0 if it took no time). */
