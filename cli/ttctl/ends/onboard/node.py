@@ -325,7 +325,8 @@ class OnboardNode:
         elif what == "unknown-message":
             self.log(f"dtt: {unknown_note(self.b, t)}")
         elif what == "file-complete":
-            self._say(6, f"received {t.name} ({t.size} bytes)")
+            how = f", deflated to {t.size} B on the link" if t.original is not None else ""
+            self._say(6, f"received {t.name} ({t.file_size} bytes){how}")  # the file's size, not its stream's
 
     def _from_gcs(self, link: Transport, data: bytes, source: Hashable) -> None:
         parser = self._gcs_parsers.get((link, source))
