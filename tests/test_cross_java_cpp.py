@@ -72,7 +72,10 @@ def test_java_tablet_and_cpp_node(programs: tuple[Path, Path], tmp_path: Path, s
         assert sha(tmp_path / "got" / "logs" / "back.bin") == sha(back) == r["fetch_sha256"]
         assert not list((tmp_path / "got").rglob("*.part"))
         acked = len(r["idle_ms"]) + len(r["during_ms"])
-        assert r["idle_failed"] == 0 and not r["during_errors"] and r["refused"] == 0 and acked >= 5, r
+        # the 3 idle commands and at least one while files move (how many fit in the transfer depends on
+        # the machine's load and the losses: a fresh-clone run had one, retried for 3.6 s, in a quick upload)
+        assert r["idle_failed"] == 0 and not r["during_errors"] and r["refused"] == 0, r
+        assert len(r["idle_ms"]) == 3 and len(r["during_ms"]) >= 1, r
         commands = node.events("command")
         ran = [c for c in commands if not c["repeated"]]
         assert len(ran) == acked, commands  # each command the tablet sent ran once, retried or not
