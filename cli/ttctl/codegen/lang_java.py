@@ -63,7 +63,7 @@ RUNTIME_FILES = [
     "DecodeException", "Frame", "Parser", "Dispatcher", "Link", "UdpLink", "CommandContext",
     "CommandException", "Command", "MessageMatcher", "SendCommand", "ReceiveCommand", "CommandJob", "CommandEnds",
     "CommandQueue",
-    "LinkScheduler", "DjiLink",
+    "LinkScheduler", "DjiReceiving", "DjiLink",
     "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
 ]
 RUNTIME_CLASSES = frozenset(RUNTIME_FILES + ["SendSetpoint"])
