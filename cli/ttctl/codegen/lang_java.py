@@ -61,14 +61,16 @@ name = "java"
 RUNTIME_FILES = [
     "Crc", "Wire", "Unsigned", "MavlinkMessage", "MessageInfo", "MavlinkDialect",
     "DecodeException", "Frame", "Parser", "Dispatcher", "Link", "UdpLink", "CommandContext",
-    "CommandException", "Command", "MessageMatcher", "SendCommand", "ReceiveCommand", "CommandQueue",
-    "LinkScheduler", "DjiLink",
+    "CommandException", "Command", "MessageMatcher", "SendCommand", "ReceiveCommand", "CommandJob", "CommandEnds",
+    "CommandQueue",
+    "LinkScheduler", "DjiReceiving", "DjiLink",
     "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
 ]
 RUNTIME_CLASSES = frozenset(RUNTIME_FILES + ["SendSetpoint"])
 # File transfer (package <root>.transfer), for dialects that have ttctl's file messages.
 TRANSFER_FILES = ["RangeSet", "Names", "TransferConfig", "TransferResult", "Transfer", "LossEstimate", "FileSender",
-                  "Deflate", "ReceiveDir", "Incoming", "Partial", "FileReceiver", "FileFetch", "FileTransfers"]
+                  "Deflate", "ReceiveDir", "Incoming", "Partial", "FileReceiver", "FileFetch", "ServedFolder",
+                  "TransferRouter", "TransferTimer", "FileTransfers"]
 TRANSFER_MESSAGES = {"TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_REASON", "TT_FILE_DATA", "TT_FILE_DATA_WIDE",
                      "TT_FILE_REQUEST"}
 

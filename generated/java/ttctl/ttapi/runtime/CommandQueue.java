@@ -4,7 +4,6 @@ package ttctl.ttapi.runtime;
 import java.io.IOException;
 import java.security.SecureRandom;
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.Iterator;
 import java.util.List;
 import java.util.PriorityQueue;
@@ -59,67 +58,6 @@ import java.util.function.Consumer;
  * frame is sent as a packet of its own.
  */
 public final class CommandQueue implements CommandContext, Consumer<MavlinkMessage>, AutoCloseable {
-    private final class Job implements CommandContext {
-        final Command command;
-        final CompletableFuture<MavlinkMessage> future;
-        final int priority;
-        final long order;
-        int commandId;
-        long issuedUsec;
-        int tries;
-        boolean awaits;
-        boolean sending; // a try is being sent, outside the lock
-        boolean armed; // replies are looked for
-        boolean finished; // taken out of the queue: its end is decided
-        int made;
-        long startedAt; // System.nanoTime() of its first try
-        long due; // System.nanoTime() of the next try or of giving up
-        MavlinkMessage reply;
-        boolean askedAgain; // sent once more after a reply, see Command#askAgain
-
-        Job(Command command, CompletableFuture<MavlinkMessage> future, long order) {
-            this.command = command;
-            this.future = future;
-            this.priority = command.priority();
-            this.order = order;
-        }
-
-        @Override
-        public int sysId() {
-            return sysId;
-        }
-
-        @Override
-        public int compId() {
-            return compId;
-        }
-
-        @Override
-        public void send(MavlinkMessage msg) throws IOException {
-            CommandQueue.this.send(msg);
-        }
-
-        @Override
-        public int commandId() {
-            return commandId;
-        }
-
-        @Override
-        public long issuedUsec() {
-            return issuedUsec;
-        }
-    }
-
-    private static final Comparator<Job> ORDER = new Comparator<Job>() {
-        @Override
-        public int compare(Job a, Job b) {
-            if (a.priority != b.priority) {
-                return a.priority > b.priority ? -1 : 1;
-            }
-            return a.order < b.order ? -1 : (a.order == b.order ? 0 : 1);
-        }
-    };
-
     private final Link link;
     private final LinkScheduler scheduler;
     private final int sysId;
@@ -129,8 +67,8 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
     private final AtomicInteger seq = new AtomicInteger();
     private final ReentrantLock lock = new ReentrantLock();
     private final Condition changed = lock.newCondition();
-    private final PriorityQueue<Job> pending = new PriorityQueue<>(16, ORDER);
-    private final List<Job> inFlight = new ArrayList<>();
+    private final PriorityQueue<CommandJob> pending = new PriorityQueue<>(16, CommandJob.ORDER);
+    private final List<CommandJob> inFlight = new ArrayList<>();
     private long submitted;
     private int nextId;
     private long lastIssued;
@@ -231,22 +169,22 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
             throw new NullPointerException("command");
         }
         CompletableFuture<MavlinkMessage> future = new CompletableFuture<>();
-        Job job;
+        CommandJob job;
         boolean refused;
-        List<Job> superseded = new ArrayList<>();
+        List<CommandJob> superseded = new ArrayList<>();
         String kind = command.supersedes();
         lock.lock();
         try {
-            job = new Job(command, future, submitted++);
+            job = new CommandJob(this, command, future, submitted++);
             refused = closed;
             if (!refused) {
                 if (kind != null) {
-                    for (Job j : inFlight) {
+                    for (CommandJob j : inFlight) {
                         if (!j.finished && kind.equals(j.command.supersedes())) {
                             superseded.add(j);
                         }
                     }
-                    for (Job j : pending) {
+                    for (CommandJob j : pending) {
                         if (kind.equals(j.command.supersedes())) {
                             superseded.add(j);
                         }
@@ -258,12 +196,12 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         } finally {
             lock.unlock();
         }
-        for (Job j : superseded) { // the queue's thread then ends them with this reason
+        for (CommandJob j : superseded) { // the queue's thread then ends them with this reason
             j.future.completeExceptionally(new CommandException(CommandException.Reason.SUPERSEDED,
                     j.command.describe() + ": superseded by " + command.describe(), 0, null));
         }
         if (refused) {
-            fail(job, new CommandException(CommandException.Reason.SHUTDOWN, command.describe()
+            CommandEnds.fail(listeners, job, new CommandException(CommandException.Reason.SHUTDOWN, command.describe()
                     + ": the command queue is closed", 0, null));
         } else {
             // a cancelled future wakes the queue's thread: the command stops waiting at once
@@ -286,14 +224,14 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
     @Override
     public void accept(MavlinkMessage msg) {
         lastHeard = System.nanoTime();
-        List<Job> waiting;
+        List<CommandJob> waiting;
         lock.lock();
         try {
             if (inFlight.isEmpty()) {
                 return;
             }
             waiting = new ArrayList<>(inFlight.size());
-            for (Job j : inFlight) {
+            for (CommandJob j : inFlight) {
                 if (j.armed && j.reply == null && !j.finished) {
                     waiting.add(j);
                 }
@@ -301,7 +239,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         } finally {
             lock.unlock();
         }
-        for (Job job : waiting) {
+        for (CommandJob job : waiting) {
             boolean match;
             try {
                 match = job.command.accept(msg, job);
@@ -369,21 +307,21 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
      */
     @Override
     public void close() {
-        List<Job> dropped = new ArrayList<>();
+        List<CommandJob> dropped = new ArrayList<>();
         lock.lock();
         try {
             closed = true;
-            for (Job j : inFlight) {
+            for (CommandJob j : inFlight) {
                 if (!j.finished) {
                     j.finished = true;
                     dropped.add(j);
                 }
             }
             inFlight.clear();
-            List<Job> waiting = new ArrayList<>(pending);
-            waiting.sort(ORDER);
+            List<CommandJob> waiting = new ArrayList<>(pending);
+            waiting.sort(CommandJob.ORDER);
             pending.clear();
-            for (Job j : waiting) {
+            for (CommandJob j : waiting) {
                 j.finished = true;
                 dropped.add(j);
             }
@@ -391,9 +329,9 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         } finally {
             lock.unlock();
         }
-        for (Job job : dropped) {
-            fail(job, new CommandException(CommandException.Reason.SHUTDOWN, job.command.describe()
-                    + ": the command queue was closed", job.made, null));
+        for (CommandJob job : dropped) {
+            CommandEnds.fail(listeners, job, new CommandException(CommandException.Reason.SHUTDOWN,
+                    job.command.describe() + ": the command queue was closed", job.made, null));
         }
         if (ownListeners != null) {
             ownListeners.shutdown(); // the callbacks queued run first
@@ -435,8 +373,8 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
     }
 
     // -- the queue's thread -----------------------------------------------------------------
-    private boolean eligible(Job head) {
-        for (Job j : inFlight) {
+    private boolean eligible(CommandJob head) {
+        for (CommandJob j : inFlight) {
             if (j.priority >= head.priority) {
                 return false;
             }
@@ -449,7 +387,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
             int id = nextId;
             nextId = nextId % 65535 + 1;
             boolean used = false;
-            for (Job j : inFlight) {
+            for (CommandJob j : inFlight) {
                 used |= j.commandId == id;
             }
             if (!used) {
@@ -477,12 +415,12 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                     }
                     long now = System.nanoTime();
                     long next = Long.MAX_VALUE;
-                    for (Iterator<Job> it = inFlight.iterator(); it.hasNext();) {
-                        final Job j = it.next();
+                    for (Iterator<CommandJob> it = inFlight.iterator(); it.hasNext();) {
+                        final CommandJob j = it.next();
                         if (j.sending) {
                             continue;
                         }
-                        if (j.reply != null && !j.askedAgain && askAgain(j)) {
+                        if (j.reply != null && !j.askedAgain && CommandEnds.askAgain(j)) {
                             // the reply lacks what came with it (a refusal's words): the same
                             // try once more, the same id and issue time; nothing runs twice
                             j.askedAgain = true;
@@ -497,13 +435,13 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                             work.add(new Runnable() {
                                 @Override
                                 public void run() {
-                                    replied(j, reply);
+                                    CommandEnds.replied(listeners, j, reply);
                                 }
                             });
                         } else if (j.future.isDone()) {
                             it.remove();
                             j.finished = true;
-                            work.add(failing(j, ended(j, j.made)));
+                            work.add(CommandEnds.failing(listeners, j, CommandEnds.ended(j, j.made)));
                         } else if (now - j.due >= 0) {
                             if (j.made < j.tries) {
                                 j.sending = true;
@@ -523,8 +461,9 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                                     public void run() {
                                         String problem = linkProblem();
                                         boolean silent = lastHeard - j.startedAt < 0;
-                                        fail(j, new CommandException(CommandException.Reason.TIMEOUT, j.command.describe()
-                                                + ": " + j.command.silence() + " after " + made + " tr" + (made == 1 ? "y" : "ies")
+                                        CommandEnds.fail(listeners, j, new CommandException(CommandException.Reason.TIMEOUT,
+                                                j.command.describe() + ": " + j.command.silence() + " after " + made
+                                                + " tr" + (made == 1 ? "y" : "ies")
                                                 + (silent ? ", no message received from the link meanwhile" : "")
                                                 + (problem != null ? "; " + problem : ""), made, null));
                                     }
@@ -535,10 +474,10 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                         }
                     }
                     while (!paused && !pending.isEmpty() && eligible(pending.peek())) {
-                        final Job j = pending.poll();
+                        final CommandJob j = pending.poll();
                         j.finished = j.future.isDone();
                         if (j.finished) {
-                            work.add(failing(j, ended(j, 0)));
+                            work.add(CommandEnds.failing(listeners, j, CommandEnds.ended(j, 0)));
                             continue;
                         }
                         j.commandId = takeId();
@@ -582,7 +521,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
     }
 
     /** The first try of a command just taken in flight (its sending flag set). */
-    private void begin(Job job) {
+    private void begin(CommandJob job) {
         Command c = job.command;
         boolean awaits;
         int tries;
@@ -606,7 +545,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
     }
 
     /** Try {@code attempt} of a command in flight (its sending flag set). */
-    private void sendTry(Job job, int attempt) {
+    private void sendTry(CommandJob job, int attempt) {
         lock.lock();
         try {
             if (job.finished) {
@@ -643,12 +582,12 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
             lock.unlock();
         }
         if (done) {
-            succeed(job, null);
+            CommandEnds.succeed(listeners, job, null);
         }
     }
 
     /** Takes a command in flight out with {@code error}, unless its end is decided already. */
-    private void abort(Job job, CommandException error) {
+    private void abort(CommandJob job, CommandException error) {
         boolean mine;
         lock.lock();
         try {
@@ -661,84 +600,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
             lock.unlock();
         }
         if (mine) {
-            fail(job, error);
+            CommandEnds.fail(listeners, job, error);
         }
-    }
-
-    private static boolean askAgain(Job job) {
-        try {
-            return job.command.askAgain(job.reply);
-        } catch (RuntimeException e) {
-            return false;
-        }
-    }
-
-    private void replied(Job job, MavlinkMessage reply) {
-        String why;
-        try {
-            why = job.command.refusal(reply);
-        } catch (RuntimeException e) {
-            why = "its reply could not be read: " + e;
-        }
-        if (why == null) {
-            succeed(job, reply);
-        } else {
-            fail(job, new CommandException(CommandException.Reason.REFUSED, job.command.describe() + ": " + why,
-                    job.made, null, reply));
-        }
-    }
-
-    private Runnable failing(final Job job, final Throwable error) {
-        return new Runnable() {
-            @Override
-            public void run() {
-                fail(job, error);
-            }
-        };
-    }
-
-    /** Why a job whose future completed from outside ended: a superseded one says so, else cancelled. */
-    private static CommandException ended(Job j, int made) {
-        try {
-            j.future.getNow(null);
-        } catch (java.util.concurrent.CompletionException e) {
-            if (e.getCause() instanceof CommandException) {
-                CommandException c = (CommandException) e.getCause();
-                return new CommandException(c.reason(), c.getMessage(), made, null);
-            }
-        } catch (java.util.concurrent.CancellationException e) {
-            // cancelled
-        }
-        return cancelled(j.command, made);
-    }
-
-    private static CommandException cancelled(Command c, int made) {
-        return new CommandException(CommandException.Reason.CANCELLED, c.describe() + ": cancelled", made, null);
-    }
-
-    private void succeed(final Job job, final MavlinkMessage reply) {
-        if (!job.future.complete(reply)) { // ended from outside first (cancelled, superseded): it says so
-            fail(job, ended(job, job.made));
-            return;
-        }
-        Callbacks.run(listeners, new Runnable() {
-            @Override
-            public void run() {
-                job.command.onSuccess(reply);
-            }
-        }, "onSuccess of " + job.command.describe());
-    }
-
-    private void fail(final Job job, final Throwable failure) {
-        // the callback says what the future says: a command ended from outside (cancelled,
-        // superseded) before its own end was decided reports that
-        final Throwable error = job.future.completeExceptionally(failure) || !job.future.isCompletedExceptionally()
-                ? failure : ended(job, job.made);
-        Callbacks.run(listeners, new Runnable() {
-            @Override
-            public void run() {
-                job.command.onFailure(error);
-            }
-        }, "onFailure of " + job.command.describe());
     }
 }

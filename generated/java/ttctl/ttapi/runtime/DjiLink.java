@@ -5,14 +5,11 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.Executor;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Consumer;
@@ -94,13 +91,10 @@ public final class DjiLink implements Link {
     }
 
     private final PacketSender sender;
-    private final PacketReceiver receiver;
-    private final List<Consumer<? super MavlinkMessage>> listeners = new CopyOnWriteArrayList<>();
-    private final List<Consumer<byte[]>> packetListeners = new CopyOnWriteArrayList<>();
     private final ReentrantLock lock = new ReentrantLock();
     private final Condition ready = lock.newCondition();
     private final ScheduledThreadPoolExecutor exec;
-    private final AtomicInteger backlog = new AtomicInteger();
+    private final DjiReceiving receiving;
     private volatile StateListener stateListener;
     private volatile Executor listenerExecutor;
     private final ExecutorService ownListeners = Callbacks.newThread("ttctl-dji-link-state");
@@ -117,20 +111,12 @@ public final class DjiLink implements Link {
     private boolean refusing;
     private long firstErrorAt;
     private long backoffUntil;
-    private volatile String keyProblem;
-    private long seenUnsigned;
-    private long seenBadSignatures;
-    private long seenFrames;
     private volatile boolean closed;
     private long sent;
     private long completed;
     private long failed;
     private long timeouts;
     private long lateCompletions;
-    private volatile long received;
-    private volatile long droppedReceived;
-    private volatile long listenerErrors;
-    private volatile long lastReceive;
     private volatile String lastSendError;
 
     /** A link sending through {@code sender}, receiving with {@code receiver}. */
@@ -142,7 +128,6 @@ public final class DjiLink implements Link {
             throw new NullPointerException("receiver");
         }
         this.sender = sender;
-        this.receiver = receiver;
         this.exec = new ScheduledThreadPoolExecutor(1, new ThreadFactory() {
             @Override
             public Thread newThread(Runnable r) {
@@ -152,6 +137,7 @@ public final class DjiLink implements Link {
             }
         });
         exec.setRemoveOnCancelPolicy(true);
+        this.receiving = new DjiReceiving(this, receiver, exec);
     }
 
     /** A link receiving unsigned frames of {@code dialect}. */
@@ -212,7 +198,7 @@ public final class DjiLink implements Link {
         if (listener == null) {
             throw new NullPointerException("listener");
         }
-        listeners.add(listener);
+        receiving.listeners.add(listener);
         return this;
     }
 
@@ -224,16 +210,16 @@ public final class DjiLink implements Link {
         if (listener == null) {
             throw new NullPointerException("listener");
         }
-        packetListeners.add(listener);
+        receiving.packetListeners.add(listener);
         return this;
     }
 
     public void removePacketListener(Consumer<byte[]> listener) {
-        packetListeners.remove(listener);
+        receiving.packetListeners.remove(listener);
     }
 
     public void removeListener(Consumer<? super MavlinkMessage> listener) {
-        listeners.remove(listener);
+        receiving.listeners.remove(listener);
     }
 
     /**
@@ -254,97 +240,9 @@ public final class DjiLink implements Link {
                     lock.unlock();
                 }
             }
-            if (backlog.incrementAndGet() > RECEIVE_BACKLOG) {
-                backlog.decrementAndGet();
-                droppedReceived++;
-                return;
-            }
-            final byte[] copy = data.clone();
-            exec.execute(new Runnable() {
-                @Override
-                public void run() {
-                    backlog.decrementAndGet();
-                    parse(copy);
-                }
-            });
-        } catch (RejectedExecutionException e) {
-            backlog.decrementAndGet();
+            receiving.take(data);
         } catch (RuntimeException e) {
-            droppedReceived++;
-        }
-    }
-
-    private final Consumer<MavlinkMessage> deliver = new Consumer<MavlinkMessage>() {
-        @Override
-        public void accept(MavlinkMessage msg) {
-            for (Consumer<? super MavlinkMessage> l : listeners) {
-                try {
-                    l.accept(msg);
-                } catch (RuntimeException e) {
-                    listenerErrors++;
-                    System.err.println("ttctl DjiLink: listener failed on " + msg.name() + ": " + e);
-                }
-            }
-        }
-    };
-
-    private void parse(byte[] packet) {
-        received++;
-        lastReceive = System.nanoTime();
-        for (Consumer<byte[]> l : packetListeners) {
-            try {
-                l.accept(packet.clone());
-            } catch (RuntimeException e) {
-                listenerErrors++;
-            }
-        }
-        try {
-            receiver.feed(packet, 0, packet.length, deliver);
-        } catch (RuntimeException e) {
-            listenerErrors++;
-        }
-        watchSignatures();
-        try {
-            exec.schedule(new Runnable() {
-                @Override
-                public void run() {
-                    if (System.nanoTime() - lastReceive >= TimeUnit.MILLISECONDS.toNanos(IDLE_FLUSH_MILLIS) - 1000) {
-                        try {
-                            receiver.flush(deliver);
-                        } catch (RuntimeException e) {
-                            listenerErrors++;
-                        }
-                        watchSignatures();
-                    }
-                }
-            }, IDLE_FLUSH_MILLIS, TimeUnit.MILLISECONDS);
-        } catch (RejectedExecutionException e) {
-            // closed
-        }
-    }
-
-    /** On the link's thread, after each packet: frames refused for their signature are named once. */
-    private void watchSignatures() {
-        PacketReceiver.Stats st = receiver.stats();
-        long u = st.unsignedRefused();
-        long b = st.badSignatures();
-        long f = st.frames();
-        String kp = PacketReceiver.keyProblem(PEER, u - seenUnsigned, b - seenBadSignatures);
-        String told = null;
-        boolean bad = false;
-        if (kp != null && keyProblem == null) {
-            keyProblem = kp;
-            told = kp;
-            bad = true;
-        } else if (kp == null && keyProblem != null && f > seenFrames) {
-            keyProblem = null;
-            told = "frames from " + PEER + " verify again";
-        }
-        seenUnsigned = u;
-        seenBadSignatures = b;
-        seenFrames = f;
-        if (told != null) {
-            notifyState(bad, told);
+            receiving.droppedReceived++;
         }
     }
 
@@ -494,7 +392,7 @@ public final class DjiLink implements Link {
         return ok;
     }
 
-    private void notifyState(final boolean isStalled, final String why) {
+    void notifyState(final boolean isStalled, final String why) {
         final StateListener l = stateListener;
         if (l == null) {
             return;
@@ -533,7 +431,7 @@ public final class DjiLink implements Link {
         } finally {
             lock.unlock();
         }
-        String kp = keyProblem;
+        String kp = receiving.keyProblem;
         if (kp != null) {
             parts.add(kp);
         }
@@ -617,16 +515,16 @@ public final class DjiLink implements Link {
 
     /** Packets received from the onboard side (parsed). */
     public long received() {
-        return received;
+        return receiving.received;
     }
 
     /** Packets dropped because the receive backlog was full. */
     public long droppedReceived() {
-        return droppedReceived;
+        return receiving.droppedReceived;
     }
 
     public long listenerErrors() {
-        return listenerErrors;
+        return receiving.listenerErrors;
     }
 
     /** The last error a completion or a send reported, or null. */

@@ -6,7 +6,6 @@ import java.io.IOException;
 import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -18,12 +17,6 @@ import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 
 import ttctl.ttapi.enums.TtFileResult;
-import ttctl.ttapi.msg.TtFileData;
-import ttctl.ttapi.msg.TtFileDataWide;
-import ttctl.ttapi.msg.TtFileOffer;
-import ttctl.ttapi.msg.TtFileReason;
-import ttctl.ttapi.msg.TtFileRequest;
-import ttctl.ttapi.msg.TtFileStatus;
 import ttctl.ttapi.runtime.Callbacks;
 import ttctl.ttapi.runtime.LinkScheduler;
 import ttctl.ttapi.runtime.MavlinkMessage;
@@ -61,12 +54,6 @@ import ttctl.ttapi.runtime.MavlinkMessage;
 public final class FileTransfers implements Consumer<MavlinkMessage>, AutoCloseable {
     /** How long a finished transfer still answers late frames of its peer. */
     static final double LINGER = 30.0;
-    /** Requests whose name is still arriving, at most (a flood of them is dropped, oldest first). */
-    static final int MAX_SERVED_REQUESTS = 64;
-    /** Files sent to fetching peers at once, at most; more requests are refused as busy. */
-    static final int MAX_SERVING = 8;
-    /** Served files up to this size may go deflated (deflating blocks this end meanwhile). */
-    static final long SERVE_DEFLATE_MAX = 16L << 20;
     static final long DEFAULT_MAX_FILE_BYTES = 1L << 30;
     static final long DEFAULT_MAX_DIR_BYTES = 8L << 30;
     private static final int STATUS_BYTES = 60;
@@ -81,36 +68,31 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         Transfer.Listener onIncoming(Transfer transfer);
     }
 
-    private static final class ServedRequest {
-        byte[] name = new byte[0];
-        final RangeSet have = new RangeSet();
-        int length;
-    }
-
-    private final LinkScheduler scheduler;
-    private final int sysId;
-    private final int compId;
-    private final TransferConfig cfg;
-    private final ReentrantLock lock = new ReentrantLock();
-    private final Condition changed = lock.newCondition();
-    private final Map<Transfer, FileSender> senders = new HashMap<>();
-    private final Map<Transfer, LinkScheduler.BulkSource> pulls = new HashMap<>();
-    private final Map<Transfer, FileFetch> fetches = new HashMap<>();
-    private final Map<Transfer, Incoming> incoming = new LinkedHashMap<>();
-    private final Map<FileReceiver.Key, ServedRequest> served = new LinkedHashMap<>();
-    private final List<Transfer> announce = new ArrayList<>();
-    private final FileReceiver receiver;
+    // Package-private: the parts in this package (TransferRouter, TransferTimer, ServedFolder)
+    // work on this state, always under the lock.
+    final LinkScheduler scheduler;
+    final int sysId;
+    final int compId;
+    final TransferConfig cfg;
+    final ReentrantLock lock = new ReentrantLock();
+    final Condition changed = lock.newCondition();
+    final Map<Transfer, FileSender> senders = new HashMap<>();
+    final Map<Transfer, LinkScheduler.BulkSource> pulls = new HashMap<>();
+    final Map<Transfer, FileFetch> fetches = new HashMap<>();
+    final Map<Transfer, Incoming> incoming = new LinkedHashMap<>();
+    final List<Transfer> announce = new ArrayList<>();
+    final FileReceiver receiver;
+    final ServedFolder served = new ServedFolder(this);
+    private final TransferRouter router = new TransferRouter(this);
     private final SecureRandom random = new SecureRandom();
     private final long t0 = System.nanoTime();
-    private final Executor listeners;
+    final Executor listeners;
     private final ExecutorService ownListeners;
-    private volatile IncomingListener incomingListener;
-    private File serveDir;
+    volatile IncomingListener incomingListener;
     private int seq;
-    private boolean closed;
+    boolean closed;
     private Thread timer;
-    private long ignored;
-    private long servedRefused;
+    long ignored;
 
     public FileTransfers(LinkScheduler scheduler, int sysId, int compId) {
         this(scheduler, sysId, compId, new TransferConfig(), null);
@@ -151,12 +133,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         lock.lock();
         try {
             if (timer == null && !closed) {
-                Thread t = new Thread(new Runnable() {
-                    @Override
-                    public void run() {
-                        loop();
-                    }
-                }, "ttctl-transfers");
+                Thread t = new Thread(new TransferTimer(this), "ttctl-transfers");
                 t.setDaemon(true);
                 timer = t;
                 t.start();
@@ -167,11 +144,11 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         return this;
     }
 
-    private double now() {
+    double now() {
         return (System.nanoTime() - t0) / 1e9;
     }
 
-    private final LongSupplier newId = new LongSupplier() {
+    final LongSupplier newId = new LongSupplier() {
         @Override
         public long getAsLong() {
             while (true) {
@@ -198,7 +175,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
     }
 
     private volatile double linkRate;
-    private volatile boolean compress = true;
+    volatile boolean compress = true;
 
     /**
      * Whether sent and served files that deflate well go as their zlib stream
@@ -289,7 +266,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         File canonical = dir.getCanonicalFile();
         lock.lock();
         try {
-            serveDir = canonical;
+            served.dir = canonical;
         } finally {
             lock.unlock();
         }
@@ -342,7 +319,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
     }
 
     /** Under the lock: a sender and its puller (the caller adds the puller to the scheduler, unlocked). */
-    private LinkScheduler.BulkSource startSender(final Transfer t, FileSender s) {
+    LinkScheduler.BulkSource startSender(final Transfer t, FileSender s) {
         s.byteTime = byteTime();
         senders.put(t, s);
         LinkScheduler.BulkSource pull = new LinkScheduler.BulkSource() {
@@ -421,7 +398,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         }
     }
 
-    private static boolean finalResult(int r) {
+    static boolean finalResult(int r) {
         return r != TtFileResult.TT_FILE_RESULT_IN_PROGRESS && r != TtFileResult.TT_FILE_RESULT_REFUSED_BUSY;
     }
 
@@ -459,7 +436,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
     public long refused() {
         lock.lock();
         try {
-            return receiver.refused + servedRefused;
+            return receiver.refused + served.refused;
         } finally {
             lock.unlock();
         }
@@ -478,7 +455,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         }
     }
 
-    private byte[] encode(MavlinkMessage m) {
+    byte[] encode(MavlinkMessage m) {
         byte[] f = m.pack(seq & 0xFF, sysId, compId);
         seq++;
         return f;
@@ -513,252 +490,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
     /** An incoming message (from the link's listener thread). Never throws. */
     @Override
     public void accept(MavlinkMessage msg) {
-        boolean wake = false;
-        List<LinkScheduler.BulkSource> added = new ArrayList<>();
-        lock.lock();
-        try {
-            if (closed || (msg.sysId() == sysId && msg.compId() == compId)) {
-                return; // closed, or our own frames, echoed
-            }
-            double now = now();
-            if (msg instanceof TtFileData || msg instanceof TtFileDataWide) {
-                boolean wide = msg instanceof TtFileDataWide;
-                long id = wide ? ((TtFileDataWide) msg).transfer_id : ((TtFileData) msg).transfer_id;
-                long off = wide ? ((TtFileDataWide) msg).offset : ((TtFileData) msg).offset;
-                byte[] data = wide ? ((TtFileDataWide) msg).data : ((TtFileData) msg).data;
-                receiver.onData(now, msg.sysId(), msg.compId(), id, off, data,
-                        wide ? FileSender.WIDE : FileSender.NARROW);
-                wake = true;
-            } else if (msg instanceof TtFileStatus) {
-                TtFileStatus s = (TtFileStatus) msg;
-                if (forUs(s.target_system, s.target_component)) {
-                    wake = onStatus(now, s);
-                }
-            } else if (msg instanceof TtFileReason) {
-                TtFileReason r = (TtFileReason) msg;
-                if (forUs(r.target_system, r.target_component)) {
-                    wake = onReason(now, r);
-                }
-            } else if (msg instanceof TtFileOffer) {
-                TtFileOffer o = (TtFileOffer) msg;
-                if (forUs(o.target_system, o.target_component)) {
-                    onOffer(now, o);
-                    wake = true;
-                }
-            } else if (msg instanceof TtFileRequest) {
-                TtFileRequest r = (TtFileRequest) msg;
-                if (forUs(r.target_system, r.target_component)) {
-                    LinkScheduler.BulkSource p = onRequest(now, r);
-                    if (p != null) {
-                        added.add(p);
-                    }
-                    wake = true;
-                }
-            }
-            if (wake) {
-                changed.signalAll();
-            }
-        } catch (RuntimeException e) {
-            ignored++;
-        } finally {
-            lock.unlock();
-        }
-        for (LinkScheduler.BulkSource p : added) {
-            scheduler.addSource(p);
-        }
-        if (wake) {
-            scheduler.wake();
-        }
-    }
-
-    private boolean forUs(int ts, int tc) {
-        boolean ok = (ts == 0 || ts == sysId) && (tc == 0 || tc == compId);
-        if (!ok) {
-            ignored++;
-        }
-        return ok;
-    }
-
-    private void onOffer(double now, TtFileOffer o) {
-        FileFetch fetch = null;
-        if (o.request_id != 0) {
-            for (FileFetch f : fetches.values()) {
-                if (f.requestId == o.request_id && f.targetSys == o.sysId() && f.targetComp == o.compId() && !f.done()
-                        && (f.incoming == null || f.incoming.key.id == o.transfer_id)) {
-                    fetch = f;
-                }
-            }
-        }
-        receiver.onOffer(now, o.sysId(), o.compId(), o);
-        if (fetch != null && fetch.incoming == null) {
-            Incoming t = receiver.transfers.get(new FileReceiver.Key(o.sysId(), o.compId(), o.transfer_id));
-            if (t != null) {
-                fetch.attach(now, t);
-            }
-        }
-    }
-
-    private boolean onStatus(double now, TtFileStatus s) {
-        if (s.result == TtFileResult.TT_FILE_RESULT_NOT_FOUND || s.result == TtFileResult.TT_FILE_RESULT_REQUEST_REFUSED) {
-            for (FileFetch f : fetches.values()) {
-                if (f.requestId == s.transfer_id && f.targetSys == s.sysId() && f.targetComp == s.compId()) {
-                    f.onRequestAnswer(now, s.result, null);
-                    return true;
-                }
-            }
-            return false;
-        }
-        for (FileSender x : senders.values()) {
-            if (x.id == s.transfer_id && x.targetSys == s.sysId() && x.targetComp == s.compId()) {
-                x.onStatus(now, s);
-                return true;
-            }
-        }
-        return false;
-    }
-
-    private boolean onReason(double now, TtFileReason r) {
-        for (FileFetch f : fetches.values()) {
-            if (f.requestId == r.transfer_id && !f.answered && f.targetSys == r.sysId() && f.targetComp == r.compId()) {
-                f.onRequestAnswer(now, r.result, Names.text(r.text));
-                return true;
-            }
-        }
-        for (FileSender x : senders.values()) {
-            if (x.id == r.transfer_id && x.targetSys == r.sysId() && x.targetComp == r.compId()) {
-                x.onReason(now, r);
-                return true;
-            }
-        }
-        return false;
-    }
-
-    // -- serving -----------------------------------------------------------------------------
-    /** A part of a fetch request (ttctl's endpoint _on_request); a new sender's puller, or null. */
-    private LinkScheduler.BulkSource onRequest(double now, TtFileRequest msg) {
-        if (msg.request_id == 0) {
-            return null;
-        }
-        int ss = msg.sysId();
-        int sc = msg.compId();
-        for (FileSender s : senders.values()) {
-            if (s.requestId == msg.request_id && s.targetSys == ss && s.targetComp == sc && !s.done()) {
-                return null; // already serving it: the offers repeat on their own
-            }
-        }
-        FileReceiver.Key key = new FileReceiver.Key(ss, sc, msg.request_id);
-        ServedRequest part = served.get(key);
-        if (part == null) {
-            if (served.size() >= MAX_SERVED_REQUESTS) {
-                Iterator<FileReceiver.Key> it = served.keySet().iterator();
-                it.next();
-                it.remove();
-                receiver.dropped++;
-            }
-            part = new ServedRequest();
-            served.put(key, part);
-        }
-        if (part.length == 0) {
-            part.length = msg.name_length;
-            part.name = new byte[msg.name_length];
-        }
-        int off = msg.name_offset;
-        int n = Math.max(0, Math.min(msg.name.length, part.length - off));
-        if (n > 0) {
-            System.arraycopy(msg.name, 0, part.name, off, n);
-            part.have.add(off, off + n);
-        }
-        if (part.length == 0 || !part.have.covers(0, part.length)) {
-            return null;
-        }
-        served.remove(key);
-        String name = Names.strictUtf8(part.name);
-        File path;
-        try {
-            path = servable(name);
-        } catch (ReceiveDir.Refused e) {
-            refuseRequest(ss, sc, msg.request_id, "NOT_FOUND".equals(e.code) ? TtFileResult.TT_FILE_RESULT_NOT_FOUND
-                    : TtFileResult.TT_FILE_RESULT_REQUEST_REFUSED, e.reason);
-            return null;
-        }
-        int serving = 0;
-        for (FileSender s : senders.values()) {
-            serving += s.requestId != 0 && !s.done() ? 1 : 0;
-        }
-        if (serving >= MAX_SERVING) {
-            refuseRequest(ss, sc, msg.request_id, TtFileResult.TT_FILE_RESULT_REQUEST_REFUSED,
-                    MAX_SERVING + " files are being fetched from here; ask again later");
-            return null;
-        }
-        Transfer t = new Transfer(this, name, true, true, ss + "/" + sc, path.length(), path, null);
-        LinkScheduler.BulkSource pull;
-        try {
-            // deflated when that saves, up to SERVE_DEFLATE_MAX (this runs under the lock, as the Python server's loop)
-            Deflate.Stream z = compress && path.length() <= SERVE_DEFLATE_MAX ? Deflate.of(path, name) : null;
-            FileSender s = new FileSender(newId, path, Names.sha256(path, -1), name, ss, sc, cfg, msg.request_id,
-                    false, now, z);
-            pull = startSender(t, s);
-        } catch (IOException e) {
-            refuseRequest(ss, sc, msg.request_id, TtFileResult.TT_FILE_RESULT_REQUEST_REFUSED, name + ": "
-                    + e.getMessage());
-            return null;
-        }
-        announce.add(t);
-        return pull;
-    }
-
-    /** The served file a request names, or Refused (NOT_FOUND, REQUEST_REFUSED) with the reason. */
-    private File servable(String name) throws ReceiveDir.Refused {
-        if (name == null) {
-            throw new ReceiveDir.Refused("REQUEST_REFUSED", "the name is not valid UTF-8");
-        }
-        if (serveDir == null) {
-            throw new ReceiveDir.Refused("REQUEST_REFUSED", "this end serves no files");
-        }
-        String why = Names.problem(name);
-        if (why != null) {
-            throw new ReceiveDir.Refused("REQUEST_REFUSED", why);
-        }
-        File path;
-        try {
-            path = new File(serveDir, name).getCanonicalFile();
-        } catch (IOException e) {
-            throw new ReceiveDir.Refused("REQUEST_REFUSED", name + ": " + e.getMessage());
-        }
-        String root = serveDir.getPath().endsWith(File.separator) ? serveDir.getPath()
-                : serveDir.getPath() + File.separator;
-        if (!path.getPath().startsWith(root)) {
-            throw new ReceiveDir.Refused("REQUEST_REFUSED", name + " leads outside the served folder");
-        }
-        if (!path.exists()) {
-            throw new ReceiveDir.Refused("NOT_FOUND", "there is no " + name + " in the served folder");
-        }
-        if (!path.isFile()) {
-            throw new ReceiveDir.Refused("REQUEST_REFUSED", name + " is " + ReceiveDir.kindOf(path) + ", not a file");
-        }
-        if (!path.canRead()) {
-            throw new ReceiveDir.Refused("REQUEST_REFUSED", name + ": permission denied");
-        }
-        return path;
-    }
-
-    private final List<byte[]> queued = new ArrayList<>();
-
-    private void refuseRequest(int ss, int sc, long requestId, int result, String reason) {
-        servedRefused++;
-        TtFileReason why = new TtFileReason();
-        why.target_system = ss;
-        why.target_component = sc;
-        why.transfer_id = requestId;
-        why.result = result;
-        why.text = java.util.Arrays.copyOf(Names.fit(reason, 80), 80);
-        TtFileStatus status = new TtFileStatus();
-        status.target_system = ss;
-        status.target_component = sc;
-        status.transfer_id = requestId;
-        status.result = result;
-        queued.add(encode(why));
-        queued.add(encode(status));
+        router.accept(msg);
     }
 
     // -- the inbox ---------------------------------------------------------------------------
@@ -772,210 +504,6 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         t.transfer = tr;
         incoming.put(tr, t);
         announce.add(tr);
-    }
-
-    /** Under the lock: the end of a pushed file's transfer, once it has one. */
-    private TransferResult incomingResult(double now, Transfer tr, Incoming t, String problem) {
-        int r = t.result;
-        long resumed = Math.max(0, t.resumed);
-        String from = " from " + t.who();
-        if (r == TtFileResult.TT_FILE_RESULT_COMPLETE) {
-            String how = t.identical ? "already here (the same SHA-256)"
-                    : t.nothingSent ? "already received (a whole partial file), verified" : "received and verified";
-            String z = t.original < 0 ? "" : " (deflated to " + t.size + " B on the link)";
-            return new TransferResult(true, "COMPLETE", t.name + ": " + t.fileSize() + " bytes" + z + from + ", " + how
-                    + " -> " + t.finalPath, t.name, t.fileSize(), now - t.started, 0, 0, resumed,
-                    Math.max(0, t.size - resumed), t.nothingSent, t.finalPath, t.original < 0 ? -1 : t.size);
-        }
-        boolean live = receiver.transfers.get(t.key) == t;
-        if (finalResult(r)) {
-            String code = Names.resultName(r);
-            String text = code.startsWith("REFUSED") ? "refused " + t.name + from + ": " + t.reason
-                    : t.name + from + " failed: " + (t.reason.isEmpty() ? Names.resultText(code, "failed") : t.reason);
-            return new TransferResult(false, code, text, t.name, t.size, now - t.started, 0, 0, resumed,
-                    Math.max(0, t.held() - resumed), false, null);
-        }
-        if (!live || now - t.lastActivity >= cfg.giveUpAfter) {
-            if (live) {
-                receiver.close(t); // its partial file stays: the sender's next offer resumes it
-            }
-            return new TransferResult(false, "TIMEOUT", t.name + from + ": nothing heard for "
-                    + Names.secs(Math.floor(now - t.lastActivity)) + (problem != null ? "; " + problem : "")
-                    + (t.held() > 0 ? " (what arrived is kept for a resume)" : ""),
-                    t.name, t.size, now - t.started, 0, 0, resumed, Math.max(0, t.held() - resumed), false, null);
-        }
-        return null;
-    }
-
-    // -- the timer thread --------------------------------------------------------------------
-    private void loop() {
-        while (true) {
-            List<byte[]> out = new ArrayList<>();
-            List<Runnable> calls = new ArrayList<>();
-            List<LinkScheduler.BulkSource> retired = new ArrayList<>();
-            boolean data = false;
-            lock.lock();
-            try {
-                if (closed) {
-                    return;
-                }
-                double now = now();
-                double next = tick(now, out, calls, retired);
-                for (FileSender s : senders.values()) {
-                    data |= s.hasData(now);
-                }
-                if (out.isEmpty() && calls.isEmpty() && retired.isEmpty()) {
-                    try {
-                        if (senders.isEmpty() && fetches.isEmpty() && incoming.isEmpty() && receiver.transfers.isEmpty()) {
-                            changed.await(); // idle: woken by send, fetch, a message or close
-                        } else {
-                            double wait = Double.isNaN(next) ? 1.0 : Math.max(0.001, Math.min(1.0, next - now));
-                            changed.awaitNanos((long) (wait * 1e9));
-                        }
-                    } catch (InterruptedException e) {
-                        return;
-                    }
-                }
-            } catch (RuntimeException e) {
-                System.err.println("ttctl FileTransfers: " + e);
-            } finally {
-                lock.unlock();
-            }
-            for (LinkScheduler.BulkSource p : retired) {
-                scheduler.removeSource(p);
-            }
-            for (byte[] f : out) {
-                try {
-                    scheduler.sendControl(f);
-                } catch (RuntimeException e) {
-                    // the scheduler is closed: the transfers time out
-                }
-            }
-            if (data || !out.isEmpty()) {
-                scheduler.wake();
-            }
-            for (Runnable r : calls) {
-                Callbacks.run(listeners, r, "a transfer listener");
-            }
-        }
-    }
-
-    /** Under the lock: control frames due, callbacks due; returns the next deadline (NaN: none). */
-    private double tick(double now, List<byte[]> out, List<Runnable> calls, List<LinkScheduler.BulkSource> retired) {
-        String problem = scheduler.linkProblem();
-        double next = Double.NaN;
-        out.addAll(queued);
-        queued.clear();
-        for (final Transfer t : announce) {
-            final IncomingListener il = incomingListener;
-            calls.add(new Runnable() {
-                @Override
-                public void run() {
-                    if (il != null) {
-                        t.listener = il.onIncoming(t);
-                    }
-                }
-            });
-        }
-        announce.clear();
-        Iterator<Map.Entry<Transfer, FileSender>> it = senders.entrySet().iterator();
-        while (it.hasNext()) {
-            Map.Entry<Transfer, FileSender> e = it.next();
-            Transfer t = e.getKey();
-            FileSender s = e.getValue();
-            for (MavlinkMessage m : s.control(now, problem)) {
-                out.add(encode(m));
-            }
-            progress(t, s.ackedBytes(), s.size, s.result, calls);
-            if (s.done()) {
-                LinkScheduler.BulkSource p = pulls.remove(t);
-                if (p != null) {
-                    retired.add(p); // removed once our lock is released
-                }
-                if (now - s.result.seconds - s.started > LINGER) {
-                    it.remove();
-                }
-            }
-            next = min(next, s.deadline(now));
-        }
-        Iterator<Map.Entry<Transfer, FileFetch>> jt = fetches.entrySet().iterator();
-        while (jt.hasNext()) {
-            Map.Entry<Transfer, FileFetch> e = jt.next();
-            FileFetch f = e.getValue();
-            for (MavlinkMessage m : f.control(now, problem)) {
-                out.add(encode(m));
-            }
-            if (f.done() && f.incoming != null && !finalResult(f.incoming.result)
-                    && receiver.transfers.get(f.incoming.key) == f.incoming) {
-                receiver.close(f.incoming); // gave up: the partial file stays for the next fetch
-            }
-            progress(e.getKey(), f.have, f.size(), f.result, calls);
-            if (f.done() && now - f.finishedAt > LINGER) {
-                receiver.unexpect(f.targetSys, f.targetComp, f.requestId);
-                jt.remove();
-            }
-            next = min(next, f.deadline(now));
-        }
-        for (MavlinkMessage m : receiver.control(now)) {
-            out.add(encode(m));
-        }
-        next = min(next, receiver.deadline());
-        Iterator<Map.Entry<Transfer, Incoming>> kt = incoming.entrySet().iterator();
-        while (kt.hasNext()) {
-            Map.Entry<Transfer, Incoming> e = kt.next();
-            Transfer tr = e.getKey();
-            Incoming t = e.getValue();
-            if (!tr.isDone()) {
-                TransferResult r = incomingResult(now, tr, t, problem);
-                progress(tr, t.held(), t.size, r, calls);
-                if (r == null) {
-                    next = min(next, t.lastActivity + cfg.giveUpAfter);
-                }
-            } else if (now - (t.started + tr.result().seconds) > LINGER) {
-                kt.remove();
-            }
-        }
-        return next;
-    }
-
-    private void progress(final Transfer t, final long done, final long size, final TransferResult result,
-                          List<Runnable> calls) {
-        if (t.future.isDone()) {
-            return;
-        }
-        boolean moved = done != t.done || size != t.size;
-        t.done = done;
-        t.size = size;
-        if (moved) {
-            calls.add(new Runnable() {
-                @Override
-                public void run() {
-                    Transfer.Listener l = t.listener;
-                    if (l != null) {
-                        l.onProgress(t, done, size);
-                    }
-                }
-            });
-        }
-        if (result != null) {
-            if (result.file != null) {
-                t.file = result.file;
-            }
-            t.future.complete(result); // visible at once; the listener follows on the listener executor
-            calls.add(new Runnable() {
-                @Override
-                public void run() {
-                    Transfer.Listener l = t.listener;
-                    if (l != null) {
-                        l.onComplete(t, result);
-                    }
-                }
-            });
-        }
-    }
-
-    private static double min(double a, double b) {
-        return Double.isNaN(a) ? b : Double.isNaN(b) ? a : Math.min(a, b);
     }
 
     /**
@@ -994,15 +522,15 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
             double now = now();
             for (Map.Entry<Transfer, FileSender> e : senders.entrySet()) {
                 e.getValue().cancel(now);
-                progress(e.getKey(), e.getValue().ackedBytes(), e.getValue().size, e.getValue().result, calls);
+                TransferTimer.progress(e.getKey(), e.getValue().ackedBytes(), e.getValue().size, e.getValue().result, calls);
             }
             for (Map.Entry<Transfer, FileFetch> e : fetches.entrySet()) {
                 e.getValue().cancel(now);
-                progress(e.getKey(), e.getValue().have, e.getValue().size(), e.getValue().result, calls);
+                TransferTimer.progress(e.getKey(), e.getValue().have, e.getValue().size(), e.getValue().result, calls);
             }
             for (Map.Entry<Transfer, Incoming> e : incoming.entrySet()) {
                 Incoming t = e.getValue();
-                progress(e.getKey(), t.held(), t.size, new TransferResult(false, "CANCELLED", t.name + " from " + t.who()
+                TransferTimer.progress(e.getKey(), t.held(), t.size, new TransferResult(false, "CANCELLED", t.name + " from " + t.who()
                         + ": cancelled (what arrived is kept for a resume)", t.name, t.size, now - t.started, 0, 0,
                         Math.max(0, t.resumed), Math.max(0, t.held() - Math.max(0, t.resumed)), false, null), calls);
             }
