@@ -4,6 +4,7 @@ double execution, failure after retries)."""
 
 from __future__ import annotations
 
+import itertools
 import json
 import os
 import random
@@ -561,3 +562,29 @@ def test_a_deadline_met_exactly_is_acted_on_whatever_the_float_rounding(tmp_path
     w.run(400, stop=lambda: s.done and not w.onboard.receiver.transfers)  # type: ignore[union-attr]
     assert s.done and s.result is not None and s.result.code == "TIMEOUT"
     assert not w.onboard.receiver.transfers
+
+
+def test_complete_is_said_again_shortly_so_a_receiver_that_exits_is_still_heard(tmp_path: Path) -> None:
+    """A receiver process may end right after its file is complete (`send-file --from` drains a
+    moment and exits): its COMPLETE status goes three times, 50 ms apart, so one lost packet does
+    not leave the sender (a server) recording a delivered, verified file as failed when the next
+    process on that port refuses its probe."""
+    w = World(tmp_path, onboard_dir=tmp_path / "on")
+    rx = w.onboard.receiver
+    assert rx is not None
+    said: list[float] = []
+    real = rx.control
+
+    def spy(now: float) -> list[tuple[Any, object]]:
+        out = real(now)
+        said.extend(now for m, _ in out if type(m).__name__ == "TtFileStatus"
+                    and m.result == ttapi.TtFileResult.TT_FILE_RESULT_COMPLETE)
+        return out
+
+    rx.control = spy  # type: ignore[method-assign]
+    s = w.tablet.send_file("a.bin", ONBOARD, source=BytesSource(b"x" * 500, "a.bin"))
+    end = w.run(60, stop=lambda: s.done)
+    assert s.result is not None and s.result.ok
+    w.run(end + 2.0)
+    assert len(said) == 3, said
+    assert all(b - a >= 0.05 - 1e-9 for a, b in itertools.pairwise(said)), said

@@ -33,6 +33,12 @@ from .transfer import MAX_RANGES, Key, TransferConfig, meta_check, reason_fit
 MAX_PENDING_OFFERS = 64  # offers whose metadata is still arriving: a flood of them is not our memory's problem
 MAX_UNKNOWN = 256  # transfer ids recently told 'unknown'
 MAX_KNOWN = 1024  # transfers remembered at once (those not receiving are forgotten first, oldest first)
+# A COMPLETE status is said COMPLETE_REPEATS more times, COMPLETE_REPEAT_GAP s apart: a receiver
+# process that ends right after its file is complete (send-file --from drains for a moment, then
+# exits) cannot answer the sender's later probe, and a lost last COMPLETE left the sender (a Java
+# or Python server) recording a delivered, verified file as failed.
+COMPLETE_REPEATS = 2
+COMPLETE_REPEAT_GAP = 0.05
 
 _REFUSAL = {
     "NAME": R.TT_FILE_RESULT_REFUSED_NAME,
@@ -73,6 +79,7 @@ class Incoming:
         self.last_status = -1e9
         self.final_path: str | None = None
         self.finished_at: float | None = None
+        self.finals_left = 0  # repeats of the COMPLETE status still to send (see COMPLETE_REPEATS)
         self.nothing_sent = False  # complete without data: an identical file, or a whole partial, was here
         self.identical = False  # complete because an identical file was there under the name
         self.started = now
@@ -267,6 +274,7 @@ class FileReceiver:
                 return self._refuse(t, now, R.TT_FILE_RESULT_FAILED_IO, str(e))
             if already:
                 t.result, t.nothing_sent, t.identical, t.finished_at = R.TT_FILE_RESULT_COMPLETE, True, True, now
+                t.finals_left = COMPLETE_REPEATS
                 t.final_path = str(self.store.final_path(t.name))
                 self._event("complete", t)
                 self._status_now(t, now)
@@ -370,6 +378,7 @@ class FileReceiver:
             t.result, t.reason = code, reason
             if code == R.TT_FILE_RESULT_COMPLETE:
                 t.final_path, t.finished_at = final, now
+                t.finals_left = COMPLETE_REPEATS
                 self._event("complete", t)
             else:
                 self._event("failed", t)
@@ -485,6 +494,9 @@ class FileReceiver:
             flowing = (t.result == R.TT_FILE_RESULT_IN_PROGRESS and t.partial is not None
                        and t.last_data is not None and now - t.last_data < self.cfg.status_interval)
             t.status_due = now + self.cfg.status_interval if flowing else None
+            if t.result == R.TT_FILE_RESULT_COMPLETE and t.finals_left > 0:  # said again, shortly
+                t.finals_left -= 1
+                t.status_due = now + COMPLETE_REPEAT_GAP
         for key in self._unknown_due:
             out.append((self.b.TtFileStatus(target_system=key[0], target_component=key[1], transfer_id=key[2],
                                            result=int(R.TT_FILE_RESULT_UNKNOWN_TRANSFER)), ("unknown", key)))

@@ -20,7 +20,8 @@ Protocol (messages of dialects/ttapi.xml):
    an RTT.
 4. When every byte is there the receiver checks the SHA-256 (of the inflated file, when the
    offer was TT_FILE_FLAGS_DEFLATE: see deflate.py) and renames the file into place,
-   then reports COMPLETE (and repeats that to any late offer or data of that transfer). A
+   then reports COMPLETE, twice more 50 ms apart (and again to any late offer or data of that
+   transfer). A
    SHA-256 mismatch discards the data; the sender starts again under a new id (twice at most).
 """
 
