@@ -145,8 +145,11 @@ def test_upload_efficiency_and_commands_vs_python(classes: Path, tmp_path: Path,
     idle ones."""
     port, _ = air(start, tmp_path, model, seed)
     java_file, py_file, java2, py2 = files(tmp_path, "java.bin", "python.bin", "java2.bin", "python2.bin")
+    # a command every 0.5 s during the 12-second upload: about 20 of them, so that the "most
+    # within the bound" share below is judged on enough of them (with 7, two commands that each
+    # lost two tries in a row, 4 % apiece at 10 % loss each way, failed it)
     d = Driver(classes, tmp_path, "java", link="udp", port=port, rate=RATE, timeout=30, send=java_file.name,
-               idle=12, during=1000)
+               idle=12, during=500)
     java_port = int(d.wait_for("PORT ").split()[1])
     stop = threading.Event()
     junk = threading.Thread(target=garbage, args=(java_port, stop), daemon=True)
@@ -181,7 +184,7 @@ def test_upload_efficiency_and_commands_vs_python(classes: Path, tmp_path: Path,
               "during_errors": r["during_errors"]}
     print("MEASURED", json.dumps(report))
     assert java_eff >= 0.9 * py_eff, report
-    assert len(idle) >= 10 and len(during) >= 5, report
+    assert len(idle) >= 10 and len(during) >= 12, report
     # with 10 % loss each way a fifth of the commands (idle or not) need a retry: the typical
     # command during the transfer must be as fast as the idle p95 + 200 ms, and most within it,
     # at burst loss as at random (the relay's bursts last burst_mean slots of time, so they no
