@@ -3192,7 +3192,7 @@ struct Fields<mav::TtFileOffer> {
 
 template <>
 struct Fields<mav::TtFileStatus> {
-    static constexpr std::array<FieldSpec, 12> value{ {
+    static constexpr std::array<FieldSpec, 13> value{ {
         FIELD(mav::TtFileStatus, target_system),
         FIELD(mav::TtFileStatus, target_component),
         FIELD(mav::TtFileStatus, transfer_id),
@@ -3204,6 +3204,7 @@ struct Fields<mav::TtFileStatus> {
         FIELD(mav::TtFileStatus, hold_ms),
         FIELD(mav::TtFileStatus, range_count),
         FIELD(mav::TtFileStatus, meta_check),
+        FIELD(mav::TtFileStatus, rate_grant),
         FIELD(mav::TtFileStatus, ranges),
     } };
 };

@@ -5018,6 +5018,8 @@ public final class Conformance {
         sb.append(m.range_count);
         sb.append(",\"meta_check\":");
         sb.append(m.meta_check);
+        sb.append(",\"rate_grant\":");
+        sb.append(m.rate_grant);
         sb.append(",\"ranges\":");
         ConformanceJson.longs(sb, m.ranges);
     }
@@ -13575,6 +13577,9 @@ public final class Conformance {
                     break;
                 case "meta_check":
                     m.meta_check = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_STATUS.meta_check");
+                    break;
+                case "rate_grant":
+                    m.rate_grant = (int) ConformanceJson.integer(v, 0, 65535, "TT_FILE_STATUS.rate_grant");
                     break;
                 case "ranges":
                     m.ranges = ConformanceJson.longs(v, 14, 0, 4294967295L, "TT_FILE_STATUS.ranges");

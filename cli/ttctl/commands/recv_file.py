@@ -165,6 +165,7 @@ async def _recv(o: RecvOptions, b: Any, spec: Any, link: LinkChoice, store: Any,
 
     transport = make_transport(spec, log=lambda text: err(f"{spec.kind}: {text}"))
     ep = Endpoint(b, o.sysid, o.compid, mtu=transport.mtu, rate_Bps=link.pace_Bps, receive_dir=store,
+                  inbound_Bps=link.recv_capacity,
                   serve_dir=str(o.serve) if o.serve is not None else None, on_event=on_event, signing=signing)
     runner = Runner(ep, transport, quiet=link.quiet, hello=hello(o.sysid, spec, b))
     await start(runner)  # the port first: a refusal leaves no directory behind

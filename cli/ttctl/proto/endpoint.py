@@ -78,7 +78,8 @@ class _ServedRequest:
 class Endpoint:
     """`bindings`: the dialect on the link (its parser decodes what arrives; its classes are
     what the runtime makes). `signing`: MAVLink 2 signing (a Signing of any package: frames are
-    signed against this dialect's registry)."""
+    signed against this dialect's registry). `inbound_Bps`: what this end can take from its link,
+    shared out among concurrent incoming transfers by rate grants (sharing.py; None: no grants)."""
 
     def __init__(self, bindings: Bindings, sysid: int, compid: int, *, mtu: int = 100, rate_Bps: float | None = None,
                  receive_dir: ReceiveDir | None = None, serve_dir: str | None = None,
@@ -87,7 +88,7 @@ class Endpoint:
                  on_message: Callable[[float, Any], None] | None = None,
                  on_event: Callable[[str, Any], None] | None = None, accept_commands: bool = True,
                  unsolicited: bool = True, rng: random.Random | None = None, compress: bool = True,
-                 inflate: bool = True) -> None:
+                 inflate: bool = True, inbound_Bps: float | None = None) -> None:
         self.b = bindings
         self.sysid = sysid
         self.compid = compid
@@ -99,7 +100,7 @@ class Endpoint:
         self._last_rx: dict[Hashable, float] = {}
         self.scheduler = Scheduler(mtu, rate_Bps, sign=bindings.sign(signing) if signing is not None else None)
         self.receiver = (FileReceiver(bindings, receive_dir, sysid, compid, self.cfg, on_event=self._file_event,
-                                      unsolicited=unsolicited, inflate=inflate)
+                                      unsolicited=unsolicited, inflate=inflate, inbound_Bps=inbound_Bps)
                          if receive_dir is not None else None)
         if self.receiver is not None and rate_Bps:
             # statuses go back over our own link: on a slow one, fewer of them
@@ -124,6 +125,7 @@ class Endpoint:
         self.now = 0.0
         self.ignored = 0
         self.peers: dict[tuple[int, int], float] = {}  # who we heard from, when
+        self.heard: dict[tuple[int, int], int] = {}  # frames from each of them
         self._streams_out: list[Any] = []  # newest-wins sources (add_stream)
         self._refused_sources: set[Hashable] = set()  # reported once each (signing)
         self.unknown = 0  # frames of messages this dialect lacks (the peer speaks another one)
@@ -365,7 +367,9 @@ class Endpoint:
         return seen
 
     def _handle(self, now: float, msg: Any) -> None:
-        self.peers[(msg.get_srcSystem(), msg.get_srcComponent())] = now
+        src = (msg.get_srcSystem(), msg.get_srcComponent())
+        self.peers[src] = now
+        self.heard[src] = self.heard.get(src, 0) + 1
         b = self.b
         if isinstance(msg, (b.TtFileData, b.TtFileDataWide)):
             if self.receiver is not None:

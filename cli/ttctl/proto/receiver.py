@@ -12,6 +12,8 @@ A deflated offer (TT_FILE_FLAGS_DEFLATE) is received as its zlib stream, resumed
 file, and inflated only when the stream is whole, bounded by the size offered (storage.py); an
 offer with a flag this receiver does not know is refused with REFUSED_UNSUPPORTED, the flag
 named in its reason.
+
+When transfers share the link, every status carries the transfer's rate grant (sharing.py).
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ from ..wire.contract import TtFileResult as R
 from .deflate import InflateError, parse_deflate_meta
 from .names import SHA_LEN, Refused, check_name
 from .ranges import RangeSet
+from .sharing import ACTIVE_WINDOW, share
 from .storage import DiskFull, Partial, ReceiveDir, StorageError, partial_key
 from .transfer import MAX_RANGES, Key, TransferConfig, meta_check, reason_fit
 
@@ -117,7 +120,7 @@ class FileReceiver:
     def __init__(self, bindings: Bindings, store: ReceiveDir, sysid: int, compid: int,
                  config: TransferConfig | None = None, max_transfers: int = 8,
                  on_event: Callable[[str, Incoming], None] | None = None, unsolicited: bool = True,
-                 inflate: bool = True) -> None:
+                 inflate: bool = True, inbound_Bps: float | None = None) -> None:
         self.b = bindings
         self.store = store
         self.sysid = sysid
@@ -134,6 +137,10 @@ class FileReceiver:
         self._unknown: OrderedDict[Key, float] = OrderedDict()  # told 'unknown transfer', when
         self._unknown_due: list[Key] = []
         self.evicted = 0  # offers forgotten before their metadata was whole, to make room in a flood
+        self.inbound_Bps = inbound_Bps  # what this end can take from its link: shared out by grants
+        self.grant = 0  # each sharing transfer's rate grant, B/s (0: none)
+        self.sharing: frozenset[Key] = frozenset()  # the transfers the link is shared among
+        self._grant_field = "rate_grant" in getattr(bindings.TtFileStatus, "FIELDS", ("rate_grant",))
 
     def expect(self, peer: tuple[int, int], request_id: int, name: str) -> None:
         self.expected[(peer[0], peer[1], request_id)] = name
@@ -458,14 +465,36 @@ class FileReceiver:
                 break
         return out
 
+    def _share(self, now: float) -> None:
+        """Who shares the link now (receiving, heard from lately); on a change, the new grant
+        is told to every one of them at once."""
+        window = max(ACTIVE_WINDOW, 4.0 * 100 / self.grant) if self.grant else ACTIVE_WINDOW
+        sharing = frozenset(k for k, t in self.transfers.items()
+                            if t.partial is not None and now - t.last_activity < window)
+        if sharing == self.sharing:
+            return
+        self.sharing = sharing
+        grant = share(self.inbound_Bps, len(sharing))
+        if grant == self.grant:
+            return
+        self.grant = grant
+        for k in sharing:
+            t = self.transfers[k]
+            soon = max(now, t.last_status + self._min_interval(t))
+            t.status_due = soon if t.status_due is None else min(t.status_due, soon)
+
     def _status(self, t: Incoming, rc: int, region: int, re: int,
                 gaps: list[tuple[int, int]]) -> Any:
         flat = [x for gap in gaps for x in gap]
+        extra = {}
+        if self._grant_field:  # (a dialect with an older copy of ttapi.xml has no grants)
+            sharing = t.key in self.sharing and t.result == R.TT_FILE_RESULT_IN_PROGRESS and t.partial is not None
+            extra["rate_grant"] = self.grant if sharing else 0
         return self.b.TtFileStatus(
             target_system=t.key[0], target_component=t.key[1], transfer_id=t.key[2], result=int(t.result),
             received_contiguous=rc, region_start=region, received_end=re, last_offset=t.last_offset,
             hold_ms=min(65535, int(1000 * (self.now - t.last_data))) if t.last_data is not None else 65535,
-            range_count=len(gaps), meta_check=t.check, ranges=flat + [0] * (2 * MAX_RANGES - len(flat)))
+            range_count=len(gaps), meta_check=t.check, ranges=flat + [0] * (2 * MAX_RANGES - len(flat)), **extra)
 
     def reason_message(self, t: Incoming) -> Any:
         return self.b.TtFileReason(target_system=t.key[0], target_component=t.key[1], transfer_id=t.key[2],
@@ -480,7 +509,8 @@ class FileReceiver:
         for t in list(self.transfers.values()):
             if now >= t.last_activity + self.cfg.idle_timeout:  # as deadline() adds it: no float gap
                 self._close(t)
-                continue
+        self._share(now)
+        for t in list(self.transfers.values()):
             quiet = t.quiet_due is not None and now >= max(t.quiet_due, t.last_status + self._min_interval(t))
             if not (quiet or (t.status_due is not None and now >= t.status_due)):
                 continue

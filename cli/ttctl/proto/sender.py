@@ -9,6 +9,9 @@ With `compress`, a file that deflates well is offered as its zlib stream (deflat
 receiver that refuses that (REFUSED_UNSUPPORTED: it does not inflate; or, as receivers from
 before deflate do, the name the longer metadata makes; or a stream it could not inflate to the
 file) gets the file again, uncompressed, under a new transfer id: `fallback` says why.
+
+Data frames leave no faster than the receiver's latest rate grant allows (sharing.py), when
+it gives one.
 """
 
 from __future__ import annotations
@@ -22,6 +25,7 @@ from ..wire.contract import TtFileResult as R
 from .deflate import DeflatedSource, deflate_meta, deflated
 from .names import Refused, check_name, encoded
 from .ranges import RangeSet
+from .sharing import GrantPacer
 from .transfer import (
     META_PART,
     NARROW,
@@ -79,6 +83,7 @@ class FileSender:
         self.rtt = 0.5
         self._rtt_sampled = False
         self.byte_time = 0.0  # seconds per byte on the link, if known (set by the endpoint)
+        self.pacer = GrantPacer()  # the receiver's rate grant for our data frames
         self._begin(now)
 
     def _begin(self, now: float) -> None:
@@ -229,6 +234,10 @@ class FileSender:
 
     # -- data ---------------------------------------------------------------------------------
     def has_data(self, now: float) -> bool:
+        """A data frame may leave now (the scheduler's pacer permitting)."""
+        return self._wants_data(now) and self.pacer.ready(now)
+
+    def _wants_data(self, now: float) -> bool:
         if self.state != "sending":
             return False
         if self.retx or self.next_new < self.size:
@@ -256,7 +265,7 @@ class FileSender:
         return better
 
     def next_data(self, now: float, space: int) -> Any:
-        if self.state != "sending":
+        if self.state != "sending" or not self.pacer.ready(now):
             return None
         mode = self.mode
         frame_len = WIDE_FRAME if mode == "wide" else NARROW_FRAME
@@ -290,6 +299,7 @@ class FileSender:
         self._record(left, offset, offset + length)
         if retx is None:
             self._unclassified.append((offset, offset + length, left, mode))
+        self.pacer.sent(now, frame_len)
         self.stats.bytes_sent += length
         self.stats.frames_sent += 1
         if self.stats.data_started is None:
@@ -302,7 +312,7 @@ class FileSender:
             msg = self.b.TtFileData(transfer_id=self.id, offset=offset, data=data)
         if self.cfg.frame_mode == "auto" and self.stats.narrow_frames >= self.cfg.probe_frames:
             self.mode = self._choose_mode()
-        if not self.has_data(now) and self._probe_due is None:
+        if not self._wants_data(now) and self._probe_due is None:
             self._probe_due = now + max(2 * self.rtt, 0.5)
         return msg
 
@@ -421,6 +431,7 @@ class FileSender:
             self._probe_due = None
             self.busy = None
             self.last_progress = now
+        self.pacer.update(getattr(msg, "rate_grant", 0))
         self._rtt_from_echo(now, msg)
         self._apply_status(now, msg)
         if self.on_progress:
@@ -486,7 +497,7 @@ class FileSender:
             self.retx.remove(a, b)
         self._sent = [(s, e, ts) for s, e, ts in self._sent if not self.acked.covers(s, e)]
         self._classify(horizon, re, truncated, missing)
-        self._probe_due = None if self.has_data(now) else now + max(2 * self.rtt, 0.5)
+        self._probe_due = None if self._wants_data(now) else now + max(2 * self.rtt, 0.5)
 
     def _classify(self, horizon: float, re: int, truncated: bool, missing: list[tuple[int, int]]) -> None:
         """Loss, measured exactly: each first transmission, once a status covers its bytes, was
@@ -518,6 +529,9 @@ class FileSender:
         if self.done:
             return None
         times = [self.last_progress + self.cfg.give_up_after]
+        granted = self.pacer.ready_at()
+        if granted is not None and granted > now and self._wants_data(now):
+            times.append(granted)  # data waits for its grant
         if self.state == "sending" and not self.retx and self.next_new >= self.size:
             due = self._tail_due()
             if due is not None and due > now:

@@ -238,7 +238,7 @@ inline constexpr std::array<MessageInfo, 224> MESSAGE_INFO{ {
     {12919, 7, 18, 18, "OPEN_DRONE_ID_SYSTEM_UPDATE"},
     {12920, 20, 5, 5, "HYGROMETER_SENSOR"},
     {50000, 88, 88, 88, "TT_FILE_OFFER"},
-    {50001, 193, 86, 30, "TT_FILE_STATUS"},
+    {50001, 193, 88, 30, "TT_FILE_STATUS"},
     {50002, 203, 88, 88, "TT_FILE_DATA"},
     {50003, 129, 88, 88, "TT_FILE_REQUEST"},
     {50004, 70, 66, 66, "DJI_POSE_STAMPED"},

@@ -17866,7 +17866,7 @@ struct TtFileOffer {
 struct TtFileStatus {
     static constexpr std::uint32_t MSG_ID = 50001;
     static constexpr std::uint8_t CRC_EXTRA = 193;
-    static constexpr std::size_t PAYLOAD_LENGTH = 86;
+    static constexpr std::size_t PAYLOAD_LENGTH = 88;
     static constexpr std::size_t MIN_LENGTH = 30;
     static constexpr const char* NAME = "TT_FILE_STATUS";
 
@@ -17907,9 +17907,16 @@ struct TtFileStatus {
     /// a request). It binds the status, COMPLETE above all, to that file under that name.
     std::uint32_t meta_check{};
 
-    /// Missing byte ranges, ascending, as start, end (exclusive) pairs. An extension so that it
-    /// comes last on the wire: unused pairs are zero and truncated away, and a status with few gaps
-    /// is short. [bytes] (extension)
+    /// The rate at which this transfer's sender may send its data frames, in link bytes per second
+    /// (a frame counts its whole length), so that several transfers to one receiver share its
+    /// inbound capacity instead of overflowing it: the receiver divides what it knows it can take
+    /// among the transfers it hears from. 0: no grant (the sender paces to its own link rate). A
+    /// sender paces to the lower of its own rate and the latest grant. [B/s] (extension)
+    std::uint16_t rate_grant{};
+
+    /// Missing byte ranges, ascending, as start, end (exclusive) pairs. The last extension so that
+    /// it comes last on the wire: unused pairs are zero and truncated away, and a status with few
+    /// gaps is short. [bytes] (extension)
     std::array<std::uint32_t, 14> ranges{};
 
     /// The payload in wire order, little endian, into `out` (which must hold PAYLOAD_LENGTH
@@ -17927,7 +17934,8 @@ struct TtFileStatus {
         put_le(out + 27, this->target_component);
         put_le(out + 28, this->result);
         put_le(out + 29, this->range_count);
-        put_le(out + 30, this->ranges);
+        put_le(out + 30, this->rate_grant);
+        put_le(out + 32, this->ranges);
         return truncated_length(out, PAYLOAD_LENGTH);
     }
 
@@ -17954,7 +17962,8 @@ struct TtFileStatus {
         get_le(p + 27, m.target_component);
         get_le(p + 28, m.result);
         get_le(p + 29, m.range_count);
-        get_le(p + 30, m.ranges);
+        get_le(p + 30, m.rate_grant);
+        get_le(p + 32, m.ranges);
         return m;
     }
 

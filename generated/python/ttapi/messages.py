@@ -19904,18 +19904,18 @@ class TtFileOffer(Message):
 class TtFileStatus(Message):
     """TT_FILE_STATUS (id 50001): [sender: any] [runtime] The receiver's view of a transfer: sent on accepting or refusing an offer, while data flows (regularly, when new gaps appear, and when data stops coming), and on completion. Bytes below received_contiguous have all arrived; in [region_start, received_end) everything arrived except the listed missing ranges. When there are more gaps than fit, several statuses describe successive regions. A sender takes a status for its own only if both transfer_id and meta_check match its offer."""
 
-    __slots__ = ("hold_ms", "last_offset", "meta_check", "range_count", "ranges", "received_contiguous", "received_end", "region_start", "result", "target_component", "target_system", "transfer_id",)
+    __slots__ = ("hold_ms", "last_offset", "meta_check", "range_count", "ranges", "rate_grant", "received_contiguous", "received_end", "region_start", "result", "target_component", "target_system", "transfer_id",)
     MSG_ID: ClassVar[int] = 50001
     NAME: ClassVar[str] = "TT_FILE_STATUS"
     CRC_EXTRA: ClassVar[int] = 193
-    PAYLOAD_LENGTH: ClassVar[int] = 86
+    PAYLOAD_LENGTH: ClassVar[int] = 88
     MIN_LENGTH: ClassVar[int] = 30
-    FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "transfer_id", "result", "received_contiguous", "region_start", "received_end", "last_offset", "hold_ms", "range_count", "meta_check", "ranges",)
+    FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "transfer_id", "result", "received_contiguous", "region_start", "received_end", "last_offset", "hold_ms", "range_count", "meta_check", "rate_grant", "ranges",)
     ENUMS: ClassVar[dict[str, str]] = {"result": "TT_FILE_RESULT"}
-    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint32_t", "uint8_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint16_t", "uint8_t", "uint32_t", "uint32_t[14]",)
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint32_t", "uint8_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint16_t", "uint8_t", "uint32_t", "uint16_t", "uint32_t[14]",)
     _IDB: ClassVar[bytes] = b'Q\xc3\x00'
     _XB: ClassVar[bytes] = b'\xc1'
-    _S: ClassVar[struct.Struct] = struct.Struct("<IIIIIIHBBBBIIIIIIIIIIIIII")
+    _S: ClassVar[struct.Struct] = struct.Struct("<IIIIIIHBBBBHIIIIIIIIIIIIII")
 
     target_system: int
     """File sender's system id."""
@@ -19950,8 +19950,11 @@ class TtFileStatus(Message):
     meta_check: int
     """The first 4 bytes, little-endian, of the SHA-256 of the offer's whole metadata blob (the file's SHA-256 then its name), once the receiver has all of it; 0 before (and in answers to a request). It binds the status, COMPLETE above all, to that file under that name."""
 
+    rate_grant: int
+    """The rate at which this transfer's sender may send its data frames, in link bytes per second (a frame counts its whole length), so that several transfers to one receiver share its inbound capacity instead of overflowing it: the receiver divides what it knows it can take among the transfers it hears from. 0: no grant (the sender paces to its own link rate). A sender paces to the lower of its own rate and the latest grant. [B/s] (extension)"""
+
     ranges: Sequence[int]
-    """Missing byte ranges, ascending, as start, end (exclusive) pairs. An extension so that it comes last on the wire: unused pairs are zero and truncated away, and a status with few gaps is short. [bytes] (extension)"""
+    """Missing byte ranges, ascending, as start, end (exclusive) pairs. The last extension so that it comes last on the wire: unused pairs are zero and truncated away, and a status with few gaps is short. [bytes] (extension)"""
 
     def __init__(
         self,
@@ -19966,6 +19969,7 @@ class TtFileStatus(Message):
         hold_ms: int = 0,
         range_count: int = 0,
         meta_check: int = 0,
+        rate_grant: int = 0,
         ranges: Sequence[int] = (0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,),
     ) -> None:
         self.target_system = target_system
@@ -19979,6 +19983,7 @@ class TtFileStatus(Message):
         self.hold_ms = hold_ms
         self.range_count = range_count
         self.meta_check = meta_check
+        self.rate_grant = rate_grant
         self.ranges = ranges
 
     def pack_payload(self) -> bytes:
@@ -19995,6 +20000,7 @@ class TtFileStatus(Message):
                 self.target_component,
                 self.result,
                 self.range_count,
+                self.rate_grant,
                 *_array(self.ranges, 14, "TT_FILE_STATUS.ranges"),
             )
         except struct.error as e:
@@ -20016,7 +20022,8 @@ class TtFileStatus(Message):
         self.target_component = t[8]
         self.result = t[9]
         self.range_count = t[10]
-        self.ranges = t[11:25]
+        self.rate_grant = t[11]
+        self.ranges = t[12:26]
         return self
 
 

@@ -48,6 +48,7 @@ class OnboardConfig:
     home: Home = field(default_factory=Home)
     speed: float = 1.0
     rate_Bps: float | None = None  # pacing of the DTT downlink
+    inbound_Bps: float | None = None  # the DTT uplink's capacity: shared out among incoming files
     telemetry_hz: float = 2.0  # TT_NAV_SAT_FIX and TT_ODOMETRY to the tablet
     orbit_hz: float = 10.0  # the orbit camera's publishing rate while head poses arrive (0: no orbit camera)
     signing: Any = None  # Signing for the DTT link (None: unsigned, signed frames unverified)
@@ -268,7 +269,7 @@ class OnboardNode:
         if self.cfg.dtt is not None:
             transport: Transport = make_transport(self.cfg.dtt, log=lambda text: self.log(f"dtt: {text}"))
             self.endpoint = Endpoint(self.b, self.cfg.sysid, ONBOARD_COMPID, mtu=transport.mtu,
-                                     rate_Bps=self.cfg.rate_Bps, receive_dir=store,
+                                     rate_Bps=self.cfg.rate_Bps, receive_dir=store, inbound_Bps=self.cfg.inbound_Bps,
                                      serve_dir=str(self.cfg.serve) if self.cfg.serve else None,
                                      action=self.tablet_action, on_message=self._on_tablet_message,
                                      on_event=self._file_event, signing=self.cfg.signing,

@@ -271,7 +271,7 @@ public final class Ttapi implements ttctl.ttapi.runtime.MavlinkDialect {
         all[208] = new ttctl.ttapi.runtime.MessageInfo(12919, "OPEN_DRONE_ID_SYSTEM_UPDATE", 7, 18, 18);
         all[209] = new ttctl.ttapi.runtime.MessageInfo(12920, "HYGROMETER_SENSOR", 20, 5, 5);
         all[210] = new ttctl.ttapi.runtime.MessageInfo(50000, "TT_FILE_OFFER", 88, 88, 88);
-        all[211] = new ttctl.ttapi.runtime.MessageInfo(50001, "TT_FILE_STATUS", 193, 86, 30);
+        all[211] = new ttctl.ttapi.runtime.MessageInfo(50001, "TT_FILE_STATUS", 193, 88, 30);
         all[212] = new ttctl.ttapi.runtime.MessageInfo(50002, "TT_FILE_DATA", 203, 88, 88);
         all[213] = new ttctl.ttapi.runtime.MessageInfo(50003, "TT_FILE_REQUEST", 129, 88, 88);
         all[214] = new ttctl.ttapi.runtime.MessageInfo(50004, "DJI_POSE_STAMPED", 70, 66, 66);

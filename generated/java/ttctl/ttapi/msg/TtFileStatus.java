@@ -17,14 +17,14 @@ import ttctl.ttapi.runtime.Wire;
  * {@link MavlinkMessage}: int8_t byte, uint8_t int, int16_t short, uint16_t int, int32_t int,
  * uint32_t long, int64_t long, uint64_t long (two's complement bits, see Unsigned), float, double,
  * char[N] byte[] (exact bytes, with String helpers), uint8_t[N] and int8_t[N] byte[], other arrays
- * arrays of the scalar mapping. Extension fields: ranges.
+ * arrays of the scalar mapping. Extension fields: rate_grant, ranges.
  */
 public final class TtFileStatus extends MavlinkMessage {
     public static final int MSG_ID = 50001;
     public static final String NAME = "TT_FILE_STATUS";
     public static final int CRC_EXTRA = 193;
     /** Payload length with extension fields. */
-    public static final int PAYLOAD_LENGTH = 86;
+    public static final int PAYLOAD_LENGTH = 88;
     /** Payload length without extension fields. */
     public static final int MIN_LENGTH = 30;
 
@@ -72,9 +72,18 @@ public final class TtFileStatus extends MavlinkMessage {
     public long meta_check;
 
     /**
-     * Missing byte ranges, ascending, as start, end (exclusive) pairs. An extension so that it
-     * comes last on the wire: unused pairs are zero and truncated away, and a status with few gaps
-     * is short. [bytes] (uint32_t[14]; extension)
+     * The rate at which this transfer's sender may send its data frames, in link bytes per second
+     * (a frame counts its whole length), so that several transfers to one receiver share its
+     * inbound capacity instead of overflowing it: the receiver divides what it knows it can take
+     * among the transfers it hears from. 0: no grant (the sender paces to its own link rate). A
+     * sender paces to the lower of its own rate and the latest grant. [B/s] (uint16_t; extension)
+     */
+    public int rate_grant;
+
+    /**
+     * Missing byte ranges, ascending, as start, end (exclusive) pairs. The last extension so that
+     * it comes last on the wire: unused pairs are zero and truncated away, and a status with few
+     * gaps is short. [bytes] (uint32_t[14]; extension)
      */
     public long[] ranges = new long[14];
 
@@ -84,7 +93,7 @@ public final class TtFileStatus extends MavlinkMessage {
 
 
     /** A message with these field values (arrays are used, not copied). */
-    public TtFileStatus(int target_system, int target_component, long transfer_id, int result, long received_contiguous, long region_start, long received_end, long last_offset, int hold_ms, int range_count, long meta_check, long[] ranges) {
+    public TtFileStatus(int target_system, int target_component, long transfer_id, int result, long received_contiguous, long region_start, long received_end, long last_offset, int hold_ms, int range_count, long meta_check, int rate_grant, long[] ranges) {
         this.target_system = target_system;
         this.target_component = target_component;
         this.transfer_id = transfer_id;
@@ -96,6 +105,7 @@ public final class TtFileStatus extends MavlinkMessage {
         this.hold_ms = hold_ms;
         this.range_count = range_count;
         this.meta_check = meta_check;
+        this.rate_grant = rate_grant;
         this.ranges = ranges;
     }
 
@@ -140,9 +150,10 @@ public final class TtFileStatus extends MavlinkMessage {
         Wire.putU8(out, 27, this.target_component, "TT_FILE_STATUS.target_component");
         Wire.putU8(out, 28, this.result, "TT_FILE_STATUS.result");
         Wire.putU8(out, 29, this.range_count, "TT_FILE_STATUS.range_count");
+        Wire.putU16(out, 30, this.rate_grant, "TT_FILE_STATUS.rate_grant");
         Wire.checkLength(this.ranges == null ? -1 : this.ranges.length, 14, "TT_FILE_STATUS.ranges");
         for (int i = 0; i < 14; i++) {
-            Wire.putU32(out, 30 + 4 * i, this.ranges[i], "TT_FILE_STATUS.ranges");
+            Wire.putU32(out, 32 + 4 * i, this.ranges[i], "TT_FILE_STATUS.ranges");
         }
         return Wire.truncated(out, PAYLOAD_LENGTH);
     }
@@ -171,9 +182,10 @@ public final class TtFileStatus extends MavlinkMessage {
         m.target_component = Wire.getU8(b, o + 27);
         m.result = Wire.getU8(b, o + 28);
         m.range_count = Wire.getU8(b, o + 29);
+        m.rate_grant = Wire.getU16(b, o + 30);
         m.ranges = new long[14];
         for (int i = 0; i < 14; i++) {
-            m.ranges[i] = Wire.getU32(b, o + 30 + 4 * i);
+            m.ranges[i] = Wire.getU32(b, o + 32 + 4 * i);
         }
         return m;
     }
@@ -192,6 +204,7 @@ public final class TtFileStatus extends MavlinkMessage {
                 + "hold_ms=" + this.hold_ms + ", "
                 + "range_count=" + this.range_count + ", "
                 + "meta_check=" + this.meta_check + ", "
+                + "rate_grant=" + this.rate_grant + ", "
                 + "ranges=" + java.util.Arrays.toString(this.ranges)
                 + "}";
     }

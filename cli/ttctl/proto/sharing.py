@@ -1,0 +1,55 @@
+"""Several transfers on one link, sans-IO: the receiver grants each transfer a share of what
+it can take, the senders pace to their grant (TT_FILE_STATUS.rate_grant).
+
+Each sender paces to its own link rate; five of them, in five processes, each at the full
+rate of a link they share overflow its buffer, and most of what they send is lost and sent
+again. Only the receiver sees them all, so it divides its inbound capacity (known from its
+link: `--profile`, `--rate`) equally among the transfers it is receiving and has heard from
+lately, and says each one's share in every status; a change in who shares (a transfer starts,
+ends or goes quiet) is told to every other at once. GRANT_FILL of the capacity goes to file
+data; the rest keeps room for commands, offers and polls, so that a command's latency holds
+while the link is shared. A lone transfer gets no grant (0): it paces to its own rate, as
+before.
+
+The shares are equal (max-min fair when every sender can use its share); a transfer that sends
+slower than its share leaves the rest of it unused until the receiver stops hearing from it.
+"""
+
+from __future__ import annotations
+
+GRANT_FILL = 0.95  # of the inbound capacity granted to file data when transfers share it
+ACTIVE_WINDOW = 3.0  # s: a receiving transfer heard from within this shares the link
+MIN_GRANT = 1  # B/s: a grant is never 0 (0 on the wire means "no grant")
+MAX_GRANT = 65535  # what TT_FILE_STATUS.rate_grant holds
+
+
+def share(capacity_Bps: float | None, sharing: int) -> int:
+    """Each transfer's grant when `sharing` transfers share `capacity_Bps` (0: no grant)."""
+    if not capacity_Bps or sharing < 2:
+        return 0
+    return max(MIN_GRANT, min(MAX_GRANT, int(capacity_Bps * GRANT_FILL / sharing)))
+
+
+class GrantPacer:
+    """A sender's pace under its grant: a frame of n bytes may leave n / grant seconds after
+    the one before (no credit is saved up while it waits for other reasons)."""
+
+    def __init__(self) -> None:
+        self.grant = 0  # B/s, 0: none
+        self.next_free = 0.0
+
+    def update(self, grant: int) -> None:
+        self.grant = max(0, int(grant))
+
+    def ready(self, now: float) -> bool:
+        return self.grant == 0 or now >= self.next_free - 1e-9
+
+    def ready_at(self) -> float | None:
+        return self.next_free if self.grant else None
+
+    def sent(self, now: float, nbytes: int) -> None:
+        if self.grant:
+            self.next_free = max(now, self.next_free) + nbytes / self.grant
+
+
+__all__ = ["ACTIVE_WINDOW", "GRANT_FILL", "GrantPacer", "share"]
