@@ -6,7 +6,8 @@ packets and no protocol, and efficiency = goodput / capacity. seconds runs from 
 sender starts until the verified file is in place at the receiver. Each case runs with several
 fixed seeds; the row reports the median. Latency rows {"case","p50_ms","p95_ms"} time
 TT_ACTION_COMMAND -> TT_COMMAND_ACK round trips, idle and during a bulk upload. "compressed"
-rows (not with --quick): text files deflated and as they are, see transfer_text.py.
+rows (not with --quick): text files deflated and as they are, see transfer_text.py; "sharing"
+rows (not with --quick): five senders at once to one receiver, see sharing.py.
 
 "ttctl-signed" is ttctl with MAVLink 2 signing on both ends (as `send-file --key` and `recv-file
 --key`): every frame carries a 13-byte signature (MAVLink 2 specification, "Message Signing"), so
@@ -247,13 +248,17 @@ def run(profile: Profile, distance: float, file_bytes: int, seeds: int, protocol
 
     text = [] if quick else transfer_text.rows(profile, distance, seed_list[:3])
     bounds += transfer_text.checks(text)
+    from . import sharing  # several senders at once to one receiver (not in --quick)
+
+    shared = [] if quick else sharing.rows(profile, distance, seed_list[:3])
+    bounds += sharing.checks(shared)
     report = {"profile": profile.name, "distance_m": distance, "extrapolated": extrapolated,
               "file_bytes": file_bytes, "seeds": seed_list,
               "frame_efficiency": {"narrow": NARROW / NARROW_FRAME, "wide": WIDE / WIDE_FRAME,
                                    "narrow_signed": round(NARROW / (NARROW_FRAME + SIGNATURE_OVERHEAD), 4),
                                    "wide_signed": round(WIDE / (WIDE_FRAME + SIGNATURE_OVERHEAD), 4)},
               "rows": [asdict(r) for r in rows], "latency": latency, "compressed": transfer_text.as_dicts(text),
-              "checks": bounds}
+              "sharing": sharing.as_dicts(shared), "checks": bounds}
     if plot:
         from .plots import plot_transfer
 
@@ -357,6 +362,10 @@ def _print_tables(report: dict[str, Any]) -> None:
         from .transfer_text import print_table
 
         print_table(report["compressed"])
+    if report.get("sharing"):
+        from .sharing import print_table as print_sharing
+
+        print_sharing(report["sharing"])
     titles = {"ttctl": "ttctl against one-packet frames' ceiling, 0.80 x (1 - the loss each seed realised)",
               "ttctl-signed": "signed ttctl against signed frames' ceiling: 80 file bytes in 113 under loss "
                               "(two packets, both must arrive), 247 in 280 (wide) on a clean link, at the loss "
