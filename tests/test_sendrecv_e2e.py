@@ -225,6 +225,22 @@ def test_no_receiver_times_out(tmp_path: Path) -> None:
     assert proc.stdout == ""
 
 
+def test_timeout_says_what_was_heard(tmp_path: Path, start: Start) -> None:
+    """An onboard end without --inbox takes no files but talks (heartbeats, telemetry): the
+    timeout says it was heard, not that nobody is there."""
+    src = data_file(tmp_path, "a.bin", 1000)
+    port = free_port()
+    p = start("onboard", "emulate", "onboard", "--no-gcs", "--listen", f"udpin:{LOCAL}:{port}")
+    p.wait_for("onboard")
+    proc = run_ttctl("send-file", str(src), "--to", f"udpout:{LOCAL}:{port}", "--timeout", "3", timeout=30)
+    assert proc.returncode == 1, proc.stderr
+    line = one_line(proc.stderr)
+    assert re.fullmatch(rf"ttctl: error: timed out: 1/240 at udpout:{LOCAL}:{port} did not answer this transfer's "
+                        r"\d+ offers within 3 s, though \d+ other frames came from it \(the last \d+\.\d s ago\): "
+                        r"it takes no files there \(an onboard end without --inbox\?\), or the link lost every one",
+                        line), line
+
+
 def test_sender_interrupted(tmp_path: Path, start: Start) -> None:
     src = data_file(tmp_path, "a.bin", 1000)
     p = start("send", "send-file", str(src), "--to", f"udpout:{LOCAL}:{free_port()}", "--timeout", "30")

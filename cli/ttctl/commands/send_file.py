@@ -240,7 +240,14 @@ async def _upload(o: SendOptions, side: _End, spec: Any, link: LinkChoice, src: 
         return Outcome(True, report)
     peer = who(target)
     if r.code == "TIMEOUT":
-        if st.statuses == 0:
+        heard = ep.heard.get(target, 0)
+        if st.statuses == 0 and heard:
+            # the receiver is there (answering others, or its heartbeats): our offers or their answers were lost
+            ago = runner.now() - ep.peers.get(target, 0.0)
+            err = (f"timed out: {peer} at {spec} did not answer this transfer's {st.offers_sent} offers within "
+                   f"{o.timeout:g} s, though {heard} other frames came from it (the last {ago:.1f} s ago): it "
+                   "takes no files there (an onboard end without --inbox?), or the link lost every one")
+        elif st.statuses == 0:
             err = f"timed out: no answer from {peer} at {spec} within {o.timeout:g} s (is a receiver running there?)"
         else:
             err = f"timed out: {r.message}"
