@@ -108,8 +108,8 @@ def cpp_nodes() -> Iterator[Any]:
 # Under pytest-xdist (`--dist loadgroup`, the README's test command) each test file runs whole on
 # one worker (its module fixtures, builds and peers built once), except the files that measure a
 # live link against a bound: those share one group, so no two of them measure at the same time.
-MEASURING = {"test_fair_sharing.py", "test_link_fit_live.py", "test_bench_live.py", "test_bench_latency.py", "test_java_transfer.py",
-             "test_cpp_node_transfer.py", "test_udp_forward.py"}
+MEASURING = {"test_fair_sharing.py", "test_link_fit_live.py", "test_bench_live.py", "test_bench_latency.py",
+             "test_java_transfer.py", "test_cpp_node_transfer.py", "test_udp_forward.py"}
 
 
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:

@@ -74,7 +74,7 @@ def _no_feedback(profile: Profile) -> Profile:
     return dataclasses.replace(profile, up=dataclasses.replace(profile.up, feedback=False))
 
 
-def run_senders(profile: Profile, distance: float, n: int, loss: float, loss_model: str, file_bytes: int,
+def run_senders(profile: Profile, distance: float, n: int, loss: float | None, loss_model: str, file_bytes: int,
                 seed: int, commands: bool = False, interval: float = 1.0, grants: bool = True,
                 limit: float = 3600.0) -> dict[str, Any]:
     """n senders at once (and, with `commands`, the app's commands idle before and during;
