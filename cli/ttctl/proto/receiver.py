@@ -355,6 +355,14 @@ class FileReceiver:
         if key not in self._unknown_due:
             self._unknown_due.append(key)
 
+    def _flow_window(self, t: Incoming) -> float:
+        """Data counts as still flowing this long after the last frame: a status interval, or
+        under a grant three frames' time at it (a sender granted a frame every 1.5 s is not
+        quiet; with no status it would poll, and its polls land on the others' frames)."""
+        if self.grant and t.key in self.sharing:
+            return max(self.cfg.status_interval, 3 * 100.0 / self.grant)
+        return self.cfg.status_interval
+
     def _min_interval(self, t: Incoming) -> float:
         return self.cfg.status_tail_interval if t.seen_end else self.cfg.status_min_interval
 
@@ -522,7 +530,7 @@ class FileReceiver:
             t.last_status = now
             t.quiet_due = None
             flowing = (t.result == R.TT_FILE_RESULT_IN_PROGRESS and t.partial is not None
-                       and t.last_data is not None and now - t.last_data < self.cfg.status_interval)
+                       and t.last_data is not None and now - t.last_data < self._flow_window(t))
             t.status_due = now + self.cfg.status_interval if flowing else None
             if t.result == R.TT_FILE_RESULT_COMPLETE and t.finals_left > 0:  # said again, shortly
                 t.finals_left -= 1

@@ -191,7 +191,7 @@ class FileSender:
             self._time_out(now)
             return []
         if self.state == "sending" and self._probe_due is None \
-                and now >= self.last_heard + max(3 * self.cfg.status_interval, 2 * self.rtt + self.cfg.status_interval):
+                and now >= self.last_heard + self._quiet_after():
             # statuses stopped while data flows: the receiver may have restarted; ask where it is
             self._probe_due = now
         due = self._offer_due if self.state == "offering" else self._probe_due
@@ -210,6 +210,13 @@ class FileSender:
             # arrive half the time, two copies (each answered) 83 % of the time
             return self.offer_messages() * self.cfg.first_offer_copies
         return self.offer_messages()
+
+    def _quiet_after(self) -> float:
+        """How long without a status, while data flows, before asking where the receiver is:
+        three status intervals, an RTT more, and under a grant three frames' time at it more
+        (the receiver reports on the frames it gets)."""
+        wait = max(3 * self.cfg.status_interval, 2 * self.rtt + self.cfg.status_interval)
+        return wait + (3 * NARROW_FRAME / self.pacer.grant if self.pacer.grant else 0.0)
 
     def _time_out(self, now: float) -> None:
         who = f"{self.target[0]}/{self.target[1]}"
@@ -253,6 +260,10 @@ class FileSender:
     def _choose_mode(self) -> str:
         if self.cfg.frame_mode != "auto":
             return self.cfg.frame_mode
+        if self.pacer.grant:
+            # sharing the link: a wide frame's three packets back to back fill the radio's
+            # buffer for the others, and the buffer's overflow takes the whole frame
+            return "narrow"
         n, w = self.loss["narrow"], self.loss["wide"]
         p = w if self.mode == "wide" and w is not None else (n if n is not None else w)
         if p is None:
@@ -544,5 +555,5 @@ class FileSender:
         elif self._probe_due is not None:
             times.append(self._probe_due)
         else:
-            times.append(self.last_heard + max(3 * self.cfg.status_interval, 2 * self.rtt + self.cfg.status_interval))
+            times.append(self.last_heard + self._quiet_after())
         return min(times)

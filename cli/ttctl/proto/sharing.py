@@ -7,9 +7,14 @@ again. Only the receiver sees them all, so it divides its inbound capacity (know
 link: `--profile`, `--rate`) equally among the transfers it is receiving and has heard from
 lately, and says each one's share in every status; a change in who shares (a transfer starts,
 ends or goes quiet) is told to every other at once. GRANT_FILL of the capacity goes to file
-data; the rest keeps room for commands, offers and polls, so that a command's latency holds
-while the link is shared. A lone transfer gets no grant (0): it paces to its own rate, as
-before.
+data; the rest keeps room for offers, polls and commands. A lone transfer gets no grant (0): it
+paces to its own rate, as before.
+
+Two sender habits change under a grant: it sends one-packet frames only (a wide frame's three
+packets back to back fill the radio's buffer for the others, and an overflow takes the whole
+frame), and it waits three frames' time at its grant longer before polling a quiet receiver;
+the receiver, likewise, keeps reporting while frames come at the granted pace (sender.py
+`_quiet_after`, receiver.py `_flow_window`).
 
 The shares are equal (max-min fair when every sender can use its share); a transfer that sends
 slower than its share leaves the rest of it unused until the receiver stops hearing from it.
@@ -17,7 +22,7 @@ slower than its share leaves the rest of it unused until the receiver stops hear
 
 from __future__ import annotations
 
-GRANT_FILL = 0.95  # of the inbound capacity granted to file data when transfers share it
+GRANT_FILL = 0.97  # of the inbound capacity granted to file data when transfers share it
 ACTIVE_WINDOW = 3.0  # s: a receiving transfer heard from within this shares the link
 MIN_GRANT = 1  # B/s: a grant is never 0 (0 on the wire means "no grant")
 MAX_GRANT = 65535  # what TT_FILE_STATUS.rate_grant holds
