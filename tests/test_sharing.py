@@ -32,7 +32,7 @@ def test_share_is_equal_and_none_for_one() -> None:
 def test_pacer_spaces_frames_by_the_grant_without_saving_credit() -> None:
     p = GrantPacer()
     assert p.ready(0.0) and p.ready_at() is None
-    p.update(100)
+    p.update(100, 0.0)
     p.sent(0.0, 100)
     assert not p.ready(0.5) and p.ready(1.0)
     p.sent(5.0, 100)  # idle for 4 s: no burst of saved-up frames
@@ -60,7 +60,7 @@ def test_receiver_grants_each_transfer_a_share_and_lifts_it_when_alone(tmp_path:
     for tid in (11, 12, 13):
         for m in offer(tid, f"f{tid}.bin", tid):
             rx.on_offer(0.0, src_of(m, 255, 190))
-    got = grants(rx, 0.0)
+    got = {**grants(rx, 0.0), **grants(rx, 0.3), **grants(rx, 0.6)}  # told a packet's time apart
     assert got == {11: share(500, 3), 12: share(500, 3), 13: share(500, 3)}
     # two go quiet past the window: the third is alone again, and told so (grant 0)
     for tid in (12, 13):
@@ -68,6 +68,30 @@ def test_receiver_grants_each_transfer_a_share_and_lifts_it_when_alone(tmp_path:
     rx.transfers[(255, 190, 11)].last_activity = 4.0
     rx.transfers[(255, 190, 11)].last_status = -1.0
     assert grants(rx, 4.0).get(11) == 0
+
+
+def test_a_new_grant_is_told_one_packet_time_apart(tmp_path: Path) -> None:
+    """Each sender starts its frames at the status that told it its grant (sender.py), so the
+    receiver spaces those statuses one packet's time at the granted rate apart: the senders'
+    frames then arrive in slots of their own instead of at once into a two-packet buffer."""
+    rx = FileReceiver(B, ReceiveDir(tmp_path), 1, 240, inbound_Bps=500)
+    for tid in (31, 32, 33, 34):
+        for m in offer(tid, f"f{tid}.bin", tid):
+            rx.on_offer(0.0, src_of(m, 255, 190))
+    rx.control(0.0)
+    dues = sorted(t.status_due for t in rx.transfers.values() if t.status_due is not None)
+    step = 100.0 / (share(500, 4) * 4)
+    assert dues == pytest.approx([step, 2 * step, 3 * step])  # the first went at once
+
+
+def test_other_traffic_coming_in_is_left_room(tmp_path: Path) -> None:
+    """Commands, offers and polls are not granted: twice what comes in of them is kept free."""
+    rx = FileReceiver(B, ReceiveDir(tmp_path), 1, 240, inbound_Bps=500)
+    for k in range(50):  # a 41-byte command every 0.1 s for 5 s: 410 B/s of other traffic
+        rx.load.packet(k / 10, 41)
+    assert rx.load.other_Bps(4.95) == pytest.approx(50 * 41 / 5.0)
+    assert share(500, 5, rx.load.other_Bps(4.95)) == int(0.5 * 500 / 5)  # never below half the capacity
+    assert share(500, 5, 20.0) == int((GRANT_FILL * 500 - 40.0) / 5)
 
 
 def test_receiver_without_an_inbound_rate_grants_nothing(tmp_path: Path) -> None:
@@ -85,7 +109,7 @@ def test_sender_follows_its_grant_and_sends_narrow_frames(tmp_path: Path) -> Non
     status = B.TtFileStatus(target_system=255, target_component=190, transfer_id=s.id, result=0, meta_check=s.check,
                             rate_grant=50)
     s.on_status(0.0, src_of(status, 1, 240))
-    assert s.state == "sending" and s.pacer.grant == 50
+    assert s.state == "sending" and s.pacer.grant == 50 and s.pacer.next_free == 0.0  # starts at its status
     sent = [t / 10 for t in range(0, 100) if s.next_data(t / 10, 100) is not None]
     assert sent == [0.0, 2.0, 4.0, 6.0, 8.0]  # 100-byte frames at 50 B/s
     assert s._choose_mode() == "narrow"
@@ -98,7 +122,7 @@ def test_sender_follows_its_grant_and_sends_narrow_frames(tmp_path: Path) -> Non
 
 @pytest.fixture(scope="module")
 def rows() -> list[bench.SharingRow]:
-    return bench.rows(load_profile("m100"), 10.0, [1, 2, 3])
+    return bench.rows(load_profile("m100"), 10.0, [1, 2, 3, 4, 5])  # as bench transfer runs them
 
 
 @pytest.mark.parametrize("loss,model", [(None, "random"), (0.1, "random"), (0.1, "burst")])

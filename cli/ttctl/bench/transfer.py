@@ -250,7 +250,7 @@ def run(profile: Profile, distance: float, file_bytes: int, seeds: int, protocol
     bounds += transfer_text.checks(text)
     from . import sharing  # several senders at once to one receiver (not in --quick)
 
-    shared = [] if quick else sharing.rows(profile, distance, seed_list[:3])
+    shared = [] if quick else sharing.rows(profile, distance, seed_list[:5])
     bounds += sharing.checks(shared)
     report = {"profile": profile.name, "distance_m": distance, "extrapolated": extrapolated,
               "file_bytes": file_bytes, "seeds": seed_list,

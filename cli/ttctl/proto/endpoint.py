@@ -147,6 +147,8 @@ class Endpoint:
         else:
             self._rxs.move_to_end(source)
         self._last_rx[source] = now
+        if self.receiver is not None:
+            self.receiver.load.packet(now, len(packet))
         return self._handle_all(now, rx.feed(packet))
 
     def receive_stream(self, now: float, data: bytes, source: Hashable = None) -> set[tuple[int, int]]:

@@ -29,9 +29,9 @@ from ..wire.contract import TtFileResult as R
 from .deflate import InflateError, parse_deflate_meta
 from .names import SHA_LEN, Refused, check_name
 from .ranges import RangeSet
-from .sharing import ACTIVE_WINDOW, share
+from .sharing import ACTIVE_WINDOW, REGRANT, InboundLoad, share
 from .storage import DiskFull, Partial, ReceiveDir, StorageError, partial_key
-from .transfer import MAX_RANGES, Key, TransferConfig, meta_check, reason_fit
+from .transfer import MAX_RANGES, NARROW, NARROW_FRAME, WIDE_FRAME, Key, TransferConfig, meta_check, reason_fit
 
 MAX_PENDING_OFFERS = 64  # offers whose metadata is still arriving: a flood of them is not our memory's problem
 MAX_UNKNOWN = 256  # transfer ids recently told 'unknown'
@@ -140,6 +140,7 @@ class FileReceiver:
         self.inbound_Bps = inbound_Bps  # what this end can take from its link: shared out by grants
         self.grant = 0  # each sharing transfer's rate grant, B/s (0: none)
         self.sharing: frozenset[Key] = frozenset()  # the transfers the link is shared among
+        self.load = InboundLoad()  # what else comes in (the endpoint counts packets, on_data the data)
         self._grant_field = "rate_grant" in getattr(bindings.TtFileStatus, "FIELDS", ("rate_grant",))
 
     def expect(self, peer: tuple[int, int], request_id: int, name: str) -> None:
@@ -308,6 +309,7 @@ class FileReceiver:
             return
         t.last_activity = now
         t.frames += 1
+        self.load.data(now, NARROW_FRAME if cap == NARROW else WIDE_FRAME)
         if t.partial is None or t.group is None:  # not accepted (yet), finished or refused
             if t.decided and now >= t.last_status + self.cfg.status_min_interval:
                 self._status_now(t, now)
@@ -479,17 +481,19 @@ class FileReceiver:
         window = max(ACTIVE_WINDOW, 4.0 * 100 / self.grant) if self.grant else ACTIVE_WINDOW
         sharing = frozenset(k for k, t in self.transfers.items()
                             if t.partial is not None and now - t.last_activity < window)
-        if sharing == self.sharing:
+        grant = share(self.inbound_Bps, len(sharing), self.load.other_Bps(now))
+        if sharing == self.sharing and (grant == 0) == (self.grant == 0) \
+                and abs(grant - self.grant) <= REGRANT * self.grant:
             return
         self.sharing = sharing
-        grant = share(self.inbound_Bps, len(sharing))
         if grant == self.grant:
             return
         self.grant = grant
-        for k in sharing:
+        step = 100.0 / (grant * len(sharing)) if grant else 0.0
+        for i, k in enumerate(sorted(sharing)):
             t = self.transfers[k]
-            soon = max(now, t.last_status + self._min_interval(t))
-            t.status_due = soon if t.status_due is None else min(t.status_due, soon)
+            soon = max(now + i * step, t.last_status + self._min_interval(t))
+            t.status_due = soon
 
     def _status(self, t: Incoming, rc: int, region: int, re: int,
                 gaps: list[tuple[int, int]]) -> Any:

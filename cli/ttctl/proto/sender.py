@@ -442,7 +442,7 @@ class FileSender:
             self._probe_due = None
             self.busy = None
             self.last_progress = now
-        self.pacer.update(getattr(msg, "rate_grant", 0))
+        self.pacer.update(getattr(msg, "rate_grant", 0), now)
         self._rtt_from_echo(now, msg)
         self._apply_status(now, msg)
         if self.on_progress:

@@ -22,17 +22,55 @@ slower than its share leaves the rest of it unused until the receiver stops hear
 
 from __future__ import annotations
 
+from collections import deque
+
 GRANT_FILL = 0.97  # of the inbound capacity granted to file data when transfers share it
 ACTIVE_WINDOW = 3.0  # s: a receiving transfer heard from within this shares the link
 MIN_GRANT = 1  # B/s: a grant is never 0 (0 on the wire means "no grant")
 MAX_GRANT = 65535  # what TT_FILE_STATUS.rate_grant holds
 
 
-def share(capacity_Bps: float | None, sharing: int) -> int:
-    """Each transfer's grant when `sharing` transfers share `capacity_Bps` (0: no grant)."""
+OTHER_ROOM = 2.0  # B/s kept free per B/s of other traffic measured coming in (commands, offers, polls)
+MIN_FILL = 0.5  # of the capacity granted, whatever else comes in
+LOAD_WINDOW = 5.0  # s over which the other traffic is measured
+REGRANT = 0.1  # a grant changes (and is told) when the share moves by more than this fraction
+
+
+def share(capacity_Bps: float | None, sharing: int, other_Bps: float = 0.0) -> int:
+    """Each transfer's grant when `sharing` transfers share `capacity_Bps`, of which `other_Bps`
+    is taken by frames that are not file data (0: no grant)."""
     if not capacity_Bps or sharing < 2:
         return 0
-    return max(MIN_GRANT, min(MAX_GRANT, int(capacity_Bps * GRANT_FILL / sharing)))
+    budget = max(MIN_FILL * capacity_Bps, GRANT_FILL * capacity_Bps - OTHER_ROOM * other_Bps)
+    return max(MIN_GRANT, min(MAX_GRANT, int(budget / sharing)))
+
+
+class InboundLoad:
+    """What comes in that is not file data, in B/s over the last LOAD_WINDOW seconds: packet
+    bytes less data frames' bytes."""
+
+    def __init__(self) -> None:
+        self._events: deque[tuple[float, int]] = deque()  # (time, bytes: + packets, - data frames)
+        self._sum = 0
+
+    def packet(self, now: float, nbytes: int) -> None:
+        self._add(now, nbytes)
+
+    def data(self, now: float, nbytes: int) -> None:
+        self._add(now, -nbytes)
+
+    def _add(self, now: float, n: int) -> None:
+        self._events.append((now, n))
+        self._sum += n
+        self._trim(now)
+
+    def _trim(self, now: float) -> None:
+        while self._events and self._events[0][0] < now - LOAD_WINDOW:
+            self._sum -= self._events.popleft()[1]
+
+    def other_Bps(self, now: float) -> float:
+        self._trim(now)
+        return max(0, self._sum) / LOAD_WINDOW
 
 
 class GrantPacer:
@@ -43,8 +81,11 @@ class GrantPacer:
         self.grant = 0  # B/s, 0: none
         self.next_free = 0.0
 
-    def update(self, grant: int) -> None:
-        self.grant = max(0, int(grant))
+    def update(self, grant: int, now: float) -> None:
+        grant = max(0, int(grant))
+        if grant != self.grant:
+            self.next_free = now  # a new grant: the next frame leaves now, in the slot its status set
+        self.grant = grant
 
     def ready(self, now: float) -> bool:
         return self.grant == 0 or now >= self.next_free - 1e-9
@@ -57,4 +98,4 @@ class GrantPacer:
             self.next_free = max(now, self.next_free) + nbytes / self.grant
 
 
-__all__ = ["ACTIVE_WINDOW", "GRANT_FILL", "GrantPacer", "share"]
+__all__ = ["ACTIVE_WINDOW", "GRANT_FILL", "GrantPacer", "InboundLoad", "share"]
