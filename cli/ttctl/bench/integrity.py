@@ -4,7 +4,8 @@ name with that SHA-256, whatever else happens meanwhile.
 Each round starts a few `ttctl send-file` processes at once, all with the default MAVLink ids,
 against one `ttctl recv-file` (directly, or through `ttctl link relay` with loss): names shared
 between senders, contents the same or different at the same size, random bytes or text (a CSV
-log, which goes deflated: the compressed rounds), `--overwrite` or not; at
+log, which goes deflated: the compressed rounds), `--overwrite` or not (senders at once share the
+link by the receiver's rate grants: "granted" counts those paced to one); at
 random a sender is killed with SIGKILL and started again, the receiver is killed and started
 again, strangers send garbage datagrams. Checked, all the time:
 - every file visible under its final name is a whole file that some sender offered under that
@@ -49,9 +50,11 @@ TIMEOUT = "20"
 @dataclass
 class Report:
     rounds: int = 0
+    concurrent_rounds: int = 0  # rounds with several senders at once
     sends: int = 0
     delivered: int = 0  # exit 0
     deflated: int = 0  # exit 0, the file went as its zlib stream
+    granted: int = 0  # exit 0, paced to a share of the link the receiver granted (others sent at once)
     nothing_sent: int = 0  # exit 0, the receiver had it already
     refused: int = 0  # exit 1 with a REFUSED_* code
     failed: int = 0  # exit 1 otherwise
@@ -276,6 +279,7 @@ class Harness:
     def round(self) -> None:
         rng = self.rng
         n = rng.randint(1, 4)
+        self.report.concurrent_rounds += n > 1
         plan = []
         for _ in range(n):
             name = rng.choice(NAMES)
@@ -351,6 +355,7 @@ class Harness:
         self.report.delivered += 1
         self.report.nothing_sent += bool(report.get("nothing_sent"))
         self.report.deflated += bool(report.get("deflated_bytes"))
+        self.report.granted += bool(report.get("rate_grant_Bps"))
         if not report.get("ok") or report.get("sha256") != s.sha:
             self.violation(f"send-file {s.name} exited 0 but reported {report.get('ok')} / "
                            f"{str(report.get('sha256'))[:12]} for {s.sha[:12]}")
@@ -461,8 +466,8 @@ def main(rounds: int, seed: int, relay: str, strangers: bool, keep: Path | None,
         t.add_column("")
         for topo in reports:
             t.add_column(topo, justify="right")
-        cols = ("rounds", "sends", "delivered", "deflated", "nothing_sent", "refused", "failed", "senders_killed",
-                "receivers_killed", "stranger_datagrams", "checks", "seconds")
+        cols = ("rounds", "concurrent_rounds", "sends", "delivered", "deflated", "granted", "nothing_sent", "refused",
+                "failed", "senders_killed", "receivers_killed", "stranger_datagrams", "checks", "seconds")
         for c in cols:
             t.add_row(c.replace("_", " "), *(str(getattr(r, c)) for r in reports.values()))
         t.add_row("violations", *(str(len(r.violations)) for r in reports.values()))

@@ -231,7 +231,7 @@ async def _upload(o: SendOptions, side: _End, spec: Any, link: LinkChoice, src: 
         "efficiency": round(goodput / cap, 4) if cap and r.ok and moved else None,
         "retransmitted_bytes": st.bytes_retransmitted, "frames_sent": st.frames_sent, "bytes_sent": st.bytes_sent,
         "resumed_bytes": resumed, "nothing_sent": r.nothing_sent, "restarts": st.restarts,
-        "deflated_bytes": r.deflated, "deflate_fallback": r.fallback,
+        "deflated_bytes": r.deflated, "deflate_fallback": r.fallback, "rate_grant_Bps": st.min_grant,
         "peer": who(target), "endpoint": transport.describe(), "direction": "send",
     }
     if sigs.stop.is_set() and not r.ok:

@@ -442,7 +442,10 @@ class FileSender:
             self._probe_due = None
             self.busy = None
             self.last_progress = now
-        self.pacer.update(getattr(msg, "rate_grant", 0), now)
+        grant = getattr(msg, "rate_grant", 0)
+        self.pacer.update(grant, now)
+        if grant and (self.stats.min_grant is None or grant < self.stats.min_grant):
+            self.stats.min_grant = grant
         self._rtt_from_echo(now, msg)
         self._apply_status(now, msg)
         if self.on_progress:

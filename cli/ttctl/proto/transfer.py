@@ -83,6 +83,7 @@ class TransferStats:
     finished: float | None = None
     resumed_bytes: int = 0  # the receiver already had these when we started
     restarts: int = 0  # starts from scratch after a SHA-256 mismatch
+    min_grant: int | None = None  # the lowest rate grant the receiver gave (B/s): it shared the link
 
 
 @dataclass
