@@ -24,7 +24,8 @@ the link, in namespace <ns>::link:
   cpp/<ident>/messages.hpp    one struct per message
   cpp/<ident>/<ident>.hpp     umbrella header
   cpp/conformance.cpp         the D/E line-protocol program of the conformance tests
-  cpp/conformance_json.hpp    its JSON: answers written, requests read, values to fields
+  cpp/conformance_json.hpp    its JSON: answers written, values to fields
+  cpp/conformance_json_reader.hpp  its JSON reader: requests read, numbers kept as tokens
   cpp/onboard/<ident>_plugin.hpp   skeleton: handler stubs for what the onboard end receives
 """
 
@@ -270,6 +271,7 @@ class _Cpp:
             Output(f"cpp/{umbrella(d, self.override)}", "cpp/umbrella.hpp.j2"),
             Output("cpp/conformance.cpp", "cpp/conformance.cpp.j2"),
             Output("cpp/conformance_json.hpp", "cpp/conformance_json.hpp.j2"),
+            Output("cpp/conformance_json_reader.hpp", "cpp/conformance_json_reader.hpp.j2"),
             Output(f"cpp/onboard/{dialect_ident(d)}_plugin.hpp", "cpp/plugin.hpp.j2", skeleton=True),
         ]
 
