@@ -1,0 +1,118 @@
+"""Rate grants in the generated C++ onboard end (sharing.hpp; the protocol is proto/sharing.py's):
+several transfers through `ttctl link relay --profile m100` (500 B/s uplink, 10 % loss), real
+processes on loopback.
+
+- The node receiving (NodeConfig::inbound_Bps, `--inbound 500`): four `ttctl send-file --profile
+  m100` at once, each paced to the whole uplink, are granted a quarter of it each. Every file is
+  verified, they finish together, few bytes are sent twice and the relay's buffer hardly
+  overflows. Without grants (`--inbound 0`, the same seed) the same run overflows the relay's
+  buffer and resends most of what it sends: the check that fails without the change.
+- The node sending: its upload to `ttctl recv-file --profile m100` (which grants: it knows the
+  uplink) alongside two `send-file` processes follows its grant: its data frames leave at about
+  the grant, not at the node's own 500 B/s, and every file is verified.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import signal
+import time
+from pathlib import Path
+from typing import Any
+
+from cpp_node_lib import needs_gxx, sha, write
+from e2e_lib import LOCAL, Proc, Start, free_port, receiver, relay
+
+pytestmark = needs_gxx
+
+UPLINK = 500  # B/s: the m100 profile's uplink at 10 m
+
+
+def relay_stats(radio: Proc) -> dict[str, int]:
+    """The uplink's counters from the relay's last stats line (SIGINT: it prints one and exits)."""
+    radio.signal(signal.SIGINT)
+    radio.wait(10)
+    line = [x for x in radio.stderr.splitlines() if x.startswith("relay ") and " s: up " in x][-1]
+    up = line.split(" | ")[0]
+    counts = {k: int(m.group(1)) if (m := re.search(rf"(\d+) {k}\b", up)) else 0 for k in ("in", "out", "lost")}
+    m = re.search(r"overflow (\d+)", up)
+    counts["overflow"] = int(m.group(1)) if m else 0
+    return counts
+
+
+def uploads(start: Start, tmp: Path, cpp_node_bins: dict[str, Path], cpp_nodes: Any, inbound: int,
+            n: int = 4, size: int = 2000) -> tuple[list[dict[str, Any]], dict[str, int]]:
+    """`n` send-file --profile m100 of `size` bytes each at once to the node (--inbound), through
+    the m100 relay at 10 % loss (seed 3); their reports and the relay's uplink counters."""
+    folder = tmp / f"inbound{inbound}"
+    folder.mkdir()
+    inbox = folder / "inbox"
+    b = free_port()
+    node = cpp_nodes(cpp_node_bins["plain"], folder, "node", "--listen", f"udpin:{LOCAL}:{b}", "--inbox", str(inbox),
+                     "--inbound", str(inbound))
+    a = free_port()
+    radio = relay(start, a, b, "--profile", "m100", "--loss", "0.1", "--seed", "3", "--stats-interval", "0")
+    srcs = [write(folder / f"f{i}.bin", size, 40 + i) for i in range(n)]
+    procs = [start(f"send{inbound}_{i}", "send-file", str(s), "--to", f"udpout:{LOCAL}:{a}", "--profile", "m100",
+                   "--timeout", "60", "--json") for i, s in enumerate(srcs)]
+    reports = []
+    for p, s in zip(procs, srcs, strict=True):
+        assert p.wait(120) == 0, p.stderr
+        r = json.loads(p.stdout)
+        assert r["ok"] and r["code"] == "COMPLETE", r
+        assert sha(inbox / s.name) == sha(s)
+        reports.append(r)
+    stats = relay_stats(radio)
+    node.stop()
+    return reports, stats
+
+
+def test_the_node_shares_its_uplink_among_four_uploads(cpp_node_bins: dict[str, Path], tmp_path: Path,
+                                                         start: Start, cpp_nodes: Any) -> None:
+    """Four equal uploads at once, each sender paced to the whole 500 B/s uplink: with
+    --inbound 500 each is granted 118 B/s; all verified, the slowest within 1.5x of the fastest,
+    retransmitted bytes under 0.3 of the file bytes, the relay's buffer overflowing rarely. The
+    same run without grants overflows it several times as often and resends far more."""
+    reports, stats = uploads(start, tmp_path, cpp_node_bins, cpp_nodes, UPLINK)
+    seconds = [r["seconds"] for r in reports]
+    resent = sum(r["retransmitted_bytes"] for r in reports) / sum(r["bytes"] for r in reports)
+    assert max(seconds) <= 1.5 * min(seconds), seconds
+    assert resent < 0.3, (resent, reports)
+    assert stats["overflow"] <= 0.1 * stats["in"], stats
+
+    bare, bare_stats = uploads(start, tmp_path, cpp_node_bins, cpp_nodes, 0)
+    bare_resent = sum(r["retransmitted_bytes"] for r in bare) / sum(r["bytes"] for r in bare)
+    assert bare_stats["overflow"] > 3 * max(1, stats["overflow"]), (stats, bare_stats)
+    assert bare_resent > 2 * resent, (resent, bare_resent)
+
+
+def test_the_node_s_upload_follows_its_grant(cpp_node_bins: dict[str, Path], tmp_path: Path, start: Start,
+                                             cpp_nodes: Any) -> None:
+    """`ttctl recv-file --profile m100` (1/240, which grants: it knows the 500 B/s uplink)
+    receives two send-file uploads and, a moment later, one from the node (2/240, paced at the
+    whole uplink itself): three share, 158 B/s each. The node's data frames leave at about its
+    grant, a third of its own pace; every file is verified."""
+    b = free_port()
+    receiver(start, tmp_path, f"udpin:{LOCAL}:{b}", "--profile", "m100", "--json")
+    a = free_port()
+    relay(start, a, b, "--profile", "m100", "--loss", "0.1", "--seed", "5", "--stats-interval", "0")
+    srcs = [write(tmp_path / f"p{i}.bin", 3200, 50 + i) for i in range(2)]
+    procs = [start(f"send{i}", "send-file", str(s), "--to", f"udpout:{LOCAL}:{a}", "--profile", "m100", "--timeout",
+                   "60", "--json") for i, s in enumerate(srcs)]
+    time.sleep(1.5)  # both accepted: the node's transfer joins two that share
+    mine = write(tmp_path / "n.bin", 1600, 59)  # done while all three share
+    node = cpp_nodes(cpp_node_bins["plain"], tmp_path, "node", "--to", f"udpout:{LOCAL}:{a}", "--sysid", "2",
+                     "--rate", str(UPLINK), "--send", str(mine), "--send-to", "1/240")
+    sent = node.wait_event("sent", 90)
+    assert sent["ok"] and sent["code"] == "COMPLETE", sent
+    for p in procs:
+        assert p.wait(120) == 0, p.stderr
+        assert json.loads(p.stdout)["ok"]
+    for s in [*srcs, mine]:
+        assert sha(tmp_path / "inbox" / s.name) == sha(s)
+    grant = sent["grant_max"]
+    assert 0 < grant <= int(UPLINK * 0.95 / 2), sent  # at least two shared while it sent
+    rate = sent["wire_bytes"] / sent["data_seconds"]
+    assert 0.5 * grant <= rate <= 1.25 * grant, (rate, sent)
+    node.stop()
