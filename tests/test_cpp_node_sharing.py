@@ -15,12 +15,17 @@ processes on loopback.
 from __future__ import annotations
 
 import json
+import random
 import re
 import signal
+import subprocess
 import time
 from pathlib import Path
 from typing import Any
 
+import pytest
+
+import ttapi
 from cpp_node_lib import needs_gxx, sha, write
 from e2e_lib import LOCAL, Proc, Start, free_port, receiver, relay
 
@@ -116,3 +121,73 @@ def test_the_node_s_upload_follows_its_grant(cpp_node_bins: dict[str, Path], tmp
     rate = sent["wire_bytes"] / sent["data_seconds"]
     assert 0.5 * grant <= rate <= 1.25 * grant, (rate, sent)
     node.stop()
+
+
+# -- the same grants as Python's, byte for byte, in virtual time --------------------------------------
+
+def sharing_script(tmp: Path, seed: int, loss: float) -> tuple[list[str], list[str], list[int]]:
+    """Three Python tablets (Endpoints 255/190, 254/190, 253/190, each paced at 500 B/s) upload
+    files of three sizes, starting 0, 3 and 6 s apart, to a Python onboard Endpoint (1/240, paced
+    at 6700 B/s, inbound 500 B/s) over a channel that loses `loss` of the packets either way, in
+    virtual time (5 ms steps): the sharing set grows and shrinks. Returns the onboard end's input
+    as a node_driver script, what it sent at each poll, and the grants its statuses carried."""
+    from conftest import shipped
+    from ttctl.proto.endpoint import Endpoint
+    from ttctl.proto.storage import BytesSource, ReceiveDir
+
+    b = shipped()
+    rng = random.Random(seed)
+    rx = Endpoint(b, 1, 240, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp / "python"), inbound_Bps=float(UPLINK))
+    tablets = [Endpoint(b, 255 - i, 190, rate_Bps=float(UPLINK), rng=random.Random(seed * 10 + i)) for i in range(3)]
+    data = [random.Random(seed + i).randbytes(size) for i, size in enumerate((3000, 1200, 2000))]
+    starts = [0.0, 3.0, 6.0]
+    senders: list[Any] = [None] * 3
+    script: list[str] = []
+    sent: list[str] = []
+    grants: list[int] = []
+    now = 0.0
+    while (not all(s is not None and s.done for s in senders)) and now < 300:
+        for i, tab in enumerate(tablets):
+            if senders[i] is None and now >= starts[i]:
+                senders[i] = tab.send_file(f"f{i}.bin", (1, 240), source=BytesSource(data[i], f"f{i}.bin"))
+            while (pkt := tab.poll(now)) is not None:
+                if rng.random() >= loss:
+                    script.append(f"R {now!r} {pkt.hex()}")
+                    rx.receive(now, pkt)
+        out = []
+        while (pkt := rx.poll(now)) is not None:
+            out.append(pkt)
+        script.append(f"P {now!r}")
+        sent.append(" ".join(p.hex() for p in out) or "-")
+        for pkt in out:
+            grants += [m.rate_grant for m in ttapi.Parser().feed(pkt) if isinstance(m, ttapi.TtFileStatus)]
+            if rng.random() >= loss:
+                for tab in tablets:
+                    tab.receive(now, pkt)
+        now = round(now + 0.005, 6)
+    for i, s in enumerate(senders):
+        assert s.result is not None and s.result.ok, s.result
+        assert (tmp / "python" / f"f{i}.bin").read_bytes() == data[i]
+    return script, sent, grants
+
+
+@pytest.mark.parametrize("seed,loss", [(1, 0.1), (2, 0.25)])
+def test_the_node_grants_what_pythons_endpoint_grants(cpp_node_bins: dict[str, Path], tmp_path: Path, seed: int,
+                                                      loss: float) -> None:
+    """The C++ node and ttctl's Python Endpoint, each with 500 B/s inbound, as the onboard end of
+    three overlapping uploads over a lossy channel in virtual time, given the same packets at
+    the same moments, send the same packets byte for byte at the same moments: the same grants
+    (none alone, 237 B/s for two, 158 for three) in the same statuses, told as soon when the
+    sharing set changes; and store the same files."""
+    script, want, grants = sharing_script(tmp_path, seed, loss)
+    assert {0, 158, 237} <= set(grants), sorted(set(grants))  # alone, two and three shared
+    run = subprocess.run([str(cpp_node_bins["driver"]), str(tmp_path / "cpp"), "-", "6700", str(UPLINK)],
+                         input="\n".join(script) + "\n", capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr
+    got = run.stdout.splitlines()
+    assert len(got) == len(want)
+    polls = [line for line in script if line.startswith("P")]
+    for i, (g, w) in enumerate(zip(got, want, strict=True)):
+        assert g == w, (i, polls[i], g, w)
+    for i in range(3):
+        assert (tmp_path / "cpp" / f"f{i}.bin").read_bytes() == (tmp_path / "python" / f"f{i}.bin").read_bytes()

@@ -83,6 +83,7 @@ struct Incoming {
     double quiet_due = 0.0;  // report when data stops coming
     bool said_busy = false;
     bool sharing = false;  // among the transfers the link is shared by (sharing.hpp)
+    int finals_left = 0;  // repeats of the COMPLETE status still to send (FileReceiver::COMPLETE_REPEATS)
     std::uint64_t resumed_bytes = 0;  // what the partial file held when this transfer was accepted
     bool used = false;
     int prev = -1;
@@ -170,6 +171,12 @@ public:
     static constexpr std::uint64_t KEY_REASON = 1;
     static constexpr std::uint64_t KEY_STATUS = 2;
     static constexpr std::uint64_t KEY_UNKNOWN = 3;
+    /// A COMPLETE status is said COMPLETE_REPEATS more times, COMPLETE_REPEAT_GAP s apart: a
+    /// receiver that ends right after its file is complete cannot answer the sender's later
+    /// probe, and a lost last COMPLETE would leave the sender recording a delivered, verified
+    /// file as failed (as ttctl's Python receiver).
+    static constexpr int COMPLETE_REPEATS = 2;
+    static constexpr double COMPLETE_REPEAT_GAP = 0.05;
 
     // -- offers (receiver_offers.hpp) -------------------------------------------------------
     void on_offer(double now, const TtFileOffer& msg, std::uint8_t src_sysid, std::uint8_t src_compid);

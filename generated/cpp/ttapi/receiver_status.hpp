@@ -58,6 +58,11 @@ inline void FileReceiver::control(double now, Emit&& emit)
                              && t.group >= 0 && t.has_last_data && now - t.last_data < cfg_.status_interval;
         t.status_due_set = flowing;
         t.status_due = flowing ? now + cfg_.status_interval : 0.0;
+        if (t.result == static_cast<std::uint8_t>(TtFileResult::TT_FILE_RESULT_COMPLETE) && t.finals_left > 0) {
+            --t.finals_left;  // said again, shortly
+            t.status_due_set = true;
+            t.status_due = now + COMPLETE_REPEAT_GAP;
+        }
         i = next;
     }
     for (std::size_t k = 0; k < unknown_due_count_; ++k) {
