@@ -1,12 +1,15 @@
 """Rate grants in the generated C++ onboard end (sharing.hpp; the protocol is proto/sharing.py's):
 several transfers through `ttctl link relay --profile m100` (500 B/s uplink, 10 % loss), real
-processes on loopback.
+processes on loopback; and against Python's Endpoint in virtual time.
 
 - The node receiving (NodeConfig::inbound_Bps, `--inbound 500`): four `ttctl send-file --profile
   m100` at once, each paced to the whole uplink, are granted a quarter of it each. Every file is
   verified, they finish together, few bytes are sent twice and the relay's buffer hardly
   overflows. Without grants (`--inbound 0`, the same seed) the same run overflows the relay's
   buffer and resends most of what it sends: the check that fails without the change.
+- The same decisions as Python's, byte for byte, in virtual time (node_driver): the grants of
+  three overlapping uploads in the node's statuses, and two fetches it serves paced to a
+  tablet's grants.
 - The node sending: its upload to `ttctl recv-file --profile m100` (which grants: it knows the
   uplink) alongside two `send-file` processes follows its grant: its data frames leave at about
   the grant, not at the node's own 500 B/s, and every file is verified.
@@ -26,6 +29,7 @@ from typing import Any
 import pytest
 
 import ttapi
+from conftest import shipped
 from cpp_node_lib import needs_gxx, sha, write
 from e2e_lib import LOCAL, Proc, Start, free_port, receiver, relay
 
@@ -191,3 +195,79 @@ def test_the_node_grants_what_pythons_endpoint_grants(cpp_node_bins: dict[str, P
         assert g == w, (i, polls[i], g, w)
     for i in range(3):
         assert (tmp_path / "cpp" / f"f{i}.bin").read_bytes() == (tmp_path / "python" / f"f{i}.bin").read_bytes()
+
+
+@pytest.mark.parametrize("seed,loss", [(3, 0.05), (4, 0.2)])
+def test_the_node_serves_at_its_grants_as_pythons_endpoint_does(cpp_node_bins: dict[str, Path], tmp_path: Path,
+                                                                seed: int, loss: float) -> None:
+    """Two worlds in virtual time, alike but for the onboard end: a Python tablet that can take
+    2000 B/s fetches two files at once, so it grants each fetch 950 B/s, from ttctl's Python
+    Endpoint in one world and from the C++ node (paced at 6700 B/s, drawing the same transfer
+    ids) in the other. At every 5 ms step both onboard ends send the same packets byte for byte:
+    their data frames paced to the grants, not to their own 6700 B/s; both fetches complete."""
+    from ttctl.proto.endpoint import Endpoint
+    from ttctl.proto.storage import ReceiveDir
+
+    b = shipped()
+    serve = tmp_path / "serve"
+    files = [write(serve / f"s{i}.bin", 8000, seed + i) for i in range(2)]
+    onboard_seed = seed + 100
+    draws = random.Random(onboard_seed)
+    draws.randint(1, 65535)  # the endpoint's first command id: its first draw
+    ids = [draws.getrandbits(32) for _ in range(8)]
+    drv = subprocess.Popen([str(cpp_node_bins["driver"]), str(tmp_path / "cpp_in"), str(serve), "6700"],
+                           stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+    assert drv.stdin is not None and drv.stdout is not None
+    for i in ids:
+        drv.stdin.write(f"I {i}\n")
+    onboard = Endpoint(b, 1, 240, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp_path / "py_in"), serve_dir=str(serve),
+                       rng=random.Random(onboard_seed))
+    worlds = []
+    for name in ("python", "cpp"):
+        done: list[bool] = []
+        tab = Endpoint(b, 255, 190, rate_Bps=500.0, receive_dir=ReceiveDir(tmp_path / f"tablet_{name}"),
+                       unsolicited=False, accept_commands=False, rng=random.Random(seed), inbound_Bps=2000.0,
+                       on_event=lambda what, obj, done=done: done.append(True) if what == "file-complete" else None)
+        for f in files:
+            tab.request_file(f.name, (1, 240))
+        worlds.append((name, tab, random.Random(seed), done))
+    now = 0.0
+    grants: set[int] = set()
+    try:
+        while not all(len(w[3]) == 2 for w in worlds) and now < 120:
+            outs = {}
+            for name, tab, lose, _ in worlds:
+                while (pkt := tab.poll(now)) is not None:
+                    if name == "python":
+                        grants |= {m.rate_grant for m in ttapi.Parser().feed(pkt)
+                                   if isinstance(m, ttapi.TtFileStatus)}
+                    if lose.random() >= loss:
+                        if name == "python":
+                            onboard.receive(now, pkt)
+                        else:
+                            drv.stdin.write(f"R {now!r} {pkt.hex()}\n")
+                if name == "python":
+                    out = []
+                    while (pkt := onboard.poll(now)) is not None:
+                        out.append(pkt)
+                else:
+                    drv.stdin.write(f"P {now!r}\n")
+                    drv.stdin.flush()
+                    line = drv.stdout.readline().strip()
+                    out = [] if line == "-" else [bytes.fromhex(h) for h in line.split()]
+                outs[name] = out
+                for pkt in out:
+                    if lose.random() >= loss:
+                        tab.receive(now, pkt)
+            assert outs["cpp"] == outs["python"], (now, [p.hex() for p in outs["cpp"]],
+                                                   [p.hex() for p in outs["python"]])
+            now = round(now + 0.005, 6)
+    finally:
+        drv.stdin.close()
+        drv.wait(20)
+    assert all(len(w[3]) == 2 for w in worlds), "a fetch did not complete"
+    for name in ("python", "cpp"):
+        for f in files:
+            assert (tmp_path / f"tablet_{name}" / f.name).read_bytes() == f.read_bytes()
+    assert 950 in grants, grants
+    assert now > 16_000 / 2000, now  # at their grants (20 kB on the wire at 2 x 950 B/s: 10.5 s), not at 6700 B/s
