@@ -134,23 +134,27 @@ def test_the_node_s_upload_follows_its_grant(cpp_node_bins: dict[str, Path], tmp
 
 # -- the same grants as Python's, byte for byte, in virtual time --------------------------------------
 
-def sharing_script(tmp: Path, seed: int, loss: float) -> tuple[list[str], list[str], list[int]]:
-    """Three Python tablets (Endpoints 255/190, 254/190, 253/190, each paced at 500 B/s) upload
-    files of three sizes, starting 0, 3 and 6 s apart, to a Python onboard Endpoint (1/240, paced
-    at 6700 B/s, inbound 500 B/s) over a channel that loses `loss` of the packets either way, in
-    virtual time (5 ms steps): the sharing set grows and shrinks. Returns the onboard end's input
-    as a node_driver script, what it sent at each poll, and the grants its statuses carried."""
-    from conftest import shipped
+Pause = tuple[int, float, float]  # a tablet that sends nothing from one moment to another
+
+
+def sharing_script(tmp: Path, seed: int, loss: float, inbound: float, sizes: list[int], starts: list[float],
+                   pause: Pause | None) -> tuple[list[str], list[str], list[int]]:
+    """Python tablets (Endpoints 255/190, 254/190..., each paced at 500 B/s) upload files of
+    `sizes`, starting at `starts`, to a Python onboard Endpoint (1/240, paced at 6700 B/s, with
+    `inbound` B/s to share) over a channel that loses `loss` of the packets either way, in
+    virtual time (5 ms steps); `pause`: one of them goes quiet for a while. The sharing set grows
+    and shrinks. Returns the onboard end's input as a node_driver script, what it sent at each
+    poll, and the grants its statuses carried."""
     from ttctl.proto.endpoint import Endpoint
     from ttctl.proto.storage import BytesSource, ReceiveDir
 
     b = shipped()
     rng = random.Random(seed)
-    rx = Endpoint(b, 1, 240, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp / "python"), inbound_Bps=float(UPLINK))
-    tablets = [Endpoint(b, 255 - i, 190, rate_Bps=float(UPLINK), rng=random.Random(seed * 10 + i)) for i in range(3)]
-    data = [random.Random(seed + i).randbytes(size) for i, size in enumerate((3000, 1200, 2000))]
-    starts = [0.0, 3.0, 6.0]
-    senders: list[Any] = [None] * 3
+    n = len(sizes)
+    rx = Endpoint(b, 1, 240, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp / "python"), inbound_Bps=inbound)
+    tablets = [Endpoint(b, 255 - i, 190, rate_Bps=float(UPLINK), rng=random.Random(seed * 10 + i)) for i in range(n)]
+    data = [random.Random(seed + i).randbytes(size) for i, size in enumerate(sizes)]
+    senders: list[Any] = [None] * n
     script: list[str] = []
     sent: list[str] = []
     grants: list[int] = []
@@ -159,6 +163,8 @@ def sharing_script(tmp: Path, seed: int, loss: float) -> tuple[list[str], list[s
         for i, tab in enumerate(tablets):
             if senders[i] is None and now >= starts[i]:
                 senders[i] = tab.send_file(f"f{i}.bin", (1, 240), source=BytesSource(data[i], f"f{i}.bin"))
+            if pause is not None and pause[0] == i and pause[1] <= now < pause[2]:
+                continue  # quiet: what it would send waits
             while (pkt := tab.poll(now)) is not None:
                 if rng.random() >= loss:
                     script.append(f"R {now!r} {pkt.hex()}")
@@ -180,17 +186,28 @@ def sharing_script(tmp: Path, seed: int, loss: float) -> tuple[list[str], list[s
     return script, sent, grants
 
 
-@pytest.mark.parametrize("seed,loss", [(1, 0.1), (2, 0.25)])
+THREE = ([3000, 1200, 2000], [0.0, 3.0, 6.0])
+FOUR = ([3000, 1200, 2000, 1600], [0.0, 1.0, 2.0, 3.0])
+
+
+@pytest.mark.parametrize("seed,loss,inbound,files,pause,seen", [
+    (1, 0.1, UPLINK, THREE, None, {0, 158, 237}),  # alone, two and three share
+    (2, 0.25, UPLINK, THREE, None, {0, 158, 237}),
+    (6, 0.1, UPLINK, FOUR, (0, 6.0, 11.0), {118, 158}),  # four share; one goes quiet (3.4 s at 118 B/s), is back
+    (7, 0.1, 200_000, THREE, None, {0, 63333, 65535}),  # what TT_FILE_STATUS.rate_grant holds at most
+], ids=["three", "three-lossy", "four-one-quiet", "wide-link"])
 def test_the_node_grants_what_pythons_endpoint_grants(cpp_node_bins: dict[str, Path], tmp_path: Path, seed: int,
-                                                      loss: float) -> None:
-    """The C++ node and ttctl's Python Endpoint, each with 500 B/s inbound, as the onboard end of
-    three overlapping uploads over a lossy channel in virtual time, given the same packets at
+                                                      loss: float, inbound: int, files: tuple[list[int], list[float]],
+                                                      pause: Pause | None, seen: set[int]) -> None:
+    """The C++ node and ttctl's Python Endpoint, each with `inbound` B/s to share, as the onboard
+    end of overlapping uploads over a lossy channel in virtual time, given the same packets at
     the same moments, send the same packets byte for byte at the same moments: the same grants
-    (none alone, 237 B/s for two, 158 for three) in the same statuses, told as soon when the
-    sharing set changes; and store the same files."""
-    script, want, grants = sharing_script(tmp_path, seed, loss)
-    assert {0, 158, 237} <= set(grants), sorted(set(grants))  # alone, two and three shared
-    run = subprocess.run([str(cpp_node_bins["driver"]), str(tmp_path / "cpp"), "-", "6700", str(UPLINK)],
+    (none alone, 0.95 x inbound / n for n, at most 65535) in the same statuses, told as soon
+    when the sharing set changes (a transfer starts, ends, goes quiet or comes back); and store
+    the same files."""
+    script, want, grants = sharing_script(tmp_path, seed, loss, inbound, *files, pause)
+    assert seen <= set(grants), sorted(set(grants))
+    run = subprocess.run([str(cpp_node_bins["driver"]), str(tmp_path / "cpp"), "-", "6700", str(inbound)],
                          input="\n".join(script) + "\n", capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stderr
     got = run.stdout.splitlines()
@@ -198,7 +215,7 @@ def test_the_node_grants_what_pythons_endpoint_grants(cpp_node_bins: dict[str, P
     polls = [line for line in script if line.startswith("P")]
     for i, (g, w) in enumerate(zip(got, want, strict=True)):
         assert g == w, (i, polls[i], g, w)
-    for i in range(3):
+    for i in range(len(files[0])):
         assert (tmp_path / "cpp" / f"f{i}.bin").read_bytes() == (tmp_path / "python" / f"f{i}.bin").read_bytes()
 
 
