@@ -13,6 +13,7 @@ processes on loopback; and against Python's Endpoint in virtual time.
 - The node sending: its upload to `ttctl recv-file --profile m100` (which grants: it knows the
   uplink) alongside two `send-file` processes follows its grant: its data frames leave at about
   the grant, not at the node's own 500 B/s, and every file is verified.
+- A dialect with a copy of ttapi.xml from before rate_grant still gets a node that builds.
 """
 
 from __future__ import annotations
@@ -29,8 +30,8 @@ from typing import Any
 import pytest
 
 import ttapi
-from conftest import shipped
-from cpp_node_lib import needs_gxx, sha, write
+from conftest import TTAPI, run_ttctl, shipped
+from cpp_node_lib import WARN, gxx, needs_gxx, sha, write
 from e2e_lib import LOCAL, Proc, Start, free_port, receiver, relay
 
 pytestmark = needs_gxx
@@ -293,3 +294,30 @@ def test_the_node_serves_at_its_grants_as_pythons_endpoint_does(cpp_node_bins: d
             assert (tmp_path / f"tablet_{name}" / f.name).read_bytes() == f.read_bytes()
     assert 950 in grants, grants
     assert now > 16_000 / 2000, now  # at their grants (20 kB on the wire at 2 x 950 B/s: 10.5 s), not at 6700 B/s
+
+
+def test_a_dialect_with_an_older_ttapi_xml_builds_the_node_without_grants(tmp_path: Path) -> None:
+    """A user's dialect with a copy of ttapi.xml from before rate_grant (TT_FILE_STATUS without
+    the extension: the same CRC_EXTRA, so the node is generated for it) builds with g++ -Werror:
+    its statuses carry no grant and its senders read none."""
+    text = TTAPI.read_text()
+    old = re.sub(r'\s*<field type="uint16_t" name="rate_grant".*?</field>', "", text, flags=re.S)
+    assert old != text
+    (tmp_path / "ttapi.xml").write_text(old)
+    proc = run_ttctl("gen", str(tmp_path / "ttapi.xml"), "--lang", "cpp", "-o", str(tmp_path / "out"), timeout=300)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert "rate_grant" not in (tmp_path / "out" / "cpp" / "ttapi" / "messages.hpp").read_text()
+    (tmp_path / "t.cpp").write_text("""#include "ttapi/node.hpp"
+static_assert(!ttapi::link::has_rate_grant<ttapi::TtFileStatus>::value, "no rate_grant in this dialect");
+int main()
+{
+    ttapi::link::NodeConfig cfg;
+    cfg.inbound_Bps = ttapi::link::NodeConfig::M100_UPLINK_BPS;
+    ttapi::TtFileStatus s;
+    ttapi::link::set_rate_grant(s, 158);
+    ttapi::link::Node node(cfg);
+    return ttapi::link::rate_grant_of(s);
+}
+""")
+    gxx(*WARN, "-I", str(tmp_path / "out" / "cpp"), str(tmp_path / "t.cpp"), "-o", str(tmp_path / "t"))
+    assert subprocess.run([str(tmp_path / "t")], timeout=30).returncode == 0
