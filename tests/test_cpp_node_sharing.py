@@ -23,7 +23,6 @@ import random
 import re
 import signal
 import subprocess
-import time
 from pathlib import Path
 from typing import Any
 
@@ -108,13 +107,14 @@ def test_the_node_s_upload_follows_its_grant(cpp_node_bins: dict[str, Path], tmp
     whole uplink itself): three share, 158 B/s each. The node's data frames leave at about its
     grant, a third of its own pace; every file is verified."""
     b = free_port()
-    receiver(start, tmp_path, f"udpin:{LOCAL}:{b}", "--profile", "m100", "--json")
+    rx = receiver(start, tmp_path, f"udpin:{LOCAL}:{b}", "--profile", "m100", "--json")
     a = free_port()
     relay(start, a, b, "--profile", "m100", "--loss", "0.1", "--seed", "5", "--stats-interval", "0")
     srcs = [write(tmp_path / f"p{i}.bin", 3200, 50 + i) for i in range(2)]
     procs = [start(f"send{i}", "send-file", str(s), "--to", f"udpout:{LOCAL}:{a}", "--profile", "m100", "--timeout",
                    "60", "--json") for i, s in enumerate(srcs)]
-    time.sleep(1.5)  # both accepted: the node's transfer joins two that share
+    for s in srcs:  # both accepted: the node's transfer joins two that share
+        rx.wait_for(f'"event": "accepted", "name": "{s.name}"', 30, where="stdout")
     mine = write(tmp_path / "n.bin", 1600, 59)  # done while all three share
     node = cpp_nodes(cpp_node_bins["plain"], tmp_path, "node", "--to", f"udpout:{LOCAL}:{a}", "--sysid", "2",
                      "--rate", str(UPLINK), "--send", str(mine), "--send-to", "1/240")
