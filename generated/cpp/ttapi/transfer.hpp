@@ -42,7 +42,7 @@
 //   receiver.hpp        FileReceiver: every incoming transfer (parts: receiver_offers, _data, _status)
 //   sharing.hpp         rate grants: the receiver's inbound capacity shared among its transfers
 //   sender.hpp          FileSender: one outgoing transfer (parts: sender_control, _data, _frame_size)
-// transfer_base.hpp, file_names.hpp, ranges.hpp and json.hpp need no POSIX.
+// transfer_base.hpp, file_names.hpp, ranges.hpp, json.hpp and sharing.hpp need no POSIX.
 #ifndef TTCTL_TTAPI_TRANSFER_HPP
 #define TTCTL_TTAPI_TRANSFER_HPP
 
