@@ -178,7 +178,7 @@ public:
     void on_status(double now, const TtFileStatus& msg);
 
     /// The next time this transfer needs attention (data waiting for the pacer is the
-    /// scheduler's business); false if none.
+    /// scheduler's business, data waiting for its rate grant is this one's); false if none.
     bool deadline(double now, double& when) const noexcept;
 
 private:
