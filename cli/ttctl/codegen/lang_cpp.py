@@ -64,6 +64,7 @@ RUNTIME_HEADERS = ("runtime", "frame_format", "crc", "byte_order", "message_info
 TRANSFER_HEADERS = ("transfer", "transfer_base", "file_names", "ranges", "posix_files", "json", "receive_dir",
                     "deflate",
                     "partial", "file_source", "receiver", "receiver_offers", "receiver_data", "receiver_status",
+                    "sharing",
                     "sender", "sender_control", "sender_data", "sender_frame_size")
 # The node: node.hpp includes node_config.hpp and setpoints.hpp first and its parts (the others)
 # after the class.

@@ -21,6 +21,7 @@ namespace ttapi::link {
 /// How a node is set up.
 struct NodeConfig {
     static constexpr double M100_DOWNLINK_BPS = 6700.0;  // ttctl's m100 profile at 10 m
+    static constexpr double M100_UPLINK_BPS = 500.0;  // the same, tablet to drone
 
     std::uint8_t sysid = 1;
     std::uint8_t compid = 240;
@@ -28,6 +29,10 @@ struct NodeConfig {
     /// as fast as polled. Onboard nothing says what DJI's SDK could not queue, so give the
     /// downlink's rate (the M100's by default).
     double rate_Bps = M100_DOWNLINK_BPS;
+    /// What the node can take from its link per second (the uplink's capacity, M100_UPLINK_BPS on
+    /// the M100), shared out equally among the files it receives at once: each status tells its
+    /// sender its share (TT_FILE_STATUS.rate_grant, sharing.hpp). 0: no grants.
+    double inbound_Bps = 0.0;
     std::size_t mtu = 100;  // DTT packets
     std::string inbox;  // files received land here ("": this end takes no files)
     std::string serve;  // files a peer may fetch ("": none)

@@ -22,6 +22,7 @@
 #include "messages.hpp"
 #include "partial.hpp"
 #include "receive_dir.hpp"
+#include "sharing.hpp"
 #include "transfer_base.hpp"
 
 namespace ttapi::link {
@@ -81,6 +82,8 @@ struct Incoming {
     bool quiet_set = false;
     double quiet_due = 0.0;  // report when data stops coming
     bool said_busy = false;
+    bool sharing = false;  // among the transfers the link is shared by (sharing.hpp)
+    int finals_left = 0;  // repeats of the COMPLETE status still to send (FileReceiver::COMPLETE_REPEATS)
     std::uint64_t resumed_bytes = 0;  // what the partial file held when this transfer was accepted
     bool used = false;
     int prev = -1;
@@ -150,6 +153,11 @@ public:
     }
 
     TransferConfig& config() noexcept { return cfg_; }
+    /// What this end can take from its link, B/s, shared out among concurrent incoming
+    /// transfers by rate grants (sharing.hpp; 0: no grants).
+    void set_inbound(double Bps) noexcept { inbound_Bps_ = Bps > 0.0 ? Bps : 0.0; }
+    /// Each sharing transfer's rate grant, B/s (0: none).
+    std::uint16_t grant() const noexcept { return grant_; }
     ReceiveDir& store() noexcept { return store_; }
     std::size_t known() const noexcept { return count_; }
 
@@ -163,6 +171,12 @@ public:
     static constexpr std::uint64_t KEY_REASON = 1;
     static constexpr std::uint64_t KEY_STATUS = 2;
     static constexpr std::uint64_t KEY_UNKNOWN = 3;
+    /// A COMPLETE status is said COMPLETE_REPEATS more times, COMPLETE_REPEAT_GAP s apart: a
+    /// receiver that ends right after its file is complete cannot answer the sender's later
+    /// probe, and a lost last COMPLETE would leave the sender recording a delivered, verified
+    /// file as failed (as ttctl's Python receiver).
+    static constexpr int COMPLETE_REPEATS = 2;
+    static constexpr double COMPLETE_REPEAT_GAP = 0.05;
 
     // -- offers (receiver_offers.hpp) -------------------------------------------------------
     void on_offer(double now, const TtFileOffer& msg, std::uint8_t src_sysid, std::uint8_t src_compid);
@@ -386,6 +400,7 @@ private:
     void complete(int g, double now);
 
     // -- statuses (receiver_status.hpp) -----------------------------------------------------
+    void share(double now) noexcept;
     template <class Emit>
     void statuses(const Incoming& t, Emit& emit) const;
     TtFileStatus status(const Incoming& t, std::uint64_t rc, std::uint64_t region, std::uint64_t re,
@@ -408,6 +423,9 @@ private:
     Unknown unknown_[TransferLimits::MAX_UNKNOWN] = {};
     Unknown unknown_due_[TransferLimits::MAX_UNKNOWN] = {};
     std::size_t unknown_due_count_ = 0;
+    double inbound_Bps_ = 0.0;
+    std::uint16_t grant_ = 0;
+    std::size_t sharing_count_ = 0;  // transfers flagged `sharing` at the last share(), closed ones included
     EventFn event_ = nullptr;
     void* event_user_ = nullptr;
 };

@@ -121,6 +121,7 @@ inline void FileReceiver::end_group(int g, double now, TtFileResult code, std::s
         if (code == TtFileResult::TT_FILE_RESULT_COMPLETE) {
             t.finished = true;
             t.finished_at = now;
+            t.finals_left = COMPLETE_REPEATS;
             event(FileEvent::complete, t, final_path);
         } else {
             event(FileEvent::failed, t);

@@ -189,6 +189,7 @@ inline void FileReceiver::decide(int at, double now)
             t.result = static_cast<std::uint8_t>(TtFileResult::TT_FILE_RESULT_COMPLETE);
             t.nothing_sent = t.identical = t.finished = true;
             t.finished_at = now;
+            t.finals_left = COMPLETE_REPEATS;
             event(FileEvent::complete, t, final);
             status_now(t, now);
             return;

@@ -27,9 +27,13 @@ inline void FileReceiver::control(double now, Emit&& emit)
         const int next = t.next;
         if (now - t.last_activity >= cfg_.idle_timeout) {
             close_transfer(i);
-            i = next;
-            continue;
         }
+        i = next;
+    }
+    share(now);
+    for (int i = head_; i >= 0;) {
+        Incoming& t = tr(i);
+        const int next = t.next;
         const bool quiet = t.quiet_set && now >= std::max(t.quiet_due, t.last_status + min_interval(t));
         if (!(quiet || (t.status_due_set && now >= t.status_due))) {
             i = next;
@@ -54,6 +58,11 @@ inline void FileReceiver::control(double now, Emit&& emit)
                              && t.group >= 0 && t.has_last_data && now - t.last_data < cfg_.status_interval;
         t.status_due_set = flowing;
         t.status_due = flowing ? now + cfg_.status_interval : 0.0;
+        if (t.result == static_cast<std::uint8_t>(TtFileResult::TT_FILE_RESULT_COMPLETE) && t.finals_left > 0) {
+            --t.finals_left;  // said again, shortly
+            t.status_due_set = true;
+            t.status_due = now + COMPLETE_REPEAT_GAP;
+        }
         i = next;
     }
     for (std::size_t k = 0; k < unknown_due_count_; ++k) {
@@ -66,6 +75,42 @@ inline void FileReceiver::control(double now, Emit&& emit)
         emit(static_cast<const TtFileStatus&>(s), key_of(KEY_UNKNOWN, 0, u.sysid, u.compid, u.id));
     }
     unknown_due_count_ = 0;
+}
+
+// Who shares the link now (receiving, heard from lately); on a change of the grant, it is told to
+// every one of them soon (at the earliest their status minimum interval after their last status).
+inline void FileReceiver::share(double now) noexcept
+{
+    const double window = Sharing::window(grant_);
+    bool changed = false;
+    std::size_t was = 0;
+    std::size_t n = 0;
+    for (int i = head_; i >= 0; i = tr(i).next) {
+        Incoming& t = tr(i);
+        const bool in = t.group >= 0 && now - t.last_activity < window;
+        was += t.sharing ? 1u : 0u;
+        changed = changed || in != t.sharing;
+        t.sharing = in;
+        n += in ? 1u : 0u;
+    }
+    changed = changed || was != sharing_count_;  // one that shared was closed
+    sharing_count_ = n;
+    if (!changed) {
+        return;
+    }
+    const std::uint16_t grant = Sharing::share(inbound_Bps_, n);
+    if (grant == grant_) {
+        return;
+    }
+    grant_ = grant;
+    for (int i = head_; i >= 0; i = tr(i).next) {
+        Incoming& t = tr(i);
+        if (t.sharing) {
+            const double soon = std::max(now, t.last_status + min_interval(t));
+            t.status_due = t.status_due_set ? std::min(t.status_due, soon) : soon;
+            t.status_due_set = true;
+        }
+    }
 }
 
 inline bool FileReceiver::deadline(double& when) const noexcept
@@ -147,6 +192,9 @@ inline TtFileStatus FileReceiver::status(const Incoming& t, std::uint64_t rc, st
     }
     s.range_count = static_cast<std::uint8_t>(count);
     s.meta_check = t.check;
+    const bool sharing = t.sharing && t.group >= 0
+                         && t.result == static_cast<std::uint8_t>(TtFileResult::TT_FILE_RESULT_IN_PROGRESS);
+    set_rate_grant(s, sharing ? grant_ : std::uint16_t{0});
     for (std::size_t i = 0; i < count; ++i) {
         s.ranges[2 * i] = static_cast<std::uint32_t>(gaps[i][0]);
         s.ranges[2 * i + 1] = static_cast<std::uint32_t>(gaps[i][1]);

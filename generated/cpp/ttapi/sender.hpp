@@ -30,6 +30,7 @@
 #include "ranges.hpp"
 #include "runtime.hpp"
 #include "scheduler.hpp"
+#include "sharing.hpp"
 #include "transfer_base.hpp"
 
 namespace ttapi::link {
@@ -161,7 +162,11 @@ public:
     void control(double now, Emit&& emit);
 
     // -- data (sender_data.hpp) -------------------------------------------------------------
-    bool has_data(double now) const noexcept;
+    /// A data frame may leave now (the scheduler's pacer permitting): one is wanted and the
+    /// receiver's rate grant allows it.
+    bool has_data(double now) const noexcept { return wants_data(now) && pacer_.ready(now); }
+    /// The receiver's latest rate grant, B/s (0: none; sharing.hpp).
+    std::uint16_t grant() const noexcept { return pacer_.grant(); }
 
     /// BulkSource: the next data frame, encoded into `out`.
     std::size_t pull(double now, std::size_t space, std::uint8_t* out) override;
@@ -173,7 +178,7 @@ public:
     void on_status(double now, const TtFileStatus& msg);
 
     /// The next time this transfer needs attention (data waiting for the pacer is the
-    /// scheduler's business); false if none.
+    /// scheduler's business, data waiting for its rate grant is this one's); false if none.
     bool deadline(double now, double& when) const noexcept;
 
 private:
@@ -357,6 +362,7 @@ private:
 
     // -- data frames (sender_data.hpp) ------------------------------------------------------
     bool window_full() const noexcept { return records_ + 1 > TransferLimits::IN_FLIGHT; }
+    bool wants_data(double now) const noexcept;  // a data frame is waiting (its grant may hold it back)
     bool tail_due(double& due) const noexcept;
     bool tail_candidate(double now, std::uint64_t& at) const noexcept;
     const Record& records_at(std::size_t i) const noexcept { return records_buf_[i]; }
@@ -440,6 +446,7 @@ private:
     double probe_due_ = 0.0;
     std::unique_ptr<History[]> history_{new History[TransferLimits::SEND_HISTORY]()};
     std::uint64_t answers_ = 0;
+    GrantPacer pacer_;  // the receiver's rate grant for our data frames
 };
 
 }  // namespace ttapi::link

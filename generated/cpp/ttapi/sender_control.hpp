@@ -172,6 +172,7 @@ inline void FileSender::on_status(double now, const TtFileStatus& msg)
         busy_.clear();
         last_progress_ = now;
     }
+    pacer_.update(rate_grant_of(msg));
     rtt_from_echo(now, msg);
     apply_status(now, msg);
 }
@@ -185,6 +186,9 @@ inline bool FileSender::deadline(double now, double& when) const noexcept
     double due = 0.0;
     if (state_ == State::sending && retx_.empty() && next_new_ >= size_ && tail_due(due) && due > now) {
         when = std::min(when, due);
+    }
+    if (pacer_.ready_at(due) && due > now && wants_data(now)) {
+        when = std::min(when, due);  // data waits for its grant
     }
     if (has_refusal_) {
         when = std::min(when, refusal_at_ + std::max(cfg_.reason_wait, 3 * rtt_));
@@ -295,7 +299,7 @@ inline void FileSender::apply_status(double now, const TtFileStatus& msg) noexce
     }
     records_ = kept;
     classify(horizon, re, truncated, missing, m);
-    if (has_data(now)) {
+    if (wants_data(now)) {
         has_probe_ = false;
     } else {
         has_probe_ = true;

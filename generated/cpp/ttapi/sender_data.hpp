@@ -18,7 +18,7 @@
 
 namespace ttapi::link {
 
-inline bool FileSender::has_data(double now) const noexcept
+inline bool FileSender::wants_data(double now) const noexcept
 {
     if (state_ != State::sending) {
         return false;
@@ -32,7 +32,7 @@ inline bool FileSender::has_data(double now) const noexcept
 
 inline std::size_t FileSender::pull(double now, std::size_t space, std::uint8_t* out)
 {
-    if (state_ != State::sending) {
+    if (state_ != State::sending || !pacer_.ready(now)) {
         return 0;
     }
     const bool wide = mode_wide_;
@@ -77,6 +77,7 @@ inline std::size_t FileSender::pull(double now, std::size_t space, std::uint8_t*
     if (first_send) {
         classify_later(offset, offset + length, left, wide);
     }
+    pacer_.sent(now, frame_len);
     stats_.bytes_sent += length;
     ++stats_.frames_sent;
     if (stats_.data_started < 0) {
@@ -101,7 +102,7 @@ inline std::size_t FileSender::pull(double now, std::size_t space, std::uint8_t*
     if (cfg_.frame_mode == TransferConfig::FrameMode::automatic && stats_.narrow_frames >= cfg_.probe_frames) {
         mode_wide_ = choose_wide();
     }
-    if (!has_data(now) && !has_probe_) {
+    if (!wants_data(now) && !has_probe_) {
         has_probe_ = true;
         probe_due_ = now + std::max(2 * rtt_, 0.5);
     }

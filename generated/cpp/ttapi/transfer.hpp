@@ -40,8 +40,9 @@
 //   partial.hpp         Partial: one file being received, and its record
 //   file_source.hpp     FileSource: a file to send
 //   receiver.hpp        FileReceiver: every incoming transfer (parts: receiver_offers, _data, _status)
+//   sharing.hpp         rate grants: the receiver's inbound capacity shared among its transfers
 //   sender.hpp          FileSender: one outgoing transfer (parts: sender_control, _data, _frame_size)
-// transfer_base.hpp, file_names.hpp, ranges.hpp and json.hpp need no POSIX.
+// transfer_base.hpp, file_names.hpp, ranges.hpp, json.hpp and sharing.hpp need no POSIX.
 #ifndef TTCTL_TTAPI_TRANSFER_HPP
 #define TTCTL_TTAPI_TRANSFER_HPP
 
@@ -55,6 +56,7 @@
 #include "partial.hpp"
 #include "file_source.hpp"
 #include "receiver.hpp"
+#include "sharing.hpp"
 #include "sender.hpp"
 
 #endif  // TTCTL_TTAPI_TRANSFER_HPP

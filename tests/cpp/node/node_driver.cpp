@@ -2,9 +2,10 @@
 // tests/test_cpp_node_parity.py, which runs ttctl's Python Endpoint on the same input and compares what
 // each sends.
 //
-//     node_driver INBOX SERVE RATE < script
+//     node_driver INBOX SERVE RATE [INBOUND] < script
 //
-// The node is 1/240, paced at RATE B/s, receives into INBOX, serves SERVE ("-": nothing), sends
+// The node is 1/240, paced at RATE B/s, shares INBOUND B/s among concurrent uploads (rate
+// grants; default 0: none), receives into INBOX, serves SERVE ("-": nothing), sends
 // no heartbeat, and accepts every command (ACCEPTED, as the Python endpoint it is compared with
 // is told to). Script lines: `I ID` queues a transfer id for the node to draw (as the Python end's
 // seeded random numbers give it); `R NOW HEX` a packet arrives at NOW; `P NOW` the node is
@@ -22,8 +23,8 @@
 
 int main(int argc, char** argv)
 {
-    if (argc != 4) {
-        std::fprintf(stderr, "usage: node_driver INBOX SERVE RATE < script\n");
+    if (argc != 4 && argc != 5) {
+        std::fprintf(stderr, "usage: node_driver INBOX SERVE RATE [INBOUND] < script\n");
         return 2;
     }
     std::deque<std::uint32_t> ids;
@@ -33,6 +34,7 @@ int main(int argc, char** argv)
         cfg.serve = argv[2];
     }
     cfg.rate_Bps = std::stod(argv[3]);
+    cfg.inbound_Bps = argc == 5 ? std::stod(argv[4]) : 0.0;
     cfg.heartbeat_interval = 0;
     cfg.new_id = [&ids]() -> std::uint32_t {
         if (ids.empty()) {

@@ -9,7 +9,7 @@
 //
 // Usage:
 //     onboard_node (--listen udpin:HOST:PORT | --to udpout:HOST:PORT)
-//                  [--inbox DIR] [--serve DIR] [--key FILE [--accept-unsigned]] [--rate B/s]
+//                  [--inbox DIR] [--serve DIR] [--key FILE [--accept-unsigned]] [--rate B/s] [--inbound B/s]
 //                  [--sysid N] [--compid N] [--max-file BYTES] [--max-dir BYTES] [--overwrite]
 //                  [--heartbeat S] [--send FILE --send-to SYS/COMP [--send-name NAME]]
 //
@@ -19,6 +19,8 @@
 //   --serve DIR    files a peer may fetch (ttctl send-file --from, the tablet's `fetch`)
 //   --key FILE     MAVLink 2 signing: 64 hex digits or a passphrase (as ttctl --key)
 //   --rate B/s     the pace of what it sends (default 6700: the M100's downlink); 0: unpaced
+//   --inbound B/s  what it can take (the uplink's capacity, the M100's: 500), shared out among the
+//                  files it receives at once by rate grants (default 0: no grants)
 //   --max-file     per-file quota of the inbox (default 1 GiB)
 //   --send FILE    upload FILE to SYS/COMP once started (ttctl recv-file takes it)
 //   --print-name-rules  print the code points a file name may not hold (ranges "lo hi", hex) and
@@ -27,8 +29,9 @@
 // Output: one JSON object per line on stdout, flushed: {"event": "ready", "port": N} first,
 // then file events (accepted, busy, refused, complete, failed), serving/served/serve-failed,
 // request-refused, command (each execution and each repeated ack), link-refused, sent (the
-// upload's result). SIGINT or SIGTERM: a last {"event": "stats", ...} line, exit 0.
+// upload's result, with its highest rate grant and its data frames' bytes and time). SIGINT or SIGTERM: a last {"event": "stats", ...} line, exit 0.
 // Malformed options: one line on stderr, exit 2.
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
@@ -159,6 +162,8 @@ int main(int argc, char** argv)
             accept_unsigned = true;
         } else if (a == "--rate") {
             cfg.rate_Bps = number();
+        } else if (a == "--inbound") {
+            cfg.inbound_Bps = number();
         } else if (a == "--sysid") {
             cfg.sysid = static_cast<std::uint8_t>(number());
         } else if (a == "--compid") {
@@ -289,6 +294,7 @@ int main(int argc, char** argv)
 
     bool sent_started = false;
     bool sent_reported = false;
+    unsigned grant_max = 0;  // the upload's highest rate grant from its receiver (0: none)
     while (!g_stop.load()) {
         udp.run_once(0.1);
         if (!send_path.empty() && !sent_started) {
@@ -304,18 +310,24 @@ int main(int argc, char** argv)
         }
         if (sent_started && !sent_reported) {
             node.each_sender([&](const ttapi::link::FileSender& s) {
+                if (s.request_id() == 0 && !s.done()) {
+                    grant_max = std::max<unsigned>(grant_max, s.grant());
+                }
                 if (s.request_id() == 0 && s.done() && !sent_reported) {
                     const ttapi::link::TransferResult& r = s.result();
                     const ttapi::link::TransferStats& st = s.stats();
                     std::printf("{\"event\": \"sent\", \"ok\": %s, \"code\": \"%s\", \"message\": %s, \"seconds\": %.3f, "
                                 "\"bytes_sent\": %llu, \"retransmitted\": %llu, \"resumed_bytes\": %llu, "
-                                "\"deflated_bytes\": %llu, \"deflate_fallback\": %s}\n",
+                                "\"deflated_bytes\": %llu, \"deflate_fallback\": %s, \"grant_max\": %u, "
+                                "\"data_seconds\": %.3f, \"wire_bytes\": %llu}\n",
                                 r.ok ? "true" : "false", r.code, json(r.message.view()).c_str(), r.seconds,
                                 static_cast<unsigned long long>(st.bytes_sent),
                                 static_cast<unsigned long long>(st.bytes_retransmitted),
                                 static_cast<unsigned long long>(st.resumed_bytes),
                                 static_cast<unsigned long long>(r.deflated_bytes),
-                                r.fell_back ? json(r.fallback.view()).c_str() : "null");
+                                r.fell_back ? json(r.fallback.view()).c_str() : "null", grant_max,
+                                st.data_started >= 0 ? st.finished - st.data_started : 0.0,
+                                static_cast<unsigned long long>(100 * st.narrow_frames + 267 * st.wide_frames));
                     std::fflush(stdout);
                     sent_reported = true;
                 }
