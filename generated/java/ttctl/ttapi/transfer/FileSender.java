@@ -23,7 +23,8 @@ import ttctl.ttapi.runtime.MavlinkMessage;
  * loss, retransmission rules). Not thread-safe: {@link FileTransfers} calls it under its lock.
  * Times are seconds on one monotonic clock. Given a {@link Deflate.Stream} of the file, it offers
  * that (TT_FILE_FLAGS_DEFLATE) and, if the receiver will not take it, the file as it is under a
- * new id ({@link #fallback} says why), as the Python sender does.
+ * new id ({@link #fallback} says why), as the Python sender does. Data frames leave no faster
+ * than the receiver's latest rate grant allows ({@link Sharing}), when it gives one.
  */
 final class FileSender {
     static final int NARROW = 80;
@@ -60,6 +61,7 @@ final class FileSender {
     double rtt = 0.5;
     boolean rttSampled;
     double byteTime;
+    final Sharing.Pacer pacer = new Sharing.Pacer(); // the receiver's rate grant for our data frames
     // stats
     long bytesSent;
     long bytesRetransmitted;
@@ -283,7 +285,13 @@ final class FileSender {
     }
 
     // -- data --------------------------------------------------------------------------------
+    /** A data frame may leave now (the grant's pace permitting). */
     boolean hasData(double now) {
+        return wantsData(now) && pacer.ready(now);
+    }
+
+    /** Data waits to be sent (now, or when its grant allows). */
+    boolean wantsData(double now) {
         if (!"sending".equals(state)) {
             return false;
         }
@@ -304,7 +312,7 @@ final class FileSender {
     }
 
     MavlinkMessage nextData(double now, int space) throws IOException {
-        if (!"sending".equals(state)) {
+        if (!"sending".equals(state) || !pacer.ready(now)) {
             return null;
         }
         boolean wide = "wide".equals(mode);
@@ -347,6 +355,7 @@ final class FileSender {
         if (r == null) {
             loss.sent(offset, offset + length, left, wide);
         }
+        pacer.sent(now, frameLen);
         bytesSent += length;
         framesSent++;
         MavlinkMessage msg;
@@ -360,7 +369,7 @@ final class FileSender {
         if ("auto".equals(cfg.frameMode) && narrowFrames >= cfg.probeFrames) {
             mode = chooseMode();
         }
-        if (!hasData(now) && Double.isNaN(probeDue)) {
+        if (!wantsData(now) && Double.isNaN(probeDue)) {
             probeDue = now + Math.max(2 * rtt, 0.5);
         }
         return msg;
@@ -457,6 +466,7 @@ final class FileSender {
             busy = null;
             lastProgress = now;
         }
+        pacer.update(msg.rate_grant);
         rttFromEcho(now, msg);
         applyStatus(now, msg);
     }
@@ -530,7 +540,7 @@ final class FileSender {
         }
         log.prune(acked);
         classify(horizon, re, truncated, missing);
-        probeDue = hasData(now) ? Double.NaN : now + Math.max(2 * rtt, 0.5);
+        probeDue = wantsData(now) ? Double.NaN : now + Math.max(2 * rtt, 0.5);
     }
 
     private void classify(double horizon, long re, boolean truncated, List<long[]> missing) {
@@ -546,6 +556,10 @@ final class FileSender {
             return Double.NaN;
         }
         double t = lastProgress + cfg.giveUpAfter;
+        double granted = pacer.readyAt();
+        if (!Double.isNaN(granted) && granted > now && wantsData(now)) {
+            t = Math.min(t, granted); // data waits for its grant
+        }
         if ("sending".equals(state) && retx.isEmpty() && nextNew >= size) {
             double due = tailDue();
             if (!Double.isNaN(due) && due > now) {

@@ -481,6 +481,9 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
                 changed.signalAll(); // its next deadline may be earlier now
                 return null;
             }
+            if (s.pacer.grant > 0) {
+                changed.signalAll(); // paced to a grant: the timer wakes the scheduler when the next frame may go
+            }
             return encode(m);
         } finally {
             lock.unlock();

@@ -1,0 +1,133 @@
+"""Rate grants in the generated Java runtime, against real ttctl processes on 127.0.0.1: several
+transfers share one link through `ttctl link relay --profile m100` at 10 % loss.
+
+- The Java sender (tests/java/transfer/TabletDriver.java) and two `ttctl send-file` processes
+  upload equal files at once to `ttctl recv-file`, which grants each an equal share of its
+  inbound capacity in every TT_FILE_STATUS (rate_grant): every file arrives verified, the Java
+  upload takes about as long as the Python ones, and the relay's SDK buffer hardly ever
+  overflows (a Java sender pacing to the full link rate instead overflows it hundreds of times).
+
+The relay and every end are given the same --rate (the m100 profile's loss, buffer and latency
+at a faster rate, so that the test takes seconds, not minutes).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import random
+import re
+import shutil
+import signal
+import subprocess
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from conformance_lib import build_java
+from e2e_lib import LOCAL, Proc, Start, free_port, receiver, relay
+from test_java_session import DRIVERS as SESSION_DRIVERS
+from test_java_session import _ttctl
+from test_java_transfer import DRIVERS as TABLET_DRIVERS
+from test_java_transfer import Driver
+
+pytestmark = pytest.mark.skipif(shutil.which("javac") is None or shutil.which("java") is None,
+                                reason="needs a JDK (javac, java)")
+
+RATE = 4000  # B/s: the relay's, and every end's pace and inbound capacity
+SIZE = 24 * 1024  # each file: 3 of them share the link for about 25 s
+
+
+@pytest.fixture(scope="module")
+def classes(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    cls, _ = build_java(tmp_path_factory.mktemp("java_grants"),
+                        [*SESSION_DRIVERS, *sorted(TABLET_DRIVERS.glob("*.java"))])
+    return cls
+
+
+def sha(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def files(tmp: Path, *names: str) -> list[Path]:
+    out = []
+    for i, n in enumerate(names):
+        p = tmp / n
+        p.write_bytes(random.Random(200 + i).randbytes(SIZE))
+        out.append(p)
+    return out
+
+
+def send_file(path: Path, port: int, *extra: str) -> subprocess.Popen[str]:
+    return subprocess.Popen([*_ttctl(), "send-file", str(path), "--to", f"udpout:{LOCAL}:{port}", "--rate",
+                             str(RATE), "--timeout", "30", "--json", *extra],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+
+
+def finish(p: subprocess.Popen[str], timeout: float = 150) -> dict[str, Any]:
+    try:
+        out, err = p.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        p.kill()
+        out, err = p.communicate()
+        raise AssertionError(f"send-file hung:\n{err[-3000:]}") from None
+    assert "Traceback" not in err, err
+    report: dict[str, Any] = json.loads(out) if out.strip() else {}
+    assert p.returncode == 0 and report.get("ok"), err[-3000:]
+    return report
+
+
+def uplink(rly: Proc) -> dict[str, int]:
+    """The relay's last stats line (on SIGTERM), its uplink part: packets in, out, lost, overflowed."""
+    rly.signal(signal.SIGTERM)
+    rly.wait(15)
+    lines = [ln for ln in rly.stderr.splitlines() if ln.startswith("relay ") and " s: up " in ln]
+    assert lines, rly.stderr
+    up = lines[-1].split(" s: up ", 1)[1].split(" | ")[0]
+    got = {"in": int(up.split(" in,")[0]), "out": int(re.search(r"(\d+) out", up)[1]),  # type: ignore[index]
+           "lost": int(re.search(r"(\d+) lost", up)[1])}  # type: ignore[index]
+    m = re.search(r"overflow (\d+)", up)
+    got["overflow"] = int(m[1]) if m else 0
+    return got
+
+
+def test_the_java_sender_paces_to_its_grant(classes: Path, tmp_path: Path, start: Start) -> None:
+    """Java and two `ttctl send-file` upload 24 KiB each at once through the relay (m100 at
+    4000 B/s, 10 % loss) to `ttctl recv-file --rate 4000`, which grants each 1266 B/s: all three
+    files arrive verified, the Java upload's time is within 1.5x of each Python one's, and the
+    relay's buffer overflowed for at most 3 % of the packets offered to it. Without the Java
+    sender following its grant, it sends at the link's rate on top of the other two: the buffer
+    overflowed for 303 of 1343 packets, and the Java upload took 12.6 s, the others 26.5 s."""
+    a, b = free_port(), free_port()
+    receiver(start, tmp_path, f"udpin:{LOCAL}:{b}", "--rate", str(RATE))
+    rly = relay(start, a, b, "--profile", "m100", "--rate", str(RATE), "--loss", "0.1", "--seed", "41",
+                "--stats-interval", "0")
+    java_file, py1, py2 = files(tmp_path, "java.bin", "python1.bin", "python2.bin")
+    d = Driver(classes, tmp_path, "java", link="udp", port=a, rate=RATE, timeout=30, send=java_file.name)
+    senders = [send_file(py1, a), send_file(py2, a)]
+    try:
+        r = d.finish(150)
+        py = [finish(p) for p in senders]
+    finally:
+        for p in senders:
+            if p.poll() is None:
+                p.kill()
+    up = uplink(rly)
+    assert r["send_ok"], r["_text"][-3000:]
+    for f in (java_file, py1, py2):
+        assert sha(tmp_path / "inbox" / f.name) == sha(f)
+    assert r["app_thread_errors"] == 0 and r["uncaught"] == 0 and r["scheduler_errors"] == 0
+    grant = int(RATE * 0.95 / 3)
+    report = {"java_seconds": round(r["send_seconds"], 2), "python_seconds": [p["seconds"] for p in py],
+              "java_data_Bps": round(r["send_sent"] / r["send_seconds"]), "grant_Bps": grant,
+              "uplink": up}
+    print("MEASURED", json.dumps(report))
+    for p in py:
+        assert r["send_seconds"] <= 1.5 * p["seconds"] and p["seconds"] <= 1.5 * r["send_seconds"], report
+    assert up["overflow"] <= 0.03 * up["in"], report
+    # the file bytes it put in data frames (repeats included) over its whole upload: about its
+    # share (less the frames' headers; a lone transfer at the very start and end goes at the
+    # link's rate, hence the room), not the link's rate (3200 B/s of file bytes)
+    assert r["send_sent"] / r["send_seconds"] <= 1.5 * grant, report
+
