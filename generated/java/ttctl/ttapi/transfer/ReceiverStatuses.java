@@ -2,9 +2,12 @@
 package ttctl.ttapi.transfer;
 
 import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashSet;
 import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Set;
 
 import ttctl.ttapi.enums.TtFileResult;
 import ttctl.ttapi.msg.TtFileStatus;
@@ -15,7 +18,9 @@ import ttctl.ttapi.runtime.MavlinkMessage;
  * statuses when due (at most one per status minimum interval, a regular one while data flows,
  * one when data stops with gaps left), answers to data of transfers it does not know (at most
  * once per offer interval each, {@value #MAX_UNKNOWN} remembered), and when it next needs the
- * clock. Silent transfers are forgotten here. Not thread-safe; times in seconds.
+ * clock. Silent transfers are forgotten here. With an inbound capacity, transfers that share
+ * the link are each told their rate grant in every status ({@link Sharing}), and all of them at
+ * once when who shares changes the grant. Not thread-safe; times in seconds.
  */
 final class ReceiverStatuses {
     static final int MAX_UNKNOWN = 256;
@@ -23,6 +28,9 @@ final class ReceiverStatuses {
     private final FileReceiver rx;
     private final LinkedHashMap<FileReceiver.Key, Double> unknown = new LinkedHashMap<>(); // told 'unknown', when
     private final List<FileReceiver.Key> unknownDue = new ArrayList<>();
+    double inbound; // B/s this end can take from its link, shared out by grants (0: no grants)
+    int grant; // each sharing transfer's rate grant, B/s (0: none)
+    Set<FileReceiver.Key> sharing = Collections.emptySet(); // the transfers the link is shared among
 
     ReceiverStatuses(FileReceiver rx) {
         this.rx = rx;
@@ -58,6 +66,41 @@ final class ReceiverStatuses {
     }
 
     /**
+     * Who shares the link now (receiving, heard from lately); on a change of the grant, the
+     * new grant is told to every one of them at once (at the earliest a status minimum
+     * interval after its last status).
+     */
+    private void share(double now) {
+        double window = Sharing.window(grant);
+        Set<FileReceiver.Key> current = new HashSet<>();
+        for (Incoming t : rx.transfers.values()) {
+            if (t.partial != null && now - t.lastActivity < window) {
+                current.add(t.key);
+            }
+        }
+        if (current.equals(sharing)) {
+            return;
+        }
+        sharing = current;
+        int g = Sharing.share(inbound, current.size());
+        if (g == grant) {
+            return;
+        }
+        grant = g;
+        for (FileReceiver.Key k : current) {
+            Incoming t = rx.transfers.get(k);
+            double soon = Math.max(now, t.lastStatus + minInterval(t));
+            t.statusDue = Double.isNaN(t.statusDue) ? soon : Math.min(t.statusDue, soon);
+        }
+    }
+
+    /** The grant {@code t}'s status carries: the shared one while it shares the link and is in progress. */
+    private int grantOf(Incoming t) {
+        return sharing.contains(t.key) && t.result == TtFileResult.TT_FILE_RESULT_IN_PROGRESS && t.partial != null
+                ? grant : 0;
+    }
+
+    /**
      * Statuses due now (each after the reason for a refusal or failure); forgets silent
      * transfers. Partial state is saved before the statuses that report it leave.
      */
@@ -67,8 +110,10 @@ final class ReceiverStatuses {
         for (Incoming t : new ArrayList<>(rx.transfers.values())) {
             if (now - t.lastActivity >= cfg.idleTimeout) {
                 rx.close(t);
-                continue;
             }
+        }
+        share(now);
+        for (Incoming t : new ArrayList<>(rx.transfers.values())) {
             boolean quiet = !Double.isNaN(t.quietDue) && now >= Math.max(t.quietDue, t.lastStatus + minInterval(t));
             if (!(quiet || (!Double.isNaN(t.statusDue) && now >= t.statusDue))) {
                 continue;
@@ -76,7 +121,7 @@ final class ReceiverStatuses {
             if (t.partial != null) {
                 t.partial.save();
             }
-            out.addAll(t.answers(Math.max(1, cfg.statusBatches), now));
+            out.addAll(t.answers(Math.max(1, cfg.statusBatches), now, grantOf(t)));
             t.lastStatus = now;
             t.quietDue = Double.NaN;
             boolean flowing = t.result == TtFileResult.TT_FILE_RESULT_IN_PROGRESS && t.partial != null
