@@ -9,6 +9,8 @@ transfers share one link through `ttctl link relay --profile m100` at 10 % loss.
 - Three `ttctl send-file` processes push files at once to the Java inbox
   (tests/java/session/SessionDriver.java, FileTransfers.setInboundCapacity): it grants them
   equal shares, so that they finish together and the buffer hardly overflows.
+- The arithmetic (shares, the sharing window, a sender's pace) is the Python reference's,
+  number for number (tests/java/grants/GrantCheck.java).
 
 The relay and every end are given the same --rate (the m100 profile's loss, buffer and latency
 at a faster rate, so that the test takes seconds, not minutes).
@@ -29,6 +31,7 @@ from typing import Any
 import pytest
 
 from conformance_lib import build_java
+from conftest import ROOT
 from e2e_lib import LOCAL, Proc, Start, free_port, receiver, relay
 from test_java_session import DRIVERS as SESSION_DRIVERS
 from test_java_session import _ttctl, stop, tablet_inbox
@@ -38,6 +41,7 @@ from test_java_transfer import Driver
 pytestmark = pytest.mark.skipif(shutil.which("javac") is None or shutil.which("java") is None,
                                 reason="needs a JDK (javac, java)")
 
+GRANT_CHECK = ROOT / "tests" / "java" / "grants" / "GrantCheck.java"
 RATE = 4000  # B/s: the relay's, and every end's pace and inbound capacity
 SIZE = 24 * 1024  # each file: 3 of them share the link for about 25 s
 # Of the packets offered to the relay, at most this share may find its 2-packet buffer full.
@@ -50,7 +54,7 @@ OVERFLOW = 0.1
 @pytest.fixture(scope="module")
 def classes(tmp_path_factory: pytest.TempPathFactory) -> Path:
     cls, _ = build_java(tmp_path_factory.mktemp("java_grants"),
-                        [*SESSION_DRIVERS, *sorted(TABLET_DRIVERS.glob("*.java"))])
+                        [*SESSION_DRIVERS, *sorted(TABLET_DRIVERS.glob("*.java")), GRANT_CHECK])
     return cls
 
 
@@ -172,3 +176,36 @@ def test_the_java_receiver_grants_equal_shares(classes: Path, tmp_path: Path, st
     print("MEASURED", json.dumps(report))
     assert max(secs) <= 1.5 * min(secs), report
     assert up["overflow"] <= OVERFLOW * up["in"], report
+
+
+def test_the_java_arithmetic_is_pythons(classes: Path) -> None:
+    """Sharing's numbers in the Java runtime are ttctl's Python proto/sharing.py's, on the same
+    inputs (tests/java/grants/GrantCheck.java): each transfer's share of a capacity among n
+    (0 alone or with no capacity, never 0 otherwise, at most 65535), how long a quiet transfer
+    stays in the sharing set under a grant, and when a sender's frames may leave under its grant
+    (no credit saved up, none kept when the grant goes)."""
+    from ttctl.proto.sharing import ACTIVE_WINDOW, GrantPacer, share
+
+    proc = subprocess.run(["java", "-cp", str(classes), "ttctl.ttapi.transfer.GrantCheck"], capture_output=True,
+                          text=True, timeout=60)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    got = json.loads(proc.stdout)
+    assert len(got["share"]) == 110 and any(g == 65535 for _, _, g in got["share"])
+    for capacity, n, g in got["share"]:
+        assert g == share(capacity, n), (capacity, n, g)
+    for g, w in got["window"]:
+        assert w == pytest.approx(max(ACTIVE_WINDOW, 4.0 * 100 / g) if g else ACTIVE_WINDOW, abs=1e-9), (g, w)
+    frames = [(0, 0.0, 100), (1266, 0.0, 100), (1266, 0.01, 100), (1266, 0.08, 100), (1266, 0.5, 267),
+              (1266, 0.6, 100), (1900, 0.7, 100), (0, 0.71, 100), (0, 0.72, 100), (633, 0.73, 267), (633, 5.0, 100)]
+    pacer = GrantPacer()
+    want = []
+    for grant, now, n in frames:
+        pacer.update(grant)
+        ready = pacer.ready(now)
+        if ready:
+            pacer.sent(now, n)
+        want.append((ready, pacer.ready_at()))
+    assert [r for r, _ in want] == [r for r, _ in got["pace"]], (want, got["pace"])
+    for (_, a), (_, b) in zip(want, got["pace"], strict=True):
+        assert (a is None and b is None) or a == pytest.approx(b, abs=1e-9), (want, got["pace"])
+    assert [r for r, _ in want].count(False) >= 2  # the grant held some frames back
