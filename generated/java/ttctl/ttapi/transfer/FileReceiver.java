@@ -318,6 +318,7 @@ final class FileReceiver {
                 t.nothingSent = true;
                 t.identical = true;
                 t.finishedAt = now;
+                t.finalsLeft = ReceiverStatuses.COMPLETE_REPEATS;
                 try {
                     t.finalPath = store.finalPath(t.name);
                 } catch (ReceiveDir.Refused e) {
@@ -447,6 +448,7 @@ final class FileReceiver {
             if (code == TtFileResult.TT_FILE_RESULT_COMPLETE) {
                 t.finalPath = fin;
                 t.finishedAt = now;
+                t.finalsLeft = ReceiverStatuses.COMPLETE_REPEATS;
                 event("complete", t);
             } else {
                 t.finishedAt = now;

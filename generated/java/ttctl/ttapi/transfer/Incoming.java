@@ -51,6 +51,7 @@ final class Incoming {
     double gapDt = 0.05;
     double quietDue = Double.NaN;
     boolean saidBusy;
+    int finalsLeft; // repeats of the COMPLETE status still to send (ReceiverStatuses.COMPLETE_REPEATS)
     // for the app: the Transfer it sees, and what the partial held when this transfer began
     Transfer transfer;
     long resumed = -1;

@@ -16,14 +16,22 @@ import ttctl.ttapi.runtime.MavlinkMessage;
 /**
  * When a {@link FileReceiver} speaks, as ttctl's Python proto/receiver.py does: each transfer's
  * statuses when due (at most one per status minimum interval, a regular one while data flows,
- * one when data stops with gaps left), answers to data of transfers it does not know (at most
- * once per offer interval each, {@value #MAX_UNKNOWN} remembered), and when it next needs the
- * clock. Silent transfers are forgotten here. With an inbound capacity, transfers that share
+ * one when data stops with gaps left, COMPLETE three times), answers to data of transfers it
+ * does not know (at most once per offer interval each, {@value #MAX_UNKNOWN} remembered), and
+ * when it next needs the clock. Silent transfers are forgotten here. With an inbound capacity, transfers that share
  * the link are each told their rate grant in every status ({@link Sharing}), and all of them at
  * once when who shares changes the grant. Not thread-safe; times in seconds.
  */
 final class ReceiverStatuses {
     static final int MAX_UNKNOWN = 256;
+    /**
+     * A COMPLETE status is said this many more times, {@link #COMPLETE_REPEAT_GAP} s apart: a
+     * receiver that ends right after its file is complete cannot answer the sender's later
+     * probe, and a lost last COMPLETE left the sender recording a delivered, verified file as
+     * failed (as the Python receiver).
+     */
+    static final int COMPLETE_REPEATS = 2;
+    static final double COMPLETE_REPEAT_GAP = 0.05;
 
     private final FileReceiver rx;
     private final LinkedHashMap<FileReceiver.Key, Double> unknown = new LinkedHashMap<>(); // told 'unknown', when
@@ -127,6 +135,10 @@ final class ReceiverStatuses {
             boolean flowing = t.result == TtFileResult.TT_FILE_RESULT_IN_PROGRESS && t.partial != null
                     && !Double.isNaN(t.lastData) && now - t.lastData < cfg.statusInterval;
             t.statusDue = flowing ? now + cfg.statusInterval : Double.NaN;
+            if (t.result == TtFileResult.TT_FILE_RESULT_COMPLETE && t.finalsLeft > 0) { // said again, shortly
+                t.finalsLeft--;
+                t.statusDue = now + COMPLETE_REPEAT_GAP;
+            }
         }
         for (FileReceiver.Key key : unknownDue) {
             TtFileStatus s = new TtFileStatus();
