@@ -71,6 +71,7 @@ RUNTIME_CLASSES = frozenset(RUNTIME_FILES + ["SendSetpoint"])
 TRANSFER_FILES = ["RangeSet", "Names", "TransferConfig", "TransferResult", "Transfer", "LossEstimate", "FileSender",
                   "Deflate", "ReceiveDir", "Incoming", "Partial", "FileReceiver", "FileFetch", "ServedFolder",
                   "TransferRouter", "TransferTimer", "FileTransfers"]
+TRANSFER_FILES += ["SentLog", "ReceiverStatuses", "Sharing"]  # split out of FileSender and FileReceiver; rate grants
 TRANSFER_MESSAGES = {"TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_REASON", "TT_FILE_DATA", "TT_FILE_DATA_WIDE",
                      "TT_FILE_REQUEST"}
 

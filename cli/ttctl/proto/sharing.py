@@ -39,7 +39,7 @@ REGRANT = 0.1  # a grant changes (and is told) when the share moves by more than
 def share(capacity_Bps: float | None, sharing: int, other_Bps: float = 0.0) -> int:
     """Each transfer's grant when `sharing` transfers share `capacity_Bps`, of which `other_Bps`
     is taken by frames that are not file data (0: no grant)."""
-    if not capacity_Bps or sharing < 2:
+    if capacity_Bps is None or capacity_Bps <= 0 or sharing < 2:
         return 0
     budget = max(MIN_FILL * capacity_Bps, GRANT_FILL * capacity_Bps - OTHER_ROOM * other_Bps)
     return max(MIN_GRANT, min(MAX_GRANT, int(budget / sharing)))

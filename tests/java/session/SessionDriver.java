@@ -48,7 +48,8 @@ import ttctl.ttapi.transfer.TransferResult;
  *     from the onboard end (udpout to our PORT), then a command.
  * djikey key=HEX                              DjiLink verifying with that key, fed frames signed
  *     with another, then with it.
- * inbox port=LISTEN dir=DIR serve=DIR secs=S  takes pushed files, serves fetches, for S seconds.
+ * inbox port=LISTEN dir=DIR serve=DIR secs=S  takes pushed files, serves fetches, for S seconds
+ *     [inbound=B/s]                            (sharing that inbound capacity out by rate grants).
  * listener port=ONBOARD n=N                   a 400 ms handler on telemetry; N commands meanwhile.
  */
 public final class SessionDriver {
@@ -389,6 +390,9 @@ public final class SessionDriver {
         Session s = new Session(udp, SYS, COMP, o);
         final List<String> results = Collections.synchronizedList(new ArrayList<String>());
         s.files().acceptInto(new File(a.get("dir")));
+        if (a.containsKey("inbound")) {
+            s.files().setInboundCapacity(Double.parseDouble(a.get("inbound")));
+        }
         if (a.containsKey("serve")) {
             s.files().serve(new File(a.get("serve")));
         }

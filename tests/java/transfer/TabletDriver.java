@@ -286,6 +286,7 @@ public final class TabletDriver {
         }
         out.put(what + "_ok", r.ok).put(what + "_code", r.code).put(what + "_message", r.message)
                 .put(what + "_bytes", r.size).put(what + "_seconds", r.seconds).put(what + "_moved", r.bytesMoved)
+                .put(what + "_sent", r.bytesSent)
                 .put(what + "_retransmitted", r.bytesRetransmitted).put(what + "_resumed", r.resumedBytes)
                 .put(what + "_efficiency", r.ok && r.seconds > 0 ? r.goodput() / rate : null)
                 .put(what + "_deflated", r.deflatedSize);

@@ -7,7 +7,6 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
 import java.util.HashSet;
-import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -15,7 +14,6 @@ import java.util.Set;
 
 import ttctl.ttapi.enums.TtFileResult;
 import ttctl.ttapi.msg.TtFileOffer;
-import ttctl.ttapi.msg.TtFileStatus;
 import ttctl.ttapi.runtime.MavlinkMessage;
 
 /**
@@ -37,7 +35,6 @@ import ttctl.ttapi.runtime.MavlinkMessage;
  */
 final class FileReceiver {
     static final int MAX_PENDING_OFFERS = 64;
-    static final int MAX_UNKNOWN = 256;
     static final int MAX_KNOWN = 1024;
     static final int MAX_RANGES = 7;
 
@@ -98,8 +95,7 @@ final class FileReceiver {
     final Map<Key, Incoming> transfers = new LinkedHashMap<>();
     private final Map<String, Group> groups = new HashMap<>();
     private final Map<Key, Expected> expected = new HashMap<>();
-    private final LinkedHashMap<Key, Double> unknown = new LinkedHashMap<>();
-    private final List<Key> unknownDue = new ArrayList<>();
+    final ReceiverStatuses statuses = new ReceiverStatuses(this);
     double now;
     // counters, for the app
     long refused;
@@ -172,7 +168,7 @@ final class FileReceiver {
             return;
         }
         t.lastActivity = now;
-        unknown.remove(key);
+        statuses.known(key);
         int off = msg.meta_offset;
         int n = Math.max(0, Math.min(msg.meta.length, t.metaLength - off));
         byte[] part = Arrays.copyOf(msg.meta, n);
@@ -322,6 +318,7 @@ final class FileReceiver {
                 t.nothingSent = true;
                 t.identical = true;
                 t.finishedAt = now;
+                t.finalsLeft = ReceiverStatuses.COMPLETE_REPEATS;
                 try {
                     t.finalPath = store.finalPath(t.name);
                 } catch (ReceiveDir.Refused e) {
@@ -362,7 +359,7 @@ final class FileReceiver {
         Incoming t = transfers.get(key);
         if (t == null) {
             if (inbox != null) {
-                tellUnknown(key, now); // e.g. we restarted: the sender must offer again (and resume)
+                statuses.tellUnknown(key, now); // e.g. we restarted: the sender must offer again (and resume)
             } else {
                 dropped++;
             }
@@ -401,7 +398,7 @@ final class FileReceiver {
         boolean repaired = ranges.size() < gapsBefore;
         boolean early = t.frames == cfg.earlyStatusFrames;
         if (early || newGap || atEnd || repaired) {
-            double soon = Math.max(now, t.lastStatus + minInterval(t));
+            double soon = Math.max(now, t.lastStatus + statuses.minInterval(t));
             t.statusDue = Double.isNaN(t.statusDue) ? soon : Math.min(t.statusDue, soon);
         } else if (Double.isNaN(t.statusDue)) {
             t.statusDue = now + cfg.statusInterval;
@@ -409,28 +406,6 @@ final class FileReceiver {
         if (ranges.size() > 1 || atEnd || repaired) {
             t.quietDue = now + Math.max(3 * t.gapDt, 0.03); // if data stops with gaps left, report then
         }
-    }
-
-    private void tellUnknown(Key key, double now) {
-        Double last = unknown.get(key);
-        if (last != null && now - last < cfg.offerInterval) {
-            dropped++;
-            return;
-        }
-        unknown.remove(key);
-        unknown.put(key, now);
-        while (unknown.size() > MAX_UNKNOWN) {
-            Iterator<Key> it = unknown.keySet().iterator();
-            it.next();
-            it.remove();
-        }
-        if (!unknownDue.contains(key)) {
-            unknownDue.add(key);
-        }
-    }
-
-    private double minInterval(Incoming t) {
-        return t.seenEnd ? cfg.statusTailInterval : cfg.statusMinInterval;
     }
 
     /** Stores a chunk; on a full disk or a storage error ends every transfer of that file (what was written stays). */
@@ -473,6 +448,7 @@ final class FileReceiver {
             if (code == TtFileResult.TT_FILE_RESULT_COMPLETE) {
                 t.finalPath = fin;
                 t.finishedAt = now;
+                t.finalsLeft = ReceiverStatuses.COMPLETE_REPEATS;
                 event("complete", t);
             } else {
                 t.finishedAt = now;
@@ -578,60 +554,16 @@ final class FileReceiver {
     // -- statuses ----------------------------------------------------------------------------
     /**
      * Statuses due now (each after the reason for a refusal or failure); forgets silent
-     * transfers. Partial state is saved before the statuses that report it leave.
+     * transfers ({@link ReceiverStatuses}).
      */
     List<MavlinkMessage> control(double now) {
         this.now = now;
-        List<MavlinkMessage> out = new ArrayList<>();
-        for (Incoming t : new ArrayList<>(transfers.values())) {
-            if (now - t.lastActivity >= cfg.idleTimeout) {
-                close(t);
-                continue;
-            }
-            boolean quiet = !Double.isNaN(t.quietDue) && now >= Math.max(t.quietDue, t.lastStatus + minInterval(t));
-            if (!(quiet || (!Double.isNaN(t.statusDue) && now >= t.statusDue))) {
-                continue;
-            }
-            if (t.partial != null) {
-                t.partial.save();
-            }
-            out.addAll(t.answers(Math.max(1, cfg.statusBatches), now));
-            t.lastStatus = now;
-            t.quietDue = Double.NaN;
-            boolean flowing = t.result == TtFileResult.TT_FILE_RESULT_IN_PROGRESS && t.partial != null
-                    && !Double.isNaN(t.lastData) && now - t.lastData < cfg.statusInterval;
-            t.statusDue = flowing ? now + cfg.statusInterval : Double.NaN;
-        }
-        for (Key key : unknownDue) {
-            TtFileStatus s = new TtFileStatus();
-            s.target_system = key.sys;
-            s.target_component = key.comp;
-            s.transfer_id = key.id;
-            s.result = TtFileResult.TT_FILE_RESULT_UNKNOWN_TRANSFER;
-            out.add(s);
-        }
-        unknownDue.clear();
-        return out;
+        return statuses.control(now);
     }
 
     /** The next time something is due (NaN: nothing). */
     double deadline() {
-        if (!unknownDue.isEmpty()) {
-            return now;
-        }
-        double t = Double.NaN;
-        for (Incoming x : transfers.values()) {
-            t = min(t, x.statusDue);
-            if (!Double.isNaN(x.quietDue)) {
-                t = min(t, Math.max(x.quietDue, x.lastStatus + minInterval(x)));
-            }
-            t = min(t, x.lastActivity + cfg.idleTimeout);
-        }
-        return t;
-    }
-
-    private static double min(double a, double b) {
-        return Double.isNaN(a) ? b : Double.isNaN(b) ? a : Math.min(a, b);
+        return statuses.deadline(now);
     }
 
     /** Forgets every transfer; partial files stay for a resume. */

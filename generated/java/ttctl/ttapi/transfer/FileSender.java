@@ -5,7 +5,6 @@ import java.io.File;
 import java.io.IOException;
 import java.io.RandomAccessFile;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
 import java.util.function.LongSupplier;
 
@@ -24,7 +23,8 @@ import ttctl.ttapi.runtime.MavlinkMessage;
  * loss, retransmission rules). Not thread-safe: {@link FileTransfers} calls it under its lock.
  * Times are seconds on one monotonic clock. Given a {@link Deflate.Stream} of the file, it offers
  * that (TT_FILE_FLAGS_DEFLATE) and, if the receiver will not take it, the file as it is under a
- * new id ({@link #fallback} says why), as the Python sender does.
+ * new id ({@link #fallback} says why), as the Python sender does. Data frames leave no faster
+ * than the receiver's latest rate grant allows ({@link Sharing}), when it gives one.
  */
 final class FileSender {
     static final int NARROW = 80;
@@ -61,6 +61,7 @@ final class FileSender {
     double rtt = 0.5;
     boolean rttSampled;
     double byteTime;
+    final Sharing.Pacer pacer = new Sharing.Pacer(); // the receiver's rate grant for our data frames
     // stats
     long bytesSent;
     long bytesRetransmitted;
@@ -79,7 +80,7 @@ final class FileSender {
     RangeSet acked;
     RangeSet retx;
     long nextNew;
-    List<double[]> sent; // {offset, end, last send time}, by offset
+    SentLog log;
     double offerDue;
     double offerInterval;
     double lastOffer;
@@ -87,8 +88,6 @@ final class FileSender {
     String mode;
     LossEstimate loss;
     double probeDue;
-    HashMap<Long, double[]> sends; // offset -> {last send time, sends}
-    HashMap<Long, Integer> since;
     int answers;
 
     FileSender(LongSupplier newId, File file, byte[] sha256, String name, int targetSys, int targetComp,
@@ -137,7 +136,7 @@ final class FileSender {
         acked = new RangeSet();
         retx = new RangeSet();
         nextNew = 0;
-        sent = new ArrayList<>();
+        log = new SentLog();
         offerDue = now;
         offerInterval = cfg.offerInterval;
         lastOffer = Double.NaN;
@@ -145,8 +144,6 @@ final class FileSender {
         mode = "wide".equals(cfg.frameMode) ? "wide" : "narrow";
         loss = new LossEstimate();
         probeDue = Double.NaN;
-        sends = new HashMap<>();
-        since = new HashMap<>();
         answers = 0;
     }
 
@@ -288,7 +285,13 @@ final class FileSender {
     }
 
     // -- data --------------------------------------------------------------------------------
+    /** A data frame may leave now (the grant's pace permitting). */
     boolean hasData(double now) {
+        return wantsData(now) && pacer.ready(now);
+    }
+
+    /** Data waits to be sent (now, or when its grant allows). */
+    boolean wantsData(double now) {
         if (!"sending".equals(state)) {
             return false;
         }
@@ -301,13 +304,7 @@ final class FileSender {
 
     /** When the oldest unacknowledged bytes become worth sending again (a tail-loss probe). */
     double tailDue() {
-        double best = Double.NaN;
-        for (double[] s : sent) {
-            if (!acked.covers((long) s[0], (long) s[1]) && (Double.isNaN(best) || s[2] < best)) {
-                best = s[2];
-            }
-        }
-        return best;
+        return log.tailDue(acked);
     }
 
     private String chooseMode() {
@@ -315,7 +312,7 @@ final class FileSender {
     }
 
     MavlinkMessage nextData(double now, int space) throws IOException {
-        if (!"sending".equals(state)) {
+        if (!"sending".equals(state) || !pacer.ready(now)) {
             return null;
         }
         boolean wide = "wide".equals(mode);
@@ -337,7 +334,7 @@ final class FileSender {
             length = (int) Math.min(cap, size - offset);
             nextNew += length;
         } else {
-            long tail = tailCandidate(now);
+            long tail = log.tailCandidate(now, acked);
             if (tail < 0) {
                 return null;
             }
@@ -352,15 +349,13 @@ final class FileSender {
             raf.seek(offset);
             raf.readFully(data, 0, length);
         }
-        double[] prev = sends.get(offset);
-        sends.put(offset, new double[] {now, prev == null ? 1 : prev[1] + 1});
-        Integer sc = since.get(offset);
-        since.put(offset, sc == null ? 1 : sc + 1);
+        log.sending(now, offset);
         double left = now + (frameLen + NARROW_FRAME) * byteTime;
-        record(left, offset, offset + length);
+        log.record(left, offset, offset + length);
         if (r == null) {
             loss.sent(offset, offset + length, left, wide);
         }
+        pacer.sent(now, frameLen);
         bytesSent += length;
         framesSent++;
         MavlinkMessage msg;
@@ -374,60 +369,11 @@ final class FileSender {
         if ("auto".equals(cfg.frameMode) && narrowFrames >= cfg.probeFrames) {
             mode = chooseMode();
         }
-        if (!hasData(now) && Double.isNaN(probeDue)) {
+        if (!wantsData(now) && Double.isNaN(probeDue)) {
             probeDue = now + Math.max(2 * rtt, 0.5);
         }
         return msg;
     }
-
-    /** The unacknowledged chunk most likely still missing (-1: none). */
-    private long tailCandidate(double now) {
-        long bestOffset = -1;
-        int bestSince = 0;
-        double bestTs = 0;
-        for (double[] s : sent) {
-            if (s[2] > now) {
-                continue;
-            }
-            List<long[]> gaps = acked.gaps((long) s[0], (long) s[1]);
-            if (gaps.isEmpty()) {
-                continue;
-            }
-            Integer sc = since.get((long) s[0]);
-            int k = sc == null ? 1 : sc;
-            long g = gaps.get(0)[0];
-            if (bestOffset < 0 || k < bestSince || (k == bestSince && (s[2] < bestTs
-                    || (s[2] == bestTs && g < bestOffset)))) {
-                bestOffset = g;
-                bestSince = k;
-                bestTs = s[2];
-            }
-        }
-        return bestOffset;
-    }
-
-    private void record(double when, long start, long end) {
-        List<double[]> out = new ArrayList<>();
-        for (double[] s : sent) {
-            if (s[1] <= start || s[0] >= end) {
-                out.add(s);
-            }
-        }
-        for (double[] s : sent) {
-            if (s[0] < start && start < s[1]) {
-                out.add(new double[] {s[0], start, s[2]});
-            }
-            if (s[0] < end && end < s[1]) {
-                out.add(new double[] {end, s[1], s[2]});
-            }
-        }
-        out.add(new double[] {start, end, when});
-        out.sort(RECORDS);
-        sent = out;
-    }
-
-    private static final java.util.Comparator<double[]> RECORDS = (a, b) -> a[0] != b[0] ? Double.compare(a[0], b[0])
-            : a[1] != b[1] ? Double.compare(a[1], b[1]) : Double.compare(a[2], b[2]);
 
     // -- answers -----------------------------------------------------------------------------
     void onReason(double now, TtFileReason msg) {
@@ -520,12 +466,13 @@ final class FileSender {
             busy = null;
             lastProgress = now;
         }
+        pacer.update(msg.rate_grant);
         rttFromEcho(now, msg);
         applyStatus(now, msg);
     }
 
     private void rttFromEcho(double now, TtFileStatus msg) {
-        double[] s = sends.get(msg.last_offset);
+        double[] s = log.sendOf(msg.last_offset);
         if (s == null || s[1] != 1 || msg.hold_ms == 65535) {
             return;
         }
@@ -578,7 +525,7 @@ final class FileSender {
             nextNew = Math.min(end < 0 ? nextNew + 1 : end, size);
         }
         double horizon = now - rtt - 0.05;
-        double[] echo = sends.get(msg.last_offset);
+        double[] echo = log.sendOf(msg.last_offset);
         if (echo != null && msg.hold_ms != 65535) {
             horizon = Math.min(horizon, echo[0] - 2 * NARROW_FRAME * byteTime);
         }
@@ -586,30 +533,14 @@ final class FileSender {
         if (re < nextNew && !truncated) {
             missing.add(new long[] {re, nextNew});
         }
-        for (long[] m : missing) {
-            for (double[] s : sent) {
-                long ss = (long) s[0];
-                long se = (long) s[1];
-                if (se <= m[0] || ss >= m[1] || s[2] > horizon) {
-                    continue;
-                }
-                retx.add(Math.max(m[0], ss), Math.min(m[1], se));
-                since.put(ss, 0);
-            }
-        }
+        log.lost(missing, horizon, retx);
         for (int i = 0; i < acked.size(); i++) {
             long[] a = acked.get(i);
             retx.remove(a[0], a[1]);
         }
-        List<double[]> keep = new ArrayList<>();
-        for (double[] s : sent) {
-            if (!acked.covers((long) s[0], (long) s[1])) {
-                keep.add(s);
-            }
-        }
-        sent = keep;
+        log.prune(acked);
         classify(horizon, re, truncated, missing);
-        probeDue = hasData(now) ? Double.NaN : now + Math.max(2 * rtt, 0.5);
+        probeDue = wantsData(now) ? Double.NaN : now + Math.max(2 * rtt, 0.5);
     }
 
     private void classify(double horizon, long re, boolean truncated, List<long[]> missing) {
@@ -625,6 +556,10 @@ final class FileSender {
             return Double.NaN;
         }
         double t = lastProgress + cfg.giveUpAfter;
+        double granted = pacer.readyAt();
+        if (!Double.isNaN(granted) && granted > now && wantsData(now)) {
+            t = Math.min(t, granted); // data waits for its grant
+        }
         if ("sending".equals(state) && retx.isEmpty() && nextNew >= size) {
             double due = tailDue();
             if (!Double.isNaN(due) && due > now) {

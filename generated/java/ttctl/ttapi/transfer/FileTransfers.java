@@ -126,6 +126,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
                 onReceiverEvent(what, t);
             }
         });
+        setInboundCapacity(this.cfg.inboundCapacity);
     }
 
     /** Starts the timer thread (once). */
@@ -200,6 +201,26 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         lock.lock();
         try {
             receiver.cfg = receiverConfig(rate());
+        } finally {
+            lock.unlock();
+        }
+        return this;
+    }
+
+    /**
+     * What this end can take from its link, in bytes per second (the tablet's: the M100's
+     * downlink carries about 6.7 KB/s): when several peers push files here at once, each is
+     * granted an equal share of it in every status (TT_FILE_STATUS.rate_grant) and paces its
+     * data to that, so that together they do not overflow the link. 0 (the default, or
+     * {@link TransferConfig#inboundCapacity}): no grants, each sender paces to its own rate.
+     */
+    public FileTransfers setInboundCapacity(double bytesPerSecond) {
+        if (bytesPerSecond < 0 || Double.isNaN(bytesPerSecond) || Double.isInfinite(bytesPerSecond)) {
+            throw new IllegalArgumentException("the inbound capacity is 0 (no grants) or a positive number of B/s");
+        }
+        lock.lock();
+        try {
+            receiver.statuses.inbound = bytesPerSecond;
         } finally {
             lock.unlock();
         }
@@ -480,6 +501,9 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
             if (m == null) {
                 changed.signalAll(); // its next deadline may be earlier now
                 return null;
+            }
+            if (s.pacer.grant > 0) {
+                changed.signalAll(); // paced to a grant: the timer wakes the scheduler when the next frame may go
             }
             return encode(m);
         } finally {

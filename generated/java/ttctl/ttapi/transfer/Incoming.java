@@ -51,6 +51,7 @@ final class Incoming {
     double gapDt = 0.05;
     double quietDue = Double.NaN;
     boolean saidBusy;
+    int finalsLeft; // repeats of the COMPLETE status still to send (ReceiverStatuses.COMPLETE_REPEATS)
     // for the app: the Transfer it sees, and what the partial held when this transfer began
     Transfer transfer;
     long resumed = -1;
@@ -84,9 +85,10 @@ final class Incoming {
 
     /**
      * What this transfer's receiver says now: the reason for a refusal or failure (when it gave
-     * one), then its status (in up to {@code batches} frames when the gaps need more than one).
+     * one), then its status (in up to {@code batches} frames when the gaps need more than one),
+     * each carrying {@code grant} (B/s, 0: none).
      */
-    List<MavlinkMessage> answers(int batches, double now) {
+    List<MavlinkMessage> answers(int batches, double now, int grant) {
         List<MavlinkMessage> out = new ArrayList<>();
         if (explained(result) && !reason.isEmpty()) {
             TtFileReason r = new TtFileReason();
@@ -97,15 +99,15 @@ final class Incoming {
             r.text = Arrays.copyOf(Names.fit(reason, 80), 80);
             out.add(r);
         }
-        out.addAll(statuses(batches, now));
+        out.addAll(statuses(batches, now, grant));
         return out;
     }
 
-    private List<MavlinkMessage> statuses(int batches, double now) {
+    private List<MavlinkMessage> statuses(int batches, double now, int grant) {
         List<MavlinkMessage> out = new ArrayList<>();
         if (partial == null) {
             long done = result == TtFileResult.TT_FILE_RESULT_COMPLETE ? size : 0;
-            out.add(status(done, done, done, new ArrayList<long[]>(), now));
+            out.add(status(done, done, done, new ArrayList<long[]>(), now, grant));
             return out;
         }
         RangeSet ranges = partial.ranges;
@@ -118,7 +120,7 @@ final class Incoming {
             List<long[]> batch = gaps.subList(Math.min(from, gaps.size()), Math.min(from + FileReceiver.MAX_RANGES, gaps.size()));
             boolean more = gaps.size() > (k + 1) * FileReceiver.MAX_RANGES;
             long end = more ? batch.get(batch.size() - 1)[1] : last;
-            out.add(status(rc, start, end, batch, now));
+            out.add(status(rc, start, end, batch, now, grant));
             start = end;
             if (!more) {
                 break;
@@ -127,7 +129,7 @@ final class Incoming {
         return out;
     }
 
-    private TtFileStatus status(long rc, long region, long re, List<long[]> gaps, double now) {
+    private TtFileStatus status(long rc, long region, long re, List<long[]> gaps, double now, int grant) {
         TtFileStatus s = new TtFileStatus();
         s.target_system = key.sys;
         s.target_component = key.comp;
@@ -140,6 +142,7 @@ final class Incoming {
         s.hold_ms = Double.isNaN(lastData) ? 65535 : (int) Math.min(65535, 1000 * (now - lastData));
         s.range_count = gaps.size();
         s.meta_check = check;
+        s.rate_grant = grant;
         s.ranges = new long[2 * FileReceiver.MAX_RANGES];
         for (int i = 0; i < gaps.size(); i++) {
             s.ranges[2 * i] = gaps.get(i)[0];

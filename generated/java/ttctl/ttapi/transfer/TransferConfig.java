@@ -35,6 +35,12 @@ public final class TransferConfig {
     public double idleTimeout = 120.0;
     /** Receiver: a transfer heard from within this is running (another sender of its name waits). */
     public double liveWindow = 15.0;
+    /**
+     * Receiver: what this end can take from its link, B/s, shared out among the files peers
+     * push here at once by rate grants (0: no grants; see
+     * {@link FileTransfers#setInboundCapacity}).
+     */
+    public double inboundCapacity = 0.0;
 
     public TransferConfig copy() {
         TransferConfig c = new TransferConfig();
@@ -53,6 +59,7 @@ public final class TransferConfig {
         c.reasonWait = reasonWait;
         c.idleTimeout = idleTimeout;
         c.liveWindow = liveWindow;
+        c.inboundCapacity = inboundCapacity;
         return c;
     }
 }

@@ -72,9 +72,6 @@ final class TransferTimer implements Runnable {
                 }
                 double now = ft.now();
                 double next = tick(now, out, calls, retired);
-                for (FileSender s : ft.senders.values()) {
-                    data |= s.hasData(now);
-                }
                 if (out.isEmpty() && calls.isEmpty() && retired.isEmpty()) {
                     try {
                         if (ft.senders.isEmpty() && ft.fetches.isEmpty() && ft.incoming.isEmpty() && ft.receiver.transfers.isEmpty()) {
@@ -86,6 +83,11 @@ final class TransferTimer implements Runnable {
                     } catch (InterruptedException e) {
                         return;
                     }
+                }
+                // after the wait: data whose grant allows it now, when the timer woke for it
+                double then = ft.now();
+                for (FileSender s : ft.senders.values()) {
+                    data |= s.hasData(then);
                 }
             } catch (RuntimeException e) {
                 System.err.println("ttctl FileTransfers: " + e);
