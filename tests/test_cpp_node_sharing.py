@@ -192,10 +192,13 @@ FOUR = ([3000, 1200, 2000, 1600], [0.0, 1.0, 2.0, 3.0])
 
 
 @pytest.mark.parametrize("seed,loss,inbound,files,pause,seen", [
-    (1, 0.1, UPLINK, THREE, None, {0, 158, 237}),  # alone, two and three share
-    (2, 0.25, UPLINK, THREE, None, {0, 158, 237}),
-    (6, 0.1, UPLINK, FOUR, (0, 6.0, 11.0), {118, 158}),  # four share; one goes quiet (3.4 s at 118 B/s), is back
-    (7, 0.1, 200_000, THREE, None, {0, 63333, 65535}),  # what TT_FILE_STATUS.rate_grant holds at most
+    # alone; two share 0.97 x 500 (242 each); three share less twice the offers and polls coming in
+    (1, 0.1, UPLINK, THREE, None, {0, 242, 202, 152, 134}),
+    (2, 0.25, UPLINK, THREE, None, {0, 242, 215, 161, 143}),
+    # four share (87 to 121 B/s as the other traffic comes and goes); one goes quiet for 5 s (it
+    # leaves the sharing set after 4 frames' time at its grant), three share, it is back
+    (6, 0.1, UPLINK, FOUR, (0, 6.0, 11.0), {87, 121, 161, 242}),
+    (7, 0.1, 200_000, THREE, None, {0, 64639, 65535}),  # what TT_FILE_STATUS.rate_grant holds at most
 ], ids=["three", "three-lossy", "four-one-quiet", "wide-link"])
 def test_the_node_grants_what_pythons_endpoint_grants(cpp_node_bins: dict[str, Path], tmp_path: Path, seed: int,
                                                       loss: float, inbound: int, files: tuple[list[int], list[float]],
@@ -203,9 +206,11 @@ def test_the_node_grants_what_pythons_endpoint_grants(cpp_node_bins: dict[str, P
     """The C++ node and ttctl's Python Endpoint, each with `inbound` B/s to share, as the onboard
     end of overlapping uploads over a lossy channel in virtual time, given the same packets at
     the same moments, send the same packets byte for byte at the same moments: the same grants
-    (none alone, 0.95 x inbound / n for n, at most 65535) in the same statuses, told as soon
-    when the sharing set changes (a transfer starts, ends, goes quiet or comes back); and store
-    the same files."""
+    (none alone; for n, 0.97 x inbound less twice the other traffic measured coming in over 5 s,
+    at least half of inbound, over n; at most 65535) in the same statuses, changed only when the
+    sharing set changes (a transfer starts, ends, goes quiet or comes back) or the share moves by
+    more than a tenth, told one packet's time apart in the order of the transfers' keys, with
+    statuses kept coming while frames arrive at the granted pace; and store the same files."""
     script, want, grants = sharing_script(tmp_path, seed, loss, inbound, *files, pause)
     assert seen <= set(grants), sorted(set(grants))
     run = subprocess.run([str(cpp_node_bins["driver"]), str(tmp_path / "cpp"), "-", "6700", str(inbound)],
@@ -224,10 +229,13 @@ def test_the_node_grants_what_pythons_endpoint_grants(cpp_node_bins: dict[str, P
 def test_the_node_serves_at_its_grants_as_pythons_endpoint_does(cpp_node_bins: dict[str, Path], tmp_path: Path,
                                                                 seed: int, loss: float) -> None:
     """Two worlds in virtual time, alike but for the onboard end: a Python tablet that can take
-    2000 B/s fetches two files at once, so it grants each fetch 950 B/s, from ttctl's Python
-    Endpoint in one world and from the C++ node (paced at 6700 B/s, drawing the same transfer
-    ids) in the other. At every 5 ms step both onboard ends send the same packets byte for byte:
-    their data frames paced to the grants, not to their own 6700 B/s; both fetches complete."""
+    2000 B/s fetches two files at once, so it grants each fetch about 0.97 x 2000 / 2 (less twice
+    the other traffic it measures coming in), from ttctl's Python Endpoint in one world and from
+    the C++ node (paced at 6700 B/s, drawing the same transfer ids) in the other. At every 5 ms
+    step both onboard ends send the same packets byte for byte:
+    their data frames paced to the grants (one-packet frames only, each server starting its
+    frames at the status that told it a new grant), not to their own 6700 B/s; both fetches
+    complete."""
     from ttctl.proto.endpoint import Endpoint
     from ttctl.proto.storage import ReceiveDir
 
@@ -292,8 +300,8 @@ def test_the_node_serves_at_its_grants_as_pythons_endpoint_does(cpp_node_bins: d
     for name in ("python", "cpp"):
         for f in files:
             assert (tmp_path / f"tablet_{name}" / f.name).read_bytes() == f.read_bytes()
-    assert 950 in grants, grants
-    assert now > 16_000 / 2000, now  # at their grants (20 kB on the wire at 2 x 950 B/s: 10.5 s), not at 6700 B/s
+    assert any(900 <= g <= 970 for g in grants), grants  # seen: 943
+    assert now > 16_000 / 2000, now  # at their grants (20 kB on the wire at 2 x 943 B/s: 10.6 s), not at 6700 B/s
 
 
 def test_a_dialect_with_an_older_ttapi_xml_builds_the_node_without_grants(tmp_path: Path) -> None:
