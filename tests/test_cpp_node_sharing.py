@@ -343,3 +343,66 @@ int main()
 """)
     gxx(*WARN, "-I", str(tmp_path / "out" / "cpp"), str(tmp_path / "t.cpp"), "-o", str(tmp_path / "t"))
     assert subprocess.run([str(tmp_path / "t")], timeout=30).returncode == 0
+
+
+LOAD_PROGRAM = r"""#include <cstdio>
+#include "ttapi/sharing.hpp"
+int main()
+{
+    ttapi::link::InboundLoad load;
+    char what;
+    double now;
+    long n;
+    while (std::scanf(" %c %lf %ld", &what, &now, &n) == 3) {
+        if (what == 'P') {
+            load.packet(now, static_cast<std::size_t>(n));
+        } else if (what == 'D') {
+            load.data(now, static_cast<std::size_t>(n));
+        } else {
+            std::printf("%.17g\n", load.other_Bps(now));
+        }
+    }
+    return 0;
+}
+"""
+
+
+def test_the_node_measures_the_other_traffic_as_python_does(cpp_node_bins: dict[str, Path], tmp_path: Path) -> None:
+    """InboundLoad (sharing.hpp) against proto/sharing.py's, the same packets at the same moments:
+    commands, offers and polls count, data frames (100 or 267 bytes each, signed or not) do not,
+    over the last 5 s. Packets at least 5 ms apart (the parity tests' steps): the same figure
+    exactly. A packet every millisecond for 20 s, more moments than the C++ table holds: within
+    one moment's bytes of Python's (a packet's bytes leave the window at most 4.9 ms early), not
+    growing without end."""
+    from ttctl.proto.sharing import InboundLoad
+
+    (tmp_path / "load.cpp").write_text(LOAD_PROGRAM)
+    gxx(*WARN, "-I", str(cpp_node_bins["plain"].parent / "out" / "cpp"), str(tmp_path / "load.cpp"), "-o",
+        str(tmp_path / "load"))
+    rng = random.Random(11)
+    for step, seconds, tolerance in ((0.005, 30.0, 0.0), (0.001, 20.0, 6 * 2 * 40 / 5)):
+        py = InboundLoad()
+        lines, want = [], []
+        now = 0.0
+        while now < seconds:
+            now = round(now + step * rng.choice([1, 1, 2, 7]), 6)
+            for _ in range(rng.choice([1, 1, 2])):  # one or more packets at the same moment
+                kind = rng.random()
+                size = rng.choice([100, 113, 267, 280]) if kind < 0.6 else rng.randint(12, 40)
+                py.packet(now, size)
+                lines.append(f"P {now!r} {size}")
+                if kind < 0.6:  # a data frame (signed: 13 bytes more on the wire)
+                    frame = 100 if size in (100, 113) else 267
+                    py.data(now, frame)
+                    lines.append(f"D {now!r} {frame}")
+            if rng.random() < 0.3:
+                lines.append(f"Q {now!r} 0")
+                want.append(py.other_Bps(now))
+        run = subprocess.run([str(tmp_path / "load")], input="\n".join(lines) + "\n", capture_output=True, text=True,
+                             timeout=60)
+        assert run.returncode == 0, run.stderr
+        got = [float(x) for x in run.stdout.split()]
+        assert len(got) == len(want)
+        worst = max(abs(g - w) for g, w in zip(got, want, strict=True))
+        assert worst <= tolerance, (step, worst, max(want))
+        assert max(got) < 2 * max(want) + 1

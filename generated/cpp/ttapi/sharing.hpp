@@ -79,12 +79,14 @@ struct Sharing {
 };
 
 /// What comes in that is not file data, in B/s over the last LOAD_WINDOW seconds: the bytes of
-/// every packet received less those of the data frames among them (never below 0). Events at
-/// the same moment are one; a data packet's frame cancels it, and one that cancels out leaves.
-/// At most CAPACITY moments are held: beyond that, the oldest one's bytes join the next one's.
+/// every packet received less those of the data frames among them (never below 0). Packets less
+/// than QUANTUM apart count as one moment, the first one's (a data packet's frame cancels it, and
+/// a moment that cancels out leaves), so the window never holds more than CAPACITY of them: at
+/// worst a packet's bytes leave the window QUANTUM early.
 class InboundLoad {
 public:
     static constexpr std::size_t CAPACITY = 1024;
+    static constexpr double QUANTUM = Sharing::LOAD_WINDOW / static_cast<double>(CAPACITY - 2);  // s
 
     void packet(double now, std::size_t nbytes) noexcept { add(now, static_cast<long long>(nbytes)); }
     void data(double now, std::size_t nbytes) noexcept { add(now, -static_cast<long long>(nbytes)); }
@@ -104,22 +106,21 @@ private:
     void add(double now, long long n) noexcept
     {
         sum_ += n;
-        if (count_ != 0 && at(count_ - 1).when == now) {
+        trim(now);
+        if (count_ != 0 && now - at(count_ - 1).when < QUANTUM) {
             Event& last = at(count_ - 1);
             last.bytes += n;
             if (last.bytes == 0) {
                 --count_;  // it cancelled out: nothing to expire
             }
         } else if (n != 0) {
-            if (count_ == CAPACITY) {
-                at(1).bytes += at(0).bytes;  // full: the oldest joins the next
-                head_ = (head_ + 1) % CAPACITY;
-                --count_;
+            if (count_ == CAPACITY) {  // (the window holds CAPACITY - 1 moments at most)
+                at(count_ - 1).bytes += n;
+            } else {
+                at(count_) = Event{now, n};
+                ++count_;
             }
-            at(count_) = Event{now, n};
-            ++count_;
         }
-        trim(now);
     }
 
     void trim(double now) noexcept
