@@ -167,6 +167,9 @@ inline std::size_t Node::receive(double now, const std::uint8_t* packet, std::si
     Source& s = source_for(source);
     s.last = now;
     s.used_tick = ++tick_;
+    if (receiver_) {
+        receiver_->load().packet(now, n);  // the other traffic a rate grant keeps room for
+    }
     return feed(s, packet, n, false);
 }
 

@@ -158,6 +158,9 @@ public:
     void set_inbound(double Bps) noexcept { inbound_Bps_ = Bps > 0.0 ? Bps : 0.0; }
     /// Each sharing transfer's rate grant, B/s (0: none).
     std::uint16_t grant() const noexcept { return grant_; }
+    /// What else comes in (the node counts every packet from its link, on_data the data frames):
+    /// the other traffic a grant keeps room for.
+    InboundLoad& load() noexcept { return load_; }
     ReceiveDir& store() noexcept { return store_; }
     std::size_t known() const noexcept { return count_; }
 
@@ -401,6 +404,7 @@ private:
 
     // -- statuses (receiver_status.hpp) -----------------------------------------------------
     void share(double now) noexcept;
+    double flow_window(const Incoming& t) const noexcept;
     template <class Emit>
     void statuses(const Incoming& t, Emit& emit) const;
     TtFileStatus status(const Incoming& t, std::uint64_t rc, std::uint64_t region, std::uint64_t re,
@@ -426,6 +430,7 @@ private:
     double inbound_Bps_ = 0.0;
     std::uint16_t grant_ = 0;
     std::size_t sharing_count_ = 0;  // transfers flagged `sharing` at the last share(), closed ones included
+    InboundLoad load_;
     EventFn event_ = nullptr;
     void* event_user_ = nullptr;
 };

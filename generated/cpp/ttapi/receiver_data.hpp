@@ -32,6 +32,7 @@ inline void FileReceiver::on_data(double now, std::uint32_t transfer_id, std::ui
     Incoming& t = tr(at);
     t.last_activity = now;
     ++t.frames;
+    load_.data(now, cap == NARROW ? NARROW_FRAME : WIDE_FRAME);
     if (t.group < 0) {  // not accepted (yet), finished or refused
         if (t.decided && now - t.last_status >= cfg_.status_min_interval) {
             status_now(t, now);

@@ -55,7 +55,7 @@ inline void FileReceiver::control(double now, Emit&& emit)
         t.last_status = now;
         t.quiet_set = false;
         const bool flowing = t.result == static_cast<std::uint8_t>(TtFileResult::TT_FILE_RESULT_IN_PROGRESS)
-                             && t.group >= 0 && t.has_last_data && now - t.last_data < cfg_.status_interval;
+                             && t.group >= 0 && t.has_last_data && now - t.last_data < flow_window(t);
         t.status_due_set = flowing;
         t.status_due = flowing ? now + cfg_.status_interval : 0.0;
         if (t.result == static_cast<std::uint8_t>(TtFileResult::TT_FILE_RESULT_COMPLETE) && t.finals_left > 0) {
@@ -77,8 +77,11 @@ inline void FileReceiver::control(double now, Emit&& emit)
     unknown_due_count_ = 0;
 }
 
-// Who shares the link now (receiving, heard from lately); on a change of the grant, it is told to
-// every one of them soon (at the earliest their status minimum interval after their last status).
+// Who shares the link now (receiving, heard from lately), and their grant: the budget left by
+// the other traffic coming in, shared equally. The grant told stays while the same transfers
+// share and the share moves by REGRANT or less; a new grant is told to the sharing transfers,
+// in the order of their keys, one packet's time at it apart (at the earliest their status
+// minimum interval after their last status), each sender starting its frames at its status.
 inline void FileReceiver::share(double now) noexcept
 {
     const double window = Sharing::window(grant_);
@@ -95,22 +98,42 @@ inline void FileReceiver::share(double now) noexcept
     }
     changed = changed || was != sharing_count_;  // one that shared was closed
     sharing_count_ = n;
-    if (!changed) {
-        return;
-    }
-    const std::uint16_t grant = Sharing::share(inbound_Bps_, n);
-    if (grant == grant_) {
+    const std::uint16_t grant = Sharing::share(inbound_Bps_, n, load_.other_Bps(now));
+    if ((!changed && !Sharing::regrant(grant_, grant)) || grant == grant_) {
         return;
     }
     grant_ = grant;
-    for (int i = head_; i >= 0; i = tr(i).next) {
-        Incoming& t = tr(i);
-        if (t.sharing) {
-            const double soon = std::max(now, t.last_status + min_interval(t));
-            t.status_due = t.status_due_set ? std::min(t.status_due, soon) : soon;
-            t.status_due_set = true;
+    const double step = grant != 0 ? Sharing::GRANT_FRAME / (static_cast<double>(grant) * static_cast<double>(n)) : 0.0;
+    std::uint64_t after = 0;  // the key told last
+    for (std::size_t k = 0; k < n; ++k) {
+        Incoming* next = nullptr;  // the sharing transfer with the smallest key after `after`
+        std::uint64_t next_key = 0;
+        for (int i = head_; i >= 0; i = tr(i).next) {
+            Incoming& t = tr(i);
+            const std::uint64_t key = key_of(0, 0, t.sysid, t.compid, t.id);
+            if (t.sharing && (k == 0 || key > after) && (next == nullptr || key < next_key)) {
+                next = &t;
+                next_key = key;
+            }
         }
+        if (next == nullptr) {
+            break;
+        }
+        after = next_key;
+        next->status_due = std::max(now + static_cast<double>(k) * step, next->last_status + min_interval(*next));
+        next->status_due_set = true;
     }
+}
+
+// Data counts as still flowing this long after the last frame: a status interval, or under a
+// grant three frames' time at it (a sender granted a frame every 1.5 s is not quiet; with no
+// status it would poll, and its polls land on the others' frames).
+inline double FileReceiver::flow_window(const Incoming& t) const noexcept
+{
+    if (grant_ != 0 && t.sharing) {
+        return std::max(cfg_.status_interval, Sharing::three_frames(grant_));
+    }
+    return cfg_.status_interval;
 }
 
 inline bool FileReceiver::deadline(double& when) const noexcept

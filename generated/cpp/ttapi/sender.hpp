@@ -372,6 +372,7 @@ private:
     History& history(std::uint64_t offset) noexcept;
 
     // -- the receiver's answers (sender_control.hpp) ----------------------------------------
+    double quiet_after() const noexcept;
     void rtt_from_echo(double now, const TtFileStatus& msg) noexcept;
     void apply_status(double now, const TtFileStatus& msg) noexcept;
     void subtract_acked() noexcept;

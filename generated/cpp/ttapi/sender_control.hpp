@@ -34,8 +34,7 @@ inline void FileSender::control(double now, Emit&& emit)
         time_out(now);
         return;
     }
-    if (state_ == State::sending && !has_probe_
-        && now - last_heard_ >= std::max(3 * cfg_.status_interval, 2 * rtt_ + cfg_.status_interval)) {
+    if (state_ == State::sending && !has_probe_ && now >= last_heard_ + quiet_after()) {
         // statuses stopped while data flows: the receiver may have restarted; ask where it is
         has_probe_ = true;
         probe_due_ = now;
@@ -172,7 +171,7 @@ inline void FileSender::on_status(double now, const TtFileStatus& msg)
         busy_.clear();
         last_progress_ = now;
     }
-    pacer_.update(rate_grant_of(msg));
+    pacer_.update(rate_grant_of(msg), now);  // a new grant: frames start at the status that told it
     rtt_from_echo(now, msg);
     apply_status(now, msg);
 }
@@ -198,9 +197,17 @@ inline bool FileSender::deadline(double now, double& when) const noexcept
     } else if (has_probe_) {
         when = std::min(when, probe_due_);
     } else {
-        when = std::min(when, last_heard_ + std::max(3 * cfg_.status_interval, 2 * rtt_ + cfg_.status_interval));
+        when = std::min(when, last_heard_ + quiet_after());
     }
     return true;
+}
+
+// How long without a status, while data flows, before asking where the receiver is: three status
+// intervals, an RTT more, and under a grant three frames' time at it more (the receiver reports
+// on the frames it gets).
+inline double FileSender::quiet_after() const noexcept
+{
+    return std::max(3 * cfg_.status_interval, 2 * rtt_ + cfg_.status_interval) + Sharing::three_frames(pacer_.grant());
 }
 
 // A round-trip sample from the status's echo of the latest frame it saw (Karn: only frames

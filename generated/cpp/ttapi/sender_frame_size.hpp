@@ -71,6 +71,11 @@ inline bool FileSender::choose_wide() const noexcept
     if (cfg_.frame_mode != TransferConfig::FrameMode::automatic) {
         return cfg_.frame_mode == TransferConfig::FrameMode::wide;
     }
+    if (pacer_.grant() != 0) {
+        // sharing the link: a wide frame's three packets back to back fill the radio's buffer
+        // for the others, and the buffer's overflow takes the whole frame
+        return false;
+    }
     double p = 0.0;
     if (mode_wide_ && has_loss_[1]) {
         p = loss_[1];

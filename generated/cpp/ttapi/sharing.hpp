@@ -8,9 +8,16 @@
 // overflow its buffer, and most of what they send is lost and sent again. Only the receiver sees
 // them all, so it divides its inbound capacity (NodeConfig::inbound_Bps) equally among the
 // transfers it is receiving and has heard from lately (share()), and says each one's share in
-// every status; a change in who shares is told to every one of them at once. GRANT_FILL of the
-// capacity goes to file data, the rest keeps room for commands, offers and polls. A lone transfer
-// gets no grant (0): it paces to its sender's own rate.
+// every status. GRANT_FILL of the capacity goes to file data, less twice the other traffic it
+// measures coming in (InboundLoad: commands, offers, polls), never less than MIN_FILL of it. A
+// lone transfer gets no grant (0): it paces to its sender's own rate.
+//
+// A grant is told again only when who shares changes or the share moves by more than REGRANT;
+// a new grant is told to the sharing transfers one packet's time at it apart, and each sender
+// starts its frames at the status that told it (GrantPacer::update), so that the senders'
+// packets reach the radio's buffer in slots of their own. Under a grant a sender sends one-packet
+// frames only and waits three frames' time at its grant longer before polling a quiet receiver;
+// the receiver keeps reporting while frames come at the granted pace.
 //
 // A dialect with an older copy of ttapi.xml has no rate_grant: then statuses carry none and
 // senders read none (rate_grant_of(), set_rate_grant()).
@@ -26,37 +33,126 @@
 namespace ttapi::link {
 
 struct Sharing {
-    static constexpr double GRANT_FILL = 0.95;  // of the inbound capacity granted to file data when transfers share it
+    static constexpr double GRANT_FILL = 0.97;  // of the inbound capacity granted to file data when transfers share it
     static constexpr double ACTIVE_WINDOW = 3.0;  // s: a receiving transfer heard from within this shares the link
     static constexpr std::uint16_t MIN_GRANT = 1;  // B/s: a grant is never 0 (0 on the wire means "no grant")
     static constexpr std::uint16_t MAX_GRANT = 65535;  // what TT_FILE_STATUS.rate_grant holds
-    static constexpr double GRANT_FRAME = 100.0;  // bytes: the window below holds 4 frames at the grant
+    static constexpr double GRANT_FRAME = 100.0;  // bytes: one packet (a TT_FILE_DATA frame)
+    static constexpr double OTHER_ROOM = 2.0;  // B/s kept free per B/s of other traffic coming in
+    static constexpr double MIN_FILL = 0.5;  // of the capacity granted, whatever else comes in
+    static constexpr double LOAD_WINDOW = 5.0;  // s over which the other traffic is measured
+    static constexpr double REGRANT = 0.1;  // a grant changes (and is told) when the share moves by more than this
 
-    /// Each transfer's grant when `sharing` transfers share `capacity_Bps` (0: no grant).
-    static std::uint16_t share(double capacity_Bps, std::size_t sharing) noexcept
+    /// Each transfer's grant when `sharing` transfers share `capacity_Bps`, of which `other_Bps`
+    /// is taken by frames that are not file data (0: no grant).
+    static std::uint16_t share(double capacity_Bps, std::size_t sharing, double other_Bps = 0.0) noexcept
     {
         if (!(capacity_Bps > 0.0) || sharing < 2) {
             return 0;
         }
-        const double each = capacity_Bps * GRANT_FILL / static_cast<double>(sharing);
+        const double budget = std::max(MIN_FILL * capacity_Bps, GRANT_FILL * capacity_Bps - OTHER_ROOM * other_Bps);
+        const double each = budget / static_cast<double>(sharing);
         if (each >= static_cast<double>(MAX_GRANT)) {
             return MAX_GRANT;
         }
         return std::max(MIN_GRANT, static_cast<std::uint16_t>(each));  // floor
     }
 
-    /// How lately a receiving transfer must have been heard from to share the link under `grant`.
+    /// Whether a share computed anew replaces the grant told (`old`) for the same transfers: it
+    /// starts or ends a grant, or moves by more than REGRANT of it.
+    static bool regrant(std::uint16_t old, std::uint16_t now_share) noexcept
+    {
+        const int moved = static_cast<int>(now_share) - static_cast<int>(old);
+        return (now_share == 0) != (old == 0) || static_cast<double>(moved < 0 ? -moved : moved) > REGRANT * old;
+    }
+
+    /// How lately a receiving transfer must have been heard from to share the link under `grant`
+    /// (four frames' time at it, at least ACTIVE_WINDOW).
     static double window(std::uint16_t grant) noexcept
     {
         return grant != 0 ? std::max(ACTIVE_WINDOW, 4.0 * GRANT_FRAME / grant) : ACTIVE_WINDOW;
     }
+
+    /// Three frames' time at `grant` (0 without one): how much longer data counts as flowing at
+    /// the receiver, and how much longer a sender waits for a status before polling.
+    static double three_frames(std::uint16_t grant) noexcept { return grant != 0 ? 3 * GRANT_FRAME / grant : 0.0; }
+};
+
+/// What comes in that is not file data, in B/s over the last LOAD_WINDOW seconds: the bytes of
+/// every packet received less those of the data frames among them (never below 0). Packets less
+/// than QUANTUM apart count as one moment, the first one's (a data packet's frame cancels it, and
+/// a moment that cancels out leaves), so the window never holds more than CAPACITY of them: at
+/// worst a packet's bytes leave the window QUANTUM early.
+class InboundLoad {
+public:
+    static constexpr std::size_t CAPACITY = 1024;
+    static constexpr double QUANTUM = Sharing::LOAD_WINDOW / static_cast<double>(CAPACITY - 2);  // s
+
+    void packet(double now, std::size_t nbytes) noexcept { add(now, static_cast<long long>(nbytes)); }
+    void data(double now, std::size_t nbytes) noexcept { add(now, -static_cast<long long>(nbytes)); }
+
+    double other_Bps(double now) noexcept
+    {
+        trim(now);
+        return static_cast<double>(sum_ > 0 ? sum_ : 0) / Sharing::LOAD_WINDOW;
+    }
+
+private:
+    struct Event {
+        double when;
+        long long bytes;
+    };
+
+    void add(double now, long long n) noexcept
+    {
+        sum_ += n;
+        trim(now);
+        if (count_ != 0 && now - at(count_ - 1).when < QUANTUM) {
+            Event& last = at(count_ - 1);
+            last.bytes += n;
+            if (last.bytes == 0) {
+                --count_;  // it cancelled out: nothing to expire
+            }
+        } else if (n != 0) {
+            if (count_ == CAPACITY) {  // (the window holds CAPACITY - 1 moments at most)
+                at(count_ - 1).bytes += n;
+            } else {
+                at(count_) = Event{now, n};
+                ++count_;
+            }
+        }
+    }
+
+    void trim(double now) noexcept
+    {
+        while (count_ != 0 && at(0).when < now - Sharing::LOAD_WINDOW) {
+            sum_ -= at(0).bytes;
+            head_ = (head_ + 1) % CAPACITY;
+            --count_;
+        }
+    }
+
+    Event& at(std::size_t i) noexcept { return events_[(head_ + i) % CAPACITY]; }
+
+    Event events_[CAPACITY] = {};
+    std::size_t head_ = 0;
+    std::size_t count_ = 0;
+    long long sum_ = 0;
 };
 
 /// A sender's pace under its grant: a frame of n bytes may leave n / grant seconds after the one
 /// before (no credit is saved up while it waits for other reasons).
 class GrantPacer {
 public:
-    void update(std::uint16_t grant) noexcept { grant_ = grant; }
+    /// A status's grant: a new one (not the same value) starts the next frame now, in the slot the
+    /// receiver's status set.
+    void update(std::uint16_t grant, double now) noexcept
+    {
+        if (grant != grant_) {
+            next_free_ = now;
+        }
+        grant_ = grant;
+    }
     std::uint16_t grant() const noexcept { return grant_; }
 
     bool ready(double now) const noexcept { return grant_ == 0 || now >= next_free_ - 1e-9; }
