@@ -134,3 +134,16 @@ def test_five_senders_on_the_model(rows: list[bench.SharingRow], loss: float | N
     assert row.slowest_over_fastest <= 1.5, row
     assert row.retransmitted_share < 0.3 and row.retransmitted_share < row.ungranted_retransmitted_share / 4, row
     assert row.ratio_to_single >= 0.9, row
+
+
+def test_a_strangers_garbage_is_not_counted_as_traffic(tmp_path: Path) -> None:
+    """The meter counts packets that carry frames (a command, say), not junk: a flood on the
+    port would otherwise push every grant down to half the link."""
+    ep = Endpoint(B, 1, 240, rate_Bps=6700, receive_dir=ReceiveDir(tmp_path), inbound_Bps=500)
+    for k in range(100):
+        ep.receive(k / 100, bytes([k % 250 + 1]) * 60, source="stranger")
+    assert ep.receiver is not None and ep.receiver.load.other_Bps(1.0) == 0.0
+    cmd = B.encoder(255, 190).encode(B.TtActionCommand(target_system=1, target_component=240, action=1))
+    ep.receive(1.0, cmd, source="tablet")
+    assert ep.receiver.load.other_Bps(1.0) == pytest.approx(len(cmd) / 5.0)
+    ep.close()

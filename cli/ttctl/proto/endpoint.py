@@ -147,9 +147,10 @@ class Endpoint:
         else:
             self._rxs.move_to_end(source)
         self._last_rx[source] = now
-        if self.receiver is not None:
+        msgs = rx.feed(packet)
+        if self.receiver is not None and (msgs or rx.pending):  # (garbage from a stranger uses no link here)
             self.receiver.load.packet(now, len(packet))
-        return self._handle_all(now, rx.feed(packet))
+        return self._handle_all(now, msgs)
 
     def receive_stream(self, now: float, data: bytes, source: Hashable = None) -> set[tuple[int, int]]:
         """Bytes from a stream link (TCP), where chunk boundaries mean nothing."""
@@ -160,7 +161,10 @@ class Endpoint:
             if len(self._streams) > MAX_SOURCES:
                 self._streams.popitem(last=False)
         self._last_rx[source] = now
-        return self._handle_all(now, parser.feed(data))
+        msgs = parser.feed(data)
+        if self.receiver is not None and (msgs or parser.pending):
+            self.receiver.load.packet(now, len(data))
+        return self._handle_all(now, msgs)
 
     def mid_frame(self, source: Hashable) -> bool:
         """Whether a frame from `source` is half received (its next packet is a continuation)."""
