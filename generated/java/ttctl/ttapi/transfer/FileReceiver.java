@@ -367,6 +367,7 @@ final class FileReceiver {
         }
         t.lastActivity = now;
         t.frames++;
+        statuses.load.data(now, cap == FileSender.NARROW ? FileSender.NARROW_FRAME : FileSender.WIDE_FRAME);
         if (t.partial == null || t.group == null) { // not accepted (yet), finished or refused
             if (t.decided && now - t.lastStatus >= cfg.statusMinInterval) {
                 t.statusDue = now;

@@ -225,8 +225,7 @@ final class FileSender {
             timeOut(now, linkProblem);
             return none;
         }
-        if ("sending".equals(state) && Double.isNaN(probeDue)
-                && now - lastHeard >= Math.max(3 * cfg.statusInterval, 2 * rtt + cfg.statusInterval)) {
+        if ("sending".equals(state) && Double.isNaN(probeDue) && now - lastHeard >= quietAfter()) {
             probeDue = now; // statuses stopped while data flows: ask where the receiver is
         }
         double due = "offering".equals(state) ? offerDue : probeDue;
@@ -251,6 +250,16 @@ final class FileSender {
             return copies;
         }
         return out;
+    }
+
+    /**
+     * How long without a status, while data flows, before asking where the receiver is: three
+     * status intervals, an RTT more, and under a grant three frames' time at it more (the
+     * receiver reports on the frames it gets).
+     */
+    private double quietAfter() {
+        double wait = Math.max(3 * cfg.statusInterval, 2 * rtt + cfg.statusInterval);
+        return wait + (pacer.grant > 0 ? 3.0 * NARROW_FRAME / pacer.grant : 0.0);
     }
 
     private void timeOut(double now, String linkProblem) {
@@ -308,7 +317,12 @@ final class FileSender {
     }
 
     private String chooseMode() {
-        return "auto".equals(cfg.frameMode) ? loss.choose(mode) : cfg.frameMode;
+        if (!"auto".equals(cfg.frameMode)) {
+            return cfg.frameMode;
+        }
+        // sharing the link: a wide frame's three packets back to back fill the radio's buffer
+        // for the others, and the buffer's overflow takes the whole frame
+        return pacer.grant > 0 ? "narrow" : loss.choose(mode);
     }
 
     MavlinkMessage nextData(double now, int space) throws IOException {
@@ -466,7 +480,7 @@ final class FileSender {
             busy = null;
             lastProgress = now;
         }
-        pacer.update(msg.rate_grant);
+        pacer.update(msg.rate_grant, now);
         rttFromEcho(now, msg);
         applyStatus(now, msg);
     }
@@ -574,7 +588,7 @@ final class FileSender {
         } else if (!Double.isNaN(probeDue)) {
             t = Math.min(t, probeDue);
         } else {
-            t = Math.min(t, lastHeard + Math.max(3 * cfg.statusInterval, 2 * rtt + cfg.statusInterval));
+            t = Math.min(t, lastHeard + quietAfter());
         }
         return t;
     }

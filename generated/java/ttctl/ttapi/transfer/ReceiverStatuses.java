@@ -3,6 +3,7 @@ package ttctl.ttapi.transfer;
 
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.Comparator;
 import java.util.HashSet;
 import java.util.Iterator;
 import java.util.LinkedHashMap;
@@ -19,8 +20,10 @@ import ttctl.ttapi.runtime.MavlinkMessage;
  * one when data stops with gaps left, COMPLETE three times), answers to data of transfers it
  * does not know (at most once per offer interval each, {@value #MAX_UNKNOWN} remembered), and
  * when it next needs the clock. Silent transfers are forgotten here. With an inbound capacity, transfers that share
- * the link are each told their rate grant in every status ({@link Sharing}), and all of them at
- * once when who shares changes the grant. Not thread-safe; times in seconds.
+ * the link are each told their rate grant in every status ({@link Sharing}: the capacity less
+ * twice the other traffic measured coming in, {@link #load}), all of them one packet's time
+ * apart when the grant changes (who shares, or a share that moves by more than a tenth), and
+ * regular statuses while frames come at the granted pace. Not thread-safe; times in seconds.
  */
 final class ReceiverStatuses {
     static final int MAX_UNKNOWN = 256;
@@ -39,6 +42,7 @@ final class ReceiverStatuses {
     double inbound; // B/s this end can take from its link, shared out by grants (0: no grants)
     int grant; // each sharing transfer's rate grant, B/s (0: none)
     Set<FileReceiver.Key> sharing = Collections.emptySet(); // the transfers the link is shared among
+    final Sharing.Load load = new Sharing.Load(); // what else comes in (the router counts packets, onData the data)
 
     ReceiverStatuses(FileReceiver rx) {
         this.rx = rx;
@@ -74,9 +78,22 @@ final class ReceiverStatuses {
     }
 
     /**
-     * Who shares the link now (receiving, heard from lately); on a change of the grant, the
-     * new grant is told to every one of them at once (at the earliest a status minimum
-     * interval after its last status).
+     * Data counts as still flowing this long after the last frame: a status interval, or under
+     * a grant three frames' time at it (a sender granted a frame every 1.5 s is not quiet; with
+     * no status it would poll, and its polls land on the others' frames).
+     */
+    private double flowWindow(Incoming t) {
+        if (grant > 0 && sharing.contains(t.key)) {
+            return Math.max(rx.cfg.statusInterval, 3.0 * FileSender.NARROW_FRAME / grant);
+        }
+        return rx.cfg.statusInterval;
+    }
+
+    /**
+     * Who shares the link now (receiving, heard from lately) and at what grant; a new grant is
+     * told to each of them, sorted by key, one packet's time apart (at the earliest a status
+     * minimum interval after its last status), so that their senders' frames start in slots of
+     * their own. The same set sharing with a share within a tenth of the grant keeps it.
      */
     private void share(double now) {
         double window = Sharing.window(grant);
@@ -86,21 +103,27 @@ final class ReceiverStatuses {
                 current.add(t.key);
             }
         }
-        if (current.equals(sharing)) {
+        int g = Sharing.share(inbound, current.size(), load.other(now));
+        if (current.equals(sharing) && Sharing.keeps(grant, g)) {
             return;
         }
         sharing = current;
-        int g = Sharing.share(inbound, current.size());
         if (g == grant) {
             return;
         }
         grant = g;
-        for (FileReceiver.Key k : current) {
-            Incoming t = rx.transfers.get(k);
-            double soon = Math.max(now, t.lastStatus + minInterval(t));
-            t.statusDue = Double.isNaN(t.statusDue) ? soon : Math.min(t.statusDue, soon);
+        double step = Sharing.step(g, current.size());
+        List<FileReceiver.Key> order = new ArrayList<>(current);
+        order.sort(KEY_ORDER);
+        for (int i = 0; i < order.size(); i++) {
+            Incoming t = rx.transfers.get(order.get(i));
+            t.statusDue = Math.max(now + i * step, t.lastStatus + minInterval(t));
         }
     }
+
+    /** Keys as the Python receiver sorts them: (sysid, compid, transfer id). */
+    static final Comparator<FileReceiver.Key> KEY_ORDER = Comparator.<FileReceiver.Key>comparingInt(k -> k.sys)
+            .thenComparingInt(k -> k.comp).thenComparingLong(k -> k.id);
 
     /** The grant {@code t}'s status carries: the shared one while it shares the link and is in progress. */
     private int grantOf(Incoming t) {
@@ -133,7 +156,7 @@ final class ReceiverStatuses {
             t.lastStatus = now;
             t.quietDue = Double.NaN;
             boolean flowing = t.result == TtFileResult.TT_FILE_RESULT_IN_PROGRESS && t.partial != null
-                    && !Double.isNaN(t.lastData) && now - t.lastData < cfg.statusInterval;
+                    && !Double.isNaN(t.lastData) && now - t.lastData < flowWindow(t);
             t.statusDue = flowing ? now + cfg.statusInterval : Double.NaN;
             if (t.result == TtFileResult.TT_FILE_RESULT_COMPLETE && t.finalsLeft > 0) { // said again, shortly
                 t.finalsLeft--;

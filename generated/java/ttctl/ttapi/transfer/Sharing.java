@@ -10,13 +10,29 @@ package ttctl.ttapi.transfer;
  * they share, overflow its buffer, and most of what they send is lost and sent again. Only the
  * receiver sees them all, so it divides its inbound capacity equally among the transfers it is
  * receiving and has heard from lately ({@link #share}), and says each one's share in every
- * status; a change in who shares is told to every other at once. {@value #FILL} of the capacity
- * goes to file data, the rest keeps room for commands, offers and polls. A lone transfer gets no
- * grant (0): it paces to its own rate.
+ * status; a change in who shares is told to every other at once. {@value #FILL} of the capacity,
+ * less twice the other traffic it measures coming in ({@link Load}: commands, offers, polls), but
+ * at least {@value #MIN_FILL} of it, goes to file data. A lone transfer gets no grant (0): it
+ * paces to its own rate.
+ *
+ * <p>A new grant is told one packet's time apart to the transfers sharing, and each sender starts
+ * its frames at the status that told it ({@link Pacer#update}), so that their packets reach the
+ * radio's buffer in slots of their own. A share that moves by at most {@value #REGRANT} of the
+ * grant is not told. Under a grant a sender sends one-packet frames only, and waits three frames'
+ * time at its grant longer before polling a quiet receiver; the receiver keeps reporting while
+ * frames come at the granted pace.
  */
 final class Sharing {
     /** Of the inbound capacity, granted to file data when transfers share it. */
-    static final double FILL = 0.95;
+    static final double FILL = 0.97;
+    /** B/s kept free of grants per B/s of other traffic measured coming in. */
+    static final double OTHER_ROOM = 2.0;
+    /** Of the inbound capacity, granted at least, whatever else comes in. */
+    static final double MIN_FILL = 0.5;
+    /** Seconds over which the other traffic is measured. */
+    static final double LOAD_WINDOW = 5.0;
+    /** A grant changes (and is told) when the share moves by more than this fraction of it. */
+    static final double REGRANT = 0.1;
     /** Seconds: a receiving transfer heard from within this (at least) shares the link. */
     static final double ACTIVE_WINDOW = 3.0;
     /** B/s: a grant is never 0 (0 on the wire means "no grant"). */
@@ -27,12 +43,63 @@ final class Sharing {
     private Sharing() {
     }
 
-    /** Each transfer's grant when {@code sharing} transfers share {@code capacity} B/s (0: no grant). */
-    static int share(double capacity, int sharing) {
+    /**
+     * Each transfer's grant when {@code sharing} transfers share {@code capacity} B/s, of which
+     * {@code other} B/s is taken by frames that are not file data (0: no grant).
+     */
+    static int share(double capacity, int sharing, double other) {
         if (!(capacity > 0) || sharing < 2) {
             return 0;
         }
-        return (int) Math.max(MIN_GRANT, Math.min(MAX_GRANT, Math.floor(capacity * FILL / sharing)));
+        double budget = Math.max(MIN_FILL * capacity, FILL * capacity - OTHER_ROOM * other);
+        return (int) Math.max(MIN_GRANT, Math.min(MAX_GRANT, Math.floor(budget / sharing)));
+    }
+
+    /** Whether a new share leaves the grant as it is (the same set sharing, a move within REGRANT). */
+    static boolean keeps(int old, int fresh) {
+        return (fresh == 0) == (old == 0) && Math.abs(fresh - old) <= REGRANT * old;
+    }
+
+    /** The time between two sharing transfers' statuses telling a new grant: one packet's at the grant. */
+    static double step(int grant, int sharing) {
+        return grant > 0 && sharing > 0 ? (double) FileSender.NARROW_FRAME / ((double) grant * sharing) : 0.0;
+    }
+
+    /**
+     * What comes in that is not file data, in B/s over the last {@value #LOAD_WINDOW} seconds:
+     * bytes of every packet received, less those of the data frames among them.
+     */
+    static final class Load {
+        private final java.util.ArrayDeque<double[]> events = new java.util.ArrayDeque<>(); // {time, bytes}
+        private long sum;
+
+        /** A packet of {@code nbytes} arrived from the link. */
+        void packet(double now, int nbytes) {
+            add(now, nbytes);
+        }
+
+        /** A data frame of {@code nbytes} on the wire arrived (counted as a packet too). */
+        void data(double now, int nbytes) {
+            add(now, -nbytes);
+        }
+
+        private void add(double now, int n) {
+            events.addLast(new double[] {now, n});
+            sum += n;
+            trim(now);
+        }
+
+        private void trim(double now) {
+            while (!events.isEmpty() && events.peekFirst()[0] < now - LOAD_WINDOW) {
+                sum -= (long) events.pollFirst()[1];
+            }
+        }
+
+        /** B/s of other traffic (never below 0). */
+        double other(double now) {
+            trim(now);
+            return Math.max(0, sum) / LOAD_WINDOW;
+        }
     }
 
     /** How long a receiving transfer stays in the sharing set after its last frame, under {@code grant}. */
@@ -48,8 +115,13 @@ final class Sharing {
         int grant; // B/s, 0: none
         double nextFree;
 
-        void update(int g) {
-            grant = Math.max(0, g);
+        /** A status's grant; a new one re-anchors the pace: the next frame leaves now, in the slot its status set. */
+        void update(int g, double now) {
+            int fresh = Math.max(0, g);
+            if (fresh != grant) {
+                nextFree = now;
+            }
+            grant = fresh;
         }
 
         boolean ready(double now) {

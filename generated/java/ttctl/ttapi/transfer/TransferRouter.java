@@ -34,10 +34,14 @@ final class TransferRouter {
         List<LinkScheduler.BulkSource> added = new ArrayList<>();
         ft.lock.lock();
         try {
-            if (ft.closed || (msg.sysId() == ft.sysId && msg.compId() == ft.compId)) {
-                return; // closed, or our own frames, echoed
+            if (ft.closed) {
+                return;
             }
             double now = ft.now();
+            ft.receiver.statuses.load.packet(now, wireLength(msg)); // every frame in: the other-traffic meter
+            if (msg.sysId() == ft.sysId && msg.compId() == ft.compId) {
+                return; // our own frames, echoed
+            }
             if (msg instanceof TtFileData || msg instanceof TtFileDataWide) {
                 boolean wide = msg instanceof TtFileDataWide;
                 long id = wide ? ((TtFileDataWide) msg).transfer_id : ((TtFileData) msg).transfer_id;
@@ -86,6 +90,21 @@ final class TransferRouter {
         if (wake) {
             ft.scheduler.wake();
         }
+    }
+
+    /**
+     * The bytes {@code msg} took on the link: a MAVLink 2 frame's header and checksum (12), its
+     * payload with trailing zeros truncated, and a signature (13) when signed; the bytes of the
+     * packets it came in, as the Python receiver counts them.
+     */
+    static int wireLength(MavlinkMessage msg) {
+        int payload;
+        try {
+            payload = msg.packPayload(new byte[Math.max(1, msg.payloadLength())]);
+        } catch (RuntimeException e) {
+            payload = msg.payloadLength();
+        }
+        return 12 + payload + (msg.signed() ? 13 : 0);
     }
 
     private boolean forUs(int ts, int tc) {
