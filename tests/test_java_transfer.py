@@ -184,7 +184,7 @@ def test_upload_efficiency_and_commands_vs_python(classes: Path, tmp_path: Path,
               "during_errors": r["during_errors"]}
     print("MEASURED", json.dumps(report))
     assert java_eff >= 0.9 * py_eff, report
-    assert len(idle) >= 10 and len(during) >= 12, report
+    assert len(idle) >= 10 and len(during) >= 8, report  # about 20; fewer when several need retries
     # with 10 % loss each way a fifth of the commands (idle or not) need a retry: the typical
     # command during the transfer must be as fast as the idle p95 + 200 ms, and most within it,
     # at burst loss as at random (the relay's bursts last burst_mean slots of time, so they no
@@ -192,7 +192,10 @@ def test_upload_efficiency_and_commands_vs_python(classes: Path, tmp_path: Path,
     limit = p95(idle) + 200
     assert statistics.median(during) <= limit, report
     assert sum(ms <= limit for ms in during) >= 0.75 * len(during), report
-    assert not r["during_errors"], report
+    # a command's four tries (0.5 + 1 + 2 + 4 s) all lost, each way at 10 % (0.19 a try): 0.13 %
+    # of commands, a few per cent of runs of 20; anything else is a defect
+    assert len(r["during_errors"]) <= 1 and all(
+        "no reply after 4 tries" in e and "no message received" not in e for e in r["during_errors"]), report
 
 
 def test_dji_link_upload_and_fetch_with_garbage(classes: Path, tmp_path: Path, start: Start) -> None:
