@@ -243,7 +243,7 @@ def test_cpp_namespace_builds_and_runs(tmp_path: Path) -> None:
         "myco/drone/enums.hpp", "myco/drone/messages.hpp", "myco/drone/ttapi.hpp", "myco/drone/signing.hpp",
         "myco/drone/packets.hpp", "myco/drone/udp_forward.hpp", "myco/drone/sha256.hpp", "myco/drone/scheduler.hpp",
         "myco/drone/commands.hpp", "myco/drone/udp_link.hpp", "conformance.cpp", "conformance_json.hpp",
-        "onboard/ttapi_plugin.hpp",
+        "conformance_json_reader.hpp", "onboard/ttapi_plugin.hpp",
         *(f"myco/drone/{h}.hpp" for h in (*RUNTIME_HEADERS, *TRANSFER_HEADERS, *NODE_HEADERS))}
     for names, ns in (((*RUNTIME_HEADERS, "enums", "messages"), "myco::drone"),
                       (("scheduler", "commands", *TRANSFER_HEADERS, *NODE_HEADERS, "udp_link"), "myco::drone::link")):
