@@ -20,7 +20,7 @@ from typing import Any
 import pytest
 
 import ttapi
-from cpp_node_lib import needs_gxx, write
+from cpp_node_lib import ServingOnboards, needs_gxx, write
 
 pytestmark = needs_gxx
 
@@ -230,17 +230,7 @@ def test_the_node_serves_what_pythons_endpoint_serves(cpp_node_bins: dict[str, P
 
     b = shipped_bindings()
     serve = write(tmp_path / "serve" / "s.bin", 30_000, seed).parent
-    onboard_seed = seed + 100
-    draws = random.Random(onboard_seed)
-    draws.randint(1, 65535)  # the endpoint's first command id: its first draw
-    ids = [draws.getrandbits(32) for _ in range(8)]
-    drv = subprocess.Popen([str(cpp_node_bins["driver"]), str(tmp_path / "cpp_in"), str(serve), "6700"],
-                           stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
-    assert drv.stdin is not None and drv.stdout is not None
-    for i in ids:
-        drv.stdin.write(f"I {i}\n")
-    onboard = Endpoint(b, 1, 240, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp_path / "py_in"), serve_dir=str(serve),
-                       rng=random.Random(onboard_seed))
+    onboard = ServingOnboards(cpp_node_bins["driver"], tmp_path, serve, b, seed + 100)
     worlds = []
     for name in ("python", "cpp"):
         done: list[bool] = []
@@ -257,20 +247,8 @@ def test_the_node_serves_what_pythons_endpoint_serves(cpp_node_bins: dict[str, P
             for name, tab, lose, _ in worlds:
                 while (pkt := tab.poll(now)) is not None:
                     if lose.random() >= loss:
-                        if name == "python":
-                            onboard.receive(now, pkt)
-                        else:
-                            drv.stdin.write(f"R {now!r} {pkt.hex()}\n")
-                if name == "python":
-                    out = []
-                    while (pkt := onboard.poll(now)) is not None:
-                        out.append(pkt)
-                else:
-                    drv.stdin.write(f"P {now!r}\n")
-                    drv.stdin.flush()
-                    line = drv.stdout.readline().strip()
-                    out = [] if line == "-" else [bytes.fromhex(h) for h in line.split()]
-                outs[name] = out
+                        onboard.receive(name, now, pkt)
+                out = outs[name] = onboard.poll(name, now)
                 for pkt in out:
                     if lose.random() >= loss:
                         tab.receive(now, pkt)
@@ -281,8 +259,7 @@ def test_the_node_serves_what_pythons_endpoint_serves(cpp_node_bins: dict[str, P
             steps += 1
             now = round(now + 0.005, 6)
     finally:
-        drv.stdin.close()
-        drv.wait(20)
+        onboard.close()
     assert all(w[3] for w in worlds), "a fetch did not complete"
     for name in ("python", "cpp"):
         assert (tmp_path / f"tablet_{name}" / "s.bin").read_bytes() == (serve / "s.bin").read_bytes()

@@ -32,7 +32,7 @@ import pytest
 
 import ttapi
 from conftest import TTAPI, run_ttctl, shipped
-from cpp_node_lib import WARN, gxx, needs_gxx, sha, write
+from cpp_node_lib import WARN, ServingOnboards, gxx, needs_gxx, sha, write
 from e2e_lib import LOCAL, Proc, Start, free_port, receiver, relay
 
 pytestmark = needs_gxx
@@ -254,17 +254,7 @@ def test_the_node_serves_at_its_grants_as_pythons_endpoint_does(cpp_node_bins: d
     b = shipped()
     serve = tmp_path / "serve"
     files = [write(serve / f"s{i}.bin", size, seed + i) for i in range(2)]
-    onboard_seed = seed + 100
-    draws = random.Random(onboard_seed)
-    draws.randint(1, 65535)  # the endpoint's first command id: its first draw
-    ids = [draws.getrandbits(32) for _ in range(8)]
-    drv = subprocess.Popen([str(cpp_node_bins["driver"]), str(tmp_path / "cpp_in"), str(serve), "6700"],
-                           stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
-    assert drv.stdin is not None and drv.stdout is not None
-    for i in ids:
-        drv.stdin.write(f"I {i}\n")
-    onboard = Endpoint(b, 1, 240, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp_path / "py_in"), serve_dir=str(serve),
-                       rng=random.Random(onboard_seed))
+    onboard = ServingOnboards(cpp_node_bins["driver"], tmp_path, serve, b, seed + 100)
     worlds = []
     for name in ("python", "cpp"):
         done: list[bool] = []
@@ -286,20 +276,8 @@ def test_the_node_serves_at_its_grants_as_pythons_endpoint_does(cpp_node_bins: d
                                    if isinstance(m, ttapi.TtFileStatus)}
                     quiet = blackout is not None and blackout[0] <= now < blackout[1]
                     if lose.random() >= loss and not quiet:
-                        if name == "python":
-                            onboard.receive(now, pkt)
-                        else:
-                            drv.stdin.write(f"R {now!r} {pkt.hex()}\n")
-                if name == "python":
-                    out = []
-                    while (pkt := onboard.poll(now)) is not None:
-                        out.append(pkt)
-                else:
-                    drv.stdin.write(f"P {now!r}\n")
-                    drv.stdin.flush()
-                    line = drv.stdout.readline().strip()
-                    out = [] if line == "-" else [bytes.fromhex(h) for h in line.split()]
-                outs[name] = out
+                        onboard.receive(name, now, pkt)
+                out = outs[name] = onboard.poll(name, now)
                 for pkt in out:
                     if lose.random() >= loss:
                         tab.receive(now, pkt)
@@ -307,8 +285,7 @@ def test_the_node_serves_at_its_grants_as_pythons_endpoint_does(cpp_node_bins: d
                                                    [p.hex() for p in outs["python"]])
             now = round(now + 0.005, 6)
     finally:
-        drv.stdin.close()
-        drv.wait(20)
+        onboard.close()
     assert all(len(w[3]) == 2 for w in worlds), "a fetch did not complete"
     for name in ("python", "cpp"):
         for f in files:
