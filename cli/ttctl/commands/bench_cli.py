@@ -242,3 +242,7 @@ def bench_hmd(
 from .bench_latency_cli import bench_latency  # noqa: E402
 
 bench_app.command("latency")(bench_latency)
+
+from .bench_gcs_cli import bench_gcs  # noqa: E402
+
+bench_app.command("gcs")(bench_gcs)

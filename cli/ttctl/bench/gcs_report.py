@@ -1,0 +1,142 @@
+"""The figures of `ttctl bench gcs`, the floors of issue 22 next to them, and the table."""
+
+from __future__ import annotations
+
+import sys
+from typing import Any
+
+# The floors, at m100, 10 m, 10 % loss: the bridge's figure, and at least RATIO times better than
+# the naive forwarder's (or the naive forwarder fails outright).
+FLOORS = {"connect_s": 10.0, "upload_s": 5.0, "age_p95_ms": 500.0}
+APP_BOUND_MS = 200.0  # app command p95 with a ground station <= idle p95 + this
+RATIO = 3.0
+FLOOR_DISTANCE, FLOOR_LOSS = 10.0, 0.1
+
+# (key, label, unit): lower is better for every one
+ROWS = (
+    ("connect_s", "QGC-like connect (heartbeat, AUTOPILOT_VERSION, params, mission list)", "s"),
+    ("params_s", "parameter list", "s"),
+    ("upload_s", "mission upload, {items} items", "s"),
+    ("download_s", "mission download, {items} items", "s"),
+    ("age_p50_ms", "GLOBAL_POSITION_INT age p50", "ms"),
+    ("age_p95_ms", "GLOBAL_POSITION_INT age p95", "ms"),
+    ("idle_p50_ms", "app command p50, idle", "ms"),
+    ("idle_p95_ms", "app command p95, idle", "ms"),
+    ("gcs_p50_ms", "app command p50, ground station on", "ms"),
+    ("gcs_p95_ms", "app command p95, ground station on", "ms"),
+)
+STEP_OF = {"connect_s": "connect", "params_s": "connect", "upload_s": "upload", "download_s": "download",
+           "age_p50_ms": "connect", "age_p95_ms": "connect"}
+
+
+def _pair(runs: list[dict[str, Any]], distance: float) -> tuple[dict[str, Any] | None, dict[str, Any] | None]:
+    by = {r["mode"]: r for r in runs if r["distance_m"] == distance}
+    return by.get("bridge"), by.get("naive")
+
+
+def _value(r: dict[str, Any] | None, key: str) -> float | None:
+    if r is None or not r["started"]:
+        return None
+    return r.get(key)
+
+
+def _naive_failed(n: dict[str, Any] | None, key: str) -> bool:
+    if n is None:
+        return False
+    if not n["started"]:
+        return False  # not measured (its set-up failed): no ratio
+    if key.startswith("gcs_"):
+        return n["gcs_failed"] > 0 and n[key] is None
+    return n.get(key) is None and (STEP_OF.get(key, "") in n["failed"] or "ground station" in n["failed"])
+
+
+def checks(rep: dict[str, Any]) -> list[dict[str, Any]]:
+    """Each floor at each distance: the bridge's figure against its floor, and against the naive
+    forwarder's. Only those at the issue's conditions count for the exit status."""
+    out = []
+    distances = sorted({r["distance_m"] for r in rep["runs"]})
+    for d in distances:
+        b, n = _pair(rep["runs"], d)
+        counts = d == FLOOR_DISTANCE and abs(rep["loss"] - FLOOR_LOSS) < 1e-9 and rep["loss_model"] == "random"
+        if b is None:
+            continue
+        limits = dict(FLOORS)
+        idle = _value(b, "idle_p95_ms")
+        limits["gcs_p95_ms"] = idle + APP_BOUND_MS if idle is not None else float("nan")
+        for key, floor in limits.items():
+            v = _value(b, key)
+            out.append({"distance_m": d, "check": key, "kind": "floor", "value": v, "floor": round(floor, 1),
+                        "ok": v is not None and v <= floor, "counts": counts})
+            nv = _value(n, key)
+            if n is None:
+                continue
+            if _naive_failed(n, key):
+                out.append({"distance_m": d, "check": key, "kind": "vs naive", "value": None, "floor": RATIO,
+                            "ok": v is not None, "naive": "failed", "counts": counts})
+            else:
+                ratio = round(nv / v, 2) if v and nv is not None else None
+                out.append({"distance_m": d, "check": key, "kind": "vs naive", "value": ratio, "floor": RATIO,
+                            "ok": ratio is not None and ratio >= RATIO, "naive": "measured", "counts": counts})
+    return out
+
+
+def _fmt(v: float | None, unit: str) -> str:
+    if v is None:
+        return "-"
+    return f"{v:.1f}" if unit == "s" else f"{v:.0f}"
+
+
+def print_report(rep: dict[str, Any], out: Any = None) -> None:
+    from rich.console import Console
+    from rich.table import Table
+
+    console = Console(file=out or sys.stdout, width=150)
+    for d in sorted({r["distance_m"] for r in rep["runs"]}):
+        b, n = _pair(rep["runs"], d)
+        t = Table(title=f"a ground station through the tablet end: bridge against a naive forwarder, "
+                        f"{rep['profile']} at {d:g} m, {rep['loss']:.0%} {rep['loss_model']} loss")
+        for col in ("figure", "bridge", "naive", "naive / bridge", "floor", "holds"):
+            t.add_column(col, justify="left" if col == "figure" else "right")
+        ch = {(c["check"], c["kind"]): c for c in rep["checks"] if c["distance_m"] == d}
+        for key, label, unit in ROWS:
+            bv, nv = _value(b, key), _value(n, key)
+            nfail = _naive_failed(n, key)
+            ratio = "naive failed" if nfail else (f"{nv / bv:.1f}x" if bv and nv is not None else "-")
+            floor = ch.get((key, "floor"))
+            floor_text = "" if floor is None else f"<= {floor['floor']:g} {unit}, >= {RATIO:g}x"
+            holds = ""
+            if floor is not None:
+                vs = ch.get((key, "vs naive"))
+                oks = [floor["ok"]] + ([vs["ok"]] if vs is not None else [])
+                holds = "[green]yes[/]" if all(oks) else "[red]no[/]"
+                if not floor["counts"]:
+                    holds += " (ref.)"
+            t.add_row(f"{label.format(items=rep['items'])} ({unit})", _fmt(bv, unit),
+                      "failed" if nfail else _fmt(nv, unit), ratio, floor_text, holds)
+        console.print(t)
+        for r in (b, n):
+            if r is None:
+                continue
+            words = []
+            if not r["started"]:
+                words.append(f"not measured: {r['why_not']}")
+            words += [f"{step} failed: {why}" for step, why in r["failed"].items()]
+            if r["connect_s"] is not None:
+                words.append(f"connect: vehicle heard after {r['heartbeat_s']:.1f} s, AUTOPILOT_VERSION "
+                             f"{r['version_s']:.1f} s, parameters {r['params_s']:.1f} s, mission list "
+                             f"{r['mission_list_s']:.1f} s")
+            if r["started"]:
+                words.append(f"{r['param_count']} parameters, {r['param_reads']} re-read by index; "
+                             f"{r['upload_restarts']} upload(s) started over after a lost MISSION_ACK; "
+                             f"{r['ages']} positions; app commands {r['idle_failed']} + {r['gcs_failed']} "
+                             f"unanswered of {rep['commands']} + {r['gcs_commands']}")
+            words += r["notes"]
+            for w in words:
+                console.print(f"{r['mode']}: {w}", markup=False, highlight=False)
+    method = next((r["age_method"] for r in rep["runs"] if r["age_method"]), "")
+    console.print(f"ground station: pymavlink, QGroundControl's timeouts and retries (mission protocol by "
+                  f"pymavlink, not MAVSDK); position age: {method or 'no positions'}", markup=False,
+                  highlight=False)
+    console.print(f"floors (issue 22) count at {FLOOR_DISTANCE:g} m, {FLOOR_LOSS:.0%} random loss: app command p95 "
+                  f"with a ground station <= idle p95 + {APP_BOUND_MS:g} ms; each >= {RATIO:g}x the naive "
+                  "forwarder's, or the naive forwarder fails", markup=False, highlight=False)

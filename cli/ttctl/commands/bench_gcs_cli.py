@@ -1,0 +1,80 @@
+"""`ttctl bench gcs`: a ground station through the tablet end, bridge against a naive forwarder
+(the work is in ttctl.bench.gcs)."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+from ..errors import Fail
+
+
+def _distances(text: str) -> list[float]:
+    out = []
+    for part in text.split(","):
+        part = part.strip()
+        try:
+            d = float(part)
+        except ValueError:
+            raise Fail(f"--distance: {part!r} is not a number of metres (e.g. 10 or 10,150)") from None
+        if not 0 <= d <= 10_000:
+            raise Fail(f"--distance: {part} m is outside 0..10000")
+        out.append(d)
+    if not out:
+        raise Fail("--distance: give at least one distance (e.g. 10 or 10,150)")
+    return out
+
+
+def _ids(text: str) -> tuple[int, int]:
+    parts = text.split("/")
+    try:
+        sysid, compid = (int(p) for p in parts)
+    except ValueError:
+        raise Fail(f"--gcs-id: {text!r} is not SYSID/COMPID (e.g. 255/190)") from None
+    if not (1 <= sysid <= 255 and 0 <= compid <= 255):
+        raise Fail(f"--gcs-id: {text} is outside 1..255/0..255")
+    return sysid, compid
+
+
+def bench_gcs(
+    distance: Annotated[str, typer.Option("--distance", help="Distances in metres, comma-separated (e.g. "
+                                                             "10,150).")] = "10",
+    loss: Annotated[float, typer.Option("--loss", help="Packet loss probability of the relay, both "
+                                                       "directions.", min=0.0, max=0.9)] = 0.1,
+    loss_model: Annotated[str, typer.Option("--loss-model", help="random or burst.")] = "random",
+    items: Annotated[int, typer.Option("--items", help="Mission items uploaded and downloaded.", min=1,
+                                       max=200)] = 20,
+    commands: Annotated[int, typer.Option("--commands", help="App commands idle (and at least as many with the "
+                                                             "ground station on).", min=1, max=1000)] = 20,
+    interval: Annotated[float, typer.Option("--interval", help="Seconds between app commands.", min=0.1,
+                                            max=60)] = 1.0,
+    step_timeout: Annotated[float, typer.Option("--step-timeout", help="Seconds a ground-station step may "
+                                                                       "wait in all before it counts as "
+                                                                       "failed.", min=5, max=600)] = 60.0,
+    seed: Annotated[int, typer.Option("--seed", help="The relay's random seed.")] = 1,
+    gcs_id: Annotated[str, typer.Option("--gcs-id", help="The ground station's SYSID/COMPID (QGroundControl's "
+                                                         "default, which is also the tablet's).")] = "255/190",
+    only: Annotated[str, typer.Option("--only", help="bridge, naive or both.")] = "both",
+    quick: Annotated[bool, typer.Option("--quick", help="A smoke test: 10 items, 4 commands, 20 s steps.")]
+    = False,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+) -> None:
+    """A QGroundControl-like ground station through `emulate tablet --gcs` (the bridge) and through
+    a naive forwarder, side by side over `link relay --profile m100` with loss, to `emulate onboard`:
+    connect sequence, parameter list, mission upload and download, position age at the ground
+    station, and the app's command latency idle and with the ground station on.
+
+    Exit status: 0 when the issue's floors hold (at 10 m, 10 % random loss), 1 when one is missed,
+    2 bad input."""
+    from ..bench.gcs import MODES, Options, run
+
+    if loss_model not in ("random", "burst"):
+        raise Fail(f"--loss-model must be random or burst, not {loss_model!r}")
+    if only not in ("bridge", "naive", "both"):
+        raise Fail(f"--only must be bridge, naive or both, not {only!r}")
+    o = Options(_distances(distance), loss, loss_model, items, commands, interval, step_timeout, seed,
+                gcs_id=_ids(gcs_id), json_out=json_out, quick=quick, modes=MODES if only == "both" else (only,))
+    if quick:
+        o.items, o.commands, o.interval, o.step_timeout = min(items, 10), min(commands, 4), min(interval, 0.5), 20.0
+    raise typer.Exit(run(o))
