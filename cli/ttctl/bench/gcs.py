@@ -41,8 +41,8 @@ class Options:
     loss: float = 0.1
     loss_model: str = "random"
     items: int = 20
-    commands: int = 20
-    interval: float = 1.0
+    commands: int = 50
+    interval: float = 0.5
     step_timeout: float = 60.0
     seed: int = 1
     gcs_id: tuple[int, int] = (255, 190)  # QGroundControl's default, which is also the tablet's
@@ -50,6 +50,7 @@ class Options:
     json_out: bool = False
     quick: bool = False
     modes: tuple[str, ...] = MODES
+    keep: str | None = None  # keep every process's stderr in this folder
 
 
 @dataclass
@@ -303,6 +304,8 @@ def run_one(o: Options, mode: str, distance: float, folder: Path, progress: Any)
             r.notes.append(f"command with a ground station: {why}")
         done.wait(4 * o.step_timeout + 30)
         peer.close()
+        if tablet.poll() is not None:
+            r.notes.append(f"the tablet end exited {tablet.returncode}: {_last(procs.stderr('tablet'))}")
         if "error" in box:
             r.failed["ground station"] = box["error"]
             return r
@@ -327,16 +330,29 @@ def run_one(o: Options, mode: str, distance: float, folder: Path, progress: Any)
 
 
 def run(o: Options) -> int:
+    import signal
+
     from .gcs_report import checks, print_report
 
     progress = (lambda s: None) if o.json_out else (lambda s: print(s, file=sys.stderr, flush=True))
     runs: list[Run] = []
-    with tempfile.TemporaryDirectory(prefix="ttctl-bench-gcs-") as d:
-        for distance in o.distances:
-            for mode in o.modes:
-                folder = Path(d) / f"{mode}-{distance:g}"
-                folder.mkdir()
-                runs.append(run_one(o, mode, distance, folder, progress))
+
+    def interrupted(signum: int, frame: Any) -> None:
+        raise KeyboardInterrupt  # the processes of the run are stopped on the way out
+
+    old = signal.signal(signal.SIGTERM, interrupted)
+    try:
+        with tempfile.TemporaryDirectory(prefix="ttctl-bench-gcs-") as d:
+            for distance in o.distances:
+                for mode in o.modes:
+                    folder = Path(o.keep or d) / f"{mode}-{distance:g}"
+                    folder.mkdir(parents=True)
+                    runs.append(run_one(o, mode, distance, folder, progress))
+    except KeyboardInterrupt:
+        print("ttctl: bench gcs interrupted (its processes are stopped)", file=sys.stderr)
+        return 130
+    finally:
+        signal.signal(signal.SIGTERM, old)
     rep: dict[str, Any] = {"profile": o.profile, "loss": o.loss, "loss_model": o.loss_model, "items": o.items,
                            "commands": o.commands, "interval_s": o.interval, "seed": o.seed,
                            "gcs_id": f"{o.gcs_id[0]}/{o.gcs_id[1]}",

@@ -10,8 +10,10 @@ src/MissionManager/PlanManager.h, src/Vehicle/Vehicle.cc):
   ones, at most 10 in flight, each index 5 times at most;
 - missions: MISSION_REQUEST_LIST / MISSION_COUNT again after 1.5 s without an answer, an item
   (MISSION_REQUEST_INT) again after 0.25 s, 5 retries each; the download ends with MISSION_ACK.
-  QGroundControl gives up an upload whose last MISSION_ACK is lost; this peer starts it over
-  (MISSION_COUNT again, within the same 5 retries), so a lost ack costs time, not the run.
+  QGroundControl gives up an upload when 1.5 s pass without a request after the first item (it
+  counts on the vehicle to ask again) or without the last MISSION_ACK; this peer sends the last
+  item again in the first case and starts over (MISSION_COUNT) in the second, within the same 5
+  retries, so a lost frame costs time, not the run.
 
 Every GLOBAL_POSITION_INT is stamped on receipt: its age is the receive time minus the moment
 the vehicle stamped it (time_boot_ms), placed on this machine's clock by SYSTEM_TIME (which
@@ -256,10 +258,14 @@ class QgcLikePeer:
                 if retries > MISSION_RETRIES:
                     raise StepFailed(f"mission upload: no answer after {MISSION_RETRIES} retries "
                                      f"(last item sent {last_sent})")
-                if last_sent is not None and last_sent == n - 1:
+                if last_sent is None:
+                    count()  # no item asked for yet: MISSION_COUNT again, as QGC does
+                elif last_sent == n - 1:
                     self.f.upload_restarts += 1  # the last MISSION_ACK was lost: QGC would give up here
-                count()
-                last_sent = None
+                    count()
+                    last_sent = None
+                else:
+                    self._send(items[last_sent])  # QGC would give up; the vehicle ignores an item it has
                 until = time.monotonic() + MISSION_ACK_TIMEOUT
                 continue
             kind = msg.get_type()
@@ -268,6 +274,7 @@ class QgcLikePeer:
                     raise StepFailed(f"mission upload: the vehicle asked for item {msg.seq} of {n}")
                 self._send(items[msg.seq])
                 last_sent = msg.seq
+                retries = 0  # progress: the retries count again from here
                 until = time.monotonic() + MISSION_ACK_TIMEOUT
             elif kind == "MISSION_ACK" and msg.mission_type == 0:
                 if msg.type != m.MAV_MISSION_ACCEPTED:

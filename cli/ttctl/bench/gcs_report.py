@@ -14,16 +14,16 @@ FLOOR_DISTANCE, FLOOR_LOSS = 10.0, 0.1
 
 # (key, label, unit): lower is better for every one
 ROWS = (
-    ("connect_s", "QGC-like connect (heartbeat, AUTOPILOT_VERSION, params, mission list)", "s"),
-    ("params_s", "parameter list", "s"),
+    ("connect_s", "connect, QGC-like", "s"),
+    ("params_s", " of which parameters", "s"),
     ("upload_s", "mission upload, {items} items", "s"),
     ("download_s", "mission download, {items} items", "s"),
-    ("age_p50_ms", "GLOBAL_POSITION_INT age p50", "ms"),
-    ("age_p95_ms", "GLOBAL_POSITION_INT age p95", "ms"),
+    ("age_p50_ms", "position age p50", "ms"),
+    ("age_p95_ms", "position age p95", "ms"),
     ("idle_p50_ms", "app command p50, idle", "ms"),
     ("idle_p95_ms", "app command p95, idle", "ms"),
-    ("gcs_p50_ms", "app command p50, ground station on", "ms"),
-    ("gcs_p95_ms", "app command p95, ground station on", "ms"),
+    ("gcs_p50_ms", "app command p50, GCS on", "ms"),
+    ("gcs_p95_ms", "app command p95, GCS on", "ms"),
 )
 STEP_OF = {"connect_s": "connect", "params_s": "connect", "upload_s": "upload", "download_s": "download",
            "age_p50_ms": "connect", "age_p95_ms": "connect"}
@@ -90,12 +90,12 @@ def print_report(rep: dict[str, Any], out: Any = None) -> None:
     from rich.console import Console
     from rich.table import Table
 
-    console = Console(file=out or sys.stdout, width=150)
+    console = Console(file=out or sys.stdout, width=100)
     for d in sorted({r["distance_m"] for r in rep["runs"]}):
         b, n = _pair(rep["runs"], d)
-        t = Table(title=f"a ground station through the tablet end: bridge against a naive forwarder, "
-                        f"{rep['profile']} at {d:g} m, {rep['loss']:.0%} {rep['loss_model']} loss")
-        for col in ("figure", "bridge", "naive", "naive / bridge", "floor", "holds"):
+        t = Table(title=f"a ground station ({rep['gcs_id']}) through the tablet end, bridge against naive "
+                        f"forwarder: {rep['profile']} at {d:g} m, {rep['loss']:.0%} {rep['loss_model']} loss")
+        for col in ("figure", "bridge", "naive", "naive/bridge", "floor", "holds"):
             t.add_column(col, justify="left" if col == "figure" else "right")
         ch = {(c["check"], c["kind"]): c for c in rep["checks"] if c["distance_m"] == d}
         for key, label, unit in ROWS:
@@ -103,7 +103,7 @@ def print_report(rep: dict[str, Any], out: Any = None) -> None:
             nfail = _naive_failed(n, key)
             ratio = "naive failed" if nfail else (f"{nv / bv:.1f}x" if bv and nv is not None else "-")
             floor = ch.get((key, "floor"))
-            floor_text = "" if floor is None else f"<= {floor['floor']:g} {unit}, >= {RATIO:g}x"
+            floor_text = "" if floor is None else f"<= {floor['floor']:.0f}, {RATIO:g}x"
             holds = ""
             if floor is not None:
                 vs = ch.get((key, "vs naive"))
@@ -134,9 +134,9 @@ def print_report(rep: dict[str, Any], out: Any = None) -> None:
             for w in words:
                 console.print(f"{r['mode']}: {w}", markup=False, highlight=False)
     method = next((r["age_method"] for r in rep["runs"] if r["age_method"]), "")
-    console.print(f"ground station: pymavlink, QGroundControl's timeouts and retries (mission protocol by "
-                  f"pymavlink, not MAVSDK); position age: {method or 'no positions'}", markup=False,
-                  highlight=False)
+    console.print("connect: HEARTBEAT, AUTOPILOT_VERSION, parameters, mission list; the ground station is "
+                  "pymavlink with QGroundControl's timeouts and retries (missions by pymavlink, not MAVSDK); "
+                  f"position: GLOBAL_POSITION_INT, age = {method or 'no positions'}", markup=False, highlight=False)
     console.print(f"floors (issue 22) count at {FLOOR_DISTANCE:g} m, {FLOOR_LOSS:.0%} random loss: app command p95 "
                   f"with a ground station <= idle p95 + {APP_BOUND_MS:g} ms; each >= {RATIO:g}x the naive "
                   "forwarder's, or the naive forwarder fails", markup=False, highlight=False)

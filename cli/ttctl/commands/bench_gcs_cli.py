@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Annotated
 
 import typer
@@ -46,9 +47,9 @@ def bench_gcs(
     items: Annotated[int, typer.Option("--items", help="Mission items uploaded and downloaded.", min=1,
                                        max=200)] = 20,
     commands: Annotated[int, typer.Option("--commands", help="App commands idle (and at least as many with the "
-                                                             "ground station on).", min=1, max=1000)] = 20,
+                                                             "ground station on).", min=1, max=1000)] = 50,
     interval: Annotated[float, typer.Option("--interval", help="Seconds between app commands.", min=0.1,
-                                            max=60)] = 1.0,
+                                            max=60)] = 0.5,
     step_timeout: Annotated[float, typer.Option("--step-timeout", help="Seconds a ground-station step may "
                                                                        "wait in all before it counts as "
                                                                        "failed.", min=5, max=600)] = 60.0,
@@ -58,6 +59,8 @@ def bench_gcs(
     only: Annotated[str, typer.Option("--only", help="bridge, naive or both.")] = "both",
     quick: Annotated[bool, typer.Option("--quick", help="A smoke test: 10 items, 4 commands, 20 s steps.")]
     = False,
+    keep: Annotated[Path | None, typer.Option("--keep", help="Keep every process's stderr in this (new or "
+                                                             "empty) folder.", show_default=False)] = None,
     json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
 ) -> None:
     """A QGroundControl-like ground station through `emulate tablet --gcs` (the bridge) and through
@@ -73,8 +76,11 @@ def bench_gcs(
         raise Fail(f"--loss-model must be random or burst, not {loss_model!r}")
     if only not in ("bridge", "naive", "both"):
         raise Fail(f"--only must be bridge, naive or both, not {only!r}")
+    if keep is not None and keep.exists() and (not keep.is_dir() or any(keep.iterdir())):
+        raise Fail(f"--keep: {keep} is not a new or empty folder")
     o = Options(_distances(distance), loss, loss_model, items, commands, interval, step_timeout, seed,
-                gcs_id=_ids(gcs_id), json_out=json_out, quick=quick, modes=MODES if only == "both" else (only,))
+                gcs_id=_ids(gcs_id), json_out=json_out, quick=quick, keep=str(keep) if keep else None,
+                modes=MODES if only == "both" else (only,))
     if quick:
         o.items, o.commands, o.interval, o.step_timeout = min(items, 10), min(commands, 4), min(interval, 0.5), 20.0
     raise typer.Exit(run(o))
