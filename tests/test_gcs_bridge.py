@@ -21,9 +21,9 @@ from typing import Any
 
 os.environ.setdefault("MAVLINK20", "1")  # before pymavlink is imported: ground stations speak MAVLink 2
 
-from pymavlink import mavutil  # noqa: E402
+from pymavlink import mavutil
 
-from e2e_lib import LOCAL, Start, free_port, relay  # noqa: E402
+from e2e_lib import LOCAL, Start, free_port, relay
 
 BIN = Path(sys.executable).parent
 
