@@ -127,16 +127,18 @@ def _rss_kb(pid: int) -> int:
 
 def test_a_flooding_ground_station_is_throttled_and_app_commands_keep_their_latency(tmp_path: Path,
                                                                                      start: Start) -> None:
-    """Parameter requests in a loop (the list again and again, and single ones by index), 50 Hz MANUAL_CONTROL and a 2,000-item mission upload from one
-    ground station: the app's own command (a hover refused on the ground: a full round trip with
-    the vehicle's words) is answered within its idle p95 + 200 ms, the bridge drops what does not
-    fit (retries as duplicates, the oldest for room) and its memory stays put."""
+    """Parameter requests in a loop (the list again and again, and single ones by index), 50 Hz
+    MANUAL_CONTROL and a 2,000-item mission upload from one ground station: the app's own command
+    (a hover refused on the ground: a full round trip with the vehicle's words) is answered within
+    its idle p95 + 200 ms, the bridge drops what does not fit (retries as duplicates, the oldest
+    for room) and its memory stays put."""
     a, _ = world(start, "--loss", "0")  # no loss: the bound is about priority, not retries
     g = free_port()
     m = station(g, 245, 190)
+    errors = open(tmp_path / "tablet.err", "w")  # noqa: SIM115 - closed with the process
     tab = subprocess.Popen([str(BIN / "ttctl"), "emulate", "tablet", "--to", f"udpout:{LOCAL}:{a}", "--profile",
                             "m100", "--gcs", f"udpout:{LOCAL}:{g}", "--json"], stdin=subprocess.PIPE,
-                           stdout=subprocess.PIPE, stderr=open(tmp_path / "tablet.err", "w"), text=True, bufsize=1)
+                           stdout=subprocess.PIPE, stderr=errors, text=True, bufsize=1)
     beat = Beat(m)
     flooding = threading.Event()
     done = threading.Event()
@@ -195,6 +197,7 @@ def test_a_flooding_ground_station_is_throttled_and_app_commands_keep_their_late
     tab.stdin.write("quit\n")  # type: ignore[union-attr]
     tab.stdin.flush()  # type: ignore[union-attr]
     tab.communicate(timeout=10)
+    errors.close()
     err = (tmp_path / "tablet.err").read_text()
     p95 = lambda xs: sorted(xs)[max(0, round(0.95 * len(xs)) - 1)]  # noqa: E731
     report = {"idle_ms": [round(x) for x in idle], "during_ms": [round(x) for x in during], "rss_kb": (rss0, rss1)}
