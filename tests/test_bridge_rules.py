@@ -128,6 +128,10 @@ def test_radio_quality_counts_what_the_vehicle_sent_and_is_zero_when_silent() ->
         r.vehicle_frame(i * 0.04, 1, seq)
     assert 0.85 * 254 <= r.quality(4.0) <= 0.95 * 254 and r.lost == 9
     assert r.quality(4.0 + 3.6) == 0  # silent past the link-loss time
+    late = Routes(1)
+    for t, seq in enumerate((1, 2, 4, 3, 5, 6)):  # 3 overtaken by 4 (a frame held for the next packet)
+        late.vehicle_frame(t * 0.1, 1, seq)
+    assert late.lost == 0 and late.quality(0.6) == 254
 
 
 def test_streams_fit_the_downlink_share_and_say_the_interval_kept() -> None:
