@@ -237,3 +237,29 @@ def test_the_vehicle_keeps_items_that_come_ahead_and_acks_a_repeated_last_item_a
     assert asks.count(1) == 2 and 2 not in asks and 3 not in asks  # 1 asked again once; 2 and 3 never
     from_gcs(item(4), 1.5)  # the last item again: the ground station did not hear the ack
     assert [x.NAME for x in sent[-1:]] == ["MISSION_ACK"] and len([x for x in sent if x.NAME == "MISSION_ACK"]) == 2
+
+
+def test_download_relay_answers_from_the_vehicles_own_items() -> None:
+    from ttctl.bridge.downloads import DownloadRelay
+
+    relay = DownloadRelay(lambda who, seq, kind: f"ask{seq}".encode(), window=3)
+    who = (245, 190)
+    count = B.MissionCount(target_system=245, target_component=190, count=6, mission_type=0)
+    passed, up = relay.from_vehicle(0.0, count, who)
+    assert passed and up == [b"ask0", b"ask1", b"ask2"]  # asked at once, as the station would, a window ahead
+    for seq in (0, 2):  # 1 is lost on the way
+        held = B.MissionItemInt(target_system=245, target_component=190, seq=seq, x=seq, mission_type=0)
+        assert relay.from_vehicle(0.2, held, who) == (False, [])  # held for the station's request
+
+    def ask(t: float, seq: int) -> tuple[bool, list[Any], list[bytes]]:
+        return relay.from_gcs(t, B.MissionRequestInt(target_system=1, target_component=1, seq=seq, mission_type=0),
+                              who)
+
+    up_, answers, more = ask(0.3, 0)
+    assert not up_ and [a.seq for a in answers] == [0] and more == [b"ask3"]  # the vehicle's own item, at once
+    assert ask(0.35, 1) == (False, [], [b"ask4"])  # asked 0.35 s ago: on its way
+    late = B.MissionItemInt(target_system=245, target_component=190, seq=1, x=1, mission_type=0)
+    assert relay.from_vehicle(0.5, late, who) == (True, [])  # the station waits for it: passed on
+    assert ask(1.2, 3)[0]  # asked 1.2 s ago and never came: the station's own request goes up
+    assert relay.from_gcs(2.0, B.MissionAck(target_system=1, target_component=1, type=0, mission_type=0), who)[0]
+    assert who not in relay.downloads

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from ...bridge.classes import ONBOARD_COMPID, RADIO_COMPID
+from ...bridge.downloads import DownloadRelay
 from ...bridge.missions import MissionRelay
 from ...bridge.routes import Routes
 from ...bridge.uplink import MAX_PROTOCOL, GcsUplink
@@ -51,6 +52,8 @@ class GcsBridge:
         self.radio = b.encoder(vehicle_sysid, RADIO_COMPID)
         self.autopilot = b.encoder(vehicle_sysid, 1)  # the mission relay's requests, as the vehicle's
         self.missions = MissionRelay(self._request)
+        self.downloads = DownloadRelay(self._request_up)
+        self._up_seq = 0
         self.stats = BridgeStats()
         self.ep: Endpoint | None = None
         self.kick: Callable[[], None] = lambda: None
@@ -108,6 +111,15 @@ class GcsBridge:
                         self._told_other.add(target)
                         self.log(f"not carrying {msg.NAME} for system {target}: the vehicle here is {self.vehicle}")
                     continue
+                if msg.NAME.startswith("MISSION_"):
+                    forward, answers, ahead = self.downloads.from_gcs(now, msg, carried)
+                    for answer in answers:
+                        self._to_gcs(now, answer, carried)
+                    for frame in ahead:
+                        self.uplink.put(now, "MISSION_REQUEST_INT", frame)
+                    queued = queued or bool(ahead)
+                    if not forward:
+                        continue
                 frame = msg.pack(msg.get_seq(), *carried)
                 self.uplink.put(now, msg.NAME, frame)
                 self.stats.up += 1
@@ -134,11 +146,15 @@ class GcsBridge:
         if msg.NAME.startswith("MISSION_"):
             who = target if target is not None and target[0] else None
             forward, again, requests = self.missions.from_vehicle(loop_now, msg, who)
+            passed, ahead = self.downloads.from_vehicle(loop_now, msg, who)
+            forward = forward and passed
+            for frame in ahead:
+                self.uplink.put(loop_now, "MISSION_REQUEST_INT", frame)
             for frame in again:
                 self.uplink.put(loop_now, "MISSION_ITEM_INT", frame)
             for req in requests:
                 self._to_gcs(loop_now, req, target)  # type: ignore[arg-type]
-            if again:
+            if again or ahead:
                 self.kick()
             if not forward:
                 return True
@@ -156,6 +172,12 @@ class GcsBridge:
     def _request(self, who: tuple[int, int], seq: int, mission_type: int) -> Any:
         return self.b.MissionRequestInt(target_system=who[0], target_component=who[1], seq=seq,
                                         mission_type=mission_type)
+
+    def _request_up(self, who: tuple[int, int], seq: int, mission_type: int) -> bytes:
+        """A MISSION_REQUEST_INT to the vehicle as the station carried as `who` sends it."""
+        self._up_seq = (self._up_seq + 1) & 0xFF
+        return bytes(self.b.MissionRequestInt(target_system=self.vehicle, target_component=1, seq=seq,
+                                              mission_type=mission_type).pack(self._up_seq, *who))
 
     def _to_gcs(self, now: float, msg: Any, carried: tuple[int, int]) -> None:
         """A frame of the bridge's own, as the vehicle's autopilot, to the station carried as `carried`."""
