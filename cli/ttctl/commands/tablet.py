@@ -44,7 +44,7 @@ class TabletOptions:
     include_dirs: list[Path] = field(default_factory=list)
     plugins: list[str] = field(default_factory=list)
     gcs: list[str] = field(default_factory=list)
-    gcs_share: float = 0.6
+    gcs_share: float = 0.8
 
 
 def _prompt_msg(text: str) -> Any:
@@ -343,6 +343,7 @@ async def _prompt(s: Any, sigs: Signals, base: Path, b: Any = None, as_json: boo
             while current is None and backlog:
                 line = backlog.pop(0)
                 if line in ("quit", "exit"):
+                    sigs.stop.set()  # the session ends here (with --gcs too, which outlives the input's end)
                     return 0
                 try:
                     step = _prompt_step(line, b)
