@@ -46,6 +46,7 @@ class Options:
     step_timeout: float = 60.0
     seed: int = 1
     gcs_id: tuple[int, int] = (255, 190)  # QGroundControl's default, which is also the tablet's
+    sticks_hz: float = 0.0  # MANUAL_CONTROL from the ground station once it hears the vehicle
     profile: str = "m100"
     json_out: bool = False
     quick: bool = False
@@ -68,6 +69,7 @@ class Run:
     param_reads: int = 0
     upload_s: float | None = None
     upload_restarts: int = 0
+    ack_wait_s: float | None = None
     download_s: float | None = None
     items_checked: bool = False
     age_p50_ms: float | None = None
@@ -83,6 +85,7 @@ class Run:
     gcs_commands: int = 0
     idle_ms: list[float] = field(default_factory=list)  # every answered command, in order
     gcs_ms: list[float] = field(default_factory=list)
+    sticks: int = 0  # MANUAL_CONTROL sent
     failed: dict[str, str] = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
 
@@ -280,7 +283,8 @@ def run_one(o: Options, mode: str, distance: float, folder: Path, progress: Any)
         if why:
             r.notes.append(f"idle command: {why}")
         progress(f"{mode} {distance:g} m: the ground station connects, uploads and downloads {o.items} items")
-        peer = QgcLikePeer(g, sysid=o.gcs_id[0], compid=o.gcs_id[1], deadline_s=o.step_timeout)
+        peer = QgcLikePeer(g, sysid=o.gcs_id[0], compid=o.gcs_id[1], deadline_s=o.step_timeout,
+                           sticks_hz=o.sticks_hz)
         done = threading.Event()
         box: dict[str, Any] = {}
 
@@ -312,6 +316,8 @@ def run_one(o: Options, mode: str, distance: float, folder: Path, progress: Any)
         f = box.get("f") or peer.f
         r.connect_s, r.params_s, r.param_count, r.param_reads = f.connect_s, f.params_s, f.param_count, f.param_reads
         r.heartbeat_s, r.version_s, r.mission_list_s = f.heartbeat_s, f.version_s, f.mission_list_s
+        r.sticks = peer.sticks
+        r.ack_wait_s = f.ack_wait_s
         r.upload_s, r.upload_restarts, r.download_s, r.items_checked = (f.upload_s, f.upload_restarts, f.download_s,
                                                                         f.items_checked)
         r.age_p50_ms, r.age_p95_ms, r.ages, r.age_method = (percentile(f.ages_ms, 0.5), percentile(f.ages_ms, 0.95),
@@ -355,7 +361,7 @@ def run(o: Options) -> int:
         signal.signal(signal.SIGTERM, old)
     rep: dict[str, Any] = {"profile": o.profile, "loss": o.loss, "loss_model": o.loss_model, "items": o.items,
                            "commands": o.commands, "interval_s": o.interval, "seed": o.seed,
-                           "gcs_id": f"{o.gcs_id[0]}/{o.gcs_id[1]}",
+                           "gcs_id": f"{o.gcs_id[0]}/{o.gcs_id[1]}", "sticks_hz": o.sticks_hz,
                            "runs": [asdict(r) for r in runs]}
     rep["checks"] = checks(rep)
     if o.json_out:

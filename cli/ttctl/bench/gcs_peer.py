@@ -55,6 +55,7 @@ class Figures:
     param_reads: int = 0  # PARAM_REQUEST_READ sent for missing indices
     upload_s: float | None = None
     upload_restarts: int = 0
+    ack_wait_s: float | None = None  # the last item first sent -> the upload's MISSION_ACK
     download_s: float | None = None
     items_checked: bool = False  # the 20 items downloaded are the ones uploaded
     ages_ms: list[float] = field(default_factory=list)
@@ -66,7 +67,7 @@ class QgcLikePeer:
     """Blocking, on one thread: every wait pumps the socket and sends the 1 Hz HEARTBEAT."""
 
     def __init__(self, port: int, target: int = 1, sysid: int = 255, compid: int = 190,
-                 deadline_s: float = 60.0) -> None:
+                 deadline_s: float = 60.0, sticks_hz: float = 0.0) -> None:
         os.environ["MAVLINK20"] = "1"  # QGroundControl speaks MAVLink 2 (pymavlink picks its bindings by this)
         from pymavlink import mavutil
 
@@ -77,6 +78,9 @@ class QgcLikePeer:
         self.target = target
         self.deadline_s = deadline_s  # per step
         self.next_hb = 0.0
+        self.sticks_s = 1.0 / sticks_hz if sticks_hz > 0 else None  # MANUAL_CONTROL, as a joystick sends it
+        self.next_stick = 0.0
+        self.sticks = 0
         self.boot_unix: float | None = None
         self.positions: list[tuple[float, int]] = []  # (receive unix time, time_boot_ms)
         self.heard = False
@@ -97,9 +101,16 @@ class QgcLikePeer:
                 self.next_hb = now + HEARTBEAT_S
                 self._send(self.m.MAVLink_heartbeat_message(self.m.MAV_TYPE_GCS, self.m.MAV_AUTOPILOT_INVALID,
                                                             0, 0, 0, 3))
+            wake = min(until, self.next_hb)
+            if self.sticks_s is not None and self.heard:
+                if now >= self.next_stick:
+                    self.next_stick = max(now, self.next_stick + self.sticks_s)
+                    self.sticks += 1  # centred sticks, throttle at hover (z 500), as QGC's joystick sends
+                    self._send(self.m.MAVLink_manual_control_message(self.target, 0, 0, 500, 0, 0))
+                wake = min(wake, self.next_stick)
             if now >= until:
                 return None
-            msg = self.conn.recv_match(blocking=True, timeout=max(0.001, min(until, self.next_hb) - now))
+            msg = self.conn.recv_match(blocking=True, timeout=max(0.001, wake - now))
             if msg is None or msg.get_type() == "BAD_DATA" or msg.get_srcSystem() != self.target:
                 continue
             self._note(msg)
@@ -245,6 +256,7 @@ class QgcLikePeer:
         t0 = time.monotonic()
         retries = 0
         last_sent: int | None = None
+        last_item_at: float | None = None  # when the last item first went: the vehicle may have it all
 
         def count() -> None:
             self._send(m.MAVLink_mission_count_message(self.target, VEHICLE_COMPID, n, 0))
@@ -274,14 +286,18 @@ class QgcLikePeer:
                     raise StepFailed(f"mission upload: the vehicle asked for item {msg.seq} of {n}")
                 self._send(items[msg.seq])
                 last_sent = msg.seq
+                if msg.seq == n - 1 and last_item_at is None:
+                    last_item_at = time.monotonic()
                 retries = 0  # progress: the retries count again from here
                 until = time.monotonic() + MISSION_ACK_TIMEOUT
             elif kind == "MISSION_ACK" and msg.mission_type == 0:
                 if msg.type != m.MAV_MISSION_ACCEPTED:
                     raise StepFailed(f"mission upload: MISSION_ACK {msg.type}")
-                if last_sent is None:  # an ack of an earlier attempt
+                if last_item_at is None:  # no attempt has sent every item yet: not ours
                     continue
-                self.f.upload_s = time.monotonic() - t0
+                now = time.monotonic()
+                self.f.upload_s = now - t0
+                self.f.ack_wait_s = now - last_item_at  # QGroundControl gives up after 1.5 s
                 return
 
     def download(self, n: int) -> None:

@@ -93,7 +93,8 @@ def print_report(rep: dict[str, Any], out: Any = None) -> None:
     console = Console(file=out or sys.stdout, width=100)
     for d in sorted({r["distance_m"] for r in rep["runs"]}):
         b, n = _pair(rep["runs"], d)
-        t = Table(title=f"a ground station ({rep['gcs_id']}) through the tablet end, bridge against naive "
+        sticks = f", MANUAL_CONTROL at {rep['sticks_hz']:g} Hz" if rep.get("sticks_hz") else ""
+        t = Table(title=f"a ground station ({rep['gcs_id']}{sticks}) through the tablet end, bridge against naive "
                         f"forwarder: {rep['profile']} at {d:g} m, {rep['loss']:.0%} {rep['loss_model']} loss")
         for col in ("figure", "bridge", "naive", "naive/bridge", "floor", "holds"):
             t.add_column(col, justify="left" if col == "figure" else "right")
@@ -125,11 +126,16 @@ def print_report(rep: dict[str, Any], out: Any = None) -> None:
                 words.append(f"connect: vehicle heard after {r['heartbeat_s']:.1f} s, AUTOPILOT_VERSION "
                              f"{r['version_s']:.1f} s, parameters {r['params_s']:.1f} s, mission list "
                              f"{r['mission_list_s']:.1f} s")
+            if r.get("ack_wait_s") is not None:
+                late = " (QGroundControl gives up after 1.5 s)" if r["ack_wait_s"] > 1.5 else ""
+                words.append(f"upload: the MISSION_ACK came {r['ack_wait_s']:.1f} s after the last item first "
+                             f"went{late}")
             if r["started"]:
                 words.append(f"{r['param_count']} parameters, {r['param_reads']} re-read by index; "
                              f"{r['upload_restarts']} upload(s) started over after a lost MISSION_ACK; "
                              f"{r['ages']} positions; app commands {r['idle_failed']} + {r['gcs_failed']} "
-                             f"unanswered of {rep['commands']} + {r['gcs_commands']}")
+                             f"unanswered of {rep['commands']} + {r['gcs_commands']}"
+                             + (f"; {r['sticks']} MANUAL_CONTROL sent" if r.get("sticks") else ""))
             words += r["notes"]
             for w in words:
                 console.print(f"{r['mode']}: {w}", markup=False, highlight=False)

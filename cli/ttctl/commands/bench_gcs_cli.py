@@ -56,6 +56,9 @@ def bench_gcs(
     seed: Annotated[int, typer.Option("--seed", help="The relay's random seed.")] = 1,
     gcs_id: Annotated[str, typer.Option("--gcs-id", help="The ground station's SYSID/COMPID (QGroundControl's "
                                                          "default, which is also the tablet's).")] = "255/190",
+    sticks: Annotated[float, typer.Option("--sticks", help="The ground station also sends MANUAL_CONTROL this "
+                                                           "many times a second once it hears the vehicle (a "
+                                                           "joystick; 0: none).", min=0, max=100)] = 0.0,
     only: Annotated[str, typer.Option("--only", help="bridge, naive or both.")] = "both",
     quick: Annotated[bool, typer.Option("--quick", help="A smoke test: 10 items, 4 commands, 20 s steps.")]
     = False,
@@ -79,7 +82,7 @@ def bench_gcs(
     if keep is not None and keep.exists() and (not keep.is_dir() or any(keep.iterdir())):
         raise Fail(f"--keep: {keep} is not a new or empty folder")
     o = Options(_distances(distance), loss, loss_model, items, commands, interval, step_timeout, seed,
-                gcs_id=_ids(gcs_id), json_out=json_out, quick=quick, keep=str(keep) if keep else None,
+                gcs_id=_ids(gcs_id), sticks_hz=sticks, json_out=json_out, quick=quick, keep=str(keep) if keep else None,
                 modes=MODES if only == "both" else (only,))
     if quick:
         o.items, o.commands, o.interval, o.step_timeout = min(items, 10), min(commands, 4), min(interval, 0.5), 20.0
