@@ -102,15 +102,15 @@ class GcsBridge:
             queued = False
             for msg in parser.feed(data):
                 src = (msg.get_srcSystem(), msg.get_srcComponent())
-                carried = self.routes.heard(now, link, source, src)
-                link.confirm(source, {src})  # a listening link answers only who sent valid frames
                 target = getattr(msg, "target_system", 0)
-                if target not in (0, self.vehicle):
+                if target not in (0, self.vehicle):  # (and its sender is no station of ours for it)
                     self.stats.not_carried += 1
                     if target not in self._told_other and len(self._told_other) < 16:
                         self._told_other.add(target)
                         self.log(f"not carrying {msg.NAME} for system {target}: the vehicle here is {self.vehicle}")
                     continue
+                carried = self.routes.heard(now, link, source, src)
+                link.confirm(source, {src})  # a listening link answers only who sent frames it carries
                 if msg.NAME.startswith("MISSION_"):
                     forward, answers, ahead = self.downloads.from_gcs(now, msg, carried)
                     for answer in answers:
