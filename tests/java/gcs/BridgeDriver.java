@@ -1,0 +1,94 @@
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+
+import ttctl.ttapi.Ttapi;
+import ttctl.ttapi.commands.SendTtActionCommand;
+import ttctl.ttapi.enums.TtAction;
+import ttctl.ttapi.runtime.CommandException;
+import ttctl.ttapi.runtime.GcsBridge;
+import ttctl.ttapi.runtime.Session;
+import ttctl.ttapi.runtime.UdpLink;
+
+/**
+ * The tablet app of tests/test_java_bridge.py: a Session on a UdpLink to `ttctl link relay`
+ * (the emulated radio, paced at the uplink's rate) and a GcsBridge on it that sends to the
+ * ground station at 127.0.0.1:GCS_PORT and also listens on LISTEN_PORT.
+ *
+ * Arguments: RELAY_PORT GCS_PORT LISTEN_PORT RATE. Prints "ready"; then reads commands, one a
+ * line: "lat SECONDS" sends the app's own command (TT_ACTION_SYNC_TIME to the onboard end, one
+ * after another) for that long and prints "LAT [ms,...] errors N"; "stats" prints the bridge's
+ * counters; end of input closes the bridge and the session and prints "closed".
+ */
+public final class BridgeDriver {
+    private BridgeDriver() {
+    }
+
+    public static void main(String[] argv) throws Exception {
+        final AtomicInteger uncaught = new AtomicInteger();
+        Thread.setDefaultUncaughtExceptionHandler((t, e) -> {
+            uncaught.incrementAndGet();
+            System.out.println("EVENT uncaught " + t.getName() + " " + e);
+        });
+        int relay = Integer.parseInt(argv[0]);
+        int gcsPort = Integer.parseInt(argv[1]);
+        int listenPort = Integer.parseInt(argv[2]);
+        double rate = Double.parseDouble(argv[3]);
+        UdpLink link = UdpLink.open("127.0.0.1", 0, "127.0.0.1", relay, Ttapi.INSTANCE);
+        Session.Options o = new Session.Options();
+        o.rate = rate;
+        Session session = new Session(link, 255, 190, o).start();
+        final List<String> problems = Collections.synchronizedList(new ArrayList<String>());
+        GcsBridge bridge = GcsBridge.start(session, new GcsBridge.Config()
+                .sendTo("127.0.0.1", gcsPort)
+                .listen("127.0.0.1", listenPort)
+                .onProblem(problems::add));
+        System.out.println("ready " + bridge.port());
+        System.out.flush();
+        BufferedReader in = new BufferedReader(new InputStreamReader(System.in, "UTF-8"));
+        String line;
+        while ((line = in.readLine()) != null) {
+            String[] w = line.trim().split("\\s+");
+            if (w[0].equals("lat")) {
+                long end = System.nanoTime() + (long) (Double.parseDouble(w[1]) * 1e9);
+                List<String> ms = new ArrayList<>();
+                int errors = 0;
+                while (System.nanoTime() < end) {
+                    long t0 = System.nanoTime();
+                    try {
+                        session.submit(new SendTtActionCommand(1, 240, TtAction.TT_ACTION_SYNC_TIME, new float[4],
+                                new byte[48])).get(15, TimeUnit.SECONDS);
+                        ms.add(String.format(Locale.ROOT, "%.1f", (System.nanoTime() - t0) / 1e6));
+                    } catch (java.util.concurrent.ExecutionException e) {
+                        if (e.getCause() instanceof CommandException) {
+                            errors++;
+                            System.out.println("EVENT command " + e.getCause().getMessage());
+                        } else {
+                            throw e;
+                        }
+                    }
+                    Thread.sleep(20);
+                }
+                System.out.println("LAT [" + String.join(",", ms) + "] errors " + errors);
+            } else if (w[0].equals("stats")) {
+                System.out.println(String.format(Locale.ROOT, "STATS carried=%d duplicates=%d overflow=%d replaced=%d "
+                        + "notCarried=%d unknown=%d toGcs=%d radio=%d fromVehicle=%d waiting=%d peak=%d peers=%d "
+                        + "datagrams=%d problems=%d uncaught=%d queued=%d", bridge.carried(), bridge.duplicates(),
+                        bridge.overflow(), bridge.replaced(), bridge.notCarried(), bridge.unknown(), bridge.toGcs(),
+                        bridge.radioStatus(), bridge.fromVehicle(), bridge.waiting(), bridge.peakWaiting(),
+                        bridge.peers(), bridge.datagrams(), problems.size(), uncaught.get(),
+                        session.scheduler().queued()));
+            }
+            System.out.flush();
+        }
+        bridge.close();
+        session.close();
+        System.out.println("closed " + problems);
+        System.out.flush();
+    }
+}
