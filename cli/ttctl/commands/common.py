@@ -61,13 +61,13 @@ def link_choice(rate: float | None, profile: str | None, distance: float, sysid:
     return LinkChoice(send_cap, send_cap, recv_cap, quiet)
 
 
-def parse_endpoint(text: str, udp: str) -> Any:
+def parse_endpoint(text: str, udp: str, option: str = "") -> Any:
     from ..link.transport import TransportError, parse_spec
 
     try:
         return parse_spec(text, udp=udp)
     except TransportError as e:
-        raise Fail(str(e)) from None
+        raise Fail(f"{option} {e}" if option else str(e)) from None
 
 
 def load_signing(key_file: Path | None, accept_unsigned: bool, bindings: Any = None) -> Any:

@@ -41,6 +41,7 @@ class OnboardOptions:
     dialect: Path | None = None
     include_dirs: list[Path] = field(default_factory=list)
     gcs_key: Path | None = None
+    dtt_gcs_share: float = 0.5  # of the DTT downlink, for ground stations behind the tablet
 
 
 def _home(text: str | None) -> Any:
@@ -97,7 +98,7 @@ def emulate_onboard(o: OnboardOptions) -> int:
                         speed=o.speed, rate_Bps=link.pace_Bps, inbound_Bps=link.recv_capacity,
                         telemetry_hz=o.telemetry_hz, orbit_hz=o.orbit_hz,
                         signing=load_signing(o.key, o.accept_unsigned, b),
-                        gcs_signing=_gcs_signing(o.gcs_key, b))
+                        gcs_signing=_gcs_signing(o.gcs_key, b), dtt_gcs_share=o.dtt_gcs_share)
     try:
         plugins = [] if o.no_entry_points else entry_point_plugins()
         for spec in o.plugins:

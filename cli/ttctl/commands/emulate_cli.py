@@ -63,6 +63,10 @@ def emulate_onboard_cmd(
                                                  show_default=False)] = None,
     dialect: DialectOpt = None,
     include: DialectIncludeOpt = None,
+    dtt_gcs_share: Annotated[float, typer.Option("--dtt-gcs-share", help="For ground stations behind the tablet "
+                                                                         "(`emulate tablet --gcs`): the share of the "
+                                                                         "DTT downlink their streams may use.",
+                                                 min=0.05, max=1.0)] = 0.5,
 ) -> None:
     """The onboard computer's end, flying a simulated multicopter: the tablet's DTT link (commands,
     telemetry, files) and ground-station links (HEARTBEAT, telemetry, commands, parameters,
@@ -75,7 +79,8 @@ def emulate_onboard_cmd(
     raise typer.Exit(emulate_onboard(OnboardOptions(listen, gcs or [], no_gcs, sysid, inbox, serve, home, speed,
                                                     rate, profile, distance, plugin or [], no_entry_points,
                                                     telemetry_hz, orbit_hz, key, accept_unsigned, profile_file,
-                                                    dialect, include or [], gcs_key=gcs_key)))
+                                                    dialect, include or [], gcs_key=gcs_key,
+                                                    dtt_gcs_share=dtt_gcs_share)))
 
 
 @emulate_app.command("tablet")
@@ -100,10 +105,19 @@ def emulate_tablet_cmd(
                                                                       "(repeatable): handlers of the vehicle's "
                                                                       "messages, as on the onboard end.",
                                                      show_default=False)] = None,
+    gcs: Annotated[list[str] | None, typer.Option("--gcs", help="Carry a ground station to the vehicle over the link, "
+                                                                "as a telemetry radio does: udpout:HOST:PORT "
+                                                                "(udpout:127.0.0.1:14550 QGroundControl and MAVProxy, "
+                                                                ":14540 MAVSDK) or udpin:HOST:PORT (repeatable).",
+                                                  show_default=False)] = None,
+    gcs_share: Annotated[float, typer.Option("--gcs-share", help="The share of the DTT uplink ground stations' frames "
+                                                                 "may use (the app's commands go first anyway).",
+                                             min=0.05, max=1.0)] = 0.6,
 ) -> None:
     """The tablet's end: commands (take-off, land, hover, return, set-points, trajectories),
     files both ways, any message of the --dialect (msg NAME field=value) and the vehicle's state
-    and messages, from a prompt (history, completion) or a --script.
+    and messages, from a prompt (history, completion) or a --script. With --gcs, ground stations
+    fly the same vehicle through it meanwhile, and it runs until interrupted.
 
     Example: ttctl emulate tablet --to udpout:127.0.0.1:14560 --script flight.yaml
     """
@@ -112,4 +126,5 @@ def emulate_tablet_cmd(
     raise typer.Exit(emulate_tablet(TabletOptions(to, script, json_out, folder, rate, profile, distance,
                                                   target_sysid, key=key, accept_unsigned=accept_unsigned,
                                                   profile_file=profile_file, dialect=dialect,
-                                                  include_dirs=include or [], plugins=plugin or [])))
+                                                  include_dirs=include or [], plugins=plugin or [],
+                                                  gcs=gcs or [], gcs_share=gcs_share)))

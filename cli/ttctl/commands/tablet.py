@@ -43,6 +43,8 @@ class TabletOptions:
     dialect: Path | None = None
     include_dirs: list[Path] = field(default_factory=list)
     plugins: list[str] = field(default_factory=list)
+    gcs: list[str] = field(default_factory=list)
+    gcs_share: float = 0.6
 
 
 def _prompt_msg(text: str) -> Any:
@@ -113,8 +115,16 @@ def _emulate_tablet(o: TabletOptions) -> int:
 
     check_id(o.target_sysid, "--target-sysid")
     spec = parse_endpoint(o.to, "udpout")
+    gcs = [parse_endpoint(g, "udpout", "--gcs") for g in o.gcs]
     link = link_choice(o.rate, o.profile, o.distance, 255, o.profile_file)
     b = load_bindings(o.dialect, o.include_dirs)  # before the plugins: they import its package
+    if gcs:
+        for name in ("HEARTBEAT", "RADIO_STATUS", "COMMAND_LONG"):
+            try:
+                b.message(name)
+            except KeyError:
+                raise Fail(f"--gcs: dialect {b.name} has no {name}: ground stations speak common.xml's "
+                           "messages (include it, or ttapi.xml, which brings it)") from None
     plugins = []
     try:
         for p in o.plugins:
@@ -131,12 +141,13 @@ def _emulate_tablet(o: TabletOptions) -> int:
         except StepError as e:
             raise Fail(f"--script {o.script}: {e}") from None
     try:
-        return asyncio.run(_run(o, b, spec, link, steps, plugins))
+        return asyncio.run(_run(o, b, spec, link, steps, plugins, gcs))
     except KeyboardInterrupt:
         return 130
 
 
-async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any, plugins: list[Any]) -> int:
+async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any, plugins: list[Any],
+               gcs: list[Any]) -> int:
     from ..ends.tablet.session import TabletSession
     from ..ends.tablet.steps import StepError, run_step
     from ..link.transport import TransportError
@@ -160,7 +171,7 @@ async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any, plugi
     try:
         s = TabletSession(b, spec, (o.target_sysid, ONBOARD[1]), rate_Bps=link.pace_Bps, inbox=o.dir,
                           on_event=event, log=err, signing=load_signing(o.key, o.accept_unsigned, b),
-                          plugins=plugins)
+                          plugins=plugins, gcs=gcs, gcs_share=o.gcs_share)
     except PluginError as e:
         raise Fail(f"--plugin {e}") from None
     try:
@@ -168,6 +179,8 @@ async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any, plugi
             await s.start()
         except (TransportError, StorageError) as e:
             raise Fail(str(e)) from None
+        if s.bridge is not None:
+            err(f"tablet: carrying ground stations at {s.bridge.describe()} to vehicle {o.target_sysid}")
         end = loop.time() + o.connect_timeout
         first: float | None = None  # when the first frame of the vehicle came
         while s.vehicle.state == "unknown":  # connected once a HEARTBEAT said what the vehicle is doing
@@ -203,11 +216,23 @@ async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any, plugi
                                       "result": words}), flush=True)
                 else:
                     print(f"step {i} {step.describe()}: {words}", flush=True)
-            return 0
-        return await _prompt(s, sigs, base, b, o.as_json)
+            return await _carry_on(s, sigs, 0)
+        return await _carry_on(s, sigs, await _prompt(s, sigs, base, b, o.as_json))
     finally:
         sigs.remove()
+        if s.bridge is not None:
+            err(f"tablet: {s.bridge.summary()}")
         await s.close()
+
+
+async def _carry_on(s: Any, sigs: Signals, code: int) -> int:
+    """With ground stations behind the tablet (--gcs), the end of the script or of the prompt's
+    input is not the end of the session: it carries them until interrupted."""
+    if s.bridge is None or code != 0 or sigs.stop.is_set():
+        return code
+    err("tablet: still carrying ground stations (Ctrl-C ends)")
+    await sigs.stop.wait()
+    return 0
 
 
 def heard_note(s: Any) -> str:

@@ -88,7 +88,8 @@ class Endpoint:
                  on_message: Callable[[float, Any], None] | None = None,
                  on_event: Callable[[str, Any], None] | None = None, accept_commands: bool = True,
                  unsolicited: bool = True, rng: random.Random | None = None, compress: bool = True,
-                 inflate: bool = True, inbound_Bps: float | None = None) -> None:
+                 inflate: bool = True, inbound_Bps: float | None = None,
+                 divert: Callable[[float, Any], bool] | None = None) -> None:
         self.b = bindings
         self.sysid = sysid
         self.compid = compid
@@ -121,6 +122,7 @@ class Endpoint:
         self.clock_ms = clock_ms or (lambda now: int(now * 1000))  # TT_LOG.time_boot_ms
         self._log_id = 0
         self.on_message = on_message
+        self.divert = divert  # sees each frame first (but file data); True: it took the frame (ground stations')
         self.on_event = on_event
         self.now = 0.0
         self.ignored = 0
@@ -273,11 +275,12 @@ class Endpoint:
             s.owns_source = False
 
     def add_stream(self, stream: Any) -> None:
-        """A newest-wins message source (hmd.stream.PoseStream: `pull(now, space)` -> message or
-        None, `has_data(now)`, `deadline(now)`), pulled like file data when a packet may leave."""
+        """A newest-wins message source (hmd.stream.PoseStream: `pull(now, space)` -> message, a
+        frame already encoded, or None; `has_data(now)`, `deadline(now)`), pulled like file data
+        when a packet may leave."""
         def pull(now: float, space: int) -> bytes | None:
             msg = stream.pull(now, space)
-            return None if msg is None else self.encoder.encode(msg)
+            return msg if msg is None or isinstance(msg, bytes) else self.encoder.encode(msg)
 
         self._streams_out.append(stream)
         self.scheduler.add_source(pull)
@@ -380,6 +383,8 @@ class Endpoint:
         if isinstance(msg, (b.TtFileData, b.TtFileDataWide)):
             if self.receiver is not None:
                 self.receiver.on_data(now, msg, WIDE if isinstance(msg, b.TtFileDataWide) else NARROW)
+            return
+        if self.divert is not None and self.divert(now, msg):
             return
         if not self._for_us(msg):
             self.ignored += 1

@@ -27,6 +27,7 @@ from ...wire.contract import TtResult as RES
 from ..plugins import Context, Dispatcher, Plugin
 from ..runtime import Runner, unknown_note
 from .autopilot import TABLET, Autopilot
+from .dtt_gcs import DTT, DttGroundStations
 from .gcs import GroundStations
 from .setpoints import SetpointDesk
 from .trajectory import TrajectoryError, parse_trajectory
@@ -53,6 +54,7 @@ class OnboardConfig:
     orbit_hz: float = 10.0  # the orbit camera's publishing rate while head poses arrive (0: no orbit camera)
     signing: Any = None  # Signing for the DTT link (None: unsigned, signed frames unverified)
     gcs_signing: Any = None  # Signing for the ground-station links (every frame signed, only signed ones taken)
+    dtt_gcs_share: float = 0.5  # of the DTT downlink, for the streams of ground stations behind the tablet
 
 
 class OnboardNode:
@@ -73,6 +75,8 @@ class OnboardNode:
         self.gcs = GroundStations(bindings, self.ap, cfg.sysid, AUTOPILOT_COMPID, unix=self._unix, log=self.log)
         self.gcs_encoder = bindings.encoder(cfg.sysid, AUTOPILOT_COMPID, cfg.gcs_signing)
         self.gcs_links: list[Transport] = []
+        self.dtt_gcs = DttGroundStations(bindings, self.gcs, cfg.sysid, AUTOPILOT_COMPID, cfg.dtt_gcs_share,
+                                         cfg.rate_Bps)
         self._gcs_parsers: dict[Hashable, Any] = {}
         self.dispatcher = Dispatcher(on_error=self._plugin_error, dialect=bindings)
         from .orbit_camera import OrbitCameraPlugin
@@ -273,7 +277,8 @@ class OnboardNode:
                                      serve_dir=str(self.cfg.serve) if self.cfg.serve else None,
                                      action=self.tablet_action, on_message=self._on_tablet_message,
                                      on_event=self._file_event, signing=self.cfg.signing,
-                                     clock_ms=lambda now: int(self.vehicle_time * 1000))
+                                     clock_ms=lambda now: int(self.vehicle_time * 1000), divert=self._from_dtt_gcs)
+            self.dtt_gcs.attach(self.endpoint)
             self.runner = Runner(self.endpoint, transport, probes=self._probes(transport))
             await self.runner.start()
         if store is not None:
@@ -339,12 +344,31 @@ class OnboardNode:
             self.gcs.on_message(now, msg, link)
         self._wake.set()
 
+    def _from_dtt_gcs(self, now: float, msg: Any) -> bool:
+        """A ground station's frame over DTT (dtt_gcs.py): the vehicle takes it as on its own links."""
+        if not self.dtt_gcs.takes(msg):
+            return False
+        self.dtt_gcs.heard(now)
+        self.gcs.on_message(self._wall(), msg, DTT)
+        self._wake.set()
+        return True
+
     def _send_gcs(self, pairs: list[tuple[Any, Hashable]]) -> None:
+        now = asyncio.get_running_loop().time()
+        behind_tablet = self.dtt_gcs.present(now)
         for msg, link in pairs:
+            if link is DTT or (link is None and behind_tablet):
+                self.dtt_gcs.send(now, msg, link is None)
+                if link is DTT:
+                    continue
+            if not self.gcs_links:
+                continue
             frame = self.gcs_encoder.encode(msg)
             for t in self.gcs_links:
                 if link is None or link is t:
                     t.send(frame)
+        if behind_tablet and self.runner is not None:
+            self.runner.kick()
 
     async def run(self, stop: asyncio.Event) -> None:
         loop = asyncio.get_running_loop()

@@ -22,6 +22,7 @@ from ...wire.bindings import Bindings
 from ...wire.contract import RUNTIME_MESSAGES, TtAction
 from ..plugins import Context, Dispatcher, Plugin
 from ..runtime import Runner
+from .gcs_bridge import GcsBridge
 
 TABLET = (255, 190)
 LINK_TIMEOUT = 3.5  # s without a frame from the vehicle: the link is lost (QGroundControl's figure, for heartbeats)
@@ -70,7 +71,8 @@ class TabletSession:
                  rate_Bps: float | None = None, inbox: Path | None = None, timeout: float = 60.0,
                  on_event: Callable[[str, dict[str, Any]], None] | None = None,
                  log: Callable[[str], None] | None = None, signing: Any = None,
-                 plugins: list[Plugin] | None = None) -> None:
+                 plugins: list[Plugin] | None = None, gcs: list[Spec] | None = None,
+                 gcs_share: float | None = None) -> None:
         self.b = bindings
         self.spec = spec
         self.target = target
@@ -80,10 +82,14 @@ class TabletSession:
         self.log = log or (lambda text: None)
         self.store = ReceiveDir(inbox) if inbox is not None else None
         self.transport = make_transport(spec, log=lambda text: self.log(f"{spec.kind}: {text}"))
+        self.bridge: GcsBridge | None = None  # ground stations carried to the vehicle (--gcs)
+        if gcs:
+            self.bridge = GcsBridge(bindings, gcs, target[0], rate_Bps,
+                                    **({"share": gcs_share} if gcs_share else {}), log=self.log)
         self.ep = Endpoint(bindings, *TABLET, mtu=self.transport.mtu, rate_Bps=rate_Bps, receive_dir=self.store,
                            config=TransferConfig(give_up_after=timeout), on_message=self._on_message,
                            on_event=self._on_file_event, accept_commands=False, unsolicited=False,
-                           signing=signing)
+                           signing=signing, divert=self.bridge.divert if self.bridge else None)
         self.runner = Runner(self.ep, self.transport)  # its own heartbeats make it known (udpout)
         self._changed = asyncio.Event()
         self._file_events: dict[Any, str] = {}
@@ -104,6 +110,8 @@ class TabletSession:
     # -- life --------------------------------------------------------------------------------------
     async def start(self) -> None:
         await self.runner.start()
+        if self.bridge is not None:
+            await self.bridge.start(self.ep, self.runner.kick)
         if self.store is not None:
             self.store.prepare()
         self.link.started = asyncio.get_running_loop().time()
@@ -154,6 +162,8 @@ class TabletSession:
                 p.stop()
         if self._hb_task is not None:
             self._hb_task.cancel()
+        if self.bridge is not None:
+            self.bridge.close()
         self.ep.close()
         await self.runner.close()
         if self.store is not None:

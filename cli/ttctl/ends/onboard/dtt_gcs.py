@@ -1,0 +1,66 @@
+"""Ground stations behind the tablet: their frames come over the DTT link (the tablet's bridge,
+`emulate tablet --gcs`, or the Java runtime's GcsBridge) and the vehicle answers them there as on
+its own ground-station links, as the autopilot (compid 1).
+
+Which DTT frames are a ground station's: bridge/classes.py. While one was heard within PRESENCE
+seconds, the vehicle's broadcasts go down DTT too: its streams newest-wins per type, fitted to
+`share` of the downlink (bridge/downfit.py), everything else (acks, parameters, mission items,
+STATUSTEXT) at control priority, never dropped.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ...bridge.classes import PRESENCE, from_ground_station
+from ...bridge.downfit import StreamFit
+from ...proto.endpoint import CONTROL, Endpoint
+from ...wire.bindings import Bindings
+from .gcs import GroundStations
+
+DTT = "dtt"  # the ground stations' link key for those behind the tablet
+
+
+class DttGroundStations:
+    def __init__(self, b: Bindings, gcs: GroundStations, sysid: int, compid: int, share: float,
+                 downlink_Bps: float | None) -> None:
+        self.b = b
+        self.gcs = gcs
+        self.encoder = b.encoder(sysid, compid)  # unsigned: the DTT scheduler signs as frames leave
+        self.fit = StreamFit(share * downlink_Bps if downlink_Bps else None,
+                             asked=lambda mid: gcs.rates.interval.get(mid), encode=self.encoder.encode)
+        self.endpoint: Endpoint | None = None
+        self.heard_at: float | None = None  # loop time of the last ground-station frame over DTT
+        self.frames_in = 0
+        self.frames_out = 0
+
+    def attach(self, endpoint: Endpoint) -> None:
+        self.endpoint = endpoint
+        endpoint.add_stream(self.fit)
+
+    def takes(self, msg: Any) -> bool:
+        b = self.b
+        gcs_type = isinstance(msg, b.Heartbeat) and msg.type == b.MavType.MAV_TYPE_GCS
+        return from_ground_station(msg.NAME, (msg.get_srcSystem(), msg.get_srcComponent()), gcs_type)
+
+    def heard(self, now: float) -> None:
+        self.heard_at = now
+        self.frames_in += 1
+
+    def present(self, now: float) -> bool:
+        return self.heard_at is not None and now - self.heard_at <= PRESENCE
+
+    def send(self, now: float, msg: Any, broadcast: bool) -> None:
+        """A frame for the ground stations behind the tablet (`broadcast`: for every one)."""
+        if self.endpoint is None:
+            return
+        b = self.b
+        msgid = msg.MSG_ID
+        if broadcast and msgid in self.gcs.rates.builders:
+            self.fit.put(now, msgid, msg)  # a stream: newest wins, fitted
+            return
+        if isinstance(msg, b.MessageInterval):  # the interval this link keeps, not the one asked
+            msg = b.MessageInterval(message_id=msg.message_id,
+                                    interval_us=int(self.fit.interval_us(msg.message_id, msg.interval_us)))
+        self.endpoint.scheduler.send(self.encoder.encode(msg), CONTROL)
+        self.frames_out += 1

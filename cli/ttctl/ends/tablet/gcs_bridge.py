@@ -1,0 +1,167 @@
+"""The tablet end as a telemetry radio for ground stations: `emulate tablet --gcs ENDPOINT`.
+
+QGroundControl, MAVProxy, MAVSDK connect to the tablet's ground-station links as to a radio, and
+see the vehicle behind the onboard end (its autopilot, compid 1) over the DTT link. The rules
+are sans-IO in ttctl.bridge (uplink.py: the queue toward the vehicle, routes.py: who gets what
+back, RADIO_STATUS); this is their wiring on the event loop: a transport per ground-station link,
+the tablet's Endpoint pulling the uplink queue as a bulk source (below the app's own commands)
+and handing over every frame the vehicle sends to ground stations (`divert`).
+"""
+
+from __future__ import annotations
+
+import asyncio
+from collections.abc import Callable, Hashable
+from dataclasses import dataclass
+from typing import Any
+
+from ...bridge.classes import ONBOARD_COMPID, RADIO_COMPID
+from ...bridge.routes import Routes
+from ...bridge.uplink import MAX_PROTOCOL, GcsUplink
+from ...link.transport import Spec, Transport, make_transport
+from ...proto.endpoint import Endpoint
+from ...wire.bindings import Bindings
+
+SHARE = 0.6  # of the DTT uplink, for ground stations' frames (the app's commands go first anyway)
+RADIO_PERIOD = 1.0
+TXBUF_BYTES = MAX_PROTOCOL * 60  # RADIO_STATUS.txbuf: 100 % free when nothing waits
+
+
+@dataclass
+class BridgeStats:
+    up: int = 0  # frames from ground stations queued toward the vehicle
+    down: int = 0  # frames from the vehicle passed to ground stations
+    not_carried: int = 0  # frames for another system
+    radio_status: int = 0
+
+
+class GcsBridge:
+    def __init__(self, b: Bindings, specs: list[Spec], vehicle_sysid: int, uplink_Bps: float | None,
+                 share: float = SHARE, log: Callable[[str], None] | None = None) -> None:
+        self.b = b
+        self.specs = specs
+        self.vehicle = vehicle_sysid
+        self.log = log or (lambda text: None)
+        self.routes = Routes(vehicle_sysid)
+        self.uplink = GcsUplink(share * uplink_Bps if uplink_Bps else None)
+        self.links: list[Transport] = []
+        self._parsers: dict[tuple[Hashable, Hashable], Any] = {}
+        self.radio = b.encoder(vehicle_sysid, RADIO_COMPID)
+        self.stats = BridgeStats()
+        self.ep: Endpoint | None = None
+        self.kick: Callable[[], None] = lambda: None
+        self._task: asyncio.Task[None] | None = None
+        self._told_other: set[int] = set()
+
+    async def start(self, ep: Endpoint, kick: Callable[[], None]) -> None:
+        self.ep, self.kick = ep, kick
+        ep.add_stream(self.uplink)
+        for spec in self.specs:
+            t = make_transport(spec, log=self._logger(spec), mtu=65535)
+            t.on_receive = self._receiver(t)
+            t.on_close = self._closer(t)
+            await t.open()
+            self.links.append(t)
+            if spec.kind in ("udpout", "tcp"):
+                self.routes.fixed.append(t)
+        self._task = asyncio.get_running_loop().create_task(self._radio_status())
+
+    def _logger(self, spec: Spec) -> Callable[[str], None]:
+        return lambda text: self.log(f"gcs {spec}: {text}")
+
+    def _closer(self, link: Transport) -> Callable[[Hashable], None]:
+        """A TCP ground station left: its parser (and any half frame in it) goes with it."""
+        def closed(source: Hashable) -> None:
+            self._parsers.pop((link, source), None)
+
+        return closed
+
+    def close(self) -> None:
+        if self._task is not None:
+            self._task.cancel()
+        for t in self.links:
+            t.close()
+
+    def describe(self) -> str:
+        return ", ".join(t.describe() for t in self.links)
+
+    # -- ground stations -> vehicle ---------------------------------------------------------------
+    def _receiver(self, link: Transport) -> Callable[[bytes, Hashable], None]:
+        def receive(data: bytes, source: Hashable) -> None:
+            parser = self._parsers.get((link, source))
+            if parser is None:
+                parser = self._parsers[(link, source)] = self.b.parser()
+            now = asyncio.get_running_loop().time()
+            queued = False
+            for msg in parser.feed(data):
+                src = (msg.get_srcSystem(), msg.get_srcComponent())
+                carried = self.routes.heard(now, link, source, src)
+                link.confirm(source, {src})  # a listening link answers only who sent valid frames
+                target = getattr(msg, "target_system", 0)
+                if target not in (0, self.vehicle):
+                    self.stats.not_carried += 1
+                    if target not in self._told_other and len(self._told_other) < 16:
+                        self._told_other.add(target)
+                        self.log(f"not carrying {msg.NAME} for system {target}: the vehicle here is {self.vehicle}")
+                    continue
+                self.uplink.put(now, msg.NAME, msg.pack(msg.get_seq(), *carried))
+                self.stats.up += 1
+                queued = True
+            if queued:
+                self.kick()
+
+        return receive
+
+    # -- vehicle -> ground stations ----------------------------------------------------------------
+    def divert(self, now: float, msg: Any) -> bool:
+        """The tablet's Endpoint hands every frame over first: the vehicle's frames for ground
+        stations (its sysid, any component but the onboard end's) are taken here."""
+        sysid, compid = msg.get_srcSystem(), msg.get_srcComponent()
+        if sysid != self.vehicle or compid == ONBOARD_COMPID:
+            return False
+        loop_now = asyncio.get_running_loop().time()
+        self.routes.vehicle_frame(loop_now, compid, msg.get_seq())
+        target = None
+        if hasattr(msg, "target_system"):
+            target = (int(msg.target_system), int(getattr(msg, "target_component", 0) or 0))
+        dests, own = self.routes.destinations(loop_now, target)
+        if own is not None:
+            msg.target_system = own[0]
+            if getattr(msg, "target_component", 0):
+                msg.target_component = own[1]
+        frame = msg.pack(msg.get_seq(), sysid, compid)
+        for link, address in dests:
+            self._send(link, address, frame)
+        self.stats.down += 1
+        return True
+
+    @staticmethod
+    def _send(link: Any, address: Hashable, frame: bytes) -> None:
+        if address is not None and hasattr(link, "send_to"):
+            link.send_to(frame, address)
+        else:
+            link.send(frame)
+
+    async def _radio_status(self) -> None:
+        """RADIO_STATUS to every ground station once a second, as SiK radios and mLRS send it:
+        the link's quality from the vehicle's frames that arrived, the uplink queue's room."""
+        loop = asyncio.get_running_loop()
+        b = self.b
+        while True:
+            now = loop.time()
+            q = self.routes.quality(now)
+            free = max(0, min(100, round(100 * (1 - self.uplink.waiting_bytes / TXBUF_BYTES))))
+            msg = b.RadioStatus(rssi=q, remrssi=q, txbuf=free, noise=0, remnoise=0,
+                                rxerrors=self.routes.lost & 0xFFFF, fixed=self.uplink.stats.overflow & 0xFFFF)
+            frame = self.radio.encode(msg)
+            dests, _ = self.routes.destinations(now, None)
+            for link, address in dests:
+                self._send(link, address, frame)
+            self.stats.radio_status += 1
+            await asyncio.sleep(RADIO_PERIOD)
+
+    def summary(self) -> str:
+        u = self.uplink.stats
+        return (f"ground stations: {self.stats.up} frames up ({u.sent} sent, {u.duplicates} retries dropped as "
+                f"duplicates, {u.replaced} overtaken by newer, {u.overflow} dropped for room, "
+                f"{self.stats.not_carried} for other systems not carried), {self.stats.down} down")
