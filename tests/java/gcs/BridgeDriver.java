@@ -6,10 +6,12 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
 
 import ttctl.ttapi.Ttapi;
 import ttctl.ttapi.commands.SendTtActionCommand;
 import ttctl.ttapi.enums.TtAction;
+import ttctl.ttapi.runtime.CommandContext;
 import ttctl.ttapi.runtime.CommandException;
 import ttctl.ttapi.runtime.GcsBridge;
 import ttctl.ttapi.runtime.Session;
@@ -22,7 +24,9 @@ import ttctl.ttapi.runtime.UdpLink;
  *
  * Arguments: RELAY_PORT GCS_PORT LISTEN_PORT RATE. Prints "ready"; then reads commands, one a
  * line: "lat SECONDS" sends the app's own command (TT_ACTION_SYNC_TIME to the onboard end, one
- * after another) for that long and prints "LAT [ms,...] errors N"; "stats" prints the bridge's
+ * after another) for that long and prints "LAT [ms,...] TRY [ms,...] errors N": each command's
+ * time to its ack, and the time from its last try to the ack (the round trip through the link
+ * as loaded, whatever tries the radio's loss cost); "stats" prints the bridge's
  * counters; end of input closes the bridge and the session and prints "closed".
  */
 public final class BridgeDriver {
@@ -57,13 +61,24 @@ public final class BridgeDriver {
             if (w[0].equals("lat")) {
                 long end = System.nanoTime() + (long) (Double.parseDouble(w[1]) * 1e9);
                 List<String> ms = new ArrayList<>();
+                List<String> lastTry = new ArrayList<>();
                 int errors = 0;
                 while (System.nanoTime() < end) {
                     long t0 = System.nanoTime();
+                    final AtomicLong tried = new AtomicLong(t0);
+                    SendTtActionCommand c = new SendTtActionCommand(1, 240, TtAction.TT_ACTION_SYNC_TIME,
+                            new float[4], new byte[48]) {
+                        @Override
+                        protected void attempt(CommandContext ctx, int attempt) throws Exception {
+                            tried.set(System.nanoTime());
+                            super.attempt(ctx, attempt);
+                        }
+                    };
                     try {
-                        session.submit(new SendTtActionCommand(1, 240, TtAction.TT_ACTION_SYNC_TIME, new float[4],
-                                new byte[48])).get(15, TimeUnit.SECONDS);
-                        ms.add(String.format(Locale.ROOT, "%.1f", (System.nanoTime() - t0) / 1e6));
+                        session.submit(c).get(15, TimeUnit.SECONDS);
+                        long t1 = System.nanoTime();
+                        ms.add(String.format(Locale.ROOT, "%.1f", (t1 - t0) / 1e6));
+                        lastTry.add(String.format(Locale.ROOT, "%.1f", (t1 - tried.get()) / 1e6));
                     } catch (java.util.concurrent.ExecutionException e) {
                         if (e.getCause() instanceof CommandException) {
                             errors++;
@@ -74,11 +89,12 @@ public final class BridgeDriver {
                     }
                     Thread.sleep(20);
                 }
-                System.out.println("LAT [" + String.join(",", ms) + "] errors " + errors);
+                System.out.println("LAT [" + String.join(",", ms) + "] TRY [" + String.join(",", lastTry) + "] errors "
+                        + errors);
             } else if (w[0].equals("stats")) {
-                System.out.println(String.format(Locale.ROOT, "STATS carried=%d duplicates=%d overflow=%d replaced=%d "
+                System.out.println(String.format(Locale.ROOT, "STATS carried=%d carriedBytes=%d duplicates=%d overflow=%d replaced=%d "
                         + "notCarried=%d unknown=%d toGcs=%d radio=%d fromVehicle=%d waiting=%d peak=%d peers=%d "
-                        + "datagrams=%d problems=%d uncaught=%d queued=%d", bridge.carried(), bridge.duplicates(),
+                        + "datagrams=%d problems=%d uncaught=%d queued=%d", bridge.carried(), bridge.carriedBytes(), bridge.duplicates(),
                         bridge.overflow(), bridge.replaced(), bridge.notCarried(), bridge.unknown(), bridge.toGcs(),
                         bridge.radioStatus(), bridge.fromVehicle(), bridge.waiting(), bridge.peakWaiting(),
                         bridge.peers(), bridge.datagrams(), problems.size(), uncaught.get(),

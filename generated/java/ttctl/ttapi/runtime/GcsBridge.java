@@ -606,6 +606,13 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
         }
     }
 
+    /** Bytes of the frames that went up the link (unsigned: signing adds 13 a frame). */
+    public long carriedBytes() {
+        synchronized (lock) {
+            return uplink.pulledBytes();
+        }
+    }
+
     /** Frames dropped as a ground station's retry of a frame still waiting. */
     public long duplicates() {
         synchronized (lock) {

@@ -53,6 +53,7 @@ public final class GcsUplink {
     private long replaced;
     private long overflow;
     private long pulled;
+    private long pulledBytes;
 
     /** A queue whose frames leave at most {@code bytesPerSecond} (0: unlimited), bursts of {@code burstBytes}. */
     public GcsUplink(double bytesPerSecond, int burstBytes) {
@@ -148,6 +149,7 @@ public final class GcsUplink {
         }
         waitingBytes -= f.length;
         pulled++;
+        pulledBytes += f.length;
         return f;
     }
 
@@ -200,6 +202,11 @@ public final class GcsUplink {
     /** Frames that went (handed to the link's scheduler). */
     public long pulled() {
         return pulled;
+    }
+
+    /** Bytes of the frames that went. */
+    public long pulledBytes() {
+        return pulledBytes;
     }
 
     /** Drops everything waiting. */
