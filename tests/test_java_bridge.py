@@ -35,13 +35,15 @@ def test_bridge_rules_without_a_vehicle(classes: Path) -> None:
     """Retries of a waiting frame dropped, NEWEST slots replaced in place, PROTOCOL first, 64 + 64
     frames at most, the budget at 300 B/s over 10 virtual seconds; the clashing 255/190 ground
     station carried as 254/190 and its answer given back to 255; a command for system 7 and
-    garbage not carried; RADIO_STATUS within a second and a half; a port in use refused."""
+    garbage not carried; RADIO_STATUS within a second and a half; a port in use refused; on a
+    signed link the scheduler signs the ground stations' frames."""
     proc = subprocess.run(["java", "-cp", str(classes), "GcsCheck"], capture_output=True, text=True, timeout=60)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     frames = {ln.split()[1]: bytes.fromhex(ln.split()[2]) for ln in proc.stdout.splitlines()
               if ln.startswith("FRAME ")}
     result = dict(kv.split("=") for kv in proc.stdout.splitlines()[-1].split()[1:])
     assert 3000 <= int(result["budget_bytes"]) <= 3200 and result["busy"] == "refused", result
+    assert result["signed"] == "3", result
     mav = _mav()
     moved = mav.parse_char(frames["resourced"])  # the CRC recomputed: pymavlink accepts it
     assert moved.get_type() == "COMMAND_LONG" and moved.get_srcSystem() == 254 and moved.get_srcComponent() == 190

@@ -23,6 +23,7 @@ import ttctl.ttapi.runtime.Link;
 import ttctl.ttapi.runtime.LinkScheduler;
 import ttctl.ttapi.runtime.MavlinkMessage;
 import ttctl.ttapi.runtime.Parser;
+import ttctl.ttapi.runtime.Signing;
 
 /**
  * The ground-station bridge's rules without a vehicle (tests/test_java_bridge.py): the sans-IO
@@ -287,10 +288,46 @@ public final class GcsCheck {
         gcs.close();
     }
 
+    /** On a signed link the scheduler signs the ground stations' frames as they leave (rule 6). */
+    static void signed() throws Exception {
+        final Signing signing = new Signing(Signing.keyFromPassphrase("our secret"), 1, false);
+        Recording link = new Recording();
+        LinkScheduler sched = new LinkScheduler(link, 0).setSigner(signing::sign).start();
+        GcsBridge bridge = GcsBridge.start(link, sched, new GcsBridge.Config().listen("127.0.0.1", 0));
+        DatagramSocket gcs = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
+        InetSocketAddress to = new InetSocketAddress("127.0.0.1", bridge.port());
+        for (int i = 0; i < 3; i++) {
+            byte[] f = command(i, 1, i); // unsigned from the ground station
+            gcs.send(new DatagramPacket(f, f.length, to));
+        }
+        long deadline = System.currentTimeMillis() + 3000;
+        while (bridge.carried() < 3 && System.currentTimeMillis() < deadline) {
+            Thread.sleep(10);
+        }
+        Thread.sleep(100);
+        Parser verifying = new Parser(Ttapi.INSTANCE, new Signing(Signing.keyFromPassphrase("our secret"), 2, false));
+        int n = 0;
+        synchronized (link.packets) {
+            for (byte[] pk : link.packets) {
+                for (MavlinkMessage m : verifying.feed(pk)) {
+                    check(m.signed() && m instanceof CommandLong, "a signed command: " + m.name());
+                    n++;
+                }
+            }
+        }
+        check(n == 3 && verifying.stats().badSignature() == 0, "3 commands signed and verified: " + n + " "
+              + verifying.stats());
+        RESULT.add("signed=" + n);
+        bridge.close();
+        sched.close();
+        gcs.close();
+    }
+
     public static void main(String[] argv) throws Exception {
         uplink();
         rules(new Parser(Ttapi.INSTANCE));
         bridge();
+        signed();
         System.out.println("RESULT " + String.join(" ", RESULT));
     }
 }
