@@ -31,6 +31,7 @@ pytestmark = pytest.mark.skipif(not (shutil.which("javac") and shutil.which("jav
 os.environ["MAVLINK20"] = "1"
 from pymavlink import mavutil  # noqa: E402  (MAVLINK20 must be set first)
 
+RELAY = ("--profile", "m100", "--loss", "0.1", "--seed", "5", "--stats-interval", "0")
 RATE = 480  # B/s: the app's pace into the relay's m100 uplink (500 B/s at 10 m)
 ACCEPTED = 0
 DENIED = 2
@@ -154,16 +155,28 @@ def test_java_bridge_flies_for_pymavlink(classes: Path, tmp_path: Path, start: S
     arms and takes off (COMMAND_ACK ACCEPTED, the altitude rising), uploads a 5-item mission; a
     second ground station on the listening port gets its own answers; garbage and frames for
     system 7 change nothing; a 5-second flood of 50 Hz MANUAL_CONTROL and PARAM_REQUEST_LIST
-    leaves the app's command latency within its idle p95 + 200 ms and the bridge's queue bounded."""
+    leaves the app's command latency within its idle p95 + 200 ms and the bridge's queue bounded;
+    the radio killed for 6 s shows as RADIO_STATUS rssi 0 and no HEARTBEAT, and both return with it."""
     a, b, gcs_port, listen = free_port(), free_port(), free_port(), free_port()
     node = start("onboard", "emulate", "onboard", "--no-gcs", "--listen", f"udpin:{LOCAL}:{b}", "--no-entry-points",
                  "--profile", "m100")
     node.wait_for("onboard 1:")
-    relay(start, a, b, "--profile", "m100", "--loss", "0.1", "--seed", "5", "--stats-interval", "0")
+    radio = [relay(start, a, b, *RELAY)]
+
+    def outage(seconds: float) -> float:
+        """Kills the relay (the radio), then starts it again on the same ports; the time it died."""
+        radio[-1].kill()
+        died = time.monotonic()
+        qgc.pump(seconds)
+        radio.append(start("relay2", "link", "relay", "--listen", f"udp:{LOCAL}:{a}", "--to", f"udp:{LOCAL}:{b}",
+                           *RELAY, "--seed", "6"))  # the same loss, not the same losses again
+        radio[-1].wait_for("relay: udpin")
+        return died
+
     qgc = Gcs(f"udpin:{LOCAL}:{gcs_port}", 255, 190)
     drv = Driver(classes, tmp_path, a, gcs_port, listen)
     try:
-        _fly(qgc, drv, listen)
+        _fly(qgc, drv, listen, outage)
     finally:
         if drv.p.poll() is None:
             out = drv.close()
@@ -171,7 +184,7 @@ def test_java_bridge_flies_for_pymavlink(classes: Path, tmp_path: Path, start: S
         qgc.m.close()
 
 
-def _fly(qgc: Gcs, drv: Driver, listen: int) -> None:
+def _fly(qgc: Gcs, drv: Driver, listen: int, outage: Callable[[float], float]) -> None:
     t0 = time.monotonic()
     hb = qgc.wait(lambda m: m.get_type() == "HEARTBEAT" and (m.get_srcSystem(), m.get_srcComponent()) == (1, 1), 20)
     assert hb is not None, [m.get_type() for _, m in qgc.seen][-20:]
@@ -257,12 +270,25 @@ def _fly(qgc: Gcs, drv: Driver, listen: int) -> None:
     assert span > 5 and 0.7 * span <= len(radio) - 1 <= 1.3 * span + 1, (len(radio), span)
     assert all(m.rssi == m.remrssi and 150 <= m.rssi <= 254 for _, m in radio[2:]), [m.rssi for _, m in radio]
 
+    # the radio lost for 6 s: RADIO_STATUS says rssi 0 within 3.5 s (+ its second) and the
+    # vehicle's HEARTBEATs stop; when it returns, both come back
+    died = outage(6.0)
+    after_death = [(t, m) for t, m in qgc.seen if t > died]
+    zero = [t - died for t, m in after_death if m.get_type() == "RADIO_STATUS" and m.rssi == 0]
+    assert zero and zero[0] <= 3.5 + 1.2, [(round(t - died, 1), m.rssi) for t, m in after_death
+                                           if m.get_type() == "RADIO_STATUS"]
+    beats = [t - died for t, m in after_death if m.get_type() == "HEARTBEAT" and m.get_srcComponent() == 1]
+    assert not beats or max(beats) < 1.0, beats  # at most what was already on its way
+    back = qgc.wait(lambda m: m.get_type() == "RADIO_STATUS" and m.rssi > 0, 10)
+    assert back is not None
+    assert qgc.wait(lambda m: m.get_type() == "HEARTBEAT" and m.get_srcSystem() == 1 and m.get_srcComponent() == 1, 5)
+
     # the app's command latency, idle, then under a ground station's floods
-    qgc.pump(1.0)
-    drv.ask("lat 6")
-    qgc.pump(6.5)
+    qgc.pump(2.0)
+    drv.ask("lat 8")
+    qgc.pump(8.5)
     idle_total, idle, idle_errors = drv.latencies()
-    assert len(idle) >= 10 and idle_errors == 0, idle
+    assert len(idle) >= 10 and idle_errors == 0, (idle_total, idle)
     sticks = _flood(qgc, drv, params=False)
     # the round trip of the try that was answered: the radio's loss decides how many tries a
     # command takes (a few of 20 at 10 % loss both ways), the bridge's traffic how long each takes
