@@ -33,7 +33,9 @@ def _mav() -> object:
 
 def test_bridge_rules_without_a_vehicle(classes: Path) -> None:
     """Retries of a waiting frame dropped, NEWEST slots replaced in place, PROTOCOL first, 64 + 64
-    frames at most, the budget at 300 B/s over 10 virtual seconds; the clashing 255/190 ground
+    frames at most, the budget at 300 B/s over 10 virtual seconds; the table of ground stations
+    (each 255/190 under its own free id, answers routed by target, forgotten after 30 s silent,
+    at most 16 heard); the clashing 255/190 ground
     station carried as 254/190 and its answer given back to 255; a command for system 7 and
     garbage not carried; RADIO_STATUS within a second and a half; a port in use refused; on a
     signed link the scheduler signs the ground stations' frames."""

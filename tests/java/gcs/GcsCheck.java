@@ -17,6 +17,7 @@ import ttctl.ttapi.msg.ParamRequestRead;
 import ttctl.ttapi.runtime.Frame;
 import ttctl.ttapi.runtime.GcsBridge;
 import ttctl.ttapi.runtime.GcsQuality;
+import ttctl.ttapi.runtime.GcsRoutes;
 import ttctl.ttapi.runtime.GcsRules;
 import ttctl.ttapi.runtime.GcsUplink;
 import ttctl.ttapi.runtime.Link;
@@ -141,6 +142,36 @@ public final class GcsCheck {
         check(q.lost() == 10 && Math.abs(q.rssi(end) - 229) <= 3, "rssi 254 x 0.9: " + q.rssi(end) + " lost " + q.lost());
         check(q.rssi(end + 3_600_000_000L) == 0, "silent 3.6 s: rssi 0");
         RESULT.add("rssi=" + q.rssi(end));
+    }
+
+    /** GcsRoutes on a virtual clock: the clash remap, routing by target, forgetting, the bound. */
+    static void routes() {
+        GcsRoutes<String> r = new GcsRoutes<>(1, 255, 190);
+        r.addFixed("qgc");
+        check(r.destinations(-1, -1).size() == 1 && r.destinations(255, 190).isEmpty(), "a fixed one, unheard");
+        check(r.heard("qgc", 255, 190, 0) == 254, "QGC's 255/190 carried as 254");
+        check(r.heard("tool", 253, 190, 0) == 253, "others as they are");
+        check(r.heard("second-qgc", 255, 190, 0) == 252, "a second 255/190: 254 carried, 253 heard: 252");
+        check(r.heard("qgc", 255, 190, 1) == 254, "stable");
+        List<GcsRoutes.Destination<String>> d = r.destinations(254, 190);
+        check(d.size() == 1 && d.get(0).address.equals("qgc") && d.get(0).targetSystem == 255, "254 -> qgc as 255: " + d);
+        d = r.destinations(252, 0);
+        check(d.size() == 1 && d.get(0).address.equals("second-qgc") && d.get(0).targetSystem == 255, "252: " + d);
+        d = r.destinations(253, 1);
+        check(d.isEmpty(), "253/1 is nobody's: " + d);
+        d = r.destinations(253, 190);
+        check(d.size() == 1 && d.get(0).targetSystem == 0, "253/190 as it is: " + d);
+        check(r.destinations(0, 0).size() == 3 && r.destinations(-1, -1).size() == 3, "broadcasts to all three");
+        check(r.destinations(7, 1).isEmpty(), "for system 7: nobody");
+        r.expire(GcsRoutes.FORGET_NANOS + 2);
+        check(r.size() == 1 && r.all().get(0).equals("qgc"), "silent 30 s: forgotten, the fixed one kept: " + r.all());
+        for (int i = 0; i < 40; i++) {
+            r.heard("peer" + i, 10 + i, 1, 100 + i);
+        }
+        check(r.size() == GcsRoutes.MAX_STATIONS + 1 && r.all().contains("qgc") && r.all().contains("peer39")
+              && !r.all().contains("peer0"), "at most 16 heard, the longest silent forgotten: " + r.size());
+        GcsRoutes<String> crowded = new GcsRoutes<>(254, 255, 190);
+        check(crowded.heard("q", 255, 190, 0) == 253, "never the vehicle's own id");
     }
 
     /** A link that keeps every packet the scheduler sends. */
@@ -326,6 +357,7 @@ public final class GcsCheck {
     public static void main(String[] argv) throws Exception {
         uplink();
         rules(new Parser(Ttapi.INSTANCE));
+        routes();
         bridge();
         signed();
         System.out.println("RESULT " + String.join(" ", RESULT));

@@ -8,9 +8,6 @@ import java.net.InetSocketAddress;
 import java.net.SocketAddress;
 import java.net.SocketException;
 import java.util.ArrayList;
-import java.util.BitSet;
-import java.util.Iterator;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Executor;
@@ -50,7 +47,7 @@ import java.util.function.Consumer;
  * its source ids and sequence number, to the ground station it is for (its target_system and
  * target_component), or to all of them. A {@link Config#sendTo} address always counts as a
  * ground station; one heard on the socket counts until it has been silent
- * {@value #PEER_SILENT_SECONDS} s. Once a second each gets a RADIO_STATUS from the vehicle's
+ * 30 s. Once a second each gets a RADIO_STATUS from the vehicle's
  * system id, component {@value GcsRules#RADIO_COMPONENT} (the telemetry radio): rssi and remrssi
  * the share of the vehicle's frames that arrived over the last 5 s (0 after 3.5 s of silence,
  * QGroundControl then shows the link lost), txbuf what room the bridge's queue has left,
@@ -61,13 +58,11 @@ import java.util.function.Consumer;
  * the same host). Problems (the socket refuses a send, a read fails) are counted, kept in
  * {@link #problem()} and told to {@link Config#onProblem}, on the listener executor. Nothing
  * grows with what a ground station sends: at most 64 + 64 frames wait, at most
- * {@value #MAX_PEERS} ground stations are remembered.
+ * {@value GcsRoutes#MAX_STATIONS} ground stations heard are remembered.
  */
 public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable {
     /** QGroundControl's (and MAVProxy's) port for vehicles and radios. */
     public static final int QGC_PORT = 14550;
-    public static final long PEER_SILENT_SECONDS = 30;
-    public static final int MAX_PEERS = 16;
     public static final long RADIO_STATUS_MILLIS = 1000;
     /** The M100's uplink in bytes per second, the budget's base when the scheduler is not paced. */
     public static final double DEFAULT_UPLINK_RATE = 500;
@@ -170,21 +165,6 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
         }
     }
 
-    /** A ground station: an address, and the ids it sends with once heard. */
-    private static final class Peer {
-        final SocketAddress address;
-        final boolean fixed;
-        int sysId = -1;
-        int compId = -1;
-        int carriedSys = -1; // the system id its frames carry on the link (remapped on an id clash)
-        long heardAt;
-
-        Peer(SocketAddress address, boolean fixed) {
-            this.address = address;
-            this.fixed = fixed;
-        }
-    }
-
     private final Link link;
     private final LinkScheduler scheduler;
     private final MavlinkDialect dialect;
@@ -195,8 +175,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     private final Parser parser;
     private final GcsUplink uplink;
     private final GcsQuality quality = new GcsQuality();
-    private final LinkedHashMap<SocketAddress, Peer> peers = new LinkedHashMap<>();
-    private final BitSet heardIds = new BitSet(65536); // sysid << 8 | compid of every ground station heard
+    private final GcsRoutes<SocketAddress> routes;
     private final Object lock = new Object();
     private final ScheduledThreadPoolExecutor timer;
     private final Executor listeners;
@@ -232,6 +211,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
         this.vehicle = c.vehicle;
         this.tabletSys = c.tabletSys;
         this.tabletComp = c.tabletComp;
+        this.routes = new GcsRoutes<>(c.vehicle, c.tabletSys, c.tabletComp);
         double base = c.uplinkRate > 0 ? c.uplinkRate : scheduler.rate() > 0 ? scheduler.rate() : DEFAULT_UPLINK_RATE;
         this.uplink = new GcsUplink(base * c.share, scheduler.mtu());
         this.parser = new Parser(dialect);
@@ -245,7 +225,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
         }
         this.socket = new DatagramSocket(c.listen != null ? c.listen : new InetSocketAddress(0));
         if (to != null) {
-            peers.put(to, new Peer(to, true));
+            routes.addFixed(to);
         }
         this.timer = new ScheduledThreadPoolExecutor(1, new ThreadFactory() {
             @Override
@@ -362,7 +342,6 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
                 unknown++;
                 notCarried++;
             }
-            Peer peer = null;
             for (MavlinkMessage m : frames) {
                 byte[] f = m.pack(m.seq(), m.sysId(), m.compId()); // unsigned, as the ground station sent it
                 int ts = GcsRules.targetSystem(f);
@@ -371,21 +350,9 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
                     lastNotCarriedFor = ts;
                     continue;
                 }
-                if (peer == null) {
-                    peer = heard(from, now);
-                }
-                if (peer == null) {
-                    continue; // closing
-                }
-                if (peer.sysId != m.sysId() || peer.compId != m.compId()) {
-                    peer.sysId = m.sysId();
-                    peer.compId = m.compId();
-                    peer.carriedSys = m.sysId() == tabletSys && m.compId() == tabletComp
-                            ? freeSystemId(m.compId(), peer) : m.sysId();
-                    heardIds.set(m.sysId() << 8 | m.compId());
-                }
-                if (peer.carriedSys != m.sysId()) {
-                    f = GcsRules.withSource(f, peer.carriedSys, m.crcExtra());
+                int carriedSys = routes.heard(from, m.sysId(), m.compId(), now);
+                if (carriedSys != m.sysId()) {
+                    f = GcsRules.withSource(f, carriedSys, m.crcExtra());
                 }
                 uplink.offer(f, now);
                 any = true;
@@ -393,55 +360,6 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
             peakWaiting = Math.max(peakWaiting, uplink.waiting());
         }
         return any;
-    }
-
-    /** The peer record of {@code from}, made if new (under the lock). */
-    private Peer heard(SocketAddress from, long now) {
-        Peer peer = peers.get(from);
-        if (peer == null) {
-            if (peers.size() >= MAX_PEERS) {
-                forgetLongestSilent();
-            }
-            peer = new Peer(from, false);
-            peers.put(from, peer);
-        }
-        peer.heardAt = now;
-        return peer;
-    }
-
-    private void forgetLongestSilent() {
-        Peer oldest = null;
-        for (Peer p : peers.values()) {
-            if (!p.fixed && (oldest == null || p.heardAt - oldest.heardAt < 0)) {
-                oldest = p;
-            }
-        }
-        if (oldest != null) {
-            peers.remove(oldest.address);
-        }
-    }
-
-    /**
-     * For a ground station whose ids are the tablet's: the highest system id from 254 down that no
-     * ground station heard uses with this component, and no other such ground station carries.
-     */
-    private int freeSystemId(int compId, Peer self) {
-        for (int s = 254; s >= 1; s--) {
-            if (s == vehicle || heardIds.get(s << 8 | compId)) {
-                continue;
-            }
-            boolean taken = false;
-            for (Peer p : peers.values()) {
-                if (p != self && p.carriedSys == s) {
-                    taken = true;
-                    break;
-                }
-            }
-            if (!taken) {
-                return s;
-            }
-        }
-        return tabletSys; // every id is in use: carried as it is
     }
 
     /** The scheduler's pull (on its worker thread, under its lock: must not call back into it). */
@@ -487,23 +405,15 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
         byte[] f = msg.pack(msg.seq(), msg.sysId(), msg.compId());
         int ts = GcsRules.targetSystem(f);
         int tc = GcsRules.targetComponent(f);
-        List<SocketAddress> to = new ArrayList<>(2);
-        List<byte[]> frames = new ArrayList<>(2);
+        List<GcsRoutes.Destination<SocketAddress>> to;
         synchronized (lock) {
             fromVehicle++;
             quality.frame(msg.sysId(), msg.compId(), msg.seq(), now);
-            for (Peer p : peers.values()) {
-                if (ts <= 0) {
-                    to.add(p.address);
-                    frames.add(f);
-                } else if (p.carriedSys == ts && (tc <= 0 || p.compId == tc)) {
-                    to.add(p.address);
-                    frames.add(p.carriedSys != p.sysId ? GcsRules.withTargetSystem(f, p.sysId, msg.crcExtra()) : f);
-                }
-            }
+            to = routes.destinations(ts, tc);
         }
-        for (int i = 0; i < to.size(); i++) {
-            send(to.get(i), frames.get(i), false);
+        for (GcsRoutes.Destination<SocketAddress> d : to) {
+            send(d.address, d.targetSystem != 0 ? GcsRules.withTargetSystem(f, d.targetSystem, msg.crcExtra()) : f,
+                    false);
         }
     }
 
@@ -531,18 +441,11 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     /** Once a second: RADIO_STATUS to every ground station, forgets the silent ones. */
     private void tick() {
         long now = System.nanoTime();
-        List<SocketAddress> to = new ArrayList<>();
+        List<SocketAddress> to;
         byte[] f;
         synchronized (lock) {
-            Iterator<Peer> it = peers.values().iterator();
-            while (it.hasNext()) {
-                Peer p = it.next();
-                if (!p.fixed && now - p.heardAt > TimeUnit.SECONDS.toNanos(PEER_SILENT_SECONDS)) {
-                    it.remove();
-                } else {
-                    to.add(p.address);
-                }
-            }
+            routes.expire(now);
+            to = routes.all();
             f = GcsRules.radioStatus(radioSeq++, vehicle, quality.rssi(now), GcsQuality.txbuf(uplink.waitingBytes()),
                     quality.lost() & 0xFFFF, uplink.overflow() & 0xFFFF);
         }
@@ -707,7 +610,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     /** Ground stations the bridge sends to now (the sendTo address and those heard). */
     public int peers() {
         synchronized (lock) {
-            return peers.size();
+            return routes.size();
         }
     }
 
