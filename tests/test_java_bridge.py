@@ -38,7 +38,8 @@ def test_bridge_rules_without_a_vehicle(classes: Path) -> None:
     at most 16 heard); the clashing 255/190 ground
     station carried as 254/190 and its answer given back to 255; a command for system 7 and
     garbage not carried; RADIO_STATUS within a second and a half; a port in use refused; on a
-    signed link the scheduler signs the ground stations' frames."""
+    signed link the scheduler signs the ground stations' frames; a send the socket refuses is told
+    once, in words; bad settings are refused with words."""
     proc = subprocess.run(["java", "-cp", str(classes), "GcsCheck"], capture_output=True, text=True, timeout=60)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     frames = {ln.split()[1]: bytes.fromhex(ln.split()[2]) for ln in proc.stdout.splitlines()
@@ -46,6 +47,8 @@ def test_bridge_rules_without_a_vehicle(classes: Path) -> None:
     result = dict(kv.split("=") for kv in proc.stdout.splitlines()[-1].split()[1:])
     assert 3000 <= int(result["budget_bytes"]) <= 3200 and result["busy"] == "refused", result
     assert result["signed"] == "3", result
+    [problem] = [ln for ln in proc.stdout.splitlines() if ln.startswith("PROBLEM ")]
+    assert problem.startswith("PROBLEM sending to the ground station at 192.0.2.1:14550 failed: "), problem
     mav = _mav()
     moved = mav.parse_char(frames["resourced"])  # the CRC recomputed: pymavlink accepts it
     assert moved.get_type() == "COMMAND_LONG" and moved.get_srcSystem() == 254 and moved.get_srcComponent() == 190

@@ -354,12 +354,55 @@ public final class GcsCheck {
         gcs.close();
     }
 
+    static void refused(Runnable r, String what) {
+        try {
+            r.run();
+        } catch (IllegalArgumentException e) {
+            check(e.getMessage() != null && !e.getMessage().isEmpty(), what + ": said why");
+            return;
+        }
+        check(false, what + " must be refused");
+    }
+
+    /** Bad settings are refused with words, at once. */
+    static void config() {
+        refused(() -> new GcsBridge.Config().share(0), "share 0");
+        refused(() -> new GcsBridge.Config().share(1.5), "share 1.5");
+        refused(() -> new GcsBridge.Config().listen(70000), "port 70000");
+        refused(() -> new GcsBridge.Config().sendTo("127.0.0.1", 0), "sending to port 0");
+        refused(() -> new GcsBridge.Config().vehicle(0), "vehicle 0");
+        refused(() -> new GcsBridge.Config().tablet(256, 190), "tablet 256");
+        refused(() -> new GcsBridge.Config().uplinkRate(-1), "a negative rate");
+        refused(() -> new GcsBridge.Config().sendTo("no-such-host.invalid", 14550), "an unknown host");
+    }
+
+    /** A send the socket refuses is told, in words, to the problem listener and in problem(). */
+    static void problems() throws Exception {
+        Recording link = new Recording();
+        LinkScheduler sched = new LinkScheduler(link, 0).start();
+        final List<String> told = Collections.synchronizedList(new ArrayList<String>());
+        // bound to loopback, sending elsewhere: the kernel refuses every send ("Invalid argument")
+        GcsBridge bridge = GcsBridge.start(link, sched, new GcsBridge.Config().listen("127.0.0.1", 0)
+                .sendTo("192.0.2.1", 14550).onProblem(told::add));
+        long deadline = System.currentTimeMillis() + 4000;
+        while (told.isEmpty() && System.currentTimeMillis() < deadline) {
+            Thread.sleep(20);
+        }
+        check(told.size() == 1 && told.get(0).startsWith("sending to the ground station at 192.0.2.1:14550 failed: ")
+              && bridge.problem() != null && bridge.sendErrors() >= 1, "told once: " + told + " " + bridge.problem());
+        System.out.println("PROBLEM " + told.get(0));
+        bridge.close();
+        sched.close();
+    }
+
     public static void main(String[] argv) throws Exception {
+        config();
         uplink();
         rules(new Parser(Ttapi.INSTANCE));
         routes();
         bridge();
         signed();
+        problems();
         System.out.println("RESULT " + String.join(" ", RESULT));
     }
 }

@@ -88,7 +88,11 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
          * answers. The default when neither this nor {@link #listen} is given.
          */
         public Config sendTo(String host, int port) {
-            this.sendTo = new InetSocketAddress(host, checkPort(port, false));
+            InetSocketAddress a = new InetSocketAddress(host, checkPort(port, false));
+            if (a.isUnresolved()) {
+                throw new IllegalArgumentException("cannot resolve the ground station's host " + host);
+            }
+            this.sendTo = a;
             return this;
         }
 
@@ -202,6 +206,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     private int peakWaiting;
     private String problem;
     private long problemAt;
+    private long toldAt = System.nanoTime() - TimeUnit.SECONDS.toNanos(PROBLEM_SECONDS + 1);
 
     private GcsBridge(Link link, LinkScheduler scheduler, MavlinkDialect dialect, Config c, Executor sessionListeners)
             throws SocketException {
@@ -459,9 +464,15 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     private void problem(final String what) {
         boolean fresh;
         synchronized (lock) {
-            fresh = !what.equals(problem);
+            long now = System.nanoTime();
+            // told when it changes, at most once a second, and again if it lasts: never a flood
+            fresh = (!what.equals(problem) || now - toldAt > TimeUnit.SECONDS.toNanos(PROBLEM_SECONDS))
+                    && now - toldAt > TimeUnit.SECONDS.toNanos(1);
+            if (fresh) {
+                toldAt = now;
+            }
             problem = what;
-            problemAt = System.nanoTime();
+            problemAt = now;
         }
         final Consumer<String> l = onProblem;
         if (fresh) {
