@@ -142,6 +142,12 @@ public final class GcsCheck {
         check(q.lost() == 10 && Math.abs(q.rssi(end) - 229) <= 3, "rssi 254 x 0.9: " + q.rssi(end) + " lost " + q.lost());
         check(q.rssi(end + 3_600_000_000L) == 0, "silent 3.6 s: rssi 0");
         RESULT.add("rssi=" + q.rssi(end));
+        GcsQuality late = new GcsQuality();
+        int[] order = {1, 2, 4, 3, 5, 6, 6}; // 3 overtaken by 4, then 6 twice
+        for (int k = 0; k < order.length; k++) {
+            late.frame(1, 1, order[k], s + k * 100_000_000L);
+        }
+        check(late.lost() == 0 && late.rssi(s + 700_000_000L) == 254, "a late frame takes its loss back: " + late.lost());
     }
 
     /** GcsRoutes on a virtual clock: the clash remap, routing by target, forgetting, the bound. */

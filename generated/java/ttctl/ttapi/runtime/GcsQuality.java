@@ -5,8 +5,9 @@ package ttctl.ttapi.runtime;
  * The link's quality as the ground-station bridge reports it in RADIO_STATUS, sans I/O (times
  * in nanoseconds of {@link System#nanoTime()}; not thread-safe): the vehicle's ground-station
  * frames received and lost (by gaps in each source's sequence numbers) per second over the last
- * {@value #WINDOW_SECONDS} seconds. A gap of more than half the sequence space is taken for
- * frames reordered or a restarted sender, not for loss.
+ * {@value #WINDOW_SECONDS} seconds. A frame behind the newest (more than half the sequence space
+ * back) is one that was counted lost and came late after all, overtaken by a later one (a frame
+ * held for the next packet): it takes its loss back (a repeat of the newest does not).
  */
 public final class GcsQuality {
     public static final int WINDOW_SECONDS = 5;
@@ -31,20 +32,38 @@ public final class GcsQuality {
     public void frame(int sysId, int compId, int seq, long now) {
         int src = (sysId & 0xFF) << 8 | (compId & 0xFF);
         int gap = 0;
-        if (lastSeq[src] >= 0) {
+        int i = slot(now);
+        if (lastSeq[src] < 0) {
+            lastSeq[src] = seq & 0xFF;
+        } else {
             gap = (seq - lastSeq[src] - 1) & 0xFF;
-            if (gap >= 128) {
+            if (gap > 128) { // behind the newest: one counted lost came late after all (or a restart)
+                if (gap != 255 && lostTotal > 0) {
+                    lostTotal--;
+                    takeBack(i);
+                }
                 gap = 0;
+            } else {
+                lastSeq[src] = seq & 0xFF;
             }
         }
-        lastSeq[src] = seq & 0xFF;
-        int i = slot(now);
         received[i]++;
         lost[i] += gap;
         receivedTotal++;
         lostTotal += gap;
         lastAt = now;
         heard = true;
+    }
+
+    /** One loss counted in the window is taken back: the newest second that has one. */
+    private void takeBack(int current) {
+        for (int k = 0; k < WINDOW_SECONDS; k++) {
+            int j = Math.floorMod(current - k, WINDOW_SECONDS);
+            if (second[j] > second[current] - WINDOW_SECONDS && lost[j] > 0) {
+                lost[j]--;
+                return;
+            }
+        }
     }
 
     private int slot(long now) {
