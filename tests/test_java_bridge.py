@@ -5,15 +5,18 @@ makes decoded by pymavlink as the oracle."""
 
 from __future__ import annotations
 
+import math
 import os
+import random
 import shutil
 import subprocess
 from pathlib import Path
+from typing import Any
 
 import pytest
 
 from conformance_lib import build_java
-from conftest import ROOT
+from conftest import ROOT, shipped
 
 pytestmark = pytest.mark.skipif(not (shutil.which("javac") and shutil.which("java")),
                                 reason="needs a JDK (javac, java)")
@@ -21,7 +24,8 @@ pytestmark = pytest.mark.skipif(not (shutil.which("javac") and shutil.which("jav
 
 @pytest.fixture(scope="module")
 def classes(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    cls, _ = build_java(tmp_path_factory.mktemp("gcs_check"), [ROOT / "tests" / "java" / "gcs" / "GcsCheck.java"])
+    cls, _ = build_java(tmp_path_factory.mktemp("gcs_check"), [ROOT / "tests" / "java" / "gcs" / "GcsCheck.java",
+                                                                 ROOT / "tests" / "java" / "gcs" / "UplinkScript.java"])
     return cls
 
 
@@ -63,3 +67,85 @@ def test_bridge_rules_without_a_vehicle(classes: Path) -> None:
     assert (zero.rssi, zero.txbuf, zero.rxerrors) == (0, 0, 0)
     live = _mav().parse_char(frames["radio_live"])
     assert live.get_type() == "RADIO_STATUS" and live.rssi == 254 and live.txbuf == 100
+
+
+def _script(seed: int) -> tuple[list[str], list[tuple[str, int, Any]]]:
+    """A ground station's traffic and the scheduler's pulls, 20 s of it: HEARTBEATs, 50 Hz
+    MANUAL_CONTROL from two sources, commands repeated as retries, parameter requests in loops,
+    bursts of 80 distinct mission items (past the bound), pulls at random times."""
+    b = shipped()
+    rnd = random.Random(seed)
+    ops: list[tuple[str, int, Any]] = []
+    t = 0
+    seq = 0
+    while t < 20_000_000:
+        t += rnd.randint(1, 40_000)
+        seq = (seq + 1) & 0xFF
+        r = rnd.random()
+        src = rnd.choice([(255, 190), (245, 190)])
+        if r < 0.35:
+            msg: Any = b.ManualControl(target=1, x=rnd.randint(-1000, 1000), y=0, z=500, r=0, buttons=0)
+        elif r < 0.40:
+            msg = b.Heartbeat(type=6, autopilot=8, base_mode=0, custom_mode=0, system_status=0)
+        elif r < 0.55:
+            msg = b.CommandLong(target_system=1, target_component=1, command=rnd.choice([400, 22, 512]), confirmation=0,
+                                param1=rnd.choice([0.0, 1.0]), param2=0, param3=0, param4=0, param5=0, param6=0,
+                                param7=0)
+        elif r < 0.70:
+            msg = b.ParamRequestList(target_system=1, target_component=1)
+        elif r < 0.72:
+            for i in range(80):
+                item = b.MissionItemInt(target_system=1, target_component=1, seq=i, frame=6, command=16, current=0,
+                                        autocontinue=1, param1=0, param2=0, param3=0, param4=0, x=i, y=0, z=10,
+                                        mission_type=0)
+                ops.append(("put", t, (item.NAME, bytes(item.pack(seq, *src)))))
+            continue
+        else:
+            ops.append(("pull", t, None))
+            continue
+        ops.append(("put", t, (msg.NAME, bytes(msg.pack(seq, *src)))))
+    lines = [f"put {t} {f.hex()}" if op == "put" else f"pull {t}" for op, t, (_, f) in
+             ((op, t, x if x is not None else ("", b"")) for op, t, x in ops)]
+    return lines, ops
+
+
+def test_the_java_uplink_decides_as_the_python_bridge(classes: Path) -> None:
+    """The same 20 s of a ground station's frames and the scheduler's pulls, played to the Java
+    GcsUplink (tests/java/gcs/UplinkScript.java) and to the Python bridge's (ttctl/bridge/uplink.py)
+    at 250 B/s, bursts of one 100-byte packet: every verdict, every frame pulled and every
+    "ready at" the same, step for step, past the bounds and the budget."""
+    from ttctl.bridge.uplink import GcsUplink
+
+    lines, ops = _script(7)
+    proc = subprocess.run(["java", "-cp", str(classes), "UplinkScript"], input="budget 250 100\n" + "\n".join(lines)
+                          + "\n", capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    java = proc.stdout.splitlines()
+    q = GcsUplink(250.0, burst=100)
+    python = []
+    for op, t, x in ops:
+        now = t / 1e6
+        if op == "put":
+            name, f = x
+            python.append(q.put(now, name, f))
+        else:
+            got = q.pull(now, 100)
+            if got is not None:
+                python.append(got.hex())
+            else:
+                at = q.deadline(now)
+                python.append(f"- {-1 if at is None else math.ceil(at * 1e6)}")
+    python.append(f"overflow {q.stats.overflow} duplicates {q.stats.duplicates} replaced {q.stats.replaced}")
+    assert len(java) == len(python)
+    differ = []
+    for i, (j, p) in enumerate(zip(java, python, strict=True)):
+        # "ready at" in microseconds, rounded from nanoseconds and from floats
+        if j.startswith("- ") and p.startswith("- ") and abs(int(j[2:]) - int(p[2:])) <= 2:
+            continue
+        if j != p:
+            differ.append((i, lines[i] if i < len(lines) else "", j, p))
+    assert not differ, differ[:5]
+    tally = {v: python.count(v) for v in ("queued", "replaced", "duplicate")}
+    pulled = sum(1 for v in python if v[:2] == "fd")
+    assert tally["duplicate"] > 20 and tally["replaced"] > 100 and pulled > 100 and q.stats.overflow > 0, \
+        (tally, pulled)

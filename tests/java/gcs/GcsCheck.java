@@ -82,9 +82,10 @@ public final class GcsCheck {
         check(GcsRules.msgId(u.pull(0)) == CommandLong.MSG_ID, "protocol first");
         check(GcsRules.msgId(u.pull(0)) == CommandLong.MSG_ID, "protocol first (2)");
         byte[] m = u.pull(0);
-        check(GcsRules.msgId(m) == ManualControl.MSG_ID && m[5] == (byte) 200 && m[4] == 6,
-              "the oldest slot first, holding its newest frame (seq 6)");
-        check(u.pull(0)[5] == (byte) 201, "then the next slot");
+        check(GcsRules.msgId(m) == ManualControl.MSG_ID && m[5] == (byte) 201,
+              "the oldest slot first: 201's (200's was replaced, its slot went behind)");
+        m = u.pull(0);
+        check(m[5] == (byte) 200 && m[4] == 6, "then 200's newest frame (seq 6)");
         check(u.pull(0) == null && u.waitingBytes() == 0, "empty");
         for (int i = 0; i < 100; i++) {
             u.offer(command(i, 1, i), 0);

@@ -18,12 +18,14 @@ import java.util.Map;
  * the sequence number does not count) is a ground station's retry and is dropped
  * ({@link #duplicates()}).</li>
  * <li>NEWEST frames (MANUAL_CONTROL, set-points, HEARTBEAT...) have one slot per source system,
- * source component and message: a newer frame replaces the waiting one in its slot
- * ({@link #replaced()}); at most {@value #NEWEST_LIMIT} slots (beyond: the oldest slot is
- * dropped, counted {@link #overflow()}).</li>
- * <li>{@link #pull} gives PROTOCOL frames before NEWEST ones, slots oldest first, and only
- * while the token bucket allows: on average at most the budget's bytes per second, a burst of
- * one packet ({@link #setBudget}).</li>
+ * source component and message: a newer frame replaces the waiting one ({@link #replaced()})
+ * and its slot goes behind the others (its frame is the newest); at most {@value #NEWEST_LIMIT}
+ * slots (beyond: the oldest slot is dropped, counted {@link #overflow()}).</li>
+ * <li>{@link #pull} gives PROTOCOL frames before NEWEST ones, the oldest slot first, and only
+ * while the token bucket holds tokens: on average at most the budget's bytes per second, a
+ * burst of one packet ({@link #setBudget}); a frame takes its length in tokens, borrowing what
+ * it lacks from what comes next. These are the decisions of ttctl's Python bridge
+ * ({@code ttctl/bridge/uplink.py}), step for step.</li>
  * </ul>
  */
 public final class GcsUplink {
@@ -72,28 +74,25 @@ public final class GcsUplink {
 
     /** Takes a whole unsigned frame from a ground station at {@code now}. */
     public Offer offer(byte[] frame, long now) {
-        if (!started) {
-            started = true;
-            refilledAt = now;
-            tokens = burst;
-        }
         int msgId = GcsRules.msgId(frame);
         if (GcsRules.isNewest(msgId)) {
             long key = (long) (frame[5] & 0xFF) << 32 | (long) (frame[6] & 0xFF) << 24 | msgId;
-            byte[] old = newest.put(key, frame); // a replaced slot keeps its place: oldest slot first
+            byte[] old = newest.remove(key); // the slot goes behind the others: its frame is the newest
             if (old != null) {
-                waitingBytes += frame.length - old.length;
+                waitingBytes -= old.length;
                 replaced++;
-                return Offer.REPLACED;
-            }
-            waitingBytes += frame.length;
-            queued++;
-            if (newest.size() > NEWEST_LIMIT) {
+            } else if (newest.size() >= NEWEST_LIMIT) {
                 Iterator<Map.Entry<Long, byte[]>> it = newest.entrySet().iterator();
                 waitingBytes -= it.next().getValue().length;
                 it.remove();
                 overflow++;
             }
+            newest.put(key, frame);
+            waitingBytes += frame.length;
+            if (old != null) {
+                return Offer.REPLACED;
+            }
+            queued++;
             return Offer.QUEUED;
         }
         for (byte[] w : protocol) {
@@ -102,18 +101,21 @@ public final class GcsUplink {
                 return Offer.DUPLICATE;
             }
         }
-        protocol.add(frame);
-        waitingBytes += frame.length;
-        queued++;
-        if (protocol.size() > PROTOCOL_LIMIT) {
+        if (protocol.size() >= PROTOCOL_LIMIT) {
             waitingBytes -= protocol.poll().length;
             overflow++;
         }
+        protocol.add(frame);
+        waitingBytes += frame.length;
+        queued++;
         return Offer.QUEUED;
     }
 
     private void refill(long now) {
-        if (bytesPerNano > 0 && now > refilledAt) {
+        if (!started) {
+            started = true;
+            tokens = burst;
+        } else if (bytesPerNano > 0 && now > refilledAt) {
             tokens = Math.min(burst, tokens + (now - refilledAt) * bytesPerNano);
         }
         refilledAt = Math.max(refilledAt, now);
@@ -133,12 +135,12 @@ public final class GcsUplink {
         if (f == null) {
             return null;
         }
+        refill(now);
         if (bytesPerNano > 0) {
-            refill(now);
-            if (tokens < Math.min(f.length, burst)) {
+            if (tokens <= 0) {
                 return null;
             }
-            tokens -= f.length; // a frame longer than the burst borrows from what comes next
+            tokens -= f.length; // what a frame takes beyond the tokens it borrows from what comes next
         }
         if (!protocol.isEmpty()) {
             protocol.poll();
@@ -166,8 +168,7 @@ public final class GcsUplink {
             return now;
         }
         refill(now);
-        double need = Math.min(f.length, burst) - tokens;
-        return need <= 0 ? now : now + (long) Math.ceil(need / bytesPerNano);
+        return tokens > 0 ? now : now + (long) Math.ceil((1.0 - tokens) / bytesPerNano);
     }
 
     /** Frames waiting (PROTOCOL and NEWEST). */
