@@ -24,8 +24,8 @@ pytestmark = pytest.mark.skipif(not (shutil.which("javac") and shutil.which("jav
 
 @pytest.fixture(scope="module")
 def classes(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    cls, _ = build_java(tmp_path_factory.mktemp("gcs_check"), [ROOT / "tests" / "java" / "gcs" / "GcsCheck.java",
-                                                                 ROOT / "tests" / "java" / "gcs" / "UplinkScript.java"])
+    drivers = [ROOT / "tests" / "java" / "gcs" / f"{n}.java" for n in ("GcsCheck", "UplinkScript", "QualityScript")]
+    cls, _ = build_java(tmp_path_factory.mktemp("gcs_check"), drivers)
     return cls
 
 
@@ -149,3 +149,58 @@ def test_the_java_uplink_decides_as_the_python_bridge(classes: Path) -> None:
     pulled = sum(1 for v in python if v[:2] == "fd")
     assert tally["duplicate"] > 20 and tally["replaced"] > 100 and pulled > 100 and q.stats.overflow > 0, \
         (tally, pulled)
+
+
+def test_the_java_link_quality_is_the_python_bridges(classes: Path) -> None:
+    """The vehicle's frames over 60 s of a lossy link (random loss, bursts, frames overtaken by a
+    later one, repeats, two components, a 5 s silence), played to the Java GcsQuality
+    (tests/java/gcs/QualityScript.java) and the Python bridge's Routes: the same rssi at every
+    RADIO_STATUS, the same frames counted lost; the same txbuf for every queue size."""
+    from ttctl.bridge.routes import Routes
+    from ttctl.ends.tablet.gcs_bridge import TXBUF_BYTES
+
+    rnd = random.Random(11)
+    lines: list[str] = []
+    routes = Routes(1)
+    want: list[str] = []
+    seqs = {1: 0, 68: 0}
+    t = 0
+    next_radio = 1_000_000
+    held: tuple[int, int] | None = None
+    while t < 60_000_000:
+        t += rnd.randint(2_000, 30_000)
+        if 30_000_000 <= t < 35_000_000:  # the radio lost for 5 s
+            t = 35_000_000
+        while next_radio <= t:
+            lines.append(f"rssi {next_radio}")
+            want.append(str(routes.quality(next_radio / 1e6)))
+            next_radio += 1_000_000
+        comp = rnd.choice([1, 1, 1, 68])
+        seqs[comp] = (seqs[comp] + 1) & 0xFF
+        r = rnd.random()
+        if r < (0.3 if 10_000_000 <= t < 15_000_000 else 0.08):
+            continue  # lost
+        events = [(comp, seqs[comp])]
+        if r > 0.97 and held is None:
+            held = events.pop()  # overtaken by the next one
+        elif held is not None and comp == held[0]:
+            events.append(held)
+            held = None
+        if r < 0.1:
+            events.append(events[-1] if events else (comp, seqs[comp]))  # a repeat
+        for c, sq in events:
+            lines.append(f"frame {t} {c} {sq}")
+            routes.vehicle_frame(t / 1e6, c, sq)
+    for n in range(0, 5000, 7):
+        lines.append(f"txbuf {n}")
+        want.append(str(max(0, min(100, round(100 * (1 - n / TXBUF_BYTES))))))
+    want.append(f"lost {routes.lost} received {routes.received}")
+    proc = subprocess.run(["java", "-cp", str(classes), "QualityScript"], input="\n".join(lines) + "\n",
+                          capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    got = proc.stdout.splitlines()
+    assert len(got) == len(want)
+    differ = [(i, g, w) for i, (g, w) in enumerate(zip(got, want, strict=True)) if g != w]
+    assert not differ, differ[:5]
+    rssis = [int(w) for w in want[:59]]
+    assert 0 in rssis and max(rssis) > 220 and min(x for x in rssis if x) < 200, rssis  # lossy, silent, good
