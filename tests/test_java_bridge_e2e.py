@@ -213,6 +213,7 @@ def _fly(qgc: Gcs, drv: Driver, listen: int, outage: Callable[[float], float]) -
     def count() -> None:
         qgc.m.mav.mission_count_send(1, 1, items, 0)
 
+    mission_t0 = time.monotonic()
     req = qgc.wait(lambda m: m.get_type() in ("MISSION_REQUEST_INT", "MISSION_REQUEST"), 15, count)
     done = None
     while req is not None and done is None:
@@ -232,6 +233,7 @@ def _fly(qgc: Gcs, drv: Driver, listen: int, outage: Callable[[float], float]) -
             done = nxt
         req = nxt
     assert done is not None and done.type == ACCEPTED and sorted(set(seqs)) == list(range(items)), (seqs, done)
+    print(f"mission of {items} items uploaded in {time.monotonic() - mission_t0:.1f} s")
 
     # a second ground station (245/190) that sends first, to the listening port
     mavsdk = Gcs(f"udpout:{LOCAL}:{listen}", 245, 190)
@@ -288,6 +290,7 @@ def _fly(qgc: Gcs, drv: Driver, listen: int, outage: Callable[[float], float]) -
     idle_total, idle, idle_errors = drv.latencies()
     assert len(idle) >= 10 and idle_errors == 0, (idle_total, idle)
     sticks = _flood(qgc, drv, params=False)
+    assert len(sticks["lat"]) >= 8, sticks
     # the round trip of the try that was answered: the radio's loss decides how many tries a
     # command takes (a few of 20 at 10 % loss both ways), the bridge's traffic how long each takes
     assert p95(sticks["try"]) <= p95(idle) + 200, (sorted(idle), sticks)
@@ -297,11 +300,11 @@ def _fly(qgc: Gcs, drv: Driver, listen: int, outage: Callable[[float], float]) -
     assert s["replaced"] - sticks["stats"]["replaced"] > 50 and s["uncaught"] == 0 and s["problems"] == 0, s
     print(f"took {time.monotonic() - t0:.1f} s; idle p95 {p95(idle):.0f} ms ({p95(idle_total):.0f} ms with "
           f"retries); sticks {sticks}; both {both}")
-    if p95(both["try"]) > p95(idle) + 200:
+    if len(both["try"]) < 5 or p95(both["try"]) > p95(idle) + 200:
         # each PARAM_REQUEST_LIST carried (a few a second, within the bridge's budget) makes the
         # vehicle send its whole list down at control priority, ahead of the app's acks
         pytest.xfail(f"the onboard end's downlink: {both['param_values']} PARAM_VALUE in 5 s push the app's "
-                     f"command p95 to {p95(both['try']):.0f} ms (idle {p95(idle):.0f} ms)")
+                     f"command round trips to {both['try']} ms in 5 s (idle p95 {p95(idle):.0f} ms)")
 
 
 GcsLimit = 128  # GcsUplink.PROTOCOL_LIMIT + NEWEST_LIMIT
@@ -324,7 +327,7 @@ def _flood(qgc: Gcs, drv: Driver, params: bool) -> dict[str, Any]:
     lat, tries, errors = drv.latencies()
     took = time.monotonic() - start
     after = drv.stats()
-    assert errors == 0 and len(lat) >= 3, (lat, errors)
+    assert errors == 0, (lat, errors)
     assert after["carriedBytes"] - before["carriedBytes"] <= 0.6 * RATE * took + 100, (before, after, took)
     values = len([1 for t, _ in qgc.of("PARAM_VALUE") if t > start])
     return {"lat": sorted(lat), "try": sorted(tries), "stats": after, "param_values": values}
