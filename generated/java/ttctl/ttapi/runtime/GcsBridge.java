@@ -46,10 +46,10 @@ import java.util.function.Consumer;
  * component is not the onboard end's ({@value GcsRules#ONBOARD_COMPONENT}) goes, unsigned, with
  * its source ids and sequence number, to the ground station it is for (its target_system and
  * target_component), or to all of them. A {@link Config#sendTo} address always counts as a
- * ground station; one heard on the socket counts until it has been silent
- * 30 s. Once a second each gets a RADIO_STATUS from the vehicle's
- * system id, component {@value GcsRules#RADIO_COMPONENT} (the telemetry radio): rssi and remrssi
- * the share of the vehicle's frames that arrived over the last 5 s (0 after 3.5 s of silence,
+ * ground station; one heard on the socket counts until it has been silent 30 s. Once a second
+ * each gets a RADIO_STATUS from the vehicle's system id, component
+ * {@value GcsRules#RADIO_COMPONENT} (the telemetry radio): rssi and remrssi 254 x the share of
+ * the vehicle's frames that arrived over the last 5 s (0 after more than 3.5 s of silence,
  * QGroundControl then shows the link lost), txbuf what room the bridge's queue has left,
  * rxerrors the frames lost, fixed the frames the bridge dropped.
  *
@@ -171,10 +171,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
 
     private final Link link;
     private final LinkScheduler scheduler;
-    private final MavlinkDialect dialect;
     private final int vehicle;
-    private final int tabletSys;
-    private final int tabletComp;
     private final DatagramSocket socket;
     private final Parser parser;
     private final GcsUplink uplink;
@@ -212,10 +209,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
             throws SocketException {
         this.link = link;
         this.scheduler = scheduler;
-        this.dialect = dialect;
         this.vehicle = c.vehicle;
-        this.tabletSys = c.tabletSys;
-        this.tabletComp = c.tabletComp;
         this.routes = new GcsRoutes<>(c.vehicle, c.tabletSys, c.tabletComp);
         double base = c.uplinkRate > 0 ? c.uplinkRate : scheduler.rate() > 0 ? scheduler.rate() : DEFAULT_UPLINK_RATE;
         this.uplink = new GcsUplink(base * c.share, scheduler.mtu());
