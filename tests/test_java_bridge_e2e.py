@@ -188,6 +188,7 @@ def _fly(qgc: Gcs, drv: Driver, listen: int, outage: Callable[[float], float]) -
     hb = qgc.wait(lambda m: m.get_type() == "HEARTBEAT" and (m.get_srcSystem(), m.get_srcComponent()) == (1, 1), 20)
     assert hb is not None, [m.get_type() for _, m in qgc.seen][-20:]
     assert hb.type != 6 and hb.autopilot != 8  # the vehicle, not a ground station's echo
+    heard = time.monotonic()
 
     # a parameter by name
     value = qgc.wait(lambda m: m.get_type() == "PARAM_VALUE" and m.param_id == "MIS_TAKEOFF_ALT", 15,
@@ -268,14 +269,16 @@ def _fly(qgc: Gcs, drv: Driver, listen: int, outage: Callable[[float], float]) -
     span = radio[-1][0] - radio[0][0]
     assert all((m.get_srcSystem(), m.get_srcComponent()) == (1, 68) for _, m in radio)
     assert span > 5 and 0.7 * span <= len(radio) - 1 <= 1.3 * span + 1, (len(radio), span)
-    assert all(m.rssi == m.remrssi and 150 <= m.rssi <= 254 for _, m in radio[2:]), [m.rssi for _, m in radio]
+    # once the vehicle is heard (a second for its frames to fill the window): 10 % loss, not silence
+    assert all(m.rssi == m.remrssi and 150 <= m.rssi <= 254 for t, m in radio if t > heard + 1.0), \
+        [(round(t - heard, 1), m.rssi) for t, m in radio]
 
     # the radio lost for 6 s: RADIO_STATUS says rssi 0 within 3.5 s (+ its second) and the
     # vehicle's HEARTBEATs stop; when it returns, both come back
     died = outage(6.0)
     after_death = [(t, m) for t, m in qgc.seen if t > died]
     zero = [t - died for t, m in after_death if m.get_type() == "RADIO_STATUS" and m.rssi == 0]
-    assert zero and zero[0] <= 3.5 + 1.2, [(round(t - died, 1), m.rssi) for t, m in after_death
+    assert zero and zero[0] <= 3.5 + 1.5, [(round(t - died, 1), m.rssi) for t, m in after_death
                                            if m.get_type() == "RADIO_STATUS"]
     beats = [t - died for t, m in after_death if m.get_type() == "HEARTBEAT" and m.get_srcComponent() == 1]
     assert not beats or max(beats) < 1.0, beats  # at most what was already on its way
