@@ -98,10 +98,11 @@ class Gcs:
 
 
 class Driver:
-    def __init__(self, classes: Path, tmp: Path, relay_port: int, gcs_port: int, listen_port: int) -> None:
+    def __init__(self, classes: Path, tmp: Path, relay_port: int, gcs_port: int, listen_port: int,
+                 *key: str) -> None:
         self.err = open(tmp / "driver.err", "w")  # noqa: SIM115
         self.p = subprocess.Popen(["java", "-cp", str(classes), "BridgeDriver", str(relay_port), str(gcs_port),
-                                   str(listen_port), str(RATE)], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                   str(listen_port), str(RATE), *key], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                                   stderr=self.err, text=True)
         assert self.line("ready").startswith("ready")
 
@@ -334,3 +335,33 @@ def _flood(qgc: Gcs, drv: Driver, params: bool) -> dict[str, Any]:
     assert after["carriedBytes"] - before["carriedBytes"] <= 0.6 * RATE * took + 100, (before, after, took)
     values = len([1 for t, _ in qgc.of("PARAM_VALUE") if t > start])
     return {"lat": sorted(lat), "try": sorted(tries), "stats": after, "param_values": values}
+
+
+def test_java_bridge_on_a_signed_link(classes: Path, tmp_path: Path, start: Start) -> None:
+    """The onboard end started with --key takes only signed frames: a ground station's frames,
+    unsigned at the bridge, reach the vehicle and are answered because the app's scheduler signs
+    them as they leave (and the vehicle's signed answers come down to the ground station unsigned)."""
+    a, b, gcs_port, listen = free_port(), free_port(), free_port(), free_port()
+    key = tmp_path / "key"
+    key.write_text("our secret\n")  # a passphrase: its SHA-256 is the key, as Signing.keyFromPassphrase's
+    node = start("onboard", "emulate", "onboard", "--no-gcs", "--listen", f"udpin:{LOCAL}:{b}", "--no-entry-points",
+                 "--profile", "m100", "--key", str(key))
+    node.wait_for("onboard 1:")
+    relay(start, a, b, "--profile", "m100", "--stats-interval", "0")
+    qgc = Gcs(f"udpin:{LOCAL}:{gcs_port}", 255, 190)
+    drv = Driver(classes, tmp_path, a, gcs_port, listen, "our secret")
+    try:
+        hb = qgc.wait(lambda m: m.get_type() == "HEARTBEAT" and (m.get_srcSystem(), m.get_srcComponent()) == (1, 1),
+                      20)
+        assert hb is not None, [m.get_type() for _, m in qgc.seen][-20:]
+        value = qgc.wait(lambda m: m.get_type() == "PARAM_VALUE" and m.param_id == "MPC_XY_VEL_MAX", 10,
+                         lambda: qgc.m.mav.param_request_read_send(1, 1, b"MPC_XY_VEL_MAX", -1))
+        assert value is not None and value.param_value == pytest.approx(1.5)
+        assert all(not m.get_signed() for _, m in qgc.seen)  # unsigned at the ground station's side
+        s = drv.stats()
+        assert s["carried"] > 0 and s["problems"] == 0 and s["uncaught"] == 0, s
+        assert "signature" not in node.stderr and "unsigned" not in node.stderr, node.stderr
+    finally:
+        out = drv.close()
+        qgc.m.close()
+    assert "closed []" in out, out

@@ -1,5 +1,7 @@
 import java.io.BufferedReader;
 import java.io.InputStreamReader;
+import java.net.DatagramSocket;
+import java.net.InetSocketAddress;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -15,6 +17,7 @@ import ttctl.ttapi.runtime.CommandContext;
 import ttctl.ttapi.runtime.CommandException;
 import ttctl.ttapi.runtime.GcsBridge;
 import ttctl.ttapi.runtime.Session;
+import ttctl.ttapi.runtime.Signing;
 import ttctl.ttapi.runtime.UdpLink;
 
 /**
@@ -22,7 +25,8 @@ import ttctl.ttapi.runtime.UdpLink;
  * (the emulated radio, paced at the uplink's rate) and a GcsBridge on it that sends to the
  * ground station at 127.0.0.1:GCS_PORT and also listens on LISTEN_PORT.
  *
- * Arguments: RELAY_PORT GCS_PORT LISTEN_PORT RATE. Prints "ready"; then reads commands, one a
+ * Arguments: RELAY_PORT GCS_PORT LISTEN_PORT RATE [PASSPHRASE: the link signed with the key of
+ * `ttctl --key PASSPHRASE`]. Prints "ready"; then reads commands, one a
  * line: "lat SECONDS" sends the app's own command (TT_ACTION_SYNC_TIME to the onboard end, one
  * after another) for that long and prints "LAT [ms,...] TRY [ms,...] errors N": each command's
  * time to its ack, and the time from its last try to the ack (the round trip through the link
@@ -43,9 +47,12 @@ public final class BridgeDriver {
         int gcsPort = Integer.parseInt(argv[1]);
         int listenPort = Integer.parseInt(argv[2]);
         double rate = Double.parseDouble(argv[3]);
-        UdpLink link = UdpLink.open("127.0.0.1", 0, "127.0.0.1", relay, Ttapi.INSTANCE);
+        Signing signing = argv.length > 4 ? new Signing(Signing.keyFromPassphrase(argv[4]), 1, false) : null;
+        UdpLink link = new UdpLink(new DatagramSocket(new InetSocketAddress("127.0.0.1", 0)),
+                new InetSocketAddress("127.0.0.1", relay), Ttapi.INSTANCE, signing);
         Session.Options o = new Session.Options();
         o.rate = rate;
+        o.signing = signing; // the scheduler signs every frame, the ground stations' too
         Session session = new Session(link, 255, 190, o).start();
         final List<String> problems = Collections.synchronizedList(new ArrayList<String>());
         GcsBridge bridge = GcsBridge.start(session, new GcsBridge.Config()
