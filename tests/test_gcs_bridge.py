@@ -305,3 +305,56 @@ def test_a_retried_command_whose_ack_was_lost_is_answered_again_not_done_twice(s
     m.mav.command_long_send(*takeoff)  # a new take-off while taking off: refused, in words
     assert wait_msg(m, "COMMAND_ACK", lambda a: a.command == 22).result == 2
     assert "taking off" in node.stderr
+
+
+def test_streams_fit_the_downlink_share_and_message_interval_says_what_is_kept(tmp_path: Path,
+                                                                               start: Start) -> None:
+    """A ground station behind the tablet asks for ATTITUDE, ATTITUDE_QUATERNION, HIGHRES_IMU and
+    GLOBAL_POSITION_INT at 100 Hz (far more than half the m100 downlink): what arrives fits the
+    onboard end's --dtt-gcs-share, GET_MESSAGE_INTERVAL answers the interval actually sent (not the
+    one asked for), the heartbeat keeps its 1 Hz, and GLOBAL_POSITION_INT is fresh (newest wins)."""
+    a, _ = world(start, "--loss", "0")
+    g = free_port()
+    m = station(g, 245, 190)
+    tablet = start("tablet", "emulate", "tablet", "--to", f"udpout:{LOCAL}:{a}", "--profile", "m100",
+                   "--gcs", f"udpout:{LOCAL}:{g}")
+    tablet.wait_for("tablet: connected")
+    beat = Beat(m)
+    streams = {"ATTITUDE": 30, "ATTITUDE_QUATERNION": 31, "HIGHRES_IMU": 105, "GLOBAL_POSITION_INT": 33}
+    try:
+        wait_msg(m, "HEARTBEAT", lambda x: x.get_srcComponent() == 1, 10)
+        for msgid in streams.values():
+            assert command(m, 511, msgid, 10_000).result == 0  # SET_MESSAGE_INTERVAL 10 ms: accepted (asked)
+        settle = time.monotonic() + 2  # the fit settles (read meanwhile: no backlog in our own socket)
+        while time.monotonic() < settle:
+            m.recv_match(blocking=True, timeout=0.2)
+        counts = dict.fromkeys([*streams, "HEARTBEAT"], 0)
+        nbytes, ages = 0, []
+        t0 = time.monotonic()
+        while time.monotonic() - t0 < 6:
+            x = m.recv_match(blocking=True, timeout=0.5)
+            if x is None or x.get_srcComponent() != 1:
+                continue
+            nbytes += len(x.get_msgbuf())
+            if x.get_type() in counts:
+                counts[x.get_type()] += 1
+            if x.get_type() == "GLOBAL_POSITION_INT":
+                ages.append(time.monotonic() * 1000 - x.time_boot_ms)
+        kept = {}
+        for name, msgid in streams.items():
+            m.mav.command_long_send(1, 1, 510, 0, msgid, 0, 0, 0, 0, 0, 0)  # GET_MESSAGE_INTERVAL
+            kept[name] = wait_msg(m, "MESSAGE_INTERVAL", lambda x, i=msgid: x.message_id == i, 5).interval_us
+    finally:
+        beat.stop.set()
+    rates = {name: n / 6 for name, n in counts.items()}
+    lag = sorted(a - min(ages) for a in ages)  # the age above the freshest one's (clock offset removed)
+    report = {"rates_hz": {k: round(v, 1) for k, v in rates.items()}, "kept_us": kept, "Bps": round(nbytes / 6),
+              "gpi_age_p95_ms_above_min": round(lag[int(0.95 * len(lag))])}
+    print("MEASURED", json.dumps(report))
+    for name in streams:
+        assert 10_000 < kept[name] < 1_000_000, report  # not the 10 ms asked for, and not off
+        said = 1e6 / kept[name]
+        assert 0.7 * said <= rates[name] <= 1.3 * said, report  # the interval said is the one kept
+    assert 0.8 <= rates["HEARTBEAT"] <= 1.2, report
+    assert nbytes / 6 <= 0.5 * 6700 * 1.15, report  # about --dtt-gcs-share 0.5 of the m100 downlink, not more
+    assert report["gpi_age_p95_ms_above_min"] <= 250, report  # newest wins: no queue of stale positions
