@@ -304,11 +304,9 @@ def _fly(qgc: Gcs, drv: Driver, listen: int, outage: Callable[[float], float]) -
     assert s["replaced"] - sticks["stats"]["replaced"] > 50 and s["uncaught"] == 0 and s["problems"] == 0, s
     print(f"took {time.monotonic() - t0:.1f} s; idle p95 {p95(idle):.0f} ms ({p95(idle_total):.0f} ms with "
           f"retries); sticks {sticks}; both {both}")
-    if len(both["try"]) < 5 or p95(both["try"]) > p95(idle) + 200:
-        # each PARAM_REQUEST_LIST carried (a few a second, within the bridge's budget) makes the
-        # vehicle send its whole list down at control priority, ahead of the app's acks
-        pytest.xfail(f"the onboard end's downlink: {both['param_values']} PARAM_VALUE in 5 s push the app's "
-                     f"command round trips to {both['try']} ms in 5 s (idle p95 {p95(idle):.0f} ms)")
+    # each PARAM_REQUEST_LIST carried makes the vehicle send its whole list down; those answers wait
+    # below the app's acks at the onboard end, and a list still waiting is not queued again there
+    assert len(both["try"]) >= 5 and p95(both["try"]) <= p95(idle) + 200, (sorted(idle), both)
 
 
 GcsLimit = 128  # GcsUplink.PROTOCOL_LIMIT + NEWEST_LIMIT
@@ -316,7 +314,7 @@ GcsLimit = 128  # GcsUplink.PROTOCOL_LIMIT + NEWEST_LIMIT
 
 def _flood(qgc: Gcs, drv: Driver, params: bool) -> dict[str, Any]:
     """5 s of 50 Hz MANUAL_CONTROL (and PARAM_REQUEST_LIST as often, with `params`) while the
-    app sends its commands; the uplink's GCS bytes stay within 0.6 of the app's pace."""
+    app sends its commands; the uplink's GCS bytes stay within the default share (0.8) of the app's pace."""
     before = drv.stats()
     drv.ask("lat 5")
     start = time.monotonic()
@@ -332,7 +330,7 @@ def _flood(qgc: Gcs, drv: Driver, params: bool) -> dict[str, Any]:
     took = time.monotonic() - start
     after = drv.stats()
     assert errors == 0, (lat, errors)
-    assert after["carriedBytes"] - before["carriedBytes"] <= 0.6 * RATE * took + 100, (before, after, took)
+    assert after["carriedBytes"] - before["carriedBytes"] <= 0.8 * RATE * took + 100, (before, after, took)
     values = len([1 for t, _ in qgc.of("PARAM_VALUE") if t > start])
     return {"lat": sorted(lat), "try": sorted(tries), "stats": after, "param_values": values}
 

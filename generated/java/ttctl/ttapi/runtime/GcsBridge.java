@@ -66,7 +66,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     public static final long RADIO_STATUS_MILLIS = 1000;
     /** The M100's uplink in bytes per second, the budget's base when the scheduler is not paced. */
     public static final double DEFAULT_UPLINK_RATE = 500;
-    public static final double DEFAULT_SHARE = 0.6;
+    public static final double DEFAULT_SHARE = 0.8;
     /** How long {@link #problem()} names a problem after it was last seen. */
     public static final long PROBLEM_SECONDS = 10;
 
