@@ -384,3 +384,16 @@ def test_streams_fit_the_downlink_share_and_message_interval_says_what_is_kept(t
     assert 0.8 <= rates["HEARTBEAT"] <= 1.2, report
     assert nbytes / 6 <= 0.5 * 6700 * 1.15, report  # about --dtt-gcs-share 0.5 of the m100 downlink, not more
     assert report["gpi_age_p95_ms_above_min"] <= 250, report  # newest wins: no queue of stale positions
+
+
+def test_bad_ground_station_endpoints_get_one_line_errors() -> None:
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as taken:
+        taken.bind((LOCAL, 0))
+        port = taken.getsockname()[1]
+        for args, words in ((["--gcs", "bogus"], "--gcs bad endpoint 'bogus'"),
+                            (["--gcs", f"udpin:{LOCAL}:{port}"], "address already in use"),
+                            (["--gcs-share", "0"], "--gcs-share")):
+            r = subprocess.run([str(BIN / "ttctl"), "emulate", "tablet", "--to", f"udpout:{LOCAL}:9", *args],
+                               capture_output=True, text=True, timeout=30, stdin=subprocess.DEVNULL)
+            assert r.returncode == 2 and words in r.stderr, (args, r.stderr)
+            assert "Traceback" not in r.stderr and "ground stations:" not in r.stderr, r.stderr

@@ -59,6 +59,7 @@ class GcsBridge:
         self.kick: Callable[[], None] = lambda: None
         self._task: asyncio.Task[None] | None = None
         self._told_other: set[int] = set()
+        self.running = False  # every ground-station link open
 
     async def start(self, ep: Endpoint, kick: Callable[[], None]) -> None:
         self.ep, self.kick = ep, kick
@@ -72,6 +73,7 @@ class GcsBridge:
             if spec.kind in ("udpout", "tcp"):
                 self.routes.fixed.append(t)
         self._task = asyncio.get_running_loop().create_task(self._radio_status())
+        self.running = True
 
     def _logger(self, spec: Spec) -> Callable[[str], None]:
         return lambda text: self.log(f"gcs {spec}: {text}")
