@@ -115,8 +115,12 @@ def test_answers_go_to_the_station_they_are_for_and_broadcasts_to_all() -> None:
     assert r.destinations(0.2, (245, 0))[0] == [(sdk_link, ("127.0.0.1", 14540))]  # compid 0: any component
     assert r.destinations(0.2, (77, 1))[0] == []  # nobody here is 77
     assert len(r.destinations(0.2, None)[0]) == 2
-    assert r.heard(0.3, sdk_link, ("127.0.0.1", 14540), (254, 191)) == (254, 191)  # a station of its own 254...
-    assert r.heard(5.0, "other", ("127.0.0.1", 1), TABLET) == (254, 190)  # ...the mapping, once made, stays
+    second = r.heard(0.3, "other", ("127.0.0.1", 1), TABLET)  # a second QGroundControl, ids clashing too
+    assert second == (253, 190)  # a free id of its own: the two do not get each other's answers
+    assert r.destinations(0.4, second) == ([("other", ("127.0.0.1", 1))], TABLET)
+    assert r.destinations(0.4, (254, 190))[0] == [(qgc_link, ("127.0.0.1", 14550))]
+    assert r.destinations(0.4, TABLET)[0] == []  # the tablet's own ids: no station is that
+    assert r.heard(5.0, qgc_link, ("127.0.0.1", 14550), TABLET) == (254, 190)  # the mapping, once made, stays
 
 
 def test_radio_quality_counts_what_the_vehicle_sent_and_is_zero_when_silent() -> None:
@@ -204,6 +208,8 @@ def test_mission_relay_pipelines_an_upload_and_acknowledges_nothing_itself() -> 
     assert given == [0, 1, 2]
     assert vehicle_asks(0.7, 0) == (False, [b"item0"])  # asked again: it was lost, it goes once more
     assert vehicle_asks(0.8, 2) == (False, []) and given == [0, 1, 2, 3, 4]  # the vehicle at 2: the rest
+    assert vehicle_asks(0.9, 4) == (False, [])  # the last item asked for: on its way
+    assert relay.tick(1.5) == [] and relay.tick(2.0) == [b"item4"]  # no verdict 1 s later: the last item again
     ack = B.MissionAck(target_system=245, target_component=190, type=0, mission_type=0)
     assert relay.from_vehicle(3.0, ack, who) == (True, [], [])  # the vehicle's own verdict, passed on
     assert who not in relay.uploads
