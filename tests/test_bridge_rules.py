@@ -261,9 +261,9 @@ def test_download_relay_answers_from_the_vehicles_own_items() -> None:
         return relay.from_gcs(t, B.MissionRequestInt(target_system=1, target_component=1, seq=seq, mission_type=0),
                               who)
 
-    up_, answers, more = ask(0.3, 0)
+    up_, answers, more = ask(0.1, 0)
     assert not up_ and [a.seq for a in answers] == [0] and more == [b"ask3"]  # the vehicle's own item, at once
-    assert ask(0.35, 1) == (False, [], [b"ask4"])  # asked 0.35 s ago: on its way
+    assert ask(0.25, 1) == (False, [], [b"ask4"])  # asked 0.25 s ago: on its way
     late = B.MissionItemInt(target_system=245, target_component=190, seq=1, x=1, mission_type=0)
     assert relay.from_vehicle(0.5, late, who) == (True, [])  # the station waits for it: passed on
     assert ask(1.2, 3)[0]  # asked 1.2 s ago and never came: the station's own request goes up
