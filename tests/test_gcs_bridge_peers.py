@@ -279,8 +279,7 @@ def test_mavsdk_flies_a_mission_through_the_bridge(tmp_path: Path, start: Start,
             await mis.start_mission()
             await _until(tel.flight_mode, lambda f: f == FlightMode.MISSION, 10)
             await _until(mis.mission_progress, lambda p: p.current >= 3, 30)  # flying it, item by item
-            await act.land()
-            await _until(tel.flight_mode, lambda f: f == FlightMode.LAND, 10)
+            await act.land()  # (LAND lasts about a second of wall time at --speed 4: not waited for as a mode)
             await _until(tel.in_air, lambda a: not a, 40)
 
     asyncio.run(asyncio.wait_for(main(), 150))
