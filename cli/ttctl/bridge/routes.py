@@ -96,9 +96,17 @@ class Routes:
     def vehicle_frame(self, now: float, compid: int, seq: int) -> None:
         last = self._seq.get(compid)
         gap = 0 if last is None else (seq - last - 1) & 0xFF
-        if gap > 128:  # reordered or a restart: not losses
+        if gap > 128:  # behind the newest: one counted lost came late after all (or a restart)
+            if self.lost > 0 and gap != 255:
+                self.lost -= 1
+                for i in range(len(self._window) - 1, -1, -1):
+                    t, g = self._window[i]
+                    if g > 0:
+                        self._window[i] = (t, g - 1)
+                        break
             gap = 0
-        self._seq[compid] = seq
+        else:
+            self._seq[compid] = seq
         self.lost += gap
         self.received += 1
         self.heard_vehicle = now

@@ -343,6 +343,7 @@ async def _prompt(s: Any, sigs: Signals, base: Path, b: Any = None, as_json: boo
             while current is None and backlog:
                 line = backlog.pop(0)
                 if line in ("quit", "exit"):
+                    sigs.stop.set()  # the session ends here (with --gcs too, which outlives the input's end)
                     return 0
                 try:
                     step = _prompt_step(line, b)

@@ -3,9 +3,9 @@
 its own ground-station links, as the autopilot (compid 1).
 
 Which DTT frames are a ground station's: bridge/classes.py. While one was heard within PRESENCE
-seconds, the vehicle's broadcasts go down DTT too: its streams newest-wins per type, fitted to
+seconds, the vehicle's broadcasts go down DTT too (its HEARTBEAT always): its streams newest-wins per type, fitted to
 `share` of the downlink (bridge/downfit.py), everything else (acks, parameters, mission items,
-STATUSTEXT) at control priority, never dropped.
+STATUSTEXT, and the HEARTBEAT) at control priority, never dropped.
 """
 
 from __future__ import annotations
@@ -56,7 +56,9 @@ class DttGroundStations:
             return
         b = self.b
         msgid = msg.MSG_ID
-        if broadcast and msgid in self.gcs.rates.builders:
+        # (HEARTBEAT is not fitted: in order with the answers, a ground station learns the autopilot
+        # type before the first PARAM_VALUE, which MAVProxy decodes by it)
+        if broadcast and msgid in self.gcs.rates.builders and msgid != b.Heartbeat.MSG_ID:
             self.fit.put(now, msgid, msg)  # a stream: newest wins, fitted
             return
         if isinstance(msg, b.MessageInterval):  # the interval this link keeps, not the one asked

@@ -356,8 +356,12 @@ class OnboardNode:
     def _send_gcs(self, pairs: list[tuple[Any, Hashable]]) -> None:
         now = asyncio.get_running_loop().time()
         behind_tablet = self.dtt_gcs.present(now)
+        heartbeat = self.b.Heartbeat
         for msg, link in pairs:
-            if link is DTT or (link is None and behind_tablet):
+            # the autopilot's HEARTBEAT goes down DTT whether or not a ground station is there yet:
+            # one connecting to the tablet's bridge learns the vehicle (and its autopilot type, by
+            # which MAVProxy decodes parameters) before it asks for anything; 21 bytes a second
+            if link is DTT or (link is None and (behind_tablet or isinstance(msg, heartbeat))):
                 self.dtt_gcs.send(now, msg, link is None)
                 if link is DTT:
                     continue

@@ -1,0 +1,169 @@
+"""The ground-station bridge's rules, sans-IO (ttctl.bridge): what the tablet's bridge queues
+toward the vehicle (retries not twice, newest-wins sticks, a share of the uplink, bounded), where
+the vehicle's answers go (by target; QGroundControl's 255/190 carried under a free id and given
+back its own), RADIO_STATUS's quality, and the onboard end's streams fitted to its share of the
+downlink with MESSAGE_INTERVAL telling the interval kept. The real-process tests are in
+test_gcs_bridge.py and test_gcs_bridge_peers.py."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from conftest import shipped
+from ttctl.bridge.classes import TABLET, from_ground_station, ground_station_protocol
+from ttctl.bridge.downfit import StreamFit
+from ttctl.bridge.routes import Routes
+from ttctl.bridge.uplink import GcsUplink
+
+B = shipped()
+
+
+def frame(msg: Any, src: tuple[int, int] = (245, 190), seq: int = 0) -> bytes:
+    return bytes(msg.pack(seq, *src))
+
+
+def param_read(name: str = "MPC_XY_VEL_MAX") -> Any:
+    return B.ParamRequestRead(target_system=1, target_component=1, param_id=name, param_index=-1)
+
+
+def sticks(x: int) -> Any:
+    return B.ManualControl(target=1, x=x, y=0, z=500, r=0, buttons=0)
+
+
+def drain(q: GcsUplink, now: float, n: int = 1000) -> list[bytes]:
+    out = []
+    for _ in range(n):
+        f = q.pull(now, 100)
+        if f is None:
+            break
+        out.append(f)
+    return out
+
+
+def test_which_frames_are_a_ground_stations() -> None:
+    for name in ("COMMAND_LONG", "COMMAND_INT", "PARAM_REQUEST_LIST", "MISSION_ITEM_INT", "SET_MODE",
+                 "FILE_TRANSFER_PROTOCOL", "MANUAL_CONTROL", "SET_POSITION_TARGET_LOCAL_NED", "REQUEST_DATA_STREAM"):
+        assert ground_station_protocol(name), name
+        assert from_ground_station(name, TABLET, False), name  # whoever sends it (a naive bridge keeps 255/190)
+    for name in ("TT_ACTION_COMMAND", "TT_FILE_OFFER", "DJI_POSE_STAMPED", "KR_MOTOR_CONTROL", "TT_LOG"):
+        assert not from_ground_station(name, (245, 190), False), name
+    assert not from_ground_station("HEARTBEAT", TABLET, True)  # the tablet's own heartbeat stays the tablet's
+    assert from_ground_station("HEARTBEAT", (254, 190), True)
+    assert not from_ground_station("HEARTBEAT", (254, 190), False)  # not a ground station's heartbeat
+
+
+def test_a_retry_still_waiting_is_not_queued_twice_but_one_sent_may_go_again() -> None:
+    q = GcsUplink(None)
+    assert q.put(0.0, "PARAM_REQUEST_READ", frame(param_read(), seq=1)) == "queued"
+    assert q.put(0.1, "PARAM_REQUEST_READ", frame(param_read(), seq=2)) == "duplicate"  # seq differs: still a retry
+    assert q.put(0.1, "PARAM_REQUEST_READ", frame(param_read("NAV_DLL_ACT"), seq=3)) == "queued"
+    assert q.put(0.1, "PARAM_REQUEST_READ", frame(param_read(), src=(255, 190))) == "queued"  # another station's
+    assert len(drain(q, 0.2)) == 3 and q.stats.duplicates == 1
+    assert q.put(0.3, "PARAM_REQUEST_READ", frame(param_read(), seq=4)) == "queued"  # the first left: may go again
+    assert len(drain(q, 0.3)) == 1
+
+
+def test_sticks_are_newest_wins_and_protocol_frames_go_first() -> None:
+    q = GcsUplink(None)
+    for x in range(50):  # 50 Hz MANUAL_CONTROL for a second, nothing pulled
+        q.put(x / 50, "MANUAL_CONTROL", frame(sticks(x), seq=x))
+    q.put(1.0, "COMMAND_LONG", frame(B.CommandLong(target_system=1, target_component=1, command=400, param1=1)))
+    out = drain(q, 1.0)
+    assert len(out) == 2 and q.stats.replaced == 49
+    parsed = [m for f in out for m in B.parser().feed(f)]
+    assert parsed[0].NAME == "COMMAND_LONG" and parsed[1].NAME == "MANUAL_CONTROL" and parsed[1].x == 49
+
+
+def test_the_queue_is_bounded_whatever_a_station_floods() -> None:
+    q = GcsUplink(None, max_protocol=8, max_slots=4)
+    for i in range(1000):
+        q.put(0.0, "PARAM_REQUEST_READ", frame(B.ParamRequestRead(target_system=1, target_component=1,
+                                                                  param_id="X", param_index=i)))
+        q.put(0.0, "MANUAL_CONTROL", frame(sticks(i), src=(200 + i % 50, 190)))
+    assert len(q.protocol) == 8 and len(q.slots) == 4 and len(q._waiting) == 8
+    assert q.stats.overflow == (1000 - 8) + (1000 - 4)  # (50 sources in turn: each a new slot)
+    got = [m.param_index for f in drain(q, 0.0) for m in B.parser().feed(f) if m.NAME == "PARAM_REQUEST_READ"]
+    assert got == list(range(992, 1000))  # the newest kept, in order
+
+
+def test_the_uplink_share_is_kept_over_time() -> None:
+    q = GcsUplink(300.0)
+    sent = 0
+    t = 0.0
+    while t < 10.0:
+        for i in range(5):  # a flood far above the share
+            q.put(t, "PARAM_REQUEST_READ", frame(B.ParamRequestRead(target_system=1, target_component=1,
+                                                                    param_id=f"P{i}", param_index=int(t * 100))))
+        while (f := q.pull(t, 100)) is not None:
+            sent += len(f)
+        t += 0.01
+    assert 0.9 * 3000 <= sent <= 3000 + 100 + 60, sent  # 300 B/s for 10 s, one packet's burst
+
+
+def test_answers_go_to_the_station_they_are_for_and_broadcasts_to_all() -> None:
+    r = Routes(1)
+    qgc_link, sdk_link = "qgc", "sdk"
+    r.fixed = [qgc_link, sdk_link]
+    assert r.destinations(0.0, None)[0] == [(qgc_link, None), (sdk_link, None)]  # reached before they speak
+    carried = r.heard(0.0, qgc_link, ("127.0.0.1", 14550), TABLET)
+    assert carried == (254, 190)  # QGroundControl's 255/190 is the tablet's: carried under a free id
+    assert r.heard(0.1, sdk_link, ("127.0.0.1", 14540), (245, 190)) == (245, 190)
+    dests, own = r.destinations(0.2, (254, 190))
+    assert dests == [(qgc_link, ("127.0.0.1", 14550))] and own == TABLET
+    dests, own = r.destinations(0.2, (245, 190))
+    assert dests == [(sdk_link, ("127.0.0.1", 14540))] and own is None
+    assert r.destinations(0.2, (245, 0))[0] == [(sdk_link, ("127.0.0.1", 14540))]  # compid 0: any component
+    assert r.destinations(0.2, (77, 1))[0] == []  # nobody here is 77
+    assert len(r.destinations(0.2, None)[0]) == 2
+    assert r.heard(0.3, sdk_link, ("127.0.0.1", 14540), (254, 191)) == (254, 191)  # a station of its own 254...
+    assert r.heard(5.0, "other", ("127.0.0.1", 1), TABLET) == (254, 190)  # ...the mapping, once made, stays
+
+
+def test_radio_quality_counts_what_the_vehicle_sent_and_is_zero_when_silent() -> None:
+    r = Routes(1)
+    assert r.quality(0.0) == 0
+    seq = 0
+    for i in range(100):
+        seq = (seq + (2 if i % 10 == 0 else 1)) & 0xFF  # one frame in ten lost
+        r.vehicle_frame(i * 0.04, 1, seq)
+    assert 0.85 * 254 <= r.quality(4.0) <= 0.95 * 254 and r.lost == 9
+    assert r.quality(4.0 + 3.6) == 0  # silent past the link-loss time
+    late = Routes(1)
+    for t, seq in enumerate((1, 2, 4, 3, 5, 6)):  # 3 overtaken by 4 (a frame held for the next packet)
+        late.vehicle_frame(t * 0.1, 1, seq)
+    assert late.lost == 0 and late.quality(0.6) == 254
+
+
+def test_streams_fit_the_downlink_share_and_say_the_interval_kept() -> None:
+    asked = {0: 1.0, 33: 0.02, 30: 0.02}  # HEARTBEAT 1 Hz, GLOBAL_POSITION_INT and ATTITUDE at 50 Hz
+    # (40 and 40 bytes a frame: 4 KB/s asked for, 1 KB/s of room)
+    enc = B.encoder(1, 1)
+    fit = StreamFit(1000.0, asked=asked.get, encode=enc.encode)
+    s = B.encoder(1, 1)  # sizes
+    gpi = B.GlobalPositionInt(time_boot_ms=1, lat=460503000, lon=144686000, alt=300000, relative_alt=5000, hdg=9000)
+    att = B.Attitude(time_boot_ms=1, roll=0.1, pitch=0.2, yaw=0.3, rollspeed=0.01, pitchspeed=0.02, yawspeed=0.03)
+    hb = B.Heartbeat(type=2, autopilot=12)
+    sent: dict[int, int] = {0: 0, 33: 0, 30: 0}
+    nbytes = 0
+    t = 0.0
+    while t < 20.0:
+        for mid, msg in ((33, gpi), (30, att)):
+            fit.put(t, mid, msg)
+        if abs(t - round(t)) < 1e-6:
+            fit.put(t, 0, hb)
+        while (f := fit.pull(t, 100)) is not None:
+            m = B.parser().feed(f)[0]
+            sent[m.MSG_ID] += 1
+            if t >= 10:
+                nbytes += len(f)
+        t = round(t + 0.005, 3)
+    assert len(s.encode(gpi)) * 50 + len(s.encode(att)) * 50 > 3000  # asked for: far more than 1000 B/s
+    assert 0.8 * 1000 <= nbytes / 10 <= 1000 * 1.05, nbytes / 10
+    assert 19 <= sent[0] <= 21  # the heartbeat keeps its 1 Hz
+    assert abs(sent[33] - sent[30]) <= 0.25 * sent[33]  # slowed by the same factor
+    kept = fit.interval_us(33, 20000)
+    assert kept > 20000 and abs(kept / 1e6 - 20 / sent[33]) < 0.3 * kept / 1e6, (kept, sent)
+    assert fit.interval_us(0, 1_000_000) == 1_000_000 and fit.interval_us(99, 5000) == 5000  # unknown: as asked
+    roomy = StreamFit(100000.0, asked=asked.get, encode=enc.encode)
+    roomy.put(0.0, 33, gpi)
+    assert roomy.interval_us(33, 20000) == 20000  # it fits: as asked

@@ -1,0 +1,213 @@
+"""`ttctl emulate tablet --gcs` with a pymavlink ground station, real processes on loopback:
+tablet (the bridge) -> `link relay --profile m100` -> `emulate onboard`. What a stranger, garbage
+and frames for other systems on the ground-station port change (nothing), and what a flooding
+ground station costs the app's own commands (no more than the latency bound) and the bridge's
+memory (bounded). MAVSDK, MAVProxy and the rest: test_gcs_bridge_peers.py; the rules sans-IO:
+test_bridge_rules.py."""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import socket
+import statistics
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+from typing import Any
+
+os.environ.setdefault("MAVLINK20", "1")  # before pymavlink is imported: ground stations speak MAVLink 2
+
+from pymavlink import mavutil
+
+from e2e_lib import LOCAL, Start, free_port, relay
+
+BIN = Path(sys.executable).parent
+
+
+def world(start: Start, *relay_args: str, onboard_args: tuple[str, ...] = ()) -> tuple[int, int]:
+    """The onboard end behind an m100 relay; returns (the relay's tablet-side port, the onboard port)."""
+    a, b = free_port(), free_port()
+    node = start("onboard", "emulate", "onboard", "--no-gcs", "--listen", f"udpin:{LOCAL}:{b}", "--no-entry-points",
+                 "--profile", "m100", *onboard_args)
+    node.wait_for("onboard 1:")
+    relay(start, a, b, "--profile", "m100", "--stats-interval", "0", *relay_args)
+    return a, b
+
+
+def station(port: int, sysid: int = 255, compid: int = 190) -> Any:
+    """A pymavlink ground station where the bridge sends (udpout at the bridge: we listen)."""
+    return mavutil.mavlink_connection(f"udpin:{LOCAL}:{port}", source_system=sysid, source_component=compid)
+
+
+class Beat:
+    """A ground station's HEARTBEAT each second, as QGroundControl sends it, while the test runs."""
+
+    def __init__(self, m: Any) -> None:
+        self.m, self.stop = m, threading.Event()
+        self.t = threading.Thread(target=self._run, daemon=True)
+        self.t.start()
+
+    def _run(self) -> None:
+        while not self.stop.is_set():
+            self.m.mav.heartbeat_send(6, 8, 0, 0, 0)  # MAV_TYPE_GCS, MAV_AUTOPILOT_INVALID
+            self.stop.wait(1.0)
+
+
+def wait_msg(m: Any, kind: str, pred: Any = lambda x: True, timeout: float = 10.0) -> Any:
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        x = m.recv_match(type=kind, blocking=True, timeout=0.5)
+        if x is not None and pred(x):
+            return x
+    raise AssertionError(f"no {kind} within {timeout} s")
+
+
+def command(m: Any, cmd: int, *params: float, tries: int = 4) -> Any:
+    """COMMAND_LONG with retries as ground stations do (1.5 s apart), the ack returned."""
+    p = list(params) + [0.0] * (7 - len(params))
+    for confirmation in range(tries):
+        m.mav.command_long_send(1, 1, cmd, confirmation, *p)
+        try:
+            return wait_msg(m, "COMMAND_ACK", lambda a: a.command == cmd, 1.5)
+        except AssertionError:
+            continue
+    raise AssertionError(f"command {cmd}: no COMMAND_ACK after {tries} tries")
+
+
+def test_strangers_garbage_and_other_systems_change_nothing(tmp_path: Path, start: Start) -> None:
+    a, _ = world(start, "--loss", "0.1", "--seed", "3")
+    g, h = free_port(), free_port()
+    m = station(g)  # QGroundControl's ids, which are the tablet's own: carried under another
+    tablet = start("tablet", "emulate", "tablet", "--to", f"udpout:{LOCAL}:{a}", "--profile", "m100",
+                   "--gcs", f"udpout:{LOCAL}:{g}", "--gcs", f"udpin:{LOCAL}:{h}")
+    tablet.wait_for("tablet: connected")
+    beat = Beat(m)
+    try:
+        hb = wait_msg(m, "HEARTBEAT", lambda x: x.get_srcSystem() == 1 and x.get_srcComponent() == 1, 10)
+        assert hb.autopilot == mavutil.mavlink.MAV_AUTOPILOT_PX4
+        rs = wait_msg(m, "RADIO_STATUS", timeout=3)
+        assert (rs.get_srcSystem(), rs.get_srcComponent()) == (1, 68) and rs.rssi > 0
+        # strangers on the listening ground-station port: garbage, a command for system 7, a half frame
+        other = mavutil.mavlink.MAVLink(None, srcSystem=200, srcComponent=190)
+        other.robust_parsing = True
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+            for i in range(200):
+                s.sendto(os.urandom(1 + i % 120), (LOCAL, h))
+                s.sendto(other.command_long_encode(7, 1, 400, 0, 1, 0, 0, 0, 0, 0, 0).pack(other), (LOCAL, h))
+                s.sendto(b"\xfd\x09\x00\x00", (LOCAL, h))
+        ack = command(m, 400, 1)  # arm, through all of that
+        assert ack.result == 0 and ack.target_system == 255 and ack.target_component == 190  # its own ids back
+        ack = command(m, 22, 0, 0, 0, 0, 0, 0, 300.0)  # take off to 300 m AMSL (home is 295)
+        assert ack.result == 0
+        pos = wait_msg(m, "GLOBAL_POSITION_INT", lambda x: x.relative_alt > 2000, 20)
+        assert pos.get_srcSystem() == 1
+        wait_msg(m, "HEARTBEAT", lambda x: x.get_srcComponent() == 1 and x.base_mode & 128, 5)  # armed, says so
+    finally:
+        beat.stop.set()
+    tablet.signal(2)
+    assert tablet.wait(10) == 0
+    summary = re.search(r"ground stations: (\d+) frames up .* (\d+) for other systems not carried\), (\d+) down",
+                        tablet.stderr)
+    assert summary, tablet.stderr
+    assert int(summary.group(2)) == 200 and int(summary.group(3)) > 50, tablet.stderr
+    assert "not carrying COMMAND_LONG for system 7" in tablet.stderr
+    assert "Traceback" not in tablet.stderr
+
+
+def _rss_kb(pid: int) -> int:
+    for line in Path(f"/proc/{pid}/status").read_text().splitlines():
+        if line.startswith("VmRSS:"):
+            return int(line.split()[1])
+    return 0
+
+
+def test_a_flooding_ground_station_is_throttled_and_app_commands_keep_their_latency(tmp_path: Path,
+                                                                                     start: Start) -> None:
+    """Parameter requests in a loop (the list again and again, and single ones by index), 50 Hz
+    MANUAL_CONTROL and a 2,000-item mission upload from one ground station: the app's own command
+    (a hover refused on the ground: a full round trip with the vehicle's words) is answered within
+    its idle p95 + 200 ms, the bridge drops what does not fit (retries as duplicates, the oldest
+    for room) and its memory stays put."""
+    a, _ = world(start, "--loss", "0")  # no loss: the bound is about priority, not retries
+    g = free_port()
+    m = station(g, 245, 190)
+    errors = open(tmp_path / "tablet.err", "w")  # noqa: SIM115 - closed with the process
+    tab = subprocess.Popen([str(BIN / "ttctl"), "emulate", "tablet", "--to", f"udpout:{LOCAL}:{a}", "--profile",
+                            "m100", "--gcs", f"udpout:{LOCAL}:{g}", "--json"], stdin=subprocess.PIPE,
+                           stdout=subprocess.PIPE, stderr=errors, text=True, bufsize=1)
+    beat = Beat(m)
+    flooding = threading.Event()
+    done = threading.Event()
+
+    def flood() -> None:
+        flooding.wait()
+        i = 0
+        while not done.is_set():
+            m.mav.manual_control_send(1, i % 1000, 0, 500, 0, 0)
+            if i % 2 == 0:
+                m.mav.param_request_list_send(1, 1)  # the same request again and again: duplicates
+            m.mav.param_request_read_send(1, 1, b"", i % 5000)  # distinct requests: more than the queue holds
+            if i % 5 == 0:
+                m.mav.mission_count_send(1, 1, 2000, 0)
+                m.mav.mission_item_int_send(1, 1, i % 2000, 3, 16, 0, 1, 0, 0, 0, 0, 460503000 + i, 144686000, 10, 0)
+            i += 1
+            time.sleep(0.02)
+
+    threading.Thread(target=flood, daemon=True).start()
+    try:
+        assert tab.stdout is not None and tab.stdin is not None
+        deadline = time.monotonic() + 20
+        while time.monotonic() < deadline:  # the tablet says it is connected on stderr
+            if "tablet: connected" in (tmp_path / "tablet.err").read_text():
+                break
+            time.sleep(0.1)
+        wait_msg(m, "HEARTBEAT", lambda x: x.get_srcComponent() == 1, 10)
+
+        def app_command() -> float:
+            t0 = time.monotonic()
+            tab.stdin.write("hover\n")  # type: ignore[union-attr]
+            tab.stdin.flush()  # type: ignore[union-attr]
+            line = json.loads(tab.stdout.readline())  # type: ignore[union-attr]
+            while line["event"] != "step":  # (the vehicle's state and log lines come too)
+                line = json.loads(tab.stdout.readline())  # type: ignore[union-attr]
+            assert line["event"] == "step" and not line["ok"] and "on the ground" in line["reason"], line
+            return (time.monotonic() - t0) * 1000
+
+        idle = []
+        for _ in range(10):
+            idle.append(app_command())
+            time.sleep(0.2)
+        rss0 = _rss_kb(tab.pid)
+        flooding.set()
+        time.sleep(3)  # the queue full by now
+        during = []
+        for _ in range(10):
+            during.append(app_command())
+            time.sleep(0.3)
+        rss1 = _rss_kb(tab.pid)
+        # the ground station is still served meanwhile: a parameter answers
+        assert wait_msg(m, "PARAM_VALUE", timeout=5).get_srcSystem() == 1
+    finally:
+        done.set()
+        beat.stop.set()
+    tab.stdin.write("quit\n")  # type: ignore[union-attr]
+    tab.stdin.flush()  # type: ignore[union-attr]
+    tab.communicate(timeout=10)
+    errors.close()
+    err = (tmp_path / "tablet.err").read_text()
+    p95 = lambda xs: sorted(xs)[max(0, round(0.95 * len(xs)) - 1)]  # noqa: E731
+    report = {"idle_ms": [round(x) for x in idle], "during_ms": [round(x) for x in during], "rss_kb": (rss0, rss1)}
+    print("MEASURED", json.dumps(report))
+    assert p95(during) <= p95(idle) + 200, report
+    assert statistics.median(during) <= statistics.median(idle) + 100, report
+    assert rss1 - rss0 < 8_000, report  # kB: bounded queues, not a copy of the flood
+    summary = re.search(r"(\d+) frames up \((\d+) sent, (\d+) retries dropped as duplicates, (\d+) overtaken by "
+                        r"newer, (\d+) dropped for room", err)
+    assert summary, err
+    up, sent, dup, newer, room = (int(x) for x in summary.groups())
+    assert dup > 0 and newer > 100 and room > 0 and sent < up / 2, err  # throttled: most never went
+    assert tab.returncode == 0 and "Traceback" not in err, err
