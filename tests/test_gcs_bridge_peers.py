@@ -183,13 +183,14 @@ def mavsdk_config() -> Any:
 
 
 async def takeoff(act: Any, node: Proc) -> None:
-    """MAVSDK's takeoff(), allowing one known refusal: its first COMMAND_ACK lost on the link, its
-    retry is refused by a vehicle already taking off (the onboard end's bug, tested on its own in
-    test_a_retried_takeoff_whose_ack_was_lost_is_accepted); any other refusal fails the test."""
+    """MAVSDK's takeoff() (again after a TIMEOUT), allowing one known refusal: its first COMMAND_ACK
+    lost on the link, its retry is refused by a vehicle already taking off (the onboard end's bug,
+    tested on its own in test_a_retried_takeoff_whose_ack_was_lost_is_accepted); any other refusal
+    fails the test."""
     from mavsdk.plugins.action import ActionError
 
     try:
-        await act.takeoff()
+        await again(act.takeoff)
     except ActionError as e:
         if "COMMAND_DENIED" not in str(e) or "cannot take off while taking off" not in node.stderr:
             raise
@@ -212,6 +213,21 @@ async def persevere(go: Callable[[], Any], keep: bool = False, attempts: int = 3
         took = (time.monotonic() - t0, failed)
         return (took, value) if keep else took
     raise AssertionError(f"{attempts} mission transfers failed: {failed}")
+
+
+async def again(action: Callable[[], Any], attempts: int = 3) -> None:
+    """A MAVSDK action tried again after a TIMEOUT (MAVSDK resends a command 3 times 0.5 s apart, which
+    a burst of loss can swallow): what its user does. Any other error fails at once."""
+    from mavsdk.plugins.action import ActionError
+    from mavsdk.plugins.mission import MissionError
+
+    for i in range(attempts):
+        try:
+            await action()
+            return
+        except (ActionError, MissionError) as e:
+            if "TIMEOUT" not in str(e) or i == attempts - 1:
+                raise
 
 
 def test_mavsdk_default_configuration_connects_through_the_bridge(tmp_path: Path, start: Start) -> None:
@@ -268,7 +284,7 @@ def test_mavsdk_flies_a_mission_through_the_bridge(tmp_path: Path, start: Start,
             await par.set_param_float("MPC_XY_VEL_MAX", 2.5)
             assert await par.get_param_float("MPC_XY_VEL_MAX") == pytest.approx(2.5)
             assert await par.get_param_int("NAV_DLL_ACT") == 2
-            await act.arm()
+            await again(act.arm)
             await _until(tel.armed, bool, 5)
             await act.set_takeoff_altitude(4.0)
             await takeoff(act, c.onboard)
@@ -287,10 +303,10 @@ def test_mavsdk_flies_a_mission_through_the_bridge(tmp_path: Path, start: Start,
                 return (round(i.latitude_deg, 7), round(i.longitude_deg, 7), round(i.relative_altitude_m, 2))
 
             assert [key(i) for i in plan.mission_items] == [key(i) for i in items]
-            await mis.start_mission()
+            await again(mis.start_mission)
             await _until(tel.flight_mode, lambda f: f == FlightMode.MISSION, 10)
             await _until(mis.mission_progress, lambda p: p.current >= 3, 30)  # flying it, item by item
-            await act.land()  # (LAND lasts about a second of wall time at --speed 4: not waited for as a mode)
+            await again(act.land)  # (LAND lasts about a second of wall time at --speed 4: not waited for as a mode)
             await _until(tel.in_air, lambda a: not a, 40)
 
     asyncio.run(asyncio.wait_for(main(), 150))
@@ -327,7 +343,7 @@ def test_mavproxy_through_the_bridge(tmp_path: Path, start: Start) -> None:
     count = len(Autopilot(shipped(), SimVehicle()).params.params)
     assert f"Received {count} parameters" in out, out[-3000:]
     assert re.search(r"Available modes:.*LOITER.*MISSION.*RTL.*OFFBOARD", out), out[-3000:]
-    assert "Sent all 5 waypoints" in out and "MISSION_ACK: TYPE_MISSION: ACCEPTED" in out, out[-3000:]
+    assert "Sent all 5 waypoints" in out, out[-3000:]  # (its MISSION_ACK may be lost: it is sent once)
     assert "mission of 5 items received" in c.onboard.stderr  # the vehicle's own word
     assert re.search(r"Requesting 5 waypoints", out) and "Saved 5 waypoints" in out, out[-3000:]  # wp list
     assert "ARMED" in out, out[-3000:]  # MAVProxy says so from the vehicle's HEARTBEAT
@@ -367,7 +383,7 @@ def test_two_ground_stations_each_get_their_own_answers(tmp_path: Path, start: S
             side = asyncio.ensure_future(asyncio.to_thread(pymavlink_side))
             await _until(tel.health, lambda h: h.is_armable, 15)
             assert await par.get_param_int("NAV_DLL_ACT") == 2
-            await act.arm()
+            await again(act.arm)
             await act.set_takeoff_altitude(3.0)
             await takeoff(act, c.onboard)
             await _until(tel.position, lambda p: p.relative_altitude_m > 2.8, 20)
