@@ -397,7 +397,8 @@ def test_two_ground_stations_each_get_their_own_answers(tmp_path: Path, start: S
     assert results["acks"] == [m.MAV_RESULT_ACCEPTED] * 3
     acks = gcs.received("COMMAND_ACK")
     # every COMMAND_ACK here is for this ground station (its own ids given back) and for its own command
-    assert acks and all((a.target_system, a.target_component) == (255, 190) for a in acks), acks
+    assert acks and all((a.target_system, a.target_component) == (255, 190) for a in acks), \
+        [(a.command, a.target_system, a.target_component) for a in acks]
     assert {a.command for a in acks} == {m.MAV_CMD_REQUEST_MESSAGE}, [a.command for a in acks]
     assert not [a for a in acks if a.command in (m.MAV_CMD_COMPONENT_ARM_DISARM, m.MAV_CMD_NAV_TAKEOFF)]
     # answers addressed to anyone else never came here either
