@@ -167,3 +167,99 @@ def test_streams_fit_the_downlink_share_and_say_the_interval_kept() -> None:
     roomy = StreamFit(100000.0, asked=asked.get, encode=enc.encode)
     roomy.put(0.0, 33, gpi)
     assert roomy.interval_us(33, 20000) == 20000  # it fits: as asked
+
+
+def item(seq: int, count_lat: int = 0) -> Any:
+    return B.MissionItemInt(target_system=1, target_component=1, seq=seq, frame=6, command=16, autocontinue=1,
+                            x=460503000 + seq * 100 + count_lat, y=144686000, z=20.0)
+
+
+def test_mission_relay_pipelines_an_upload_and_acknowledges_nothing_itself() -> None:
+    from ttctl.bridge.missions import MissionRelay
+
+    relay = MissionRelay(lambda who, seq, kind: ("req", who, seq), window=2)
+    who = (245, 190)
+    count = B.MissionCount(target_system=1, target_component=1, count=5, mission_type=0)
+    pending = relay.from_gcs(0.0, count, who, b"count")
+    assert pending == [("req", who, 0)]  # asked at once, not after a round trip over the link
+    given: list[int] = []
+
+    def station_answers(t: float) -> None:  # a ground station gives what it is asked for
+        while pending:
+            _, _, seq = pending.pop(0)
+            given.append(seq)
+            pending.extend(relay.from_gcs(t, item(seq), who, f"item{seq}".encode()))
+
+    station_answers(0.01)
+    assert given == [0, 1]  # two ahead of what the vehicle asked for (nothing yet): the window
+
+    def vehicle_asks(t: float, seq: int) -> tuple[bool, list[bytes]]:
+        req = B.MissionRequestInt(target_system=245, target_component=190, seq=seq, mission_type=0)
+        passed, again, reqs = relay.from_vehicle(t, req, who)
+        pending.extend(reqs)
+        station_answers(t)
+        return passed, again
+
+    assert vehicle_asks(0.2, 0) == (False, [])  # on its way: swallowed, nothing resent; one more asked
+    assert given == [0, 1, 2]
+    assert vehicle_asks(0.7, 0) == (False, [b"item0"])  # asked again: it was lost, it goes once more
+    assert vehicle_asks(0.8, 2) == (False, []) and given == [0, 1, 2, 3, 4]  # the vehicle at 2: the rest
+    ack = B.MissionAck(target_system=245, target_component=190, type=0, mission_type=0)
+    assert relay.from_vehicle(3.0, ack, who) == (True, [], [])  # the vehicle's own verdict, passed on
+    assert who not in relay.uploads
+    # a count the vehicle never answers (lost) goes again, and what followed it with it
+    relay.from_gcs(10.0, count, who, b"count")
+    relay.from_gcs(10.01, item(0), who, b"item0")
+    assert relay.tick(10.3) == [] and relay.tick(10.7) == [b"count"]
+    req = B.MissionRequestInt(target_system=245, target_component=190, seq=0, mission_type=0)
+    assert relay.from_vehicle(10.9, req, who)[1] == [b"item0"]  # first asked after the count went again
+    other = B.MissionRequestInt(target_system=245, target_component=190, seq=0, mission_type=1)
+    assert relay.from_vehicle(11.0, other, who)[0]  # another plan's request: not this upload's
+
+
+def test_the_vehicle_keeps_items_that_come_ahead_and_acks_a_repeated_last_item_again() -> None:
+    from ttctl.ends.onboard.missions import Missions
+
+    sent: list[Any] = []
+    m = Missions(B, 1, 1, lambda msg, peer: sent.append(msg))
+    gcs = (245, 190)
+
+    def from_gcs(msg: Any, t: float) -> None:
+        msg._mav_sysid, msg._mav_compid = gcs
+        m.on_message(t, msg)
+
+    from_gcs(B.MissionCount(target_system=1, target_component=1, count=5, mission_type=0), 0.0)
+    for t, seq in ((0.1, 0), (0.2, 2), (0.4, 3), (0.6, 1), (0.7, 4)):  # 1 lost once, then came
+        from_gcs(item(seq), t)
+    asks = [x.seq for x in sent if x.NAME == "MISSION_REQUEST_INT"]
+    acks = [x for x in sent if x.NAME == "MISSION_ACK"]
+    assert acks and acks[-1].type == 0 and [i.seq for i in m.mission()] == [0, 1, 2, 3, 4]
+    assert asks.count(1) == 2 and 2 not in asks and 3 not in asks  # 1 asked again once; 2 and 3 never
+    from_gcs(item(4), 1.5)  # the last item again: the ground station did not hear the ack
+    assert [x.NAME for x in sent[-1:]] == ["MISSION_ACK"] and len([x for x in sent if x.NAME == "MISSION_ACK"]) == 2
+
+
+def test_download_relay_answers_from_the_vehicles_own_items() -> None:
+    from ttctl.bridge.downloads import DownloadRelay
+
+    relay = DownloadRelay(lambda who, seq, kind: f"ask{seq}".encode(), window=3)
+    who = (245, 190)
+    count = B.MissionCount(target_system=245, target_component=190, count=6, mission_type=0)
+    passed, up = relay.from_vehicle(0.0, count, who)
+    assert passed and up == [b"ask0", b"ask1", b"ask2"]  # asked at once, as the station would, a window ahead
+    for seq in (0, 2):  # 1 is lost on the way
+        held = B.MissionItemInt(target_system=245, target_component=190, seq=seq, x=seq, mission_type=0)
+        assert relay.from_vehicle(0.2, held, who) == (False, [])  # held for the station's request
+
+    def ask(t: float, seq: int) -> tuple[bool, list[Any], list[bytes]]:
+        return relay.from_gcs(t, B.MissionRequestInt(target_system=1, target_component=1, seq=seq, mission_type=0),
+                              who)
+
+    up_, answers, more = ask(0.3, 0)
+    assert not up_ and [a.seq for a in answers] == [0] and more == [b"ask3"]  # the vehicle's own item, at once
+    assert ask(0.35, 1) == (False, [], [b"ask4"])  # asked 0.35 s ago: on its way
+    late = B.MissionItemInt(target_system=245, target_component=190, seq=1, x=1, mission_type=0)
+    assert relay.from_vehicle(0.5, late, who) == (True, [])  # the station waits for it: passed on
+    assert ask(1.2, 3)[0]  # asked 1.2 s ago and never came: the station's own request goes up
+    assert relay.from_gcs(2.0, B.MissionAck(target_system=1, target_component=1, type=0, mission_type=0), who)[0]
+    assert who not in relay.downloads

@@ -112,7 +112,7 @@ def emulate_tablet_cmd(
                                                   show_default=False)] = None,
     gcs_share: Annotated[float, typer.Option("--gcs-share", help="The share of the DTT uplink ground stations' frames "
                                                                  "may use (the app's commands go first anyway).",
-                                             min=0.05, max=1.0)] = 0.6,
+                                             min=0.05, max=1.0)] = 0.8,
 ) -> None:
     """The tablet's end: commands (take-off, land, hover, return, set-points, trajectories),
     files both ways, any message of the --dialect (msg NAME field=value) and the vehicle's state

@@ -44,7 +44,7 @@ class TabletOptions:
     include_dirs: list[Path] = field(default_factory=list)
     plugins: list[str] = field(default_factory=list)
     gcs: list[str] = field(default_factory=list)
-    gcs_share: float = 0.6
+    gcs_share: float = 0.8
 
 
 def _prompt_msg(text: str) -> Any:

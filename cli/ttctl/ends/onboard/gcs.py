@@ -22,6 +22,7 @@ from .missions import Missions
 from .vehicle import Refused, Snapshot
 
 TARGETED = ("target_system",)
+REPEAT = 5.0  # s: a COMMAND_LONG with confirmation > 0 equal to the last one done is its retry
 
 
 def _arg(x: float, default: float) -> float:
@@ -42,6 +43,7 @@ class GroundStations:
         self.out: list[tuple[Any, Hashable]] = []
         self._peer_links: dict[tuple[int, int], Hashable] = {}
         self._told_unsupported: set[int] = set()
+        self._done: dict[tuple[int, int], tuple[Any, float, int]] = {}  # each peer's last command and its result
         ap.missions = Missions(b, sysid, compid, self._to_peer, self.log)
         self.builders: dict[int, Callable[[Snapshot], Any]] = {
             b.Heartbeat.MSG_ID: lambda s: telemetry.heartbeat(b, s, self.ap.flight.custom_mode(s)),
@@ -122,7 +124,20 @@ class GroundStations:
         if self.services.on_message(now, msg, lambda m: self._to_peer(m, peer), peer):
             return
         if isinstance(msg, (b.CommandLong, b.CommandInt)):
+            key = (peer, type(msg).__name__, msg.command, msg.param1, msg.param2, msg.param3, msg.param4,
+                   getattr(msg, "param5", getattr(msg, "x", 0)), getattr(msg, "param6", getattr(msg, "y", 0)),
+                   getattr(msg, "param7", getattr(msg, "z", 0)))
+            done = self._done.get(peer)
+            if getattr(msg, "confirmation", 0) > 0 and done is not None and done[0] == key and now - done[1] < REPEAT:
+                # a ground station's retry of a command done here (its ack was lost on the way): the same
+                # answer again, not done twice (a take-off retried while climbing is not "denied")
+                self._to_peer(b.CommandAck(command=msg.command, result=done[2], target_system=peer[0],
+                                           target_component=peer[1]), peer)
+                return
             result, extra = self._command(now, msg)
+            self._done[peer] = (key, now, int(result))
+            if len(self._done) > 64:  # (strangers on a listening link: each a peer)
+                self._done.pop(next(iter(self._done)))
             if result == b.MavResult.MAV_RESULT_ACCEPTED and msg.command in self.ap.flight_commands:
                 self.ap.commanded_by(peer[0], now)
             self._to_peer(b.CommandAck(command=msg.command, result=int(result), target_system=peer[0],

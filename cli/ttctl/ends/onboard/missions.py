@@ -1,5 +1,7 @@
 """The MAVLink mission protocol on the vehicle's side, sans-IO: upload (MISSION_COUNT, then a
-MISSION_REQUEST_INT per item, re-asked when an item does not come), download
+MISSION_REQUEST_INT per item, re-asked when an item does not come; an item that comes before
+it is asked for is kept, as a bridge over a slow link sends them ahead: ground stations send
+only what is asked, so on their own links nothing changes), download
 (MISSION_REQUEST_LIST, MISSION_COUNT, MISSION_ITEM_INT per request) and clear. Mission, fence
 and rally plans are kept apart, by mission_type, as the protocol asks. An item the vehicle
 cannot fly (or a fence or rally item it cannot honour) is refused at upload with the MAVLink
@@ -16,8 +18,9 @@ from typing import Any
 
 from ...wire.bindings import Bindings
 
-RETRY = 1.0  # s before an item is asked for again
-RETRIES = 5
+RETRY = 0.5  # s before an item is asked for again (a round trip over DTT is about 0.2 s)
+RETRIES = 10
+GAP_ASK = 0.25  # s: a later item came while one is missing: ask for it again, at most this often
 
 
 @dataclass
@@ -26,6 +29,7 @@ class _Upload:
     mission_type: int
     count: int
     items: list[Any] = field(default_factory=list)  # MISSION_ITEM_INT
+    ahead: dict[int, Any] = field(default_factory=dict)  # items that came before an earlier one
     asked_at: float = 0.0
     tries: int = 0
 
@@ -61,6 +65,7 @@ class Missions:
         self.altitude_problem: Callable[[Any], str | None] = lambda item: None  # why the vehicle cannot fly at it
         self.plans: dict[int, list[Any]] = {}
         self.upload: _Upload | None = None
+        self.done: tuple[tuple[int, int], int, int, float] | None = None  # the last upload: peer, type, count, when
 
     def mission(self) -> list[Any]:
         return self.plans.get(int(self.b.MavMissionType.MAV_MISSION_TYPE_MISSION), [])
@@ -130,6 +135,7 @@ class Missions:
         b, R = self.b, self.b.MavMissionResult
         peer = (msg.get_srcSystem(), msg.get_srcComponent())
         if isinstance(msg, b.MissionCount):
+            self.done = None
             if msg.count == 0:
                 self.plans[msg.mission_type] = []
                 self.upload = None
@@ -145,25 +151,35 @@ class Missions:
             if isinstance(msg, b.MissionItem):
                 msg = self._as_int(msg)
             up = self.upload
+            if up is None and self.done is not None:
+                who, kind, count, when = self.done
+                if (who, kind, count - 1) == (peer, msg.mission_type, msg.seq) and now - when < 10:
+                    self._ack(peer, int(R.MAV_MISSION_ACCEPTED), kind)  # the last item again: our ack was lost
+                return
             if up is None or peer != up.peer:
                 return
             if msg.seq != len(up.items):
-                if msg.seq < len(up.items):
-                    return  # a repeat of one we have
-                self._ask(now)  # out of order: ask for the next one we need
+                if msg.seq < len(up.items) or msg.seq >= up.count:
+                    return  # a repeat of one we have, or none of this plan
+                up.ahead[msg.seq] = msg  # ahead of one still missing: kept, and the missing one asked again
+                if now - up.asked_at >= GAP_ASK:
+                    self._ask(now)
                 return
-            problem = self._check(msg, up)
-            if problem is not None:
-                code, why = problem
-                self.upload = None
-                self._ack(peer, code, up.mission_type)
-                self.warn(f"item {msg.seq} refused: {why}")  # the words follow the refusal
-                return
-            up.items.append(msg)
+            while msg is not None:
+                problem = self._check(msg, up)
+                if problem is not None:
+                    code, why = problem
+                    self.upload = None
+                    self._ack(peer, code, up.mission_type)
+                    self.warn(f"item {msg.seq} refused: {why}")  # the words follow the refusal
+                    return
+                up.items.append(msg)
+                msg = up.ahead.pop(len(up.items), None)
             up.tries = 0
             if len(up.items) == up.count:
                 self.plans[up.mission_type] = up.items
                 self.upload = None
+                self.done = (peer, up.mission_type, up.count, now)
                 self.log(f"{self._type_name(up.mission_type)} of {up.count} items received")
                 self._ack(peer, int(R.MAV_MISSION_ACCEPTED), up.mission_type)
                 self.on_plan(up.mission_type)

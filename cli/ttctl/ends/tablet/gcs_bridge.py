@@ -16,14 +16,17 @@ from dataclasses import dataclass
 from typing import Any
 
 from ...bridge.classes import ONBOARD_COMPID, RADIO_COMPID
+from ...bridge.downloads import DownloadRelay
+from ...bridge.missions import MissionRelay
 from ...bridge.routes import Routes
 from ...bridge.uplink import MAX_PROTOCOL, GcsUplink
 from ...link.transport import Spec, Transport, make_transport
 from ...proto.endpoint import Endpoint
 from ...wire.bindings import Bindings
 
-SHARE = 0.6  # of the DTT uplink, for ground stations' frames (the app's commands go first anyway)
+SHARE = 0.8  # of the DTT uplink, for ground stations' frames (the app's commands go first anyway)
 RADIO_PERIOD = 1.0
+TICK = 0.1  # s between the bridge's own checks
 TXBUF_BYTES = MAX_PROTOCOL * 60  # RADIO_STATUS.txbuf: 100 % free when nothing waits
 
 
@@ -47,6 +50,10 @@ class GcsBridge:
         self.links: list[Transport] = []
         self._parsers: dict[tuple[Hashable, Hashable], Any] = {}
         self.radio = b.encoder(vehicle_sysid, RADIO_COMPID)
+        self.autopilot = b.encoder(vehicle_sysid, 1)  # the mission relay's requests, as the vehicle's
+        self.missions = MissionRelay(self._request)
+        self.downloads = DownloadRelay(self._request_up)
+        self._up_seq = 0
         self.stats = BridgeStats()
         self.ep: Endpoint | None = None
         self.kick: Callable[[], None] = lambda: None
@@ -104,9 +111,21 @@ class GcsBridge:
                         self._told_other.add(target)
                         self.log(f"not carrying {msg.NAME} for system {target}: the vehicle here is {self.vehicle}")
                     continue
-                self.uplink.put(now, msg.NAME, msg.pack(msg.get_seq(), *carried))
+                if msg.NAME.startswith("MISSION_"):
+                    forward, answers, ahead = self.downloads.from_gcs(now, msg, carried)
+                    for answer in answers:
+                        self._to_gcs(now, answer, carried)
+                    for frame in ahead:
+                        self.uplink.put(now, "MISSION_REQUEST_INT", frame)
+                    queued = queued or bool(ahead)
+                    if not forward:
+                        continue
+                frame = msg.pack(msg.get_seq(), *carried)
+                self.uplink.put(now, msg.NAME, frame)
                 self.stats.up += 1
                 queued = True
+                for req in self.missions.from_gcs(now, msg, carried, frame):
+                    self._to_gcs(now, req, carried)
             if queued:
                 self.kick()
 
@@ -124,6 +143,21 @@ class GcsBridge:
         target = None
         if hasattr(msg, "target_system"):
             target = (int(msg.target_system), int(getattr(msg, "target_component", 0) or 0))
+        if msg.NAME.startswith("MISSION_"):
+            who = target if target is not None and target[0] else None
+            forward, again, requests = self.missions.from_vehicle(loop_now, msg, who)
+            passed, ahead = self.downloads.from_vehicle(loop_now, msg, who)
+            forward = forward and passed
+            for frame in ahead:
+                self.uplink.put(loop_now, "MISSION_REQUEST_INT", frame)
+            for frame in again:
+                self.uplink.put(loop_now, "MISSION_ITEM_INT", frame)
+            for req in requests:
+                self._to_gcs(loop_now, req, target)  # type: ignore[arg-type]
+            if again or ahead:
+                self.kick()
+            if not forward:
+                return True
         dests, own = self.routes.destinations(loop_now, target)
         if own is not None:
             msg.target_system = own[0]
@@ -134,6 +168,25 @@ class GcsBridge:
             self._send(link, address, frame)
         self.stats.down += 1
         return True
+
+    def _request(self, who: tuple[int, int], seq: int, mission_type: int) -> Any:
+        return self.b.MissionRequestInt(target_system=who[0], target_component=who[1], seq=seq,
+                                        mission_type=mission_type)
+
+    def _request_up(self, who: tuple[int, int], seq: int, mission_type: int) -> bytes:
+        """A MISSION_REQUEST_INT to the vehicle as the station carried as `who` sends it."""
+        self._up_seq = (self._up_seq + 1) & 0xFF
+        return bytes(self.b.MissionRequestInt(target_system=self.vehicle, target_component=1, seq=seq,
+                                              mission_type=mission_type).pack(self._up_seq, *who))
+
+    def _to_gcs(self, now: float, msg: Any, carried: tuple[int, int]) -> None:
+        """A frame of the bridge's own, as the vehicle's autopilot, to the station carried as `carried`."""
+        dests, own = self.routes.destinations(now, carried)
+        if own is not None:
+            msg.target_system, msg.target_component = own
+        frame = self.autopilot.encode(msg)
+        for link, address in dests:
+            self._send(link, address, frame)
 
     @staticmethod
     def _send(link: Any, address: Hashable, frame: bytes) -> None:
@@ -147,8 +200,18 @@ class GcsBridge:
         the link's quality from the vehicle's frames that arrived, the uplink queue's room."""
         loop = asyncio.get_running_loop()
         b = self.b
+        due = 0.0
         while True:
             now = loop.time()
+            again = self.missions.tick(now)  # (and a mission upload's lost count, sent again)
+            for frame in again:
+                self.uplink.put(now, "MISSION_COUNT", frame)
+            if again:
+                self.kick()
+            if now < due:
+                await asyncio.sleep(TICK)
+                continue
+            due = now + RADIO_PERIOD
             q = self.routes.quality(now)
             free = max(0, min(100, round(100 * (1 - self.uplink.waiting_bytes / TXBUF_BYTES))))
             msg = b.RadioStatus(rssi=q, remrssi=q, txbuf=free, noise=0, remnoise=0,
@@ -158,7 +221,7 @@ class GcsBridge:
             for link, address in dests:
                 self._send(link, address, frame)
             self.stats.radio_status += 1
-            await asyncio.sleep(RADIO_PERIOD)
+            await asyncio.sleep(TICK)
 
     def summary(self) -> str:
         u = self.uplink.stats

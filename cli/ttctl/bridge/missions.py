@@ -1,0 +1,140 @@
+"""Mission uploads through the bridge, pipelined: the items cross the slow link back to back,
+not one round trip each.
+
+The mission protocol asks for each item and waits for it: over DTT that is a round trip of
+about 0.2 s per item, and a lost item costs the vehicle's retry time. The bridge instead asks the
+ground station for the items itself (MISSION_REQUEST_INT as the vehicle would, in order, a few
+ahead of what the vehicle has asked for), sends each up as it comes, and answers the vehicle's
+requests from what it holds: a first request for an item already sent is swallowed (the item
+is on its way), a repeated one (the item was lost) sends it again. The onboard end keeps items
+that come ahead of one it asked for (onboard/missions.py). The upload's result is the vehicle's
+own MISSION_ACK, passed on as it comes: the bridge never acknowledges anything itself.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+WINDOW = 4  # items asked from the ground station ahead of the vehicle's requests
+COUNT_AGAIN = 0.6  # s without a request from the vehicle after the count: it was lost, send it again
+COUNT_TRIES = 5
+STALE = 15.0  # s without a word of an upload: it is over (the ground station gave up)
+UPLOAD = ("MISSION_ITEM_INT", "MISSION_ITEM")
+REQUESTS = ("MISSION_REQUEST_INT", "MISSION_REQUEST")
+
+
+@dataclass
+class _Upload:
+    count: int
+    mission_type: int
+    cache: dict[int, bytes] = field(default_factory=dict)  # seq -> the item's frame as carried
+    next_ask: int = 0  # the next item to ask the ground station for
+    waiting: bool = False  # asked for next_ask - 1, not had yet
+    wanted: int = -1  # the highest item the vehicle has asked for
+    asks: dict[int, int] = field(default_factory=dict)  # how often the vehicle asked for each
+    unsent: set[int] = field(default_factory=set)  # held but to be sent again (the count was repeated)
+    last: float = 0.0
+    count_frame: bytes = b""
+    count_sent: float = 0.0
+    count_tries: int = 1
+
+
+class MissionRelay:
+    """`request(carried_ids, seq, mission_type)` makes the MISSION_REQUEST_INT for a ground station
+    (as from the vehicle's autopilot); the caller sends it to the station that uses those ids."""
+
+    def __init__(self, request: Callable[[tuple[int, int], int, int], Any], window: int = WINDOW) -> None:
+        self.request = request
+        self.window = window
+        self.uploads: dict[tuple[int, int], _Upload] = {}
+        self.resent = 0
+        self.swallowed = 0
+
+    def _expire(self, now: float) -> None:
+        for key in [k for k, u in self.uploads.items() if now - u.last > STALE]:
+            del self.uploads[key]
+
+    def _prefetch(self, who: tuple[int, int], up: _Upload) -> list[Any]:
+        while up.next_ask in up.cache:  # (a station that sent one unasked)
+            up.next_ask += 1
+        if up.waiting or up.next_ask >= up.count or up.next_ask > up.wanted + self.window:
+            return []
+        up.waiting = True
+        up.next_ask += 1
+        return [self.request(who, up.next_ask - 1, up.mission_type)]
+
+    # -- from a ground station ----------------------------------------------------------------------
+    def from_gcs(self, now: float, msg: Any, who: tuple[int, int], frame: bytes) -> list[Any]:
+        """A ground station's frame (carried as `who`, going up as `frame`): returns requests to
+        send it back."""
+        self._expire(now)
+        name = msg.NAME
+        if name == "MISSION_COUNT":
+            up = self.uploads.get(who)
+            if up is not None and (up.count, up.mission_type) == (msg.count, msg.mission_type):
+                self._count_again(now, up)  # (the ground station's own retry goes up as it is)
+                return []
+            if msg.count == 0:
+                self.uploads.pop(who, None)
+                return []
+            up = self.uploads[who] = _Upload(msg.count, msg.mission_type, last=now, count_frame=frame,
+                                             count_sent=now)
+            return self._prefetch(who, up)
+        if name in UPLOAD:
+            up = self.uploads.get(who)
+            if up is None or msg.mission_type != up.mission_type or not 0 <= msg.seq < up.count:
+                return []
+            up.cache[msg.seq] = frame
+            up.last = now
+            if msg.seq == up.next_ask - 1:
+                up.waiting = False
+            return self._prefetch(who, up)
+        if name == "MISSION_CLEAR_ALL":
+            self.uploads.pop(who, None)
+        return []
+
+    def _count_again(self, now: float, up: _Upload) -> None:
+        """The count goes again: the vehicle may have missed it, and with it what followed."""
+        up.unsent = set(up.cache)
+        up.asks.clear()
+        up.count_sent = now
+        up.count_tries += 1
+        up.last = now
+
+    def tick(self, now: float) -> list[bytes]:
+        """Frames to send up again now: a count the vehicle did not answer (it was lost, and every
+        item sent behind it was dropped: the ground station, asked by the bridge, would not know)."""
+        out = []
+        for up in self.uploads.values():
+            if up.wanted < 0 and not up.asks and now - up.count_sent >= COUNT_AGAIN and up.count_tries < COUNT_TRIES:
+                self._count_again(now, up)
+                out.append(up.count_frame)
+        return out
+
+    # -- from the vehicle -----------------------------------------------------------------------------
+    def from_vehicle(self, now: float, msg: Any, who: tuple[int, int] | None) -> tuple[bool, list[bytes], list[Any]]:
+        """A vehicle's frame for the ground station carried as `who` (None: not for one):
+        (pass it on?, frames to send up again, requests for the ground station)."""
+        if who is None:
+            return True, [], []
+        up = self.uploads.get(who)
+        if up is None:
+            return True, [], []
+        name = msg.NAME
+        if name in REQUESTS and msg.mission_type == up.mission_type:
+            up.last = now
+            seq = int(msg.seq)
+            up.wanted = max(up.wanted, seq)
+            n = up.asks[seq] = up.asks.get(seq, 0) + 1
+            again: list[bytes] = []
+            if seq in up.cache and (n > 1 or seq in up.unsent):  # lost on the way: once more
+                again.append(up.cache[seq])
+                up.unsent.discard(seq)
+                self.resent += 1
+            self.swallowed += 1
+            return False, again, self._prefetch(who, up)
+        if name == "MISSION_ACK" and msg.mission_type == up.mission_type:
+            del self.uploads[who]  # the vehicle's verdict, passed on as it is
+        return True, [], []
