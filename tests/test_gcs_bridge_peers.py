@@ -199,9 +199,9 @@ async def takeoff(act: Any, node: Proc) -> None:
             raise
 
 
-async def persevere(go: Callable[[], Any], keep: bool = False, attempts: int = 3) -> Any:
+async def persevere(go: Callable[[], Any], keep: bool = False, attempts: int = 3, pause: float = 0.0) -> Any:
     """A mission transfer as a user does it: tried again when MAVSDK gives up (TIMEOUT: at 10 %
-    loss its per-item retry budget, ~2.5 s, can run out; see the report). The seconds of the
+    loss its per-item retry budget, ~2.5 s, can run out), after `pause` s. The seconds of the
     try that succeeded and what the failed ones said (and its value with `keep`)."""
     from mavsdk.plugins.mission import MissionError
 
@@ -212,6 +212,7 @@ async def persevere(go: Callable[[], Any], keep: bool = False, attempts: int = 3
             value = await go()
         except MissionError as e:
             failed.append(f"{str(e).split(';')[0]} after {time.monotonic() - t0:.1f} s")
+            await asyncio.sleep(pause)
             continue
         took = (time.monotonic() - t0, failed)
         return (took, value) if keep else took
@@ -299,7 +300,10 @@ def test_mavsdk_flies_a_mission_through_the_bridge(tmp_path: Path, start: Start,
                                  math.nan, True, math.nan, math.nan, MissionItem.CameraAction.NONE, math.nan,
                                  math.nan, math.nan, math.nan, math.nan, MissionItem.VehicleAction.NONE)
                      for i in range(20)]
-            times["upload"], tries["upload"] = await persevere(lambda: mis.upload_mission(MissionPlan(items)))
+            # (pause: an upload whose final MISSION_ACK was lost is held by the bridge for 15 s, and the
+            # next count of as many items taken for its retry; its own strict xfail below)
+            times["upload"], tries["upload"] = await persevere(lambda: mis.upload_mission(MissionPlan(items)),
+                                                               pause=16.0)
             (times["download"], tries["download"]), plan = await persevere(mis.download_mission, keep=True)
 
             def key(i: Any) -> tuple[float, float, float]:
@@ -312,7 +316,7 @@ def test_mavsdk_flies_a_mission_through_the_bridge(tmp_path: Path, start: Start,
             await again(act.land)  # (LAND lasts about a second of wall time at --speed 4: not waited for as a mode)
             await _until(tel.in_air, lambda a: not a, 40)
 
-    asyncio.run(asyncio.wait_for(main(), 150))
+    asyncio.run(asyncio.wait_for(main(), 180))
     print(f"\nMAVSDK through the bridge ({model} loss 10 %): connect {times['connect']:.1f} s, "
           f"20-item upload {times['upload']:.1f} s (failed tries first: {tries['upload']}), "
           f"download {times['download']:.1f} s (failed tries first: {tries['download']})")
