@@ -115,8 +115,12 @@ def test_answers_go_to_the_station_they_are_for_and_broadcasts_to_all() -> None:
     assert r.destinations(0.2, (245, 0))[0] == [(sdk_link, ("127.0.0.1", 14540))]  # compid 0: any component
     assert r.destinations(0.2, (77, 1))[0] == []  # nobody here is 77
     assert len(r.destinations(0.2, None)[0]) == 2
-    assert r.heard(0.3, sdk_link, ("127.0.0.1", 14540), (254, 191)) == (254, 191)  # a station of its own 254...
-    assert r.heard(5.0, "other", ("127.0.0.1", 1), TABLET) == (254, 190)  # ...the mapping, once made, stays
+    second = r.heard(0.3, "other", ("127.0.0.1", 1), TABLET)  # a second QGroundControl, ids clashing too
+    assert second == (253, 190)  # a free id of its own: the two do not get each other's answers
+    assert r.destinations(0.4, second) == ([("other", ("127.0.0.1", 1))], TABLET)
+    assert r.destinations(0.4, (254, 190))[0] == [(qgc_link, ("127.0.0.1", 14550))]
+    assert r.destinations(0.4, TABLET)[0] == []  # the tablet's own ids: no station is that
+    assert r.heard(5.0, qgc_link, ("127.0.0.1", 14550), TABLET) == (254, 190)  # the mapping, once made, stays
 
 
 def test_radio_quality_counts_what_the_vehicle_sent_and_is_zero_when_silent() -> None:

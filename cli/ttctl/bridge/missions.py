@@ -73,8 +73,10 @@ class MissionRelay:
         name = msg.NAME
         if name == "MISSION_COUNT":
             up = self.uploads.get(who)
-            if up is not None and (up.count, up.mission_type) == (msg.count, msg.mission_type):
-                self._count_again(now, up)  # (the ground station's own retry goes up as it is)
+            if up is not None and (up.count, up.mission_type) == (msg.count, msg.mission_type) and not up.cache:
+                # the count again before any item: a retry (it goes up as it is); once items were sent
+                # an equal count is a new upload (the ground station started over), never the old items
+                self._count_again(now, up)
                 return []
             if msg.count == 0:
                 self.uploads.pop(who, None)

@@ -37,8 +37,9 @@ class Routes:
         self.vehicle = vehicle_sysid
         self.tablet = tablet
         self.stations: OrderedDict[tuple[Hashable, Hashable], Station] = OrderedDict()
-        self.carried_as: dict[tuple[int, int], tuple[int, int]] = {}  # a station's ids -> ids on the DTT link
-        self._own: dict[tuple[int, int], tuple[int, int]] = {}  # ... and back
+        # (station, its ids) -> the ids it is carried under on the DTT link, and back
+        self.carried_as: dict[tuple[tuple[Hashable, Hashable], tuple[int, int]], tuple[int, int]] = {}
+        self._own: dict[tuple[int, int], tuple[tuple[Hashable, Hashable], tuple[int, int]]] = {}
         self.fixed: list[Hashable] = []  # links that send to a fixed address (udpout): always reached
         # the vehicle's frames over DTT, for RADIO_STATUS: (time, received, lost) per arrival
         self._seq: dict[int, int] = {}
@@ -49,29 +50,35 @@ class Routes:
 
     # -- ground stations -------------------------------------------------------------------------
     def heard(self, now: float, link: Hashable, address: Hashable, src: tuple[int, int]) -> tuple[int, int]:
-        """A valid frame from `src` at (link, address); returns the ids to carry it under."""
+        """A valid frame from `src` at (link, address), to be carried; returns the ids to carry it
+        under (a station is recorded only once it sends something the bridge carries)."""
         key = (link, address)
         st = self.stations.get(key)
         if st is None:
             st = self.stations[key] = Station(link, address)
             while len(self.stations) > MAX_STATIONS:
-                self.stations.popitem(last=False)
+                gone, _ = self.stations.popitem(last=False)
+                for carried in [c for c, (k, _) in self._own.items() if k == gone]:
+                    del self._own[carried]
+                    self.carried_as.pop((gone, self.tablet), None)
         else:
             self.stations.move_to_end(key)
         st.ids.add(src)
         st.last = now
         st.frames += 1
-        return self._carry(src)
+        return self._carry(key, src)
 
-    def _carry(self, src: tuple[int, int]) -> tuple[int, int]:
+    def _carry(self, key: tuple[Hashable, Hashable], src: tuple[int, int]) -> tuple[int, int]:
+        """Each station using the tablet's own ids gets a system id of its own (two QGroundControls
+        at once do not get each other's answers)."""
         if src != self.tablet:
             return src
-        got = self.carried_as.get(src)
+        got = self.carried_as.get((key, src))
         if got is None:
-            used = {s for st in self.stations.values() for s, _ in st.ids} | {s for s, _ in self.carried_as.values()}
+            used = {s for st in self.stations.values() for s, _ in st.ids} | {s for s, _ in self._own}
             sysid = next((n for n in range(254, 0, -1) if n not in used and n != self.vehicle), 254)
-            got = self.carried_as[src] = (sysid, src[1])
-            self._own[got] = src
+            got = self.carried_as[(key, src)] = (sysid, src[1])
+            self._own[got] = (key, src)
         return got
 
     def live(self, now: float) -> list[Station]:
@@ -86,11 +93,17 @@ class Routes:
             out = [(st.link, st.address) for st in live]
             out += [(link, None) for link in self.fixed if not any(st.link is link for st in live)]
             return out, None
-        own = self._own.get(target) or (self._own.get((target[0], self.tablet[1])) if target[1] == 0 else None)
-        want = own or target
+        mapped = self._own.get(target) or (self._own.get((target[0], self.tablet[1])) if target[1] == 0 else None)
+        if mapped is not None:
+            key, own = mapped
+            st = self.stations.get(key)
+            return ([(st.link, st.address)] if st is not None and now - st.last < FORGET else []), own
+        if target == self.tablet or (target[1] == 0 and target[0] == self.tablet[0] and not any(
+                s == target[0] and c != self.tablet[1] for st in live for s, c in st.ids)):
+            return [], None  # the tablet's own (its stations with those ids are carried as others)
         hits = [(st.link, st.address) for st in live
-                if any(s == want[0] and (want[1] == 0 or c == want[1]) for s, c in st.ids)]
-        return hits, own
+                if any(s == target[0] and (target[1] == 0 or c == target[1]) for s, c in st.ids)]
+        return hits, None
 
     # -- the vehicle's side, for RADIO_STATUS ------------------------------------------------------
     def vehicle_frame(self, now: float, compid: int, seq: int) -> None:

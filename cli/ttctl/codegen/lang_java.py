@@ -65,6 +65,7 @@ RUNTIME_FILES = [
     "CommandQueue",
     "LinkScheduler", "DjiReceiving", "DjiLink",
     "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
+    "GcsRules", "GcsUplink", "GcsQuality", "GcsRoutes", "GcsBridge",  # the ground-station bridge (issue 22)
 ]
 RUNTIME_CLASSES = frozenset(RUNTIME_FILES + ["SendSetpoint"])
 # File transfer (package <root>.transfer), for dialects that have ttctl's file messages.

@@ -220,7 +220,7 @@ async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any, plugi
         return await _carry_on(s, sigs, await _prompt(s, sigs, base, b, o.as_json))
     finally:
         sigs.remove()
-        if s.bridge is not None:
+        if s.bridge is not None and s.bridge.running:
             err(f"tablet: {s.bridge.summary()}")
         await s.close()
 

@@ -5,16 +5,18 @@ its own ground-station links, as the autopilot (compid 1).
 Which DTT frames are a ground station's: bridge/classes.py. While one was heard within PRESENCE
 seconds, the vehicle's broadcasts go down DTT too (its HEARTBEAT always): its streams newest-wins per type, fitted to
 `share` of the downlink (bridge/downfit.py), everything else (acks, parameters, mission items,
-STATUSTEXT, and the HEARTBEAT) at control priority, never dropped.
+STATUSTEXT, and the HEARTBEAT) in order below the tablet's own commands and acks, an answer equal
+to one still waiting not twice (bridge/answers.py).
 """
 
 from __future__ import annotations
 
 from typing import Any
 
+from ...bridge.answers import AnswerQueue
 from ...bridge.classes import PRESENCE, from_ground_station
 from ...bridge.downfit import StreamFit
-from ...proto.endpoint import CONTROL, Endpoint
+from ...proto.endpoint import Endpoint
 from ...wire.bindings import Bindings
 from .gcs import GroundStations
 
@@ -29,6 +31,7 @@ class DttGroundStations:
         self.encoder = b.encoder(sysid, compid)  # unsigned: the DTT scheduler signs as frames leave
         self.fit = StreamFit(share * downlink_Bps if downlink_Bps else None,
                              asked=lambda mid: gcs.rates.interval.get(mid), encode=self.encoder.encode)
+        self.answers = AnswerQueue(self.encoder.encode)
         self.endpoint: Endpoint | None = None
         self.heard_at: float | None = None  # loop time of the last ground-station frame over DTT
         self.frames_in = 0
@@ -36,6 +39,7 @@ class DttGroundStations:
 
     def attach(self, endpoint: Endpoint) -> None:
         self.endpoint = endpoint
+        endpoint.add_stream(self.answers)
         endpoint.add_stream(self.fit)
 
     def takes(self, msg: Any) -> bool:
@@ -64,5 +68,5 @@ class DttGroundStations:
         if isinstance(msg, b.MessageInterval):  # the interval this link keeps, not the one asked
             msg = b.MessageInterval(message_id=msg.message_id,
                                     interval_us=int(self.fit.interval_us(msg.message_id, msg.interval_us)))
-        self.endpoint.scheduler.send(self.encoder.encode(msg), CONTROL)
-        self.frames_out += 1
+        if self.answers.put(msg):
+            self.frames_out += 1

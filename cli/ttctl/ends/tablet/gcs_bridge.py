@@ -59,6 +59,7 @@ class GcsBridge:
         self.kick: Callable[[], None] = lambda: None
         self._task: asyncio.Task[None] | None = None
         self._told_other: set[int] = set()
+        self.running = False  # every ground-station link open
 
     async def start(self, ep: Endpoint, kick: Callable[[], None]) -> None:
         self.ep, self.kick = ep, kick
@@ -72,6 +73,7 @@ class GcsBridge:
             if spec.kind in ("udpout", "tcp"):
                 self.routes.fixed.append(t)
         self._task = asyncio.get_running_loop().create_task(self._radio_status())
+        self.running = True
 
     def _logger(self, spec: Spec) -> Callable[[str], None]:
         return lambda text: self.log(f"gcs {spec}: {text}")
@@ -102,15 +104,15 @@ class GcsBridge:
             queued = False
             for msg in parser.feed(data):
                 src = (msg.get_srcSystem(), msg.get_srcComponent())
-                carried = self.routes.heard(now, link, source, src)
-                link.confirm(source, {src})  # a listening link answers only who sent valid frames
                 target = getattr(msg, "target_system", 0)
-                if target not in (0, self.vehicle):
+                if target not in (0, self.vehicle):  # (and its sender is no station of ours for it)
                     self.stats.not_carried += 1
                     if target not in self._told_other and len(self._told_other) < 16:
                         self._told_other.add(target)
                         self.log(f"not carrying {msg.NAME} for system {target}: the vehicle here is {self.vehicle}")
                     continue
+                carried = self.routes.heard(now, link, source, src)
+                link.confirm(source, {src})  # a listening link answers only who sent frames it carries
                 if msg.NAME.startswith("MISSION_"):
                     forward, answers, ahead = self.downloads.from_gcs(now, msg, carried)
                     for answer in answers:
