@@ -300,10 +300,7 @@ def test_mavsdk_flies_a_mission_through_the_bridge(tmp_path: Path, start: Start,
                                  math.nan, True, math.nan, math.nan, MissionItem.CameraAction.NONE, math.nan,
                                  math.nan, math.nan, math.nan, math.nan, MissionItem.VehicleAction.NONE)
                      for i in range(20)]
-            # (pause: an upload whose final MISSION_ACK was lost is held by the bridge for 15 s, and the
-            # next count of as many items taken for its retry; its own strict xfail below)
-            times["upload"], tries["upload"] = await persevere(lambda: mis.upload_mission(MissionPlan(items)),
-                                                               pause=16.0)
+            times["upload"], tries["upload"] = await persevere(lambda: mis.upload_mission(MissionPlan(items)))
             (times["download"], tries["download"]), plan = await persevere(mis.download_mission, keep=True)
 
             def key(i: Any) -> tuple[float, float, float]:
@@ -534,9 +531,6 @@ def test_a_retried_takeoff_whose_ack_was_lost_is_accepted(tmp_path: Path, start:
     assert retry == m.MAV_RESULT_ACCEPTED, c.onboard.stderr
 
 
-@pytest.mark.xfail(strict=True, reason="bridge/missions.py takes a new MISSION_COUNT of the same length as the "
-                   "retry of an upload it still holds: it never asks the station for the new items and "
-                   "feeds the vehicle the old ones")
 def test_a_new_upload_of_the_same_length_after_an_abandoned_one_is_carried(tmp_path: Path, start: Start) -> None:
     """A ground station gives up an upload part-way (MAVSDK after its TIMEOUT, a final MISSION_ACK lost,
     a MAVProxy user typing wp load again) and uploads another plan with as many items: it must be
