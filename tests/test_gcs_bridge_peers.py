@@ -168,6 +168,10 @@ def take_off(gcs: Gcs, node: Proc, metres: float) -> None:
     gcs.vehicle("GLOBAL_POSITION_INT", lambda p: p.relative_alt > 0.6 * metres * 1000, timeout=20)
 
 
+def is_item(seq: int, msg: Any) -> bool:
+    return bool(msg.seq == seq)
+
+
 def no_traceback(*procs: Proc | None) -> None:
     for p in procs:
         if p is not None:
@@ -199,10 +203,10 @@ async def takeoff(act: Any, node: Proc) -> None:
             raise
 
 
-async def persevere(go: Callable[[], Any], keep: bool = False, attempts: int = 3, pause: float = 0.0) -> Any:
-    """A mission transfer as a user does it: tried again when MAVSDK gives up (TIMEOUT: at 10 %
-    loss its per-item retry budget, ~2.5 s, can run out), after `pause` s. The seconds of the
-    try that succeeded and what the failed ones said (and its value with `keep`)."""
+async def persevere(go: Callable[[], Any], keep: bool = False, attempts: int = 3) -> Any:
+    """A mission transfer as a user does it: tried again when MAVSDK gives up (TIMEOUT: its final
+    MISSION_ACK lost, say, or its ~2.5 s retry budget run out). The seconds of the try that
+    succeeded and what the failed ones said (and its value with `keep`)."""
     from mavsdk.plugins.mission import MissionError
 
     failed: list[str] = []
@@ -212,7 +216,6 @@ async def persevere(go: Callable[[], Any], keep: bool = False, attempts: int = 3
             value = await go()
         except MissionError as e:
             failed.append(f"{str(e).split(';')[0]} after {time.monotonic() - t0:.1f} s")
-            await asyncio.sleep(pause)
             continue
         took = (time.monotonic() - t0, failed)
         return (took, value) if keep else took
@@ -576,7 +579,7 @@ def test_a_new_upload_of_the_same_length_after_an_abandoned_one_is_carried(tmp_p
         count = gcs.wait("MISSION_COUNT", timeout=5).count
         for seq in range(count):
             gcs.conn.mav.mission_request_int_send(1, 1, seq, 0)
-            held.append(gcs.wait("MISSION_ITEM_INT", lambda x, s=seq: x.seq == s, timeout=5).x)
+            held.append(gcs.wait("MISSION_ITEM_INT", functools.partial(is_item, seq), timeout=5).x)
     finally:
         gcs.close()
     assert verdict == m.MAV_MISSION_ACCEPTED, (verdict, asked_for, c.onboard.stderr)
