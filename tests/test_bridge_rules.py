@@ -208,6 +208,8 @@ def test_mission_relay_pipelines_an_upload_and_acknowledges_nothing_itself() -> 
     assert given == [0, 1, 2]
     assert vehicle_asks(0.7, 0) == (False, [b"item0"])  # asked again: it was lost, it goes once more
     assert vehicle_asks(0.8, 2) == (False, []) and given == [0, 1, 2, 3, 4]  # the vehicle at 2: the rest
+    assert vehicle_asks(0.9, 4) == (False, [])  # the last item asked for: on its way
+    assert relay.tick(1.5) == [] and relay.tick(2.0) == [b"item4"]  # no verdict 1 s later: the last item again
     ack = B.MissionAck(target_system=245, target_component=190, type=0, mission_type=0)
     assert relay.from_vehicle(3.0, ack, who) == (True, [], [])  # the vehicle's own verdict, passed on
     assert who not in relay.uploads

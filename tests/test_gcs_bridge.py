@@ -323,7 +323,8 @@ def test_a_retried_command_whose_ack_was_lost_is_answered_again_not_done_twice(s
     wait_msg(m, "HEARTBEAT", lambda x: x.get_srcComponent() == 1, 10)
     m.mav.command_long_send(1, 1, 400, 0, 1, 0, 0, 0, 0, 0, 0)
     assert wait_msg(m, "COMMAND_ACK", lambda a: a.command == 400).result == 0
-    takeoff = (1, 1, 22, 0, 0, 0, 0, 0, 0, 0, 305.0)
+    nan = float("nan")
+    takeoff = (1, 1, 22, 0, 0, 0, 0, nan, nan, nan, 305.0)  # as MAVSDK and QGroundControl send it
     m.mav.command_long_send(*takeoff)
     assert wait_msg(m, "COMMAND_ACK", lambda a: a.command == 22).result == 0
     m.mav.command_long_send(*takeoff[:3], 1, *takeoff[4:])  # the retry: "the ack did not come"

@@ -20,6 +20,8 @@ from typing import Any
 WINDOW = 4  # items asked from the ground station ahead of the vehicle's requests
 COUNT_AGAIN = 0.6  # s without a request from the vehicle after the count: it was lost, send it again
 COUNT_TRIES = 5
+ACK_WAIT = 1.0  # s after the vehicle asked for the last item without a MISSION_ACK: it is sent again
+ACK_TRIES = 4
 STALE = 15.0  # s without a word of an upload: it is over (the ground station gave up)
 UPLOAD = ("MISSION_ITEM_INT", "MISSION_ITEM")
 REQUESTS = ("MISSION_REQUEST_INT", "MISSION_REQUEST")
@@ -39,6 +41,7 @@ class _Upload:
     count_frame: bytes = b""
     count_sent: float = 0.0
     count_tries: int = 1
+    last_again: int = 0  # times the last item went again for a lost MISSION_ACK
 
 
 class MissionRelay:
@@ -107,12 +110,21 @@ class MissionRelay:
 
     def tick(self, now: float) -> list[bytes]:
         """Frames to send up again now: a count the vehicle did not answer (it was lost, and every
-        item sent behind it was dropped: the ground station, asked by the bridge, would not know)."""
+        item sent behind it was dropped: the ground station, asked by the bridge, would not know),
+        or the last item when no MISSION_ACK came for it."""
         out = []
         for up in self.uploads.values():
             if up.wanted < 0 and not up.asks and now - up.count_sent >= COUNT_AGAIN and up.count_tries < COUNT_TRIES:
                 self._count_again(now, up)
                 out.append(up.count_frame)
+            elif (up.wanted == up.count - 1 and up.count - 1 in up.cache and now - up.last >= ACK_WAIT
+                  and up.last_again < ACK_TRIES):
+                # the vehicle has asked for the last item and said nothing since: the item or its
+                # MISSION_ACK was lost (the station, its items all given, waits and sends nothing):
+                # the last item again, which the vehicle answers with its verdict again
+                up.last_again += 1
+                up.last = now
+                out.append(up.cache[up.count - 1])
         return out
 
     # -- from the vehicle -----------------------------------------------------------------------------

@@ -124,9 +124,10 @@ class GroundStations:
         if self.services.on_message(now, msg, lambda m: self._to_peer(m, peer), peer):
             return
         if isinstance(msg, (b.CommandLong, b.CommandInt)):
-            key = (peer, type(msg).__name__, msg.command, msg.param1, msg.param2, msg.param3, msg.param4,
-                   getattr(msg, "param5", getattr(msg, "x", 0)), getattr(msg, "param6", getattr(msg, "y", 0)),
-                   getattr(msg, "param7", getattr(msg, "z", 0)))
+            key = (peer, type(msg).__name__, msg.command, *(
+                "nan" if isinstance(v, float) and math.isnan(v) else v  # NaN (unused: MAVSDK, QGC) equals NaN here
+                for v in (msg.param1, msg.param2, msg.param3, msg.param4, getattr(msg, "param5", getattr(msg, "x", 0)),
+                          getattr(msg, "param6", getattr(msg, "y", 0)), getattr(msg, "param7", getattr(msg, "z", 0)))))
             done = self._done.get(peer)
             if getattr(msg, "confirmation", 0) > 0 and done is not None and done[0] == key and now - done[1] < REPEAT:
                 # a ground station's retry of a command done here (its ack was lost on the way): the same

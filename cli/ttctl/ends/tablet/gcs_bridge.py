@@ -205,9 +205,9 @@ class GcsBridge:
         due = 0.0
         while True:
             now = loop.time()
-            again = self.missions.tick(now)  # (and a mission upload's lost count, sent again)
+            again = self.missions.tick(now)  # (and a mission upload's lost count or last item, sent again)
             for frame in again:
-                self.uplink.put(now, "MISSION_COUNT", frame)
+                self.uplink.put(now, "MISSION_ITEM_INT", frame)  # (protocol frames: the name tells only newest-wins)
             if again:
                 self.kick()
             if now < due:
