@@ -51,6 +51,7 @@ RUNTIME_MESSAGES: dict[str, tuple[int, int]] = {
     "SET_POSITION_TARGET_GLOBAL_INT": (86, 5),
     "POSITION_TARGET_GLOBAL_INT": (87, 150),
     "HIGHRES_IMU": (105, 93),
+    "RADIO_STATUS": (109, 185),  # the ground-station bridge (emulate tablet --gcs), from the telemetry radio
     "FILE_TRANSFER_PROTOCOL": (110, 84),
     "TIMESYNC": (111, 34),
     "HIL_STATE_QUATERNION": (115, 4),
