@@ -61,12 +61,12 @@ class StreamFit:
         room = max(self.budget - fixed, 0.0)
         return 1.0 if need <= room else room / need
 
-    def interval(self, msgid: int) -> float | None:
-        """Seconds between frames of `msgid` actually sent (None: off)."""
+    def interval(self, msgid: int, factor: float | None = None) -> float | None:
+        """Seconds between frames of `msgid` actually sent (None: off); `factor`: factor(), if known."""
         asked = self.asked(msgid)
         if asked is None or asked <= 0 or msgid == HEARTBEAT_ID:
             return asked
-        f = self.factor()
+        f = self.factor() if factor is None else factor
         return asked / f if f > 0 else None
 
     def interval_us(self, msgid: int, asked_us: float) -> float:
@@ -83,16 +83,19 @@ class StreamFit:
             self.tokens = min(burst, self.tokens + (now - self._at) * self.budget)
         self._at = now
 
-    def _eligible(self, now: float) -> list[int]:
-        out = []
+    def _due(self, now: float) -> dict[int, float]:
+        """When each waiting type may leave (the fit computed once, not once per type)."""
+        f = self.factor()
+        due = {}
         for msgid in self.slots:
-            kept = self.interval(msgid)
-            if kept is None:
-                continue
-            last = self.last_sent.get(msgid)
-            if last is None or now - last >= EARLY * kept:
-                out.append(msgid)
-        return out
+            kept = self.interval(msgid, f)
+            if kept is not None:
+                last = self.last_sent.get(msgid)
+                due[msgid] = now if last is None else last + EARLY * kept
+        return due
+
+    def _eligible(self, now: float) -> list[int]:
+        return [msgid for msgid, t in self._due(now).items() if t <= now]
 
     def pull(self, now: float, space: int) -> bytes | None:
         self._refill(now)
@@ -115,13 +118,7 @@ class StreamFit:
 
     def deadline(self, now: float) -> float | None:
         """When the next waiting frame may leave (its interval, or the budget's tokens)."""
-        times = []
-        for msgid in self.slots:
-            kept = self.interval(msgid)
-            if kept is None:
-                continue
-            last = self.last_sent.get(msgid)
-            times.append(now if last is None else last + EARLY * kept)
+        times = list(self._due(now).values())
         if not times:
             return None
         t = min(times)
