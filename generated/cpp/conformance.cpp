@@ -3356,6 +3356,16 @@ struct Fields<mav::TtFileReason> {
     } };
 };
 
+template <>
+struct Fields<mav::TtFileDataFit> {
+    static constexpr std::array<FieldSpec, 4> value{ {
+        FIELD(mav::TtFileDataFit, transfer_id),
+        FIELD(mav::TtFileDataFit, offset),
+        FIELD(mav::TtFileDataFit, count),
+        FIELD(mav::TtFileDataFit, data),
+    } };
+};
+
 #undef FIELD
 
 bool decode_fields(const mav::Frame& f, std::string& o)
@@ -4033,6 +4043,9 @@ bool decode_fields(const mav::Frame& f, std::string& o)
     case mav::TtFileReason::MSG_ID:
         decode_as<mav::TtFileReason>(f, o);
         return true;
+    case mav::TtFileDataFit::MSG_ID:
+        decode_as<mav::TtFileDataFit>(f, o);
+        return true;
     default:
         return false;
     }
@@ -4489,6 +4502,8 @@ std::string encode_fields(std::uint32_t msgid, const Json& req, const Header& h)
         return encode_as<mav::TtVrController>(req, h);
     case mav::TtFileReason::MSG_ID:
         return encode_as<mav::TtFileReason>(req, h);
+    case mav::TtFileDataFit::MSG_ID:
+        return encode_as<mav::TtFileDataFit>(req, h);
     default:
         return error_json("unknown msgid " + std::to_string(msgid));
     }

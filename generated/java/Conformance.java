@@ -827,6 +827,9 @@ public final class Conformance {
             case 50013:
                 fields50013((ttctl.ttapi.msg.TtFileReason) m, sb);
                 break;
+            case 50014:
+                fields50014((ttctl.ttapi.msg.TtFileDataFit) m, sb);
+                break;
             default:
                 throw new IllegalStateException("no fields for msgid " + m.msgId());
         }
@@ -5210,6 +5213,17 @@ public final class Conformance {
         ConformanceJson.text(sb, m.text);
     }
 
+    private static void fields50014(ttctl.ttapi.msg.TtFileDataFit m, StringBuilder sb) {
+        sb.append("\"transfer_id\":");
+        sb.append(m.transfer_id);
+        sb.append(",\"offset\":");
+        sb.append(m.offset);
+        sb.append(",\"count\":");
+        sb.append(m.count);
+        sb.append(",\"data\":");
+        ConformanceJson.u8s(sb, m.data);
+    }
+
     // --- E ---------------------------------------------------------------------------------
 
     static String encodeLine(String text) {
@@ -5708,6 +5722,8 @@ public final class Conformance {
                 return build50012(fields);
             case 50013:
                 return build50013(fields);
+            case 50014:
+                return build50014(fields);
             default:
                 throw new IllegalArgumentException("unknown msgid " + msgId);
         }
@@ -13955,6 +13971,30 @@ public final class Conformance {
                     break;
                 default:
                     throw new Refusal("TT_FILE_REASON has no field '" + e.getKey() + "'");
+            }
+        }
+        return m;
+    }
+
+    private static MavlinkMessage build50014(Map<?, ?> fields) {
+        ttctl.ttapi.msg.TtFileDataFit m = new ttctl.ttapi.msg.TtFileDataFit();
+        for (Map.Entry<?, ?> e : fields.entrySet()) {
+            Object v = e.getValue();
+            switch ((String) e.getKey()) {
+                case "transfer_id":
+                    m.transfer_id = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_DATA_FIT.transfer_id");
+                    break;
+                case "offset":
+                    m.offset = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_DATA_FIT.offset");
+                    break;
+                case "count":
+                    m.count = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_DATA_FIT.count");
+                    break;
+                case "data":
+                    m.data = ConformanceJson.u8s(v, 246, "TT_FILE_DATA_FIT.data");
+                    break;
+                default:
+                    throw new Refusal("TT_FILE_DATA_FIT has no field '" + e.getKey() + "'");
             }
         }
         return m;

@@ -284,6 +284,7 @@ _KINDS: dict[str, list[tuple[str, int]]] = {
     "TT_VR_POSE": [("int", 8), ("int", 1), ("int", 1), ("int", 1), ("int", 1), ("float", 4), ("float", 4), ("float", 4), ("float", 4)],
     "TT_VR_CONTROLLER": [("int", 8), ("int", 4), ("int", 1), ("int", 1), ("float", 4), ("float", 4), ("float", 4), ("int", 2)],
     "TT_FILE_REASON": [("int", 1), ("int", 1), ("int", 4), ("int", 1), ("text", 1)],
+    "TT_FILE_DATA_FIT": [("int", 4), ("int", 4), ("int", 1), ("bytes", 1)],
 }
 
 
@@ -539,6 +540,7 @@ _TYPES: dict[str, list[tuple[str, int]]] = {
     "TT_VR_POSE": [("uint64_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 3), ("float", 4), ("float", 3), ("float", 3)],
     "TT_VR_CONTROLLER": [("uint64_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("uint16_t", 0)],
     "TT_FILE_REASON": [("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("char", 80)],
+    "TT_FILE_DATA_FIT": [("uint32_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 246)],
 }
 
 # The refusals of field values, worded alike in the three programs: "<where>: expected <what>,

@@ -86,6 +86,7 @@ RUNTIME_MESSAGES: dict[str, tuple[int, int]] = {
     "TT_VR_POSE": (50011, 230),
     "TT_VR_CONTROLLER": (50012, 229),
     "TT_FILE_REASON": (50013, 210),
+    "TT_FILE_DATA_FIT": (50014, 50),
 }
 
 

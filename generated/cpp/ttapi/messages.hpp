@@ -18825,6 +18825,66 @@ struct TtFileReason {
     }
 };
 
+/// TT_FILE_DATA_FIT (id 50014): [sender: any] [runtime] [spans-packets] File bytes in a frame sized
+/// to the link's packet: it states how many it carries, so it can fill a packet of any size (128
+/// bytes on DJI's Payload SDK low-speed channel) or a signed frame's one packet.
+struct TtFileDataFit {
+    static constexpr std::uint32_t MSG_ID = 50014;
+    static constexpr std::uint8_t CRC_EXTRA = 50;
+    static constexpr std::size_t PAYLOAD_LENGTH = 255;
+    static constexpr std::size_t MIN_LENGTH = 255;
+    static constexpr const char* NAME = "TT_FILE_DATA_FIT";
+
+    /// Transfer id from the offer.
+    std::uint32_t transfer_id{};
+
+    /// Offset of data in the file. [bytes]
+    std::uint32_t offset{};
+
+    /// File bytes carried: 1..246. [bytes]
+    std::uint8_t count{};
+
+    /// File bytes.
+    std::array<std::uint8_t, 246> data{};
+
+    /// The payload in wire order, little endian, into `out` (which must hold PAYLOAD_LENGTH
+    /// bytes); returns its MAVLink 2 truncated length.
+    std::size_t pack_payload(std::uint8_t* out) const noexcept
+    {
+        put_le(out + 0, this->transfer_id);
+        put_le(out + 4, this->offset);
+        put_le(out + 8, this->count);
+        put_le(out + 9, this->data);
+        return truncated_length(out, PAYLOAD_LENGTH);
+    }
+
+    /// Decode `n` payload bytes: a truncated payload is zero-extended, bytes beyond
+    /// PAYLOAD_LENGTH are ignored.
+    static TtFileDataFit unpack_payload(const std::uint8_t* p, std::size_t n) noexcept
+    {
+        if (n < PAYLOAD_LENGTH) {
+            std::uint8_t full[PAYLOAD_LENGTH] = {};
+            if (n != 0) {
+                std::memcpy(full, p, n);
+            }
+            return unpack_payload(full, PAYLOAD_LENGTH);
+        }
+        TtFileDataFit m;
+        get_le(p + 0, m.transfer_id);
+        get_le(p + 4, m.offset);
+        get_le(p + 8, m.count);
+        get_le(p + 9, m.data);
+        return m;
+    }
+
+    /// An unsigned frame into `buf`; returns its size, or 0 if `cap` is too small.
+    std::size_t encode(std::uint8_t* buf, std::size_t cap, std::uint8_t seq = 0, std::uint8_t sysid = 1,
+                       std::uint8_t compid = 1) const noexcept
+    {
+        return encode_message(*this, buf, cap, seq, sysid, compid);
+    }
+};
+
 }  // namespace ttapi
 
 #endif  // TTCTL_TTAPI_MESSAGES_HPP

@@ -20977,6 +20977,70 @@ class TtFileReason(Message):
         return self
 
 
+class TtFileDataFit(Message):
+    """TT_FILE_DATA_FIT (id 50014): [sender: any] [runtime] [spans-packets] File bytes in a frame sized to the link's packet: it states how many it carries, so it can fill a packet of any size (128 bytes on DJI's Payload SDK low-speed channel) or a signed frame's one packet."""
+
+    __slots__ = ("count", "data", "offset", "transfer_id",)
+    MSG_ID: ClassVar[int] = 50014
+    NAME: ClassVar[str] = "TT_FILE_DATA_FIT"
+    CRC_EXTRA: ClassVar[int] = 50
+    PAYLOAD_LENGTH: ClassVar[int] = 255
+    MIN_LENGTH: ClassVar[int] = 255
+    FIELDS: ClassVar[tuple[str, ...]] = ("transfer_id", "offset", "count", "data",)
+    ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint32_t", "uint32_t", "uint8_t", "uint8_t[246]",)
+    _IDB: ClassVar[bytes] = b'^\xc3\x00'
+    _XB: ClassVar[bytes] = b'2'
+    _S: ClassVar[struct.Struct] = struct.Struct("<IIB246s")
+
+    transfer_id: int
+    """Transfer id from the offer."""
+
+    offset: int
+    """Offset of data in the file. [bytes]"""
+
+    count: int
+    """File bytes carried: 1..246. [bytes]"""
+
+    data: bytes
+    """File bytes."""
+
+    def __init__(
+        self,
+        transfer_id: int = 0,
+        offset: int = 0,
+        count: int = 0,
+        data: bytes | bytearray | Sequence[int] = bytes(246),
+    ) -> None:
+        self.transfer_id = transfer_id
+        self.offset = offset
+        self.count = count
+        self.data = _ubytes(data, 246, "TT_FILE_DATA_FIT.data", False)
+
+    def pack_payload(self) -> bytes:
+        try:
+            p = self._S.pack(
+                self.transfer_id,
+                self.offset,
+                self.count,
+                _ubytes(self.data, 246, "TT_FILE_DATA_FIT.data"),
+            )
+        except struct.error as e:
+            raise ValueError(f"TT_FILE_DATA_FIT: {e}") from None
+        return p if p[-1] else _truncate(p)
+
+    @classmethod
+    def _unpack(cls, b: Any, off: int) -> TtFileDataFit:
+        self: TtFileDataFit = _new(cls)
+        (
+            self.transfer_id,
+            self.offset,
+            self.count,
+            self.data,
+        ) = cls._S.unpack_from(b, off)
+        return self
+
+
 ALL: tuple[type[Message], ...] = (
     Heartbeat,
     SysStatus,
@@ -21202,6 +21266,7 @@ ALL: tuple[type[Message], ...] = (
     TtVrPose,
     TtVrController,
     TtFileReason,
+    TtFileDataFit,
 )
 BY_NAME: dict[str, type[Message]] = {cls.NAME: cls for cls in ALL}
 register(ALL)
@@ -21407,6 +21472,7 @@ __all__ = [
     "TtActionCommand",
     "TtCommandAck",
     "TtFileData",
+    "TtFileDataFit",
     "TtFileDataWide",
     "TtFileOffer",
     "TtFileReason",
