@@ -164,6 +164,7 @@ public:
         for (std::size_t i = 0; i < MAX_SOURCES; ++i) {
             sources_[i].rx.set_signing(cfg_.signing);
         }
+        geometry_ok_ = Geometry::make(cfg_.mtu, cfg_.signing != nullptr, geometry_);
         if (!cfg_.inbox.empty()) {
             store_.reset(new ReceiveDir(cfg_.inbox, cfg_.quota));
             TransferConfig rcfg = cfg_.transfer;
@@ -175,6 +176,7 @@ public:
             receiver_.reset(new FileReceiver(*store_, cfg_.sysid, cfg_.compid, rcfg, cfg_.max_transfers));
             receiver_->set_event_handler(&Node::file_event_thunk, this);
             receiver_->set_inbound(cfg_.inbound_Bps);  // rate grants to concurrent uploads (sharing.hpp)
+            receiver_->set_packet(cfg_.mtu);
         }
         dispatcher_.set_outbox(context_);
         heartbeat_.type = 18;  // MAV_TYPE_ONBOARD_CONTROLLER
@@ -190,6 +192,15 @@ public:
     /// used. Call once before driving the node.
     bool start(Words& why)
     {
+        if (!geometry_ok_ || cfg_.mtu > scheduler_.mtu()) {
+            why.clear();
+            why << "a packet of " << static_cast<std::uint64_t>(cfg_.mtu) << " bytes cannot be used: "
+                << (cfg_.mtu > scheduler_.mtu() ? "at most " : "at least ")
+                << static_cast<std::uint64_t>(cfg_.mtu > scheduler_.mtu() ? scheduler_.mtu()
+                                                                             : FIT_OVERHEAD + 1 + (cfg_.signing ? SIGNATURE_BYTES : 0))
+                << " bytes" << (cfg_.signing && cfg_.mtu <= scheduler_.mtu() ? " with signing" : "");
+            return false;
+        }
         if (store_ && !store_->prepare(why)) {
             return false;
         }
@@ -540,6 +551,8 @@ private:
     double boot_ = 0.0;
     bool clock_started_ = false;
     bool started_ = false;
+    Geometry geometry_;  // how file data fills the link's packets (cfg_.mtu, signing)
+    bool geometry_ok_ = false;
     double heartbeat_due_ = 0.0;
     bool has_last_rx_ = false;
     double last_rx_ = 0.0;

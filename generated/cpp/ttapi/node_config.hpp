@@ -33,7 +33,10 @@ struct NodeConfig {
     /// the M100), shared out equally among the files it receives at once: each status tells its
     /// sender its share (TT_FILE_STATUS.rate_grant, sharing.hpp). 0: no grants.
     double inbound_Bps = 0.0;
-    std::size_t mtu = 100;  // DTT packets
+    /// The link's packet size: 100 on DJI's DTT (OSDK), 128 on the Payload SDK's low-speed
+    /// channel. Packets, file-data frames (transfer_base.hpp's Geometry) and pacing follow it;
+    /// below 22 bytes (35 signed) start() refuses it.
+    std::size_t mtu = 100;
     std::string inbox;  // files received land here ("": this end takes no files)
     std::string serve;  // files a peer may fetch ("": none)
     Quota quota;  // of the inbox

@@ -286,14 +286,23 @@ inline bool Node::handle(const Frame& f)
     }
     ++stats_.frames_in;
     const double now = now_;
-    if (f.msgid == TtFileData::MSG_ID || f.msgid == TtFileDataWide::MSG_ID) {
+    if (f.msgid == TtFileData::MSG_ID || f.msgid == TtFileDataWide::MSG_ID || f.msgid == TtFileDataFit::MSG_ID) {
         if (receiver_) {
             if (f.msgid == TtFileData::MSG_ID) {
                 const TtFileData m = f.as<TtFileData>();
-                receiver_->on_data(now, m.transfer_id, m.offset, m.data.data(), NARROW, f.sysid, f.compid);
-            } else {
+                receiver_->on_data(now, m.transfer_id, m.offset, m.data.data(), NARROW, NARROW_FRAME, f.sysid,
+                                   f.compid);
+            } else if (f.msgid == TtFileDataWide::MSG_ID) {
                 const TtFileDataWide m = f.as<TtFileDataWide>();
-                receiver_->on_data(now, m.transfer_id, m.offset, m.data.data(), WIDE, f.sysid, f.compid);
+                receiver_->on_data(now, m.transfer_id, m.offset, m.data.data(), WIDE, WIDE_FRAME, f.sysid, f.compid);
+            } else {
+                const TtFileDataFit m = f.as<TtFileDataFit>();
+                if (m.count == 0 || m.count > FIT_MAX) {
+                    ++stats_.bad_frames;  // a count the message cannot hold: ignored
+                    return true;
+                }
+                receiver_->on_data(now, m.transfer_id, m.offset, m.data.data(), m.count, FIT_OVERHEAD + m.count,
+                                   f.sysid, f.compid);
             }
         }
         return true;

@@ -185,9 +185,13 @@ public:
     void on_offer(double now, const TtFileOffer& msg, std::uint8_t src_sysid, std::uint8_t src_compid);
 
     // -- data (receiver_data.hpp) -----------------------------------------------------------
-    /// A data frame (TT_FILE_DATA: cap 80, TT_FILE_DATA_WIDE: cap 247; `data` holds cap bytes).
+    /// A data frame (TT_FILE_DATA: cap 80, TT_FILE_DATA_WIDE: cap 247, TT_FILE_DATA_FIT: cap its
+    /// count; `data` holds cap bytes) of `frame_len` bytes unsigned (100, 267, 21 + count).
     void on_data(double now, std::uint32_t transfer_id, std::uint32_t offset, const std::uint8_t* data,
-                 std::size_t cap, std::uint8_t src_sysid, std::uint8_t src_compid);
+                 std::size_t cap, std::size_t frame_len, std::uint8_t src_sysid, std::uint8_t src_compid);
+
+    /// The link's packet size (the node's mtu): grant-derived intervals are counted in packets.
+    void set_packet(std::size_t mtu) noexcept { packet_ = mtu; }
 
     // -- statuses (receiver_status.hpp) -----------------------------------------------------
     /// Statuses due now (each after the reason for a refusal or failure), with their keys;
@@ -428,6 +432,8 @@ private:
     Unknown unknown_due_[TransferLimits::MAX_UNKNOWN] = {};
     std::size_t unknown_due_count_ = 0;
     double inbound_Bps_ = 0.0;
+    std::size_t packet_ = 100;  // the link's packet size
+    double packet() const noexcept { return static_cast<double>(packet_); }
     std::uint16_t grant_ = 0;
     std::size_t sharing_count_ = 0;  // transfers flagged `sharing` at the last share(), closed ones included
     InboundLoad load_;

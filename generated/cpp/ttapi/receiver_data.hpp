@@ -22,7 +22,8 @@
 namespace ttapi::link {
 
 inline void FileReceiver::on_data(double now, std::uint32_t transfer_id, std::uint32_t offset, const std::uint8_t* data,
-                                  std::size_t cap, std::uint8_t src_sysid, std::uint8_t src_compid)
+                                  std::size_t cap, std::size_t frame_len, std::uint8_t src_sysid,
+                                  std::uint8_t src_compid)
 {
     const int at = find(src_sysid, src_compid, transfer_id);
     if (at < 0) {
@@ -32,7 +33,7 @@ inline void FileReceiver::on_data(double now, std::uint32_t transfer_id, std::ui
     Incoming& t = tr(at);
     t.last_activity = now;
     ++t.frames;
-    load_.data(now, cap == NARROW ? NARROW_FRAME : WIDE_FRAME);
+    load_.data(now, frame_len);
     if (t.group < 0) {  // not accepted (yet), finished or refused
         if (t.decided && now - t.last_status >= cfg_.status_min_interval) {
             status_now(t, now);

@@ -84,7 +84,7 @@ inline void FileReceiver::control(double now, Emit&& emit)
 // minimum interval after their last status), each sender starting its frames at its status.
 inline void FileReceiver::share(double now) noexcept
 {
-    const double window = Sharing::window(grant_);
+    const double window = Sharing::window(grant_, packet());
     bool changed = false;
     std::size_t was = 0;
     std::size_t n = 0;
@@ -103,7 +103,7 @@ inline void FileReceiver::share(double now) noexcept
         return;
     }
     grant_ = grant;
-    const double step = grant != 0 ? Sharing::GRANT_FRAME / (static_cast<double>(grant) * static_cast<double>(n)) : 0.0;
+    const double step = grant != 0 ? packet() / (static_cast<double>(grant) * static_cast<double>(n)) : 0.0;
     std::uint64_t after = 0;  // the key told last
     for (std::size_t k = 0; k < n; ++k) {
         Incoming* next = nullptr;  // the sharing transfer with the smallest key after `after`
@@ -131,7 +131,7 @@ inline void FileReceiver::share(double now) noexcept
 inline double FileReceiver::flow_window(const Incoming& t) const noexcept
 {
     if (grant_ != 0 && t.sharing) {
-        return std::max(cfg_.status_interval, Sharing::three_frames(grant_));
+        return std::max(cfg_.status_interval, Sharing::three_frames(grant_, packet()));
     }
     return cfg_.status_interval;
 }

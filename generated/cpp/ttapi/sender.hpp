@@ -152,6 +152,9 @@ public:
     const FileSource& source() const noexcept { return source_; }
     /// Seconds per byte on the link, if known (the node sets it from its pacer's rate).
     void set_byte_time(double seconds) noexcept { byte_time_ = seconds; }
+    /// How data frames fill the link's packets (the node sets it from its mtu and signing).
+    void set_geometry(const Geometry& g) noexcept { geo_ = g; }
+    const Geometry& geometry() const noexcept { return geo_; }
 
     void cancel(double now) { finish(now, false, "CANCELLED", "cancelled"); }
 
@@ -415,6 +418,7 @@ private:
     double rtt_ = 0.5;
     bool rtt_sampled_ = false;
     double byte_time_ = 0.0;
+    Geometry geo_;
     double finished_at_ = -1.0;
     // per attempt
     State state_ = State::idle;

@@ -207,7 +207,7 @@ inline bool FileSender::deadline(double now, double& when) const noexcept
 // on the frames it gets).
 inline double FileSender::quiet_after() const noexcept
 {
-    return std::max(3 * cfg_.status_interval, 2 * rtt_ + cfg_.status_interval) + Sharing::three_frames(pacer_.grant());
+    return std::max(3 * cfg_.status_interval, 2 * rtt_ + cfg_.status_interval) + Sharing::three_frames(pacer_.grant(), static_cast<double>(geo_.mtu));
 }
 
 // A round-trip sample from the status's echo of the latest frame it saw (Karn: only frames
@@ -277,7 +277,7 @@ inline void FileSender::apply_status(double now, const TtFileStatus& msg) noexce
     double horizon = now - rtt_ - 0.05;
     const History* echo = find_history(msg.last_offset);
     if (echo != nullptr && msg.hold_ms != 65535) {
-        horizon = std::min(horizon, echo->time - 2.0 * NARROW_FRAME * byte_time_);
+        horizon = std::min(horizon, echo->time - 2.0 * static_cast<double>(geo_.mtu) * byte_time_);
     }
     const bool truncated = n >= MAX_RANGES;  // bytes past received_end are unknown, not missing
     if (re < next_new_ && !truncated) {

@@ -36,11 +36,11 @@ inline std::size_t FileSender::pull(double now, std::size_t space, std::uint8_t*
         return 0;
     }
     const bool wide = mode_wide_;
-    const std::size_t frame_len = wide ? WIDE_FRAME : NARROW_FRAME;
+    const std::size_t frame_len = wide ? geo_.wide_frame : geo_.narrow_frame;
     if (!wide && space < frame_len) {
         return 0;  // a narrow frame takes a packet of its own: wait for the next one
     }
-    const std::size_t cap = wide ? WIDE : NARROW;
+    const std::size_t cap = wide ? WIDE : geo_.narrow_cap;
     std::uint64_t offset = 0;
     bool first_send = true;
     if (!retx_.empty()) {
@@ -72,7 +72,7 @@ inline std::size_t FileSender::pull(double now, std::size_t space, std::uint8_t*
     ++h.sends;
     ++h.since;
     // when its last byte can have left: frames longer than a packet take several packets
-    const double left = now + static_cast<double>(frame_len + NARROW_FRAME) * byte_time_;
+    const double left = now + static_cast<double>(frame_len + geo_.mtu) * byte_time_;
     record(left, offset, offset + length);
     if (first_send) {
         classify_later(offset, offset + length, left, wide);
@@ -89,6 +89,14 @@ inline std::size_t FileSender::pull(double now, std::size_t space, std::uint8_t*
         TtFileDataWide m;
         m.transfer_id = id_;
         m.offset = static_cast<std::uint32_t>(offset);
+        std::memcpy(m.data.data(), data, length);
+        n = encoder_->encode(m, out, MAX_FRAME);
+    } else if (geo_.fit) {
+        ++stats_.narrow_frames;
+        TtFileDataFit m;
+        m.transfer_id = id_;
+        m.offset = static_cast<std::uint32_t>(offset);
+        m.count = static_cast<std::uint8_t>(length);
         std::memcpy(m.data.data(), data, length);
         n = encoder_->encode(m, out, MAX_FRAME);
     } else {

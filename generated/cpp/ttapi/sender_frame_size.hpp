@@ -2,10 +2,10 @@
 //
 // FileSender (sender.hpp) of the ttapi dialect's file transfer: the frame size. The loss of
 // each first transmission is measured exactly once a status covers it; from the last 64 per frame
-// size, narrow (TT_FILE_DATA, one packet) or wide (TT_FILE_DATA_WIDE, spanning packets) frames are
-// chosen, whichever carries more file bytes per byte on the air (transfer.py's arithmetic). A
-// part of sender.hpp, which includes it after the class; included on its own, it includes
-// sender.hpp.
+// size, narrow (one packet: TT_FILE_DATA or TT_FILE_DATA_FIT, as the link's Geometry says) or wide
+// (TT_FILE_DATA_WIDE, spanning packets) frames are chosen, whichever carries more file bytes per
+// byte on the air (transfer.py's arithmetic). A part of sender.hpp, which includes it after the
+// class; included on its own, it includes sender.hpp.
 #ifndef TTCTL_TTAPI_SENDER_FRAME_SIZE_HPP
 #ifndef TTCTL_TTAPI_SENDER_HPP
 #include "sender.hpp"  // includes this part after the class
@@ -19,14 +19,6 @@
 
 namespace ttapi::link {
 
-/// Probability that a 267-byte frame, streamed back to back, survives packet loss p: it
-/// overlaps 3 packets a third of the time and 4 otherwise.
-inline double frame_survival_wide(double p) noexcept
-{
-    const double q = 1.0 - p;
-    return 0.34 * q * q * q + 0.66 * q * q * q * q;
-}
-
 /// Upper end of the Wilson interval (about 84% one-sided) for a loss rate from n trials.
 inline double wilson_upper(std::size_t lost, std::size_t n, double z = 1.0) noexcept
 {
@@ -39,21 +31,6 @@ inline double wilson_upper(std::size_t lost, std::size_t n, double z = 1.0) noex
     const double centre = p + z * z / (2 * dn);
     const double spread = z * std::sqrt(p * (1 - p) / dn + z * z / (4 * dn * dn));
     return std::min(1.0, (centre + spread) / denom);
-}
-
-inline double packet_loss_from_wide(double frame_loss) noexcept
-{
-    double lo = 0.0;
-    double hi = 1.0;
-    for (int i = 0; i < 40; ++i) {
-        const double mid = (lo + hi) / 2;
-        if (1.0 - frame_survival_wide(mid) < frame_loss) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    return lo;
 }
 
 inline void FileSender::classify_later(std::uint64_t start, std::uint64_t end, double when, bool wide) noexcept
@@ -86,8 +63,8 @@ inline bool FileSender::choose_wide() const noexcept
     } else {
         return false;
     }
-    const double eff_narrow = static_cast<double>(NARROW) / NARROW_FRAME * (1 - p);
-    const double eff_wide = static_cast<double>(WIDE) / WIDE_FRAME * frame_survival_wide(p);
+    const double eff_narrow = static_cast<double>(geo_.narrow_cap) / static_cast<double>(geo_.narrow_frame) * (1 - p);
+    const double eff_wide = static_cast<double>(WIDE) / static_cast<double>(geo_.wide_frame) * geo_.survival_wide(p);
     const bool better = eff_wide > eff_narrow;
     if (better != mode_wide_ && std::abs(eff_wide - eff_narrow) < 0.02) {
         return mode_wide_;  // hysteresis
@@ -126,7 +103,7 @@ inline void FileSender::classify(double horizon, std::uint64_t re, bool truncate
                 lost += outcomes_[w][k] ? 1 : 0;
             }
             const double frame_loss = wilson_upper(lost, outcomes_n_[w]);  // pessimistic: wide frames are costly
-            loss_[w] = w == 0 ? frame_loss : packet_loss_from_wide(frame_loss);
+            loss_[w] = w == 0 ? frame_loss : geo_.packet_loss_from_wide(frame_loss);
             has_loss_[w] = true;
         }
     }

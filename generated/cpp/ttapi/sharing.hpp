@@ -37,7 +37,7 @@ struct Sharing {
     static constexpr double ACTIVE_WINDOW = 3.0;  // s: a receiving transfer heard from within this shares the link
     static constexpr std::uint16_t MIN_GRANT = 1;  // B/s: a grant is never 0 (0 on the wire means "no grant")
     static constexpr std::uint16_t MAX_GRANT = 65535;  // what TT_FILE_STATUS.rate_grant holds
-    static constexpr double GRANT_FRAME = 100.0;  // bytes: one packet (a TT_FILE_DATA frame)
+    static constexpr double GRANT_FRAME = 100.0;  // bytes: one packet of DJI's DTT (the default `packet` below)
     static constexpr double OTHER_ROOM = 2.0;  // B/s kept free per B/s of other traffic coming in
     static constexpr double MIN_FILL = 0.5;  // of the capacity granted, whatever else comes in
     static constexpr double LOAD_WINDOW = 5.0;  // s over which the other traffic is measured
@@ -67,15 +67,18 @@ struct Sharing {
     }
 
     /// How lately a receiving transfer must have been heard from to share the link under `grant`
-    /// (four frames' time at it, at least ACTIVE_WINDOW).
-    static double window(std::uint16_t grant) noexcept
+    /// (four packets' time at it, at least ACTIVE_WINDOW; `packet`: the link's packet size).
+    static double window(std::uint16_t grant, double packet = GRANT_FRAME) noexcept
     {
-        return grant != 0 ? std::max(ACTIVE_WINDOW, 4.0 * GRANT_FRAME / grant) : ACTIVE_WINDOW;
+        return grant != 0 ? std::max(ACTIVE_WINDOW, 4.0 * packet / grant) : ACTIVE_WINDOW;
     }
 
-    /// Three frames' time at `grant` (0 without one): how much longer data counts as flowing at
+    /// Three packets' time at `grant` (0 without one): how much longer data counts as flowing at
     /// the receiver, and how much longer a sender waits for a status before polling.
-    static double three_frames(std::uint16_t grant) noexcept { return grant != 0 ? 3 * GRANT_FRAME / grant : 0.0; }
+    static double three_frames(std::uint16_t grant, double packet = GRANT_FRAME) noexcept
+    {
+        return grant != 0 ? 3 * packet / grant : 0.0;
+    }
 };
 
 /// What comes in that is not file data, in B/s over the last LOAD_WINDOW seconds: the bytes of

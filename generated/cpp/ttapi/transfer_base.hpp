@@ -8,6 +8,7 @@
 #ifndef TTCTL_TTAPI_TRANSFER_BASE_HPP
 #define TTCTL_TTAPI_TRANSFER_BASE_HPP
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -26,6 +27,9 @@ inline constexpr std::size_t NARROW = 80;  // file bytes in a TT_FILE_DATA frame
 inline constexpr std::size_t WIDE = 247;  // file bytes in a TT_FILE_DATA_WIDE frame (267 bytes)
 inline constexpr std::size_t NARROW_FRAME = 100;
 inline constexpr std::size_t WIDE_FRAME = 267;
+inline constexpr std::size_t FIT_MAX = 246;  // file bytes a TT_FILE_DATA_FIT frame can carry
+inline constexpr std::size_t FIT_OVERHEAD = 21;  // a TT_FILE_DATA_FIT frame is 21 + count bytes unsigned
+inline constexpr std::size_t SIGNATURE_BYTES = 13;  // a signed frame is this much longer
 inline constexpr std::size_t META_PART = 71;  // metadata bytes per TT_FILE_OFFER
 inline constexpr std::size_t REQUEST_PART = 80;  // name bytes per TT_FILE_REQUEST
 inline constexpr std::size_t MAX_RANGES = 7;  // missing ranges per TT_FILE_STATUS
@@ -37,6 +41,78 @@ inline constexpr const char* PARTIAL_DIR = ".ttctl-partial";
 
 static_assert(TtFileData::PAYLOAD_LENGTH == 8 + NARROW, "TT_FILE_DATA carries 80 file bytes");
 static_assert(TtFileDataWide::PAYLOAD_LENGTH == 8 + WIDE, "TT_FILE_DATA_WIDE carries 247 file bytes");
+static_assert(TtFileDataFit::PAYLOAD_LENGTH == 9 + FIT_MAX, "TT_FILE_DATA_FIT carries up to 246 file bytes");
+
+/// How file data fills the link's packets (the frame geometry; ttctl's Python and the Java tablet
+/// decide the same): from the link's packet size (`mtu`) and whether frames are signed, the narrow
+/// frame (one packet: TT_FILE_DATA's 80 bytes in 100 when that fills the packet best, else a
+/// TT_FILE_DATA_FIT sized to the packet), the wide frame (TT_FILE_DATA_WIDE, spanning packets) and
+/// what a wide frame streamed back to back survives.
+struct Geometry {
+    std::size_t mtu = 100;  // one packet's bytes
+    std::size_t sig = 0;  // SIGNATURE_BYTES when frames are signed
+    bool fit = false;  // narrow frames are TT_FILE_DATA_FIT (else TT_FILE_DATA)
+    std::size_t narrow_cap = NARROW;  // file bytes in a narrow frame
+    std::size_t narrow_frame = NARROW_FRAME;  // its length on the wire
+    std::size_t wide_frame = WIDE_FRAME;
+
+    /// The geometry of a link of `mtu`-byte packets; false for a packet too small for a frame
+    /// with one file byte (below 22 bytes, 35 signed).
+    static bool make(std::size_t mtu, bool signed_frames, Geometry& g) noexcept
+    {
+        const std::size_t sig = signed_frames ? SIGNATURE_BYTES : 0;
+        if (mtu < FIT_OVERHEAD + 1 + sig) {
+            return false;
+        }
+        const std::size_t fit_cap = std::min(FIT_MAX, mtu - FIT_OVERHEAD - sig);
+        g = Geometry{};
+        g.mtu = mtu;
+        g.sig = sig;
+        if (NARROW_FRAME + sig <= mtu && NARROW >= fit_cap) {
+            g.fit = false;
+            g.narrow_cap = NARROW;
+            g.narrow_frame = NARROW_FRAME + sig;
+        } else {
+            g.fit = true;
+            g.narrow_cap = fit_cap;
+            g.narrow_frame = fit_cap + FIT_OVERHEAD + sig;
+        }
+        g.wide_frame = WIDE_FRAME + sig;
+        return true;
+    }
+
+    /// Probability that a wide frame, streamed back to back, survives packet loss p: it spans
+    /// c = ceil(L / M) packets with probability Pc and c + 1 otherwise.
+    double survival_wide(double p) const noexcept
+    {
+        const double q = 1.0 - p;
+        const std::size_t c = (wide_frame + mtu - 1) / mtu;
+        const double m = static_cast<double>(mtu);
+        const double pc = std::min(1.0, static_cast<double>(c * mtu - wide_frame + 1) / m);
+        double qc = 1.0;
+        for (std::size_t i = 0; i < c; ++i) {
+            qc *= q;
+        }
+        return pc * qc + (1.0 - pc) * qc * q;
+    }
+
+    /// The packet loss under which a wide frame is lost with probability `frame_loss` (40 steps of
+    /// bisection).
+    double packet_loss_from_wide(double frame_loss) const noexcept
+    {
+        double lo = 0.0;
+        double hi = 1.0;
+        for (int i = 0; i < 40; ++i) {
+            const double mid = (lo + hi) / 2;
+            if (1.0 - survival_wide(mid) < frame_loss) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo;
+    }
+};
 
 /// Fixed sizes of the transfer tables (they bound the memory a peer can make this end use).
 struct TransferLimits {

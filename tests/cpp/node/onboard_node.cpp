@@ -23,6 +23,10 @@
 //                  files it receives at once by rate grants (default 0: no grants)
 //   --max-file     per-file quota of the inbox (default 1 GiB)
 //   --send FILE    upload FILE to SYS/COMP once started (ttctl recv-file takes it)
+//   --mtu BYTES    the link's packet size (default 100: DJI's DTT; 128: the PSDK channel)
+//   --print-geometry  print the frame geometry for every packet size 1..300, unsigned and signed
+//                  ("MTU SIGNED FIT NARROW_CAP NARROW_FRAME WIDE_FRAME SURVIVAL(0.1)", or
+//                  "MTU SIGNED -" when refused) and exit
 //   --print-name-rules  print the code points a file name may not hold (ranges "lo hi", hex) and
 //                  exit: the name rules' character table, for comparing with Python's unicodedata
 //
@@ -176,6 +180,21 @@ int main(int argc, char** argv)
             cfg.quota.overwrite = true;
         } else if (a == "--heartbeat") {
             cfg.heartbeat_interval = number();
+        } else if (a == "--mtu") {
+            cfg.mtu = static_cast<std::size_t>(number());
+        } else if (a == "--print-geometry") {
+            for (std::size_t mtu = 1; mtu <= 300; ++mtu) {
+                for (int sig = 0; sig < 2; ++sig) {
+                    ttapi::link::Geometry g;
+                    if (!ttapi::link::Geometry::make(mtu, sig != 0, g)) {
+                        std::printf("%zu %d -\n", mtu, sig);
+                        continue;
+                    }
+                    std::printf("%zu %d %d %zu %zu %zu %.12f %.12f\n", mtu, sig, g.fit ? 1 : 0, g.narrow_cap,
+                                g.narrow_frame, g.wide_frame, g.survival_wide(0.1), g.packet_loss_from_wide(0.3));
+                }
+            }
+            return 0;
         } else if (a == "--print-name-rules") {
             std::uint32_t lo = 0;
             bool in = false;
