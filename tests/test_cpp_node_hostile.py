@@ -135,7 +135,7 @@ def test_a_signed_link_works_and_a_wrong_key_is_refused(cpp_node_bins: dict[str,
     proc, r = send(str(src), "--to", to, "--rate", "8000", "--key", str(tmp_path / "key"), timeout=60)
     assert proc.returncode == 0 and r["ok"], proc.stderr
     assert sha(inbox / "s.bin") == sha(src)
-    # served signed: 113-byte data frames span two packets, signed as they are placed, nothing between
+    # served signed: TT_FILE_DATA_FIT frames of 66 file bytes fill each 100-byte packet, signed (Geometry)
     (tmp_path / "got").mkdir()
     proc, f = send("d.bin", "--from", to, "--dir", str(tmp_path / "got"), "--rate", "8000", "--key",
                    str(tmp_path / "key"), timeout=60)

@@ -200,19 +200,19 @@ def test_the_scheduler_builds_the_packets_pythons_builds(cpp_node_bins: dict[str
 
 # -- the node: the Python endpoint's decisions ----------------------------------------------------
 
-def receiving_script(tmp: Path, seed: int, loss: float, size: int) -> tuple[list[str], list[str]]:
+def receiving_script(tmp: Path, seed: int, loss: float, size: int, mtu: int = 100) -> tuple[list[str], list[str]]:
     """A Python tablet (Endpoint 255/190, seeded) uploads a file and sends commands to a Python
-    onboard Endpoint (1/240, paced at 6700 B/s) over a channel that loses `loss` of the packets
-    either way, in virtual time (5 ms steps). Returns the onboard end's input as a node_driver
-    script, and what it sent at each poll."""
+    onboard Endpoint (1/240, paced at 6700 B/s) over a channel of `mtu`-byte packets that loses
+    `loss` of them either way, in virtual time (5 ms steps). Returns the onboard end's input as a
+    node_driver script, and what it sent at each poll."""
     from ttctl.proto.endpoint import Endpoint
     from ttctl.proto.storage import BytesSource, ReceiveDir
 
     b = shipped_bindings()
     rng = random.Random(seed)
-    tx = Endpoint(b, *TABLET, rate_Bps=500.0, rng=random.Random(seed))
+    tx = Endpoint(b, *TABLET, mtu=mtu, rate_Bps=500.0, rng=random.Random(seed))
     # an action that accepts every command, as node_driver's (without one, both ends answer UNSUPPORTED)
-    rx = Endpoint(b, 1, 240, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp / "python"),
+    rx = Endpoint(b, 1, 240, mtu=mtu, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp / "python"),
                   action=lambda msg: int(ttapi.TtResult.TT_RESULT_ACCEPTED))
     data = random.Random(seed + 1).randbytes(size)
     sender = tx.send_file("f.bin", (1, 240), source=BytesSource(data, "f.bin"))
@@ -248,15 +248,18 @@ def shipped_bindings() -> Any:
     return shipped()
 
 
-@pytest.mark.parametrize("seed,loss", [(1, 0.1), (2, 0.25)])
+@pytest.mark.parametrize("seed,loss,mtu", [(1, 0.1, 100), (2, 0.25, 100), (6, 0.1, 128)])
 def test_the_node_answers_what_pythons_endpoint_answers(cpp_node_bins: dict[str, Path], tmp_path: Path, seed: int,
-                                                        loss: float) -> None:
+                                                        loss: float, mtu: int) -> None:
     """The C++ node and ttctl's Python Endpoint, as the onboard end of an upload with commands
     over a lossy channel in virtual time, given the same packets at the same moments, send the
     same packets byte for byte at the same moments: the same statuses (when, how many, which
-    gaps, hold times), the same acks, the same pacing; and store the same file."""
-    script, want = receiving_script(tmp_path, seed, loss, 20_000)
-    run = subprocess.run([str(cpp_node_bins["driver"]), str(tmp_path / "cpp"), "-", "6700"],
+    gaps, hold times), the same acks, the same pacing; and store the same file. On DJI's DTT
+    (100-byte packets) and the Payload SDK channel (128: TT_FILE_DATA_FIT frames come in)."""
+    script, want = receiving_script(tmp_path, seed, loss, 20_000, mtu)
+    if mtu != 100:
+        assert sum("5ec300" in line for line in script if line.startswith("R")) > 20  # TT_FILE_DATA_FIT's msgid
+    run = subprocess.run([str(cpp_node_bins["driver"]), str(tmp_path / "cpp"), "-", "6700", "0", str(mtu)],
                          input="\n".join(script) + "\n", capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stderr
     got = run.stdout.splitlines()
@@ -268,31 +271,33 @@ def test_the_node_answers_what_pythons_endpoint_answers(cpp_node_bins: dict[str,
     assert sum(w != "-" for w in want) > 20
 
 
-@pytest.mark.parametrize("seed,loss", [(3, 0.02), (4, 0.1), (5, 0.25)])
+@pytest.mark.parametrize("seed,loss,mtu", [(3, 0.02, 100), (4, 0.1, 100), (5, 0.25, 100), (7, 0.02, 128),
+                                          (8, 0.1, 128)])
 def test_the_node_serves_what_pythons_endpoint_serves(cpp_node_bins: dict[str, Path], tmp_path: Path, seed: int,
-                                                      loss: float) -> None:
+                                                      loss: float, mtu: int) -> None:
     """Two worlds in virtual time, alike but for the onboard end: a Python tablet fetches a file
     (TT_FILE_REQUEST) over a channel that loses `loss` of the packets either way, from ttctl's
     Python Endpoint in one world and from the C++ node (drawing the same transfer ids) in the
     other. At every 5 ms step both onboard ends send the same packets byte for byte: the same
     offers, the same narrow and wide data frames chosen from the same loss estimates, the same
-    repeats, at the same pace; and both fetches complete."""
+    repeats, at the same pace; and both fetches complete. In 100-byte packets (TT_FILE_DATA) and
+    128-byte ones (TT_FILE_DATA_FIT, 107 file bytes filling each packet)."""
     from ttctl.proto.endpoint import Endpoint
     from ttctl.proto.storage import ReceiveDir
 
     b = shipped_bindings()
     serve = write(tmp_path / "serve" / "s.bin", 30_000, seed).parent
-    onboard = ServingOnboards(cpp_node_bins["driver"], tmp_path, serve, b, seed + 100)
+    onboard = ServingOnboards(cpp_node_bins["driver"], tmp_path, serve, b, seed + 100, mtu)
     worlds = []
     for name in ("python", "cpp"):
         done: list[bool] = []
-        tab = Endpoint(b, *TABLET, rate_Bps=500.0, receive_dir=ReceiveDir(tmp_path / f"tablet_{name}"),
+        tab = Endpoint(b, *TABLET, mtu=mtu, rate_Bps=500.0, receive_dir=ReceiveDir(tmp_path / f"tablet_{name}"),
                        unsolicited=False, accept_commands=False, rng=random.Random(seed),
                        on_event=lambda what, obj, done=done: done.append(True) if what == "file-complete" else None)
         tab.request_file("s.bin", (1, 240))
         worlds.append((name, tab, random.Random(seed), done))
     now = 0.0
-    steps = sent = wide = 0
+    steps = sent = wide = fit = 0
     try:
         while not all(w[3] for w in worlds) and now < 120:
             outs = {}
@@ -308,6 +313,7 @@ def test_the_node_serves_what_pythons_endpoint_serves(cpp_node_bins: dict[str, P
                                                    [p.hex() for p in outs["python"]])
             sent += len(outs["python"])
             wide += sum(p.count(bytes.fromhex("59c300")) for p in outs["python"])  # TT_FILE_DATA_WIDE's msgid
+            fit += sum(p.count(bytes.fromhex("5ec300")) for p in outs["python"])  # TT_FILE_DATA_FIT's msgid
             steps += 1
             now = round(now + 0.005, 6)
     finally:
@@ -315,6 +321,7 @@ def test_the_node_serves_what_pythons_endpoint_serves(cpp_node_bins: dict[str, P
     assert all(w[3] for w in worlds), "a fetch did not complete"
     for name in ("python", "cpp"):
         assert (tmp_path / f"tablet_{name}" / "s.bin").read_bytes() == (serve / "s.bin").read_bytes()
-    assert sent > 300 and steps > 300
+    assert sent > 200 and steps > 300
     assert (wide > 20) == (loss < 0.05), wide  # little loss: wide frames (the choice is the same too)
+    assert (fit > 20) == (mtu == 128), fit
 

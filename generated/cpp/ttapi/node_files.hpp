@@ -30,6 +30,7 @@ inline bool Node::send_file(const char* path, std::string_view name, std::uint8_
         why << static_cast<std::uint64_t>(MAX_SENDERS) << " files are being sent from here; ask again later";
         return false;
     }
+    s->set_geometry(geometry_);  // data frames sized to the link's packets (and signing)
     if (!s->start(*this, encoder_, path, name, sysid, compid, cfg_.transfer, request_id, overwrite, now_, why)) {
         return false;
     }

@@ -2,10 +2,10 @@
 // tests/test_cpp_node_parity.py, which runs ttctl's Python Endpoint on the same input and compares what
 // each sends.
 //
-//     node_driver INBOX SERVE RATE [INBOUND] < script
+//     node_driver INBOX SERVE RATE [INBOUND [MTU]] < script
 //
 // The node is 1/240, paced at RATE B/s, shares INBOUND B/s among concurrent uploads (rate
-// grants; default 0: none), receives into INBOX, serves SERVE ("-": nothing), sends
+// grants; default 0: none), sends MTU-byte packets (default 100), receives into INBOX, serves SERVE ("-": nothing), sends
 // no heartbeat, and accepts every command (ACCEPTED, as the Python endpoint it is compared with
 // is told to). Script lines: `I ID` queues a transfer id for the node to draw (as the Python end's
 // seeded random numbers give it); `R NOW HEX` a packet arrives at NOW; `P NOW` the node is
@@ -23,8 +23,8 @@
 
 int main(int argc, char** argv)
 {
-    if (argc != 4 && argc != 5) {
-        std::fprintf(stderr, "usage: node_driver INBOX SERVE RATE [INBOUND] < script\n");
+    if (argc < 4 || argc > 6) {
+        std::fprintf(stderr, "usage: node_driver INBOX SERVE RATE [INBOUND [MTU]] < script\n");
         return 2;
     }
     std::deque<std::uint32_t> ids;
@@ -34,7 +34,8 @@ int main(int argc, char** argv)
         cfg.serve = argv[2];
     }
     cfg.rate_Bps = std::stod(argv[3]);
-    cfg.inbound_Bps = argc == 5 ? std::stod(argv[4]) : 0.0;
+    cfg.inbound_Bps = argc >= 5 ? std::stod(argv[4]) : 0.0;
+    cfg.mtu = argc == 6 ? static_cast<std::size_t>(std::stoul(argv[5])) : 100;
     cfg.heartbeat_interval = 0;
     cfg.new_id = [&ids]() -> std::uint32_t {
         if (ids.empty()) {
