@@ -193,12 +193,12 @@ public:
     bool start(Words& why)
     {
         if (!geometry_ok_ || cfg_.mtu > scheduler_.mtu()) {
+            const bool big = cfg_.mtu > scheduler_.mtu();
+            const std::size_t least = FIT_OVERHEAD + 1 + (cfg_.signing != nullptr ? SIGNATURE_BYTES : 0);
             why.clear();
             why << "a packet of " << static_cast<std::uint64_t>(cfg_.mtu) << " bytes cannot be used: "
-                << (cfg_.mtu > scheduler_.mtu() ? "at most " : "at least ")
-                << static_cast<std::uint64_t>(cfg_.mtu > scheduler_.mtu() ? scheduler_.mtu()
-                                                                             : FIT_OVERHEAD + 1 + (cfg_.signing ? SIGNATURE_BYTES : 0))
-                << " bytes" << (cfg_.signing && cfg_.mtu <= scheduler_.mtu() ? " with signing" : "");
+                << (big ? "at most " : "at least ") << static_cast<std::uint64_t>(big ? scheduler_.mtu() : least)
+                << " bytes" << (!big && cfg_.signing != nullptr ? " with signing" : "");
             return false;
         }
         if (store_ && !store_->prepare(why)) {

@@ -203,11 +203,12 @@ inline bool FileSender::deadline(double now, double& when) const noexcept
 }
 
 // How long without a status, while data flows, before asking where the receiver is: three status
-// intervals, an RTT more, and under a grant three frames' time at it more (the receiver reports
+// intervals, an RTT more, and under a grant three packets' time at it more (the receiver reports
 // on the frames it gets).
 inline double FileSender::quiet_after() const noexcept
 {
-    return std::max(3 * cfg_.status_interval, 2 * rtt_ + cfg_.status_interval) + Sharing::three_frames(pacer_.grant(), static_cast<double>(geo_.mtu));
+    const double wait = std::max(3 * cfg_.status_interval, 2 * rtt_ + cfg_.status_interval);
+    return wait + Sharing::three_frames(pacer_.grant(), static_cast<double>(geo_.mtu));
 }
 
 // A round-trip sample from the status's echo of the latest frame it saw (Karn: only frames
