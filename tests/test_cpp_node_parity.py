@@ -51,30 +51,14 @@ def test_name_rules_refuse_the_characters_python_refuses(cpp_node_bins: dict[str
 
 # -- the frame geometry ---------------------------------------------------------------------------
 
-def notes_geometry(mtu: int, signed: bool) -> tuple[int, int, int, int] | None:
-    """The frame geometry as the lead decided it (issue 26): (fit, narrow cap, narrow frame
-    length, wide frame length), None for a packet too small."""
-    sig = 13 if signed else 0
-    if mtu < 22 + sig:
-        return None
-    fit_cap = min(246, mtu - 21 - sig)
-    if 100 + sig <= mtu and 80 >= fit_cap:
-        return 0, 80, 100 + sig, 267 + sig
-    return 1, fit_cap, fit_cap + 21 + sig, 267 + sig
-
-
-def notes_survival(p: float, mtu: int, wide: int) -> float:
-    q = 1 - p
-    c = -(-wide // mtu)
-    pc = min(1.0, (c * mtu - wide + 1) / mtu)
-    return pc * q ** c + (1 - pc) * q ** (c + 1)
-
-
 def test_frame_geometry_follows_the_packet_size(cpp_node_bins: dict[str, Path]) -> None:
-    """For every packet size 1..300, unsigned and signed, the C++ Geometry picks the narrow frame
-    (TT_FILE_DATA 80/100 on DTT, TT_FILE_DATA_FIT 107/128 on the PSDK channel, 66/100 and 94/128
-    signed), the wide frame's length and its survival of 10 % packet loss as decided; an mtu below
-    22 (35 signed) is refused."""
+    """For every packet size 1..300, unsigned and signed, the C++ Geometry is Python's
+    (ttctl.proto.transfer.Geometry): the same narrow frame (TT_FILE_DATA 80/100 on DTT,
+    TT_FILE_DATA_FIT 107/128 on the PSDK channel, 66/100 and 94/128 signed), wide frame, survival of
+    10 % packet loss and loss inverted from a wide frame's; the same packets refused (below 22
+    bytes, 35 signed)."""
+    from ttctl.proto.transfer import Geometry
+
     run = subprocess.run([str(cpp_node_bins["plain"]), "--print-geometry"], capture_output=True, text=True,
                          timeout=60)
     assert run.returncode == 0, run.stderr
@@ -82,17 +66,14 @@ def test_frame_geometry_follows_the_packet_size(cpp_node_bins: dict[str, Path]) 
     assert len(rows) == 600
     for row in rows:
         mtu, signed = int(row[0]), row[1] == "1"
-        want = notes_geometry(mtu, signed)
-        if want is None:
+        try:
+            g = Geometry(mtu, signed)
+        except ValueError:
             assert row[2:] == ["-"], row
             continue
-        assert tuple(int(x) for x in row[2:6]) == want, row
-        assert float(row[6]) == pytest.approx(notes_survival(0.1, mtu, want[3]), abs=1e-9), row
-        lo, hi = 0.0, 1.0
-        for _ in range(40):
-            mid = (lo + hi) / 2
-            lo, hi = (mid, hi) if 1 - notes_survival(mid, mtu, want[3]) < 0.3 else (lo, mid)
-        assert float(row[7]) == pytest.approx(lo, abs=1e-9), row
+        assert tuple(int(x) for x in row[2:6]) == (int(g.narrow_fit), g.narrow_cap, g.narrow_frame, g.wide_frame), row
+        assert float(row[6]) == pytest.approx(g.survival_wide(0.1), abs=1e-9), row
+        assert float(row[7]) == pytest.approx(g.packet_loss_from_wide(0.3), abs=1e-9), row
     got = {(int(r[0]), r[1]): tuple(int(x) for x in r[2:5]) for r in rows if r[2] != "-"}
     assert got[(100, "0")] == (0, 80, 100)
     assert got[(128, "0")] == (1, 107, 128)
