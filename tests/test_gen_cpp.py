@@ -20,7 +20,7 @@ import pytest
 
 from conftest import ROOT, TTAPI, run_ttctl
 from ttctl.codegen.engine import receives
-from ttctl.codegen.lang_cpp import NODE_HEADERS, RUNTIME_HEADERS, TRANSFER_HEADERS
+from ttctl.codegen.lang_cpp import NODE_HEADERS, RUNTIME_HEADERS, SDK_HEADERS, TRANSFER_HEADERS
 from ttctl.dialect.model import INTEGER_RANGES, Message
 from ttctl.validate import load_and_check
 
@@ -111,7 +111,8 @@ def test_generated_files_are_formatted(tree: dict[str, Any]) -> None:
     assert {p.relative_to(cpp).as_posix() for p in files} == {
         "ttapi/enums.hpp", "ttapi/messages.hpp", "ttapi/ttapi.hpp", "ttapi/signing.hpp", "ttapi/packets.hpp",
         "ttapi/udp_forward.hpp", "ttapi/sha256.hpp", "ttapi/scheduler.hpp", "ttapi/commands.hpp",
-        *(f"ttapi/{h}.hpp" for h in (*RUNTIME_HEADERS, *TRANSFER_HEADERS, *NODE_HEADERS)), "ttapi/udp_link.hpp",
+        *(f"ttapi/{h}.hpp" for h in (*RUNTIME_HEADERS, *TRANSFER_HEADERS, *NODE_HEADERS, *SDK_HEADERS)),
+        "ttapi/udp_link.hpp",
         "conformance.cpp", "conformance_json.hpp", "conformance_json_reader.hpp", "onboard/ttapi_plugin.hpp"}
     for p in files:
         lines = p.read_text().split("\n")

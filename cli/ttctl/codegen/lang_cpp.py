@@ -19,6 +19,7 @@ the link, in namespace <ns>::link:
   cpp/<ident>/node.hpp        link::Node: all of it on one link, heartbeat, timers; DttLink (DJI OSDK 4);
                               it includes its pieces (NODE_HEADERS): the config, the set-points'
                               answers (SetpointDesk), receiving, files, NodePump, DttLink
+  cpp/<ident>/psdk_link.hpp   link::PsdkLink: a Node on DJI's Payload SDK low-speed channel (needs its header)
   cpp/<ident>/udp_link.hpp    link::UdpLink: a Node on UDP (POSIX)
   cpp/<ident>/enums.hpp       one `enum class` per enum
   cpp/<ident>/messages.hpp    one struct per message
@@ -69,8 +70,11 @@ TRANSFER_HEADERS = ("transfer", "transfer_base", "file_names", "ranges", "posix_
 # The node: node.hpp includes node_config.hpp and setpoints.hpp first and its parts (the others)
 # after the class.
 NODE_HEADERS = ("node", "node_config", "setpoints", "node_receive", "node_files", "node_pump", "dtt_link")
+# Links on DJI's SDKs that need the SDK's own header (compiled in tests against DJI's vendored
+# headers, tests/vendor/dji/): the node on the Payload SDK's low-speed channel.
+SDK_HEADERS = ("psdk_link",)
 _SUB_HEADERS = (*RUNTIME_HEADERS, "enums", "messages", "signing", "packets", "sha256", "scheduler", "commands",
-                *TRANSFER_HEADERS, *NODE_HEADERS, "udp_link", "udp_forward")
+                *TRANSFER_HEADERS, *NODE_HEADERS, *SDK_HEADERS, "udp_link", "udp_forward")
 # What the onboard link runtime (commands.hpp, transfer.hpp, node.hpp) is written against: these
 # messages with ttctl's ids and CRC_EXTRA (ttctl.wire.contract), and these enums.
 LINK_MESSAGES = ("HEARTBEAT", "TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_DATA", "TT_FILE_REQUEST", "TT_ACTION_COMMAND",
@@ -257,6 +261,7 @@ class _Cpp:
             Output(f"cpp/{ident}/commands.hpp", "cpp/commands.hpp.j2"),
             *_headers(ident, TRANSFER_HEADERS),
             *_headers(ident, NODE_HEADERS),
+            *_headers(ident, SDK_HEADERS),
             Output(f"cpp/{ident}/udp_link.hpp", "cpp/udp_link.hpp.j2"),
         ] if carries_link(d) else []
         return [
