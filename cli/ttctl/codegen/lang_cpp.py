@@ -20,6 +20,7 @@ the link, in namespace <ns>::link:
                               it includes its pieces (NODE_HEADERS): the config, the set-points'
                               answers (SetpointDesk), receiving, files, NodePump, DttLink
   cpp/<ident>/psdk_link.hpp   link::PsdkLink: a Node on DJI's Payload SDK low-speed channel (needs its header)
+  cpp/<ident>/osdk_link.hpp   link::OsdkLink: a Node on DJI's Onboard SDK 3.x or 4.x DTT (needs its header)
   cpp/<ident>/udp_link.hpp    link::UdpLink: a Node on UDP (POSIX)
   cpp/<ident>/enums.hpp       one `enum class` per enum
   cpp/<ident>/messages.hpp    one struct per message
@@ -71,8 +72,9 @@ TRANSFER_HEADERS = ("transfer", "transfer_base", "file_names", "ranges", "posix_
 # after the class.
 NODE_HEADERS = ("node", "node_config", "setpoints", "node_receive", "node_files", "node_pump", "dtt_link")
 # Links on DJI's SDKs that need the SDK's own header (compiled in tests against DJI's vendored
-# headers, tests/vendor/dji/): the node on the Payload SDK's low-speed channel.
-SDK_HEADERS = ("psdk_link",)
+# headers, tests/vendor/dji/): the node on the Payload SDK's low-speed channel, and on the Onboard
+# SDK's DTT (3.x and 4.x).
+SDK_HEADERS = ("psdk_link", "osdk_link")
 _SUB_HEADERS = (*RUNTIME_HEADERS, "enums", "messages", "signing", "packets", "sha256", "scheduler", "commands",
                 *TRANSFER_HEADERS, *NODE_HEADERS, *SDK_HEADERS, "udp_link", "udp_forward")
 # What the onboard link runtime (commands.hpp, transfer.hpp, node.hpp) is written against: these

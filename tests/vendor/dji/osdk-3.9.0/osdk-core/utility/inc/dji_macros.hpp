@@ -1,0 +1,44 @@
+/** @file dji_macros.hpp
+ *  @version 3.7
+ *  @date Jun 2018
+ *
+ *  @brief Circular buffer class for the DJI OSDK
+ *
+ *  @Copyright (c) 2018 DJI
+ *
+ * Permission is hereby granted, free of charge, to any person obtaining a copy
+ * of this software and associated documentation files (the "Software"), to deal
+ * in the Software without restriction, including without limitation the rights
+ * to use, copy, modify, merge, publish, distribute, sublicense, and/or sell
+ * copies of the Software, and to permit persons to whom the Software is
+ * furnished to do so, subject to the following conditions:
+ *
+ * The above copyright notice and this permission notice shall be included in
+ * all copies or substantial portions of the Software.
+ *
+ * THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND, EXPRESS OR
+ * IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY,
+ * FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT. IN NO EVENT SHALL THE
+ * AUTHORS OR COPYRIGHT HOLDERS BE LIABLE FOR ANY CLAIM, DAMAGES OR OTHER
+ * LIABILITY, WHETHER IN AN ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM,
+ * OUT OF OR IN CONNECTION WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE
+ * SOFTWARE.
+ *
+ */
+
+#ifndef ONBOARDSDK_DJI_MACROS_H
+#define ONBOARDSDK_DJI_MACROS_H
+
+#ifndef DJI_NO_DEPRECATED_WARNING
+#if (defined __GNUC__ || defined ARMCC)
+#define DJI_DEPRECATED __attribute__((deprecated))
+#elif (defined _MSC_VER)
+#define DJI_DEPRECATED __declspec(deprecated)
+#else
+#define DJI_DEPRECATED
+#endif
+#else
+#define DJI_DEPRECATED
+#endif
+
+#endif // ONBOARDSDK_DJI_MACROS_H
