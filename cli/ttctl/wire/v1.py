@@ -44,7 +44,9 @@ class Upgrader:
         self.saw_v1 = False
         self.saw_v2 = False
 
-    def feed(self, data: bytes) -> bytes:
+    def feed(self, data: bytes, datagram: bool = False) -> bytes:
+        """`datagram`: `data` is one whole UDP datagram (no frame spans two): what is left
+        incomplete at its end is passed on as it is, not held for the next one."""
         buf = self._buf + bytes(data)
         out = bytearray()
         i, n = 0, len(buf)
@@ -67,15 +69,19 @@ class Upgrader:
                     break
                 frame = buf[i:i + total]
                 if self.registry.get(buf[i + 5]) is None:
-                    # its CRC cannot be checked without CRC_EXTRA: counted, named once, skipped whole
-                    self.v1_unknown += 1
-                    if self.on_unknown is not None:
-                        self.on_unknown(buf[i + 5])
-                    i += total
+                    # its CRC cannot be checked without CRC_EXTRA, so it may be no frame at all: from a
+                    # station that has sent good MAVLink 1 frames it is counted and named once
+                    if self.saw_v1:
+                        self.v1_unknown += 1
+                        if self.on_unknown is not None:
+                            self.on_unknown(buf[i + 5])
+                    out.append(buf[i])
+                    i += 1
                     continue
                 up = self._upgrade(frame)
                 if up is None:
-                    i += 1  # not a frame after all: resynchronise after its magic
+                    out.append(buf[i])  # not a frame after all: resynchronise after its magic
+                    i += 1
                     continue
                 out += up
                 i += total
@@ -86,6 +92,9 @@ class Upgrader:
                 out += buf[i:j]  # the MAVLink 2 parser counts what it skips
                 i = j
         rest = buf[i:]
+        if datagram:
+            out += rest  # the MAVLink 2 parser keeps or drops it as it would without us
+            rest = b""
         self._buf = rest if len(rest) <= MAX_BUFFER else b""
         return bytes(out)
 

@@ -113,7 +113,7 @@ class GcsBridge:
                     self._v1.pop(next(iter(self._v1)))
                 v1 = self._v1[(link, source)] = Upgrader(self.b.registry, self._unknown_v1)
             before = v1.v1_frames
-            data = v1.feed(data)  # MAVLink 1 frames re-framed as MAVLink 2; the rest as it came
+            data = v1.feed(data, not getattr(link, "stream", False))  # MAVLink 1 re-framed as 2; the rest as it came
             self.stats.v1_up += v1.v1_frames - before
             now = asyncio.get_running_loop().time()
             queued = False
