@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <thread>
 #include <type_traits>
 
 #include "dji_vehicle.hpp"
@@ -61,11 +62,17 @@ public:
     {
         if (open_) {
             vehicle_->mobileDevice->setFromMSDKCallback(nullptr, nullptr);
+            OsdkLink* self = this;
+            live().compare_exchange_strong(self, nullptr);
+            while (running().load() != 0) {  // a callback the SDK had begun: wait for its copy
+                std::this_thread::yield();
+            }
         }
     }
 
     /// Register the from-mobile callback; false (with words) without a vehicle or a mobile
-    /// device, or for a node whose packets DTT cannot carry (mtu over 100).
+    /// device, for a node whose packets DTT cannot carry (mtu over 100), or when another
+    /// OsdkLink is open (the SDK has one mobile device).
     bool open(Words& why)
     {
         why.clear();
@@ -78,6 +85,11 @@ public:
                 << ") are larger than DTT's 100 bytes";
             return false;
         }
+        OsdkLink* none = nullptr;
+        if (!live().compare_exchange_strong(none, this)) {
+            why << "another OsdkLink is open";
+            return false;
+        }
         vehicle_->mobileDevice->setFromMSDKCallback(&OsdkLink::from_mobile, this);
         open_ = true;
         return true;
@@ -88,9 +100,26 @@ public:
     const DttLink& dtt() const noexcept { return dtt_; }
 
 private:
+    static std::atomic<OsdkLink*>& live() noexcept
+    {
+        static std::atomic<OsdkLink*> link{nullptr};
+        return link;
+    }
+
+    static std::atomic<int>& running() noexcept
+    {
+        static std::atomic<int> n{0};
+        return n;
+    }
+
+    // The SDK's thread: copied into DttLink's queue, at once (a link that has gone is not used).
     static void from_mobile(DJI::OSDK::Vehicle* /*vehicle*/, DJI::OSDK::RecvContainer rc, DJI::OSDK::UserData user)
     {
-        static_cast<OsdkLink*>(user)->dtt_.from_mobile(rc.recvData.raw_ack_array, osdk_data_length(rc));
+        running().fetch_add(1);
+        if (OsdkLink* l = live().load(); l != nullptr && l == user) {
+            l->dtt_.from_mobile(rc.recvData.raw_ack_array, osdk_data_length(rc));
+        }
+        running().fetch_sub(1);
     }
 
     void send(const std::uint8_t* p, std::size_t n)

@@ -36,6 +36,7 @@
 #include <cstring>
 #include <functional>
 #include <mutex>
+#include <thread>
 #include <utility>
 
 #include "dji_low_speed_data_channel.h"
@@ -245,12 +246,21 @@ private:
         return table;
     }
 
+    // Callbacks running per address: a link that goes waits for those that may still use it.
+    static std::atomic<int>* running() noexcept
+    {
+        static std::atomic<int> table[ADDRESSES] = {};
+        return table;
+    }
+
     template <std::size_t A>
     static T_DjiReturnCode receive_at(const std::uint8_t* data, std::uint16_t len)
     {
-        if (PsdkLink* l = slots()[A].load(std::memory_order_acquire)) {
+        running()[A].fetch_add(1);
+        if (PsdkLink* l = slots()[A].load()) {
             l->from_app(data, len);
         }
+        running()[A].fetch_sub(1);
         return DJI_ERROR_SYSTEM_MODULE_CODE_SUCCESS;
     }
 
@@ -266,12 +276,17 @@ private:
         return thunk_of(at, std::make_index_sequence<ADDRESSES>{});
     }
 
+    // Stop taking packets: after it no callback uses this link (one in its copy is waited for).
     void detach() noexcept
     {
         const auto at = static_cast<std::size_t>(address_);
         if (at < ADDRESSES) {
             PsdkLink* self = this;
-            slots()[at].compare_exchange_strong(self, nullptr);
+            if (slots()[at].compare_exchange_strong(self, nullptr)) {
+                while (running()[at].load() != 0) {
+                    std::this_thread::yield();
+                }
+            }
         }
     }
 
