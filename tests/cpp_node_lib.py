@@ -246,25 +246,28 @@ class Raw:
 class ServingOnboards:
     """The onboard end serving `serve` in two virtual-time worlds alike: ttctl's Python Endpoint
     ("python") and the C++ node's driver program ("cpp"), both paced at 6700 B/s in `mtu`-byte
-    packets and drawing the
-    same transfer ids (the driver is told the ids the Endpoint's seeded random draws). A world
-    hands it what its tablet sent (`receive`) and takes what it sends now (`poll`)."""
+    packets, signing with `key` from `timestamp` on if given, and drawing the same transfer ids
+    (the driver is told the ids the Endpoint's seeded random draws). A world hands it what its
+    tablet sent (`receive`) and takes what it sends now (`poll`)."""
 
-    def __init__(self, driver: Path, tmp: Path, serve: Path, bindings: Any, seed: int, mtu: int = 100) -> None:
+    def __init__(self, driver: Path, tmp: Path, serve: Path, bindings: Any, seed: int, mtu: int = 100,
+                 key: bytes | None = None, timestamp: int = 0) -> None:
         from ttctl.proto.endpoint import Endpoint
         from ttctl.proto.storage import ReceiveDir
 
         draws = random.Random(seed)
         draws.randint(1, 65535)  # the endpoint's first command id: its first draw
         ids = [draws.getrandbits(32) for _ in range(8)]
-        self.drv = subprocess.Popen([str(driver), str(tmp / "cpp_in"), str(serve), "6700", "0", str(mtu)],
+        signed = [key.hex(), str(timestamp)] if key is not None else []
+        self.drv = subprocess.Popen([str(driver), str(tmp / "cpp_in"), str(serve), "6700", "0", str(mtu), *signed],
                                     stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
         assert self.drv.stdin is not None and self.drv.stdout is not None
         self.stdin, self.stdout = self.drv.stdin, self.drv.stdout
         for i in ids:
             self.stdin.write(f"I {i}\n")
         self.python = Endpoint(bindings, 1, 240, mtu=mtu, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp / "py_in"),
-                               serve_dir=str(serve), rng=random.Random(seed))
+                               serve_dir=str(serve), rng=random.Random(seed),
+                               signing=bindings.mavlink.Signing(key, 0, False, timestamp) if key is not None else None)
 
     def receive(self, name: str, now: float, pkt: bytes) -> None:
         if name == "python":

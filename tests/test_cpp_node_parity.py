@@ -181,19 +181,24 @@ def test_the_scheduler_builds_the_packets_pythons_builds(cpp_node_bins: dict[str
 
 # -- the node: the Python endpoint's decisions ----------------------------------------------------
 
-def receiving_script(tmp: Path, seed: int, loss: float, size: int, mtu: int = 100) -> tuple[list[str], list[str]]:
+def receiving_script(tmp: Path, seed: int, loss: float, size: int, mtu: int = 100, key: bytes | None = None,
+                     start: int = 0) -> tuple[list[str], list[str]]:
     """A Python tablet (Endpoint 255/190, seeded) uploads a file and sends commands to a Python
     onboard Endpoint (1/240, paced at 6700 B/s) over a channel of `mtu`-byte packets that loses
-    `loss` of them either way, in virtual time (5 ms steps). Returns the onboard end's input as a
-    node_driver script, and what it sent at each poll."""
+    `loss` of them either way, in virtual time (5 ms steps), both ends signing with `key` from
+    timestamp `start` if given. Returns the onboard end's input as a node_driver script, and what
+    it sent at each poll."""
     from ttctl.proto.endpoint import Endpoint
     from ttctl.proto.storage import BytesSource, ReceiveDir
 
     b = shipped_bindings()
     rng = random.Random(seed)
-    tx = Endpoint(b, *TABLET, mtu=mtu, rate_Bps=500.0, rng=random.Random(seed))
+    def signing() -> Any:
+        return b.mavlink.Signing(key, 0, False, start) if key is not None else None
+
+    tx = Endpoint(b, *TABLET, mtu=mtu, rate_Bps=500.0, rng=random.Random(seed), signing=signing())
     # an action that accepts every command, as node_driver's (without one, both ends answer UNSUPPORTED)
-    rx = Endpoint(b, 1, 240, mtu=mtu, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp / "python"),
+    rx = Endpoint(b, 1, 240, mtu=mtu, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp / "python"), signing=signing(),
                   action=lambda msg: int(ttapi.TtResult.TT_RESULT_ACCEPTED))
     data = random.Random(seed + 1).randbytes(size)
     sender = tx.send_file("f.bin", (1, 240), source=BytesSource(data, "f.bin"))
@@ -229,18 +234,23 @@ def shipped_bindings() -> Any:
     return shipped()
 
 
-@pytest.mark.parametrize("seed,loss,mtu", [(1, 0.1, 100), (2, 0.25, 100), (6, 0.1, 128)])
+@pytest.mark.parametrize("seed,loss,mtu,signed", [(1, 0.1, 100, False), (2, 0.25, 100, False), (6, 0.1, 128, False),
+                                                 (11, 0.1, 100, True), (12, 0.1, 128, True)])
 def test_the_node_answers_what_pythons_endpoint_answers(cpp_node_bins: dict[str, Path], tmp_path: Path, seed: int,
-                                                        loss: float, mtu: int) -> None:
+                                                        loss: float, mtu: int, signed: bool) -> None:
     """The C++ node and ttctl's Python Endpoint, as the onboard end of an upload with commands
     over a lossy channel in virtual time, given the same packets at the same moments, send the
     same packets byte for byte at the same moments: the same statuses (when, how many, which
     gaps, hold times), the same acks, the same pacing; and store the same file. On DJI's DTT
-    (100-byte packets) and the Payload SDK channel (128: TT_FILE_DATA_FIT frames come in)."""
-    script, want = receiving_script(tmp_path, seed, loss, 20_000, mtu)
-    if mtu != 100:
+    (100-byte packets) and the Payload SDK channel (128: TT_FILE_DATA_FIT frames come in), and
+    signed (one-packet TT_FILE_DATA_FIT frames; signings started ahead of the clock sign alike)."""
+    key = random.Random(seed).randbytes(32) if signed else None
+    start = shipped_bindings().mavlink.Signing.now() + 10**11
+    script, want = receiving_script(tmp_path, seed, loss, 20_000, mtu, key, start)
+    if mtu != 100 or signed:
         assert sum("5ec300" in line for line in script if line.startswith("R")) > 20  # TT_FILE_DATA_FIT's msgid
-    run = subprocess.run([str(cpp_node_bins["driver"]), str(tmp_path / "cpp"), "-", "6700", "0", str(mtu)],
+    signing = [key.hex(), str(start)] if key is not None else []
+    run = subprocess.run([str(cpp_node_bins["driver"]), str(tmp_path / "cpp"), "-", "6700", "0", str(mtu), *signing],
                          input="\n".join(script) + "\n", capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stderr
     got = run.stdout.splitlines()
@@ -252,27 +262,35 @@ def test_the_node_answers_what_pythons_endpoint_answers(cpp_node_bins: dict[str,
     assert sum(w != "-" for w in want) > 20
 
 
-@pytest.mark.parametrize("seed,loss,mtu", [(3, 0.02, 100), (4, 0.1, 100), (5, 0.25, 100), (7, 0.02, 128),
-                                          (8, 0.1, 128)])
+@pytest.mark.parametrize("seed,loss,mtu,signed", [(3, 0.02, 100, False), (4, 0.1, 100, False), (5, 0.25, 100, False),
+                                                 (7, 0.02, 128, False), (8, 0.1, 128, False), (9, 0.1, 100, True),
+                                                 (10, 0.02, 128, True)])
 def test_the_node_serves_what_pythons_endpoint_serves(cpp_node_bins: dict[str, Path], tmp_path: Path, seed: int,
-                                                      loss: float, mtu: int) -> None:
+                                                      loss: float, mtu: int, signed: bool) -> None:
     """Two worlds in virtual time, alike but for the onboard end: a Python tablet fetches a file
     (TT_FILE_REQUEST) over a channel that loses `loss` of the packets either way, from ttctl's
     Python Endpoint in one world and from the C++ node (drawing the same transfer ids) in the
     other. At every 5 ms step both onboard ends send the same packets byte for byte: the same
     offers, the same narrow and wide data frames chosen from the same loss estimates, the same
     repeats, at the same pace; and both fetches complete. In 100-byte packets (TT_FILE_DATA) and
-    128-byte ones (TT_FILE_DATA_FIT, 107 file bytes filling each packet)."""
+    128-byte ones (TT_FILE_DATA_FIT, 107 file bytes filling each packet); signed, in
+    TT_FILE_DATA_FIT frames of one packet (66 and 94 file bytes), every frame signed both ways
+    (the signings start ahead of the clock, so their timestamps, and so the signatures, are
+    the same in both worlds)."""
     from ttctl.proto.endpoint import Endpoint
     from ttctl.proto.storage import ReceiveDir
 
     b = shipped_bindings()
     serve = write(tmp_path / "serve" / "s.bin", 30_000, seed).parent
-    onboard = ServingOnboards(cpp_node_bins["driver"], tmp_path, serve, b, seed + 100, mtu)
+    key = random.Random(seed).randbytes(32) if signed else None
+    start = b.mavlink.Signing.now() + 10**11  # about 12 days ahead: timestamps count from here
+    onboard = ServingOnboards(cpp_node_bins["driver"], tmp_path, serve, b, seed + 100, mtu, key, start)
     worlds = []
     for name in ("python", "cpp"):
         done: list[bool] = []
-        tab = Endpoint(b, *TABLET, mtu=mtu, rate_Bps=500.0, receive_dir=ReceiveDir(tmp_path / f"tablet_{name}"),
+        signing = b.mavlink.Signing(key, 0, False, start) if key is not None else None
+        tab = Endpoint(b, *TABLET, mtu=mtu, rate_Bps=500.0, signing=signing,
+                       receive_dir=ReceiveDir(tmp_path / f"tablet_{name}"),
                        unsolicited=False, accept_commands=False, rng=random.Random(seed),
                        on_event=lambda what, obj, done=done: done.append(True) if what == "file-complete" else None)
         tab.request_file("s.bin", (1, 240))
@@ -303,6 +321,7 @@ def test_the_node_serves_what_pythons_endpoint_serves(cpp_node_bins: dict[str, P
     for name in ("python", "cpp"):
         assert (tmp_path / f"tablet_{name}" / "s.bin").read_bytes() == (serve / "s.bin").read_bytes()
     assert sent > 200 and steps > 300
-    assert (wide > 20) == (loss < 0.05), wide  # little loss: wide frames (the choice is the same too)
-    assert (fit > 20) == (mtu == 128), fit
+    if not signed:  # signed, narrow frames carry less and wide ones more: either may win at 10 % loss
+        assert (wide > 20) == (loss < 0.05), wide  # little loss: wide frames (the choice is the same too)
+    assert (fit > 20) == (mtu == 128 or signed), fit
 

@@ -2,10 +2,11 @@
 // tests/test_cpp_node_parity.py, which runs ttctl's Python Endpoint on the same input and compares what
 // each sends.
 //
-//     node_driver INBOX SERVE RATE [INBOUND [MTU]] < script
+//     node_driver INBOX SERVE RATE [INBOUND [MTU [KEY TIMESTAMP]]] < script
 //
 // The node is 1/240, paced at RATE B/s, shares INBOUND B/s among concurrent uploads (rate
-// grants; default 0: none), sends MTU-byte packets (default 100), receives into INBOX, serves SERVE ("-": nothing), sends
+// grants; default 0: none), sends MTU-byte packets (default 100), signs with KEY (64 hex
+// digits) from TIMESTAMP on (a start ahead of the clock makes the signatures repeatable), receives into INBOX, serves SERVE ("-": nothing), sends
 // no heartbeat, and accepts every command (ACCEPTED, as the Python endpoint it is compared with
 // is told to). Script lines: `I ID` queues a transfer id for the node to draw (as the Python end's
 // seeded random numbers give it); `R NOW HEX` a packet arrives at NOW; `P NOW` the node is
@@ -15,6 +16,7 @@
 #include <cstdio>
 #include <deque>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -23,8 +25,8 @@
 
 int main(int argc, char** argv)
 {
-    if (argc < 4 || argc > 6) {
-        std::fprintf(stderr, "usage: node_driver INBOX SERVE RATE [INBOUND [MTU]] < script\n");
+    if (argc < 4 || argc > 8 || argc == 7) {
+        std::fprintf(stderr, "usage: node_driver INBOX SERVE RATE [INBOUND [MTU [KEY TIMESTAMP]]] < script\n");
         return 2;
     }
     std::deque<std::uint32_t> ids;
@@ -35,7 +37,17 @@ int main(int argc, char** argv)
     }
     cfg.rate_Bps = std::stod(argv[3]);
     cfg.inbound_Bps = argc >= 5 ? std::stod(argv[4]) : 0.0;
-    cfg.mtu = argc == 6 ? static_cast<std::size_t>(std::stoul(argv[5])) : 100;
+    cfg.mtu = argc >= 6 ? static_cast<std::size_t>(std::stoul(argv[5])) : 100;
+    std::unique_ptr<ttapi::Signing> signing;
+    if (argc == 8) {
+        std::uint8_t key[32];
+        const std::string hex = argv[6];
+        for (std::size_t i = 0; i < 32; ++i) {
+            key[i] = static_cast<std::uint8_t>(std::stoul(hex.substr(2 * i, 2), nullptr, 16));
+        }
+        signing.reset(new ttapi::Signing(key, 0, false, std::stoull(argv[7])));
+        cfg.signing = signing.get();
+    }
     cfg.heartbeat_interval = 0;
     cfg.new_id = [&ids]() -> std::uint32_t {
         if (ids.empty()) {
