@@ -6,7 +6,8 @@ functions they call (tests/cpp/osdk_standin/, built for 3.9 or 4.1; tests/cpp/fa
 programs run against ttctl's Python ends through `ttctl link relay`:
 
 - the OSDK 3.9 build (the M100's SDK, whose recvInfo.len counts two bytes more than 4.1's) takes
-  a 4 KB file in full 100-byte packets, and serves one; the 4.1 build the same;
+  a 4 KB file in full 100-byte packets, and serves one; the 4.1 build the same; a program that
+  subtracts only PackageMin stalls on 3.9;
 - the Payload SDK build takes a file and serves one in 128-byte packets (--profile psdk).
 """
 
@@ -154,3 +155,72 @@ def test_the_adapters_compile_strictly_against_djis_headers(built: dict[str, Pat
                        "int main()\n{\n    return 0;\n}\n")
         inc = system_includes(OSDK[version])
     gxx(*WARN, "-Wshadow", "-Wconversion", "-Wsign-conversion", "-fsyntax-only", "-I", str(cpp), *inc, str(src))
+
+
+OLD_WIRING = """// the wiring that subtracts only PackageMin (right on OSDK 4.x, two bytes too many on 3.x)
+#include <atomic>
+#include <csignal>
+
+#include "dji_linux_helpers.hpp"
+#include "ttapi/node.hpp"
+
+namespace {
+std::atomic<bool> g_stop{false};
+void on_signal(int) { g_stop = true; }
+ttapi::link::DttLink* g_link = nullptr;
+void from_mobile(DJI::OSDK::Vehicle*, DJI::OSDK::RecvContainer rc, DJI::OSDK::UserData)
+{
+    g_link->from_mobile(rc.recvData.raw_ack_array, rc.recvInfo.len - DJI::OSDK::OpenProtocol::PackageMin);
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    std::signal(SIGINT, on_signal);
+    LinuxSetup setup(argc, argv);
+    DJI::OSDK::Vehicle* vehicle = setup.getVehicle();
+    ttapi::link::NodeConfig cfg;
+    cfg.inbox = "inbox";
+    ttapi::link::Node node(cfg);
+    ttapi::link::DttLink link(node, [vehicle](const std::uint8_t* p, std::size_t n) {
+        std::uint8_t packet[100];
+        std::copy(p, p + n, packet);
+        vehicle->mobileDevice->sendDataToMSDK(packet, static_cast<std::uint8_t>(n));
+    });
+    g_link = &link;
+    ttapi::link::Words why;
+    if (!node.start(why)) {
+        return 1;
+    }
+    vehicle->mobileDevice->setFromMSDKCallback(from_mobile, nullptr);
+    link.run(&g_stop);
+    return 0;
+}
+"""
+
+
+def test_subtracting_only_packagemin_stalls_a_4kb_upload_on_osdk_39(built: dict[str, Path], tmp_path: Path,
+                                                                     start: Start) -> None:
+    """Why OsdkLink tells the SDKs apart: on the 3.9 stand-in, a program that subtracts only
+    PackageMin (as OSDK 4 needs) reads every packet two bytes long, so full 100-byte packets from
+    the tablet are dropped and a 4 KB upload makes no progress (the same program with OsdkLink's
+    length moves it: test_the_osdk_program_moves_files_on_both_sdks)."""
+    src = tmp_path / "old.cpp"
+    src.write_text(OLD_WIRING)
+    exe = tmp_path / "old"
+    gxx(*WARN, "-O1", "-I", str(built["psdk"].parent / "out" / "cpp"), *system_includes(OSDK["3.9"]),
+        "-DFAKE_OSDK_VERSION=39", str(src), str(OSDK_STANDIN), "-pthread", "-o", str(exe), "-lz")
+    b = free_port()
+    prog = subprocess.Popen([str(exe)], cwd=tmp_path, env={**os.environ, "FAKE_OSDK_LISTEN": f"{LOCAL}:{b}"},
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        a = free_port()
+        relay(start, a, b, "--profile", "m100", "--stats-interval", "0")
+        up = tmp_path / "up.bin"
+        up.write_bytes(random.Random(4).randbytes(4096))
+        proc, r = send(str(up), "--to", f"udpout:{LOCAL}:{a}", "--profile", "m100", "--timeout", "6", timeout=120)
+        assert proc.returncode == 1 and r["code"] == "TIMEOUT", proc.stderr
+        assert not (tmp_path / "inbox" / "up.bin").exists()
+    finally:
+        prog.kill()
+        prog.wait(10)

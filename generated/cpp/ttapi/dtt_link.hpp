@@ -23,9 +23,11 @@
 
 namespace ttapi::link {
 
-/// The node on DJI's Onboard SDK 4 Data Transparent Transmission. Packets from the mobile
-/// device come on the SDK's thread: from_mobile() copies them into a fixed queue (QUEUE packets;
-/// more are dropped and counted) and returns at once. run() drives the node on the calling
+/// The node on DJI's Onboard SDK Data Transparent Transmission. Packets from the mobile device
+/// come on the SDK's thread: from_mobile() copies them into a fixed queue (QUEUE packets; more
+/// are dropped and counted) and returns at once. Its `n` is the data's length, which OSDK 3.x and
+/// 4.x report differently in RecvContainer::recvInfo.len: OsdkLink (osdk_link.hpp) wires this
+/// link to either SDK and computes it right for both. run() drives the node on the calling
 /// thread until stop() or `stop` is set, handing packets to `send`, which you wire to
 /// MobileDevice::sendDataToMSDK. Allocation-free after construction.
 class DttLink {
