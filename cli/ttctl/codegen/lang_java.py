@@ -73,8 +73,9 @@ TRANSFER_FILES = ["RangeSet", "Names", "TransferConfig", "TransferResult", "Tran
                   "Deflate", "ReceiveDir", "Incoming", "Partial", "FileReceiver", "FileFetch", "ServedFolder",
                   "TransferRouter", "TransferTimer", "FileTransfers"]
 TRANSFER_FILES += ["SentLog", "ReceiverStatuses", "Sharing"]  # split out of FileSender and FileReceiver; rate grants
+TRANSFER_FILES += ["Geometry"]  # the data frames the link's packet size allows
 TRANSFER_MESSAGES = {"TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_REASON", "TT_FILE_DATA", "TT_FILE_DATA_WIDE",
-                     "TT_FILE_REQUEST"}
+                     "TT_FILE_DATA_FIT", "TT_FILE_REQUEST"}
 
 
 

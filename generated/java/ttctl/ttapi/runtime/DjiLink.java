@@ -91,6 +91,7 @@ public final class DjiLink implements Link {
     }
 
     private final PacketSender sender;
+    private final int mtu;
     private final ReentrantLock lock = new ReentrantLock();
     private final Condition ready = lock.newCondition();
     private final ScheduledThreadPoolExecutor exec;
@@ -121,6 +122,11 @@ public final class DjiLink implements Link {
 
     /** A link sending through {@code sender}, receiving with {@code receiver}. */
     public DjiLink(PacketSender sender, PacketReceiver receiver) {
+        this(sender, receiver, Packetizer.DTT_MTU, "ttctl-dji-link");
+    }
+
+    /** The same machinery for another DJI channel, with packets of {@code mtu} bytes. */
+    DjiLink(PacketSender sender, PacketReceiver receiver, int mtu, String threadName) {
         if (sender == null) {
             throw new NullPointerException("sender");
         }
@@ -128,10 +134,11 @@ public final class DjiLink implements Link {
             throw new NullPointerException("receiver");
         }
         this.sender = sender;
+        this.mtu = mtu;
         this.exec = new ScheduledThreadPoolExecutor(1, new ThreadFactory() {
             @Override
             public Thread newThread(Runnable r) {
-                Thread t = new Thread(r, "ttctl-dji-link");
+                Thread t = new Thread(r, threadName);
                 t.setDaemon(true);
                 return t;
             }
@@ -244,6 +251,12 @@ public final class DjiLink implements Link {
         } catch (RuntimeException e) {
             receiving.droppedReceived++;
         }
+    }
+
+    /** DJI's DTT packet: 100 bytes (MSDK v4 refuses more). */
+    @Override
+    public int mtu() {
+        return mtu;
     }
 
     @Override
