@@ -1,6 +1,6 @@
 """`ttctl bench transfer`'s signed rows: ttctl with MAVLink 2 signing at both ends, judged against
-what signed frames allow (a signed TT_FILE_DATA is 113 bytes: a packet and 13 bytes of the next,
-80 file bytes per 113 of air, delivered only when both packets arrive)."""
+what signed frames allow (under loss a signed TT_FILE_DATA_FIT fills one packet: 66 file bytes in
+100 on DJI's DTT, 94 in the Payload SDK channel's 128)."""
 
 from __future__ import annotations
 
@@ -16,20 +16,19 @@ from ttctl.link.model import Channel, load_profile
 M100 = load_profile("m100")
 
 
-def test_signed_ceiling_is_two_packets_per_narrow_frame() -> None:
+def test_signed_ceiling_is_one_packet_per_narrow_frame() -> None:
     assert T.signed_ceiling(0.0) == pytest.approx(247 / 280)
-    assert T.signed_ceiling(0.1) == pytest.approx(80 / 113 * 0.9 * 0.9)
-    assert T.signed_ceiling(0.3) == pytest.approx(80 / 113 * 0.7 * 0.7)
-    # bursts: the 13-byte rest follows a slot later and mostly shares the first packet's fate
-    lam = 1 - 1 / (3 * 0.9)
-    assert T.signed_ceiling(0.1, "burst") == pytest.approx(80 / 113 * 0.9 * (1 - 0.1 * (1 - lam)))
-    for p in (0.1, 0.3):  # below the unsigned one-packet frames' 0.80 (1 - p) at any loss
-        assert T.signed_ceiling(p) < T.signed_ceiling(p, "burst") < 0.8 * (1 - p)
+    assert T.signed_ceiling(0.1) == pytest.approx(66 / 100 * 0.9)
+    assert T.signed_ceiling(0.3) == pytest.approx(66 / 100 * 0.7)
+    assert T.signed_ceiling(0.1, 128) == pytest.approx(94 / 128 * 0.9)
+    for p in (0.1, 0.3):  # above the two-packet TT_FILE_DATA's 80/113 (1 - p)^2, below the unsigned frames'
+        assert 80 / 113 * (1 - p) ** 2 < T.signed_ceiling(p) < T.unsigned_ceiling(p) == pytest.approx(0.8 * (1 - p))
+    assert T.unsigned_ceiling(0.1, 128) == pytest.approx(107 / 128 * 0.9)
 
 
 def test_signed_rows_are_signed_and_near_their_ceiling(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Every frame on the wire carries a signature (incompat flag 0x01), the data frames spill
-    13 bytes into a packet of their own, and the row reaches 0.95 of the signed ceiling."""
+    """Every frame on the wire carries a signature (incompat flag 0x01), the narrow data frames
+    fill one 100-byte packet each, and the row reaches 0.95 of the signed ceiling."""
     seen: list[bytes] = []
     real = T.channels
 
@@ -50,7 +49,8 @@ def test_signed_rows_are_signed_and_near_their_ceiling(monkeypatch: pytest.Monke
     assert row.ok
     starts = [p for p in seen if p[0] == 0xFD]
     assert len(starts) > 200 and all(p[2] & 0x01 for p in starts)  # signed, every one
-    assert sum(len(p) == 13 for p in seen) > 150  # a signed narrow frame's last 13 bytes
+    fits = [p for p in starts if len(p) == 100 and int.from_bytes(p[7:10], "little") == 50014]
+    assert len(fits) > 150 and not any(len(p) == 13 for p in seen)  # one packet each, nothing spills
     assert row.ceiling == pytest.approx(T.signed_ceiling(row.realised_loss), abs=1e-4)
     assert row.of_frame_ceiling is not None and row.of_frame_ceiling >= T.SIGNED_FLOOR, row
     unsigned = T.run_case("ttctl", M100, 10.0, T.Case("up", 0.1, "random"), 16384, [1, 2, 3])
@@ -72,7 +72,7 @@ def test_bench_transfer_prints_and_judges_signed_rows() -> None:
     signed = [r for r in report["rows"] if r["protocol"] == "ttctl-signed"]
     assert [(r["direction"], r["loss"]) for r in signed] == [("up", 0.0), ("up", 0.1)]
     assert all(r["ok"] and r["ceiling"] and r["of_frame_ceiling"] for r in signed)
-    assert report["frame_efficiency"]["narrow_signed"] == round(80 / 113, 4)
+    assert report["frame_efficiency"]["narrow_signed"] == round(66 / 100, 4)
     checks = [c for c in report["checks"] if c["check"].startswith("signed")]
     assert len(checks) == 2 and all(c["floor"] == 0.95 for c in checks)
     assert proc.returncode == (0 if all(c["ok"] for c in report["checks"]) else 1)

@@ -279,8 +279,8 @@ PROFILE_FILES = [
      "list of [metres, value] pairs"),
     ("bad loss model", "[a.up]\nrate_Bps = [[0, 1]]\nloss = [[0, 0]]\nloss_model = \"gauss\"\n[a.down]\n"
      "rate_Bps = [[0, 1]]\nloss = [[0, 0]]\n", "loss_model must be one of"),
-    ("mtu", "[a]\nmtu = 200\n[a.up]\nrate_Bps = [[0, 1]]\nloss = [[0, 0]]\n[a.down]\nrate_Bps = [[0, 1]]\n"
-     "loss = [[0, 0]]\n", "mtu must be a whole number of bytes in 1..100"),
+    ("mtu", "[a]\nmtu = 300\n[a.up]\nrate_Bps = [[0, 1]]\nloss = [[0, 0]]\n[a.down]\nrate_Bps = [[0, 1]]\n"
+     "loss = [[0, 0]]\n", "mtu must be a whole number of bytes in 22..255"),
 ]
 
 

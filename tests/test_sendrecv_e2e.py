@@ -316,3 +316,34 @@ def test_content_that_comes_back_after_another_replaced_it_is_complete_not_again
     assert recv.wait() == 0
     events = [json.loads(line)["event"] for line in recv.stdout.splitlines()]
     assert events.count("complete") == 3 and "complete-again" not in events, events
+
+
+def test_psdk_128_byte_packets_both_ways(tmp_path: Path, start: Start) -> None:
+    """DJI's Payload SDK channel (`--profile psdk`: 128-byte packets): an upload and a fetch through
+    the relay at 10 % loss, each whole, in 128-byte packets (TT_FILE_DATA_FIT, 107 file bytes a
+    packet): fewer packets up than 80-byte frames would need for the file alone."""
+    src = data_file(tmp_path, "up.bin", 20_000, seed=7)
+    served = tmp_path / "served"
+    served.mkdir()
+    down = data_file(served, "down.bin", 12_000, seed=8)
+    a, b = free_port(), free_port()
+    air = relay(start, a, b, "--profile", "psdk", "--loss", "0.1", "--seed", "4", "--stats-interval", "0")
+    recv = receiver(start, tmp_path, f"udpin:{LOCAL}:{b}", "--profile", "psdk", "--serve", str(served))
+    proc, r = send(str(src), "--to", f"udpout:{LOCAL}:{a}", "--profile", "psdk", "--no-compress")
+    assert proc.returncode == 0, proc.stderr
+    assert r["ok"] and r["capacity_Bps"] == pytest.approx(3000)
+    assert (tmp_path / "inbox" / "up.bin").read_bytes() == src.read_bytes()
+    air.signal(signal.SIGINT)
+    assert air.wait() == 0
+    m = re.search(r"up (\d+) in, (\d+) out, (\d+) lost", air.stderr.strip().splitlines()[-1])
+    assert m and int(m.group(1)) < 20_000 / 80, air.stderr  # 128-byte packets carried it
+    a2 = free_port()
+    relay(start, a2, b, "--profile", "psdk", "--loss", "0.1", "--seed", "5", "--stats-interval", "0")
+    got = tmp_path / "got"
+    proc, r = send("down.bin", "--from", f"udpout:{LOCAL}:{a2}", "--dir", str(got), "--profile", "psdk",
+                   "--no-compress")
+    assert proc.returncode == 0, proc.stderr
+    assert (got / "down.bin").read_bytes() == down.read_bytes()
+    recv.signal(signal.SIGINT)
+    assert recv.wait() == 0
+    assert "longer than" not in recv.stderr + proc.stderr  # no end refused a packet as oversize

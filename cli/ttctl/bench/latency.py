@@ -94,9 +94,9 @@ def model_commands(profile: Profile, distance: float, phase: str, count: int, se
     up, down = channels(profile, distance, Case("up", 0.0, "random"), seed)
     b = shipped.bindings()
     with tempfile.TemporaryDirectory(prefix="ttctl-bench-") as d:
-        tablet = Endpoint(b, *TABLET, rate_Bps=pace(up), rng=random.Random(seed),
+        tablet = Endpoint(b, *TABLET, mtu=profile.mtu, rate_Bps=pace(up), rng=random.Random(seed),
                           receive_dir=ReceiveDir(d) if phase == "download" else None)
-        onboard = Endpoint(b, *ONBOARD, rate_Bps=pace(down), rng=random.Random(seed + 1),
+        onboard = Endpoint(b, *ONBOARD, mtu=profile.mtu, rate_Bps=pace(down), rng=random.Random(seed + 1),
                            receive_dir=ReceiveDir(d) if phase != "download" else None)
         sim = Simulation(tablet, onboard, up, down)
         senders: list[Any] = []
@@ -188,6 +188,7 @@ class LiveOptions:
     timeout: float
     seed: int | None = None
     bindings: Any = None  # the link's dialect (None: ttctl's shipped ttapi)
+    mtu: int = 100  # the link's packet size (the profile's)
 
 
 class Unreachable(Exception):
@@ -209,7 +210,7 @@ async def _live(o: LiveOptions, progress: Callable[[str], None]) -> tuple[list[P
     wake = asyncio.Event()
     with tempfile.TemporaryDirectory(prefix="ttctl-bench-") as d:
         store = ReceiveDir(d)
-        transport = make_transport(spec, log=lambda text: None)
+        transport = make_transport(spec, log=lambda text: None, mtu=o.mtu if spec.udp else None)
         ep = Endpoint(b, *TABLET, mtu=transport.mtu, rate_Bps=o.pace_Bps, receive_dir=store, unsolicited=False,
                       on_event=lambda what, obj: wake.set())
         runner = Runner(ep, transport, quiet=o.quiet, hello=hello(TABLET[0], spec, b))

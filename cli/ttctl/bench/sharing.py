@@ -88,10 +88,12 @@ def run_senders(profile: Profile, distance: float, n: int, loss: float | None, l
     rate = up.capacity_Bps()
     with tempfile.TemporaryDirectory(prefix="ttctl-bench-") as d:
         store = ReceiveDir(d)
-        onboard = Endpoint(b, *ONBOARD, rate_Bps=down.capacity_Bps(), rng=random.Random(seed + 1), receive_dir=store,
+        onboard = Endpoint(b, *ONBOARD, mtu=prof.mtu, rate_Bps=down.capacity_Bps(), rng=random.Random(seed + 1),
+                           receive_dir=store,
                            inbound_Bps=rate if grants else None)
-        ends = [Endpoint(b, *TABLET, rate_Bps=rate, rng=random.Random(seed * 100 + i)) for i in range(n)]
-        app = Endpoint(b, *TABLET, rate_Bps=rate, rng=random.Random(seed * 100 + n), accept_commands=False)
+        ends = [Endpoint(b, *TABLET, mtu=prof.mtu, rate_Bps=rate, rng=random.Random(seed * 100 + i)) for i in range(n)]
+        app = Endpoint(b, *TABLET, mtu=prof.mtu, rate_Bps=rate, rng=random.Random(seed * 100 + n),
+                       accept_commands=False)
         sim = Simulation(Processes([*ends, app]), onboard, up, down)
         rng = random.Random(seed)
         idle: list[Any] = []

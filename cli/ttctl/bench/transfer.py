@@ -11,9 +11,9 @@ rows (not with --quick): five senders at once to one receiver, see sharing.py.
 
 "ttctl-signed" is ttctl with MAVLink 2 signing on both ends (as `send-file --key` and `recv-file
 --key`): every frame carries a 13-byte signature (MAVLink 2 specification, "Message Signing"), so
-a TT_FILE_DATA frame is 113 bytes and spans two packets (80 file bytes per 113 bytes of air, lost
-when either packet is), a TT_FILE_DATA_WIDE 280 bytes. Its rows are judged against that ceiling
-(signed_ceiling), not the unsigned one.
+the one-packet frame is a TT_FILE_DATA_FIT of 66 file bytes in a 100-byte packet (94 in 128), a
+TT_FILE_DATA_WIDE 280 bytes. Its rows are judged against that ceiling (signed_ceiling), not the
+unsigned one. Every ceiling follows the profile's packet size (proto/transfer.py's Geometry).
 """
 
 from __future__ import annotations
@@ -30,9 +30,8 @@ from typing import Any
 from ..link.model import Channel, Impairments, Profile
 from ..link.sim import Simulation
 from ..proto.endpoint import Endpoint
-from ..proto.scheduler import SIGNATURE_OVERHEAD
 from ..proto.storage import BytesSource, ReceiveDir
-from ..proto.transfer import NARROW, NARROW_FRAME, WIDE, WIDE_FRAME, TransferConfig
+from ..proto.transfer import WIDE, Geometry, TransferConfig
 from . import shipped
 from .latency import bound_s as latency_bound_s  # one rule with `ttctl bench latency`
 from .latency import percentile
@@ -106,10 +105,11 @@ def run_ttctl(profile: Profile, distance: float, case: Case, data: bytes, seed: 
         store = ReceiveDir(d)
         cfg = TransferConfig()
         b = shipped.bindings()
-        tablet = Endpoint(b, *TABLET, rate_Bps=pace(up), config=cfg, rng=random.Random(seed),
+        tablet = Endpoint(b, *TABLET, mtu=profile.mtu, rate_Bps=pace(up), config=cfg, rng=random.Random(seed),
                           receive_dir=store if case.direction == "down" else None, on_event=on_event,
                           signing=b.signing(BENCH_KEY) if signed else None)
-        onboard = Endpoint(b, *ONBOARD, rate_Bps=pace(down), config=cfg, rng=random.Random(seed + 1),
+        onboard = Endpoint(b, *ONBOARD, mtu=profile.mtu, rate_Bps=pace(down), config=cfg,
+                           rng=random.Random(seed + 1),
                            receive_dir=store if case.direction == "up" else None, on_event=on_event,
                            signing=b.signing(BENCH_KEY) if signed else None)
         sender, target = (tablet, ONBOARD) if case.direction == "up" else (onboard, TABLET)
@@ -131,32 +131,35 @@ def run_ttctl_signed(profile: Profile, distance: float, case: Case, data: bytes,
     return run_ttctl(profile, distance, case, data, seed, limit, signed=True)
 
 
-def signed_ceiling(p: float, loss_model: str = "random", burst_mean: float = 3.0) -> float:
+def signed_ceiling(p: float, mtu: int = 100) -> float:
     """What signed frames allow at packet loss p, with the frames the sender uses there (as the
-    unsigned ceiling, 0.80 (1 - p), is one-packet frames'): under loss TT_FILE_DATA, signed 113
-    bytes, a full packet and 13 bytes in the next: 80 file bytes per 113 of air, delivered when
-    both packets are. The second starts a slot after the first, so given the first arrived it is
-    lost with p (1 - lam), lam the Gilbert-Elliott chain's memory per slot (0: random loss). On a
-    clean link TT_FILE_DATA_WIDE, signed 280 bytes: 247 per 280."""
+    unsigned ceiling is one-packet frames'): under loss a signed TT_FILE_DATA_FIT that fills one
+    packet, 66 file bytes per 100 of air (94 per 128); on a clean link TT_FILE_DATA_WIDE, signed
+    280 bytes: 247 per 280."""
+    g = Geometry(mtu, signed=True)
     if p <= 0.0:
-        return WIDE / (WIDE_FRAME + SIGNATURE_OVERHEAD)
-    q = 1.0 - p
-    lam = max(0.0, 1.0 - 1.0 / (burst_mean * q)) if loss_model == "burst" else 0.0
-    return NARROW / (NARROW_FRAME + SIGNATURE_OVERHEAD) * q * (1.0 - p * (1.0 - lam))
+        return WIDE / g.wide_frame
+    return g.narrow_cap / g.narrow_frame * (1.0 - p)
 
 
-def frame_ceiling(protocol: str, case: Case, p: float, burst_mean: float = 3.0) -> float:
-    """ttctl's ceiling at realised loss p: one-packet frames' 0.80 (1 - p), or signed frames'."""
+def unsigned_ceiling(p: float, mtu: int = 100) -> float:
+    """One-packet frames' ceiling at packet loss p: 80/100 (1 - p) on DJI's DTT (TT_FILE_DATA),
+    107/128 (1 - p) on the Payload SDK channel (TT_FILE_DATA_FIT)."""
+    g = Geometry(mtu)
+    return g.narrow_cap / g.narrow_frame * (1.0 - p)
+
+
+def frame_ceiling(protocol: str, case: Case, p: float, mtu: int = 100) -> float:
+    """ttctl's ceiling at realised loss p: one-packet frames', or signed frames'."""
     if protocol == "ttctl-signed":
-        return signed_ceiling(p, case.loss_model, burst_mean)
-    return NARROW / NARROW_FRAME * (1 - p)
+        return signed_ceiling(p, mtu)
+    return unsigned_ceiling(p, mtu)
 
 
 def run_case(protocol: str, profile: Profile, distance: float, case: Case, file_bytes: int,
              seeds: list[int]) -> Row:
     runner = PROTOCOLS[protocol]
     capacity = profile.capacity_Bps(case.direction, distance)
-    burst_mean = profile.direction(case.direction).burst_mean
     times, oks, lost, ceiling = [], [], [], []
     for seed in seeds:
         data = _data(file_bytes, seed)
@@ -164,7 +167,7 @@ def run_case(protocol: str, profile: Profile, distance: float, case: Case, file_
         times.append(t)
         oks.append(ok)
         lost.append(p)
-        best = frame_ceiling(protocol, case, p, burst_mean)
+        best = frame_ceiling(protocol, case, p, profile.mtu)
         ceiling.append(file_bytes / t / capacity / best if t > 0 and p < 1 else 0.0)
     t = statistics.median(times)
     goodput = file_bytes / t if t > 0 else 0.0
@@ -173,7 +176,7 @@ def run_case(protocol: str, profile: Profile, distance: float, case: Case, file_
     return Row(protocol, case.direction, case.loss, case.loss_model, file_bytes, round(t, 3), round(goodput, 1),
                round(capacity, 1), round(goodput / capacity, 4), all(oks), len(seeds), round(p_mid, 4),
                round(statistics.median(ceiling), 4) if judged else None,
-               round(frame_ceiling(protocol, case, p_mid, burst_mean), 4) if judged else None)
+               round(frame_ceiling(protocol, case, p_mid, profile.mtu), 4) if judged else None)
 
 
 def _data(n: int, seed: int) -> bytes:
@@ -243,7 +246,7 @@ def run(profile: Profile, distance: float, file_bytes: int, seeds: int, protocol
                 "p95_ms": round(1000 * percentile(idle, 0.95), 1), "count": len(idle)},
                {"case": "during_upload", "p50_ms": round(1000 * percentile(busy, 0.5), 1),
                 "p95_ms": round(1000 * percentile(busy, 0.95), 1), "count": len(busy)}]
-    bounds = checks(rows, latency, latency_bound_s(profile, distance))
+    bounds = checks(rows, latency, latency_bound_s(profile, distance), profile.mtu)
     from . import transfer_text  # deflate's rows: text files, 10 % loss (not in --quick)
 
     text = [] if quick else transfer_text.rows(profile, distance, seed_list[:3])
@@ -254,9 +257,8 @@ def run(profile: Profile, distance: float, file_bytes: int, seeds: int, protocol
     bounds += sharing.checks(shared)
     report = {"profile": profile.name, "distance_m": distance, "extrapolated": extrapolated,
               "file_bytes": file_bytes, "seeds": seed_list,
-              "frame_efficiency": {"narrow": NARROW / NARROW_FRAME, "wide": WIDE / WIDE_FRAME,
-                                   "narrow_signed": round(NARROW / (NARROW_FRAME + SIGNATURE_OVERHEAD), 4),
-                                   "wide_signed": round(WIDE / (WIDE_FRAME + SIGNATURE_OVERHEAD), 4)},
+              "mtu": profile.mtu,
+              "frame_efficiency": _frame_efficiency(profile.mtu),
               "rows": [asdict(r) for r in rows], "latency": latency, "compressed": transfer_text.as_dicts(text),
               "sharing": sharing.as_dicts(shared), "checks": bounds}
     if plot:
@@ -270,19 +272,32 @@ def run(profile: Profile, distance: float, file_bytes: int, seeds: int, protocol
     return 0 if all(r.ok for r in rows) and all(c["ok"] for c in bounds) else 1
 
 
-def checks(rows: list[Row], latency: list[dict[str, Any]], bound_s: float | None = None) -> list[dict[str, Any]]:
+def _frame_efficiency(mtu: int) -> dict[str, float]:
+    g, s = Geometry(mtu), Geometry(mtu, signed=True)
+    return {"narrow": round(g.narrow_cap / g.narrow_frame, 4), "wide": round(WIDE / g.wide_frame, 4),
+            "narrow_signed": round(s.narrow_cap / s.narrow_frame, 4), "wide_signed": round(WIDE / s.wide_frame, 4)}
+
+
+def checks(rows: list[Row], latency: list[dict[str, Any]], bound_s: float | None = None,
+           mtu: int = 100) -> list[dict[str, Any]]:
     """The issue's floors, evaluated on this run."""
+    g = Geometry(mtu)
     out: list[dict[str, Any]] = []
     ours = [r for r in rows if r.protocol == "ttctl"]
     for r in ours:
         need = 0.88 if r.loss == 0 else 0.80 * (1 - r.loss)
         out.append({"check": f"efficiency {r.direction} {r.loss:.0%} {r.loss_model}", "value": r.efficiency,
                     "floor": round(need, 4), "ok": r.ok and r.efficiency >= need})
-        best = max(NARROW / NARROW_FRAME * (1 - r.loss), WIDE / WIDE_FRAME * _wide_survival(r.loss)) / (1 - r.loss) \
-            if r.loss < 1 else 1.0
+        best = max(g.narrow_cap / g.narrow_frame * (1 - r.loss), WIDE / g.wide_frame * g.survival_wide(r.loss)) \
+            / (1 - r.loss) if r.loss < 1 else 1.0
         limit = 1.15 * r.file_bytes / (r.capacity_Bps * (1 - r.loss) * best)
         out.append({"check": f"time {r.direction} {r.loss:.0%} {r.loss_model}", "value": r.seconds,
                     "ceiling": round(limit, 2), "ok": r.seconds <= limit})
+    for r in ours:
+        if r.of_frame_ceiling is not None:
+            out.append({"check": f"{r.direction} {r.loss:.0%} {r.loss_model} of its ceiling",
+                        "value": r.of_frame_ceiling, "floor": SIGNED_FLOOR,
+                        "ok": r.ok and r.of_frame_ceiling >= SIGNED_FLOOR})
     for r in rows:
         if r.protocol == "ttctl-signed" and r.of_frame_ceiling is not None:
             out.append({"check": f"signed {r.direction} {r.loss:.0%} {r.loss_model} of its ceiling",
@@ -307,12 +322,6 @@ def checks(rows: list[Row], latency: list[dict[str, Any]], bound_s: float | None
         out.append({"check": "command p95 during upload", "value": latency[1]["p95_ms"],
                     "ceiling": round(budget, 1), "ok": latency[1]["p95_ms"] <= budget})
     return out
-
-
-def _wide_survival(p: float) -> float:
-    from ..proto.transfer import frame_survival_wide
-
-    return frame_survival_wide(p)
 
 
 def _progress(quiet: bool, total: int) -> Callable[[], None]:
@@ -366,10 +375,13 @@ def _print_tables(report: dict[str, Any]) -> None:
         from .sharing import print_table as print_sharing
 
         print_sharing(report["sharing"])
-    titles = {"ttctl": "ttctl against one-packet frames' ceiling, 0.80 x (1 - the loss each seed realised)",
-              "ttctl-signed": "signed ttctl against signed frames' ceiling: 80 file bytes in 113 under loss "
-                              "(two packets, both must arrive), 247 in 280 (wide) on a clean link, at the loss "
-                              "each seed realised"}
+    mtu = report.get("mtu", 100)
+    g, sg = Geometry(mtu), Geometry(mtu, signed=True)
+    titles = {"ttctl": f"ttctl against one-packet frames' ceiling, {g.narrow_cap}/{g.narrow_frame} x (1 - the loss "
+                       f"each seed realised)",
+              "ttctl-signed": f"signed ttctl against signed frames' ceiling: {sg.narrow_cap} file bytes in "
+                              f"{sg.narrow_frame} (one packet) under loss, {WIDE} in {sg.wide_frame} (wide) on a clean "
+                              f"link, at the loss each seed realised"}
     for protocol, title in titles.items():
         rt = Table(title=title)
         for col in ("dir", "loss", "model", "realised loss", "efficiency", "ceiling", "of the ceiling"):

@@ -65,9 +65,10 @@ def one(profile: Profile, distance: float, direction: str, loss: float, model: s
         store = ReceiveDir(d)
         b = shipped.bindings()
         cfg = TransferConfig()
-        tablet = Endpoint(b, *TABLET, rate_Bps=pace(up), config=cfg, rng=random.Random(seed),
+        tablet = Endpoint(b, *TABLET, mtu=profile.mtu, rate_Bps=pace(up), config=cfg, rng=random.Random(seed),
                           receive_dir=store if direction == "down" else None, on_event=on_event)
-        onboard = Endpoint(b, *ONBOARD, rate_Bps=pace(down), config=cfg, rng=random.Random(seed + 1),
+        onboard = Endpoint(b, *ONBOARD, mtu=profile.mtu, rate_Bps=pace(down), config=cfg,
+                           rng=random.Random(seed + 1),
                            receive_dir=store if direction == "up" else None, on_event=on_event)
         sender, target = (tablet, ONBOARD) if direction == "up" else (onboard, TABLET)
         s = sender.send_file(name, target, source=BytesSource(data, name), compress=compress)

@@ -110,7 +110,7 @@ def _live(to: str, prof: Profile, distance: float, count: int, interval: float, 
         except Refused as e:
             raise Fail(f"--fetch {fetch!r}: {e.reason}") from None
     link = link_choice(None, prof.name, distance, TABLET[0], profile_file)
-    o = lat.LiveOptions(to, count, interval, size, link.pace_Bps, link.quiet, fetch, timeout, seed, b)
+    o = lat.LiveOptions(to, count, interval, size, link.pace_Bps, link.quiet, fetch, timeout, seed, b, link.mtu)
     tty = sys.stderr.isatty()
 
     def progress(text: str) -> None:

@@ -27,6 +27,7 @@ class LinkChoice:
     send_capacity: float | None
     recv_capacity: float | None
     quiet: float | None  # silence after which a half-received frame is given up
+    mtu: int = 100  # the link's packet size: the profile's (100 for DJI's DTT, 128 for the Payload SDK channel)
 
     def describe(self) -> str:
         return f"paced at {self.pace_Bps:.0f} B/s" if self.pace_Bps else "unpaced"
@@ -58,7 +59,7 @@ def link_choice(rate: float | None, profile: str | None, distance: float, sysid:
         send_cap = rate
         recv_cap = recv_cap or rate
     quiet = 3 * mtu / recv_cap if recv_cap else None
-    return LinkChoice(send_cap, send_cap, recv_cap, quiet)
+    return LinkChoice(send_cap, send_cap, recv_cap, quiet, mtu)
 
 
 def parse_endpoint(text: str, udp: str, option: str = "") -> Any:

@@ -95,7 +95,7 @@ def emulate_onboard(o: OnboardOptions) -> int:
         raise Fail(f"--serve {o.serve} is not a directory")
     b = load_bindings(o.dialect, o.include_dirs)  # before the plugins: they import its package
     cfg = OnboardConfig(sysid=o.sysid, dtt=dtt, gcs=gcs, inbox=o.inbox, serve=o.serve, home=_home(o.home),
-                        speed=o.speed, rate_Bps=link.pace_Bps, inbound_Bps=link.recv_capacity,
+                        speed=o.speed, rate_Bps=link.pace_Bps, mtu=link.mtu, inbound_Bps=link.recv_capacity,
                         telemetry_hz=o.telemetry_hz, orbit_hz=o.orbit_hz,
                         signing=load_signing(o.key, o.accept_unsigned, b),
                         gcs_signing=_gcs_signing(o.gcs_key, b), dtt_gcs_share=o.dtt_gcs_share)

@@ -163,6 +163,7 @@ class _Link:
         # it holds its two packets, 0.3 s on the M100 uplink); --rate is taken as given.
         self.pace = choice.pace_Bps * HEADROOM if choice.pace_Bps and o.rate is None else choice.pace_Bps
         self.quiet = choice.quiet
+        self.mtu = choice.mtu
         self.stream = PoseStream(self.b, max_hz=o.stream_hz)
         self.loop = asyncio.new_event_loop()
         self.ready = threading.Event()
@@ -190,7 +191,7 @@ class _Link:
         from ..proto.endpoint import Endpoint
 
         try:
-            transport = make_transport(self.spec)
+            transport = make_transport(self.spec, mtu=self.mtu if self.spec.udp else None)
             ep = Endpoint(self.b, *TABLET, mtu=transport.mtu, rate_Bps=self.pace, accept_commands=False,
                           unsolicited=False, on_message=self._on_message)
             self.ep = ep

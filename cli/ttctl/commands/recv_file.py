@@ -163,7 +163,8 @@ async def _recv(o: RecvOptions, b: Any, spec: Any, link: LinkChoice, store: Any,
                 reason=t.reason)
         wake.set()
 
-    transport = make_transport(spec, log=lambda text: err(f"{spec.kind}: {text}"))
+    transport = make_transport(spec, log=lambda text: err(f"{spec.kind}: {text}"),
+                               mtu=link.mtu if spec.udp else None)
     ep = Endpoint(b, o.sysid, o.compid, mtu=transport.mtu, rate_Bps=link.pace_Bps, receive_dir=store,
                   inbound_Bps=link.recv_capacity,
                   serve_dir=str(o.serve) if o.serve is not None else None, on_event=on_event, signing=signing)

@@ -170,7 +170,7 @@ async def _open_end(o: SendOptions, side: _End, spec: Any, link: LinkChoice, bar
         elif given is not None:
             given(what, obj)
 
-    transport = make_transport(spec, log=bar.log)
+    transport = make_transport(spec, log=bar.log, mtu=link.mtu if spec.udp else None)
     ep = Endpoint(side.bindings, o.sysid, o.compid, mtu=transport.mtu, rate_Bps=link.pace_Bps,
                   config=TransferConfig(give_up_after=o.timeout), signing=side.signing, on_event=on_event, **endpoint)
     runner = Runner(ep, transport, quiet=link.quiet)

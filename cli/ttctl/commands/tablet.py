@@ -169,7 +169,7 @@ async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any, plugi
     from ..ends.plugins import PluginError
 
     try:
-        s = TabletSession(b, spec, (o.target_sysid, ONBOARD[1]), rate_Bps=link.pace_Bps, inbox=o.dir,
+        s = TabletSession(b, spec, (o.target_sysid, ONBOARD[1]), rate_Bps=link.pace_Bps, mtu=link.mtu, inbox=o.dir,
                           on_event=event, log=err, signing=load_signing(o.key, o.accept_unsigned, b),
                           plugins=plugins, gcs=gcs, gcs_share=o.gcs_share)
     except PluginError as e:

@@ -53,6 +53,7 @@ class DirectionProfile:
     loss: list[list[float]]
     latency_s: float = 0.04
     queue_packets: int = 2
+    queue_bytes: int = 0  # also a limit in bytes on what waits (the Payload SDK's 512-byte buffer); 0: none
     pacing_bytes: int = 0
     pacing_interval_s: float = 0.0
     advertised_Bps: float | None = None
@@ -77,6 +78,8 @@ class DirectionProfile:
             raise ProfileError(f"{where}.latency_s must be a number of seconds >= 0")
         if isinstance(self.queue_packets, bool) or not isinstance(self.queue_packets, int) or self.queue_packets < 1:
             raise ProfileError(f"{where}.queue_packets must be a whole number >= 1")
+        if isinstance(self.queue_bytes, bool) or not isinstance(self.queue_bytes, int) or self.queue_bytes < 0:
+            raise ProfileError(f"{where}.queue_bytes must be a whole number >= 0 (0: no byte limit)")
         if isinstance(self.pacing_bytes, bool) or not isinstance(self.pacing_bytes, int) or self.pacing_bytes < 0:
             raise ProfileError(f"{where}.pacing_bytes must be a whole number >= 0")
         if not (_number(self.pacing_interval_s) and self.pacing_interval_s >= 0):
@@ -187,8 +190,9 @@ def load_profile(name: str | None, path: str | None = None) -> Profile:
             dirs[d] = DirectionProfile(**raw[d])
             dirs[d].check(f"{where}: {name}.{d}")
         mtu = raw.get("mtu", 100)
-        if isinstance(mtu, bool) or not isinstance(mtu, int) or not 1 <= mtu <= 100:
-            raise ProfileError(f"{where}: {name}.mtu must be a whole number of bytes in 1..100 (DTT's packet limit)")
+        if isinstance(mtu, bool) or not isinstance(mtu, int) or not 22 <= mtu <= 255:
+            raise ProfileError(f"{where}: {name}.mtu must be a whole number of bytes in 22..255 (100 on DJI's DTT, "
+                               f"128 on the Payload SDK channel; 22 is the least a file-data frame needs)")
         return Profile(name, str(raw.get("description", "")), mtu, dirs["up"], dirs["down"])
     except TypeError as e:
         field_name = str(e).rsplit(" ", 1)[-1].strip("'")
@@ -259,6 +263,7 @@ class Channel:
         self.stats = ChannelStats()
         self._busy_until = 0.0
         self._starts: list[float] = []  # service start times of packets waiting in the buffer
+        self._sizes: list[int] = []  # and their sizes (for a buffer limited in bytes)
         self._bad = False  # Gilbert-Elliott state
         self._state_at: float | None = None  # when it was last drawn (None: never; the chain is stationary)
         self.loss_p = self.imp.loss if self.imp.loss is not None else self.dir.loss_at(distance_m)
@@ -328,13 +333,17 @@ class Channel:
         if len(packet) > self.profile.mtu:
             st.refused += 1
             return []
-        self._starts = [s for s in self._starts if s > t]
-        if len(self._starts) >= self.dir.queue_packets:
+        keep = [i for i, s in enumerate(self._starts) if s > t]
+        self._starts = [self._starts[i] for i in keep]
+        self._sizes = [self._sizes[i] for i in keep]
+        start = max(t, self._busy_until)
+        if start > t and (len(self._starts) >= self.dir.queue_packets or (
+                self.dir.queue_bytes and sum(self._sizes) + len(packet) > self.dir.queue_bytes)):
             st.overflow += 1  # the SDK buffer is full: silently dropped
             return []
-        start = max(t, self._busy_until)
         if start > t:
             self._starts.append(start)
+            self._sizes.append(len(packet))
         end = start + self.service_time(len(packet))
         self._busy_until = end
         if self._lost(start) or self._in_outage(end):

@@ -29,7 +29,18 @@ from .receiver import FileReceiver
 from .scheduler import BULK, CONTROL, TELEMETRY, Scheduler
 from .sender import FileSender
 from .storage import FileSource, ReceiveDir, StorageError, kind_of
-from .transfer import NARROW, REQUEST_PART, RESULT_TEXT, WIDE, TransferConfig, reason_fit, reason_text
+from .transfer import (
+    FIT_MAX,
+    FIT_OVERHEAD,
+    NARROW,
+    REQUEST_PART,
+    RESULT_TEXT,
+    WIDE,
+    Geometry,
+    TransferConfig,
+    reason_fit,
+    reason_text,
+)
 
 TARGETED = "target_system"
 STATUS_BYTES = 60  # typical TT_FILE_STATUS frame
@@ -99,10 +110,13 @@ class Endpoint:
         self._rxs: OrderedDict[Hashable, PacketReceiver] = OrderedDict()
         self._streams: OrderedDict[Hashable, Any] = OrderedDict()  # byte-stream links (TCP): parsers
         self._last_rx: dict[Hashable, float] = {}
+        self.geometry = Geometry(mtu, signing is not None)  # ValueError for a packet too small for file data
         self.scheduler = Scheduler(mtu, rate_Bps, sign=bindings.sign(signing) if signing is not None else None)
         self.receiver = (FileReceiver(bindings, receive_dir, sysid, compid, self.cfg, on_event=self._file_event,
                                       unsolicited=unsolicited, inflate=inflate, inbound_Bps=inbound_Bps)
                          if receive_dir is not None else None)
+        if self.receiver is not None:
+            self.receiver.packet = mtu
         if self.receiver is not None and rate_Bps:
             # statuses go back over our own link: on a slow one, fewer of them
             self.receiver.cfg = TransferConfig(**{
@@ -228,6 +242,7 @@ class Endpoint:
         sender.owns_source = source is None
         rate = self.scheduler.pacer.rate
         sender.byte_time = 1.0 / rate if rate else 0.0
+        sender.geometry = self.geometry
         self.senders[sender.id] = sender
         self.scheduler.add_source(self._puller(sender))
         return sender
@@ -380,8 +395,13 @@ class Endpoint:
         self.peers[src] = now
         self.heard[src] = self.heard.get(src, 0) + 1
         b = self.b
-        if isinstance(msg, (b.TtFileData, b.TtFileDataWide)):
-            if self.receiver is not None:
+        if isinstance(msg, (b.TtFileData, b.TtFileDataWide, b.TtFileDataFit)):
+            if self.receiver is None:
+                return
+            if isinstance(msg, b.TtFileDataFit):
+                if 1 <= msg.count <= FIT_MAX:  # else malformed: ignored
+                    self.receiver.on_data(now, msg, msg.count, FIT_OVERHEAD + msg.count)
+            else:
                 self.receiver.on_data(now, msg, WIDE if isinstance(msg, b.TtFileDataWide) else NARROW)
             return
         if self.divert is not None and self.divert(now, msg):

@@ -139,6 +139,7 @@ class FileReceiver:
         self.evicted = 0  # offers forgotten before their metadata was whole, to make room in a flood
         self.inbound_Bps = inbound_Bps  # what this end can take from its link: shared out by grants
         self.grant = 0  # each sharing transfer's rate grant, B/s (0: none)
+        self.packet = 100  # the link's packet size, bytes (set by the endpoint): one packet's time at a grant
         self.sharing: frozenset[Key] = frozenset()  # the transfers the link is shared among
         self.load = InboundLoad()  # what else comes in (the endpoint counts packets, on_data the data)
         self._grant_field = "rate_grant" in getattr(bindings.TtFileStatus, "FIELDS", ("rate_grant",))
@@ -300,7 +301,9 @@ class FileReceiver:
         return None
 
     # -- data -----------------------------------------------------------------------------------
-    def on_data(self, now: float, msg: Any, cap: int) -> None:
+    def on_data(self, now: float, msg: Any, cap: int, frame_len: int | None = None) -> None:
+        """A data frame carrying min(cap, size - offset) file bytes; `frame_len`: its length
+        unsigned (TT_FILE_DATA's 100, TT_FILE_DATA_WIDE's 267 if not given)."""
         key = (msg.get_srcSystem(), msg.get_srcComponent(), msg.transfer_id)
         t = self.transfers.get(key)
         if t is None:
@@ -309,7 +312,7 @@ class FileReceiver:
             return
         t.last_activity = now
         t.frames += 1
-        self.load.data(now, NARROW_FRAME if cap == NARROW else WIDE_FRAME)
+        self.load.data(now, frame_len if frame_len is not None else NARROW_FRAME if cap == NARROW else WIDE_FRAME)
         if t.partial is None or t.group is None:  # not accepted (yet), finished or refused
             if t.decided and now >= t.last_status + self.cfg.status_min_interval:
                 self._status_now(t, now)
@@ -362,7 +365,7 @@ class FileReceiver:
         under a grant three frames' time at it (a sender granted a frame every 1.5 s is not
         quiet; with no status it would poll, and its polls land on the others' frames)."""
         if self.grant and t.key in self.sharing:
-            return max(self.cfg.status_interval, 3 * 100.0 / self.grant)
+            return max(self.cfg.status_interval, 3.0 * self.packet / self.grant)
         return self.cfg.status_interval
 
     def _min_interval(self, t: Incoming) -> float:
@@ -478,7 +481,7 @@ class FileReceiver:
     def _share(self, now: float) -> None:
         """Who shares the link now (receiving, heard from lately); on a change, the new grant
         is told to every one of them at once."""
-        window = max(ACTIVE_WINDOW, 4.0 * 100 / self.grant) if self.grant else ACTIVE_WINDOW
+        window = max(ACTIVE_WINDOW, 4.0 * self.packet / self.grant) if self.grant else ACTIVE_WINDOW
         sharing = frozenset(k for k, t in self.transfers.items()
                             if t.partial is not None and now - t.last_activity < window)
         grant = share(self.inbound_Bps, len(sharing), self.load.other_Bps(now))
@@ -489,7 +492,7 @@ class FileReceiver:
         if grant == self.grant:
             return
         self.grant = grant
-        step = 100.0 / (grant * len(sharing)) if grant else 0.0
+        step = float(self.packet) / (grant * len(sharing)) if grant else 0.0
         for i, k in enumerate(sorted(sharing)):
             t = self.transfers[k]
             soon = max(now + i * step, t.last_status + self._min_interval(t))

@@ -27,18 +27,14 @@ from .names import Refused, check_name, encoded
 from .ranges import RangeSet
 from .sharing import GrantPacer
 from .transfer import (
+    DTT,
     META_PART,
-    NARROW,
-    NARROW_FRAME,
     RESULT_TEXT,
     WIDE,
-    WIDE_FRAME,
     TransferConfig,
     TransferResult,
     TransferStats,
-    frame_survival_wide,
     meta_check,
-    packet_loss_from_wide,
     reason_text,
     result_name,
     wilson_upper,
@@ -83,6 +79,7 @@ class FileSender:
         self.rtt = 0.5
         self._rtt_sampled = False
         self.byte_time = 0.0  # seconds per byte on the link, if known (set by the endpoint)
+        self.geometry = DTT  # the link's packet size and signing: the data frames' sizes (set by the endpoint)
         self.pacer = GrantPacer()  # the receiver's rate grant for our data frames
         self._begin(now)
 
@@ -216,7 +213,7 @@ class FileSender:
         three status intervals, an RTT more, and under a grant three frames' time at it more
         (the receiver reports on the frames it gets)."""
         wait = max(3 * self.cfg.status_interval, 2 * self.rtt + self.cfg.status_interval)
-        return wait + (3 * NARROW_FRAME / self.pacer.grant if self.pacer.grant else 0.0)
+        return wait + (3 * self.geometry.mtu / self.pacer.grant if self.pacer.grant else 0.0)
 
     def _time_out(self, now: float) -> None:
         who = f"{self.target[0]}/{self.target[1]}"
@@ -268,8 +265,9 @@ class FileSender:
         p = w if self.mode == "wide" and w is not None else (n if n is not None else w)
         if p is None:
             return "narrow"
-        eff_narrow = NARROW / NARROW_FRAME * (1 - p)
-        eff_wide = WIDE / WIDE_FRAME * frame_survival_wide(p)
+        g = self.geometry
+        eff_narrow = g.narrow_cap / g.narrow_frame * (1 - p)
+        eff_wide = WIDE / g.wide_frame * g.survival_wide(p)
         better = "wide" if eff_wide > eff_narrow else "narrow"
         if better != self.mode and abs(eff_wide - eff_narrow) < 0.02:
             return self.mode  # hysteresis
@@ -278,11 +276,11 @@ class FileSender:
     def next_data(self, now: float, space: int) -> Any:
         if self.state != "sending" or not self.pacer.ready(now):
             return None
-        mode = self.mode
-        frame_len = WIDE_FRAME if mode == "wide" else NARROW_FRAME
+        mode, g = self.mode, self.geometry
+        frame_len = g.wide_frame if mode == "wide" else g.narrow_frame
         if mode == "narrow" and space < frame_len:
             return None  # a narrow frame takes a packet of its own: wait for the next one
-        cap = WIDE if mode == "wide" else NARROW
+        cap = WIDE if mode == "wide" else g.narrow_cap
         retx = self.retx.first()
         if retx is not None:
             # a data frame always carries min(cap, size - offset) bytes (the receiver counts on
@@ -306,7 +304,7 @@ class FileSender:
         self._sends[offset] = (now, self._sends.get(offset, (0.0, 0))[1] + 1)
         self._since[offset] = self._since.get(offset, 0) + 1
         # when its last byte can have left: frames longer than a packet take several packets
-        left = now + (frame_len + NARROW_FRAME) * self.byte_time
+        left = now + (frame_len + g.mtu) * self.byte_time
         self._record(left, offset, offset + length)
         if retx is None:
             self._unclassified.append((offset, offset + length, left, mode))
@@ -320,7 +318,10 @@ class FileSender:
             msg: Any = self.b.TtFileDataWide(transfer_id=self.id, offset=offset, data=data)
         else:
             self.stats.narrow_frames += 1
-            msg = self.b.TtFileData(transfer_id=self.id, offset=offset, data=data)
+            if g.narrow_fit:
+                msg = self.b.TtFileDataFit(transfer_id=self.id, offset=offset, count=length, data=data)
+            else:
+                msg = self.b.TtFileData(transfer_id=self.id, offset=offset, data=data)
         if self.cfg.frame_mode == "auto" and self.stats.narrow_frames >= self.cfg.probe_frames:
             self.mode = self._choose_mode()
         if not self._wants_data(now) and self._probe_due is None:
@@ -497,7 +498,7 @@ class FileSender:
         horizon = now - self.rtt - 0.05
         echo = self._sends.get(msg.last_offset)
         if echo is not None and msg.hold_ms != 65535:
-            horizon = min(horizon, echo[0] - 2 * NARROW_FRAME * self.byte_time)
+            horizon = min(horizon, echo[0] - 2 * self.geometry.mtu * self.byte_time)
         truncated = n >= len(msg.ranges) // 2  # bytes past received_end are unknown, not missing
         if re < self.next_new and not truncated:
             missing = [*missing, (re, self.next_new)]
@@ -533,7 +534,7 @@ class FileSender:
             window = self._outcomes[mode]
             if len(window) >= 8:
                 frame_loss = wilson_upper(sum(window), len(window))  # pessimistic: wide frames are costly
-                self.loss[mode] = frame_loss if mode == "narrow" else packet_loss_from_wide(frame_loss)
+                self.loss[mode] = frame_loss if mode == "narrow" else self.geometry.packet_loss_from_wide(frame_loss)
         if self.cfg.frame_mode == "auto" and self.stats.narrow_frames >= self.cfg.probe_frames:
             self.mode = self._choose_mode()
 

@@ -11,9 +11,12 @@ Protocol (messages of dialects/ttapi.xml):
    is already there, or IN_PROGRESS with what it already has (a resumed transfer sends only
    the rest). Every status carries the transfer id and a check of the offer's metadata; a
    sender ignores a status whose check is not its own. No file data moves before the answer.
-2. Data flows paced to the link: TT_FILE_DATA (80 bytes, one frame per packet) while loss is
-   high, TT_FILE_DATA_WIDE (247 bytes, frames spanning packets) while the transfer observes
-   little loss; the choice follows the loss the sender measures from the receiver's reports.
+2. Data flows paced to the link: narrow frames (one frame per packet) while loss is high,
+   TT_FILE_DATA_WIDE (247 bytes, frames spanning packets) while the transfer observes little
+   loss; the choice follows the loss the sender measures from the receiver's reports. The
+   narrow frame is sized to the link's packet (`Geometry`): TT_FILE_DATA (80 bytes in exactly
+   100) on DJI's DTT, TT_FILE_DATA_FIT (a frame stating its count) where that fills the packet
+   better: 107 bytes in the Payload SDK channel's 128, 66 in a signed 100-byte packet.
 3. The receiver reports, every second and sooner when it sees new gaps or the end of the file,
    what it has: everything below an offset, and up to 7 missing ranges above it. The sender
    repeats confirmed-missing ranges before new data; a retransmission is never repeated within
@@ -34,18 +37,45 @@ from dataclasses import dataclass, field
 from ..wire.contract import TtFileResult as R
 from .names import MAX_NAME_BYTES, SHA_LEN
 
-NARROW = 80  # file bytes in a TT_FILE_DATA frame (100 bytes: one packet)
+NARROW = 80  # file bytes in a TT_FILE_DATA frame (100 bytes: one DTT packet)
 WIDE = 247  # file bytes in a TT_FILE_DATA_WIDE frame (267 bytes)
 NARROW_FRAME = 100
 WIDE_FRAME = 267
+FIT_MAX = 246  # file bytes a TT_FILE_DATA_FIT frame can carry (21 + count bytes unsigned)
+FIT_OVERHEAD = 21  # MAVLink 2 header and CRC (12), transfer id and offset (8), count (1)
+SIGNATURE = 13  # a MAVLink 2 signature's bytes
 META_PART = 71  # metadata bytes per TT_FILE_OFFER
 REQUEST_PART = 80  # name bytes per TT_FILE_REQUEST
 MAX_RANGES = 7  # missing ranges per TT_FILE_STATUS
 REASON_BYTES = 80
 
-__all__ = ["MAX_NAME_BYTES", "MAX_RANGES", "META_PART", "NARROW", "NARROW_FRAME", "REASON_BYTES", "REQUEST_PART",
-           "SHA_LEN", "WIDE", "WIDE_FRAME", "TransferConfig", "TransferResult", "TransferStats", "frame_survival_wide",
-           "meta_check", "packet_loss_from_wide", "reason_fit", "reason_text", "result_name", "wilson_upper"]
+__all__ = [
+    "DTT",
+    "FIT_MAX",
+    "FIT_OVERHEAD",
+    "MAX_NAME_BYTES",
+    "MAX_RANGES",
+    "META_PART",
+    "NARROW",
+    "NARROW_FRAME",
+    "REASON_BYTES",
+    "REQUEST_PART",
+    "SHA_LEN",
+    "SIGNATURE",
+    "WIDE",
+    "WIDE_FRAME",
+    "Geometry",
+    "TransferConfig",
+    "TransferResult",
+    "TransferStats",
+    "frame_survival_wide",
+    "meta_check",
+    "packet_loss_from_wide",
+    "reason_fit",
+    "reason_text",
+    "result_name",
+    "wilson_upper",
+]
 
 Key = tuple[int, int, int]  # (sender sysid, sender compid, transfer id)
 
@@ -126,11 +156,77 @@ def reason_text(text: str) -> str:
     return text.encode("utf-8", "surrogateescape").decode("utf-8", "replace")
 
 
+@dataclass(frozen=True)
+class Geometry:
+    """The data frames a link's packet size and signing call for (the same rule in the C++ and
+    Java runtimes, decision for decision).
+
+    narrow (one frame per packet): TT_FILE_DATA (80 file bytes, a 100-byte frame, 113 signed)
+    when it fits the packet and carries at least what a TT_FILE_DATA_FIT sized to the packet
+    would; else TT_FILE_DATA_FIT with count = min(246, mtu - 21 - signature): exactly one packet.
+    wide: TT_FILE_DATA_WIDE (247 file bytes in 267, 280 signed), spanning packets."""
+
+    mtu: int = 100
+    signed: bool = False
+
+    def __post_init__(self) -> None:
+        if self.mtu < FIT_OVERHEAD + 1 + self.sig:
+            raise ValueError(f"a {self.mtu}-byte packet cannot carry a file-data frame "
+                             f"(at least {FIT_OVERHEAD + 1 + self.sig} bytes{' signed' if self.signed else ''})")
+
+    @property
+    def sig(self) -> int:
+        return SIGNATURE if self.signed else 0
+
+    @property
+    def fit_cap(self) -> int:
+        return min(FIT_MAX, self.mtu - FIT_OVERHEAD - self.sig)
+
+    @property
+    def narrow_fit(self) -> bool:
+        """True: the narrow frame is a TT_FILE_DATA_FIT; False: a TT_FILE_DATA."""
+        return not (NARROW_FRAME + self.sig <= self.mtu and self.fit_cap <= NARROW)
+
+    @property
+    def narrow_cap(self) -> int:
+        return self.fit_cap if self.narrow_fit else NARROW
+
+    @property
+    def narrow_frame(self) -> int:
+        return self.fit_cap + FIT_OVERHEAD + self.sig if self.narrow_fit else NARROW_FRAME + self.sig
+
+    @property
+    def wide_frame(self) -> int:
+        return WIDE_FRAME + self.sig
+
+    def survival_wide(self, p: float) -> float:
+        """Probability that a wide frame, streamed back to back, survives packet loss p: with
+        L its length and M the packet's, it overlaps c = ceil(L/M) packets with probability
+        (c M - L + 1)/M and c + 1 otherwise (0.34 q^3 + 0.66 q^4 for 267 bytes in 100)."""
+        q = 1.0 - p
+        length, m = self.wide_frame, self.mtu
+        c = -(-length // m)
+        pc = min(1.0, (c * m - length + 1) / m)
+        return pc * q**c + (1.0 - pc) * q ** (c + 1)
+
+    def packet_loss_from_wide(self, frame_loss: float) -> float:
+        lo, hi = 0.0, 1.0
+        for _ in range(40):
+            mid = (lo + hi) / 2
+            if 1.0 - self.survival_wide(mid) < frame_loss:
+                lo = mid
+            else:
+                hi = mid
+        return lo
+
+
+DTT = Geometry()
+
+
 def frame_survival_wide(p: float) -> float:
-    """Probability that a 267-byte frame, streamed back to back, survives packet loss p: it
-    overlaps 3 packets a third of the time and 4 otherwise."""
-    q = 1.0 - p
-    return 0.34 * q**3 + 0.66 * q**4
+    """Probability that a 267-byte frame, streamed back to back in 100-byte packets, survives
+    packet loss p: it overlaps 3 packets a third of the time and 4 otherwise."""
+    return DTT.survival_wide(p)
 
 
 def wilson_upper(lost: int, n: int, z: float = 1.0) -> float:
@@ -145,14 +241,7 @@ def wilson_upper(lost: int, n: int, z: float = 1.0) -> float:
 
 
 def packet_loss_from_wide(frame_loss: float) -> float:
-    lo, hi = 0.0, 1.0
-    for _ in range(40):
-        mid = (lo + hi) / 2
-        if 1.0 - frame_survival_wide(mid) < frame_loss:
-            lo = mid
-        else:
-            hi = mid
-    return lo
+    return DTT.packet_loss_from_wide(frame_loss)
 
 
 RESULT_TEXT = {

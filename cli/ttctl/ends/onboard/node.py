@@ -49,6 +49,7 @@ class OnboardConfig:
     home: Home = field(default_factory=Home)
     speed: float = 1.0
     rate_Bps: float | None = None  # pacing of the DTT downlink
+    mtu: int = 100  # the link's packet size (the profile's: 100 on DJI's DTT, 128 on the Payload SDK channel)
     inbound_Bps: float | None = None  # the DTT uplink's capacity: shared out among incoming files
     telemetry_hz: float = 2.0  # TT_NAV_SAT_FIX and TT_ODOMETRY to the tablet
     orbit_hz: float = 10.0  # the orbit camera's publishing rate while head poses arrive (0: no orbit camera)
@@ -271,7 +272,8 @@ class OnboardNode:
         store = ReceiveDir(self.cfg.inbox) if self.cfg.inbox is not None else None
         self.gcs.services.ftp.serve, self.gcs.services.ftp.inbox = self.cfg.serve, store  # MAVLink FTP's tree
         if self.cfg.dtt is not None:
-            transport: Transport = make_transport(self.cfg.dtt, log=lambda text: self.log(f"dtt: {text}"))
+            transport: Transport = make_transport(self.cfg.dtt, log=lambda text: self.log(f"dtt: {text}"),
+                                                  mtu=self.cfg.mtu if self.cfg.dtt.udp else None)
             self.endpoint = Endpoint(self.b, self.cfg.sysid, ONBOARD_COMPID, mtu=transport.mtu,
                                      rate_Bps=self.cfg.rate_Bps, receive_dir=store, inbound_Bps=self.cfg.inbound_Bps,
                                      serve_dir=str(self.cfg.serve) if self.cfg.serve else None,

@@ -23,6 +23,7 @@ from ...bridge.uplink import MAX_PROTOCOL, GcsUplink
 from ...link.transport import Spec, Transport, make_transport
 from ...proto.endpoint import Endpoint
 from ...wire.bindings import Bindings
+from ...wire.v1 import Upgrader, downgrade
 
 SHARE = 0.8  # of the DTT uplink, for ground stations' frames (the app's commands go first anyway)
 RADIO_PERIOD = 1.0
@@ -36,6 +37,9 @@ class BridgeStats:
     down: int = 0  # frames from the vehicle passed to ground stations
     not_carried: int = 0  # frames for another system
     radio_status: int = 0
+    v1_up: int = 0  # MAVLink 1 frames from stations, carried as MAVLink 2
+    v1_down: int = 0  # answers sent to MAVLink 1 stations as MAVLink 1
+    v1_dropped: int = 0  # frames MAVLink 1 cannot carry (msgid over 255), or MAVLink 1 ids not in the dialect
 
 
 class GcsBridge:
@@ -49,6 +53,8 @@ class GcsBridge:
         self.uplink = GcsUplink(share * uplink_Bps if uplink_Bps else None)
         self.links: list[Transport] = []
         self._parsers: dict[tuple[Hashable, Hashable], Any] = {}
+        self._v1: dict[tuple[Hashable, Hashable], Upgrader] = {}  # each station's MAVLink 1 upgrader
+        self._v1_told: set[int] = set()  # msgids said once
         self.radio = b.encoder(vehicle_sysid, RADIO_COMPID)
         self.autopilot = b.encoder(vehicle_sysid, 1)  # the mission relay's requests, as the vehicle's
         self.missions = MissionRelay(self._request)
@@ -82,6 +88,7 @@ class GcsBridge:
         """A TCP ground station left: its parser (and any half frame in it) goes with it."""
         def closed(source: Hashable) -> None:
             self._parsers.pop((link, source), None)
+            self._v1.pop((link, source), None)
 
         return closed
 
@@ -100,6 +107,14 @@ class GcsBridge:
             parser = self._parsers.get((link, source))
             if parser is None:
                 parser = self._parsers[(link, source)] = self.b.parser()
+            v1 = self._v1.get((link, source))
+            if v1 is None:
+                if len(self._v1) >= 64:  # bounded: the oldest station's goes (it starts afresh if it comes back)
+                    self._v1.pop(next(iter(self._v1)))
+                v1 = self._v1[(link, source)] = Upgrader(self.b.registry, self._unknown_v1)
+            before = v1.v1_frames
+            data = v1.feed(data, not getattr(link, "stream", False))  # MAVLink 1 re-framed as 2; the rest as it came
+            self.stats.v1_up += v1.v1_frames - before
             now = asyncio.get_running_loop().time()
             queued = False
             for msg in parser.feed(data):
@@ -190,8 +205,28 @@ class GcsBridge:
         for link, address in dests:
             self._send(link, address, frame)
 
-    @staticmethod
-    def _send(link: Any, address: Hashable, frame: bytes) -> None:
+    def _unknown_v1(self, msgid: int) -> None:
+        self.stats.v1_dropped += 1
+        if msgid not in self._v1_told and len(self._v1_told) < 16:
+            self._v1_told.add(msgid)
+            self.log(f"not carrying MAVLink 1 message id {msgid} from a ground station: the dialect on the link "
+                     f"has no such message (its CRC cannot be checked)")
+
+    def _send(self, link: Any, address: Hashable, frame: bytes) -> None:
+        v1 = self._v1.get((link, address))
+        if v1 is not None and v1.saw_v1 and not v1.saw_v2:  # a station that speaks MAVLink 1: answered in kind
+            old = downgrade(frame, self.b.registry)
+            if old is None:
+                self.stats.v1_dropped += 1
+                msgid = frame[7] | frame[8] << 8 | frame[9] << 16
+                if msgid not in self._v1_told and len(self._v1_told) < 16:
+                    self._v1_told.add(msgid)
+                    name = getattr(self.b.registry.get(msgid), "cls", None)
+                    self.log(f"not sending {getattr(name, 'NAME', msgid)} to a MAVLink 1 ground station: MAVLink 1 "
+                             f"carries message ids up to 255 (set the station to MAVLink 2 to get it)")
+                return
+            self.stats.v1_down += 1
+            frame = old
         if address is not None and hasattr(link, "send_to"):
             link.send_to(frame, address)
         else:
@@ -229,4 +264,6 @@ class GcsBridge:
         u = self.uplink.stats
         return (f"ground stations: {self.stats.up} frames up ({u.sent} sent, {u.duplicates} retries dropped as "
                 f"duplicates, {u.replaced} overtaken by newer, {u.overflow} dropped for room, "
-                f"{self.stats.not_carried} for other systems not carried), {self.stats.down} down")
+                f"{self.stats.not_carried} for other systems not carried), {self.stats.down} down"
+                + (f"; MAVLink 1: {self.stats.v1_up} up, {self.stats.v1_down} down, {self.stats.v1_dropped} not "
+                   f"carried" if self.stats.v1_up or self.stats.v1_dropped else ""))

@@ -68,7 +68,7 @@ class TabletSession:
     the onboard end's plugins get the tablet's, and may send any message of the dialect."""
 
     def __init__(self, bindings: Bindings, spec: Spec, target: tuple[int, int] = (1, 240),
-                 rate_Bps: float | None = None, inbox: Path | None = None, timeout: float = 60.0,
+                 rate_Bps: float | None = None, inbox: Path | None = None, timeout: float = 60.0, mtu: int = 100,
                  on_event: Callable[[str, dict[str, Any]], None] | None = None,
                  log: Callable[[str], None] | None = None, signing: Any = None,
                  plugins: list[Plugin] | None = None, gcs: list[Spec] | None = None,
@@ -81,7 +81,8 @@ class TabletSession:
         self.on_event = on_event or (lambda what, fields: None)
         self.log = log or (lambda text: None)
         self.store = ReceiveDir(inbox) if inbox is not None else None
-        self.transport = make_transport(spec, log=lambda text: self.log(f"{spec.kind}: {text}"))
+        self.transport = make_transport(spec, log=lambda text: self.log(f"{spec.kind}: {text}"),
+                                        mtu=mtu if spec.udp else None)
         self.bridge: GcsBridge | None = None  # ground stations carried to the vehicle (--gcs)
         if gcs:
             self.bridge = GcsBridge(bindings, gcs, target[0], rate_Bps,
