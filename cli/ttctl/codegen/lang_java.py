@@ -63,7 +63,7 @@ RUNTIME_FILES = [
     "DecodeException", "Frame", "Parser", "Dispatcher", "Link", "UdpLink", "CommandContext",
     "CommandException", "Command", "MessageMatcher", "SendCommand", "ReceiveCommand", "CommandJob", "CommandEnds",
     "CommandQueue",
-    "LinkScheduler", "DjiReceiving", "DjiLink",
+    "LinkScheduler", "DjiReceiving", "DjiLink", "PayloadLink",
     "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
     "GcsRules", "GcsUplink", "GcsQuality", "GcsRoutes", "GcsBridge",  # the ground-station bridge (issue 22)
 ]

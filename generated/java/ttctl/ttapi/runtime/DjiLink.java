@@ -57,6 +57,8 @@ public final class DjiLink implements Link {
     public static final long IDLE_FLUSH_MILLIS = 200;
     /** Packets received but not yet parsed, at most; more are dropped (and counted). */
     public static final int RECEIVE_BACKLOG = 4096;
+    /** Bytes received but not yet parsed, at most (a flood of large arrays); more are dropped (and counted). */
+    public static final int RECEIVE_BACKLOG_BYTES = 1 << 20;
     /** Refusals (completions with an error) in a row after which the link reports them. */
     public static final int REFUSING_AFTER = 2;
     /** After the first refusal, the next packet waits this long; the wait doubles per refusal. */
@@ -125,7 +127,7 @@ public final class DjiLink implements Link {
         this(sender, receiver, Packetizer.DTT_MTU, "ttctl-dji-link");
     }
 
-    /** The same machinery for another DJI channel, with packets of {@code mtu} bytes. */
+    /** The same machinery for another DJI channel ({@link PayloadLink}: 128-byte packets). */
     DjiLink(PacketSender sender, PacketReceiver receiver, int mtu, String threadName) {
         if (sender == null) {
             throw new NullPointerException("sender");

@@ -255,7 +255,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     }
 
     /**
-     * Starts a bridge on {@code link} ({@link UdpLink} or {@link DjiLink}: the bridge listens to
+     * Starts a bridge on {@code link} ({@link UdpLink}, {@link DjiLink} or {@link PayloadLink}: the bridge listens to
      * it; another link: hand the bridge its messages, {@link #accept}) and its {@code scheduler}.
      */
     public static GcsBridge start(Link link, LinkScheduler scheduler, Config config) throws SocketException {
@@ -278,6 +278,8 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
             ((UdpLink) link).addListener(this);
         } else if (link instanceof DjiLink) {
             ((DjiLink) link).addListener(this);
+        } else if (link instanceof PayloadLink) {
+            ((PayloadLink) link).addListener(this);
         }
         scheduler.addSource(source);
         reader.start();

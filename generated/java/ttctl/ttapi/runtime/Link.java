@@ -17,7 +17,7 @@ import java.io.IOException;
 public interface Link extends Closeable {
     /**
      * The largest packet the link carries, in bytes: DJI's DTT ({@link DjiLink}) 100, the Payload
-     * SDK's low-speed channel (MSDK v5's payload data) 128, a {@link UdpLink} what it is given
+     * SDK's low-speed channel ({@link PayloadLink}, MSDK v5) 128, a {@link UdpLink} what it is given
      * (default 100). A {@link LinkScheduler} packs frames into packets of this size, and file
      * transfers size their data frames and pace by it.
      */
