@@ -67,6 +67,37 @@ def test_frames_follow_the_link_packet(classes: Path, tmp_path: Path) -> None:
             assert int(got["fitmax"]) == cap, (case, line)
 
 
+def test_the_java_geometry_is_pythons_for_every_packet_size(classes: Path) -> None:
+    """Shared vectors: for every packet size from 13 to 300 bytes, signed or not, the Java
+    Geometry refuses what Python's refuses, and chooses the same narrow frame (TT_FILE_DATA or
+    TT_FILE_DATA_FIT), its capacity and length, the wide frame's length, its survival under loss
+    and the packet loss inferred from a wide-frame loss."""
+    from ttctl.proto.transfer import Geometry
+
+    proc = subprocess.run(["java", "-cp", str(classes), "ttctl.ttapi.transfer.GeometryVectors"], capture_output=True,
+                          text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    lines = proc.stdout.splitlines()
+    assert len(lines) == 2 * (300 - 13 + 1)
+    ps = [0.0, 0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.9]
+    xs = [0.001, 0.05, 0.1, 0.3, 0.6, 0.95]
+    for ln in lines:
+        w = ln.split()
+        mtu, signed = int(w[1]), w[2] == "1"
+        try:
+            g = Geometry(mtu, signed)
+        except ValueError:
+            assert w[0] == "REFUSED", ln
+            continue
+        assert w[0] == "G", ln
+        assert (w[3] == "1", int(w[4]), int(w[5]), int(w[6])) == (g.narrow_fit, g.narrow_cap, g.narrow_frame,
+                                                                 g.wide_frame), ln
+        surv, loss = " ".join(w[7:]).split(" | ")
+        assert [float(v) for v in surv.split()] == pytest.approx([g.survival_wide(p) for p in ps], rel=1e-12), ln
+        assert [float(v) for v in loss.split()] == pytest.approx([g.packet_loss_from_wide(x) for x in xs],
+                                                                 rel=1e-9, abs=1e-11), ln
+
+
 # --- the Java sender's frames are Python's: a cross run on mtu 128 and signed links -------------
 
 class Tap:
