@@ -78,13 +78,13 @@ def test_the_java_mavlink1_codec_is_the_python_one(classes: Path) -> None:
     assert proc.returncode == 0, proc.stderr
     answers = proc.stdout.splitlines()
     assert len(answers) == len(lines), proc.stdout + proc.stderr
-    for d, a in zip(datagrams, answers):
+    for d, a in zip(datagrams, answers[:len(datagrams)], strict=True):
         u = Upgrader(b.registry)
         py = u.feed(d, datagram=True)
         got = a.split()
         assert got[0] == "UP" and bytes.fromhex(got[1] if got[1] != "-" else "") == py, (d.hex(), a, py.hex())
         assert int(got[2]) == u.v1_frames and int(got[3]) == u.v1_bad_crc and int(got[5]) == u.v1_unknown, (d.hex(), a)
-    for d, a in zip(downs, answers[len(datagrams):]):
+    for d, a in zip(downs, answers[len(datagrams):], strict=True):
         py_down = downgrade(d, b.registry)
         assert a == "DOWN " + (py_down.hex() if py_down is not None else "none"), (d.hex(), a)
     # and pymavlink reads the answer as MAVLink 1's COMMAND_ACK (command and result: no extensions)

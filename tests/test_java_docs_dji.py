@@ -37,7 +37,8 @@ V5_NAMES = ("PayloadCenter", "IPayloadManager", "IDJIError", "PayloadIndexType")
 
 @pytest.fixture(scope="module")
 def classes(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    stand_ins = sorted((ROOT / "tests/java/readme").glob("*.java")) + sorted((ROOT / "tests/java/msdk5").rglob("*.java"))
+    stand_ins = sorted((ROOT / "tests/java/readme").glob("*.java"))
+    stand_ins += sorted((ROOT / "tests/java/msdk5").rglob("*.java"))
     cls, _ = build_java(tmp_path_factory.mktemp("java_docs_dji"), stand_ins)
     return cls
 

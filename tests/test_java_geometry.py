@@ -52,7 +52,7 @@ def test_frames_follow_the_link_packet(classes: Path, tmp_path: Path) -> None:
     assert proc.returncode == 0, proc.stdout + proc.stderr
     lines = [ln for ln in proc.stdout.splitlines() if ln.startswith("CASE ")]
     assert len(lines) == len(CASES), proc.stdout + proc.stderr
-    for case, line in zip(CASES, lines):
+    for case, line in zip(CASES, lines, strict=True):
         got = dict(re.findall(r"(\w+)=(\S+)", line))
         kind, cap = CASES[case]
         assert got["ok"] == "true" and got["sha"] == "1", (case, line)

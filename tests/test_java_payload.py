@@ -92,7 +92,7 @@ def test_the_sdk_refusing_every_send_is_said_in_its_words(classes: Path, tmp_pat
 
 
 def test_a_listener_flood_neither_blocks_the_sdk_nor_grows_the_heap(classes: Path, tmp_path: Path) -> None:
-    r, text = tablet(classes, tmp_path, free_port(), "run=flood", "n=200000", heap="64m", timeout=120)
+    r, _ = tablet(classes, tmp_path, free_port(), "run=flood", "n=200000", heap="64m", timeout=120)
     assert int(r["dropped"]) + int(r["parsed"]) == 200000, r
     assert int(r["heap_mb"]) < 32, r
     assert float(r["longest_sdk_callback_ms"]) < CALLBACK_LIMIT_MS, r
