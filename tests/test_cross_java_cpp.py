@@ -37,14 +37,8 @@ def programs(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, Path]:
     return exe, classes
 
 
-@pytest.mark.parametrize(("model", "signed"), [
-    ("random", False), ("burst", False),
-    # signed, the C++ node serves in TT_FILE_DATA_FIT frames (66 file bytes in one 100-byte packet,
-    # as Python's end does since main's 7b144e8); the Java runtime on this branch does not take them
-    # yet (its Geometry is on branch java-sdk): the fetch times out. Strict: passing means Java has
-    # it, and the mark goes.
-    pytest.param("random", True, marks=pytest.mark.xfail(strict=True, reason="Java takes no TT_FILE_DATA_FIT yet")),
-])
+# signed: TT_FILE_DATA_FIT frames of one 100-byte packet (66 file bytes) both ways
+@pytest.mark.parametrize(("model", "signed"), [("random", False), ("burst", False), ("random", True)])
 def test_java_tablet_and_cpp_node(programs: tuple[Path, Path], tmp_path: Path, start: Start, model: str,
                                   signed: bool) -> None:
     from test_java_transfer import Driver

@@ -137,3 +137,33 @@ def test_mavlink1_frames_upgrade_and_downgrade_byte_for_byte() -> None:
     ref.seq = ack[4]
     assert old == bytes(ref.command_ack_encode(400, 0).pack(ref))
     assert downgrade(v2.replace(v2[7:10], (50011).to_bytes(3, "little"), 1), b.registry) is None  # id over 255
+
+
+def test_a_mavlink1_ground_station_on_the_onboard_ends_own_link(start: Start) -> None:
+    """`emulate onboard --gcs udpout:...` (where the station listens): the same station is taken
+    and answered in MAVLink 1 once it has spoken; a MAVLink 1 station on a listening link is
+    taken, and told in one line that answers there go as MAVLink 2."""
+    g, h = free_port(), free_port()
+    st = V1Station(g)
+    node = start("onboard", "emulate", "onboard", "--gcs", f"udpout:{LOCAL}:{g}", "--gcs", f"udpin:{LOCAL}:{h}",
+                 "--listen", f"udpin:{LOCAL}:0", "--no-entry-points")
+    node.wait_for("onboard 1:")
+    while st.peer is None:
+        try:
+            st.peer = st.sock.recvfrom(4096)[1]
+        except TimeoutError:
+            continue
+    beater = threading.Thread(target=st.beat, daemon=True)
+    beater.start()
+    try:
+        st.recv("HEARTBEAT", lambda x: x.get_srcComponent() == 1, 10)
+        st.send(st.mav.command_long_encode(1, 1, v1.MAV_CMD_COMPONENT_ARM_DISARM, 0, 1, 0, 0, 0, 0, 0, 0))
+        assert st.recv("COMMAND_ACK", lambda x: x.command == v1.MAV_CMD_COMPONENT_ARM_DISARM).result == 0
+        other = v1.MAVLink(None, srcSystem=247, srcComponent=190)
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+            s.sendto(other.heartbeat_encode(6, 8, 0, 0, 0).pack(other), (LOCAL, h))
+            node.wait_for("speaks MAVLink 1", 10)
+    finally:
+        st.stop.set()
+    assert st.v2_frames == 0
+    assert node.stderr.count("speaks MAVLink 1") == 1 and "Traceback" not in node.stderr

@@ -63,9 +63,9 @@ RUNTIME_FILES = [
     "DecodeException", "Frame", "Parser", "Dispatcher", "Link", "UdpLink", "CommandContext",
     "CommandException", "Command", "MessageMatcher", "SendCommand", "ReceiveCommand", "CommandJob", "CommandEnds",
     "CommandQueue",
-    "LinkScheduler", "DjiReceiving", "DjiLink",
+    "LinkScheduler", "DjiReceiving", "DjiLink", "PayloadLink",
     "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
-    "GcsRules", "GcsUplink", "GcsQuality", "GcsRoutes", "GcsBridge",  # the ground-station bridge (issue 22)
+    "GcsRules", "GcsUplink", "GcsQuality", "GcsRoutes", "GcsV1", "GcsBridge",  # the ground-station bridge (issue 22)
 ]
 RUNTIME_CLASSES = frozenset(RUNTIME_FILES + ["SendSetpoint"])
 # File transfer (package <root>.transfer), for dialects that have ttctl's file messages.
@@ -73,8 +73,9 @@ TRANSFER_FILES = ["RangeSet", "Names", "TransferConfig", "TransferResult", "Tran
                   "Deflate", "ReceiveDir", "Incoming", "Partial", "FileReceiver", "FileFetch", "ServedFolder",
                   "TransferRouter", "TransferTimer", "FileTransfers"]
 TRANSFER_FILES += ["SentLog", "ReceiverStatuses", "Sharing"]  # split out of FileSender and FileReceiver; rate grants
+TRANSFER_FILES += ["Geometry"]  # the data frames the link's packet size allows
 TRANSFER_MESSAGES = {"TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_REASON", "TT_FILE_DATA", "TT_FILE_DATA_WIDE",
-                     "TT_FILE_REQUEST"}
+                     "TT_FILE_DATA_FIT", "TT_FILE_REQUEST"}
 
 
 

@@ -27,7 +27,7 @@ import ttctl.ttapi.runtime.UdpLink;
  *
  * Arguments: RELAY_PORT GCS_PORT LISTEN_PORT RATE [PASSPHRASE: the link signed with the key of
  * `ttctl --key PASSPHRASE`]. Prints "ready"; then reads commands, one a
- * line: "lat SECONDS" sends the app's own command (TT_ACTION_SYNC_TIME to the onboard end, one
+ * line: "v1" prints the MAVLink 1 counters, "problems" what onProblem was told; "lat SECONDS" sends the app's own command (TT_ACTION_SYNC_TIME to the onboard end, one
  * after another) for that long and prints "LAT [ms,...] TRY [ms,...] errors N": each command's
  * time to its ack, and the time from its last try to the ack (the round trip through the link
  * as loaded, whatever tries the radio's loss cost); "stats" prints the bridge's
@@ -98,6 +98,13 @@ public final class BridgeDriver {
                 }
                 System.out.println("LAT [" + String.join(",", ms) + "] TRY [" + String.join(",", lastTry) + "] errors "
                         + errors);
+            } else if (w[0].equals("problems")) {
+                synchronized (problems) {
+                    System.out.println("PROBLEMS " + String.join(" | ", problems));
+                }
+            } else if (w[0].equals("v1")) {
+                System.out.println(String.format(Locale.ROOT, "V1 up=%d down=%d dropped=%d notCarried=%d",
+                        bridge.v1Up(), bridge.v1Down(), bridge.v1Dropped(), bridge.notCarried()));
             } else if (w[0].equals("stats")) {
                 System.out.println(String.format(Locale.ROOT, "STATS carried=%d carriedBytes=%d duplicates=%d overflow=%d replaced=%d "
                         + "notCarried=%d unknown=%d toGcs=%d radio=%d fromVehicle=%d waiting=%d peak=%d peers=%d "

@@ -48,7 +48,7 @@ public final class GrantCheck {
         List<String> steps = new ArrayList<>();
         for (int g : grants) {
             for (int n = 2; n <= 5; n++) {
-                steps.add("[" + g + ", " + n + ", " + num(Sharing.step(g, n)) + "]");
+                steps.add("[" + g + ", " + n + ", " + num(Sharing.step(g, n, Geometry.DTT_MTU)) + "]");
             }
         }
         // the other-traffic meter: [time, bytes (+ packet, - data frame)]; other B/s after each
@@ -66,7 +66,7 @@ public final class GrantCheck {
         }
         List<String> windows = new ArrayList<>();
         for (int g : new int[] {0, 1, 7, 50, 133, 134, 1266, 65535}) {
-            windows.add("[" + g + ", " + num(Sharing.window(g)) + "]");
+            windows.add("[" + g + ", " + num(Sharing.window(g, Geometry.DTT_MTU)) + "]");
         }
         // a sender's pace: [grant, now, frame bytes] per frame offered; [ready, nextFree] after each
         double[][] frames = {{0, 0.0, 100}, {1266, 0.0, 100}, {1266, 0.01, 100}, {1266, 0.08, 100},

@@ -59,7 +59,7 @@ public final class ShareCheck {
                     byte[] d = new byte[80];
                     Arrays.fill(d, (byte) id);
                     rx.statuses.load.packet(now, 100);
-                    rx.onData(now, 255, 190, id, off, d, FileSender.NARROW);
+                    rx.onData(now, 255, 190, id, off, d, Geometry.DATA_CAP, Geometry.DATA_FRAME);
                 }
             }
             if (step >= 500 && step <= 900 && step % 10 == 0) {

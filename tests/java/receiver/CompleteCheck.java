@@ -57,7 +57,7 @@ public final class CompleteCheck {
                 for (int off = 0; off < file.length; off += 80) {
                     byte[] d = new byte[80];
                     System.arraycopy(file, off, d, 0, Math.min(80, file.length - off));
-                    rx.onData(now, 255, 190, id, off, d, 80);
+                    rx.onData(now, 255, 190, id, off, d, Geometry.DATA_CAP, Geometry.DATA_FRAME);
                 }
             }
             for (MavlinkMessage m : rx.control(now)) {

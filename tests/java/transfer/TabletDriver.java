@@ -43,7 +43,7 @@ import ttctl.ttapi.transfer.TransferResult;
  * CommandQueue, FileTransfers, UdpLink or DjiLink with a fake DJI SDK) against real ttctl
  * processes. Arguments are key=value; prints one "RESULT {json}" line, and "EVENT ..." lines.
  *
- * link=udp|dji port=RELAY rate=B/s timeout=S [send=FILE] [fetch=NAME dir=DIR] [idle=N]
+ * link=udp|dji port=RELAY rate=B/s timeout=S [mtu=BYTES (udp; default 100)] [send=FILE] [fetch=NAME dir=DIR] [idle=N]
  * [during=MS] [stall=MS_AFTER:MS_LONG] [garbage=1] [completion=MS] [key=64 hex digits: sign (dji)]
  */
 public final class TabletDriver {
@@ -97,6 +97,7 @@ public final class TabletDriver {
         } else {
             UdpLink udp = UdpLink.open("127.0.0.1", 0, "127.0.0.1", port, Ttapi.INSTANCE);
             udp.setLearnsRemote(false);
+            udp.setMtu(Integer.parseInt(a.getOrDefault("mtu", "100"))); // the link's packet: the scheduler's and the frames'
             link = udp;
             sched = new LinkScheduler(udp, rate).start();
             files = new FileTransfers(sched, SYS, COMP, cfg).start();

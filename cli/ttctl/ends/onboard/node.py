@@ -24,6 +24,7 @@ from ...proto.storage import ReceiveDir
 from ...wire.bindings import Bindings
 from ...wire.contract import TtAction as TT
 from ...wire.contract import TtResult as RES
+from ...wire.v1 import Upgrader, downgrade
 from ..plugins import Context, Dispatcher, Plugin
 from ..runtime import Runner, unknown_note
 from .autopilot import TABLET, Autopilot
@@ -76,6 +77,8 @@ class OnboardNode:
         self.gcs = GroundStations(bindings, self.ap, cfg.sysid, AUTOPILOT_COMPID, unix=self._unix, log=self.log)
         self.gcs_encoder = bindings.encoder(cfg.sysid, AUTOPILOT_COMPID, cfg.gcs_signing)
         self.gcs_links: list[Transport] = []
+        self._gcs_v1: dict[tuple[Hashable, Hashable], Upgrader] = {}  # each station's MAVLink 1 upgrader
+        self._v1_told: set[Hashable] = set()
         self.dtt_gcs = DttGroundStations(bindings, self.gcs, cfg.sysid, AUTOPILOT_COMPID, cfg.dtt_gcs_share,
                                          cfg.rate_Bps)
         self._gcs_parsers: dict[Hashable, Any] = {}
@@ -325,7 +328,11 @@ class OnboardNode:
 
     def _closer(self, link: Transport) -> Callable[[Hashable], None]:
         """A TCP connection ended: its parser (and any half frame in it) goes with it."""
-        return lambda source: self._gcs_parsers.pop((link, source), None)
+        def closed(source: Hashable) -> None:
+            self._gcs_parsers.pop((link, source), None)
+            self._gcs_v1.pop((link, source), None)
+
+        return closed
 
     def _file_event(self, what: str, t: Any) -> None:
         if what == "link-refused":
@@ -340,6 +347,17 @@ class OnboardNode:
         parser = self._gcs_parsers.get((link, source))
         if parser is None:
             parser = self._gcs_parsers[(link, source)] = self.b.parser()
+        v1 = self._gcs_v1.get((link, source))
+        if v1 is None:
+            if len(self._gcs_v1) >= 64:
+                self._gcs_v1.pop(next(iter(self._gcs_v1)))
+            v1 = self._gcs_v1[(link, source)] = Upgrader(self.b.registry)
+        data = v1.feed(data, not link.stream)  # MAVLink 1 re-framed as MAVLink 2, the rest as it came
+        if v1.saw_v1 and not v1.saw_v2 and link.spec.kind != "udpout" and link not in self._v1_told:
+            self._v1_told.add(link)
+            self.log(f"{link.spec}: a ground station there speaks MAVLink 1: its frames are taken, but answers "
+                     f"on a listening link go as MAVLink 2 (give it --gcs udpout:HOST:PORT, where it listens, "
+                     f"or set it to MAVLink 2)")
         now = self._wall()
         for msg in parser.feed(data):
             link.confirm(source, {(msg.get_srcSystem(), msg.get_srcComponent())})  # a udpin link learns its peers
@@ -372,9 +390,30 @@ class OnboardNode:
             frame = self.gcs_encoder.encode(msg)
             for t in self.gcs_links:
                 if link is None or link is t:
-                    t.send(frame)
+                    out = self._in_kind(t, frame)
+                    if out is not None:
+                        t.send(out)
         if behind_tablet and self.runner is not None:
             self.runner.kick()
+
+    def _in_kind(self, link: Transport, frame: bytes) -> bytes | None:
+        """A frame for a udpout ground-station link as its one station reads it: MAVLink 1 if it
+        speaks only that; None for what MAVLink 1 cannot carry (ids over 255: said once)."""
+        if link.spec.kind != "udpout" or self.cfg.gcs_signing is not None:  # (MAVLink 1 has no signatures)
+            return frame
+        for (t, _), v1 in self._gcs_v1.items():
+            if t is link and v1.saw_v1 and not v1.saw_v2:
+                old = downgrade(frame, self.b.registry)
+                if old is not None:
+                    return old
+                msgid = frame[7] | frame[8] << 8 | frame[9] << 16
+                if (link, msgid) not in self._v1_told and len(self._v1_told) < 32:
+                    self._v1_told.add((link, msgid))
+                    info = self.b.registry.get(msgid)
+                    self.log(f"{link.spec}: not sending {info.cls.NAME if info else msgid} to a MAVLink 1 ground "
+                             f"station: MAVLink 1 carries message ids up to 255 (set it to MAVLink 2 to get it)")
+                return None
+        return frame
 
     async def run(self, stop: asyncio.Event) -> None:
         loop = asyncio.get_running_loop()

@@ -57,6 +57,8 @@ public final class DjiLink implements Link {
     public static final long IDLE_FLUSH_MILLIS = 200;
     /** Packets received but not yet parsed, at most; more are dropped (and counted). */
     public static final int RECEIVE_BACKLOG = 4096;
+    /** Bytes received but not yet parsed, at most (a flood of large arrays); more are dropped (and counted). */
+    public static final int RECEIVE_BACKLOG_BYTES = 1 << 20;
     /** Refusals (completions with an error) in a row after which the link reports them. */
     public static final int REFUSING_AFTER = 2;
     /** After the first refusal, the next packet waits this long; the wait doubles per refusal. */
@@ -91,6 +93,7 @@ public final class DjiLink implements Link {
     }
 
     private final PacketSender sender;
+    private final int mtu;
     private final ReentrantLock lock = new ReentrantLock();
     private final Condition ready = lock.newCondition();
     private final ScheduledThreadPoolExecutor exec;
@@ -121,6 +124,11 @@ public final class DjiLink implements Link {
 
     /** A link sending through {@code sender}, receiving with {@code receiver}. */
     public DjiLink(PacketSender sender, PacketReceiver receiver) {
+        this(sender, receiver, Packetizer.DTT_MTU, "ttctl-dji-link");
+    }
+
+    /** The same machinery for another DJI channel ({@link PayloadLink}: 128-byte packets). */
+    DjiLink(PacketSender sender, PacketReceiver receiver, int mtu, String threadName) {
         if (sender == null) {
             throw new NullPointerException("sender");
         }
@@ -128,10 +136,11 @@ public final class DjiLink implements Link {
             throw new NullPointerException("receiver");
         }
         this.sender = sender;
+        this.mtu = mtu;
         this.exec = new ScheduledThreadPoolExecutor(1, new ThreadFactory() {
             @Override
             public Thread newThread(Runnable r) {
-                Thread t = new Thread(r, "ttctl-dji-link");
+                Thread t = new Thread(r, threadName);
                 t.setDaemon(true);
                 return t;
             }
@@ -244,6 +253,12 @@ public final class DjiLink implements Link {
         } catch (RuntimeException e) {
             receiving.droppedReceived++;
         }
+    }
+
+    /** DJI's DTT packet: 100 bytes (MSDK v4 refuses more). */
+    @Override
+    public int mtu() {
+        return mtu;
     }
 
     @Override

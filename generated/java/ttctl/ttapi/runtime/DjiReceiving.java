@@ -7,11 +7,12 @@ import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 
 /**
- * The receiving side of a {@link DjiLink}: packets from the onboard computer, a bounded backlog
- * of them, parsed on the link's thread by a {@link PacketReceiver} (a frame still waiting for
+ * The receiving side of a {@link DjiLink}: packets from the onboard computer, a backlog of them
+ * bounded in packets and in bytes, parsed on the link's thread by a {@link PacketReceiver} (a frame still waiting for
  * its continuation is given up after {@link DjiLink#IDLE_FLUSH_MILLIS} of quiet), the messages
  * handed to the listeners in order, and frames refused for their signatures named once to the
  * link's state listener. Never throws to the SDK's threads.
@@ -23,6 +24,7 @@ final class DjiReceiving {
     final List<Consumer<? super MavlinkMessage>> listeners = new CopyOnWriteArrayList<>();
     final List<Consumer<byte[]>> packetListeners = new CopyOnWriteArrayList<>();
     private final AtomicInteger backlog = new AtomicInteger();
+    private final AtomicLong backlogBytes = new AtomicLong();
     /** Frames from the drone refused for their signatures, in words, or null. */
     volatile String keyProblem;
     private long seenUnsigned;
@@ -42,21 +44,29 @@ final class DjiReceiving {
     /** A packet from the onboard computer: copied, then parsed on the link's thread (see {@link DjiLink}). */
     void take(byte[] data) {
         try {
-            if (backlog.incrementAndGet() > DjiLink.RECEIVE_BACKLOG) {
+            final int n = data.length;
+            int packets = backlog.incrementAndGet();
+            long bytes = backlogBytes.addAndGet(n);
+            if (packets > DjiLink.RECEIVE_BACKLOG || bytes > DjiLink.RECEIVE_BACKLOG_BYTES) {
                 backlog.decrementAndGet();
+                backlogBytes.addAndGet(-n);
                 droppedReceived++;
                 return;
             }
             final byte[] copy = data.clone();
-            exec.execute(new Runnable() {
-                @Override
-                public void run() {
-                    backlog.decrementAndGet();
-                    parse(copy);
-                }
-            });
-        } catch (RejectedExecutionException e) {
-            backlog.decrementAndGet();
+            try {
+                exec.execute(new Runnable() {
+                    @Override
+                    public void run() {
+                        backlog.decrementAndGet();
+                        backlogBytes.addAndGet(-n);
+                        parse(copy);
+                    }
+                });
+            } catch (RejectedExecutionException e) {
+                backlog.decrementAndGet();
+                backlogBytes.addAndGet(-n);
+            }
         } catch (RuntimeException e) {
             droppedReceived++;
         }

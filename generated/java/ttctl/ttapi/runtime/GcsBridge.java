@@ -8,7 +8,12 @@ import java.net.InetSocketAddress;
 import java.net.SocketAddress;
 import java.net.SocketException;
 import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
+import java.util.Set;
 import java.util.Locale;
 import java.util.concurrent.Executor;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
@@ -41,6 +46,13 @@ import java.util.function.Consumer;
  * each) and leave as a bulk source of the link's {@link LinkScheduler}: after the app's
  * commands and telemetry, and at most {@link Config#share} of the uplink's rate. The scheduler
  * signs them when the link is signed.
+ *
+ * <p>MAVLink 1 (pymavlink's default, older ground stations): a station's MAVLink 1 frames are
+ * carried as MAVLink 2 (the same msgid and payload, re-framed, the CRC recomputed with the
+ * message's CRC_EXTRA), and a station that has spoken MAVLink 1 and not MAVLink 2 is answered in
+ * MAVLink 1 (the payload cut to the fields MAVLink 1 has). What MAVLink 1 cannot carry is not
+ * carried, counted ({@link #v1Dropped()}) and named once to {@link Config#onProblem}: a MAVLink 1
+ * message id the dialect lacks (its CRC cannot be checked), an answer whose id is over 255.
  *
  * <p>Down (the link to the ground stations): every frame from the vehicle's system id whose
  * component is not the onboard end's ({@value GcsRules#ONBOARD_COMPONENT}) goes, unsigned, with
@@ -174,6 +186,14 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     private final int vehicle;
     private final DatagramSocket socket;
     private final Parser parser;
+    private final MavlinkDialect dialect;
+    /** Stations heard, by address: bit 1 spoke MAVLink 1, bit 2 spoke MAVLink 2 (at most MAX_STATIONS). */
+    private final Map<SocketAddress, Integer> spoke = new LinkedHashMap<>();
+    /** MAVLink 1 message ids named once (at most 16). */
+    private final Set<Integer> v1Told = new LinkedHashSet<>();
+    private long v1Up;
+    private long v1Down;
+    private long v1Dropped;
     private final GcsUplink uplink;
     private final GcsQuality quality = new GcsQuality();
     private final GcsRoutes<SocketAddress> routes;
@@ -214,6 +234,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
         double base = c.uplinkRate > 0 ? c.uplinkRate : scheduler.rate() > 0 ? scheduler.rate() : DEFAULT_UPLINK_RATE;
         this.uplink = new GcsUplink(base * c.share, scheduler.mtu());
         this.parser = new Parser(dialect);
+        this.dialect = dialect;
         this.onProblem = c.onProblem;
         Executor l = c.listeners != null ? Callbacks.serial(c.listeners) : sessionListeners;
         this.ownListeners = l == null ? Callbacks.newThread("ttctl-gcs-listeners") : null;
@@ -255,7 +276,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     }
 
     /**
-     * Starts a bridge on {@code link} ({@link UdpLink} or {@link DjiLink}: the bridge listens to
+     * Starts a bridge on {@code link} ({@link UdpLink}, {@link DjiLink} or {@link PayloadLink}: the bridge listens to
      * it; another link: hand the bridge its messages, {@link #accept}) and its {@code scheduler}.
      */
     public static GcsBridge start(Link link, LinkScheduler scheduler, Config config) throws SocketException {
@@ -278,6 +299,8 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
             ((UdpLink) link).addListener(this);
         } else if (link instanceof DjiLink) {
             ((DjiLink) link).addListener(this);
+        } else if (link instanceof PayloadLink) {
+            ((PayloadLink) link).addListener(this);
         }
         scheduler.addSource(source);
         reader.start();
@@ -319,15 +342,51 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
                 continue;
             }
             got.clear();
+            SocketAddress from = p.getSocketAddress();
+            GcsV1.Result v1 = GcsV1.upgrade(buf, p.getOffset(), p.getLength(), dialect, spokeV1(from));
+            heardSpeak(from, v1);
             parser.reset(); // each datagram on its own: nothing a previous one left over
             long skipped = parser.stats().skippedBytes();
-            parser.feed(buf, p.getOffset(), p.getLength(), add);
+            parser.feed(v1.bytes, 0, v1.bytes.length, add);
             parser.flush(add);
             boolean garbage = parser.stats().skippedBytes() > skipped;
-            boolean carried = fromGcs(p.getSocketAddress(), got, garbage);
+            boolean carried = fromGcs(from, got, garbage);
             if (carried) {
                 scheduler.wake();
             }
+        }
+    }
+
+    private boolean spokeV1(SocketAddress from) {
+        synchronized (lock) {
+            Integer k = spoke.get(from);
+            return k != null && (k & 1) != 0;
+        }
+    }
+
+    /** What a datagram said of its station's MAVLink version; a MAVLink 1 id the dialect lacks, named once. */
+    private void heardSpeak(SocketAddress from, GcsV1.Result v1) {
+        String tell = null;
+        synchronized (lock) {
+            int bits = (v1.upgraded > 0 ? 1 : 0) | (v1.v2Frames > 0 ? 2 : 0);
+            if (bits != 0) {
+                Integer k = spoke.remove(from);
+                spoke.put(from, (k == null ? 0 : k) | bits);
+                if (spoke.size() > GcsRoutes.MAX_STATIONS) {
+                    Iterator<SocketAddress> it = spoke.keySet().iterator();
+                    it.next();
+                    it.remove(); // the station heard longest ago starts afresh if it comes back
+                }
+            }
+            v1Up += v1.upgraded;
+            v1Dropped += v1.unknown;
+            if (v1.unknownId >= 0 && v1Told.size() < 16 && v1Told.add(v1.unknownId)) {
+                tell = "not carrying MAVLink 1 message id " + v1.unknownId + " from the ground station at "
+                        + describe(from) + ": the dialect on the link has no such message (its CRC cannot be checked)";
+            }
+        }
+        if (tell != null) {
+            problem(tell, true); // once per message id, at most 16
         }
     }
 
@@ -417,6 +476,34 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     }
 
     private void send(SocketAddress to, byte[] frame, boolean radio) {
+        Integer k;
+        synchronized (lock) {
+            k = spoke.get(to);
+        }
+        if (k != null && k == 1) { // a station that speaks MAVLink 1 (and not 2): answered in kind
+            byte[] old = GcsV1.downgrade(frame, dialect);
+            if (old == null) {
+                int id = GcsV1.msgId(frame);
+                String tell = null;
+                synchronized (lock) {
+                    v1Dropped++;
+                    if (v1Told.size() < 16 && v1Told.add(id)) {
+                        MessageInfo info = dialect.info(id);
+                        tell = "not sending " + (info != null ? info.name() + " (id " + id + ")" : "message id " + id)
+                                + " to the MAVLink 1 ground station at " + describe(to) + ": MAVLink 1 carries "
+                                + "message ids up to 255 (set the station to MAVLink 2 to get it)";
+                    }
+                }
+                if (tell != null) {
+                    problem(tell, true); // once per message id, at most 16
+                }
+                return;
+            }
+            synchronized (lock) {
+                v1Down++;
+            }
+            frame = old;
+        }
         try {
             socket.send(new DatagramPacket(frame, frame.length, to));
             synchronized (lock) {
@@ -456,13 +543,18 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     // ---- problems, counters, close ----
 
     private void problem(final String what) {
+        problem(what, false);
+    }
+
+    /** {@code once}: a problem the caller tells once (bounded): told whatever was told just before. */
+    private void problem(final String what, boolean once) {
         boolean fresh;
         synchronized (lock) {
             long now = System.nanoTime();
             // told when it changes, at most once a second, and again if it lasts: never a flood
-            fresh = (!what.equals(problem) || now - toldAt > TimeUnit.SECONDS.toNanos(PROBLEM_SECONDS))
+            fresh = once || (!what.equals(problem) || now - toldAt > TimeUnit.SECONDS.toNanos(PROBLEM_SECONDS))
                     && now - toldAt > TimeUnit.SECONDS.toNanos(1);
-            if (fresh) {
+            if (fresh && !once) {
                 toldAt = now;
             }
             problem = what;
@@ -553,6 +645,27 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     public long unknown() {
         synchronized (lock) {
             return unknown;
+        }
+    }
+
+    /** MAVLink 1 frames from ground stations carried as MAVLink 2. */
+    public long v1Up() {
+        synchronized (lock) {
+            return v1Up;
+        }
+    }
+
+    /** Frames sent to MAVLink 1 ground stations as MAVLink 1. */
+    public long v1Down() {
+        synchronized (lock) {
+            return v1Down;
+        }
+    }
+
+    /** What MAVLink 1 could not carry: answers with ids over 255, MAVLink 1 ids the dialect lacks. */
+    public long v1Dropped() {
+        synchronized (lock) {
+            return v1Dropped;
         }
     }
 

@@ -15,6 +15,16 @@ import java.io.IOException;
  * and file transfers with priorities and a rate cap.
  */
 public interface Link extends Closeable {
+    /**
+     * The largest packet the link carries, in bytes: DJI's DTT ({@link DjiLink}) 100, the Payload
+     * SDK's low-speed channel ({@link PayloadLink}, MSDK v5) 128, a {@link UdpLink} what it is given
+     * (default 100). A {@link LinkScheduler} packs frames into packets of this size, and file
+     * transfers size their data frames and pace by it.
+     */
+    default int mtu() {
+        return Packetizer.DTT_MTU;
+    }
+
     /** Sends one packet: a frame, or several frames back to back. Must be thread-safe. */
     void send(byte[] packet) throws IOException;
 

@@ -86,7 +86,8 @@ public final class LinkScheduler implements AutoCloseable {
     private volatile long lastErrorAt;
 
     /**
-     * A scheduler in front of {@code link}, packets of at most {@code mtu} bytes (DJI: 100),
+     * A scheduler in front of {@code link}, packets of at most {@code mtu} bytes (normally the
+     * link's own, {@link Link#mtu()}: DJI's DTT 100, the Payload SDK channel 128),
      * paced at {@code rateBytesPerSecond} (0: no cap; a flow-controlled link such as
      * {@link DjiLink} paces itself). Call {@link #start()}.
      */
@@ -103,9 +104,16 @@ public final class LinkScheduler implements AutoCloseable {
         this.rate = rateBytesPerSecond;
     }
 
-    /** The DJI link's MTU (100 bytes), paced at {@code rateBytesPerSecond}. */
+    /** Packets of the link's size ({@link Link#mtu()}), paced at {@code rateBytesPerSecond}. */
     public LinkScheduler(Link link, double rateBytesPerSecond) {
-        this(link, Packetizer.DTT_MTU, rateBytesPerSecond);
+        this(link, mtuOf(link), rateBytesPerSecond);
+    }
+
+    private static int mtuOf(Link link) {
+        if (link == null) {
+            throw new NullPointerException("link");
+        }
+        return link.mtu();
     }
 
     /** Starts the worker thread (once). */
@@ -160,6 +168,11 @@ public final class LinkScheduler implements AutoCloseable {
 
     public int mtu() {
         return mtu;
+    }
+
+    /** Whether frames are signed as they are placed in packets ({@link #setSigner}). */
+    public boolean signing() {
+        return signer != null;
     }
 
     public Link link() {

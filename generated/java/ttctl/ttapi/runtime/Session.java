@@ -14,7 +14,7 @@ import ttctl.ttapi.transfer.TransferConfig;
  * {@link LinkScheduler} in front of the link, a {@link CommandQueue} (commands at control
  * priority), {@link FileTransfers} (uploads, downloads, an inbox, a served folder) and a
  * {@link Dispatcher} for the app's handlers, and it feeds them every message the link receives
- * (a {@link UdpLink} or {@link DjiLink} is wired and started by {@link #start()}; for another
+ * (a {@link UdpLink}, {@link DjiLink} or {@link PayloadLink} is wired and started by {@link #start()}; for another
  * link, hand its messages to {@link #accept}).
  *
  * <p>Every listener the app gives (dispatcher handlers, command callbacks, transfer listeners,
@@ -112,6 +112,8 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         }
         if (link instanceof DjiLink) {
             ((DjiLink) link).setListenerExecutor(listeners);
+        } else if (link instanceof PayloadLink) {
+            ((PayloadLink) link).setListenerExecutor(listeners);
         }
         this.heartbeatMillis = o.heartbeatMillis;
     }
@@ -133,6 +135,8 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
             ((UdpLink) link).addListener(this).start();
         } else if (link instanceof DjiLink) {
             ((DjiLink) link).addListener(this);
+        } else if (link instanceof PayloadLink) {
+            ((PayloadLink) link).addListener(this);
         }
         if (heartbeatMillis > 0) {
             heartbeats = java.util.concurrent.Executors.newSingleThreadScheduledExecutor(
@@ -236,6 +240,8 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
             ((UdpLink) link).removeListener(this);
         } else if (link instanceof DjiLink) {
             ((DjiLink) link).removeListener(this);
+        } else if (link instanceof PayloadLink) {
+            ((PayloadLink) link).removeListener(this);
         }
         files.close();
         commands.close();

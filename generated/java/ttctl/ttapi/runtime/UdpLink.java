@@ -40,6 +40,7 @@ public final class UdpLink implements Link {
     private volatile SocketAddress remote;
     private volatile boolean closed;
     private volatile boolean learnsRemote;
+    private volatile int mtu = Packetizer.DTT_MTU;
     private volatile String keyProblem;
     private long seenUnsigned;
     private long seenBadSignatures;
@@ -226,6 +227,24 @@ public final class UdpLink implements Link {
             }
             watchSignatures(packet.getSocketAddress());
         }
+    }
+
+    /**
+     * The packet size this link stands for (default 100, DJI's DTT; 128 for the Payload SDK's
+     * low-speed channel): what a {@link LinkScheduler} made with {@code new LinkScheduler(link,
+     * rate)} packs to. Set it before making the scheduler.
+     */
+    public UdpLink setMtu(int mtu) {
+        if (mtu < Packetizer.MIN_MTU || mtu > 65507) {
+            throw new IllegalArgumentException("a UDP link's packet is " + Packetizer.MIN_MTU + "..65507 bytes: " + mtu);
+        }
+        this.mtu = mtu;
+        return this;
+    }
+
+    @Override
+    public int mtu() {
+        return mtu;
     }
 
     /**

@@ -100,6 +100,10 @@ final class FileReceiver {
     // counters, for the app
     long refused;
     long dropped;
+    /** TT_FILE_DATA_FIT frames ignored for a count outside 1..246. */
+    long malformed;
+    /** The link's packet size: one packet's time in the grant-derived intervals. */
+    int mtu = Geometry.DTT_MTU;
 
     FileReceiver(TransferConfig cfg, int maxTransfers, Events events) {
         this.cfg = cfg;
@@ -354,7 +358,12 @@ final class FileReceiver {
     }
 
     // -- data --------------------------------------------------------------------------------
-    void onData(double now, int srcSys, int srcComp, long transferId, long offset, byte[] data, int cap) {
+    /**
+     * A data frame: {@code cap} is what its kind carries (TT_FILE_DATA 80, TT_FILE_DATA_WIDE 247,
+     * TT_FILE_DATA_FIT its count), {@code frameLen} its length for the load meter.
+     */
+    void onData(double now, int srcSys, int srcComp, long transferId, long offset, byte[] data, int cap,
+                int frameLen) {
         Key key = new Key(srcSys, srcComp, transferId);
         Incoming t = transfers.get(key);
         if (t == null) {
@@ -367,7 +376,7 @@ final class FileReceiver {
         }
         t.lastActivity = now;
         t.frames++;
-        statuses.load.data(now, cap == FileSender.NARROW ? FileSender.NARROW_FRAME : FileSender.WIDE_FRAME);
+        statuses.load.data(now, frameLen);
         if (t.partial == null || t.group == null) { // not accepted (yet), finished or refused
             if (t.decided && now - t.lastStatus >= cfg.statusMinInterval) {
                 t.statusDue = now;

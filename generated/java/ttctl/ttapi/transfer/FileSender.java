@@ -11,6 +11,7 @@ import java.util.function.LongSupplier;
 import ttctl.ttapi.enums.TtFileFlags;
 import ttctl.ttapi.enums.TtFileResult;
 import ttctl.ttapi.msg.TtFileData;
+import ttctl.ttapi.msg.TtFileDataFit;
 import ttctl.ttapi.msg.TtFileDataWide;
 import ttctl.ttapi.msg.TtFileOffer;
 import ttctl.ttapi.msg.TtFileReason;
@@ -27,10 +28,6 @@ import ttctl.ttapi.runtime.MavlinkMessage;
  * than the receiver's latest rate grant allows ({@link Sharing}), when it gives one.
  */
 final class FileSender {
-    static final int NARROW = 80;
-    static final int WIDE = 247;
-    static final int NARROW_FRAME = 100;
-    static final int WIDE_FRAME = 267;
     static final int META_PART = 71;
 
     final LongSupplier newId;
@@ -61,6 +58,8 @@ final class FileSender {
     double rtt = 0.5;
     boolean rttSampled;
     double byteTime;
+    /** The data frames the link's packet allows (set with byteTime when the sender starts). */
+    Geometry geometry = Geometry.DTT;
     final Sharing.Pacer pacer = new Sharing.Pacer(); // the receiver's rate grant for our data frames
     // stats
     long bytesSent;
@@ -259,7 +258,7 @@ final class FileSender {
      */
     private double quietAfter() {
         double wait = Math.max(3 * cfg.statusInterval, 2 * rtt + cfg.statusInterval);
-        return wait + (pacer.grant > 0 ? 3.0 * NARROW_FRAME / pacer.grant : 0.0);
+        return wait + (pacer.grant > 0 ? 3.0 * geometry.mtu / pacer.grant : 0.0);
     }
 
     private void timeOut(double now, String linkProblem) {
@@ -322,7 +321,7 @@ final class FileSender {
         }
         // sharing the link: a wide frame's three packets back to back fill the radio's buffer
         // for the others, and the buffer's overflow takes the whole frame
-        return pacer.grant > 0 ? "narrow" : loss.choose(mode);
+        return pacer.grant > 0 ? "narrow" : loss.choose(mode, geometry);
     }
 
     MavlinkMessage nextData(double now, int space) throws IOException {
@@ -330,11 +329,12 @@ final class FileSender {
             return null;
         }
         boolean wide = "wide".equals(mode);
-        int frameLen = wide ? WIDE_FRAME : NARROW_FRAME;
+        Geometry g = geometry;
+        int frameLen = wide ? g.wideFrame : g.narrowFrame;
         if (!wide && space < frameLen) {
             return null; // a narrow frame takes a packet of its own
         }
-        int cap = wide ? WIDE : NARROW;
+        int cap = wide ? g.wideCap : g.narrowCap;
         long[] r = retx.first();
         long offset;
         int length;
@@ -356,7 +356,7 @@ final class FileSender {
             length = (int) Math.min(cap, size - offset);
             bytesRetransmitted += length;
         }
-        byte[] data = new byte[cap];
+        byte[] data = new byte[wide ? Geometry.WIDE_CAP : g.fit ? Geometry.FIT_MAX : Geometry.DATA_CAP];
         if (deflated != null) {
             deflated.read(offset, data, length);
         } else {
@@ -364,7 +364,7 @@ final class FileSender {
             raf.readFully(data, 0, length);
         }
         log.sending(now, offset);
-        double left = now + (frameLen + NARROW_FRAME) * byteTime;
+        double left = now + (frameLen + g.mtu) * byteTime;
         log.record(left, offset, offset + length);
         if (r == null) {
             loss.sent(offset, offset + length, left, wide);
@@ -378,7 +378,7 @@ final class FileSender {
             msg = new TtFileDataWide(id, offset, data);
         } else {
             narrowFrames++;
-            msg = new TtFileData(id, offset, data);
+            msg = g.fit ? new TtFileDataFit(id, offset, length, data) : new TtFileData(id, offset, data);
         }
         if ("auto".equals(cfg.frameMode) && narrowFrames >= cfg.probeFrames) {
             mode = chooseMode();
@@ -541,7 +541,7 @@ final class FileSender {
         double horizon = now - rtt - 0.05;
         double[] echo = log.sendOf(msg.last_offset);
         if (echo != null && msg.hold_ms != 65535) {
-            horizon = Math.min(horizon, echo[0] - 2 * NARROW_FRAME * byteTime);
+            horizon = Math.min(horizon, echo[0] - 2 * geometry.mtu * byteTime);
         }
         boolean truncated = n >= slots;
         if (re < nextNew && !truncated) {

@@ -126,6 +126,8 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
                 onReceiverEvent(what, t);
             }
         });
+        new Geometry(scheduler.mtu(), false); // refuses a packet too small for a file-data frame
+        this.receiver.mtu = scheduler.mtu();
         setInboundCapacity(this.cfg.inboundCapacity);
     }
 
@@ -342,6 +344,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
     /** Under the lock: a sender and its puller (the caller adds the puller to the scheduler, unlocked). */
     LinkScheduler.BulkSource startSender(final Transfer t, FileSender s) {
         s.byteTime = byteTime();
+        s.geometry = new Geometry(scheduler.mtu(), scheduler.signing());
         senders.put(t, s);
         LinkScheduler.BulkSource pull = new LinkScheduler.BulkSource() {
             @Override

@@ -10,7 +10,8 @@ import java.util.List;
  * The loss a sender measures, exactly as ttctl's Python sender does: each first transmission,
  * once a status covers its bytes, was lost if any of them is reported missing; estimates come
  * from the last 64 per frame size (pessimistic: the upper end of the Wilson interval), and choose
- * between narrow (80-byte, one packet) and wide (247-byte, spanning packets) data frames.
+ * between narrow (one packet) and wide (247-byte, spanning packets) data frames of the link's
+ * {@link Geometry}.
  */
 final class LossEstimate {
     private final List<Object[]> unclassified = new ArrayList<>(); // {start, end, when, wide}
@@ -18,6 +19,7 @@ final class LossEstimate {
     private final ArrayDeque<Boolean> wide = new ArrayDeque<>();
     double lossNarrow = Double.NaN;
     double lossWide = Double.NaN;
+    private double wideFrameLoss = Double.NaN; // the upper estimate of wide frames lost, before the geometry
 
     void sent(long start, long end, double when, boolean isWide) {
         unclassified.add(new Object[] {start, end, when, isWide});
@@ -52,19 +54,20 @@ final class LossEstimate {
             lossNarrow = wilsonUpper(count(narrow), narrow.size());
         }
         if (wide.size() >= 8) {
-            lossWide = packetLossFromWide(wilsonUpper(count(wide), wide.size()));
+            wideFrameLoss = wilsonUpper(count(wide), wide.size());
         }
     }
 
     /** "narrow" or "wide": the more efficient at the loss measured (with hysteresis). */
-    String choose(String mode) {
+    String choose(String mode, Geometry g) {
+        lossWide = Double.isNaN(wideFrameLoss) ? Double.NaN : g.packetLossFromWide(wideFrameLoss);
         double p = "wide".equals(mode) && !Double.isNaN(lossWide) ? lossWide
                 : (!Double.isNaN(lossNarrow) ? lossNarrow : lossWide);
         if (Double.isNaN(p)) {
             return "narrow";
         }
-        double effNarrow = (double) FileSender.NARROW / FileSender.NARROW_FRAME * (1 - p);
-        double effWide = (double) FileSender.WIDE / FileSender.WIDE_FRAME * survivalWide(p);
+        double effNarrow = (double) g.narrowCap / g.narrowFrame * (1 - p);
+        double effWide = (double) g.wideCap / g.wideFrame * g.survivalWide(p);
         String better = effWide > effNarrow ? "wide" : "narrow";
         if (!better.equals(mode) && Math.abs(effWide - effNarrow) < 0.02) {
             return mode; // hysteresis
@@ -82,12 +85,6 @@ final class LossEstimate {
         return n;
     }
 
-    /** Probability that a 267-byte frame, streamed back to back, survives packet loss p. */
-    static double survivalWide(double p) {
-        double q = 1.0 - p;
-        return 0.34 * q * q * q + 0.66 * q * q * q * q;
-    }
-
     /** Upper end of the Wilson interval (about 84 % one-sided) for a loss rate from n trials. */
     static double wilsonUpper(int lost, int n) {
         if (n == 0) {
@@ -99,19 +96,5 @@ final class LossEstimate {
         double centre = p + z * z / (2.0 * n);
         double spread = z * Math.sqrt(p * (1 - p) / n + z * z / (4.0 * n * n));
         return Math.min(1.0, (centre + spread) / denom);
-    }
-
-    static double packetLossFromWide(double frameLoss) {
-        double lo = 0.0;
-        double hi = 1.0;
-        for (int i = 0; i < 40; i++) {
-            double mid = (lo + hi) / 2;
-            if (1.0 - survivalWide(mid) < frameLoss) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        return lo;
     }
 }

@@ -84,7 +84,7 @@ final class ReceiverStatuses {
      */
     private double flowWindow(Incoming t) {
         if (grant > 0 && sharing.contains(t.key)) {
-            return Math.max(rx.cfg.statusInterval, 3.0 * FileSender.NARROW_FRAME / grant);
+            return Math.max(rx.cfg.statusInterval, 3.0 * rx.mtu / grant);
         }
         return rx.cfg.statusInterval;
     }
@@ -96,7 +96,7 @@ final class ReceiverStatuses {
      * their own. The same set sharing with a share within a tenth of the grant keeps it.
      */
     private void share(double now) {
-        double window = Sharing.window(grant);
+        double window = Sharing.window(grant, rx.mtu);
         Set<FileReceiver.Key> current = new HashSet<>();
         for (Incoming t : rx.transfers.values()) {
             if (t.partial != null && now - t.lastActivity < window) {
@@ -112,7 +112,7 @@ final class ReceiverStatuses {
             return;
         }
         grant = g;
-        double step = Sharing.step(g, current.size());
+        double step = Sharing.step(g, current.size(), rx.mtu);
         List<FileReceiver.Key> order = new ArrayList<>(current);
         order.sort(KEY_ORDER);
         for (int i = 0; i < order.size(); i++) {

@@ -61,8 +61,8 @@ final class Sharing {
     }
 
     /** The time between two sharing transfers' statuses telling a new grant: one packet's at the grant. */
-    static double step(int grant, int sharing) {
-        return grant > 0 && sharing > 0 ? (double) FileSender.NARROW_FRAME / ((double) grant * sharing) : 0.0;
+    static double step(int grant, int sharing, int mtu) {
+        return grant > 0 && sharing > 0 ? (double) mtu / ((double) grant * sharing) : 0.0;
     }
 
     /**
@@ -103,8 +103,8 @@ final class Sharing {
     }
 
     /** How long a receiving transfer stays in the sharing set after its last frame, under {@code grant}. */
-    static double window(int grant) {
-        return grant > 0 ? Math.max(ACTIVE_WINDOW, 4.0 * FileSender.NARROW_FRAME / grant) : ACTIVE_WINDOW;
+    static double window(int grant, int mtu) {
+        return grant > 0 ? Math.max(ACTIVE_WINDOW, 4.0 * mtu / grant) : ACTIVE_WINDOW;
     }
 
     /**

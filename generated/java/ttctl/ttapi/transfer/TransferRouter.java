@@ -6,6 +6,7 @@ import java.util.List;
 
 import ttctl.ttapi.enums.TtFileResult;
 import ttctl.ttapi.msg.TtFileData;
+import ttctl.ttapi.msg.TtFileDataFit;
 import ttctl.ttapi.msg.TtFileDataWide;
 import ttctl.ttapi.msg.TtFileOffer;
 import ttctl.ttapi.msg.TtFileReason;
@@ -48,8 +49,17 @@ final class TransferRouter {
                 long off = wide ? ((TtFileDataWide) msg).offset : ((TtFileData) msg).offset;
                 byte[] data = wide ? ((TtFileDataWide) msg).data : ((TtFileData) msg).data;
                 ft.receiver.onData(now, msg.sysId(), msg.compId(), id, off, data,
-                        wide ? FileSender.WIDE : FileSender.NARROW);
+                        wide ? Geometry.WIDE_CAP : Geometry.DATA_CAP, wide ? Geometry.WIDE_FRAME : Geometry.DATA_FRAME);
                 wake = true;
+            } else if (msg instanceof TtFileDataFit) {
+                TtFileDataFit d = (TtFileDataFit) msg;
+                if (d.count >= 1 && d.count <= Geometry.FIT_MAX) {
+                    ft.receiver.onData(now, msg.sysId(), msg.compId(), d.transfer_id, d.offset, d.data, d.count,
+                            Geometry.FIT_OVERHEAD + d.count);
+                    wake = true;
+                } else {
+                    ft.receiver.malformed++; // a count outside 1..246: ignored
+                }
             } else if (msg instanceof TtFileStatus) {
                 TtFileStatus s = (TtFileStatus) msg;
                 if (forUs(s.target_system, s.target_component)) {
