@@ -1,9 +1,10 @@
 """The README's C++ onboard code, as it stands in README.md: the skeleton's methods it fills in,
-the program for the drone (DJI Onboard SDK 4) and the one for a laptop (UDP). They are taken out
-of the README, built with g++ -Werror (the methods put into a freshly generated skeleton; the
-Onboard SDK replaced by tests/cpp/fake_osdk/, which has OSDK 4's names and carries the packets
-over UDP on a thread of its own, as the SDK calls back on its thread), and run against ttctl's
-emulated tablet through the m100 relay, and against send-file."""
+the program for the drone (DJI Onboard SDK 3.9 or 4.1) and the one for a laptop (UDP). They are
+taken out of the README, built with g++ -Werror (the methods put into a freshly generated
+skeleton) against DJI's real Onboard SDK headers (tests/vendor/dji/, as system headers) with
+tests/cpp/osdk_standin/ for the SDK's functions, which carries the packets over UDP on a thread of
+its own, as the SDK calls back on its thread, and run against ttctl's emulated tablet through the
+m100 relay, and against send-file."""
 
 from __future__ import annotations
 
@@ -27,7 +28,14 @@ from e2e_lib import LOCAL, Start, free_port, relay, send
 pytestmark = pytest.mark.skipif(shutil.which("g++") is None, reason="needs g++")
 
 WARN = ["-std=c++17", "-Wall", "-Wextra", "-Wpedantic", "-Werror"]
-FAKE_OSDK = ROOT / "tests" / "cpp" / "fake_osdk"
+OSDK_STANDIN = ROOT / "tests" / "cpp" / "osdk_standin" / "fake_osdk.cpp"
+OSDK = {"39": ROOT / "tests" / "vendor" / "dji" / "osdk-3.9.0", "41": ROOT / "tests" / "vendor" / "dji" / "osdk-4.1.0"}
+
+
+def system_includes(root: Path) -> list[str]:
+    """-isystem for every folder of vendored headers (as DJI's build puts them on the path)."""
+    dirs = sorted({p.parent for p in root.rglob("*.h*")})
+    return [arg for d in dirs for arg in ("-isystem", str(d))]
 
 
 def blocks() -> dict[str, str]:
@@ -78,11 +86,12 @@ def built(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     (tmp / "main.cpp").write_text(code["main.cpp"])
     (tmp / "laptop.cpp").write_text(code["laptop.cpp"])
     inc = ["-I", str(out / "cpp")]
-    exes = {"main": tmp / "main", "laptop": tmp / "laptop"}
+    exes = {"main": tmp / "main", "main39": tmp / "main39", "laptop": tmp / "laptop"}
     with ThreadPoolExecutor(max_workers=2) as pool:
-        jobs = [pool.submit(gxx, *WARN, "-O1", *inc, "-I", str(FAKE_OSDK), str(tmp / "main.cpp"), "-pthread", "-o",
-                            str(exes["main"]), "-lz"),
-                pool.submit(gxx, *WARN, "-O1", *inc, str(tmp / "laptop.cpp"), "-o", str(exes["laptop"]), "-lz")]
+        jobs = [pool.submit(gxx, *WARN, "-O1", *inc, *system_includes(OSDK[v]), f"-DFAKE_OSDK_VERSION={v}",
+                            str(tmp / "main.cpp"), str(OSDK_STANDIN), "-pthread", "-o",
+                            str(exes["main" if v == "41" else "main39"]), "-lz") for v in OSDK]
+        jobs.append(pool.submit(gxx, *WARN, "-O1", *inc, str(tmp / "laptop.cpp"), "-o", str(exes["laptop"]), "-lz"))
         for job in jobs:
             job.result()
     return exes
@@ -92,7 +101,9 @@ def sha(path: Path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
 
-def test_the_osdk_program_against_the_emulated_tablet(built: dict[str, Path], tmp_path: Path, start: Start) -> None:
+@pytest.mark.parametrize("exe", ["main", "main39"])
+def test_the_osdk_program_against_the_emulated_tablet(built: dict[str, Path], tmp_path: Path, start: Start,
+                                                      exe: str) -> None:
     (tmp_path / "outbox").mkdir()
     served = tmp_path / "outbox" / "log.bin"
     served.write_bytes(random.Random(1).randbytes(5000))
@@ -101,7 +112,7 @@ def test_the_osdk_program_against_the_emulated_tablet(built: dict[str, Path], tm
     b = free_port()
     env = {**os.environ, "FAKE_OSDK_LISTEN": f"{LOCAL}:{b}"}
     with open(tmp_path / "main.out", "w") as out, open(tmp_path / "main.err", "w") as err:
-        prog = subprocess.Popen([str(built["main"])], cwd=tmp_path, env=env, stdout=out, stderr=err)
+        prog = subprocess.Popen([str(built[exe])], cwd=tmp_path, env=env, stdout=out, stderr=err)
     try:
         a = free_port()
         relay(start, a, b, "--profile", "m100", "--loss", "0.1", "--seed", "4", "--stats-interval", "0")
