@@ -8,12 +8,7 @@ import java.net.InetSocketAddress;
 import java.net.SocketAddress;
 import java.net.SocketException;
 import java.util.ArrayList;
-import java.util.Iterator;
-import java.util.LinkedHashMap;
-import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Map;
-import java.util.Set;
 import java.util.Locale;
 import java.util.concurrent.Executor;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
@@ -187,13 +182,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     private final DatagramSocket socket;
     private final Parser parser;
     private final MavlinkDialect dialect;
-    /** Stations heard, by address: bit 1 spoke MAVLink 1, bit 2 spoke MAVLink 2 (at most MAX_STATIONS). */
-    private final Map<SocketAddress, Integer> spoke = new LinkedHashMap<>();
-    /** MAVLink 1 message ids named once (at most 16). */
-    private final Set<Integer> v1Told = new LinkedHashSet<>();
-    private long v1Up;
-    private long v1Down;
-    private long v1Dropped;
+    private final GcsV1Stations<SocketAddress> v1;
     private final GcsUplink uplink;
     private final GcsQuality quality = new GcsQuality();
     private final GcsRoutes<SocketAddress> routes;
@@ -235,6 +224,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
         this.uplink = new GcsUplink(base * c.share, scheduler.mtu());
         this.parser = new Parser(dialect);
         this.dialect = dialect;
+        this.v1 = new GcsV1Stations<>(dialect, GcsRoutes.MAX_STATIONS);
         this.onProblem = c.onProblem;
         Executor l = c.listeners != null ? Callbacks.serial(c.listeners) : sessionListeners;
         this.ownListeners = l == null ? Callbacks.newThread("ttctl-gcs-listeners") : null;
@@ -343,50 +333,20 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
             }
             got.clear();
             SocketAddress from = p.getSocketAddress();
-            GcsV1.Result v1 = GcsV1.upgrade(buf, p.getOffset(), p.getLength(), dialect, spokeV1(from));
-            heardSpeak(from, v1);
+            GcsV1.Result up = GcsV1.upgrade(buf, p.getOffset(), p.getLength(), dialect, v1.spokeV1(from));
+            String tell = v1.heard(from, up, describe(from));
+            if (tell != null) {
+                problem(tell, true); // once per message id, at most 16
+            }
             parser.reset(); // each datagram on its own: nothing a previous one left over
             long skipped = parser.stats().skippedBytes();
-            parser.feed(v1.bytes, 0, v1.bytes.length, add);
+            parser.feed(up.bytes, 0, up.bytes.length, add);
             parser.flush(add);
             boolean garbage = parser.stats().skippedBytes() > skipped;
             boolean carried = fromGcs(from, got, garbage);
             if (carried) {
                 scheduler.wake();
             }
-        }
-    }
-
-    private boolean spokeV1(SocketAddress from) {
-        synchronized (lock) {
-            Integer k = spoke.get(from);
-            return k != null && (k & 1) != 0;
-        }
-    }
-
-    /** What a datagram said of its station's MAVLink version; a MAVLink 1 id the dialect lacks, named once. */
-    private void heardSpeak(SocketAddress from, GcsV1.Result v1) {
-        String tell = null;
-        synchronized (lock) {
-            int bits = (v1.upgraded > 0 ? 1 : 0) | (v1.v2Frames > 0 ? 2 : 0);
-            if (bits != 0) {
-                Integer k = spoke.remove(from);
-                spoke.put(from, (k == null ? 0 : k) | bits);
-                if (spoke.size() > GcsRoutes.MAX_STATIONS) {
-                    Iterator<SocketAddress> it = spoke.keySet().iterator();
-                    it.next();
-                    it.remove(); // the station heard longest ago starts afresh if it comes back
-                }
-            }
-            v1Up += v1.upgraded;
-            v1Dropped += v1.unknown;
-            if (v1.unknownId >= 0 && v1Told.size() < 16 && v1Told.add(v1.unknownId)) {
-                tell = "not carrying MAVLink 1 message id " + v1.unknownId + " from the ground station at "
-                        + describe(from) + ": the dialect on the link has no such message (its CRC cannot be checked)";
-            }
-        }
-        if (tell != null) {
-            problem(tell, true); // once per message id, at most 16
         }
     }
 
@@ -476,33 +436,13 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     }
 
     private void send(SocketAddress to, byte[] frame, boolean radio) {
-        Integer k;
-        synchronized (lock) {
-            k = spoke.get(to);
-        }
-        if (k != null && k == 1) { // a station that speaks MAVLink 1 (and not 2): answered in kind
-            byte[] old = GcsV1.downgrade(frame, dialect);
-            if (old == null) {
-                int id = GcsV1.msgId(frame);
-                String tell = null;
-                synchronized (lock) {
-                    v1Dropped++;
-                    if (v1Told.size() < 16 && v1Told.add(id)) {
-                        MessageInfo info = dialect.info(id);
-                        tell = "not sending " + (info != null ? info.name() + " (id " + id + ")" : "message id " + id)
-                                + " to the MAVLink 1 ground station at " + describe(to) + ": MAVLink 1 carries "
-                                + "message ids up to 255 (set the station to MAVLink 2 to get it)";
-                    }
-                }
-                if (tell != null) {
-                    problem(tell, true); // once per message id, at most 16
-                }
-                return;
+        String[] why = {null};
+        frame = v1.forStation(to, frame, describe(to), why); // a station that speaks only MAVLink 1: in kind
+        if (frame == null) {
+            if (why[0] != null) {
+                problem(why[0], true); // once per message id, at most 16
             }
-            synchronized (lock) {
-                v1Down++;
-            }
-            frame = old;
+            return;
         }
         try {
             socket.send(new DatagramPacket(frame, frame.length, to));
@@ -650,23 +590,17 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
 
     /** MAVLink 1 frames from ground stations carried as MAVLink 2. */
     public long v1Up() {
-        synchronized (lock) {
-            return v1Up;
-        }
+        return v1.up();
     }
 
     /** Frames sent to MAVLink 1 ground stations as MAVLink 1. */
     public long v1Down() {
-        synchronized (lock) {
-            return v1Down;
-        }
+        return v1.down();
     }
 
     /** What MAVLink 1 could not carry: answers with ids over 255, MAVLink 1 ids the dialect lacks. */
     public long v1Dropped() {
-        synchronized (lock) {
-            return v1Dropped;
-        }
+        return v1.dropped();
     }
 
     /** The system id the last frame not carried was for, or -1. */
