@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from conftest import TTAPI, assert_no_traceback, run_ttctl
-from ttctl.codegen.lang_cpp import NODE_HEADERS, RUNTIME_HEADERS, TRANSFER_HEADERS
+from ttctl.codegen.lang_cpp import NODE_HEADERS, RUNTIME_HEADERS, SDK_HEADERS, TRANSFER_HEADERS
 
 WARN = ["-std=c++17", "-Wall", "-Wextra", "-Wpedantic", "-Werror"]
 # TT_COMMAND_ACK as the README's conformance example encodes it (seq 7, from 1/240)
@@ -244,9 +244,10 @@ def test_cpp_namespace_builds_and_runs(tmp_path: Path) -> None:
         "myco/drone/packets.hpp", "myco/drone/udp_forward.hpp", "myco/drone/sha256.hpp", "myco/drone/scheduler.hpp",
         "myco/drone/commands.hpp", "myco/drone/udp_link.hpp", "conformance.cpp", "conformance_json.hpp",
         "conformance_json_reader.hpp", "onboard/ttapi_plugin.hpp",
-        *(f"myco/drone/{h}.hpp" for h in (*RUNTIME_HEADERS, *TRANSFER_HEADERS, *NODE_HEADERS))}
+        *(f"myco/drone/{h}.hpp" for h in (*RUNTIME_HEADERS, *TRANSFER_HEADERS, *NODE_HEADERS, *SDK_HEADERS))}
     for names, ns in (((*RUNTIME_HEADERS, "enums", "messages"), "myco::drone"),
-                      (("scheduler", "commands", *TRANSFER_HEADERS, *NODE_HEADERS, "udp_link"), "myco::drone::link")):
+                      (("scheduler", "commands", *TRANSFER_HEADERS, *NODE_HEADERS, *SDK_HEADERS, "udp_link"),
+                       "myco::drone::link")):
         for name in names:
             text = (cpp / "myco" / "drone" / f"{name}.hpp").read_text()
             assert f"#ifndef TTCTL_MYCO_DRONE_{name.upper()}_HPP" in text and "namespace ttapi" not in text

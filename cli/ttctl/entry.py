@@ -16,7 +16,10 @@ def _interrupted(signum: int, frame: object) -> None:
 
 
 def main() -> None:
-    _signal.signal(_signal.SIGINT, _interrupted)  # until the CLI can turn Ctrl-C into a clean exit itself
+    try:
+        _signal.signal(_signal.SIGINT, _interrupted)  # until the CLI can turn Ctrl-C into a clean exit itself
+    except KeyboardInterrupt:  # a Ctrl-C that came while Python was loading this very module
+        _interrupted(_signal.SIGINT, None)
     from .app import main as app_main
     from .interrupts import install
 

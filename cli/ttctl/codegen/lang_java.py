@@ -65,7 +65,8 @@ RUNTIME_FILES = [
     "CommandQueue",
     "LinkScheduler", "DjiReceiving", "DjiLink", "PayloadLink",
     "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
-    "GcsRules", "GcsUplink", "GcsQuality", "GcsRoutes", "GcsV1", "GcsV1Stations", "GcsBridge",  # the ground-station bridge (issue 22)
+    # the ground-station bridge (issue 22)
+    "GcsRules", "GcsUplink", "GcsQuality", "GcsRoutes", "GcsV1", "GcsV1Stations", "GcsBridge",
 ]
 RUNTIME_CLASSES = frozenset(RUNTIME_FILES + ["SendSetpoint"])
 # File transfer (package <root>.transfer), for dialects that have ttctl's file messages.
