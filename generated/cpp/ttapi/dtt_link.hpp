@@ -48,18 +48,9 @@ public:
             dropped_.fetch_add(1, std::memory_order_relaxed);
             return;
         }
-        {
-            std::lock_guard<std::mutex> lock(m_);
-            if (count_ == QUEUE) {
-                dropped_.fetch_add(1, std::memory_order_relaxed);
-                return;
-            }
-            Slot& s = queue_[(head_ + count_) % QUEUE];
-            std::memcpy(s.bytes, data, static_cast<std::size_t>(n));
-            s.len = static_cast<std::size_t>(n);
-            ++count_;
+        if (!inbox_.put(data, static_cast<std::size_t>(n), true)) {
+            dropped_.fetch_add(1, std::memory_order_relaxed);
         }
-        cv_.notify_one();
     }
 
     /// Drive the node until stop() (or `external` becomes true).
@@ -67,26 +58,10 @@ public:
     {
         double next = monotonic_now();
         while (!stop_.load() && (external == nullptr || !external->load())) {
-            Slot s;
-            bool got = false;
-            {
-                std::unique_lock<std::mutex> lock(m_);
-                if (count_ == 0) {
-                    const double wait = next - monotonic_now();
-                    if (wait > 0) {
-                        cv_.wait_for(lock, std::chrono::duration<double>(std::min(wait, 0.5)));
-                    }
-                }
-                if (count_ != 0) {
-                    s = queue_[head_];
-                    head_ = (head_ + 1) % QUEUE;
-                    --count_;
-                    got = true;
-                }
-            }
-            const double now = monotonic_now();
-            if (got) {
-                node_.receive(now, s.bytes, s.len, 0);
+            std::uint8_t packet[MTU];
+            std::size_t len = 0;
+            if (inbox_.take(next, packet, len)) {
+                node_.receive(monotonic_now(), packet, len, 0);
             }
             next = pump_.step(monotonic_now(), [this](const std::uint8_t* p, std::size_t n) {
                 send_(p, n);
@@ -98,26 +73,17 @@ public:
     void stop() noexcept
     {
         stop_.store(true);
-        cv_.notify_all();
+        inbox_.wake();
     }
 
     std::uint64_t dropped() const noexcept { return dropped_.load(); }
     std::uint64_t sent() const noexcept { return sent_.load(); }
 
 private:
-    struct Slot {
-        std::uint8_t bytes[MTU];
-        std::size_t len;
-    };
-
     Node& node_;
     Send send_;
     NodePump pump_;
-    std::mutex m_;
-    std::condition_variable cv_;
-    Slot queue_[QUEUE] = {};
-    std::size_t head_ = 0;
-    std::size_t count_ = 0;
+    PacketInbox<QUEUE, MTU> inbox_;
     std::atomic<bool> stop_{false};
     std::atomic<std::uint64_t> dropped_{0};
     std::atomic<std::uint64_t> sent_{0};

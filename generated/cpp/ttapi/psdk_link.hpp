@@ -166,27 +166,9 @@ public:
             dropped_.fetch_add(1, std::memory_order_relaxed);
             return;
         }
-        bool locked = false;
-        for (int i = 0; i < 64 && !locked; ++i) {
-            locked = m_.try_lock();
-        }
-        if (!locked) {
+        if (!inbox_.put(data, len, false)) {
             dropped_.fetch_add(1, std::memory_order_relaxed);
-            return;
         }
-        const bool room = count_ < QUEUE;
-        if (room) {
-            Slot& s = queue_[(head_ + count_) % QUEUE];
-            std::memcpy(s.bytes, data, len);
-            s.len = len;
-            ++count_;
-        }
-        m_.unlock();
-        if (!room) {
-            dropped_.fetch_add(1, std::memory_order_relaxed);
-            return;
-        }
-        cv_.notify_one();
     }
 
     /// Drive the node until stop() (or `external` becomes true).
@@ -194,26 +176,10 @@ public:
     {
         double next = monotonic_now();
         while (!stop_.load() && (external == nullptr || !external->load())) {
-            Slot s;
-            bool got = false;
-            {
-                std::unique_lock<std::mutex> lock(m_);
-                if (count_ == 0) {
-                    const double wait = next - monotonic_now();
-                    if (wait > 0) {
-                        cv_.wait_for(lock, std::chrono::duration<double>(std::min(wait, 0.5)));
-                    }
-                }
-                if (count_ != 0) {
-                    s = queue_[head_];
-                    head_ = (head_ + 1) % QUEUE;
-                    --count_;
-                    got = true;
-                }
-            }
-            const double now = monotonic_now();
-            if (got) {
-                node_.receive(now, s.bytes, s.len, 0);
+            std::uint8_t packet[MAX_IN];
+            std::size_t len = 0;
+            if (inbox_.take(next, packet, len)) {
+                node_.receive(monotonic_now(), packet, len, 0);
             }
             next = step(monotonic_now());
         }
@@ -222,7 +188,7 @@ public:
     void stop() noexcept
     {
         stop_.store(true);
-        cv_.notify_all();
+        inbox_.wake();
     }
 
     std::uint64_t received() const noexcept { return callbacks_.load(); }  // callbacks the SDK made
@@ -235,11 +201,6 @@ public:
     std::uint64_t lost() const noexcept { return lost_; }  // packets no room was left to hold
 
 private:
-    struct Slot {
-        std::uint8_t bytes[MAX_IN];
-        std::size_t len;
-    };
-
     static std::atomic<PsdkLink*>* slots() noexcept
     {
         static std::atomic<PsdkLink*> table[ADDRESSES] = {};
@@ -409,11 +370,7 @@ private:
     E_DjiChannelAddress address_;
     Problem on_problem_;
     NodePump pump_;
-    std::mutex m_;
-    std::condition_variable cv_;
-    Slot queue_[QUEUE] = {};
-    std::size_t head_ = 0;
-    std::size_t count_ = 0;
+    PacketInbox<QUEUE, MAX_IN> inbox_;
     std::atomic<bool> stop_{false};
     std::atomic<std::uint64_t> callbacks_{0};
     std::atomic<std::uint64_t> dropped_{0};
