@@ -16,6 +16,7 @@ from typing import Any
 import pytest
 
 from e2e_lib import LOCAL, Start, free_port, mavproxy_exe, run_mavproxy, until
+from mavsdk_child import fly
 
 EARTH_RADIUS = 6_378_137.0
 
@@ -32,7 +33,6 @@ _until = functools.partial(until, poll=0.1)
 
 def test_mavsdk_offboard_and_manual_control_fly_what_they_command(tmp_path: Path, start: Start) -> None:
     pytest.importorskip("mavsdk", reason="mavsdk is in the test extra")
-    from mavsdk.asyncio import ComponentType, Configuration, Mavsdk
     from mavsdk.asyncio.plugins.action import ActionAsync
     from mavsdk.asyncio.plugins.manual_control import ManualControlAsync
     from mavsdk.asyncio.plugins.offboard import OffboardAsync
@@ -43,71 +43,69 @@ def test_mavsdk_offboard_and_manual_control_fly_what_they_command(tmp_path: Path
     port = free_port()
     node = onboard(start, port, speed="2")
 
-    async def main() -> None:
-        cfg = Configuration.create_with_component_type(ComponentType.GROUND_STATION)
-        async with Mavsdk(cfg) as m:
-            await m.add_any_connection(f"udpin://{LOCAL}:{port}")
-            system = await m.first_autopilot(timeout_s=15)
-            assert system is not None
-            tel, act = TelemetryAsync(system), ActionAsync(system)
-            off, man = OffboardAsync(system), ManualControlAsync(system)
-            await _until(tel.health, lambda h: h.is_armable, 10)
-            assert await tel.flight_mode() == FlightMode.HOLD
-            await act.arm()
-            await act.set_takeoff_altitude(3.0)
-            await act.takeoff()
-            await _until(tel.position, lambda p: p.relative_altitude_m > 2.8, 15)
-            await _until(tel.flight_mode, lambda f: f == FlightMode.HOLD, 5)  # the climb done
-            with pytest.raises(OffboardError):
-                await off.start()  # no set-point yet: MAVSDK itself refuses
-            await off.set_velocity_ned(VelocityNedYaw(0.0, 0.0, 0.0, 90.0))
-            await off.start()
-            assert await off.is_active()
-            await _until(tel.flight_mode, lambda f: f == FlightMode.OFFBOARD, 3)
-            await _until(tel.heading, lambda h: abs(h.heading_deg - 90) < 2, 5)
-            before = await tel.position_velocity_ned()
-            await off.set_velocity_ned(VelocityNedYaw(0.0, 1.0, 0.0, 90.0))
-            await asyncio.sleep(2.5)  # 5 s of the vehicle's clock at --speed 2
-            await off.set_velocity_ned(VelocityNedYaw(0.0, 0.0, 0.0, 90.0))
+    async def main(m: Any) -> None:
+        await m.add_any_connection(f"udpin://{LOCAL}:{port}")
+        system = await m.first_autopilot(timeout_s=15)
+        assert system is not None
+        tel, act = TelemetryAsync(system), ActionAsync(system)
+        off, man = OffboardAsync(system), ManualControlAsync(system)
+        await _until(tel.health, lambda h: h.is_armable, 10)
+        assert await tel.flight_mode() == FlightMode.HOLD
+        await act.arm()
+        await act.set_takeoff_altitude(3.0)
+        await act.takeoff()
+        await _until(tel.position, lambda p: p.relative_altitude_m > 2.8, 15)
+        await _until(tel.flight_mode, lambda f: f == FlightMode.HOLD, 5)  # the climb done
+        with pytest.raises(OffboardError):
+            await off.start()  # no set-point yet: MAVSDK itself refuses
+        await off.set_velocity_ned(VelocityNedYaw(0.0, 0.0, 0.0, 90.0))
+        await off.start()
+        assert await off.is_active()
+        await _until(tel.flight_mode, lambda f: f == FlightMode.OFFBOARD, 3)
+        await _until(tel.heading, lambda h: abs(h.heading_deg - 90) < 2, 5)
+        before = await tel.position_velocity_ned()
+        await off.set_velocity_ned(VelocityNedYaw(0.0, 1.0, 0.0, 90.0))
+        await asyncio.sleep(2.5)  # 5 s of the vehicle's clock at --speed 2
+        await off.set_velocity_ned(VelocityNedYaw(0.0, 0.0, 0.0, 90.0))
+        await asyncio.sleep(1.5)
+        after = await tel.position_velocity_ned()
+        moved_e = after.position.east_m - before.position.east_m
+        moved_n = after.position.north_m - before.position.north_m
+        assert moved_e == pytest.approx(5.0, rel=0.1) and abs(moved_n) < 0.3, (moved_n, moved_e)
+        assert abs(after.position.down_m - before.position.down_m) < 0.2
+        await off.stop()
+        await _until(tel.flight_mode, lambda f: f == FlightMode.HOLD, 3)
+        # position control by the sticks: forward (the vehicle faces east) for 2 s
+        stop = asyncio.Event()
+        sticks = [0.0, 0.0, 0.5, 0.0]
+
+        async def feed() -> None:
+            while not stop.is_set():
+                await man.set_manual_control_input(*sticks)
+                await asyncio.sleep(0.05)
+
+        feeder = asyncio.ensure_future(feed())
+        try:
+            await asyncio.sleep(0.3)
+            await man.start_position_control()
+            await _until(tel.flight_mode, lambda f: f == FlightMode.POSCTL, 3)
+            here = await tel.position_velocity_ned()
+            sticks[0] = 1.0
             await asyncio.sleep(1.5)
-            after = await tel.position_velocity_ned()
-            moved_e = after.position.east_m - before.position.east_m
-            moved_n = after.position.north_m - before.position.north_m
-            assert moved_e == pytest.approx(5.0, rel=0.1) and abs(moved_n) < 0.3, (moved_n, moved_e)
-            assert abs(after.position.down_m - before.position.down_m) < 0.2
-            await off.stop()
-            await _until(tel.flight_mode, lambda f: f == FlightMode.HOLD, 3)
-            # position control by the sticks: forward (the vehicle faces east) for 2 s
-            stop = asyncio.Event()
-            sticks = [0.0, 0.0, 0.5, 0.0]
+            sticks[0] = 0.0
+            await asyncio.sleep(1.5)
+            there = await tel.position_velocity_ned()
+            assert there.position.east_m - here.position.east_m > 3.0
+            assert abs(there.position.north_m - here.position.north_m) < 0.3
+            assert abs(there.velocity.east_m_s) < 0.1  # centred sticks: holding
+        finally:
+            stop.set()
+            await feeder
+        await _until(tel.flight_mode, lambda f: f == FlightMode.RETURN_TO_LAUNCH, 3)  # NAV_RCL_ACT 2
+        await act.land()
+        await _until(tel.in_air, lambda a: not a, 30)
 
-            async def feed() -> None:
-                while not stop.is_set():
-                    await man.set_manual_control_input(*sticks)
-                    await asyncio.sleep(0.05)
-
-            feeder = asyncio.ensure_future(feed())
-            try:
-                await asyncio.sleep(0.3)
-                await man.start_position_control()
-                await _until(tel.flight_mode, lambda f: f == FlightMode.POSCTL, 3)
-                here = await tel.position_velocity_ned()
-                sticks[0] = 1.0
-                await asyncio.sleep(1.5)
-                sticks[0] = 0.0
-                await asyncio.sleep(1.5)
-                there = await tel.position_velocity_ned()
-                assert there.position.east_m - here.position.east_m > 3.0
-                assert abs(there.position.north_m - here.position.north_m) < 0.3
-                assert abs(there.velocity.east_m_s) < 0.1  # centred sticks: holding
-            finally:
-                stop.set()
-                await feeder
-            await _until(tel.flight_mode, lambda f: f == FlightMode.RETURN_TO_LAUNCH, 3)  # NAV_RCL_ACT 2
-            await act.land()
-            await _until(tel.in_air, lambda a: not a, 30)
-
-    asyncio.run(asyncio.wait_for(main(), 120))
+    fly(main, 120)
     assert "Traceback" not in node.stderr
     assert "manual control lost: return" in node.stderr
 

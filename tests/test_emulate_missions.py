@@ -15,6 +15,7 @@ from typing import Any
 import pytest
 
 from e2e_lib import LOCAL, Start, free_port, mavproxy_exe, run_mavproxy
+from mavsdk_child import fly
 from test_emulate_mavsdk import _until, onboard
 from test_emulate_onboard import command, gcs, wait_for
 
@@ -32,7 +33,6 @@ def east(lat0: float, lon0: float, metres: float) -> float:
 
 def test_mavsdk_pauses_continues_sets_the_current_item_and_sees_the_mission_finish(start: Start) -> None:
     pytest.importorskip("mavsdk", reason="mavsdk is in the test extra")
-    from mavsdk.asyncio import ComponentType, Configuration, Mavsdk
     from mavsdk.asyncio.plugins.action import ActionAsync
     from mavsdk.asyncio.plugins.mission import MissionAsync
     from mavsdk.asyncio.plugins.telemetry import TelemetryAsync
@@ -42,47 +42,45 @@ def test_mavsdk_pauses_continues_sets_the_current_item_and_sees_the_mission_fini
     port = free_port()
     node = onboard(start, port)
 
-    async def main() -> None:
-        cfg = Configuration.create_with_component_type(ComponentType.GROUND_STATION)
-        async with Mavsdk(cfg) as m:
-            await m.add_any_connection(f"udpin://{LOCAL}:{port}")
-            system = await m.first_autopilot(timeout_s=15)
-            assert system is not None
-            tel, act, mis = TelemetryAsync(system), ActionAsync(system), MissionAsync(system)
-            home = await _until(tel.home, lambda h: abs(h.latitude_deg - 46.0503) < 1e-6, 10)
-            await _until(tel.health, lambda h: h.is_armable, 10)
-            lat0, lon0 = home.latitude_deg, home.longitude_deg
-            route = [(0.0, 0.0), (16.0, 0.0), (16.0, 10.0), (0.0, 10.0)]
-            items = [MissionItem(north(lat0, n), east(lat0, lon0, e), 5.0, math.nan, True, math.nan, math.nan,
-                                 MissionItem.CameraAction.NONE, math.nan, math.nan, math.nan, math.nan, math.nan,
-                                 MissionItem.VehicleAction.NONE) for n, e in route]
-            await mis.upload_mission(MissionPlan(items))
-            await act.arm()
-            await mis.start_mission()
-            await _until(tel.position, lambda p: (p.latitude_deg - lat0) * M_PER_DEG > 6.0, 40)
-            await mis.pause_mission()  # MAVSDK: hold mode
-            await _until(tel.flight_mode, lambda f: f == FlightMode.HOLD, 5)
-            await asyncio.sleep(0.5)
-            before = await tel.position()
-            await asyncio.sleep(1.5)
-            after = await tel.position()
-            assert abs(after.latitude_deg - before.latitude_deg) * M_PER_DEG < 0.3  # holding, not returning
-            assert await tel.flight_mode() == FlightMode.HOLD and await tel.in_air()
-            assert (await mis.mission_progress()).current == 1  # still on its way to item 1
-            await mis.start_mission()  # continue: on to item 1, not back to item 0
-            await _until(tel.flight_mode, lambda f: f == FlightMode.MISSION, 5)
-            await _until(tel.position, lambda p: (p.latitude_deg - lat0) * M_PER_DEG > 15.5, 30)
-            await asyncio.wait_for(mis.set_current_mission_item(3), 10)  # skip item 2
-            await _until(mis.is_mission_finished, bool, 40)
-            pos = await tel.position()
-            assert abs(pos.latitude_deg - lat0) * M_PER_DEG < 0.5
-            assert abs((pos.longitude_deg - lon0) * M_PER_DEG * math.cos(math.radians(lat0)) - 10) < 0.5
-            progress = await mis.mission_progress()
-            assert (progress.current, progress.total) == (4, 4)
-            await _until(tel.flight_mode, lambda f: f == FlightMode.HOLD, 5)  # PX4 holds after the last item
-            await act.land()
+    async def main(m: Any) -> None:
+        await m.add_any_connection(f"udpin://{LOCAL}:{port}")
+        system = await m.first_autopilot(timeout_s=15)
+        assert system is not None
+        tel, act, mis = TelemetryAsync(system), ActionAsync(system), MissionAsync(system)
+        home = await _until(tel.home, lambda h: abs(h.latitude_deg - 46.0503) < 1e-6, 10)
+        await _until(tel.health, lambda h: h.is_armable, 10)
+        lat0, lon0 = home.latitude_deg, home.longitude_deg
+        route = [(0.0, 0.0), (16.0, 0.0), (16.0, 10.0), (0.0, 10.0)]
+        items = [MissionItem(north(lat0, n), east(lat0, lon0, e), 5.0, math.nan, True, math.nan, math.nan,
+                             MissionItem.CameraAction.NONE, math.nan, math.nan, math.nan, math.nan, math.nan,
+                             MissionItem.VehicleAction.NONE) for n, e in route]
+        await mis.upload_mission(MissionPlan(items))
+        await act.arm()
+        await mis.start_mission()
+        await _until(tel.position, lambda p: (p.latitude_deg - lat0) * M_PER_DEG > 6.0, 40)
+        await mis.pause_mission()  # MAVSDK: hold mode
+        await _until(tel.flight_mode, lambda f: f == FlightMode.HOLD, 5)
+        await asyncio.sleep(0.5)
+        before = await tel.position()
+        await asyncio.sleep(1.5)
+        after = await tel.position()
+        assert abs(after.latitude_deg - before.latitude_deg) * M_PER_DEG < 0.3  # holding, not returning
+        assert await tel.flight_mode() == FlightMode.HOLD and await tel.in_air()
+        assert (await mis.mission_progress()).current == 1  # still on its way to item 1
+        await mis.start_mission()  # continue: on to item 1, not back to item 0
+        await _until(tel.flight_mode, lambda f: f == FlightMode.MISSION, 5)
+        await _until(tel.position, lambda p: (p.latitude_deg - lat0) * M_PER_DEG > 15.5, 30)
+        await asyncio.wait_for(mis.set_current_mission_item(3), 10)  # skip item 2
+        await _until(mis.is_mission_finished, bool, 40)
+        pos = await tel.position()
+        assert abs(pos.latitude_deg - lat0) * M_PER_DEG < 0.5
+        assert abs((pos.longitude_deg - lon0) * M_PER_DEG * math.cos(math.radians(lat0)) - 10) < 0.5
+        progress = await mis.mission_progress()
+        assert (progress.current, progress.total) == (4, 4)
+        await _until(tel.flight_mode, lambda f: f == FlightMode.HOLD, 5)  # PX4 holds after the last item
+        await act.land()
 
-    asyncio.run(asyncio.wait_for(main(), 150))
+    fly(main, 150)
     assert "Traceback" not in node.stderr
     # item 2 was never flown: the vehicle went from item 1 straight to item 3
     assert "mission complete" in node.stderr
@@ -90,7 +88,6 @@ def test_mavsdk_pauses_continues_sets_the_current_item_and_sees_the_mission_fini
 
 def test_mavsdk_geofence_is_enforced_with_gf_action(start: Start) -> None:
     pytest.importorskip("mavsdk", reason="mavsdk is in the test extra")
-    from mavsdk.asyncio import ComponentType, Configuration, Mavsdk
     from mavsdk.asyncio.plugins.action import ActionAsync
     from mavsdk.asyncio.plugins.geofence import GeofenceAsync
     from mavsdk.asyncio.plugins.param import ParamAsync
@@ -101,38 +98,36 @@ def test_mavsdk_geofence_is_enforced_with_gf_action(start: Start) -> None:
     port = free_port()
     node = onboard(start, port)
 
-    async def main() -> None:
-        cfg = Configuration.create_with_component_type(ComponentType.GROUND_STATION)
-        async with Mavsdk(cfg) as m:
-            await m.add_any_connection(f"udpin://{LOCAL}:{port}")
-            system = await m.first_autopilot(timeout_s=15)
-            assert system is not None
-            tel, act, geo, par = TelemetryAsync(system), ActionAsync(system), GeofenceAsync(system), ParamAsync(system)
-            home = await _until(tel.home, lambda h: abs(h.latitude_deg - 46.0503) < 1e-6, 10)
-            await _until(tel.health, lambda h: h.is_armable, 10)
-            lat0, lon0 = home.latitude_deg, home.longitude_deg
-            square = [Point(north(lat0, dn), east(lat0, lon0, de)) for dn, de in ((-20, -20), (20, -20), (20, 20),
-                                                                                  (-20, 20))]
-            await geo.upload_geofence(GeofenceData([Polygon(square, FenceType.INCLUSION)], []))
-            await par.set_param_int("GF_ACTION", 3)  # return
-            assert await par.get_param_int("GF_ACTION") == 3
-            await act.arm()
-            await act.set_takeoff_altitude(4.0)
-            await act.takeoff()
-            await _until(tel.position, lambda p: p.relative_altitude_m > 3.8, 20)
-            await act.goto_location(north(lat0, 35), lon0, home.absolute_altitude_m + 4, math.nan)
-            top = 0.0
-            end = time.monotonic() + 40
-            while time.monotonic() < end and await tel.flight_mode() != FlightMode.RETURN_TO_LAUNCH:
-                top = max(top, ((await tel.position()).latitude_deg - lat0) * M_PER_DEG)
-                await asyncio.sleep(0.1)
-            assert await tel.flight_mode() == FlightMode.RETURN_TO_LAUNCH
-            assert 18.5 < top < 21  # turned back at the 20 m fence (its breach predicted), not past it
-            await _until(tel.in_air, lambda a: not a, 90)
-            back = await tel.position()
-            assert abs(back.latitude_deg - lat0) * M_PER_DEG < 0.3
+    async def main(m: Any) -> None:
+        await m.add_any_connection(f"udpin://{LOCAL}:{port}")
+        system = await m.first_autopilot(timeout_s=15)
+        assert system is not None
+        tel, act, geo, par = TelemetryAsync(system), ActionAsync(system), GeofenceAsync(system), ParamAsync(system)
+        home = await _until(tel.home, lambda h: abs(h.latitude_deg - 46.0503) < 1e-6, 10)
+        await _until(tel.health, lambda h: h.is_armable, 10)
+        lat0, lon0 = home.latitude_deg, home.longitude_deg
+        square = [Point(north(lat0, dn), east(lat0, lon0, de)) for dn, de in ((-20, -20), (20, -20), (20, 20),
+                                                                              (-20, 20))]
+        await geo.upload_geofence(GeofenceData([Polygon(square, FenceType.INCLUSION)], []))
+        await par.set_param_int("GF_ACTION", 3)  # return
+        assert await par.get_param_int("GF_ACTION") == 3
+        await act.arm()
+        await act.set_takeoff_altitude(4.0)
+        await act.takeoff()
+        await _until(tel.position, lambda p: p.relative_altitude_m > 3.8, 20)
+        await act.goto_location(north(lat0, 35), lon0, home.absolute_altitude_m + 4, math.nan)
+        top = 0.0
+        end = time.monotonic() + 40
+        while time.monotonic() < end and await tel.flight_mode() != FlightMode.RETURN_TO_LAUNCH:
+            top = max(top, ((await tel.position()).latitude_deg - lat0) * M_PER_DEG)
+            await asyncio.sleep(0.1)
+        assert await tel.flight_mode() == FlightMode.RETURN_TO_LAUNCH
+        assert 18.5 < top < 21  # turned back at the 20 m fence (its breach predicted), not past it
+        await _until(tel.in_air, lambda a: not a, 90)
+        back = await tel.position()
+        assert abs(back.latitude_deg - lat0) * M_PER_DEG < 0.3
 
-    asyncio.run(asyncio.wait_for(main(), 150))
+    fly(main, 150)
     assert "geofence breached: outside the inclusion fence: return" in node.stderr
     assert "Traceback" not in node.stderr
 

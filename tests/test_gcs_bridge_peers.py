@@ -15,6 +15,7 @@ import os
 import re
 import signal
 import struct
+import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -26,6 +27,7 @@ import pytest
 os.environ.setdefault("MAVLINK20", "1")  # before pymavlink is imported: ground stations speak MAVLink 2
 
 from e2e_lib import LOCAL, Proc, Start, data_file, free_port, run_mavproxy, until
+from mavsdk_child import fly
 
 M_PER_DEG = 111_319.5
 HOME = (46.0503, 14.4686)
@@ -179,14 +181,6 @@ def no_traceback(*procs: Proc | None) -> None:
 _until = functools.partial(until, poll=0.1)
 
 
-def mavsdk_config() -> Any:
-    """MAVSDK as scripts use it: a ground station (245/190) by its default configuration, which
-    sends its HEARTBEAT only once it heard a vehicle's (see the default-configuration test)."""
-    from mavsdk.asyncio import ComponentType, Configuration
-
-    return Configuration.create_with_component_type(ComponentType.GROUND_STATION)
-
-
 async def persevere(go: Callable[[], Any], keep: bool = False, attempts: int = 3) -> Any:
     """A mission transfer as a user does it: tried again when MAVSDK gives up (TIMEOUT: its final
     MISSION_ACK lost, say, or its ~2.5 s retry budget run out). The seconds of the try that
@@ -225,27 +219,24 @@ def test_mavsdk_default_configuration_connects_through_the_bridge(tmp_path: Path
     """MAVSDK's default ground-station configuration sends nothing until it has heard a vehicle's
     HEARTBEAT; the vehicle behind the tablet must therefore be heard before any ground station spoke."""
     pytest.importorskip("mavsdk", reason="mavsdk is in the test extra")
-    from mavsdk.asyncio import Mavsdk
 
     c = chain(start, tmp_path, seed=2)
 
-    async def main() -> float:
-        async with Mavsdk(mavsdk_config()) as m:
-            t0 = time.monotonic()
-            await m.add_any_connection(f"udpin://{LOCAL}:{c.gcs[0]}")
-            system = await m.first_autopilot(timeout_s=10)
-            assert system is not None, f"no autopilot in 10 s; the tablet carried: {c.stop_tablet()}"
-            assert await system.get_system_id() == 1
-            return time.monotonic() - t0
+    async def main(m: Any) -> float:
+        t0 = time.monotonic()
+        await m.add_any_connection(f"udpin://{LOCAL}:{c.gcs[0]}")
+        system = await m.first_autopilot(timeout_s=10)
+        assert system is not None, f"no autopilot in 10 s; the tablet carried: {c.stop_tablet()}"
+        assert await system.get_system_id() == 1
+        return time.monotonic() - t0
 
-    print(f"\nMAVSDK (default configuration) connected through the bridge in {asyncio.run(main()):.1f} s")
+    print(f"\nMAVSDK (default configuration) connected through the bridge in {fly(main, 60):.1f} s")
 
 
 # -- 1. MAVSDK ------------------------------------------------------------------------------------
 @pytest.mark.parametrize("model", ["random", "burst"])
 def test_mavsdk_flies_a_mission_through_the_bridge(tmp_path: Path, start: Start, model: str) -> None:
     pytest.importorskip("mavsdk", reason="mavsdk is in the test extra")
-    from mavsdk.asyncio import Mavsdk
     from mavsdk.asyncio.plugins.action import ActionAsync
     from mavsdk.asyncio.plugins.mission import MissionAsync
     from mavsdk.asyncio.plugins.param import ParamAsync
@@ -254,53 +245,53 @@ def test_mavsdk_flies_a_mission_through_the_bridge(tmp_path: Path, start: Start,
     from mavsdk.plugins.telemetry import FlightMode
 
     c = chain(start, tmp_path, model=model, seed=3)
-    times: dict[str, float] = {}
-    tries: dict[str, list[str]] = {}
 
-    async def main() -> None:
-        async with Mavsdk(mavsdk_config()) as m:
-            t0 = time.monotonic()
-            await m.add_any_connection(f"udpin://{LOCAL}:{c.gcs[0]}")
-            system = await m.first_autopilot(timeout_s=10)
-            times["connect"] = time.monotonic() - t0
-            assert system is not None and await system.get_system_id() == 1
-            tel, act, par, mis = TelemetryAsync(system), ActionAsync(system), ParamAsync(system), MissionAsync(system)
-            home = await _until(tel.home, lambda h: abs(h.latitude_deg - HOME[0]) < 1e-6, 15)
-            pos = await _until(tel.position, lambda p: abs(p.latitude_deg - home.latitude_deg) < 1e-6, 15)
-            assert pos.relative_altitude_m < 0.1
-            assert not await tel.armed()
-            assert await tel.flight_mode() == FlightMode.HOLD
-            await _until(tel.health, lambda h: h.is_armable and h.is_global_position_ok, 15)
-            assert await par.get_param_float("MPC_XY_VEL_MAX") == pytest.approx(1.5)
-            await par.set_param_float("MPC_XY_VEL_MAX", 2.5)
-            assert await par.get_param_float("MPC_XY_VEL_MAX") == pytest.approx(2.5)
-            assert await par.get_param_int("NAV_DLL_ACT") == 2
-            await again(act.arm)
-            await _until(tel.armed, bool, 5)
-            await act.set_takeoff_altitude(4.0)
-            await again(act.takeoff)
-            await _until(tel.position, lambda p: p.relative_altitude_m > 3.8, 25)
-            await _until(tel.in_air, bool, 5)  # EXTENDED_SYS_STATE, a stream fitted to the link: a little later
-            # 20 items: a zig-zag 2 m apart (no speed: one MISSION_ITEM_INT each)
-            items = [MissionItem(home.latitude_deg + (2 * (i % 2)) / M_PER_DEG, home.longitude_deg
-                                 + 2 * i / (M_PER_DEG * math.cos(math.radians(home.latitude_deg))), 4.0 + i % 3,
-                                 math.nan, True, math.nan, math.nan, MissionItem.CameraAction.NONE, math.nan,
-                                 math.nan, math.nan, math.nan, math.nan, MissionItem.VehicleAction.NONE)
-                     for i in range(20)]
-            times["upload"], tries["upload"] = await persevere(lambda: mis.upload_mission(MissionPlan(items)))
-            (times["download"], tries["download"]), plan = await persevere(mis.download_mission, keep=True)
+    async def main(m: Any) -> tuple[dict[str, float], dict[str, list[str]]]:
+        times: dict[str, float] = {}
+        tries: dict[str, list[str]] = {}
+        t0 = time.monotonic()
+        await m.add_any_connection(f"udpin://{LOCAL}:{c.gcs[0]}")
+        system = await m.first_autopilot(timeout_s=10)
+        times["connect"] = time.monotonic() - t0
+        assert system is not None and await system.get_system_id() == 1
+        tel, act, par, mis = TelemetryAsync(system), ActionAsync(system), ParamAsync(system), MissionAsync(system)
+        home = await _until(tel.home, lambda h: abs(h.latitude_deg - HOME[0]) < 1e-6, 15)
+        pos = await _until(tel.position, lambda p: abs(p.latitude_deg - home.latitude_deg) < 1e-6, 15)
+        assert pos.relative_altitude_m < 0.1
+        assert not await tel.armed()
+        assert await tel.flight_mode() == FlightMode.HOLD
+        await _until(tel.health, lambda h: h.is_armable and h.is_global_position_ok, 15)
+        assert await par.get_param_float("MPC_XY_VEL_MAX") == pytest.approx(1.5)
+        await par.set_param_float("MPC_XY_VEL_MAX", 2.5)
+        assert await par.get_param_float("MPC_XY_VEL_MAX") == pytest.approx(2.5)
+        assert await par.get_param_int("NAV_DLL_ACT") == 2
+        await again(act.arm)
+        await _until(tel.armed, bool, 5)
+        await act.set_takeoff_altitude(4.0)
+        await again(act.takeoff)
+        await _until(tel.position, lambda p: p.relative_altitude_m > 3.8, 25)
+        await _until(tel.in_air, bool, 5)  # EXTENDED_SYS_STATE, a stream fitted to the link: a little later
+        # 20 items: a zig-zag 2 m apart (no speed: one MISSION_ITEM_INT each)
+        items = [MissionItem(home.latitude_deg + (2 * (i % 2)) / M_PER_DEG, home.longitude_deg
+                             + 2 * i / (M_PER_DEG * math.cos(math.radians(home.latitude_deg))), 4.0 + i % 3,
+                             math.nan, True, math.nan, math.nan, MissionItem.CameraAction.NONE, math.nan,
+                             math.nan, math.nan, math.nan, math.nan, MissionItem.VehicleAction.NONE)
+                 for i in range(20)]
+        times["upload"], tries["upload"] = await persevere(lambda: mis.upload_mission(MissionPlan(items)))
+        (times["download"], tries["download"]), plan = await persevere(mis.download_mission, keep=True)
 
-            def key(i: Any) -> tuple[float, float, float]:
-                return (round(i.latitude_deg, 7), round(i.longitude_deg, 7), round(i.relative_altitude_m, 2))
+        def key(i: Any) -> tuple[float, float, float]:
+            return (round(i.latitude_deg, 7), round(i.longitude_deg, 7), round(i.relative_altitude_m, 2))
 
-            assert [key(i) for i in plan.mission_items] == [key(i) for i in items]
-            await again(mis.start_mission)
-            await _until(tel.flight_mode, lambda f: f == FlightMode.MISSION, 10)
-            await _until(mis.mission_progress, lambda p: p.current >= 3, 30)  # flying it, item by item
-            await again(act.land)  # (LAND lasts about a second of wall time at --speed 4: not waited for as a mode)
-            await _until(tel.in_air, lambda a: not a, 40)
+        assert [key(i) for i in plan.mission_items] == [key(i) for i in items]
+        await again(mis.start_mission)
+        await _until(tel.flight_mode, lambda f: f == FlightMode.MISSION, 10)
+        await _until(mis.mission_progress, lambda p: p.current >= 3, 30)  # flying it, item by item
+        await again(act.land)  # (LAND lasts about a second of wall time at --speed 4: not waited for as a mode)
+        await _until(tel.in_air, lambda a: not a, 40)
+        return times, tries
 
-    asyncio.run(asyncio.wait_for(main(), 180))
+    times, tries = fly(main, 180)
     print(f"\nMAVSDK through the bridge ({model} loss 10 %): connect {times['connect']:.1f} s, "
           f"20-item upload {times['upload']:.1f} s (failed tries first: {tries['upload']}), "
           f"download {times['download']:.1f} s (failed tries first: {tries['download']})")
@@ -349,7 +340,6 @@ def test_two_ground_stations_each_get_their_own_answers(tmp_path: Path, start: S
     (the tablet's own ids: carried under another) on another: each gets the answers to its own
     commands only, both get the vehicle's HEARTBEAT and the bridge's RADIO_STATUS."""
     pytest.importorskip("mavsdk", reason="mavsdk is in the test extra")
-    from mavsdk.asyncio import Mavsdk
     from mavsdk.asyncio.plugins.action import ActionAsync
     from mavsdk.asyncio.plugins.mavlink_direct import MavlinkDirectAsync
     from mavsdk.asyncio.plugins.param import ParamAsync
@@ -359,7 +349,6 @@ def test_two_ground_stations_each_get_their_own_answers(tmp_path: Path, start: S
     gcs = Gcs(c.gcs[1])
     m = gcs.m
     results: dict[str, Any] = {}
-    at_mavsdk: list[tuple[str, int, int, str]] = []
 
     def pymavlink_side() -> None:
         gcs.vehicle("HEARTBEAT", timeout=15)
@@ -368,34 +357,50 @@ def test_two_ground_stations_each_get_their_own_answers(tmp_path: Path, start: S
                            for _ in range(3)]
         gcs.pump(6.0)  # MAVSDK arms and takes off meanwhile: its acks must not come here
 
-    async def main() -> None:
-        async with Mavsdk(mavsdk_config()) as mav:
-            await mav.add_any_connection(f"udpin://{LOCAL}:{c.gcs[0]}")
-            system = await mav.first_autopilot(timeout_s=10)
-            assert system is not None
-            tel, act, par = TelemetryAsync(system), ActionAsync(system), ParamAsync(system)
-            direct = MavlinkDirectAsync(system)
+    side_done = tmp_path / "pymavlink-side-done"  # MAVSDK, in its own process, stays until then
 
-            async def collect(name: str) -> None:  # what reached MAVSDK's port, as it parsed it
-                async for x in direct.subscribe_message(name):
-                    at_mavsdk.append((x.message_name, x.component_id, x.target_system_id, x.fields_json))
+    async def main(mav: Any) -> list[tuple[str, int, int, str]]:
+        at_mavsdk: list[tuple[str, int, int, str]] = []
+        await mav.add_any_connection(f"udpin://{LOCAL}:{c.gcs[0]}")
+        system = await mav.first_autopilot(timeout_s=10)
+        assert system is not None
+        tel, act, par = TelemetryAsync(system), ActionAsync(system), ParamAsync(system)
+        direct = MavlinkDirectAsync(system)
 
-            watchers = [asyncio.ensure_future(collect("RADIO_STATUS"))]
-            side = asyncio.ensure_future(asyncio.to_thread(pymavlink_side))
-            await _until(tel.health, lambda h: h.is_armable, 15)
-            assert await par.get_param_int("NAV_DLL_ACT") == 2
-            await again(act.arm)
-            await act.set_takeoff_altitude(3.0)
-            await again(act.takeoff)
-            await _until(tel.position, lambda p: p.relative_altitude_m > 2.8, 20)
-            await side
-            for w in watchers:
-                w.cancel()
+        async def collect(name: str) -> None:  # what reached MAVSDK's port, as it parsed it
+            async for x in direct.subscribe_message(name):
+                at_mavsdk.append((x.message_name, x.component_id, x.target_system_id, x.fields_json))
 
+        watchers = [asyncio.ensure_future(collect("RADIO_STATUS"))]
+        await _until(tel.health, lambda h: h.is_armable, 15)
+        assert await par.get_param_int("NAV_DLL_ACT") == 2
+        await again(act.arm)
+        await act.set_takeoff_altitude(3.0)
+        await again(act.takeoff)
+        await _until(tel.position, lambda p: p.relative_altitude_m > 2.8, 20)
+        while not side_done.exists():
+            await asyncio.sleep(0.1)
+        for w in watchers:
+            w.cancel()
+        return at_mavsdk
+
+    def side() -> None:
+        try:
+            pymavlink_side()
+        except BaseException as e:
+            results["pymavlink side"] = repr(e)
+        finally:
+            side_done.touch()
+
+    pymavlink_thread = threading.Thread(target=side, daemon=True)
+    pymavlink_thread.start()
     try:
-        asyncio.run(asyncio.wait_for(main(), 90))
+        at_mavsdk = fly(main, 90)
     finally:
+        side_done.touch()
+        pymavlink_thread.join(30)
         gcs.close()
+    assert "pymavlink side" not in results, results
     assert results["param"] == 2
     assert results["acks"] == [m.MAV_RESULT_ACCEPTED] * 3
     acks = gcs.received("COMMAND_ACK")
