@@ -63,7 +63,7 @@ RUNTIME_FILES = [
     "DecodeException", "Frame", "Parser", "Dispatcher", "Link", "UdpLink", "CommandContext",
     "CommandException", "Command", "MessageMatcher", "SendCommand", "ReceiveCommand", "CommandJob", "CommandEnds",
     "CommandQueue",
-    "LinkScheduler", "DjiReceiving", "DjiLink", "PayloadLink",
+    "LinkScheduler", "DjiReceiving", "DjiLink", "PayloadLink", "PipelineLink",
     "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
     # the ground-station bridge (issue 22)
     "GcsRules", "GcsUplink", "GcsQuality", "GcsRoutes", "GcsV1", "GcsV1Stations", "GcsBridge",
@@ -75,6 +75,7 @@ TRANSFER_FILES = ["RangeSet", "Names", "TransferConfig", "TransferResult", "Tran
                   "TransferRouter", "TransferTimer", "FileTransfers"]
 TRANSFER_FILES += ["SentLog", "ReceiverStatuses", "Sharing"]  # split out of FileSender and FileReceiver; rate grants
 TRANSFER_FILES += ["Geometry"]  # the data frames the link's packet size allows
+TRANSFER_FILES += ["DataPath"]  # file data on a MOP pipeline while it is open (issue 27)
 TRANSFER_MESSAGES = {"TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_REASON", "TT_FILE_DATA", "TT_FILE_DATA_WIDE",
                      "TT_FILE_DATA_FIT", "TT_FILE_REQUEST"}
 

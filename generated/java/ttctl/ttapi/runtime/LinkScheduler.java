@@ -143,6 +143,11 @@ public final class LinkScheduler implements AutoCloseable {
         return this;
     }
 
+    /** The signer set with {@link #setSigner}, or null. */
+    public UnaryOperator<byte[]> signer() {
+        return signer;
+    }
+
     /** Changes the rate cap (bytes per second, 0: none). */
     public void setRate(double rateBytesPerSecond) {
         if (rateBytesPerSecond < 0 || Double.isNaN(rateBytesPerSecond)) {

@@ -64,6 +64,16 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
          * {@link #rate} is 0 (a DjiLink: the M100's uplink carries about 500 B/s); 0: none.
          */
         public double linkRate;
+        /**
+         * A MOP pipeline beside the link (MSDK 5.3+, {@link PipelineLink}), or null: while it is
+         * open, file data (uploads, served files) goes on it at {@link #pipeRate} with its wide
+         * frames, and everything else stays on the link; frames arriving on it are handled as the
+         * link's. When it closes, running transfers go on over the link at once, and move back
+         * when it opens again. The session starts and closes it.
+         */
+        public PipelineLink pipeline;
+        /** The pipeline's rate for file data, bytes per second (default {@link PipelineLink#DEFAULT_RATE}). */
+        public double pipeRate = PipelineLink.DEFAULT_RATE;
     }
 
     /** The default of {@link Options#heartbeatMillis}: a HEARTBEAT a second. */
@@ -74,6 +84,15 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
     private final CommandQueue commands;
     private final Dispatcher dispatcher;
     private final FileTransfers files;
+    private final PipelineLink pipeline;
+    private final LinkScheduler pipeScheduler;
+    private final PipelineLink.StateListener pipeState = new PipelineLink.StateListener() {
+        @Override
+        public void onPipeline(boolean open, String why) {
+            // the state now, not the event's: events come in order, but a later one may be queued
+            files.setDataScheduler(pipeline.isOpen() ? pipeScheduler : null);
+        }
+    };
     private final Executor listeners;
     private final ExecutorService ownListeners;
     private final long heartbeatMillis;
@@ -110,6 +129,12 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         if (o.linkRate > 0) {
             files.setLinkRate(o.linkRate);
         }
+        this.pipeline = o.pipeline;
+        this.pipeScheduler = o.pipeline == null ? null : new LinkScheduler(o.pipeline, PipelineLink.MTU, o.pipeRate);
+        if (pipeScheduler != null) {
+            pipeScheduler.setSigner(scheduler.signer());
+            pipeline.setListenerExecutor(listeners);
+        }
         if (link instanceof DjiLink) {
             ((DjiLink) link).setListenerExecutor(listeners);
         } else if (link instanceof PayloadLink) {
@@ -131,6 +156,12 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         scheduler.start();
         commands.start();
         files.start();
+        if (pipeline != null) {
+            pipeScheduler.start();
+            pipeline.addListener(this);
+            pipeline.addStateListener(pipeState);
+            pipeline.start();
+        }
         if (link instanceof UdpLink) {
             ((UdpLink) link).addListener(this).start();
         } else if (link instanceof DjiLink) {
@@ -210,6 +241,11 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         return files;
     }
 
+    /** The pipeline's scheduler (file data while the pipeline is open), or null without a pipeline. */
+    public LinkScheduler pipeScheduler() {
+        return pipeScheduler;
+    }
+
     /** Where the app's listeners run. */
     public Executor listeners() {
         return listeners;
@@ -244,6 +280,12 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
             ((PayloadLink) link).removeListener(this);
         }
         files.close();
+        if (pipeline != null) {
+            pipeline.removeStateListener(pipeState);
+            pipeline.removeListener(this);
+            pipeScheduler.close();
+            pipeline.close();
+        }
         commands.close();
         scheduler.close();
         try {

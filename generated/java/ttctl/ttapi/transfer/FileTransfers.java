@@ -83,6 +83,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
     final List<Transfer> announce = new ArrayList<>();
     final FileReceiver receiver;
     final ServedFolder served = new ServedFolder(this);
+    final DataPath path = new DataPath(this);
     private final TransferRouter router = new TransferRouter(this);
     private final SecureRandom random = new SecureRandom();
     private final long t0 = System.nanoTime();
@@ -244,9 +245,14 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         return c;
     }
 
-    private double byteTime() {
-        double r = rate();
-        return r > 0 ? 1.0 / r : 0.0;
+    /**
+     * Sends file data (uploads, served files) through {@code pipe}, a MOP pipeline's scheduler,
+     * from now on, with its geometry and pace; null: back on the link's scheduler with its own.
+     * Running transfers move at once, by byte offset. Offers, statuses and requests stay on the link.
+     */
+    public FileTransfers setDataScheduler(LinkScheduler pipe) {
+        path.use(pipe, rate());
+        return this;
     }
 
     /**
@@ -337,14 +343,13 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         } finally {
             lock.unlock();
         }
-        scheduler.addSource(pull);
+        path.add(pull);
         return t;
     }
 
     /** Under the lock: a sender and its puller (the caller adds the puller to the scheduler, unlocked). */
     LinkScheduler.BulkSource startSender(final Transfer t, FileSender s) {
-        s.byteTime = byteTime();
-        s.geometry = new Geometry(scheduler.mtu(), scheduler.signing());
+        path.fit(s, rate());
         senders.put(t, s);
         LinkScheduler.BulkSource pull = new LinkScheduler.BulkSource() {
             @Override
@@ -570,7 +575,7 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
             lock.unlock();
         }
         for (LinkScheduler.BulkSource p : retired) {
-            scheduler.removeSource(p);
+            path.remove(p);
         }
         for (Runnable r : calls) {
             Callbacks.run(listeners, r, "a transfer listener");

@@ -95,10 +95,10 @@ final class TransferRouter {
             ft.lock.unlock();
         }
         for (LinkScheduler.BulkSource p : added) {
-            ft.scheduler.addSource(p);
+            ft.path.add(p);
         }
         if (wake) {
-            ft.scheduler.wake();
+            ft.path.wake();
         }
     }
 

@@ -95,7 +95,7 @@ final class TransferTimer implements Runnable {
                 ft.lock.unlock();
             }
             for (LinkScheduler.BulkSource p : retired) {
-                ft.scheduler.removeSource(p);
+                ft.path.remove(p);
             }
             for (byte[] f : out) {
                 try {
@@ -105,7 +105,7 @@ final class TransferTimer implements Runnable {
                 }
             }
             if (data || !out.isEmpty()) {
-                ft.scheduler.wake();
+                ft.path.wake();
             }
             for (Runnable r : calls) {
                 Callbacks.run(ft.listeners, r, "a transfer listener");
