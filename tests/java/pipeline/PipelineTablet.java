@@ -1,0 +1,203 @@
+import java.io.File;
+import java.net.DatagramSocket;
+import java.net.InetSocketAddress;
+import java.nio.file.Files;
+import java.security.MessageDigest;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+
+import dji.sdk.keyvalue.value.mop.PipelineDeviceType;
+import dji.sdk.keyvalue.value.mop.TransmissionControlType;
+import dji.v5.common.error.DJIPipeLineError;
+import dji.v5.common.error.IDJIError;
+import dji.v5.manager.mop.DataResult;
+import dji.v5.manager.mop.PipeStandIn;
+import dji.v5.manager.mop.Pipeline;
+import dji.v5.manager.mop.PipelineManager;
+import ttctl.ttapi.Ttapi;
+import ttctl.ttapi.commands.SendTtActionCommand;
+import ttctl.ttapi.enums.TtAction;
+import ttctl.ttapi.runtime.Link;
+import ttctl.ttapi.runtime.MavlinkMessage;
+import ttctl.ttapi.runtime.PipelineLink;
+import ttctl.ttapi.runtime.Session;
+import ttctl.ttapi.runtime.UdpLink;
+import ttctl.ttapi.transfer.Transfer;
+import ttctl.ttapi.transfer.TransferResult;
+
+/**
+ * The tablet of tests/test_java_pipeline.py: a Session on a low-speed link (UDP to udp=HOST:PORT,
+ * standing in for PayloadLink or DjiLink) with a MOP pipeline wired to the stand-in MSDK v5
+ * PipelineManager (tests/java/msdk5: TCP to TTCTL_FAKE_PIPELINE) as docs/dji/tablet-java.md wires
+ * it. Arguments key=value; prints "EVENT ..." lines and one "RESULT k=v ..." line.
+ *
+ * run=e2e send=FILE fetch=NAME dir=DIR: waits for the pipeline, then a command, an upload and a
+ * fetch; run=fail: (every SDK call fails) a command over the link, the SDK's words; run=flood
+ * secs=S: the peer floods the pipeline with garbage; a command over the link meanwhile.
+ */
+public final class PipelineTablet {
+    static final int PIPELINE_ID = 9745;
+    static final List<String> STATE = new CopyOnWriteArrayList<>();
+
+    /** An SDK result in ttctl's terms: DataResult's length and IDJIError's words. */
+    static PipelineLink.Result result(int length, IDJIError e) {
+        return e == null ? PipelineLink.Result.ok(length) : PipelineLink.Result.error(length, e.errorCode(), e.description());
+    }
+
+    /** The wiring, as docs/dji/tablet-java.md has it. */
+    static PipelineLink pipeline() {
+        PipelineManager mop = PipelineManager.getInstance();
+        return new PipelineLink(new PipelineLink.Sdk() {
+            private volatile Pipeline pipe;
+
+            @Override
+            public PipelineLink.Result connect() {
+                IDJIError e = mop.connectPipeline(PIPELINE_ID, PipelineDeviceType.ONBOARD, TransmissionControlType.STABLE);
+                pipe = e == null ? mop.getPipelines().get(PIPELINE_ID) : null;
+                return e != null || pipe != null ? result(0, e) : PipelineLink.Result.error(-1, "NO_PIPELINE", "not in getPipelines()");
+            }
+
+            @Override
+            public PipelineLink.Result read(byte[] buffer) {
+                DataResult r = pipe.readData(buffer);
+                IDJIError e = r.getError();
+                if (e != null && DJIPipeLineError.TIMEOUT.equals(e.errorCode())) {
+                    return PipelineLink.Result.ok(0); // nothing to read yet, as DJI's sample reads on
+                }
+                return result(r.getLength(), e);
+            }
+
+            @Override
+            public PipelineLink.Result write(byte[] data) {
+                DataResult r = pipe.writeData(data);
+                return result(r.getLength(), r.getError());
+            }
+
+            @Override
+            public PipelineLink.Result disconnect() {
+                return result(0, mop.disconnectPipeline(PIPELINE_ID, PipelineDeviceType.ONBOARD, TransmissionControlType.STABLE));
+            }
+        }, Ttapi.INSTANCE);
+    }
+
+    public static void main(String[] argv) throws Exception {
+        Map<String, String> a = new HashMap<>();
+        for (String s : argv) {
+            int i = s.indexOf('=');
+            a.put(s.substring(0, i), s.substring(i + 1));
+        }
+        String run = a.get("run");
+        StringBuilder out = new StringBuilder("RESULT run=" + run);
+        String[] udp = a.get("udp").split(":");
+        UdpLink low = new UdpLink(new DatagramSocket(new InetSocketAddress("127.0.0.1", 0)),
+                new InetSocketAddress(udp[0], Integer.parseInt(udp[1])), Ttapi.INSTANCE);
+        low.setMtu(Integer.parseInt(a.getOrDefault("mtu", "128")));
+        PipelineLink pipe = pipeline();
+        pipe.addStateListener((open, why) -> {
+            STATE.add((open ? "open: " : "closed: ") + why);
+            System.out.println("EVENT pipeline " + (open ? "open" : "closed") + ": " + why);
+        });
+        Session.Options options = new Session.Options();
+        options.rate = Double.parseDouble(a.getOrDefault("rate", "4000"));
+        options.pipeline = pipe;
+        options.pipeRate = Double.parseDouble(a.getOrDefault("pipe_rate", "100000"));
+        options.transfers = new ttctl.ttapi.transfer.TransferConfig();
+        options.transfers.giveUpAfter = Double.parseDouble(a.getOrDefault("timeout", "30"));
+        Session session = new Session((Link) low, 255, 190, options).start();
+        long t0 = System.nanoTime();
+        if ("e2e".equals(run)) {
+            while (!pipe.isOpen() && System.nanoTime() - t0 < 15_000_000_000L) {
+                Thread.sleep(20);
+            }
+            out.append(" opened=").append(pipe.isOpen());
+            double ms = command(session, 20000, out);
+            out.append(" command_ms=").append(Math.round(ms));
+            File f = new File(a.get("send"));
+            Transfer up = session.files().send(f, f.getName(), 1, 240, false, null);
+            Transfer down = a.containsKey("fetch")
+                    ? session.files().fetch(a.get("fetch"), new File(a.get("dir")), 1, 240, null) : null;
+            TransferResult ru = up.await(300, TimeUnit.SECONDS);
+            TransferResult rd = down == null ? null : down.await(300, TimeUnit.SECONDS);
+            out.append(" send_ok=").append(ru != null && ru.ok);
+            out.append(" send_sha256=").append(hex(f));
+            if (ru != null && !ru.ok) {
+                System.out.println("EVENT send failed: " + ru.message);
+            }
+            if (down != null) {
+                File got = new File(a.get("dir"), a.get("fetch"));
+                out.append(" fetch_ok=").append(rd != null && rd.ok);
+                out.append(" fetch_sha256=").append(got.isFile() ? hex(got) : "none");
+                if (rd != null && !rd.ok) {
+                    System.out.println("EVENT fetch failed: " + rd.message);
+                }
+            }
+            out.append(" command_after_ms=").append(Math.round(command(session, 20000, new StringBuilder())));
+        } else if ("fail".equals(run)) {
+            double ms = command(session, 20000, out);
+            out.append(" command_ms=").append(Math.round(ms));
+            Thread.sleep(Long.parseLong(a.getOrDefault("wait_ms", "4000")));
+            out.append(" problem_has_words=").append(has(pipe.problem()));
+            out.append(" told_state=").append(STATE.stream().anyMatch(PipelineTablet::has));
+            out.append(" states=").append(STATE.size());
+            out.append(" open=").append(pipe.isOpen());
+            System.out.println("EVENT problem: " + pipe.problem());
+        } else if ("flood".equals(run)) {
+            while (!pipe.isOpen() && System.nanoTime() - t0 < 15_000_000_000L) {
+                Thread.sleep(20);
+            }
+            out.append(" opened=").append(pipe.isOpen());
+            long end = System.nanoTime() + (long) (Double.parseDouble(a.getOrDefault("secs", "5")) * 1e9);
+            double worst = 0;
+            while (System.nanoTime() < end) {
+                worst = Math.max(worst, command(session, 20000, new StringBuilder()));
+            }
+            out.append(" worst_command_ms=").append(Math.round(worst));
+            Runtime rt = Runtime.getRuntime();
+            System.gc();
+            Thread.sleep(300);
+            System.gc();
+            out.append(" heap_mb=").append((rt.totalMemory() - rt.freeMemory()) >> 20);
+        }
+        out.append(" pipe_connects=").append(pipe.connects());
+        out.append(" pipe_bytes_out=").append(pipe.bytesOut());
+        out.append(" pipe_bytes_in=").append(pipe.bytesIn());
+        out.append(" pipe_frames_in=").append(pipe.framesIn());
+        out.append(" pipe_short_writes=").append(pipe.shortWrites());
+        out.append(" pipe_dropped=").append(pipe.droppedPackets());
+        out.append(" sdk_calls=").append(PipeStandIn.calls.get());
+        out.append(" sdk_connects=").append(PipeStandIn.connects.get());
+        out.append(" low_bytes=").append(session.scheduler().bytes());
+        out.append(" pipe_sched_bytes=").append(session.pipeScheduler().bytes());
+        System.out.println(out);
+        System.out.flush();
+        long c0 = System.nanoTime();
+        session.close();
+        System.out.println("EVENT closed in " + Math.round((System.nanoTime() - c0) / 1e6) + " ms");
+        System.exit(0);
+    }
+
+    /** Whether {@code s} carries the stand-in SDK's words. */
+    static boolean has(String s) {
+        return s != null && s.contains(PipeStandIn.WORDS) && s.contains(PipeStandIn.CODE);
+    }
+
+    static double command(Session s, long waitMs, StringBuilder out) throws Exception {
+        long t0 = System.nanoTime();
+        MavlinkMessage ack = s.submit(new SendTtActionCommand(1, 240, TtAction.TT_ACTION_SYNC_TIME, new float[4],
+                new byte[48])).get(waitMs, TimeUnit.MILLISECONDS);
+        out.append(" command_ack=").append(ack.name());
+        return (System.nanoTime() - t0) / 1e6;
+    }
+
+    static String hex(File f) throws Exception {
+        byte[] d = MessageDigest.getInstance("SHA-256").digest(Files.readAllBytes(f.toPath()));
+        StringBuilder b = new StringBuilder();
+        for (byte x : d) {
+            b.append(String.format("%02x", x));
+        }
+        return b.toString();
+    }
+}

@@ -1,0 +1,186 @@
+"""PipelineLink, the generated Java runtime's MOP link over DJI Mobile SDK v5's PipelineManager
+(5.3+), and the Session's two paths: file data on the pipeline while it is open, everything else
+on the low-speed link (ttctl's MOP contract, /work/notes/mop_contract.md; issue 27). The tablet is
+tests/java/pipeline/PipelineTablet.java wired as docs/dji/tablet-java.md wires it, on the
+stand-in PipelineManager/Pipeline of tests/java/msdk5 (DJI's packages and signatures; the stream
+is a TCP connection to TTCTL_FAKE_PIPELINE).
+
+Real processes: the tablet, `ttctl emulate onboard` on a UDP link, and between them
+tests/pipe_mux.py, the onboard side of the pipeline (pymavlink parses every frame on it).
+
+- a 2 MB upload and a 2 MB fetch, SHA-256 equal, the upload's data frames on the pipeline (none
+  on the low-speed link) and the fetch's arriving there; commands on the low-speed link;
+- the pipeline closed twice mid-transfer from the onboard side: both files still arrive, the
+  tablet reconnected;
+- short writes (7 bytes a call): frames still whole (pymavlink parses them all);
+- an SDK failing every call: its words reach the state listener and problem(), said once on
+  stderr; everything stays on the low-speed link; no hang;
+- a garbage flood on the pipeline: heap bounded, commands on the low-speed link still answered.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import random
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from conformance_lib import build_java, pymavlink_module
+from conftest import ROOT
+from e2e_lib import LOCAL, Start, free_port
+from pipe_mux import DATA, PipeMux
+
+pytestmark = pytest.mark.skipif(shutil.which("javac") is None or shutil.which("java") is None,
+                                reason="needs a JDK (javac, java)")
+
+MB2 = 2 * 1024 * 1024
+
+
+@pytest.fixture(scope="module")
+def classes(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    drivers = sorted((ROOT / "tests/java/msdk5").rglob("*.java")) + [ROOT / "tests/java/pipeline/PipelineTablet.java"]
+    cls, _ = build_java(tmp_path_factory.mktemp("java_pipeline"), drivers)
+    return cls
+
+
+@pytest.fixture(scope="module")
+def pm(tmp_path_factory: pytest.TempPathFactory) -> object:
+    return pymavlink_module("ttapi", tmp_path_factory.mktemp("pm"))
+
+
+def tablet(classes: Path, cwd: Path, mux: PipeMux, *args: str, env: dict[str, str] | None = None,
+           heap: str = "256m", timeout: float = 400) -> tuple[dict[str, str], str]:
+    e = dict(os.environ, TTCTL_FAKE_PIPELINE=f"{LOCAL}:{mux.pipe_port}", **(env or {}))
+    proc = subprocess.run(["java", f"-Xmx{heap}", "-cp", str(classes), "PipelineTablet", f"udp={LOCAL}:{mux.udp_port}",
+                           *args], capture_output=True, text=True, timeout=timeout, cwd=cwd, env=e)
+    text = proc.stdout + proc.stderr
+    assert proc.returncode == 0, text[-4000:]
+    lines = [ln for ln in proc.stdout.splitlines() if ln.startswith("RESULT ")]
+    assert lines, text[-4000:]
+    return dict(re.findall(r"(\w+)=(\S+)", lines[-1])), text
+
+
+def sha(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+# The onboard end's own link stands for both its paths here (tests/pipe_mux.py splits them): fast
+# and clean, with the largest packet ttctl's profiles allow (the mux cuts the pipeline's frames to it).
+PROFILE = """
+[pipe]
+description = "the mux's onboard side: a clean link with 255-byte packets"
+mtu = 255
+[pipe.up]
+rate_Bps = [[0, 1000000]]
+loss = [[0, 0.0]]
+latency_s = 0.001
+queue_packets = 64
+feedback = true
+[pipe.down]
+rate_Bps = [[0, 200000]]
+loss = [[0, 0.0]]
+latency_s = 0.001
+queue_packets = 64
+feedback = true
+"""
+
+
+def onboard(start: Start, tmp: Path) -> tuple[int, Path]:
+    port = free_port()
+    (tmp / "pipe.toml").write_text(PROFILE)
+    (tmp / "served").mkdir()
+    back = tmp / "served" / "flight.log"
+    back.write_bytes(random.Random(28).randbytes(MB2))
+    node = start("onboard", "emulate", "onboard", "--no-gcs", "--listen", f"udpin:{LOCAL}:{port}", "--inbox",
+                 str(tmp / "inbox"), "--serve", str(tmp / "served"), "--no-entry-points", "--profile-file",
+                 str(tmp / "pipe.toml"), "--profile", "pipe")
+    node.wait_for("onboard 1:")
+    return port, back
+
+
+def transfer(classes: Path, tmp: Path, start: Start, pm: object, drops: tuple[int, ...] = (),
+             env: dict[str, str] | None = None) -> tuple[dict[str, str], str, PipeMux, Path, Path]:
+    port, back = onboard(start, tmp)
+    up = tmp / "mission.bin"
+    up.write_bytes(random.Random(27).randbytes(MB2))
+    mux = PipeMux(pm, port, drops=drops, refuse=0.5, mtu=255)  # type: ignore[arg-type]
+    try:
+        r, text = tablet(classes, tmp, mux, "run=e2e", f"send={up}", "fetch=flight.log", f"dir={tmp / 'got'}",
+                         "timeout=60", env=env)
+    finally:
+        mux.close()
+    assert r["opened"] == "true" and r["command_ack"] == "TT_COMMAND_ACK", text[-3000:]
+    assert r["send_ok"] == "true" and r["fetch_ok"] == "true", text[-3000:]
+    assert sha(tmp / "inbox" / "mission.bin") == sha(up) == r["send_sha256"]
+    assert sha(tmp / "got" / "flight.log") == sha(back) == r["fetch_sha256"]
+    # the upload's data went on the pipeline (pymavlink parsed every frame of it there) ...
+    assert mux.pipe_up_bytes >= MB2, (mux.pipe_up, mux.low_up)
+    # ... and the fetch's came back on it
+    assert sum(mux.pipe_down[n] for n in DATA) * 246 >= MB2 * 0.9, mux.pipe_down
+    # commands, offers, statuses stayed on the low-speed link
+    assert not (set(mux.pipe_up) - DATA), mux.pipe_up
+    assert mux.low_up["TT_ACTION_COMMAND"] >= 2 and mux.low_up["TT_FILE_OFFER"] >= 1, mux.low_up
+    assert mux.low_up["TT_FILE_STATUS"] >= 1, mux.low_up
+    return r, text, mux, up, back
+
+
+def test_upload_and_fetch_over_the_pipeline(classes: Path, tmp_path: Path, start: Start, pm: object) -> None:
+    r, text, mux, _, _ = transfer(classes, tmp_path, start, pm)
+    # while the pipeline was open no file data went on the low-speed link
+    assert sum(mux.low_up[n] for n in DATA) == 0, mux.low_up
+    assert int(r["pipe_connects"]) == 1 and mux.connections == 1, text[-2000:]
+    assert int(r["pipe_bytes_out"]) >= MB2 and int(r["pipe_frames_in"]) >= MB2 // 246, r
+    assert int(r["low_bytes"]) < MB2 // 10, r  # the link carried control, not the files
+
+
+def test_pipeline_closed_twice_mid_transfer(classes: Path, tmp_path: Path, start: Start, pm: object) -> None:
+    r, text, mux, _, _ = transfer(classes, tmp_path, start, pm, drops=(MB2 // 3, 2 * MB2 // 3))
+    assert len(mux.dropped_at) == 2 and mux.connections >= 3, (mux.dropped_at, mux.connections)
+    assert int(r["pipe_connects"]) >= 3, r
+    assert text.count("EVENT pipeline closed") >= 2, text[-3000:]
+    # a drop costs the bytes in flight, not the file: what went twice is a small part of it
+    assert mux.pipe_up_bytes < 2 * MB2, mux.pipe_up_bytes
+
+
+def test_short_writes_keep_frames_whole(classes: Path, tmp_path: Path, start: Start, pm: object) -> None:
+    r, text, mux, _, _ = transfer(classes, tmp_path, start, pm, env={"TTCTL_FAKE_PIPELINE_SHORT": "1"})
+    assert int(r["pipe_short_writes"]) > 1000, r
+    assert int(r["pipe_connects"]) == 1, text[-2000:]
+
+
+def test_an_sdk_failing_every_call_is_said_once_in_its_words(classes: Path, tmp_path: Path, start: Start,
+                                                             pm: object) -> None:
+    port, _ = onboard(start, tmp_path)
+    mux = PipeMux(pm, port)  # type: ignore[arg-type]
+    try:
+        r, text = tablet(classes, tmp_path, mux, "run=fail", "wait_ms=4000", env={"TTCTL_FAKE_PIPELINE_FAIL": "1"},
+                         timeout=120)
+    finally:
+        mux.close()
+    assert r["command_ack"] == "TT_COMMAND_ACK", text[-3000:]  # the low-speed link works on
+    assert r["problem_has_words"] == "true" and r["told_state"] == "true" and r["open"] == "false", text[-3000:]
+    said = [ln for ln in text.splitlines() if ln.startswith("ttctl PipelineLink:")]
+    assert len(said) == 1, said  # once per kind, though connect failed every second
+    assert int(r["states"]) == 1, r
+    assert 3 <= int(r["sdk_calls"]) <= 10, r  # a connect a second, not a spin
+    assert mux.connections == 0 and int(r["sdk_connects"]) == 0, r
+    assert re.search(r"EVENT closed in \d{1,4} ms", text), text[-2000:]
+
+
+def test_a_garbage_flood_on_the_pipeline(classes: Path, tmp_path: Path, start: Start, pm: object) -> None:
+    port, _ = onboard(start, tmp_path)
+    mux = PipeMux(pm, port, garbage=True)  # type: ignore[arg-type]
+    try:
+        r, text = tablet(classes, tmp_path, mux, "run=flood", "secs=5", heap="64m", timeout=120)
+    finally:
+        mux.close()
+    assert r["opened"] == "true", text[-3000:]
+    assert mux.garbage_bytes > 10 * MB2 and int(r["pipe_bytes_in"]) > 10 * MB2, (mux.garbage_bytes, r)
+    assert int(r["heap_mb"]) < 32, r
+    assert int(r["worst_command_ms"]) < 2000, r
+    assert re.search(r"EVENT closed in \d{1,4} ms", text), text[-2000:]
