@@ -32,7 +32,7 @@ import ttctl.ttapi.msg.*;
 import ttctl.ttapi.runtime.*;
 import ttctl.ttapi.transfer.*;
 """
-V5_NAMES = ("PayloadCenter", "IPayloadManager", "IDJIError", "PayloadIndexType")
+V5_NAMES = ("PayloadCenter", "IPayloadManager", "IDJIError", "PayloadIndexType", "PipelineManager")
 
 
 @pytest.fixture(scope="module")
@@ -50,6 +50,7 @@ def test_every_java_block_of_the_tablet_page_compiles(classes: Path, tmp_path: P
     assert len(imports) == 1 and len(wirings) >= 2, blocks
     assert any("new DjiLink(" in b and "sendDataToOnboardSDKDevice" in b for b in wirings)
     assert any("new PayloadLink(" in b and "sendDataToPayload" in b and "addPayloadDataListener" in b for b in wirings)
+    assert any("new PipelineLink(" in b and "connectPipeline" in b and "options.pipeline" in b for b in wirings)
     sources = []
     for i, block in enumerate(wirings):
         v5 = any(n in block for n in V5_NAMES)
