@@ -39,6 +39,11 @@ import java.util.function.Consumer;
 public final class PipelineLink implements Link {
     /** A stream has no packet: the largest MAVLink 2 frame, signed (ttctl's PIPE_MTU). */
     public static final int MTU = 280;
+    /**
+     * Signed, a pipeline's frames carry link id {@code linkId ^ PIPE_LINK_BIT}: MAVLink signing
+     * orders timestamps per link id, and the two paths deliver with different delays.
+     */
+    public static final int PIPE_LINK_BIT = 0x80;
     /** The pipeline's rate for file data unless told otherwise, bytes per second. */
     public static final double DEFAULT_RATE = 100000;
     /** Wait between a close (or a failed connect) and the next connect. */

@@ -48,7 +48,11 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         public double rate;
         /** Where the app's listeners run (null: a single thread of the session's own). */
         public Executor listeners;
-        /** Signs every frame sent (MAVLink 2 signing); verify what arrives with the same Signing in the link's receiver. */
+        /**
+         * Signs every frame sent (MAVLink 2 signing); verify what arrives with the same Signing in
+         * the link's receiver. A pipeline's frames are signed under link id {@code linkId ^ 0x80}
+         * ({@link PipelineLink#PIPE_LINK_BIT}), as ttctl's ends sign theirs.
+         */
         public Signing signing;
         /**
          * Milliseconds between the session's own HEARTBEATs (MAV_TYPE_GCS, at CONTROL priority,
@@ -132,7 +136,15 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         this.pipeline = o.pipeline;
         this.pipeScheduler = o.pipeline == null ? null : new LinkScheduler(o.pipeline, PipelineLink.MTU, o.pipeRate);
         if (pipeScheduler != null) {
-            pipeScheduler.setSigner(scheduler.signer());
+            if (o.signing != null) {
+                final Signing pipeSigning = o.signing.withLinkId(o.signing.linkId() ^ PipelineLink.PIPE_LINK_BIT);
+                pipeScheduler.setSigner(new java.util.function.UnaryOperator<byte[]>() {
+                    @Override
+                    public byte[] apply(byte[] frame) {
+                        return pipeSigning.sign(frame);
+                    }
+                });
+            }
             pipeline.setListenerExecutor(listeners);
         }
         if (link instanceof DjiLink) {

@@ -118,6 +118,15 @@ public final class Signing {
         return newSha256().digest(passphrase.getBytes(StandardCharsets.UTF_8));
     }
 
+    /**
+     * The same key, clock and rule for unsigned frames under another link id: a second path's
+     * (a MOP pipeline's, {@code linkId ^ 0x80}), whose frames keep timestamps of their own, as
+     * MAVLink signing orders them per link id, system and component.
+     */
+    public Signing withLinkId(int linkId) {
+        return new Signing(key, linkId, allowUnsigned, clock);
+    }
+
     /** The link id put in outgoing signatures. */
     public int linkId() {
         return linkId;

@@ -18,6 +18,7 @@ import ttctl.ttapi.runtime.LinkScheduler;
 final class DataPath {
     private final FileTransfers ft;
     private volatile LinkScheduler pipe; // null: the data goes with everything else
+    private double linkInbound = -1; // the receiver's inbound capacity on the link, kept while a pipeline is open
 
     DataPath(FileTransfers ft) {
         this.ft = ft;
@@ -34,12 +35,26 @@ final class DataPath {
         return pipe != null;
     }
 
-    /** The geometry and byte time of the current path, for a sender starting or switching (under ft.lock). */
+    /**
+     * Cuts {@code s}'s frames for the current path from its next offset (under ft.lock), as
+     * Python's FileSender.use_path: the path's geometry and byte time; on a stream wide frames (it
+     * loses only what is in flight when it closes); loss learnt on the old path is forgotten.
+     * What was sent and not acknowledged stays owed: the receiver's status says what to resend.
+     */
     void fit(FileSender s, double linkRate) {
         LinkScheduler to = current();
-        s.geometry = new Geometry(to.mtu(), to.signing());
-        double r = to == ft.scheduler ? linkRate : to.rate();
-        s.byteTime = r > 0 ? 1.0 / r : 0.0;
+        boolean stream = to != ft.scheduler;
+        Geometry g = new Geometry(to.mtu(), to.signing());
+        double r = stream ? to.rate() : linkRate;
+        double byteTime = r > 0 ? 1.0 / r : 0.0;
+        if (stream == s.onStream && byteTime == s.byteTime && g.mtu == s.geometry.mtu && g.signed == s.geometry.signed) {
+            return;
+        }
+        s.geometry = g;
+        s.byteTime = byteTime;
+        s.onStream = stream;
+        s.mode = s.firstMode();
+        s.loss = new LossEstimate();
     }
 
     /** Wakes both paths' schedulers: data may go now. */
@@ -76,6 +91,15 @@ final class DataPath {
         List<LinkScheduler.BulkSource> moving;
         ft.lock.lock();
         try {
+            if (pipe != null && linkInbound < 0) { // grants share the pipeline among transfers while it is open
+                linkInbound = ft.receiver.statuses.inbound;
+                if (linkInbound > 0) {
+                    ft.receiver.statuses.inbound = pipe.rate();
+                }
+            } else if (pipe == null && linkInbound >= 0) {
+                ft.receiver.statuses.inbound = linkInbound;
+                linkInbound = -1;
+            }
             moving = new ArrayList<>(ft.pulls.values());
             for (FileSender s : ft.senders.values()) {
                 fit(s, linkRate);

@@ -60,6 +60,7 @@ final class FileSender {
     double byteTime;
     /** The data frames the link's packet allows (set with byteTime when the sender starts). */
     Geometry geometry = Geometry.DTT;
+    boolean onStream; // file data goes on a pipeline now: wide frames (DataPath.fit)
     final Sharing.Pacer pacer = new Sharing.Pacer(); // the receiver's rate grant for our data frames
     // stats
     long bytesSent;
@@ -140,10 +141,14 @@ final class FileSender {
         offerInterval = cfg.offerInterval;
         lastOffer = Double.NaN;
         offersSinceAnswer = 0;
-        mode = "wide".equals(cfg.frameMode) ? "wide" : "narrow";
+        mode = firstMode();
         loss = new LossEstimate();
         probeDue = Double.NaN;
         answers = 0;
+    }
+
+    String firstMode() {
+        return "auto".equals(cfg.frameMode) ? (onStream ? "wide" : "narrow") : "narrow".equals(cfg.frameMode) ? "narrow" : "wide";
     }
 
     boolean done() {
@@ -321,7 +326,7 @@ final class FileSender {
         }
         // sharing the link: a wide frame's three packets back to back fill the radio's buffer
         // for the others, and the buffer's overflow takes the whole frame
-        return pacer.grant > 0 ? "narrow" : loss.choose(mode, geometry);
+        return onStream ? "wide" : pacer.grant > 0 ? "narrow" : loss.choose(mode, geometry);
     }
 
     MavlinkMessage nextData(double now, int space) throws IOException {
