@@ -6,7 +6,9 @@ stand-in PipelineManager/Pipeline of tests/java/msdk5 (DJI's packages and signat
 is a TCP connection to TTCTL_FAKE_PIPELINE).
 
 Real processes: the tablet, `ttctl emulate onboard` on a UDP link, and between them
-tests/pipe_mux.py, the onboard side of the pipeline (pymavlink parses every frame on it).
+tests/pipe_mux.py, the onboard side of the pipeline (pymavlink parses every frame on it); and the
+tablet against ttctl's own pipeline end (`emulate onboard --profile mop --pipeline tcpin:`),
+directly and through `ttctl link relay --profile mop --pipe-drop`.
 
 - a 2 MB upload and a 2 MB fetch, SHA-256 equal, the upload's data frames on the pipeline (none
   on the low-speed link) and the fetch's arriving there; commands on the low-speed link;
@@ -15,7 +17,9 @@ tests/pipe_mux.py, the onboard side of the pipeline (pymavlink parses every fram
 - short writes (7 bytes a call): frames still whole (pymavlink parses them all);
 - an SDK failing every call: its words reach the state listener and problem(), said once on
   stderr; everything stays on the low-speed link; no hang;
-- a garbage flood on the pipeline: heap bounded, commands on the low-speed link still answered.
+- a garbage flood on the pipeline: heap bounded, commands on the low-speed link still answered;
+- end to end with ttctl's pipeline: 2 MB each way, SHA-256 equal, the data on the pipeline; and
+  the relay closing the pipeline twice mid-transfer.
 """
 
 from __future__ import annotations
@@ -25,6 +29,7 @@ import os
 import random
 import re
 import shutil
+import socket
 import subprocess
 from pathlib import Path
 
@@ -32,7 +37,7 @@ import pytest
 
 from conformance_lib import build_java, pymavlink_module
 from conftest import ROOT
-from e2e_lib import LOCAL, Start, free_port
+from e2e_lib import LOCAL, Start, free_port, relay
 from pipe_mux import DATA, PipeMux
 
 pytestmark = pytest.mark.skipif(shutil.which("javac") is None or shutil.which("java") is None,
@@ -53,10 +58,12 @@ def pm(tmp_path_factory: pytest.TempPathFactory) -> object:
     return pymavlink_module("ttapi", tmp_path_factory.mktemp("pm"))
 
 
-def tablet(classes: Path, cwd: Path, mux: PipeMux, *args: str, env: dict[str, str] | None = None,
+def tablet(classes: Path, cwd: Path, mux: PipeMux | tuple[int, int], *args: str, env: dict[str, str] | None = None,
            heap: str = "256m", timeout: float = 400) -> tuple[dict[str, str], str]:
-    e = dict(os.environ, TTCTL_FAKE_PIPELINE=f"{LOCAL}:{mux.pipe_port}", **(env or {}))
-    proc = subprocess.run(["java", f"-Xmx{heap}", "-cp", str(classes), "PipelineTablet", f"udp={LOCAL}:{mux.udp_port}",
+    """The Java tablet, its link to `mux`'s ports (or (udp port, pipeline port))."""
+    udp, pipe = (mux.udp_port, mux.pipe_port) if isinstance(mux, PipeMux) else mux
+    e = dict(os.environ, TTCTL_FAKE_PIPELINE=f"{LOCAL}:{pipe}", **(env or {}))
+    proc = subprocess.run(["java", f"-Xmx{heap}", "-cp", str(classes), "PipelineTablet", f"udp={LOCAL}:{udp}",
                            *args], capture_output=True, text=True, timeout=timeout, cwd=cwd, env=e)
     text = proc.stdout + proc.stderr
     assert proc.returncode == 0, text[-4000:]
@@ -184,3 +191,50 @@ def test_a_garbage_flood_on_the_pipeline(classes: Path, tmp_path: Path, start: S
     assert int(r["heap_mb"]) < 32, r
     assert int(r["worst_command_ms"]) < 2000, r
     assert re.search(r"EVENT closed in \d{1,4} ms", text), text[-2000:]
+
+
+# -- against ttctl's own pipeline end: emulate onboard --profile mop --pipeline tcpin: ----------------
+
+def mop_onboard(start: Start, tmp: Path, pipe_port: int) -> tuple[int, Path]:
+    port = free_port()
+    (tmp / "served").mkdir()
+    back = tmp / "served" / "flight.log"
+    back.write_bytes(random.Random(28).randbytes(MB2))
+    node = start("onboard", "emulate", "onboard", "--no-gcs", "--listen", f"udpin:{LOCAL}:{port}", "--inbox",
+                 str(tmp / "inbox"), "--serve", str(tmp / "served"), "--no-entry-points", "--profile", "mop",
+                 "--pipeline", f"tcpin:{LOCAL}:{pipe_port}")
+    node.wait_for("onboard 1:")
+    return port, back
+
+
+def mop_transfer(classes: Path, tmp: Path, back: Path, ports: tuple[int, int]) -> tuple[dict[str, str], str]:
+    up = tmp / "mission.bin"
+    up.write_bytes(random.Random(27).randbytes(MB2))
+    r, text = tablet(classes, tmp, ports, "run=e2e", f"send={up}", "fetch=flight.log", f"dir={tmp / 'got'}",
+                     "timeout=60", "rate=3000")
+    assert r["opened"] == "true" and r["command_ack"] == "TT_COMMAND_ACK", text[-3000:]
+    assert r["send_ok"] == "true" and r["fetch_ok"] == "true", text[-3000:]
+    assert sha(tmp / "inbox" / "mission.bin") == sha(up) == r["send_sha256"]
+    assert sha(tmp / "got" / "flight.log") == sha(back) == r["fetch_sha256"]
+    # both files' data went on the pipeline; the 3 KB/s link could not have carried them in the time
+    assert int(r["pipe_bytes_out"]) >= MB2 and int(r["pipe_bytes_in"]) >= MB2, r
+    return r, text
+
+
+def test_e2e_against_ttctl_emulate_onboard_with_a_pipeline(classes: Path, tmp_path: Path, start: Start) -> None:
+    pipe = free_port(socket.SOCK_STREAM)
+    port, back = mop_onboard(start, tmp_path, pipe)
+    r, text = mop_transfer(classes, tmp_path, back, (port, pipe))
+    assert int(r["pipe_connects"]) == 1, text[-2000:]
+    assert int(r["low_bytes"]) < MB2 // 20, r  # control, offers, statuses: not the files
+
+
+def test_e2e_pipeline_dropped_twice_by_ttctl_link_relay(classes: Path, tmp_path: Path, start: Start) -> None:
+    pipe_air, pipe_tab, a = free_port(socket.SOCK_STREAM), free_port(socket.SOCK_STREAM), free_port()
+    port, back = mop_onboard(start, tmp_path, pipe_air)
+    air = relay(start, a, port, "--profile", "mop", "--pipe-listen", f"tcp:{LOCAL}:{pipe_tab}", "--pipe-to",
+                f"tcp:{LOCAL}:{pipe_air}", "--pipe-drop", "8:1", "--pipe-drop", "16:1", "--stats-interval", "0")
+    r, text = mop_transfer(classes, tmp_path, back, (a, pipe_tab))
+    assert int(r["pipe_connects"]) >= 3, text[-3000:]
+    assert text.count("EVENT pipeline closed") >= 2, text[-3000:]
+    assert "Traceback" not in air.stderr, air.stderr[-2000:]
