@@ -22,9 +22,13 @@ import java.util.function.Consumer;
  * reads there ({@code Pipeline.readData}) and parses with a fresh {@link Parser} per connection:
  * the half frame left when a connection closes is dropped, never glued to the next one's bytes.
  * Packets (whole frames, at most {@value #MTU} bytes: any MAVLink 2 frame, signed) are written
- * on the caller's thread ({@link LinkScheduler}'s worker), never the SDK's; a short write
+ * on the caller's thread ({@link LinkScheduler}'s worker, paced at the pipeline's rate), never
+ * the SDK's, one at a time: nothing waits here beyond the packet being written, so what a close
+ * loses is what the SDK held; a short write
  * ({@code DataResult.getLength()} below the length) keeps the rest and writes it next on the same
- * connection. A close, a read error other than an idle read's TIMEOUT, or a failed write
+ * connection. A close, a read error other than an idle read's TIMEOUT (DJI's sample reads on
+ * after it; the wiring may also return {@code Result.ok(0)} for it), or a failed write (a write's
+ * TIMEOUT too)
  * disconnects ({@code disconnectPipeline}) and connects again after {@value #BACKOFF_MILLIS} ms,
  * for as long as the link runs; what was unwritten is dropped (the transfer engine resends by
  * byte offset).
