@@ -11,7 +11,8 @@ tablet against ttctl's own pipeline end (`emulate onboard --profile mop --pipeli
 directly and through `ttctl link relay --profile mop --pipe-drop`.
 
 - a 2 MB upload and a 2 MB fetch, SHA-256 equal, the upload's data frames on the pipeline (none
-  on the low-speed link) and the fetch's arriving there; commands on the low-speed link;
+  on the low-speed link) and the fetch's arriving there; commands on the low-speed link, their
+  p95 latency while the files move about what it is with none moving;
 - the pipeline closed twice mid-transfer from the onboard side: both files still arrive, the
   tablet reconnected;
 - short writes (7 bytes a call): frames still whole (pymavlink parses them all);
@@ -143,6 +144,7 @@ def test_upload_and_fetch_over_the_pipeline(classes: Path, tmp_path: Path, start
     assert int(r["pipe_connects"]) == 1 and mux.connections == 1, text[-2000:]
     assert int(r["pipe_bytes_out"]) >= MB2 and int(r["pipe_frames_in"]) >= MB2 // 246, r
     assert int(r["low_bytes"]) < MB2 // 10, r  # the link carried control, not the files
+    commands_keep_their_latency(r)
 
 
 def test_pipeline_closed_twice_mid_transfer(classes: Path, tmp_path: Path, start: Start, pm: object) -> None:
@@ -218,7 +220,17 @@ def mop_transfer(classes: Path, tmp: Path, back: Path, ports: tuple[int, int]) -
     assert sha(tmp / "got" / "flight.log") == sha(back) == r["fetch_sha256"]
     # both files' data went on the pipeline; the 3 KB/s link could not have carried them in the time
     assert int(r["pipe_bytes_out"]) >= MB2 and int(r["pipe_bytes_in"]) >= MB2, r
+    commands_keep_their_latency(r)
     return r, text
+
+
+def commands_keep_their_latency(r: dict[str, str]) -> None:
+    """Commands while both files move on the pipeline answer about as fast as with none moving."""
+    print("command latency p95 without files", r["base_p95_ms"], "ms, during them", r["during_p95_ms"], "ms,",
+          r["during_n"], "commands")
+    base, during = int(r["base_p95_ms"]), int(r["during_p95_ms"])
+    assert int(r["during_n"]) >= 5, r
+    assert during <= max(2 * base, base + 400), r
 
 
 def test_e2e_against_ttctl_emulate_onboard_with_a_pipeline(classes: Path, tmp_path: Path, start: Start) -> None:

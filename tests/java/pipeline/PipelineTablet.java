@@ -3,6 +3,8 @@ import java.net.DatagramSocket;
 import java.net.InetSocketAddress;
 import java.nio.file.Files;
 import java.security.MessageDigest;
+import java.util.ArrayList;
+import java.util.Collections;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -115,12 +117,25 @@ public final class PipelineTablet {
             out.append(" opened=").append(pipe.isOpen());
             double ms = command(session, 20000, out);
             out.append(" command_ms=").append(Math.round(ms));
+            List<Double> base = new ArrayList<>();
+            for (int i = 0; i < 5; i++) {
+                base.add(command(session, 20000, new StringBuilder()));
+            }
             File f = new File(a.get("send"));
             Transfer up = session.files().send(f, f.getName(), 1, 240, false, null);
             Transfer down = a.containsKey("fetch")
                     ? session.files().fetch(a.get("fetch"), new File(a.get("dir")), 1, 240, null) : null;
+            List<Double> during = new ArrayList<>();
+            while (!up.future().isDone() || (down != null && !down.future().isDone())) {
+                if (during.size() < 200) {
+                    during.add(command(session, 20000, new StringBuilder())); // commands while the files move
+                }
+                Thread.sleep(200);
+            }
             TransferResult ru = up.await(300, TimeUnit.SECONDS);
             TransferResult rd = down == null ? null : down.await(300, TimeUnit.SECONDS);
+            out.append(" base_p95_ms=").append(Math.round(p95(base)));
+            out.append(" during_p95_ms=").append(Math.round(p95(during))).append(" during_n=").append(during.size());
             out.append(" send_ok=").append(ru != null && ru.ok);
             out.append(" send_sha256=").append(hex(f));
             if (ru != null && !ru.ok) {
@@ -190,6 +205,15 @@ public final class PipelineTablet {
                 new byte[48])).get(waitMs, TimeUnit.MILLISECONDS);
         out.append(" command_ack=").append(ack.name());
         return (System.nanoTime() - t0) / 1e6;
+    }
+
+    static double p95(List<Double> xs) {
+        if (xs.isEmpty()) {
+            return -1;
+        }
+        List<Double> s = new ArrayList<>(xs);
+        Collections.sort(s);
+        return s.get(Math.min(s.size() - 1, (int) Math.ceil(0.95 * s.size()) - 1));
     }
 
     static String hex(File f) throws Exception {
