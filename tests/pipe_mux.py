@@ -10,7 +10,9 @@ TCP connection.
   connected, everything else (and file data while it is not) by UDP;
 - `drops`: byte counts of the tablet's pipeline data at which the mux closes the connection (a
   drop, from the onboard side), `refuse` seconds during which it then refuses connections;
-- `garbage`: the mux floods each connection with random bytes instead.
+- `garbage`: the mux floods each connection with random bytes instead;
+- `split`: the first connection gets the first half of a frame and is closed, the second the rest
+  of it and then one whole frame (a reader that glued the two connections' bytes would find two).
 """
 
 from __future__ import annotations
@@ -27,7 +29,8 @@ DATA = {"TT_FILE_DATA", "TT_FILE_DATA_WIDE", "TT_FILE_DATA_FIT"}
 
 class PipeMux:
     def __init__(self, pm: ModuleType, onboard_port: int, drops: tuple[int, ...] = (), refuse: float = 0.0,
-                 garbage: bool = False, mtu: int = 100) -> None:
+                 garbage: bool = False, mtu: int = 100, split: bool = False) -> None:
+        self.split = split
         self.mtu = mtu  # the onboard link's packet: the pipeline's frames are cut to it, in order
         self.pm = pm
         self.onboard = ("127.0.0.1", onboard_port)
@@ -127,6 +130,9 @@ class PipeMux:
             if self.garbage:
                 self._flood(c)
                 continue
+            if self.split:
+                self._split(c)
+                continue
             with self.lock:
                 self.conn = c
             mav = self.parser()  # a fresh parser per connection
@@ -164,6 +170,18 @@ class PipeMux:
                         r.close()
                     except (TimeoutError, OSError):
                         pass
+
+    def _split(self, c: socket.socket) -> None:
+        mav = self.pm.MAVLink(None, 1, 240)
+        x = mav.heartbeat_encode(18, 8, 0, 0, 4).pack(mav)
+        y = mav.heartbeat_encode(18, 8, 0, 0, 3).pack(mav)
+        half = len(x) // 2
+        if self.connections == 1:
+            c.sendall(x[:half])
+        else:
+            c.sendall(x[half:] + y)
+            time.sleep(3)  # open a while: the tablet reads it
+        c.close()
 
     def _flood(self, c: socket.socket) -> None:
         rnd = random.Random(27)

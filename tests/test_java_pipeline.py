@@ -16,6 +16,7 @@ directly and through `ttctl link relay --profile mop --pipe-drop`.
 - the pipeline closed twice mid-transfer from the onboard side: both files still arrive, the
   tablet reconnected;
 - short writes (7 bytes a call): frames still whole (pymavlink parses them all);
+- a half frame left by a close is dropped, never glued to the next connection's bytes;
 - an SDK failing every call: its words reach the state listener and problem(), said once on
   stderr; everything stays on the low-speed link; no hang;
 - a garbage flood on the pipeline: heap bounded, commands on the low-speed link still answered;
@@ -179,6 +180,19 @@ def test_an_sdk_failing_every_call_is_said_once_in_its_words(classes: Path, tmp_
     assert 3 <= int(r["sdk_calls"]) <= 10, r  # a connect a second, not a spin
     assert mux.connections == 0 and int(r["sdk_connects"]) == 0, r
     assert re.search(r"EVENT closed in \d{1,4} ms", text), text[-2000:]
+
+
+def test_a_half_frame_at_a_close_is_never_glued_to_the_next_connection(classes: Path, tmp_path: Path,
+                                                                       pm: object) -> None:
+    mux = PipeMux(pm, free_port(), split=True)  # type: ignore[arg-type]
+    try:
+        r, text = tablet(classes, tmp_path, mux, "run=split", timeout=120)
+    finally:
+        mux.close()
+    assert int(r["pipe_connects"]) >= 2 and mux.connections >= 2, text[-2000:]
+    # the second connection's whole frame, and not the first one's glued to its tail
+    assert int(r["pipe_frames_in"]) == 1, r
+    assert int(r["discarded"]) >= 6, r  # the first half (of a 21-byte HEARTBEAT) dropped at the close
 
 
 def test_a_garbage_flood_on_the_pipeline(classes: Path, tmp_path: Path, start: Start, pm: object) -> None:

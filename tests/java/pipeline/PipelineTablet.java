@@ -159,6 +159,12 @@ public final class PipelineTablet {
             out.append(" states=").append(STATE.size());
             out.append(" open=").append(pipe.isOpen());
             System.out.println("EVENT problem: " + pipe.problem());
+        } else if ("split".equals(run)) {
+            while ((pipe.connects() < 2 || pipe.framesIn() < 1) && System.nanoTime() - t0 < 15_000_000_000L) {
+                Thread.sleep(20);
+            }
+            Thread.sleep(300);
+            out.append(" discarded=").append(pipe.discardedAtClose());
         } else if ("flood".equals(run)) {
             while (!pipe.isOpen() && System.nanoTime() - t0 < 15_000_000_000L) {
                 Thread.sleep(20);

@@ -136,6 +136,7 @@ public final class PipelineLink implements Link {
     private volatile long shortWrites;
     private volatile long dropped;
     private volatile long framesIn;
+    private volatile long discarded;
 
     /** One connection: its parser, whether it broke, the rest of a short write. */
     private static final class Connection {
@@ -302,6 +303,11 @@ public final class PipelineLink implements Link {
         return dropped;
     }
 
+    /** Bytes of half frames dropped when their connection closed. */
+    public long discardedAtClose() {
+        return discarded;
+    }
+
     /** Messages parsed from the pipeline. */
     public long framesIn() {
         return framesIn;
@@ -396,6 +402,7 @@ public final class PipelineLink implements Link {
                     breakConnection(c, "readData", "CLOSED", "readData returned " + r.length);
                 }
             }
+            discarded += c.parser.pending();
             c.parser.reset(); // a half frame of a closed connection is never glued to the next one's
             if (!pause()) {
                 return;
