@@ -17,6 +17,7 @@ directly and through `ttctl link relay --profile mop --pipe-drop`.
   tablet reconnected;
 - short writes (7 bytes a call): frames still whole (pymavlink parses them all);
 - a half frame left by a close is dropped, never glued to the next connection's bytes;
+- a pipeline that never opens: everything on the low-speed link, one line saying so;
 - an SDK failing every call: its words reach the state listener and problem(), said once on
   stderr; everything stays on the low-speed link; no hang;
 - a garbage flood on the pipeline: heap bounded, commands on the low-speed link still answered;
@@ -161,6 +162,26 @@ def test_short_writes_keep_frames_whole(classes: Path, tmp_path: Path, start: St
     r, text, mux, _, _ = transfer(classes, tmp_path, start, pm, env={"TTCTL_FAKE_PIPELINE_SHORT": "1"})
     assert int(r["pipe_short_writes"]) > 1000, r
     assert int(r["pipe_connects"]) == 1, text[-2000:]
+
+
+def test_a_pipeline_that_never_opens_leaves_everything_on_the_link(classes: Path, tmp_path: Path, start: Start,
+                                                                   pm: object) -> None:
+    port, back = onboard(start, tmp_path)
+    mux = PipeMux(pm, port, mtu=255)  # type: ignore[arg-type]
+    up = tmp_path / "mission.bin"
+    up.write_bytes(random.Random(29).randbytes(40000))
+    nobody = free_port(socket.SOCK_STREAM)  # nothing listens: every connectPipeline fails
+    try:
+        r, text = tablet(classes, tmp_path, (mux.udp_port, nobody), "run=e2e", "wait_open_ms=3000", f"send={up}",
+                         "timeout=60", "rate=20000", timeout=200)
+    finally:
+        mux.close()
+    assert r["opened"] == "false" and r["send_ok"] == "true", text[-3000:]
+    assert sha(tmp_path / "inbox" / "mission.bin") == sha(up) == r["send_sha256"]
+    assert int(r["pipe_bytes_out"]) == 0 and int(r["low_bytes"]) > 40000, r
+    assert sum(mux.low_up[n] for n in DATA) >= 40000 // 247, mux.low_up  # the data went on the link
+    said = [ln for ln in text.splitlines() if ln.startswith("ttctl PipelineLink:")]
+    assert len(said) == 1 and "connectPipeline" in said[0] and "CONNECT_FAILED" in said[0], said
 
 
 def test_an_sdk_failing_every_call_is_said_once_in_its_words(classes: Path, tmp_path: Path, start: Start,

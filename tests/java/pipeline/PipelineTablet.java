@@ -111,7 +111,8 @@ public final class PipelineTablet {
         Session session = new Session((Link) low, 255, 190, options).start();
         long t0 = System.nanoTime();
         if ("e2e".equals(run)) {
-            while (!pipe.isOpen() && System.nanoTime() - t0 < 15_000_000_000L) {
+            long waitOpen = Long.parseLong(a.getOrDefault("wait_open_ms", "15000")) * 1_000_000L;
+            while (!pipe.isOpen() && System.nanoTime() - t0 < waitOpen) {
                 Thread.sleep(20);
             }
             out.append(" opened=").append(pipe.isOpen());
