@@ -66,8 +66,9 @@ def tablet(classes: Path, cwd: Path, mux: PipeMux | tuple[int, int], *args: str,
     """The Java tablet, its link to `mux`'s ports (or (udp port, pipeline port))."""
     udp, pipe = (mux.udp_port, mux.pipe_port) if isinstance(mux, PipeMux) else mux
     e = dict(os.environ, TTCTL_FAKE_PIPELINE=f"{LOCAL}:{pipe}", **(env or {}))
-    proc = subprocess.run(["java", f"-Xmx{heap}", "-cp", str(classes), "PipelineTablet", f"udp={LOCAL}:{udp}",
-                           *args], capture_output=True, text=True, timeout=timeout, cwd=cwd, env=e)
+    proc = subprocess.run(["java", f"-Xmx{heap}", f"-Dttctl.msdk.udp={LOCAL}:{udp}", "-cp", str(classes),
+                           "PipelineTablet", f"udp={LOCAL}:{udp}", *args], capture_output=True, text=True,
+                          timeout=timeout, cwd=cwd, env=e)
     text = proc.stdout + proc.stderr
     assert proc.returncode == 0, text[-4000:]
     lines = [ln for ln in proc.stdout.splitlines() if ln.startswith("RESULT ")]
@@ -244,11 +245,11 @@ def mop_onboard(start: Start, tmp: Path, pipe_port: int) -> tuple[int, Path]:
     return port, back
 
 
-def mop_transfer(classes: Path, tmp: Path, back: Path, ports: tuple[int, int]) -> tuple[dict[str, str], str]:
+def mop_transfer(classes: Path, tmp: Path, back: Path, ports: tuple[int, int], *args: str) -> tuple[dict[str, str], str]:
     up = tmp / "mission.bin"
     up.write_bytes(random.Random(27).randbytes(MB2))
     r, text = tablet(classes, tmp, ports, "run=e2e", f"send={up}", "fetch=flight.log", f"dir={tmp / 'got'}",
-                     "timeout=60", "rate=3000")
+                     "timeout=60", "rate=3000", *args)
     assert r["opened"] == "true" and r["command_ack"] == "TT_COMMAND_ACK", text[-3000:]
     assert r["send_ok"] == "true" and r["fetch_ok"] == "true", text[-3000:]
     assert sha(tmp / "inbox" / "mission.bin") == sha(up) == r["send_sha256"]
@@ -274,6 +275,15 @@ def test_e2e_against_ttctl_emulate_onboard_with_a_pipeline(classes: Path, tmp_pa
     r, text = mop_transfer(classes, tmp_path, back, (port, pipe))
     assert int(r["pipe_connects"]) == 1, text[-2000:]
     assert int(r["low_bytes"]) < MB2 // 20, r  # control, offers, statuses: not the files
+
+
+def test_e2e_as_the_docs_wire_it_payload_link_and_pipeline(classes: Path, tmp_path: Path, start: Start) -> None:
+    """The low-speed link is PayloadLink on the MSDK v5 stand-in (128-byte packets at 3 KB/s,
+    completions on the SDK's thread), beside the pipeline: docs/dji/tablet-java.md's wiring."""
+    pipe = free_port(socket.SOCK_STREAM)
+    port, back = mop_onboard(start, tmp_path, pipe)
+    r, text = mop_transfer(classes, tmp_path, back, (port, pipe), "low=payload")
+    assert int(r["pipe_connects"]) == 1 and r["mtu"] == "128", text[-2000:]
 
 
 def test_e2e_pipeline_dropped_twice_by_ttctl_link_relay(classes: Path, tmp_path: Path, start: Start) -> None:

@@ -13,8 +13,12 @@ import java.util.concurrent.TimeUnit;
 
 import dji.sdk.keyvalue.value.mop.PipelineDeviceType;
 import dji.sdk.keyvalue.value.mop.TransmissionControlType;
+import dji.v5.common.callback.CommonCallbacks;
 import dji.v5.common.error.DJIPipeLineError;
 import dji.v5.common.error.IDJIError;
+import dji.v5.manager.aircraft.payload.PayloadCenter;
+import dji.v5.manager.aircraft.payload.PayloadIndexType;
+import dji.v5.manager.interfaces.IPayloadManager;
 import dji.v5.manager.mop.DataResult;
 import dji.v5.manager.mop.PipeStandIn;
 import dji.v5.manager.mop.Pipeline;
@@ -24,6 +28,8 @@ import ttctl.ttapi.commands.SendTtActionCommand;
 import ttctl.ttapi.enums.TtAction;
 import ttctl.ttapi.runtime.Link;
 import ttctl.ttapi.runtime.MavlinkMessage;
+import ttctl.ttapi.runtime.PacketReceiver;
+import ttctl.ttapi.runtime.PayloadLink;
 import ttctl.ttapi.runtime.PipelineLink;
 import ttctl.ttapi.runtime.Session;
 import ttctl.ttapi.runtime.UdpLink;
@@ -93,22 +99,44 @@ public final class PipelineTablet {
         }
         String run = a.get("run");
         StringBuilder out = new StringBuilder("RESULT run=" + run);
-        String[] udp = a.get("udp").split(":");
-        UdpLink low = new UdpLink(new DatagramSocket(new InetSocketAddress("127.0.0.1", 0)),
-                new InetSocketAddress(udp[0], Integer.parseInt(udp[1])), Ttapi.INSTANCE);
-        low.setMtu(Integer.parseInt(a.getOrDefault("mtu", "128")));
+        Link low;
+        if ("payload".equals(a.get("low"))) { // MSDK v5's payload data channel (the stand-in's UDP: -Dttctl.msdk.udp)
+            IPayloadManager payload = PayloadCenter.getInstance().getPayloadManager().get(PayloadIndexType.EXTERNAL);
+            PayloadLink link = new PayloadLink((packet, done) -> payload.sendDataToPayload(packet,
+                    new CommonCallbacks.CompletionCallback() {
+                        @Override
+                        public void onSuccess() {
+                            done.success();
+                        }
+
+                        @Override
+                        public void onFailure(IDJIError error) {
+                            done.failure(error.errorCode(), error.description());
+                        }
+                    }), new PacketReceiver(Ttapi.INSTANCE));
+            payload.addPayloadDataListener(link::onDataFromPayload);
+            low = link;
+        } else {
+            String[] udp = a.get("udp").split(":");
+            UdpLink link = new UdpLink(new DatagramSocket(new InetSocketAddress("127.0.0.1", 0)),
+                    new InetSocketAddress(udp[0], Integer.parseInt(udp[1])), Ttapi.INSTANCE);
+            link.setMtu(Integer.parseInt(a.getOrDefault("mtu", "128")));
+            low = link;
+        }
         PipelineLink pipe = pipeline();
         pipe.addStateListener((open, why) -> {
             STATE.add((open ? "open: " : "closed: ") + why);
             System.out.println("EVENT pipeline " + (open ? "open" : "closed") + ": " + why);
         });
         Session.Options options = new Session.Options();
-        options.rate = Double.parseDouble(a.getOrDefault("rate", "4000"));
+        options.rate = low instanceof PayloadLink ? 0 : Double.parseDouble(a.getOrDefault("rate", "4000"));
+        options.linkRate = low instanceof PayloadLink ? 3000 : 0;
         options.pipeline = pipe;
         options.pipeRate = Double.parseDouble(a.getOrDefault("pipe_rate", "100000"));
         options.transfers = new ttctl.ttapi.transfer.TransferConfig();
         options.transfers.giveUpAfter = Double.parseDouble(a.getOrDefault("timeout", "30"));
-        Session session = new Session((Link) low, 255, 190, options).start();
+        Session session = new Session(low, 255, 190, options).start();
+        out.append(" mtu=").append(session.scheduler().mtu());
         long t0 = System.nanoTime();
         if ("e2e".equals(run)) {
             long waitOpen = Long.parseLong(a.getOrDefault("wait_open_ms", "15000")) * 1_000_000L;
