@@ -166,6 +166,8 @@ public final class PipelineTablet {
             out.append(" base_p95_ms=").append(Math.round(p95(base)));
             out.append(" during_p95_ms=").append(Math.round(p95(during))).append(" during_n=").append(during.size());
             out.append(" send_ok=").append(ru != null && ru.ok);
+            out.append(" send_goodput=").append(ru == null ? -1 : Math.round(ru.goodput()));
+            out.append(" fetch_goodput=").append(rd == null ? -1 : Math.round(rd.goodput()));
             out.append(" send_sha256=").append(hex(f));
             if (ru != null && !ru.ok) {
                 System.out.println("EVENT send failed: " + ru.message);

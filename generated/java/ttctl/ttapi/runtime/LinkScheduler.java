@@ -74,6 +74,7 @@ public final class LinkScheduler implements AutoCloseable {
     private volatile UnaryOperator<byte[]> signer;
     private double rate; // bytes per second, 0: unpaced
     private long nextFree = System.nanoTime();
+    private long slack; // ns of a late wake-up the pacer makes up (a stream: no radio buffer to overflow)
     private long holdUntil = System.nanoTime(); // after a send error: a pause, not a spin
     private boolean woken;
     private boolean closed;
@@ -140,6 +141,24 @@ public final class LinkScheduler implements AutoCloseable {
     /** Signs every frame from now on (null: none), e.g. {@code signing::sign}. */
     public LinkScheduler setSigner(UnaryOperator<byte[]> signer) {
         this.signer = signer;
+        return this;
+    }
+
+    /**
+     * Makes up to {@code millis} of a late wake-up with a small burst instead of losing the time
+     * (0, the default: never, for a radio whose buffer a burst would overflow; a MOP pipeline's
+     * scheduler takes 20 ms, as ttctl's Python ends pace theirs).
+     */
+    public LinkScheduler setSlackMillis(long millis) {
+        if (millis < 0) {
+            throw new IllegalArgumentException("slack is 0 or more milliseconds");
+        }
+        lock.lock();
+        try {
+            slack = TimeUnit.MILLISECONDS.toNanos(millis);
+        } finally {
+            lock.unlock();
+        }
         return this;
     }
 
@@ -400,7 +419,7 @@ public final class LinkScheduler implements AutoCloseable {
                     }
                     if (rate > 0) {
                         long now = System.nanoTime();
-                        nextFree = Math.max(now, nextFree) + (long) (packet.length * 1e9 / rate);
+                        nextFree = Math.max(now - slack, nextFree) + (long) (packet.length * 1e9 / rate);
                     }
                     packets++;
                     bytes += packet.length;

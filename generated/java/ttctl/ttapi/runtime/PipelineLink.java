@@ -50,6 +50,8 @@ public final class PipelineLink implements Link {
     public static final int PIPE_LINK_BIT = 0x80;
     /** The pipeline's rate for file data unless told otherwise, bytes per second. */
     public static final double DEFAULT_RATE = 100000;
+    /** Lateness of a wake-up its scheduler's pacer makes up (Python's PIPE_SLACK). */
+    public static final long PACE_SLACK_MILLIS = 20;
     /** Wait between a close (or a failed connect) and the next connect. */
     public static final long BACKOFF_MILLIS = 1000;
     /** Bytes asked of one {@code readData}. */

@@ -136,6 +136,7 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         this.pipeline = o.pipeline;
         this.pipeScheduler = o.pipeline == null ? null : new LinkScheduler(o.pipeline, PipelineLink.MTU, o.pipeRate);
         if (pipeScheduler != null) {
+            pipeScheduler.setSlackMillis(PipelineLink.PACE_SLACK_MILLIS);
             if (o.signing != null) {
                 final Signing pipeSigning = o.signing.withLinkId(o.signing.linkId() ^ PipelineLink.PIPE_LINK_BIT);
                 pipeScheduler.setSigner(new java.util.function.UnaryOperator<byte[]>() {
