@@ -21,8 +21,9 @@ directly and through `ttctl link relay --profile mop --pipe-drop`.
 - an SDK failing every call: its words reach the state listener and problem(), said once on
   stderr; everything stays on the low-speed link; no hang;
 - a garbage flood on the pipeline: heap bounded, commands on the low-speed link still answered;
-- end to end with ttctl's pipeline: 2 MB each way, SHA-256 equal, the data on the pipeline; and
-  the relay closing the pipeline twice mid-transfer.
+- end to end with ttctl's pipeline: 2 MB each way, SHA-256 equal, the data on the pipeline (with
+  UdpLink, with PayloadLink as the docs wire it, signed); and the relay closing the pipeline twice
+  mid-transfer.
 """
 
 from __future__ import annotations
@@ -233,14 +234,14 @@ def test_a_garbage_flood_on_the_pipeline(classes: Path, tmp_path: Path, start: S
 
 # -- against ttctl's own pipeline end: emulate onboard --profile mop --pipeline tcpin: ----------------
 
-def mop_onboard(start: Start, tmp: Path, pipe_port: int) -> tuple[int, Path]:
+def mop_onboard(start: Start, tmp: Path, pipe_port: int, *extra: str) -> tuple[int, Path]:
     port = free_port()
     (tmp / "served").mkdir()
     back = tmp / "served" / "flight.log"
     back.write_bytes(random.Random(28).randbytes(MB2))
     node = start("onboard", "emulate", "onboard", "--no-gcs", "--listen", f"udpin:{LOCAL}:{port}", "--inbox",
                  str(tmp / "inbox"), "--serve", str(tmp / "served"), "--no-entry-points", "--profile", "mop",
-                 "--pipeline", f"tcpin:{LOCAL}:{pipe_port}")
+                 "--pipeline", f"tcpin:{LOCAL}:{pipe_port}", *extra)
     node.wait_for("onboard 1:")
     return port, back
 
@@ -287,6 +288,18 @@ def test_e2e_as_the_docs_wire_it_payload_link_and_pipeline(classes: Path, tmp_pa
     port, back = mop_onboard(start, tmp_path, pipe)
     r, text = mop_transfer(classes, tmp_path, back, (port, pipe), "low=payload")
     assert int(r["pipe_connects"]) == 1 and r["mtu"] == "128", text[-2000:]
+
+
+def test_e2e_signed_both_paths(classes: Path, tmp_path: Path, start: Start) -> None:
+    """MAVLink 2 signing on both paths (emulate onboard --key takes only signed frames): the
+    pipeline's frames under their own link id, as ttctl's ends sign theirs, so neither path's
+    timestamps make the other's look like replays."""
+    key = random.Random(12).randbytes(32).hex()
+    (tmp_path / "key").write_text(key + "\n")
+    pipe = free_port(socket.SOCK_STREAM)
+    port, back = mop_onboard(start, tmp_path, pipe, "--key", str(tmp_path / "key"))
+    r, text = mop_transfer(classes, tmp_path, back, (port, pipe), f"key={key}")
+    assert int(r["pipe_connects"]) == 1, text[-2000:]
 
 
 def test_e2e_pipeline_dropped_twice_by_ttctl_link_relay(classes: Path, tmp_path: Path, start: Start) -> None:

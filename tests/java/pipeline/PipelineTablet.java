@@ -32,6 +32,7 @@ import ttctl.ttapi.runtime.PacketReceiver;
 import ttctl.ttapi.runtime.PayloadLink;
 import ttctl.ttapi.runtime.PipelineLink;
 import ttctl.ttapi.runtime.Session;
+import ttctl.ttapi.runtime.Signing;
 import ttctl.ttapi.runtime.UdpLink;
 import ttctl.ttapi.transfer.Transfer;
 import ttctl.ttapi.transfer.TransferResult;
@@ -56,7 +57,7 @@ public final class PipelineTablet {
     }
 
     /** The wiring, as docs/dji/tablet-java.md has it. */
-    static PipelineLink pipeline() {
+    static PipelineLink pipeline(Signing signing) {
         PipelineManager mop = PipelineManager.getInstance();
         return new PipelineLink(new PipelineLink.Sdk() {
             private volatile Pipeline pipe;
@@ -88,7 +89,7 @@ public final class PipelineTablet {
             public PipelineLink.Result disconnect() {
                 return result(0, mop.disconnectPipeline(PIPELINE_ID, PipelineDeviceType.ONBOARD, TransmissionControlType.STABLE));
             }
-        }, Ttapi.INSTANCE);
+        }, Ttapi.INSTANCE, signing);
     }
 
     public static void main(String[] argv) throws Exception {
@@ -99,6 +100,7 @@ public final class PipelineTablet {
         }
         String run = a.get("run");
         StringBuilder out = new StringBuilder("RESULT run=" + run);
+        Signing signing = a.containsKey("key") ? new Signing(unhex(a.get("key")), 1, false) : null;
         Link low;
         if ("payload".equals(a.get("low"))) { // MSDK v5's payload data channel (the stand-in's UDP: -Dttctl.msdk.udp)
             IPayloadManager payload = PayloadCenter.getInstance().getPayloadManager().get(PayloadIndexType.EXTERNAL);
@@ -113,17 +115,17 @@ public final class PipelineTablet {
                         public void onFailure(IDJIError error) {
                             done.failure(error.errorCode(), error.description());
                         }
-                    }), new PacketReceiver(Ttapi.INSTANCE));
+                    }), new PacketReceiver(Ttapi.INSTANCE, signing));
             payload.addPayloadDataListener(link::onDataFromPayload);
             low = link;
         } else {
             String[] udp = a.get("udp").split(":");
             UdpLink link = new UdpLink(new DatagramSocket(new InetSocketAddress("127.0.0.1", 0)),
-                    new InetSocketAddress(udp[0], Integer.parseInt(udp[1])), Ttapi.INSTANCE);
+                    new InetSocketAddress(udp[0], Integer.parseInt(udp[1])), Ttapi.INSTANCE, signing);
             link.setMtu(Integer.parseInt(a.getOrDefault("mtu", "128")));
             low = link;
         }
-        PipelineLink pipe = pipeline();
+        PipelineLink pipe = pipeline(signing);
         pipe.addStateListener((open, why) -> {
             STATE.add((open ? "open: " : "closed: ") + why);
             System.out.println("EVENT pipeline " + (open ? "open" : "closed") + ": " + why);
@@ -132,6 +134,7 @@ public final class PipelineTablet {
         options.rate = low instanceof PayloadLink ? 0 : Double.parseDouble(a.getOrDefault("rate", "4000"));
         options.linkRate = low instanceof PayloadLink ? 3000 : 0;
         options.pipeline = pipe;
+        options.signing = signing; // the pipeline's frames go under link id 1 ^ 0x80
         options.pipeRate = Double.parseDouble(a.getOrDefault("pipe_rate", "100000"));
         options.transfers = new ttctl.ttapi.transfer.TransferConfig();
         options.transfers.giveUpAfter = Double.parseDouble(a.getOrDefault("timeout", "30"));
@@ -251,6 +254,14 @@ public final class PipelineTablet {
         List<Double> s = new ArrayList<>(xs);
         Collections.sort(s);
         return s.get(Math.min(s.size() - 1, (int) Math.ceil(0.95 * s.size()) - 1));
+    }
+
+    static byte[] unhex(String s) {
+        byte[] b = new byte[s.length() / 2];
+        for (int i = 0; i < b.length; i++) {
+            b[i] = (byte) Integer.parseInt(s.substring(2 * i, 2 * i + 2), 16);
+        }
+        return b;
     }
 
     static String hex(File f) throws Exception {
