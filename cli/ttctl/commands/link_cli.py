@@ -20,8 +20,8 @@ def link_relay(
                                         show_default=False)],
     to: Annotated[str, typer.Option("--to", help="udp:HOST:PORT of the onboard side (udpout).",
                                     show_default=False)],
-    profile: Annotated[str | None, typer.Option("--profile", help="Link profile: m100, psdk or lan (default m100), "
-                                                                  "or one in --profile-file.",
+    profile: Annotated[str | None, typer.Option("--profile", help="Link profile: m100, m300, psdk, mop or lan "
+                                                                  "(default m100), or one in --profile-file.",
                                                 show_default=False)] = None,
     profile_file: ProfileFileOpt = None,
     distance: Annotated[float, typer.Option("--distance", help="Distance in metres.")] = 10.0,

@@ -66,7 +66,8 @@ def _pipe_relay(o: RelayOptions, prof: Any, log: Any) -> Any:
     if o.pipe_listen is None or o.pipe_to is None:
         raise Fail("a pipeline needs both --pipe-listen (the tablet side) and --pipe-to (the onboard side)")
     try:
-        listen = parse_spec(o.pipe_listen.replace("tcpin:", "tcp:", 1), allowed=("tcp",))
+        text = o.pipe_listen.strip()
+        listen = parse_spec("tcpin:" + text[4:] if text.lower().startswith("tcp:") else text, allowed=("tcpin",))
         to = parse_spec(o.pipe_to.replace("tcpout:", "tcp:", 1), allowed=("tcp",))
     except TransportError as e:
         raise Fail(f"{e} (the pipeline is a TCP stream: tcp:HOST:PORT)") from None
