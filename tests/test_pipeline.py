@@ -208,3 +208,44 @@ def test_bad_pipeline_options_are_one_line_each(tmp_path: Path) -> None:
         assert words in r.stderr and "Traceback" not in r.stderr and len(r.stderr.strip().splitlines()) == 1, \
             (args, r.stderr)
     assert not (tmp_path / "d").exists()
+
+
+def test_strangers_on_the_pipeline_port_get_nothing_and_take_nothing(tmp_path: Path, start: Start) -> None:
+    """A stranger connects to the accepting end's pipeline first, sends half a frame and then a
+    flood of garbage, and keeps its connection: the sender's pipeline (which says hello with a
+    valid frame) is the one file data goes to, the stranger receives nothing, the receiver's
+    memory stays bounded, and the file arrives whole."""
+    import time
+
+    src = tmp_path / "big.bin"
+    src.write_bytes(os.urandom(1_000_000))
+    port, pipe_port = free_port(), free_port(socket.SOCK_STREAM)
+    recv = start("recv", "recv-file", "--listen", f"udpin:{LOCAL}:{port}", "--dir", str(tmp_path / "inbox"),
+                 "--profile", "mop", "--pipeline", f"tcpin:{LOCAL}:{pipe_port}", "--count", "1")
+    recv.wait_for("receiving into")
+    stranger = socket.create_connection((LOCAL, pipe_port))
+    stranger.sendall(b"\xfd\x20\x00\x00\x01\x01\x01")  # half a MAVLink 2 frame
+    junk = random.Random(1).randbytes(1 << 20)
+    for _ in range(8):
+        stranger.sendall(junk)
+    send = start("send", "send-file", str(src), "--to", f"udpout:{LOCAL}:{port}", "--profile", "mop",
+                 "--pipeline", f"tcpout:{LOCAL}:{pipe_port}", "--no-compress", "--json")
+    assert send.wait(120) == 0, send.stderr
+    assert recv.wait(30) == 0, recv.stderr
+    assert sha(tmp_path / "inbox" / "big.bin") == sha(src)
+    assert json.loads(send.stdout)["pipeline_bytes_out"] >= 0.9 * src.stat().st_size
+    stranger.settimeout(0.5)
+    got = b""
+    end = time.monotonic() + 1
+    while time.monotonic() < end:
+        try:
+            chunk = stranger.recv(65536)
+        except TimeoutError:
+            break
+        if not chunk:
+            break
+        got += chunk
+    stranger.close()
+    assert got == b"", f"the stranger was sent {len(got)} bytes"
+    assert recv.stderr.count("pipeline open") == 1, recv.stderr  # the sender's, never the stranger's
+    assert "Traceback" not in recv.stderr

@@ -83,6 +83,8 @@ class Runner:
             pipe.on_open = self._pipe_open
             pipe.on_close = self._pipe_close
             pipe.on_data = self._pipe_data
+            pipe.on_forget = lambda n: endpoint.forget_source(("pipe", n))
+            pipe.on_connect = self._pipe_hello
 
     # -- the clock ------------------------------------------------------------------------------
     def now(self) -> float:
@@ -186,10 +188,19 @@ class Runner:
 
     def _pipe_data(self, data: bytes, n: int) -> None:
         try:
-            self.ep.receive_stream(self.now(), data, ("pipe", n))
+            if self.ep.receive_stream(self.now(), data, ("pipe", n)):
+                self.pipe.confirm(n)  # a valid frame: the peer is on it (tcpin)
         except Exception as e:  # a bug, not bad input
             self._error = self._error or e
         self.kick()
+
+    def _pipe_hello(self, write: Callable[[bytes], None]) -> None:
+        """The first frame on a pipeline we connected: the accepting side takes the connection
+        as the pipeline once a valid frame came on it."""
+        b = self.ep.b
+        kind = b.MavType.MAV_TYPE_GCS if self.ep.sysid == 255 else b.MavType.MAV_TYPE_ONBOARD_CONTROLLER
+        frame = self.ep.encoder.encode(b.Heartbeat(type=int(kind), autopilot=int(b.MavAutopilot.MAV_AUTOPILOT_INVALID)))
+        write(self.ep.pipe.sign(frame))
 
     def _quiet(self) -> float:
         """Three packet times of the link (`quiet`, when the caller knows the rate) or of what
