@@ -31,8 +31,9 @@ BURST = 16  # packets sent without yielding to the loop (receives and timers get
 SPIN_GUARD = 0.001  # least sleep when a wake-up time is already past but nothing went out
 CATCH_UP = 0.002  # a late wake-up by up to this much keeps the pacer's schedule (timer granularity)
 QUIET_MIN, QUIET_MAX = 0.02, 2.0
-PIPE_BACKLOG = 16 * 1024  # bytes written to a pipeline and not yet taken by its socket: no more file data
+PIPE_BACKLOG = 32 * 1024  # bytes on a pipeline not yet taken by the peer (at least; rate x 0.1 s on a fast one)
 PIPE_WAIT = 0.005  # s between looks at a pipeline that is behind
+PIPE_TIMEOUT = 2.0  # s a pipeline may stay behind before it counts as timed out (closed, then reconnected)
 
 
 @dataclass
@@ -58,6 +59,9 @@ class Runner:
         self.ep = endpoint
         self.pipe = pipe  # a link.pipe.PipeLink, or None
         self.pipe_rate_Bps = pipe_rate_Bps
+        self._pipe_behind_since: float | None = None
+        # what may be on its way on a pipeline at once: what a drop or a timeout can cost
+        self.pipe_window = max(PIPE_BACKLOG, int(0.1 * (pipe_rate_Bps or 0)))
         # something that may take a datagram before the endpoint does (`take(data, source) ->
         # bool`): ttctl.link.probes.LinkProbes beside an onboard end
         self.probes = probes
@@ -194,6 +198,18 @@ class Runner:
             self._error = self._error or e
         self.kick()
 
+    def _check_pipe(self, real: float) -> None:
+        """A pipeline whose socket takes nothing for PIPE_TIMEOUT timed out: closed (file data
+        back on the link at once), and connected again (tcpout) or awaited (tcpin)."""
+        assert self.pipe is not None
+        if self.pipe.backlog() < self.pipe_window:
+            self._pipe_behind_since = None
+        elif self._pipe_behind_since is None:
+            self._pipe_behind_since = real
+        elif real - self._pipe_behind_since >= PIPE_TIMEOUT:
+            self._pipe_behind_since = None
+            self.pipe.drop(f"timed out: nothing sent for {PIPE_TIMEOUT:g} s")
+
     def _pipe_hello(self, write: Callable[[bytes], None]) -> None:
         """The first frame on a pipeline we connected: the accepting side takes the connection
         as the pipeline once a valid frame came on it."""
@@ -234,7 +250,9 @@ class Runner:
                 self.stats.packets_out += 1
                 self.stats.bytes_out += len(pkt)
             pipe = self.pipe
-            while pipe is not None and pipe.is_open and pipe.backlog() < PIPE_BACKLOG and sent < 4 * BURST:
+            if pipe is not None and pipe.is_open:
+                self._check_pipe(real)
+            while pipe is not None and pipe.is_open and pipe.backlog() < self.pipe_window and sent < 4 * BURST:
                 frame = self.ep.pipe.poll(now)
                 if frame is None:
                     break
@@ -258,7 +276,7 @@ class Runner:
                 continue
             hello_at = self._hello_due if self.hello is not None and self.last_rx is None else None
             times = [t for t in (self.ep.wakeup(), flush_at, hello_at) if t is not None]
-            if pipe is not None and pipe.is_open and pipe.backlog() >= PIPE_BACKLOG:
+            if pipe is not None and pipe.is_open and pipe.backlog() >= self.pipe_window:
                 # the pipeline's socket is behind: look again shortly rather than at the pacer's time
                 times = [max(t, real + PIPE_WAIT) for t in times]
             target = min(times) if times else None

@@ -22,6 +22,15 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import socket
+import struct
+
+try:
+    import fcntl
+    import termios
+
+    _OUTQ: int | None = termios.TIOCOUTQ  # the same request as SIOCOUTQ for a socket (Linux)
+except (ImportError, AttributeError):  # pragma: no cover - not Linux
+    _OUTQ = None
 from collections.abc import Callable
 
 from .transport import Spec, TransportError, _os_reason, addr_text, parse_spec
@@ -105,15 +114,33 @@ class PipeLink:
             await asyncio.sleep(RETRY_S)
 
     def backlog(self) -> int:
-        """Bytes written and not yet handed to the socket."""
+        """Bytes written and not yet taken by the peer: what asyncio holds, and what the kernel
+        sent and the peer has not acknowledged or has not sent yet (SIOCOUTQ, on Linux)."""
         t = self._transport
-        return t.get_write_buffer_size() if t is not None else 0
+        if t is None:
+            return 0
+        held = t.get_write_buffer_size()
+        sock = t.get_extra_info("socket")
+        if sock is not None and _OUTQ is not None:
+            with contextlib.suppress(OSError, ValueError):
+                held += struct.unpack("i", fcntl.ioctl(sock.fileno(), _OUTQ, b"\0\0\0\0"))[0]
+        return held
 
     def write(self, frame: bytes) -> None:
         t = self._transport
         if t is not None:
             t.write(frame)
             self.bytes_out += len(frame)
+
+    def drop(self, words: str) -> None:
+        """End the open connection ourselves (it timed out), in `words`."""
+        t, n = self._transport, self.connection
+        if t is None:
+            return
+        self._transport, self.connection = None, 0
+        self.log(f"pipeline closed ({words}): file data back on the low-speed channel")
+        self.on_close(n, words)
+        t.abort()
 
     def close(self) -> None:
         self._closed = True
