@@ -22,8 +22,8 @@ directly and through `ttctl link relay --profile mop --pipe-drop`.
   stderr; everything stays on the low-speed link; no hang;
 - a garbage flood on the pipeline: heap bounded, commands on the low-speed link still answered;
 - end to end with ttctl's pipeline: 2 MB each way, SHA-256 equal, the data on the pipeline (with
-  UdpLink, with PayloadLink as the docs wire it, signed); and the relay closing the pipeline twice
-  mid-transfer.
+  UdpLink, with PayloadLink as the docs wire it, signed; a fetch alone, which the tablet's hello
+  opens); the relay closing the pipeline twice mid-transfer, and stalling it (closed after 2 s).
 """
 
 from __future__ import annotations
@@ -135,7 +135,10 @@ def transfer(classes: Path, tmp: Path, start: Start, pm: object, drops: tuple[in
     # ... and the fetch's came back on it
     assert sum(mux.pipe_down[n] for n in DATA) * 246 >= MB2 * 0.9, mux.pipe_down
     # commands, offers, statuses stayed on the low-speed link
-    assert not (set(mux.pipe_up) - DATA), mux.pipe_up
+    # the pipeline carried file data (wide frames, as ttctl's ends cut them for a stream) and the
+    # tablet's hello, its HEARTBEAT, once on each connection
+    assert set(mux.pipe_up) == {"TT_FILE_DATA_WIDE", "HEARTBEAT"}, mux.pipe_up
+    assert mux.pipe_up["HEARTBEAT"] == mux.connections, (mux.pipe_up, mux.connections)
     assert mux.low_up["TT_ACTION_COMMAND"] >= 2 and mux.low_up["TT_FILE_OFFER"] >= 1, mux.low_up
     assert mux.low_up["TT_FILE_STATUS"] >= 1, mux.low_up
     return r, text, mux, up, back
@@ -300,6 +303,32 @@ def test_e2e_signed_both_paths(classes: Path, tmp_path: Path, start: Start) -> N
     port, back = mop_onboard(start, tmp_path, pipe, "--key", str(tmp_path / "key"))
     r, text = mop_transfer(classes, tmp_path, back, (port, pipe), f"key={key}")
     assert int(r["pipe_connects"]) == 1, text[-2000:]
+
+
+def test_e2e_a_fetch_alone_takes_the_pipeline(classes: Path, tmp_path: Path, start: Start) -> None:
+    """No upload to open the way: the tablet's hello (its HEARTBEAT, first on each connection) is
+    what ttctl's accepting end waits for before it puts file data on a connection."""
+    pipe = free_port(socket.SOCK_STREAM)
+    port, back = mop_onboard(start, tmp_path, pipe)
+    r, text = tablet(classes, tmp_path, (port, pipe), "run=e2e", "fetch=flight.log", f"dir={tmp_path / 'got'}",
+                     "timeout=60", "rate=3000")
+    assert r["fetch_ok"] == "true", text[-3000:]
+    assert sha(tmp_path / "got" / "flight.log") == sha(back) == r["fetch_sha256"]
+    assert int(r["pipe_bytes_in"]) >= MB2 and int(r["fetch_goodput"]) >= 50000, r
+
+
+def test_e2e_a_stalled_pipeline_is_closed_and_the_files_go_on(classes: Path, tmp_path: Path, start: Start) -> None:
+    """`link relay --pipe-stall`: open, but nothing moves (DJI's send timeouts). The tablet's write
+    takes nothing for 2 s: it closes the pipeline in one line, the transfers go on over the link,
+    and it connects again."""
+    pipe_air, pipe_tab, a = free_port(socket.SOCK_STREAM), free_port(socket.SOCK_STREAM), free_port()
+    port, back = mop_onboard(start, tmp_path, pipe_air)
+    relay(start, a, port, "--profile", "mop", "--pipe-listen", f"tcp:{LOCAL}:{pipe_tab}", "--pipe-to",
+          f"tcp:{LOCAL}:{pipe_air}", "--pipe-stall", "8:6", "--stats-interval", "0")
+    r, text = mop_transfer(classes, tmp_path, back, (a, pipe_tab))
+    said = [ln for ln in text.splitlines() if ln.startswith("ttctl PipelineLink:")]
+    assert len(said) == 1 and "writeData took nothing for 2000 ms" in said[0], text[-3000:]
+    assert int(r["pipe_connects"]) >= 2, r
 
 
 def test_e2e_pipeline_dropped_twice_by_ttctl_link_relay(classes: Path, tmp_path: Path, start: Start) -> None:

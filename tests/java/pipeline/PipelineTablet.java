@@ -153,25 +153,25 @@ public final class PipelineTablet {
             for (int i = 0; i < 5; i++) {
                 base.add(command(session, 20000, new StringBuilder()));
             }
-            File f = new File(a.get("send"));
-            Transfer up = session.files().send(f, f.getName(), 1, 240, false, null);
+            File f = a.containsKey("send") ? new File(a.get("send")) : null;
+            Transfer up = f == null ? null : session.files().send(f, f.getName(), 1, 240, false, null);
             Transfer down = a.containsKey("fetch")
                     ? session.files().fetch(a.get("fetch"), new File(a.get("dir")), 1, 240, null) : null;
             List<Double> during = new ArrayList<>();
-            while (!up.future().isDone() || (down != null && !down.future().isDone())) {
+            while ((up != null && !up.future().isDone()) || (down != null && !down.future().isDone())) {
                 if (during.size() < 200) {
                     during.add(command(session, 20000, new StringBuilder())); // commands while the files move
                 }
                 Thread.sleep(200);
             }
-            TransferResult ru = up.await(300, TimeUnit.SECONDS);
+            TransferResult ru = up == null ? null : up.await(300, TimeUnit.SECONDS);
             TransferResult rd = down == null ? null : down.await(300, TimeUnit.SECONDS);
             out.append(" base_p95_ms=").append(Math.round(p95(base)));
             out.append(" during_p95_ms=").append(Math.round(p95(during))).append(" during_n=").append(during.size());
             out.append(" send_ok=").append(ru != null && ru.ok);
             out.append(" send_goodput=").append(ru == null ? -1 : Math.round(ru.goodput()));
             out.append(" fetch_goodput=").append(rd == null ? -1 : Math.round(rd.goodput()));
-            out.append(" send_sha256=").append(hex(f));
+            out.append(" send_sha256=").append(f == null ? "none" : hex(f));
             if (ru != null && !ru.ok) {
                 System.out.println("EVENT send failed: " + ru.message);
             }

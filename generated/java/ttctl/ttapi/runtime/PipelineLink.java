@@ -28,10 +28,15 @@ import java.util.function.Consumer;
  * ({@code DataResult.getLength()} below the length) keeps the rest and writes it next on the same
  * connection. A close, a read error other than an idle read's TIMEOUT (DJI's sample reads on
  * after it; the wiring may also return {@code Result.ok(0)} for it), or a failed write (a write's
- * TIMEOUT too)
+ * TIMEOUT too), or a write the SDK takes nothing of for {@value #STALL_MILLIS} ms (blocked, or
+ * 0 bytes again and again: a stall, as DJI's send timeouts)
  * disconnects ({@code disconnectPipeline}) and connects again after {@value #BACKOFF_MILLIS} ms,
  * for as long as the link runs; what was unwritten is dropped (the transfer engine resends by
  * byte offset).
+ *
+ * <p>A new connection's first frame is the hello ({@link #setHello}: a {@link Session} gives its
+ * HEARTBEAT), as ttctl's ends say it: the accepting end carries file data on a connection only
+ * after a valid frame came on it.
  *
  * <p>Every SDK failure is said in the SDK's words ({@code IDJIError}: description and code) to
  * the state listener and on stderr, once per kind of failure (its code and the call), not once
@@ -52,6 +57,8 @@ public final class PipelineLink implements Link {
     public static final double DEFAULT_RATE = 100000;
     /** Lateness of a wake-up its scheduler's pacer makes up (Python's PIPE_SLACK). */
     public static final long PACE_SLACK_MILLIS = 20;
+    /** A write that takes nothing this long (blocked, or 0 bytes again and again) closes the pipeline. */
+    public static final long STALL_MILLIS = 2000;
     /** Wait between a close (or a failed connect) and the next connect. */
     public static final long BACKOFF_MILLIS = 1000;
     /** Bytes asked of one {@code readData}. */
@@ -139,6 +146,8 @@ public final class PipelineLink implements Link {
     private volatile long dropped;
     private volatile long framesIn;
     private volatile long discarded;
+    private volatile long writeSince; // System.nanoTime() a write began waiting for the SDK to take bytes; 0: none
+    private volatile java.util.function.Supplier<byte[]> hello;
 
     /** One connection: its parser, whether it broke, the rest of a short write. */
     private static final class Connection {
@@ -207,6 +216,7 @@ public final class PipelineLink implements Link {
             }
             int off = 0;
             byte[] rest = packet;
+            writeSince = System.nanoTime();
             while (off < packet.length) {
                 Result r;
                 try {
@@ -222,18 +232,57 @@ public final class PipelineLink implements Link {
                     off += n;
                     bytesOut += n;
                 }
-                if (r.failed() || (n == 0 && r.length <= 0)) {
+                if (r.failed() || c.broken) {
                     dropped++;
-                    String words = r.failed() ? r.words() : "writeData wrote nothing";
-                    breakConnection(c, "writeData", r.failed() ? r.errorCode : "ZERO", words);
+                    String words = r.failed() ? r.words() : "closed while writing";
+                    breakConnection(c, "writeData", r.failed() ? r.errorCode : "CLOSED", words);
+                    writeSince = 0;
                     throw new IOException("the pipeline closed: " + words);
                 }
+                if (n == 0) { // the SDK took nothing: again a little later, until the stall limit
+                    if (stalled()) {
+                        dropped++;
+                        breakConnection(c, "writeData", "STALLED", stallWords());
+                        writeSince = 0;
+                        throw new IOException("the pipeline stalled");
+                    }
+                    try {
+                        Thread.sleep(10);
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                        writeSince = 0;
+                        throw new IOException("interrupted");
+                    }
+                    continue;
+                }
+                writeSince = System.nanoTime(); // bytes taken: the stall clock starts again
                 if (off < packet.length) {
                     shortWrites++;
                     rest = java.util.Arrays.copyOfRange(packet, off, packet.length);
                 }
             }
+            writeSince = 0;
         }
+    }
+
+    /** Whether a write has waited {@value #STALL_MILLIS} ms for the SDK to take anything. */
+    private boolean stalled() {
+        long w = writeSince;
+        return w != 0 && System.nanoTime() - w > STALL_MILLIS * 1000000L;
+    }
+
+    private static String stallWords() {
+        return "writeData took nothing for " + STALL_MILLIS + " ms";
+    }
+
+    /**
+     * The first frame written on each new connection, at once (e.g. the session's HEARTBEAT,
+     * signed as the pipeline's frames are): ttctl's accepting ends carry file data on a
+     * connection only after a valid frame came on it. Null: none.
+     */
+    public PipelineLink setHello(java.util.function.Supplier<byte[]> hello) {
+        this.hello = hello;
+        return this;
     }
 
     /**
@@ -378,6 +427,7 @@ public final class PipelineLink implements Link {
             current = c;
             connects++;
             problem = null;
+            sayHello();
             tell(true, "the pipeline is open");
             while (!closed && !c.broken) {
                 try {
@@ -398,7 +448,9 @@ public final class PipelineLink implements Link {
                         c.parser.reset();
                     }
                 }
-                if (r.failed() && !r.idle()) {
+                if (stalled()) { // a write blocked in the SDK: closing it ends the write too
+                    breakConnection(c, "writeData", "STALLED", stallWords());
+                } else if (r.failed() && !r.idle()) {
                     breakConnection(c, "readData", r.errorCode, r.words());
                 } else if (!r.failed() && r.length < 0) {
                     breakConnection(c, "readData", "CLOSED", "readData returned " + r.length);
@@ -409,6 +461,22 @@ public final class PipelineLink implements Link {
             if (!pause()) {
                 return;
             }
+        }
+    }
+
+    /** Writes the hello frame, if any, on the new connection (the link's thread). */
+    private void sayHello() {
+        java.util.function.Supplier<byte[]> h = hello;
+        if (h == null) {
+            return;
+        }
+        try {
+            byte[] frame = h.get();
+            if (frame != null) {
+                send(frame);
+            }
+        } catch (IOException | RuntimeException e) {
+            // the connection broke: said, and connected again later
         }
     }
 

@@ -147,6 +147,19 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
                 });
             }
             pipeline.setListenerExecutor(listeners);
+            final int sys = sysId;
+            final int comp = compId;
+            pipeline.setHello(new java.util.function.Supplier<byte[]>() { // ttctl's ends take a pipeline on its first frame
+                @Override
+                public byte[] get() {
+                    ttctl.ttapi.msg.Heartbeat hb = new ttctl.ttapi.msg.Heartbeat();
+                    hb.type = 6; // MAV_TYPE_GCS
+                    hb.autopilot = 8; // MAV_AUTOPILOT_INVALID
+                    byte[] f = hb.pack(0, sys, comp);
+                    java.util.function.UnaryOperator<byte[]> sign = pipeScheduler.signer();
+                    return sign != null ? sign.apply(f) : f;
+                }
+            });
         }
         if (link instanceof DjiLink) {
             ((DjiLink) link).setListenerExecutor(listeners);

@@ -34,6 +34,7 @@ public class Pipeline {
         this.socket = socket;
         socket.setSoTimeout(READ_TIMEOUT_MS);
         socket.setTcpNoDelay(true);
+        socket.setSendBufferSize(16 * 1024); // an SDK's buffer, not a kernel's megabytes: a stalled pipeline blocks writeData
         this.in = socket.getInputStream();
         this.out = socket.getOutputStream();
     }
