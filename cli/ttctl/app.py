@@ -31,6 +31,8 @@ from .commands.options import (
     DistanceOpt,
     JsonOpt,
     KeyOpt,
+    PipelineOpt,
+    PipeRateOpt,
     ProfileFileOpt,
     ProfileOpt,
     RateOpt,
@@ -181,6 +183,8 @@ def recv_file_cmd(
     accept_unsigned: AcceptUnsignedOpt = False,
     dialect: DialectOpt = None,
     include: DialectIncludeOpt = None,
+    pipeline: PipelineOpt = None,
+    pipe_rate: PipeRateOpt = None,
 ) -> None:
     """Receive files (the onboard end, 1/240, by default) until interrupted or --count files are in.
 
@@ -194,7 +198,7 @@ def recv_file_cmd(
 
     code = recv_file(RecvOptions(listen, folder, overwrite, max_file, max_dir, serve, count, sysid, compid, rate,
                                  profile, distance, json_out, key, accept_unsigned, profile_file, dialect,
-                                 include or []))
+                                 include or [], pipeline, pipe_rate))
     raise typer.Exit(code)
 
 
@@ -232,6 +236,8 @@ def send_file_cmd(
     no_compress: Annotated[bool, typer.Option("--no-compress", help="Send the file as it is, never as its zlib "
                                                                     "stream (by default a file that deflates "
                                                                     "well goes deflated).")] = False,
+    pipeline: PipelineOpt = None,
+    pipe_rate: PipeRateOpt = None,
 ) -> None:
     """Send a file to a receiver (ttctl recv-file, or the onboard end), or fetch one with --from.
 
@@ -252,7 +258,8 @@ def send_file_cmd(
 
     code = send_file(SendOptions(file, to, from_, name, overwrite, json_out, rate, profile, distance, sysid, compid,
                                  target_sysid, target_compid, timeout, folder, key, accept_unsigned, profile_file,
-                                 dialect, include or [], compress=not no_compress))
+                                 dialect, include or [], compress=not no_compress, pipeline=pipeline,
+                                 pipe_rate=pipe_rate))
     raise typer.Exit(code)
 
 

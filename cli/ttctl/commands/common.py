@@ -28,21 +28,25 @@ class LinkChoice:
     recv_capacity: float | None
     quiet: float | None  # silence after which a half-received frame is given up
     mtu: int = 100  # the link's packet size: the profile's (100 for DJI's DTT, 128 for the Payload SDK channel)
+    pipe_Bps: float | None = None  # a MOP pipeline's rate (--pipe-rate, or the profile's [NAME.pipe])
 
     def describe(self) -> str:
         return f"paced at {self.pace_Bps:.0f} B/s" if self.pace_Bps else "unpaced"
 
 
 def link_choice(rate: float | None, profile: str | None, distance: float, sysid: int,
-                profile_file: Path | None = None) -> LinkChoice:
+                profile_file: Path | None = None, pipe_rate: float | None = None) -> LinkChoice:
     from ..link.model import ProfileError, load_profile
 
     if rate is not None and rate <= 0:
         raise Fail("--rate must be a positive number of bytes per second")
     if distance < 0:
         raise Fail("--distance must not be negative")
+    if pipe_rate is not None and not (pipe_rate > 0 and pipe_rate < float("inf")):
+        raise Fail("--pipe-rate must be a positive number of bytes per second")
     send_cap = recv_cap = None
     mtu = 100
+    pipe_Bps = pipe_rate
     if profile is not None or profile_file is not None:
         try:
             prof = load_profile(profile, str(profile_file) if profile_file else None)
@@ -55,11 +59,29 @@ def link_choice(rate: float | None, profile: str | None, distance: float, sysid:
         send_cap = prof.capacity_Bps(mine, distance)
         recv_cap = prof.capacity_Bps(other, distance)
         mtu = prof.mtu
+        if pipe_Bps is None and prof.pipe is not None:
+            pipe_Bps = prof.pipe.rate_Bps
     if rate is not None:
         send_cap = rate
         recv_cap = recv_cap or rate
     quiet = 3 * mtu / recv_cap if recv_cap else None
-    return LinkChoice(send_cap, send_cap, recv_cap, quiet, mtu)
+    return LinkChoice(send_cap, send_cap, recv_cap, quiet, mtu, pipe_Bps)
+
+
+DEFAULT_PIPE_BPS = 100_000.0  # the mop profile's pipeline (link/profiles.toml)
+
+
+def pipe_link(text: str | None, link: LinkChoice, log: Any) -> tuple[Any, float | None]:
+    """The --pipeline end (link.pipe.PipeLink) and its rate, or (None, None) without one."""
+    if text is None:
+        return None, None
+    from ..link.pipe import PipeLink, parse_pipe
+    from ..link.transport import TransportError
+
+    try:
+        return PipeLink(parse_pipe(text), log), link.pipe_Bps or DEFAULT_PIPE_BPS
+    except TransportError as e:
+        raise Fail(str(e)) from None
 
 
 def parse_endpoint(text: str, udp: str, option: str = "") -> Any:

@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import Fail
-from .common import Signals, check_id, err, link_choice, load_signing, parse_endpoint
+from .common import Signals, check_id, err, link_choice, load_signing, parse_endpoint, pipe_link
 from .dialect import load_bindings
 
 DEFAULT_DTT = "udpin:0.0.0.0:14560"
@@ -42,6 +42,8 @@ class OnboardOptions:
     include_dirs: list[Path] = field(default_factory=list)
     gcs_key: Path | None = None
     dtt_gcs_share: float = 0.5  # of the DTT downlink, for ground stations behind the tablet
+    pipeline: str | None = None  # a MOP pipeline beside the DTT link (tcpin:/tcpout:)
+    pipe_rate: float | None = None
 
 
 def _home(text: str | None) -> Any:
@@ -85,7 +87,8 @@ def emulate_onboard(o: OnboardOptions) -> int:
         raise Fail("--no-gcs and --gcs contradict each other: give one of them")
     dtt = parse_endpoint(o.listen, "udpin")
     gcs = [] if o.no_gcs else [parse_endpoint(g, "udpout") for g in (o.gcs or DEFAULT_GCS)]
-    link = link_choice(o.rate, o.profile, o.distance, o.sysid, o.profile_file)
+    link = link_choice(o.rate, o.profile, o.distance, o.sysid, o.profile_file, o.pipe_rate)
+    pipe, pipe_Bps = pipe_link(o.pipeline, link, err)
     if o.inbox is not None:
         try:
             ReceiveDir(o.inbox).check()
@@ -98,7 +101,8 @@ def emulate_onboard(o: OnboardOptions) -> int:
                         speed=o.speed, rate_Bps=link.pace_Bps, mtu=link.mtu, inbound_Bps=link.recv_capacity,
                         telemetry_hz=o.telemetry_hz, orbit_hz=o.orbit_hz,
                         signing=load_signing(o.key, o.accept_unsigned, b),
-                        gcs_signing=_gcs_signing(o.gcs_key, b), dtt_gcs_share=o.dtt_gcs_share)
+                        gcs_signing=_gcs_signing(o.gcs_key, b), dtt_gcs_share=o.dtt_gcs_share,
+                        pipe=pipe, pipe_Bps=pipe_Bps)
     try:
         plugins = [] if o.no_entry_points else entry_point_plugins()
         for spec in o.plugins:

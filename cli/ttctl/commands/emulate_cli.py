@@ -14,6 +14,8 @@ from .options import (
     DistanceOpt,
     JsonOpt,
     KeyOpt,
+    PipelineOpt,
+    PipeRateOpt,
     ProfileFileOpt,
     ProfileOpt,
     RateOpt,
@@ -67,6 +69,8 @@ def emulate_onboard_cmd(
                                                                          "(`emulate tablet --gcs`): the share of the "
                                                                          "DTT downlink their streams may use.",
                                                  min=0.05, max=1.0)] = 0.5,
+    pipeline: PipelineOpt = None,
+    pipe_rate: PipeRateOpt = None,
 ) -> None:
     """The onboard computer's end, flying a simulated multicopter: the tablet's DTT link (commands,
     telemetry, files) and ground-station links (HEARTBEAT, telemetry, commands, parameters,
@@ -80,7 +84,8 @@ def emulate_onboard_cmd(
                                                     rate, profile, distance, plugin or [], no_entry_points,
                                                     telemetry_hz, orbit_hz, key, accept_unsigned, profile_file,
                                                     dialect, include or [], gcs_key=gcs_key,
-                                                    dtt_gcs_share=dtt_gcs_share)))
+                                                    dtt_gcs_share=dtt_gcs_share, pipeline=pipeline,
+                                                    pipe_rate=pipe_rate)))
 
 
 @emulate_app.command("tablet")
@@ -113,6 +118,8 @@ def emulate_tablet_cmd(
     gcs_share: Annotated[float, typer.Option("--gcs-share", help="The share of the DTT uplink ground stations' frames "
                                                                  "may use (the app's commands go first anyway).",
                                              min=0.05, max=1.0)] = 0.8,
+    pipeline: PipelineOpt = None,
+    pipe_rate: PipeRateOpt = None,
 ) -> None:
     """The tablet's end: commands (take-off, land, hover, return, set-points, trajectories),
     files both ways, any message of the --dialect (msg NAME field=value) and the vehicle's state
@@ -127,4 +134,5 @@ def emulate_tablet_cmd(
                                                   target_sysid, key=key, accept_unsigned=accept_unsigned,
                                                   profile_file=profile_file, dialect=dialect,
                                                   include_dirs=include or [], plugins=plugin or [],
-                                                  gcs=gcs or [], gcs_share=gcs_share)))
+                                                  gcs=gcs or [], gcs_share=gcs_share, pipeline=pipeline,
+                                                  pipe_rate=pipe_rate)))

@@ -54,6 +54,20 @@ def link_relay(
                                                      show_default=False)] = None,
     dialect: DialectOpt = None,
     include: DialectIncludeOpt = None,
+    pipe_listen: Annotated[str | None, typer.Option(
+        "--pipe-listen", metavar="tcp:HOST:PORT", show_default=False,
+        help="Also emulate a MOP pipeline (--profile mop): the tablet side's --pipeline tcpout: connects here.")]
+    = None,
+    pipe_to: Annotated[str | None, typer.Option(
+        "--pipe-to", metavar="tcp:HOST:PORT", show_default=False,
+        help="The onboard side's --pipeline tcpin:, which the relay connects to for each pipeline.")] = None,
+    pipe_drop: Annotated[list[str] | None, typer.Option(
+        "--pipe-drop", metavar="START:SECONDS", show_default=False,
+        help="Close the pipeline START seconds after the relay starts, losing what is in flight, and refuse it "
+             "for SECONDS (repeatable; --outage closes it too).")] = None,
+    pipe_rate: Annotated[float | None, typer.Option(
+        "--pipe-rate", show_default=False,
+        help="The pipeline's rate each way, bytes per second (default: the profile's).")] = None,
 ) -> None:
     """The emulated DJI radio link, as a process between the two ends, in real time.
 
@@ -69,11 +83,15 @@ def link_relay(
     ttctl link relay --listen udp:127.0.0.1:14550 --to udp:127.0.0.1:14560 --loss 0.1
     ttctl recv-file --listen udpin:127.0.0.1:14560 --dir inbox --profile m100
     ttctl send-file FILE --to udpout:127.0.0.1:14550 --profile m100
+
+    With --profile mop and --pipe-listen/--pipe-to it also carries a MOP pipeline (a byte stream at the
+    profile's pipeline rate) between the ends' --pipeline options; --pipe-drop and --outage close it.
     """
     from .relay import RelayOptions, relay
 
     code = relay(RelayOptions(listen, to, profile, distance, loss, loss_model, corrupt, duplicate, reorder, seed,
-                              rate, stats_interval, outage or [], profile_file, burst_mean, dialect, include or []))
+                              rate, stats_interval, outage or [], profile_file, burst_mean, dialect, include or [],
+                              pipe_listen, pipe_to, pipe_drop or [], pipe_rate))
     raise typer.Exit(code)
 
 

@@ -17,6 +17,15 @@ ProfileFileOpt = Annotated[Path | None, typer.Option("--profile-file", help="Tak
                                                                          "e.g. written by `ttctl link fit`); "
                                                                          "--profile may be left out when it holds "
                                                                          "one profile.", show_default=False)]
+PipelineOpt = Annotated[str | None, typer.Option(
+    "--pipeline", metavar="tcpin:HOST:PORT|tcpout:HOST:PORT", show_default=False,
+    help="A MOP pipeline beside the link (DJI's SDK interconnection, or a rehearsal of it through `ttctl link "
+         "relay --profile mop`): tcpin accepts, as the onboard computer does; tcpout connects, as the app does, "
+         "again after every close. While it is open, file data goes on it and everything else stays on the link.")]
+PipeRateOpt = Annotated[float | None, typer.Option(
+    "--pipe-rate", show_default=False,
+    help="The pipeline's rate in bytes per second, each way (default: the profile's pipeline, 100000 with "
+         "--profile mop or without a profile).")]
 DistanceOpt = Annotated[float, typer.Option("--distance", help="Distance in metres, for --profile.")]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Machine-readable output (JSON).")]
 KeyOpt = Annotated[Path | None, typer.Option("--key", help="Sign the DTT link's frames (MAVLink 2 signing) and "

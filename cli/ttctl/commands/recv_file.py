@@ -22,6 +22,7 @@ from .common import (
     load_signing,
     oversize_note,
     parse_endpoint,
+    pipe_link,
     start,
     tick,
     who,
@@ -49,6 +50,8 @@ class RecvOptions:
     profile_file: Path | None = None
     dialect: Path | None = None
     include_dirs: list[Path] = field(default_factory=list)
+    pipeline: str | None = None
+    pipe_rate: float | None = None
 
 
 def recv_file(o: RecvOptions) -> int:
@@ -69,7 +72,7 @@ def _recv_file(o: RecvOptions) -> int:
     check_id(o.compid, "--compid")
     if o.count is not None and o.count < 1:
         raise Fail("--count must be at least 1")
-    link = link_choice(o.rate, o.profile, o.distance, o.sysid, o.profile_file)
+    link = link_choice(o.rate, o.profile, o.distance, o.sysid, o.profile_file, o.pipe_rate)
     b = load_bindings(o.dialect, o.include_dirs)
     signing = load_signing(o.key, o.accept_unsigned, b)
     q = Quota(overwrite=o.overwrite)
@@ -168,7 +171,9 @@ async def _recv(o: RecvOptions, b: Any, spec: Any, link: LinkChoice, store: Any,
     ep = Endpoint(b, o.sysid, o.compid, mtu=transport.mtu, rate_Bps=link.pace_Bps, receive_dir=store,
                   inbound_Bps=link.recv_capacity,
                   serve_dir=str(o.serve) if o.serve is not None else None, on_event=on_event, signing=signing)
-    runner = Runner(ep, transport, quiet=link.quiet, hello=hello(o.sysid, spec, b))
+    pipe, pipe_rate = pipe_link(o.pipeline, link, err)
+    runner = Runner(ep, transport, quiet=link.quiet, hello=hello(o.sysid, spec, b), pipe=pipe,
+                    pipe_rate_Bps=pipe_rate)
     await start(runner)  # the port first: a refusal leaves no directory behind
     try:
         store.prepare()

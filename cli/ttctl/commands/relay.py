@@ -35,16 +35,51 @@ class RelayOptions:
     burst_mean: float | None = None  # None: the profile's
     dialect: Path | None = None  # whose frames prove who is behind an address
     include_dirs: list[Path] = field(default_factory=list)
+    pipe_listen: str | None = None  # a MOP pipeline: where the tablet side connects
+    pipe_to: str | None = None  # ...and the onboard side's --pipeline tcpin:
+    pipe_drops: list[str] = field(default_factory=list)  # START:SECONDS
+    pipe_rate: float | None = None  # None: the profile's pipeline
 
 
-def _outage(text: str) -> tuple[float, float]:
+def _outage(text: str, option: str = "--outage") -> tuple[float, float]:
     start, sep, length = text.partition(":")
     try:
         if not sep:
             raise ValueError
-        return float(start), float(length)
+        window = float(start), float(length)
     except ValueError:
-        raise Fail(f"--outage wants START:SECONDS (seconds from the relay's start), not {text!r}") from None
+        raise Fail(f"{option} wants START:SECONDS (seconds from the relay's start), not {text!r}") from None
+    if not all(0 <= v < 1e9 for v in window):
+        raise Fail(f"{option} {text}: START and SECONDS must be numbers of seconds, 0 or more")
+    return window
+
+
+def _pipe_relay(o: RelayOptions, prof: Any, log: Any) -> Any:
+    """The emulated pipeline (link/pipe_relay.py), or None without --pipe-listen."""
+    from ..link.pipe_relay import PipeRelay
+    from ..link.transport import TransportError, parse_spec
+
+    if o.pipe_listen is None and o.pipe_to is None:
+        if o.pipe_drops:
+            raise Fail("--pipe-drop needs a pipeline: --pipe-listen and --pipe-to")
+        return None
+    if o.pipe_listen is None or o.pipe_to is None:
+        raise Fail("a pipeline needs both --pipe-listen (the tablet side) and --pipe-to (the onboard side)")
+    try:
+        listen = parse_spec(o.pipe_listen.replace("tcpin:", "tcp:", 1), allowed=("tcp",))
+        to = parse_spec(o.pipe_to.replace("tcpout:", "tcp:", 1), allowed=("tcp",))
+    except TransportError as e:
+        raise Fail(f"{e} (the pipeline is a TCP stream: tcp:HOST:PORT)") from None
+    if (listen.host, listen.port) == (to.host, to.port):
+        raise Fail(f"--pipe-to {o.pipe_to} is the relay's own --pipe-listen address")
+    rate = o.pipe_rate if o.pipe_rate is not None else (prof.pipe.rate_Bps if prof.pipe is not None else None)
+    if rate is None:
+        raise Fail(f"profile {prof.name!r} has no pipeline: use --profile mop, or give --pipe-rate")
+    if not 0 < rate < float("inf"):
+        raise Fail("--pipe-rate must be a positive number of bytes per second")
+    latency = prof.pipe.latency_s if prof.pipe is not None else 0.02
+    drops = [_outage(t, "--pipe-drop") for t in o.pipe_drops] + [_outage(t) for t in o.outages]
+    return PipeRelay(listen, to, rate, latency, drops, log)
 
 
 class FrameCheck:
@@ -121,6 +156,7 @@ def relay(o: RelayOptions) -> int:
                   validate=FrameCheck(b))
     except ProfileError as e:
         raise Fail(str(e)) from None
+    pipe = _pipe_relay(o, prof, lambda text: err(f"relay: {text}"))
 
     async def main() -> None:
         loop = asyncio.get_running_loop()
@@ -129,11 +165,20 @@ def relay(o: RelayOptions) -> int:
         try:
             from ..link.relay import run_relay
 
-            await run_relay(r, sigs.stop, o.stats_interval, lambda text: print(text, file=sys.stderr, flush=True))
+            if pipe is not None:
+                try:
+                    await pipe.open()
+                except OSError as e:
+                    raise Fail(f"--pipe-listen {o.pipe_listen}: {e.strerror or e}") from None
+                err(f"relay: {pipe.describe()}")
+            await run_relay(r, sigs.stop, o.stats_interval, lambda text: print(text, file=sys.stderr, flush=True),
+                            extra=pipe.stats_text if pipe is not None else None)
         except TransportError as e:
             raise Fail(str(e)) from None
         finally:
             sigs.remove()
+            if pipe is not None:
+                pipe.close()
 
     try:
         asyncio.run(main())

@@ -27,6 +27,7 @@ from .common import (
     load_signing,
     oversize_note,
     parse_endpoint,
+    pipe_link,
     start,
     tick,
     who,
@@ -57,6 +58,8 @@ class SendOptions:
     dialect: Path | None = None
     include_dirs: list[Path] = field(default_factory=list)
     compress: bool = True
+    pipeline: str | None = None
+    pipe_rate: float | None = None
 
 
 @dataclass
@@ -91,7 +94,7 @@ def _send_file(o: SendOptions, printed: list[bool]) -> int:
         check_id(v, what)
     if o.timeout <= 0:
         raise Fail("--timeout must be positive")
-    link = link_choice(o.rate, o.profile, o.distance, o.sysid, o.profile_file)
+    link = link_choice(o.rate, o.profile, o.distance, o.sysid, o.profile_file, o.pipe_rate)
     if o.to is not None and o.dir is not None:
         raise Fail("--dir is where --from downloads go; with --to, FILE is the file to send")
     if o.to is None and (o.name is not None or o.overwrite):
@@ -173,13 +176,23 @@ async def _open_end(o: SendOptions, side: _End, spec: Any, link: LinkChoice, bar
     transport = make_transport(spec, log=bar.log, mtu=link.mtu if spec.udp else None)
     ep = Endpoint(side.bindings, o.sysid, o.compid, mtu=transport.mtu, rate_Bps=link.pace_Bps,
                   config=TransferConfig(give_up_after=o.timeout), signing=side.signing, on_event=on_event, **endpoint)
-    runner = Runner(ep, transport, quiet=link.quiet)
+    pipe, pipe_rate = pipe_link(o.pipeline, link, bar.log)
+    runner = Runner(ep, transport, quiet=link.quiet, pipe=pipe, pipe_rate_Bps=pipe_rate)
     try:
         await start(runner)
     except Fail:
         bar.stop()
         raise
     return ep, runner
+
+
+def _pipe_report(runner: Any) -> dict[str, Any]:
+    """What a --pipeline did: how often it opened and closed, and the bytes it carried each way."""
+    pipe = runner.pipe
+    if pipe is None:
+        return {}
+    return {"pipeline_opens": pipe.opened, "pipeline_closes": runner.ep.pipe.closes,
+            "pipeline_bytes_out": pipe.bytes_out, "pipeline_bytes_in": pipe.bytes_in}
 
 
 async def _upload(o: SendOptions, side: _End, spec: Any, link: LinkChoice, src: Any, name: str,
@@ -223,6 +236,9 @@ async def _upload(o: SendOptions, side: _End, spec: Any, link: LinkChoice, src: 
     moved = max(0, r.size - resumed)
     goodput = moved / r.seconds if r.seconds > 0 else 0.0
     cap = link.send_capacity
+    pipe = runner.pipe
+    if pipe is not None and pipe.opened:
+        cap = runner.pipe_rate_Bps  # the data went on the pipeline (all of it, or but what a close moved)
     report = {
         "ok": r.ok, "code": r.code, "message": r.message, "name": r.name, "bytes": r.size,
         "sha256": src.sha256.hex(), "seconds": round(r.seconds, 3),
@@ -233,6 +249,7 @@ async def _upload(o: SendOptions, side: _End, spec: Any, link: LinkChoice, src: 
         "resumed_bytes": resumed, "nothing_sent": r.nothing_sent, "restarts": st.restarts,
         "deflated_bytes": r.deflated, "deflate_fallback": r.fallback, "rate_grant_Bps": st.min_grant,
         "peer": who(target), "endpoint": transport.describe(), "direction": "send",
+        **_pipe_report(runner),
     }
     if sigs.stop.is_set() and not r.ok:
         return Outcome(False, report, interrupted=True)
@@ -362,6 +379,8 @@ async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, sto
     ok = bool(state["done"])
     goodput = size / secs if ok and secs > 0 else None
     cap = link.recv_capacity
+    if runner.pipe is not None and runner.pipe.opened:
+        cap = runner.pipe_rate_Bps
     report = {
         "ok": ok, "code": "COMPLETE" if ok else (state["code"] or "FAILED"),
         "message": f"{name}: {size} bytes received and verified" if ok else (state["error"] or ""),
@@ -373,6 +392,7 @@ async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, sto
         "retransmitted_bytes": None, "frames_sent": None, "frames_received": t.frames if t is not None else 0,
         "path": t.final_path if t is not None else None, "peer": peer, "endpoint": transport.describe(),
         "direction": "fetch", "deflated_bytes": t.size if t is not None and t.original is not None else None,
+        **_pipe_report(runner),
     }
     if sigs.stop.is_set() and not ok:
         return Outcome(False, report, interrupted=True)

@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import Fail
-from .common import ONBOARD, Signals, check_id, err, link_choice, load_signing, parse_endpoint
+from .common import ONBOARD, Signals, check_id, err, link_choice, load_signing, parse_endpoint, pipe_link
 from .dialect import load_bindings
 
 HELP = ("takeoff [ALT] | land | hover | return | goto N E ALT | move DN DE DALT | fly FILE | send FILE | "
@@ -45,6 +45,8 @@ class TabletOptions:
     plugins: list[str] = field(default_factory=list)
     gcs: list[str] = field(default_factory=list)
     gcs_share: float = 0.8
+    pipeline: str | None = None  # a MOP pipeline beside the link (tcpout:, as the app connects)
+    pipe_rate: float | None = None
 
 
 def _prompt_msg(text: str) -> Any:
@@ -116,7 +118,8 @@ def _emulate_tablet(o: TabletOptions) -> int:
     check_id(o.target_sysid, "--target-sysid")
     spec = parse_endpoint(o.to, "udpout")
     gcs = [parse_endpoint(g, "udpout", "--gcs") for g in o.gcs]
-    link = link_choice(o.rate, o.profile, o.distance, 255, o.profile_file)
+    link = link_choice(o.rate, o.profile, o.distance, 255, o.profile_file, o.pipe_rate)
+    pipe = pipe_link(o.pipeline, link, err)
     b = load_bindings(o.dialect, o.include_dirs)  # before the plugins: they import its package
     if gcs:
         for name in ("HEARTBEAT", "RADIO_STATUS", "COMMAND_LONG"):
@@ -141,13 +144,13 @@ def _emulate_tablet(o: TabletOptions) -> int:
         except StepError as e:
             raise Fail(f"--script {o.script}: {e}") from None
     try:
-        return asyncio.run(_run(o, b, spec, link, steps, plugins, gcs))
+        return asyncio.run(_run(o, b, spec, link, steps, plugins, gcs, pipe))
     except KeyboardInterrupt:
         return 130
 
 
 async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any, plugins: list[Any],
-               gcs: list[Any]) -> int:
+               gcs: list[Any], pipe: tuple[Any, float | None] = (None, None)) -> int:
     from ..ends.tablet.session import TabletSession
     from ..ends.tablet.steps import StepError, run_step
     from ..link.transport import TransportError
@@ -171,7 +174,7 @@ async def _run(o: TabletOptions, b: Any, spec: Any, link: Any, steps: Any, plugi
     try:
         s = TabletSession(b, spec, (o.target_sysid, ONBOARD[1]), rate_Bps=link.pace_Bps, mtu=link.mtu, inbox=o.dir,
                           on_event=event, log=err, signing=load_signing(o.key, o.accept_unsigned, b),
-                          plugins=plugins, gcs=gcs, gcs_share=o.gcs_share)
+                          plugins=plugins, gcs=gcs, gcs_share=o.gcs_share, pipe=pipe[0], pipe_Bps=pipe[1])
     except PluginError as e:
         raise Fail(f"--plugin {e}") from None
     try:

@@ -9,6 +9,11 @@ offer retry, ...) or until something arrives, whichever is first. After a few pa
 silence from a source with a long frame half received, it calls `Endpoint.flush` so that
 frames in the packets taken for it are not held back. It never spins: a wake-up time that produces nothing
 costs a millisecond's sleep, not a busy loop.
+
+With a `pipe` (link/pipe.py: a MOP pipeline's byte stream), the pump also writes the file data
+`Endpoint.pipe` lets go onto it, whole frames, while the pipeline holds less than PIPE_BACKLOG
+unsent; each of its connections opens and closes the endpoint's pipeline path
+(proto/pipeline.py) and is parsed as a source of its own.
 """
 
 from __future__ import annotations
@@ -26,6 +31,8 @@ BURST = 16  # packets sent without yielding to the loop (receives and timers get
 SPIN_GUARD = 0.001  # least sleep when a wake-up time is already past but nothing went out
 CATCH_UP = 0.002  # a late wake-up by up to this much keeps the pacer's schedule (timer granularity)
 QUIET_MIN, QUIET_MAX = 0.02, 2.0
+PIPE_BACKLOG = 16 * 1024  # bytes written to a pipeline and not yet taken by its socket: no more file data
+PIPE_WAIT = 0.005  # s between looks at a pipeline that is behind
 
 
 @dataclass
@@ -35,6 +42,7 @@ class RunnerStats:
     bytes_in: int = 0
     bytes_out: int = 0
     flushes: int = 0
+    pipe_frames: int = 0
     wakeups: int = 0
     idle_wakeups: int = 0  # wake-ups that sent nothing (timers, status checks)
 
@@ -46,8 +54,10 @@ class Runner:
 
     def __init__(self, endpoint: Endpoint, transport: Transport, quiet: float | None = None,
                  hello: Callable[[], Any] | None = None, hello_interval: float = 1.0,
-                 probes: Any = None) -> None:
+                 probes: Any = None, pipe: Any = None, pipe_rate_Bps: float | None = None) -> None:
         self.ep = endpoint
+        self.pipe = pipe  # a link.pipe.PipeLink, or None
+        self.pipe_rate_Bps = pipe_rate_Bps
         # something that may take a datagram before the endpoint does (`take(data, source) ->
         # bool`): ttctl.link.probes.LinkProbes beside an onboard end
         self.probes = probes
@@ -69,6 +79,10 @@ class Runner:
         self._loop: asyncio.AbstractEventLoop | None = None
         transport.on_receive = self._on_data
         transport.on_close = endpoint.forget_source
+        if pipe is not None:
+            pipe.on_open = self._pipe_open
+            pipe.on_close = self._pipe_close
+            pipe.on_data = self._pipe_data
 
     # -- the clock ------------------------------------------------------------------------------
     def now(self) -> float:
@@ -91,6 +105,12 @@ class Runner:
         self._loop = asyncio.get_running_loop()
         self.sync()
         await self.transport.open()
+        if self.pipe is not None:
+            try:
+                await self.pipe.open()
+            except BaseException:
+                self.transport.close()
+                raise
         self._task = self._loop.create_task(self._pump())
 
     def kick(self) -> None:
@@ -120,6 +140,8 @@ class Runner:
             with contextlib.suppress(asyncio.CancelledError, Exception):
                 await self._task
         self.transport.close()
+        if self.pipe is not None:
+            self.pipe.close()
 
     @property
     def failed(self) -> BaseException | None:
@@ -149,6 +171,23 @@ class Runner:
             if ids:
                 self.transport.confirm(source, ids)
         except Exception as e:  # a bug, not bad input (the parsers take anything): report it once
+            self._error = self._error or e
+        self.kick()
+
+    # -- the pipeline ---------------------------------------------------------------------------
+    def _pipe_open(self, n: int) -> None:
+        self.ep.pipe.open(self.now(), self.pipe_rate_Bps or 0.0)
+        self.kick()
+
+    def _pipe_close(self, n: int, words: str) -> None:
+        self.ep.pipe.close(self.now())
+        self.ep.forget_source(("pipe", n))
+        self.kick()
+
+    def _pipe_data(self, data: bytes, n: int) -> None:
+        try:
+            self.ep.receive_stream(self.now(), data, ("pipe", n))
+        except Exception as e:  # a bug, not bad input
             self._error = self._error or e
         self.kick()
 
@@ -183,6 +222,14 @@ class Runner:
                 sent += 1
                 self.stats.packets_out += 1
                 self.stats.bytes_out += len(pkt)
+            pipe = self.pipe
+            while pipe is not None and pipe.is_open and pipe.backlog() < PIPE_BACKLOG and sent < 4 * BURST:
+                frame = self.ep.pipe.poll(now)
+                if frame is None:
+                    break
+                pipe.write(frame)
+                sent += 1
+                self.stats.pipe_frames += 1
             self.stats.wakeups += 1
             if sent == 0:
                 self.stats.idle_wakeups += 1
@@ -200,6 +247,9 @@ class Runner:
                 continue
             hello_at = self._hello_due if self.hello is not None and self.last_rx is None else None
             times = [t for t in (self.ep.wakeup(), flush_at, hello_at) if t is not None]
+            if pipe is not None and pipe.is_open and pipe.backlog() >= PIPE_BACKLOG:
+                # the pipeline's socket is behind: look again shortly rather than at the pacer's time
+                times = [max(t, real + PIPE_WAIT) for t in times]
             target = min(times) if times else None
             if target is not None and target <= loop.time() and sent == 0:
                 target = loop.time() + SPIN_GUARD  # due but nothing to do: do not spin

@@ -103,12 +103,29 @@ class DirectionProfile:
 
 
 @dataclass(frozen=True)
+class PipeProfile:
+    """A pipeline beside the packet channel (DJI's MOP): a reliable byte stream at `rate_Bps`
+    each way, delivering `latency_s` after its bytes leave."""
+
+    rate_Bps: float
+    latency_s: float = 0.02
+
+    def check(self, where: str) -> None:
+        for key, v in (("rate_Bps", self.rate_Bps), ("latency_s", self.latency_s)):
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v < 0:
+                raise ProfileError(f"{where}.{key} must be a finite number >= 0")
+        if not 1000 <= self.rate_Bps <= 1e9:
+            raise ProfileError(f"{where}.rate_Bps must be in 1000..1e9 bytes per second")
+
+
+@dataclass(frozen=True)
 class Profile:
     name: str
     description: str
     mtu: int
     up: DirectionProfile
     down: DirectionProfile
+    pipe: PipeProfile | None = None  # a MOP pipeline beside the packets ([NAME.pipe])
 
     def direction(self, d: str) -> DirectionProfile:
         if d not in DIRECTIONS:
@@ -193,7 +210,13 @@ def load_profile(name: str | None, path: str | None = None) -> Profile:
         if isinstance(mtu, bool) or not isinstance(mtu, int) or not 22 <= mtu <= 255:
             raise ProfileError(f"{where}: {name}.mtu must be a whole number of bytes in 22..255 (100 on DJI's DTT, "
                                f"128 on the Payload SDK channel; 22 is the least a file-data frame needs)")
-        return Profile(name, str(raw.get("description", "")), mtu, dirs["up"], dirs["down"])
+        pipe = None
+        if "pipe" in raw:
+            if not isinstance(raw["pipe"], dict):
+                raise ProfileError(f"{where}: {name}.pipe must be a table ([{name}.pipe] with rate_Bps)")
+            pipe = PipeProfile(**raw["pipe"])
+            pipe.check(f"{where}: {name}.pipe")
+        return Profile(name, str(raw.get("description", "")), mtu, dirs["up"], dirs["down"], pipe)
     except TypeError as e:
         field_name = str(e).rsplit(" ", 1)[-1].strip("'")
         raise ProfileError(f"{where}: profile {name!r} is malformed: unknown or missing field {field_name!r}") from None

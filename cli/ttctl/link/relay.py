@@ -104,9 +104,13 @@ class Relay:
         return f"relay {elapsed:.1f} s: {part('up', self.up)} | {part('down', self.down)}{tail}"
 
 
-async def run_relay(relay: Relay, stop: asyncio.Event, stats_interval: float, emit: Callable[[str], None]) -> None:
+async def run_relay(relay: Relay, stop: asyncio.Event, stats_interval: float, emit: Callable[[str], None],
+                    extra: Callable[[], str] | None = None) -> None:
     """Carry packets until `stop` is set, printing a stats line every `stats_interval` s
-    (0: only at the end)."""
+    (0: only at the end), with `extra()` appended (the pipeline's)."""
+    def line() -> str:
+        return relay.stats_line() + (f" | {extra()}" if extra is not None else "")
+
     await relay.open()
     emit(f"relay: {relay.a.describe()} (up: {relay.up.capacity_Bps():.0f} B/s) <-> {relay.b.describe()} "
          f"(down: {relay.down.capacity_Bps():.0f} B/s), profile {relay.up.profile.name}")
@@ -115,9 +119,9 @@ async def run_relay(relay: Relay, stop: asyncio.Event, stats_interval: float, em
             try:
                 await asyncio.wait_for(stop.wait(), stats_interval if stats_interval > 0 else None)
             except TimeoutError:
-                emit(relay.stats_line())
+                emit(line())
     finally:
-        emit(relay.stats_line())
+        emit(line())
         relay.close()
 
 

@@ -5,6 +5,13 @@ An end is anything with the sans-IO node interface: `receive(now, packet)`, `pol
 returning the next packet to send now (or None), and `wakeup()` returning the next time it
 needs attention (or None). Ends on a direction with per-packet feedback (the tablet) are only
 polled when the radio is free, as DJI's completion callback allows; the others pace themselves.
+
+With a `PipeModel`, the ends also share a pipeline (DJI's MOP: a reliable byte stream) beside
+the packets: frames an end's `pipe.poll(now)` lets go arrive whole, in order, after the
+pipeline's serialisation and latency, through `receive_stream(now, data, ("pipe", n))`, where n
+numbers the connection. At each drop (the pipeline closes, or times out) what is still in flight
+is lost, both ends are told (`pipe.close(now)`), and the pipeline opens again after the drop's
+seconds (`pipe.open(now, rate)`).
 """
 
 from __future__ import annotations
@@ -24,12 +31,36 @@ class Node(Protocol):
     def wakeup(self) -> float | None: ...
 
 
+class PipeModel:
+    """A pipeline at `rate_Bps` each way with `latency_s`, open from `opens_at`, closed for each
+    (start, seconds) in `drops`."""
+
+    def __init__(self, rate_Bps: float, latency_s: float = 0.02, drops: list[tuple[float, float]] | None = None,
+                 opens_at: float = 0.0) -> None:
+        self.rate_Bps = rate_Bps
+        self.latency_s = latency_s
+        self.drops = sorted(drops or [])
+        self.opens_at = opens_at
+        self.connection = 0  # 0: not open yet
+        self.open = False
+        self.free_at = [0.0, 0.0]  # per direction: when the pipeline has sent what it was given
+        self.bytes = [0, 0]
+        self.lost_in_flight = [0, 0]  # bytes given to the pipeline and lost with a drop
+
+    def next_change(self) -> float | None:
+        if not self.open:
+            return self.opens_at
+        return self.drops[0][0] if self.drops else None
+
+
 class Simulation:
-    def __init__(self, a: Node, b: Node, a_to_b: Channel, b_to_a: Channel) -> None:
+    def __init__(self, a: Node, b: Node, a_to_b: Channel, b_to_a: Channel, pipe: PipeModel | None = None) -> None:
         self.nodes = (a, b)
         self.channels = (a_to_b, b_to_a)
+        self.pipe = pipe
         self.now = 0.0
-        self._events: list[tuple[float, int, int, bytes]] = []  # (time, seq, destination, packet)
+        # (time, seq, destination, data, pipeline connection or 0 for a packet)
+        self._events: list[tuple[float, int, int, bytes, int]] = []
         self._seq = 0
         self.steps = 0
 
@@ -43,10 +74,50 @@ class Simulation:
                     break
                 for t, data in ch.submit(self.now, pkt):
                     self._seq += 1
-                    heapq.heappush(self._events, (t, self._seq, 1 - i, data))
+                    heapq.heappush(self._events, (t, self._seq, 1 - i, data, 0))
+        pipe = self.pipe
+        if pipe is None or not pipe.open:
+            return
+        for i, node in enumerate(self.nodes):
+            while True:
+                frame = node.pipe.poll(self.now)  # type: ignore[attr-defined]
+                if frame is None:
+                    break
+                left = max(self.now, pipe.free_at[i]) + len(frame) / pipe.rate_Bps
+                pipe.free_at[i] = left
+                pipe.bytes[i] += len(frame)
+                self._seq += 1
+                heapq.heappush(self._events, (left + pipe.latency_s, self._seq, 1 - i, frame, pipe.connection))
+
+    def _pipe_change(self) -> None:
+        pipe = self.pipe
+        assert pipe is not None
+        if not pipe.open:
+            pipe.open = True
+            pipe.connection += 1
+            pipe.free_at = [self.now, self.now]
+            for node in self.nodes:
+                node.pipe.open(self.now, pipe.rate_Bps)  # type: ignore[attr-defined]
+            return
+        start, seconds = pipe.drops.pop(0)
+        pipe.open = False
+        pipe.opens_at = start + seconds
+        kept = []
+        for ev in self._events:
+            if ev[4] == pipe.connection:
+                pipe.lost_in_flight[1 - ev[2]] += len(ev[3])
+            else:
+                kept.append(ev)
+        heapq.heapify(kept)
+        self._events = kept
+        for node in self.nodes:
+            node.pipe.close(self.now)  # type: ignore[attr-defined]
+            node.forget_source(("pipe", pipe.connection))  # type: ignore[attr-defined]
 
     def _next_time(self) -> float | None:
         times = [self._events[0][0]] if self._events else []
+        if self.pipe is not None and (t := self.pipe.next_change()) is not None:
+            times.append(max(t, self.now))
         for node, ch in zip(self.nodes, self.channels, strict=True):
             w = node.wakeup()
             if w is not None:
@@ -73,7 +144,14 @@ class Simulation:
                 self.now = until if t is not None else self.now
                 break
             self.now = max(self.now, t)
+            pipe = self.pipe
+            if pipe is not None and (c := pipe.next_change()) is not None and c <= self.now:
+                self._pipe_change()
+                continue
             while self._events and self._events[0][0] <= self.now:
-                _, _, dest, data = heapq.heappop(self._events)
-                self.nodes[dest].receive(self.now, data)
+                _, _, dest, data, conn = heapq.heappop(self._events)
+                if conn:
+                    self.nodes[dest].receive_stream(self.now, data, ("pipe", conn))  # type: ignore[attr-defined]
+                else:
+                    self.nodes[dest].receive(self.now, data)
         return self.now

@@ -24,6 +24,7 @@ from ..wire.packets import PacketReceiver
 from .commands import FINAL_OK, Action, Command, CommandClient, CommandServer, log_chunks
 from .deflate import DeflatedSource
 from .names import Refused, check_name, encoded
+from .pipeline import Pipe
 from .ranges import RangeSet
 from .receiver import FileReceiver
 from .scheduler import BULK, CONTROL, TELEMETRY, Scheduler
@@ -146,6 +147,7 @@ class Endpoint:
         self._refused_sources: set[Hashable] = set()  # reported once each (signing)
         self.unknown = 0  # frames of messages this dialect lacks (the peer speaks another one)
         self._unknown_told: set[int] = set()  # msgids reported (once each)
+        self.pipe = Pipe(self)  # a pipeline beside the packets, when one opens (pipeline.py)
 
     # -- node interface -----------------------------------------------------------------------
     def receive(self, now: float, packet: bytes, source: Hashable = None) -> set[tuple[int, int]]:
@@ -220,10 +222,13 @@ class Endpoint:
         for r in self.requests.values():
             if not r.answered:
                 times.append(min(r.due, r.give_up) if r._refusal is None else r._refusal[1] + r.reason_wait)
-        if self.scheduler.busy or any(s.has_data(self.now) for s in self.senders.values()) \
+        file_data = not self.pipe.is_open and any(s.has_data(self.now) for s in self.senders.values())
+        if self.scheduler.busy or file_data \
                 or any(s.has_data(self.now) for s in self._streams_out):
             times.append(self.scheduler.ready_at())
         times += [t for s in self._streams_out if (t := s.deadline(self.now)) is not None]
+        if (t := self.pipe.ready_at()) is not None:
+            times.append(t)
         return min(times) if times else None
 
     # -- what the user asks for ------------------------------------------------------------------
@@ -240,9 +245,7 @@ class Endpoint:
         sender = FileSender(self.b, self._new_id, src, name or Path(path).name, target, self.cfg, request_id, overwrite,
                             self.now, on_progress, self.compress if compress is None else compress)
         sender.owns_source = source is None
-        rate = self.scheduler.pacer.rate
-        sender.byte_time = 1.0 / rate if rate else 0.0
-        sender.geometry = self.geometry
+        self.pipe.adopt(sender)  # its frames cut for the path file data takes now
         self.senders[sender.id] = sender
         self.scheduler.add_source(self._puller(sender))
         return sender

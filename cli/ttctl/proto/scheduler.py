@@ -12,6 +12,13 @@ With MAVLink signing, frames are signed as they are placed in a packet (`sign`),
 timestamps increase in the order they go on the wire whatever the priorities reorder, and no
 frame is slipped between the pieces of a long one (it would arrive, with a later timestamp,
 before the long frame completes, which the receiver would then refuse as a replay).
+
+A second path, a pipeline (DJI's MOP: a reliable byte stream beside the packet channel), may be
+open (`open_pipe`): while it is, bulk data is pulled for it (`next_pipe_frame`, paced at the
+pipeline's own rate, whole frames, no packet size) and the packets carry only control and
+telemetry, so a command never waits behind a file. When it closes (`close_pipe`) bulk data goes
+back into the packets. Signed frames from both paths take their timestamps from one signer, in the
+order they are placed.
 """
 
 from __future__ import annotations
@@ -20,6 +27,7 @@ from collections import deque
 from collections.abc import Callable
 
 SIGNATURE_OVERHEAD = 13
+PIPE_SLACK = 0.02  # s of a late wake-up the pipeline's pacer makes up (a stream has no radio buffer to overflow)
 
 CONTROL, TELEMETRY, BULK = 0, 1, 2
 PRIORITY_NAMES = {CONTROL: "control", TELEMETRY: "telemetry", BULK: "bulk"}
@@ -33,9 +41,12 @@ class Pacer:
     """Lets packets leave at `rate` bytes per second on average: a packet of n bytes
     occupies n / rate seconds of the link. rate None means unpaced."""
 
-    def __init__(self, rate_Bps: float | None) -> None:
+    def __init__(self, rate_Bps: float | None, slack: float = 0.0) -> None:
         self.rate = rate_Bps
         self.next_free = 0.0
+        # seconds of lateness it makes up (a timer that wakes late sends a little burst rather
+        # than losing the time; 0: none, for a radio whose buffer a burst would overflow)
+        self.slack = slack
 
     def ready_at(self) -> float:
         return self.next_free if self.rate else 0.0
@@ -45,7 +56,7 @@ class Pacer:
 
     def sent(self, now: float, nbytes: int) -> None:
         if self.rate:
-            self.next_free = max(now, self.next_free) + nbytes / self.rate
+            self.next_free = max(now - self.slack, self.next_free) + nbytes / self.rate
 
 
 class Scheduler:
@@ -65,6 +76,10 @@ class Scheduler:
         self.packets = 0
         self.bytes = 0
         self.dropped_telemetry = 0
+        self.pipe: Pacer | None = None  # the pipeline's pace while one is open
+        self._pipe_sign: Callable[[bytes], bytes] | None = None
+        self.pipe_frames = 0
+        self.pipe_bytes = 0
 
     # -- what to send ------------------------------------------------------------------------
     def send(self, frame: bytes, priority: int = CONTROL, key: object = None) -> None:
@@ -94,6 +109,42 @@ class Scheduler:
     def remove_source(self, pull: BulkPull) -> None:
         if pull in self.sources:
             self.sources.remove(pull)
+
+    # -- the pipeline ------------------------------------------------------------------------
+    def open_pipe(self, rate_Bps: float | None, now: float = 0.0,
+                  sign: Callable[[bytes], bytes] | None = None) -> None:
+        """Bulk data goes on a pipeline at `rate_Bps` (None: as fast as it is pulled) from now,
+        signed by `sign` when the link is signed (the pipeline's own link id: see pipeline.py)."""
+        self.pipe = Pacer(rate_Bps, slack=PIPE_SLACK)
+        self.pipe.next_free = now
+        self._pipe_sign = sign
+
+    def close_pipe(self) -> None:
+        self.pipe = None
+
+    def pipe_ready_at(self) -> float | None:
+        """When the pipeline may take the next bulk frame (None: no pipeline)."""
+        return None if self.pipe is None else self.pipe.ready_at()
+
+    def next_pipe_frame(self, now: float, space: int) -> bytes | None:
+        """The next bulk frame for the pipeline, if one may leave now (`space`: the largest frame
+        the stream takes in one piece, any MAVLink frame)."""
+        pipe = self.pipe
+        if pipe is None or not pipe.ready(now) or not self.sources:
+            return None
+        n = len(self.sources)
+        for k in range(n):
+            i = (self._rr + k) % n
+            pulled = self.sources[i](now, space)
+            if pulled is not None:
+                self._rr = (i + 1) % n
+                sign = self._pipe_sign or self.sign
+                frame = sign(pulled) if sign is not None else pulled
+                pipe.sent(now, len(frame))
+                self.pipe_frames += 1
+                self.pipe_bytes += len(frame)
+                return frame
+        return None
 
     @property
     def busy(self) -> bool:
@@ -163,6 +214,8 @@ class Scheduler:
         if self._held is not None:
             frame, self._held = self._held, None
             return frame, BULK, None
+        if self.pipe is not None:
+            return None  # bulk data takes the pipeline
         n = len(self.sources)
         for k in range(n):
             i = (self._rr + k) % n

@@ -80,6 +80,7 @@ class FileSender:
         self._rtt_sampled = False
         self.byte_time = 0.0  # seconds per byte on the link, if known (set by the endpoint)
         self.geometry = DTT  # the link's packet size and signing: the data frames' sizes (set by the endpoint)
+        self.on_stream = False  # file data goes on a pipeline (a byte stream) now: see use_path
         self.pacer = GrantPacer()  # the receiver's rate grant for our data frames
         self._begin(now)
 
@@ -97,7 +98,7 @@ class FileSender:
         self._offer_interval = self.cfg.offer_interval
         self._last_offer: float | None = None
         self._offers_since_answer = 0
-        self.mode = "narrow" if self.cfg.frame_mode in ("auto", "narrow") else "wide"
+        self.mode = self._first_mode()
         self.loss: dict[str, float | None] = {"narrow": None, "wide": None}  # per-packet loss estimates
         self._unclassified: list[tuple[int, int, float, str]] = []  # first sends not yet known lost or not
         self._outcomes: dict[str, list[bool]] = {"narrow": [], "wide": []}  # recent first sends: lost?
@@ -105,6 +106,26 @@ class FileSender:
         self._sends: dict[int, tuple[float, int]] = {}  # offset -> (last send time, sends)
         self._since: dict[int, int] = {}  # offset -> sends since it was last known to be missing
         self._answers = 0
+
+    def _first_mode(self) -> str:
+        if self.cfg.frame_mode == "auto":
+            return "wide" if self.on_stream else "narrow"
+        return "narrow" if self.cfg.frame_mode == "narrow" else "wide"
+
+    def use_path(self, geometry: Any, byte_time: float, stream: bool) -> None:
+        """File data takes another path from now on (a pipeline opened or closed, pipeline.py):
+        frames are cut for it from the next offset. What was sent and not acknowledged stays
+        owed: the receiver's status reports what the old path lost, and that is resent. Loss
+        learnt on the old path says nothing of the new one."""
+        if stream == self.on_stream and geometry == self.geometry and byte_time == self.byte_time:
+            return
+        self.geometry = geometry
+        self.byte_time = byte_time
+        self.on_stream = stream
+        self.mode = self._first_mode()
+        self.loss = {"narrow": None, "wide": None}
+        self._unclassified = []
+        self._outcomes = {"narrow": [], "wide": []}
 
     def _use(self, z: DeflatedSource | None) -> None:
         """Offer the zlib stream `z`, or the file as it is (None)."""
@@ -257,6 +278,8 @@ class FileSender:
     def _choose_mode(self) -> str:
         if self.cfg.frame_mode != "auto":
             return self.cfg.frame_mode
+        if self.on_stream:
+            return "wide"  # a stream loses nothing but what is in flight when it closes
         if self.pacer.grant:
             # sharing the link: a wide frame's three packets back to back fill the radio's
             # buffer for the others, and the buffer's overflow takes the whole frame

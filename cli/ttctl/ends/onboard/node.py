@@ -57,6 +57,8 @@ class OnboardConfig:
     signing: Any = None  # Signing for the DTT link (None: unsigned, signed frames unverified)
     gcs_signing: Any = None  # Signing for the ground-station links (every frame signed, only signed ones taken)
     dtt_gcs_share: float = 0.5  # of the DTT downlink, for the streams of ground stations behind the tablet
+    pipe: Any = None  # a MOP pipeline beside the tablet's link (link.pipe.PipeLink), or None
+    pipe_Bps: float | None = None  # its rate
 
 
 class OnboardNode:
@@ -284,7 +286,8 @@ class OnboardNode:
                                      on_event=self._file_event, signing=self.cfg.signing,
                                      clock_ms=lambda now: int(self.vehicle_time * 1000), divert=self._from_dtt_gcs)
             self.dtt_gcs.attach(self.endpoint)
-            self.runner = Runner(self.endpoint, transport, probes=self._probes(transport))
+            self.runner = Runner(self.endpoint, transport, probes=self._probes(transport), pipe=self.cfg.pipe,
+                                 pipe_rate_Bps=self.cfg.pipe_Bps)
             await self.runner.start()
         if store is not None:
             store.prepare()

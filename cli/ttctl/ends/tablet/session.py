@@ -72,7 +72,7 @@ class TabletSession:
                  on_event: Callable[[str, dict[str, Any]], None] | None = None,
                  log: Callable[[str], None] | None = None, signing: Any = None,
                  plugins: list[Plugin] | None = None, gcs: list[Spec] | None = None,
-                 gcs_share: float | None = None) -> None:
+                 gcs_share: float | None = None, pipe: Any = None, pipe_Bps: float | None = None) -> None:
         self.b = bindings
         self.spec = spec
         self.target = target
@@ -91,7 +91,8 @@ class TabletSession:
                            config=TransferConfig(give_up_after=timeout), on_message=self._on_message,
                            on_event=self._on_file_event, accept_commands=False, unsolicited=False,
                            signing=signing, divert=self.bridge.divert if self.bridge else None)
-        self.runner = Runner(self.ep, self.transport)  # its own heartbeats make it known (udpout)
+        # its own heartbeats make it known (udpout); file data on the pipeline while one is open
+        self.runner = Runner(self.ep, self.transport, pipe=pipe, pipe_rate_Bps=pipe_Bps)
         self._changed = asyncio.Event()
         self._file_events: dict[Any, str] = {}
         self._log_parts: dict[int, dict[int, bytes]] = {}
