@@ -248,8 +248,10 @@ public:
                 break;
             }
             cv_.notify_all();  // room for the reader
-            if (from != parser_gen_) {
-                break;  // a new connection's bytes: at the next step, after set_pipe
+            if (from != parser_gen_) {  // a connection came since the check above: its bytes, a fresh parser
+                stats_bad(parser_.pending());
+                parser_.reset();
+                parser_gen_ = from;
             }
             const std::uint64_t skipped = parser_.stats().skipped_bytes;
             const std::size_t frames = parser_.feed(chunk, n, [&](const Frame& f) {
