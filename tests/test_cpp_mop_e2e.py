@@ -7,7 +7,8 @@ headers, tests/mop_lib.py):
   SHA-256 equal;
 - the same with the stand-in closing the pipeline twice under the node mid-transfer: ttctl
   carries on over the low-speed channel and back, the file arrives whole;
-- a fetch the node serves over the pipeline through an SDK that takes at most 7 bytes a send.
+- a fetch the node serves over the pipeline through an SDK that takes at most 7 bytes a send;
+- a send that never returns: a timeout after 5 s, the connection closed under it, accepted again.
 """
 
 from __future__ import annotations
@@ -92,3 +93,24 @@ def test_a_fetch_served_over_the_pipeline_in_short_writes(mop_node: Path, tmp_pa
     assert r["pipeline_bytes_in"] >= 600_000, r
     stats = node.stop()
     assert stats["sdk_short_sends"] > 0 and stats["pipe_bytes_out"] >= r["pipeline_bytes_in"], (stats, r)
+
+
+def test_a_send_that_never_returns_is_a_timeout(mop_node: Path, tmp_path: Path, nodes: Any) -> None:
+    """The SDK's send hangs after 100 kB (until the connection is closed under it): after 5 s
+    the node gives the connection up in one line, closes it so the call returns, and accepts
+    the app again; the fetch completes whole."""
+    node = nodes(mop_node, tmp_path, {"TTCTL_FAKE_MOP_STALL": "100000"})
+    served = node.serve / "log.bin"
+    served.write_bytes(random.Random(4).randbytes(300_000))
+    node.wait_ready()
+    got = tmp_path / "got"
+    got.mkdir()
+    proc, r = send("log.bin", "--from", f"udpout:{LOCAL}:{node.port}", "--dir", str(got), *paths(node), timeout=180)
+    assert proc.returncode == 0 and r["ok"], proc.stderr
+    assert sha(got / "log.bin") == sha(served)
+    assert r["pipeline_opens"] >= 2, r
+    stats = node.stop()
+    assert stats["sdk_stalls"] == 1 and stats["timeouts"] == 1 and stats["connections"] >= 2, stats
+    closed = node.pipe_events("closed")
+    assert "did not return within 5 s" in closed[0]["words"], closed
+    assert stats["sdk_live_handles"] == 0, stats

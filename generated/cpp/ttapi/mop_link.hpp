@@ -14,8 +14,9 @@
 // frames; realLen short of len leaves the rest to go first on the same connection); on any error
 // (DJI_ERROR_MOP_CHANNEL_MODULE_CODE_CONNECTION_CLOSE when the app goes) _Close and _Destroy the
 // connection and _Accept again after a second. A failed _Create or _Bind is tried again every
-// second. Every return code other than success reaches the report callback in DJI's words
-// (dji_error.h), once per call and code; a close, once per close.
+// second; a _SendData that has not returned in 5 s is a timeout (_Close under it, then the same).
+// Every return code other than success reaches the report callback in DJI's words (dji_error.h),
+// once per call and code; a close, once per close.
 //
 // Where: M300 RTK and M350 RTK (gimbal ports and E-Port), M30/M30T and Mavic 3 Enterprise
 // (E-Port); DJI documents MOP as unavailable with two remote controllers.
@@ -136,6 +137,15 @@ public:
     }
 
     // DJI: after _Close nothing but _Destroy may be done with a handle; the blocked calls return.
+    void abort_connection() override
+    {
+        std::lock_guard<std::mutex> lock(m_);
+        if (connection_ != nullptr && !connection_closed_) {
+            DjiMopChannel_Close(connection_);
+            connection_closed_ = true;
+        }
+    }
+
     void interrupt() override
     {
         std::lock_guard<std::mutex> lock(m_);

@@ -119,14 +119,27 @@ public:
     {
         std::lock_guard<std::mutex> lock(m_);
         if (pipeline_ != nullptr) {
-            vehicle_->mopServer->close(id_);  // the server deletes the pipeline
+            if (!closed_) {
+                vehicle_->mopServer->close(id_);  // the server deletes the pipeline
+            }
             pipeline_ = nullptr;
+            closed_ = false;
         }
     }
 
     void close_listener() override {}
 
-    void interrupt() override { close_connection(); }
+    // MopServer::close under blocked calls (a timeout, a stop): the only way the Onboard SDK has.
+    void abort_connection() override
+    {
+        std::lock_guard<std::mutex> lock(m_);
+        if (pipeline_ != nullptr && !closed_) {
+            vehicle_->mopServer->close(id_);
+            closed_ = true;
+        }
+    }
+
+    void interrupt() override { abort_connection(); }
 
 private:
     static bool ok(const char* call, DJI::OSDK::MOP::MopErrCode code, PipeProblem& why) noexcept
@@ -146,6 +159,7 @@ private:
     DJI::OSDK::MOP::PipelineID id_;
     std::mutex m_;
     DJI::OSDK::MopPipeline* pipeline_ = nullptr;
+    bool closed_ = false;  // closed under blocked calls; released by close_connection
 };
 
 /// The node's MOP pipeline on the Onboard SDK 4.1 (M300): a PipeLink over OsdkMopTransport.

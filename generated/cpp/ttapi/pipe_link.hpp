@@ -10,7 +10,10 @@
 //    on any error closes it and accepts again after BACKOFF seconds;
 //  - the writer thread writes whole frames queued by the node's thread: a short write's
 //    remainder goes first, on the same connection; what is queued when a connection closes is
-//    discarded (the transfer engine resends what the receiver reports missing).
+//    discarded (the transfer engine resends what the receiver reports missing). A send the SDK
+//    has not returned from in SEND_TIMEOUT seconds is a timeout: the node's thread sees it, file
+//    data goes back to the link at once, and the connection is closed under the blocked call
+//    (PipeTransport::abort_connection) so that it returns and the pipeline is accepted again.
 // On the node's thread (NodeSide::step, called by the link's run(): PsdkLink::attach,
 // DttLink::attach), each connection's bytes go through a fresh Parser (a half frame left at a
 // close is dropped, never glued to the next connection's bytes) and its frames to
@@ -81,6 +84,8 @@ public:
     virtual void close_connection() = 0;
     /// Close and release the listening end.
     virtual void close_listener() = 0;
+    /// Close the connection (not yet released) so that blocked send and recv return: any thread.
+    virtual void abort_connection() = 0;
     /// Make blocked calls return (a stop): any thread.
     virtual void interrupt() = 0;
 };
@@ -144,6 +149,7 @@ struct PipeStats {
     std::uint64_t problems = 0;  // failed SDK calls (all, reported or not)
     std::uint64_t frames_in = 0;  // whole frames parsed from connections
     std::uint64_t bad_bytes = 0;  // bytes of garbage or half frames the parsers skipped
+    std::uint64_t timeouts = 0;  // connections given up for a send that did not return
 };
 
 /// See the header comment. Construct, attach() it to the link that drives the node (before its
@@ -155,6 +161,7 @@ public:
     static constexpr std::size_t RX = 64 * 1024;  // read bytes waiting for the node's thread
     static constexpr std::size_t CHUNK = 4096;  // bytes per SDK call
     static constexpr double BACKOFF = 1.0;  // s between a failure or a close and the next try
+    static constexpr double SEND_TIMEOUT = 5.0;  // s a send may take before the connection is given up
     static constexpr std::size_t KINDS = 32;  // distinct (call, code) problems remembered
 
     using Report = std::function<void(const PipeReport&)>;
@@ -221,10 +228,23 @@ public:
     {
         std::uint64_t gen = 0;
         bool up = false;
+        bool stalled = false;
         {
             std::lock_guard<std::mutex> lock(m_);
+            if (in_send_ && connected_ && !dead_ && monotonic_now() - send_started_ > SEND_TIMEOUT) {
+                stalled = true;  // a send timed out: the connection is given up
+                dead_ = true;
+                dead_why_ = PipeProblem{};
+                dead_why_.call = "PipeLink";
+                dead_why_.words = "a send did not return within 5 s (a timeout): the pipeline is closed and "
+                                  "accepted again";
+                ++stats_.timeouts;
+            }
             gen = gen_;
             up = connected_ && !dead_;
+        }
+        if (stalled) {
+            transport_.abort_connection();  // the blocked calls return; the connection thread closes it
         }
         if (up != node_.pipe_open() || gen != parser_gen_) {
             node_.set_pipe(up, now);
@@ -478,6 +498,7 @@ private:
             const std::uint64_t gen = gen_;
             const std::size_t n = tx_.peek(buf, sizeof buf);  // whole frames, or a remainder first
             in_send_ = true;
+            send_started_ = monotonic_now();
             lock.unlock();
             std::size_t sent = 0;
             PipeProblem why;
@@ -485,8 +506,8 @@ private:
             lock.lock();
             in_send_ = false;
             cv_.notify_all();
-            if (gen != gen_ || !connected_) {
-                continue;  // closed meanwhile: what was queued is gone
+            if (gen != gen_ || !connected_ || dead_) {
+                continue;  // closed (or given up) meanwhile: what was queued is gone
             }
             if (!ok) {
                 ++stats_.problems;
@@ -526,6 +547,7 @@ private:
     bool dead_ = false;  // the writer failed: the connection is to be closed
     PipeProblem dead_why_;
     bool in_send_ = false;
+    double send_started_ = 0.0;
     std::uint64_t gen_ = 0;  // the connection's number
     ByteRing<RX> rx_;
     ByteRing<TX> tx_;

@@ -13,6 +13,8 @@
 //   TTCTL_FAKE_MOP_PORT PORT          where Bind listens (required)
 //   TTCTL_FAKE_MOP_SHORT 1            every SendData takes at most 7 bytes (realLen < len)
 //   TTCTL_FAKE_MOP_FAIL 1             every call answers DJI_ERROR_SYSTEM_MODULE_CODE_SYSTEM_ERROR
+//   TTCTL_FAKE_MOP_STALL BYTES        once BYTES have been sent, the next SendData blocks until the
+//                                     connection is closed (DjiMopChannel_Close): a send timeout
 //   TTCTL_FAKE_MOP_CLOSE_AFTER A,B..  when the bytes moved (in + out, all connections) pass A,
 //                                     then B, ..., the connection is closed under the caller (its
 //                                     next call answers CONNECTION_CLOSE)
@@ -26,6 +28,8 @@
 
 #include <atomic>
 #include <cerrno>
+#include <chrono>
+#include <thread>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
@@ -38,7 +42,7 @@ namespace {
 
 struct Handle {
     int fd = -1;
-    bool closed = false;
+    std::atomic<bool> closed{false};
 };
 
 struct State {
@@ -49,6 +53,8 @@ struct State {
     bool fail = false;
     bool short_sends = false;
     int port = 0;
+    std::uint64_t stall_at = 0;  // 0: never
+    bool stalled = false;
 
     State()
     {
@@ -58,6 +64,8 @@ struct State {
         short_sends = short_env != nullptr && std::string(short_env) == "1";
         const char* port_env = std::getenv("TTCTL_FAKE_MOP_PORT");
         port = port_env != nullptr ? std::atoi(port_env) : 0;
+        const char* stall = std::getenv("TTCTL_FAKE_MOP_STALL");
+        stall_at = stall != nullptr ? std::strtoull(stall, nullptr, 10) : 0;
         const char* after = std::getenv("TTCTL_FAKE_MOP_CLOSE_AFTER");
         if (after != nullptr) {
             std::string s = after;
@@ -244,6 +252,22 @@ T_DjiReturnCode DjiMopChannel_SendData(T_DjiMopChannelHandle channelHandle, uint
         return failed(DJI_ERROR_SYSTEM_MODULE_CODE_INVALID_PARAMETER);
     }
     if (h->closed) {
+        return failed(DJI_ERROR_MOP_CHANNEL_MODULE_CODE_CONNECTION_CLOSE);
+    }
+    bool stall = false;
+    {
+        std::lock_guard<std::mutex> lock(state().m);
+        State& s = state();
+        stall = s.stall_at != 0 && !s.stalled && s.stats.bytes_out >= s.stall_at;
+        if (stall) {
+            s.stalled = true;
+            ++s.stats.stalls;
+        }
+    }
+    while (stall && !h->closed.load()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));  // as if the link hung
+    }
+    if (h->closed.load()) {
         return failed(DJI_ERROR_MOP_CHANNEL_MODULE_CODE_CONNECTION_CLOSE);
     }
     std::size_t n = len;

@@ -13,6 +13,7 @@ struct FakeMopStats {
     std::uint64_t forced_closes;  // connections closed by TTCTL_FAKE_MOP_CLOSE_AFTER
     std::uint64_t failed_calls;  // calls answered with an error code
     std::uint64_t live_handles;  // handles created and not yet destroyed
+    std::uint64_t stalls;  // sends held until the connection was closed (TTCTL_FAKE_MOP_STALL)
 };
 
 FakeMopStats fake_mop_stats();

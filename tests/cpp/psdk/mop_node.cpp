@@ -125,12 +125,13 @@ int main(int argc, char** argv)
                 "\"short_writes\": %llu, \"pipe_problems\": %llu, \"bad_bytes\": %llu, \"frames_in\": %llu, "
                 "\"packets_in\": %llu, \"packets_out\": %llu, \"sdk_accepts\": %llu, \"sdk_bytes_in\": %llu, "
                 "\"sdk_bytes_out\": %llu, \"sdk_short_sends\": %llu, \"sdk_forced_closes\": %llu, "
-                "\"sdk_failed_calls\": %llu, \"sdk_live_handles\": %llu, \"peak_kib\": %ld}\n",
+                "\"sdk_failed_calls\": %llu, \"sdk_live_handles\": %llu, \"sdk_stalls\": %llu, \"timeouts\": %llu, "
+                "\"peak_kib\": %ld}\n",
                 u(link.problems()), u(n.pipe_opens), u(n.pipe_closes), u(n.pipe_frames_in), u(n.pipe_frames_out),
                 u(n.pipe_bytes_out), u(p.connections), u(p.closes), u(p.bytes_in), u(p.bytes_out),
                 u(p.short_writes), u(p.problems), u(p.bad_bytes), u(p.frames_in), u(n.packets_in),
                 u(n.packets_out), u(f.accepts), u(f.bytes_in), u(f.bytes_out), u(f.short_sends),
-                u(f.forced_closes), u(f.failed_calls), u(f.live_handles), peak_kib());
+                u(f.forced_closes), u(f.failed_calls), u(f.live_handles), u(f.stalls), u(p.timeouts), peak_kib());
     std::fflush(stdout);
     return 0;
 }
