@@ -14,6 +14,9 @@
 // pointer brings back what was sent or received); on any error MopServer::close(id) and accept
 // again after a second. Every MopErrCode other than MOP_PASSED reaches the report callback by
 // its name in DJI's enum (the Onboard SDK has no sentences for them), once per call and code.
+// The Onboard SDK offers no way to interrupt MopServer::accept: stop() (and the destructor) wait
+// until it returns, so stop a link whose app never connected only when the process ends anyway.
+// Checked against DJI's OSDK 4.1 headers by a compile test; no stand-in runs it yet.
 //
 //     OsdkLink link(node, vehicle);       // DTT: control, statuses, telemetry
 //     OsdkMopLink mop(node, vehicle, 49152);
