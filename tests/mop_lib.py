@@ -7,6 +7,7 @@ holds is decided by pymavlink (mavgen's own Python for ttapi.xml), not by ttctl'
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
 import os
@@ -17,9 +18,10 @@ import socket
 import subprocess
 import time
 from collections import Counter
+from collections.abc import Callable
 from pathlib import Path
 from types import ModuleType
-from typing import Any, Callable
+from typing import Any
 
 from conftest import ROOT, run_ttctl, shipped
 from e2e_lib import LOCAL, free_port
@@ -161,10 +163,8 @@ class App:
             if self.cut_at and self.pipe_out + len(pkt) >= self.cut_at[0]:
                 self.cut_at.pop(0)
                 self.cuts += 1
-                try:
+                with contextlib.suppress(OSError):
                     self.tcp.sendall(pkt[: len(pkt) // 2])  # half a frame, then the connection goes
-                except OSError:
-                    pass
                 self.pipe_out += len(pkt) // 2
                 self.close_pipe(now)
                 return  # (the frame's bytes are lost: the receiver's status names them)

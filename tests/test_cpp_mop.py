@@ -12,8 +12,8 @@ low-speed channel, frames told apart by pymavlink):
   by the app in the middle of a frame): the file still arrives whole;
 - a fetch served by the node over the pipeline in PIPE_MTU geometry, through an SDK that takes
   at most 7 bytes a send (short writes keep frames whole);
-- OsdkMopLink (osdk_mop_link.hpp) compiles against the Onboard SDK 4.1's real MOP headers (no
-  stand-in runs it: a compile check of every call's signature);
+- OsdkMopLink (osdk_mop_link.hpp) on the Onboard SDK 4.1's real MOP headers with stand-ins for DTT
+  and the MOP server (tests/cpp/osdk_standin/): send-file --profile m300 --pipeline delivers a file;
 - commands on the low-speed channel during a file on the pipeline: answered as fast as with no file;
 - bad input: an SDK that fails every call (DJI's words on stderr once, no crash, no hang, the
   node stops on SIGINT), a flood of garbage on the pipeline (no crash, memory bounded, a command
@@ -22,8 +22,12 @@ low-speed channel, frames told apart by pymavlink):
 
 from __future__ import annotations
 
+import contextlib
+import json
+import os
 import random
 import shutil
+import signal
 import socket
 import subprocess
 import time
@@ -34,7 +38,7 @@ import pytest
 
 from conformance_lib import pymavlink_module
 from conftest import ROOT
-from e2e_lib import LOCAL
+from e2e_lib import LOCAL, free_port, send
 from mop_lib import NODE, WARN, App, MopNode, build_mop_node, sha
 
 pytestmark = pytest.mark.skipif(shutil.which("g++") is None, reason="needs g++")
@@ -198,47 +202,56 @@ def test_a_flood_of_garbage_on_the_pipeline(mop_node: Path, pm: Any, tmp_path: P
     assert stats["peak_kib"] < 64 * 1024, stats
 
 
-OSDK_MOP_PROGRAM = """#include <atomic>
-
-#include "ttapi/osdk_link.hpp"
-#include "ttapi/osdk_mop_link.hpp"
-
-int run(DJI::OSDK::Vehicle* vehicle, const std::atomic<bool>& stop)
-{
-    ttapi::link::NodeConfig cfg;
-    ttapi::link::Node node(cfg);
-    ttapi::link::OsdkLink link(node, vehicle);
-    ttapi::link::OsdkMopLink mop(node, vehicle, 49152, [](const ttapi::link::PipeReport&) {});
-    ttapi::link::Words why;
-    if (!node.start(why) || !link.open(why)) {
-        return 1;
-    }
-    link.attach(mop.side());
-    mop.start();
-    link.run(&stop);
-    return static_cast<int>(mop.stats().connections);
-}
-"""
-
-
-def test_the_osdk_mop_link_compiles_against_osdk_41(mop_node: Path, tmp_path: Path) -> None:
-    """OsdkMopLink's calls (MopServer::accept, MopPipeline::sendData and recvData with their
-    DataPackType, MopServer::close, Vehicle::mopServer) as DJI's OSDK 4.1 headers declare them."""
+def test_the_osdk_mop_link_on_the_onboard_sdk_41(mop_node: Path, tmp_path: Path) -> None:
+    """OsdkMopLink built against DJI's OSDK 4.1 headers (MopServer::accept, MopPipeline::sendData
+    and recvData with their DataPackType, MopServer::close, Vehicle::mopServer), with the stand-ins
+    for DTT and the MOP server: `send-file --profile m300 --pipeline tcpout:` delivers 500 kB whole,
+    its data over the pipeline, and the close reaches the program in DJI's name for it."""
     vendor = ROOT / "tests" / "vendor" / "dji" / "osdk-4.1.0"
     dirs = sorted({p.parent for p in vendor.rglob("*.h*")})
-    src = tmp_path / "osdk_mop.cpp"
-    src.write_text(OSDK_MOP_PROGRAM)
-    cpp = mop_node.parent / "out" / "cpp"
-    proc = subprocess.run(["g++", *WARN, "-c", "-I", str(cpp), *[a for d in dirs for a in ("-isystem", str(d))],
-                           str(src), "-o", str(tmp_path / "osdk_mop.o")], capture_output=True, text=True, timeout=600)
+    standin = ROOT / "tests" / "cpp" / "osdk_standin"
+    exe = tmp_path / "osdk_mop_node"
+    proc = subprocess.run(["g++", *WARN, "-O1", "-I", str(mop_node.parent / "out" / "cpp"),
+                           *[a for d in dirs for a in ("-isystem", str(d))], "-DFAKE_OSDK_VERSION=41",
+                           str(standin / "osdk_mop_node.cpp"), str(standin / "fake_osdk.cpp"),
+                           str(standin / "fake_osdk_mop.cpp"), "-pthread", "-o", str(exe), "-lz"],
+                          capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stderr[-5000:]
+    (tmp_path / "outbox").mkdir()
+    src = tmp_path / "up.bin"
+    src.write_bytes(random.Random(6).randbytes(500_000))
+    dtt, pipe = free_port(), free_port(socket.SOCK_STREAM)
+    with open(tmp_path / "prog.out", "w") as out, open(tmp_path / "prog.err", "w") as err:
+        prog = subprocess.Popen([str(exe)], cwd=tmp_path, stdout=out, stderr=err,
+                                env={**os.environ, "FAKE_OSDK_LISTEN": f"{LOCAL}:{dtt}",
+                                     "TTCTL_FAKE_MOP_PORT": str(pipe)})
+    try:
+        time.sleep(0.3)
+        assert prog.poll() is None, (tmp_path / "prog.err").read_text()
+        proc2, r = send(str(src), "--to", f"udpout:{LOCAL}:{dtt}", "--profile", "m300", "--pipeline",
+                        f"tcpout:{LOCAL}:{pipe}", "--pipe-rate", "100000", "--timeout", "30", timeout=150)
+        assert proc2.returncode == 0 and r["ok"], proc2.stderr
+        assert r["pipeline_bytes_out"] >= 500_000, r
+        assert sha(tmp_path / "inbox" / "up.bin") == sha(src)
+    finally:
+        prog.send_signal(signal.SIGINT)
+        time.sleep(1.5)
+        with contextlib.suppress(OSError):  # MopServer::accept cannot be interrupted: a connection ends it
+            socket.create_connection((LOCAL, pipe), timeout=1).close()
+        code = prog.wait(20)
+    assert code == 0, (tmp_path / "prog.err").read_text()
+    lines = [json.loads(x) for x in (tmp_path / "prog.out").read_text().splitlines()]
+    closed = [x for x in lines if x.get("kind") == 2]
+    assert closed and closed[0]["call"] == "MopPipeline::recvData", lines
+    assert closed[0]["words"] == "MOP_CONNECTIONCLOSE", lines
+    stats = lines[-1]
+    assert stats["connections"] >= 1 and stats["pipe_frames_in"] >= 500_000 // 247, stats
 
 
 def command_latencies(app: App, count: int, until: Any, timeout: float) -> list[float]:
     """`count` commands from the app, one every 0.25 s while `until()` is false (and then until
     all are answered): their round trips."""
     import ttapi
-
     from conftest import shipped
 
     b = shipped()
