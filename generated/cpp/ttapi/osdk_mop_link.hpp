@@ -16,7 +16,8 @@
 // its name in DJI's enum (the Onboard SDK has no sentences for them), once per call and code.
 // The Onboard SDK offers no way to interrupt MopServer::accept: stop() (and the destructor) wait
 // until it returns, so stop a link whose app never connected only when the process ends anyway.
-// Checked against DJI's OSDK 4.1 headers by a compile test; no stand-in runs it yet.
+// Tested against DJI's OSDK 4.1 headers with a stand-in for the MOP server written from them
+// (tests/cpp/osdk_standin/fake_osdk_mop.cpp), not on an aircraft.
 //
 //     OsdkLink link(node, vehicle);       // DTT: control, statuses, telemetry
 //     OsdkMopLink mop(node, vehicle, 49152);
