@@ -193,8 +193,9 @@ Vehicle::~Vehicle() { delete mobileDevice; }
 }  // namespace DJI
 
 #if FAKE_OSDK_VERSION == 41
-// fake_osdk_mop.cpp's MOP server, when the program links it (a weak symbol: null otherwise).
+// fake_osdk_mop.cpp's MOP server, when the program links it (weak symbols: null otherwise).
 __attribute__((weak)) DJI::OSDK::MopServer* fake_osdk_mop_server();
+__attribute__((weak)) void fake_osdk_mop_server_free(DJI::OSDK::MopServer* server);
 
 LinuxSetup::LinuxSetup(int /*argc*/, char** /*argv*/, bool enableAdvancedSensing)
     : Setup(enableAdvancedSensing), functionTimeout(1), activateData(), environment(nullptr)
@@ -209,7 +210,9 @@ LinuxSetup::LinuxSetup(int /*argc*/, char** /*argv*/, bool enableAdvancedSensing
 LinuxSetup::~LinuxSetup()
 {
     delete g_radio;
-    delete vehicle->mopServer;
+    if (fake_osdk_mop_server_free != nullptr) {
+        fake_osdk_mop_server_free(vehicle->mopServer);
+    }
     delete vehicle;
 }
 

@@ -153,3 +153,5 @@ PipelineType MopPipeline::getType() { return type; }
 std::map<PipelineID, MopPipeline*> pipelineMap;
 
 DJI::OSDK::MopServer* fake_osdk_mop_server() { return new MopServer(); }
+
+void fake_osdk_mop_server_free(DJI::OSDK::MopServer* server) { delete server; }
