@@ -81,3 +81,45 @@ def test_the_node_uses_the_pipeline_as_pythons_endpoint_does(cpp_node_bins: dict
         assert (tmp_path / f"tablet_{name}" / "s.bin").read_bytes() == (serve / "s.bin").read_bytes()
     assert frames["python"] > 50, frames  # the pipeline carried file data
     assert packets_while_open == 0  # no data frame in the packets while the pipeline was open
+
+
+def test_signed_pipeline_frames_carry_their_own_link_id(cpp_node_bins: dict[str, Path], tmp_path: Path) -> None:
+    """Signed, the node's pipeline frames are signed with link id 0x80 (link id ^ PIPE_LINK_BIT,
+    as ttctl's Python signs them) and a signed Python tablet accepts them: a fetch with the
+    pipeline open throughout completes, its data all on the pipeline."""
+    from ttctl.proto.endpoint import Endpoint
+    from ttctl.proto.storage import ReceiveDir
+
+    b = shipped_bindings()
+    seed = 31
+    serve = write(tmp_path / "serve" / "s.bin", 60_000, seed).parent
+    key = random.Random(seed).randbytes(32)
+    start = b.mavlink.Signing.now()  # the wall clock: a pipeline's signing starts from it on both ends
+    onboard = ServingOnboards(cpp_node_bins["driver"], tmp_path, serve, b, seed + 100, 128, key, start)
+    done: list[bool] = []
+    tab = Endpoint(b, *TABLET, mtu=128, rate_Bps=500.0, receive_dir=ReceiveDir(tmp_path / "tablet"),
+                   signing=b.mavlink.Signing(key, 0, False, start), unsolicited=False, accept_commands=False,
+                   rng=random.Random(seed),
+                   on_event=lambda what, obj: done.append(True) if what == "file-complete" else None)
+    tab.request_file("s.bin", (1, 240))
+    onboard.set_pipe("cpp", 0.0, True)
+    now = 0.0
+    links: set[int] = set()
+    frames = 0
+    try:
+        while not done and now < 60:
+            while (pkt := tab.poll(now)) is not None:
+                onboard.receive("cpp", now, pkt)
+            for pkt in onboard.poll("cpp", now):
+                tab.receive(now, pkt)
+            for frame in onboard.poll_pipe("cpp", now):
+                assert frame[2] & 1, frame.hex()  # signed
+                links.add(frame[-13])
+                frames += 1
+                tab.receive_stream(now, frame, "pipe")
+            now = round(now + 0.005, 6)
+    finally:
+        onboard.close()
+    assert done, "the fetch did not complete"
+    assert (tmp_path / "tablet" / "s.bin").read_bytes() == (serve / "s.bin").read_bytes()
+    assert links == {0x80} and frames >= 60_000 // 247, (links, frames)
