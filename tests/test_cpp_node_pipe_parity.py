@@ -4,7 +4,8 @@ fetches a file over a lossy packet channel while a pipeline beside it opens, clo
 and opens again; in both worlds the onboard end sends the same packets and the same pipeline
 frames byte for byte at every 5 ms step (file data on the pipeline in wide frames at its pace,
 statuses and offers in the packets, narrow frames from the next offsets while it is closed).
-Unsigned: a pipeline's signing (link id ^ 0x80) starts from the wall clock on both sides."""
+Compared unsigned (a pipeline's signing, link id ^ 0x80, starts from the wall clock on both
+sides); signed, a Python tablet accepts the node's pipeline frames."""
 
 from __future__ import annotations
 
