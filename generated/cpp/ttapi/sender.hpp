@@ -174,6 +174,9 @@ public:
         outcomes_at_[0] = outcomes_at_[1] = 0;
     }
     bool on_stream() const noexcept { return on_stream_; }
+    /// How long an unacknowledged frame waits before a tail-loss probe may repeat it: on a
+    /// pipeline, for the status that should have come (statuses come every second or so).
+    double probe_wait() const noexcept { return on_stream_ ? std::max(3 * rtt_, 1.5) : 0.0; }
     /// Whether a data frame is wanted (its grant may hold it back: then `when` says till when;
     /// else 0).
     bool data_wanted(double now, double& when) const noexcept
