@@ -23,7 +23,7 @@ from dataclasses import asdict, dataclass, field
 from typing import Any
 
 from ..link.model import Profile
-from ..link.sim import Simulation
+from ..link.sim import PipeModel, Simulation
 from ..proto.endpoint import Endpoint
 from ..proto.storage import BytesSource, ReceiveDir
 from ..wire.contract import TtAction
@@ -98,7 +98,9 @@ def model_commands(profile: Profile, distance: float, phase: str, count: int, se
                           receive_dir=ReceiveDir(d) if phase == "download" else None)
         onboard = Endpoint(b, *ONBOARD, mtu=profile.mtu, rate_Bps=pace(down), rng=random.Random(seed + 1),
                            receive_dir=ReceiveDir(d) if phase != "download" else None)
-        sim = Simulation(tablet, onboard, up, down)
+        # with the profile's pipeline (mop) open throughout: file data on it, commands on the packets
+        pipe = PipeModel(profile.pipe.rate_Bps, profile.pipe.latency_s) if profile.pipe is not None else None
+        sim = Simulation(tablet, onboard, up, down, pipe=pipe)
         senders: list[Any] = []
 
         def start_file() -> None:

@@ -42,6 +42,7 @@ MAX_BULK = 8 << 20  # bytes of the file behind the commands (lan's 1 MB/s would 
 NO_FEEDBACK_PACING = 1.0  # the model's capacity is known exactly here; see README for real links
 BENCH_KEY = bytes(range(32))  # the signed rows' shared secret (any 32 bytes: both ends hold it)
 SIGNED_FLOOR = 0.95  # of the signed ceiling
+PIPE_FILE = 2_000_000  # bytes of each file over a profile's pipeline (mop): 20 s at its modelled rate
 
 
 @dataclass
@@ -255,12 +256,16 @@ def run(profile: Profile, distance: float, file_bytes: int, seeds: int, protocol
 
     shared = [] if quick else sharing.rows(profile, distance, seed_list[:5])
     bounds += sharing.checks(shared)
+    from . import pipeline  # the profile's MOP pipeline (mop), with and without drops
+
+    piped = pipeline.rows(profile, distance, PIPE_FILE, seed_list[:1] if quick else seed_list[:3])
+    bounds += pipeline.checks(piped)
     report = {"profile": profile.name, "distance_m": distance, "extrapolated": extrapolated,
               "file_bytes": file_bytes, "seeds": seed_list,
               "mtu": profile.mtu,
               "frame_efficiency": _frame_efficiency(profile.mtu),
               "rows": [asdict(r) for r in rows], "latency": latency, "compressed": transfer_text.as_dicts(text),
-              "sharing": sharing.as_dicts(shared), "checks": bounds}
+              "sharing": sharing.as_dicts(shared), "pipeline": pipeline.as_dicts(piped), "checks": bounds}
     if plot:
         from .plots import plot_transfer
 
@@ -375,6 +380,10 @@ def _print_tables(report: dict[str, Any]) -> None:
         from .sharing import print_table as print_sharing
 
         print_sharing(report["sharing"])
+    if report.get("pipeline"):
+        from .pipeline import print_table as print_pipeline
+
+        print_pipeline(report["pipeline"])
     mtu = report.get("mtu", 100)
     g, sg = Geometry(mtu), Geometry(mtu, signed=True)
     titles = {"ttctl": f"ttctl against one-packet frames' ceiling, {g.narrow_cap}/{g.narrow_frame} x (1 - the loss "

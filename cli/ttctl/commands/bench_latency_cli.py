@@ -33,9 +33,10 @@ def bench_latency(
     interval: Annotated[float, typer.Option("--interval", help="One command every this many seconds (at a random "
                                                                "moment in the first half).", min=0.05,
                                             max=60)] = 1.0,
-    size: Annotated[int, typer.Option("--size", help="Bytes of the file moved during the transfer phases (sent "
-                                                     "again while commands remain).", min=1,
-                                      max=1 << 26)] = 65536,
+    size: Annotated[int | None, typer.Option("--size", help="Bytes of the file moved during the transfer phases "
+                                                            "(sent again while commands remain; default 64 KiB, "
+                                                            "2 MB on a profile with a MOP pipeline).", min=1,
+                                             max=1 << 26, show_default=False)] = None,
     seed: Annotated[int, typer.Option("--seed", help="Random seed (model: the same seed, the same numbers).")] = 1,
     fetch: Annotated[str | None, typer.Option("--fetch", help="With --to: a file the peer serves (emulate onboard "
                                                               "--serve DIR), fetched during the download phase; "
@@ -65,6 +66,8 @@ def bench_latency(
         raise Fail(str(e)) from None
     if fetch is not None and to is None:
         raise Fail("--fetch applies to live runs (--to); the model's download phase needs no file")
+    if size is None:  # a file that lasts on the link it takes: the pipeline moves 64 KiB in under a second
+        size = 2_000_000 if prof.pipe is not None else 65536
     extrapolated = prof.extrapolated(distance)
     if extrapolated and to is None:  # live, link_choice says it
         err(f"warning: {extrapolated}")

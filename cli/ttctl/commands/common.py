@@ -71,6 +71,12 @@ def link_choice(rate: float | None, profile: str | None, distance: float, sysid:
 DEFAULT_PIPE_BPS = 100_000.0  # the mop profile's pipeline (link/profiles.toml)
 
 
+def check_pipeline(text: str | None) -> None:
+    """A --pipeline that cannot work is refused before anything else is looked at."""
+    if text is not None:
+        pipe_link(text, LinkChoice(None, None, None, None), lambda line: None)
+
+
 def pipe_link(text: str | None, link: LinkChoice, log: Any) -> tuple[Any, float | None]:
     """The --pipeline end (link.pipe.PipeLink) and its rate, or (None, None) without one."""
     if text is None:

@@ -20,8 +20,8 @@ def link_relay(
                                         show_default=False)],
     to: Annotated[str, typer.Option("--to", help="udp:HOST:PORT of the onboard side (udpout).",
                                     show_default=False)],
-    profile: Annotated[str | None, typer.Option("--profile", help="Link profile: m100, psdk or lan (default m100), "
-                                                                  "or one in --profile-file.",
+    profile: Annotated[str | None, typer.Option("--profile", help="Link profile: m100, m300, psdk, mop or lan "
+                                                                  "(default m100), or one in --profile-file.",
                                                 show_default=False)] = None,
     profile_file: ProfileFileOpt = None,
     distance: Annotated[float, typer.Option("--distance", help="Distance in metres.")] = 10.0,
@@ -68,6 +68,10 @@ def link_relay(
     pipe_rate: Annotated[float | None, typer.Option(
         "--pipe-rate", show_default=False,
         help="The pipeline's rate each way, bytes per second (default: the profile's).")] = None,
+    pipe_stall: Annotated[list[str] | None, typer.Option(
+        "--pipe-stall", metavar="START:SECONDS", show_default=False,
+        help="Stop the pipeline START seconds after the relay starts for SECONDS without closing it, as DJI's "
+             "send timeouts do (repeatable).")] = None,
 ) -> None:
     """The emulated DJI radio link, as a process between the two ends, in real time.
 
@@ -91,7 +95,7 @@ def link_relay(
 
     code = relay(RelayOptions(listen, to, profile, distance, loss, loss_model, corrupt, duplicate, reorder, seed,
                               rate, stats_interval, outage or [], profile_file, burst_mean, dialect, include or [],
-                              pipe_listen, pipe_to, pipe_drop or [], pipe_rate))
+                              pipe_listen, pipe_to, pipe_drop or [], pipe_rate, pipe_stall or []))
     raise typer.Exit(code)
 
 

@@ -9,8 +9,8 @@ import typer
 
 RateOpt = Annotated[float | None, typer.Option("--rate", help="Pacing rate in bytes per second (overrides the "
                                                               "profile's).", show_default=False)]
-ProfileOpt = Annotated[str | None, typer.Option("--profile", help="Link profile (m100, psdk, lan): pace at its "
-                                                                  "capacity in this end's sending direction.",
+ProfileOpt = Annotated[str | None, typer.Option("--profile", help="Link profile (m100, m300, psdk, mop, lan): pace "
+                                                                  "at its capacity in this end's sending direction.",
                                                 show_default=False)]
 ProfileFileOpt = Annotated[Path | None, typer.Option("--profile-file", help="Take --profile from this TOML file "
                                                                          "(the schema of ttctl's profiles.toml, "

@@ -17,6 +17,7 @@ from .common import (
     LinkChoice,
     Signals,
     check_id,
+    check_pipeline,
     err,
     link_choice,
     load_signing,
@@ -73,6 +74,7 @@ def _recv_file(o: RecvOptions) -> int:
     if o.count is not None and o.count < 1:
         raise Fail("--count must be at least 1")
     link = link_choice(o.rate, o.profile, o.distance, o.sysid, o.profile_file, o.pipe_rate)
+    check_pipeline(o.pipeline)
     b = load_bindings(o.dialect, o.include_dirs)
     signing = load_signing(o.key, o.accept_unsigned, b)
     q = Quota(overwrite=o.overwrite)

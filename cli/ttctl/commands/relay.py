@@ -39,6 +39,7 @@ class RelayOptions:
     pipe_to: str | None = None  # ...and the onboard side's --pipeline tcpin:
     pipe_drops: list[str] = field(default_factory=list)  # START:SECONDS
     pipe_rate: float | None = None  # None: the profile's pipeline
+    pipe_stalls: list[str] = field(default_factory=list)  # START:SECONDS
 
 
 def _outage(text: str, option: str = "--outage") -> tuple[float, float]:
@@ -60,13 +61,15 @@ def _pipe_relay(o: RelayOptions, prof: Any, log: Any) -> Any:
     from ..link.transport import TransportError, parse_spec
 
     if o.pipe_listen is None and o.pipe_to is None:
-        if o.pipe_drops:
-            raise Fail("--pipe-drop needs a pipeline: --pipe-listen and --pipe-to")
+        if o.pipe_drops or o.pipe_stalls:
+            raise Fail(f"{'--pipe-drop' if o.pipe_drops else '--pipe-stall'} needs a pipeline: --pipe-listen and "
+                       f"--pipe-to")
         return None
     if o.pipe_listen is None or o.pipe_to is None:
         raise Fail("a pipeline needs both --pipe-listen (the tablet side) and --pipe-to (the onboard side)")
     try:
-        listen = parse_spec(o.pipe_listen.replace("tcpin:", "tcp:", 1), allowed=("tcp",))
+        text = o.pipe_listen.strip()
+        listen = parse_spec("tcpin:" + text[4:] if text.lower().startswith("tcp:") else text, allowed=("tcpin",))
         to = parse_spec(o.pipe_to.replace("tcpout:", "tcp:", 1), allowed=("tcp",))
     except TransportError as e:
         raise Fail(f"{e} (the pipeline is a TCP stream: tcp:HOST:PORT)") from None
@@ -79,7 +82,8 @@ def _pipe_relay(o: RelayOptions, prof: Any, log: Any) -> Any:
         raise Fail("--pipe-rate must be a positive number of bytes per second")
     latency = prof.pipe.latency_s if prof.pipe is not None else 0.02
     drops = [_outage(t, "--pipe-drop") for t in o.pipe_drops] + [_outage(t) for t in o.outages]
-    return PipeRelay(listen, to, rate, latency, drops, log)
+    stalls = [_outage(t, "--pipe-stall") for t in o.pipe_stalls]
+    return PipeRelay(listen, to, rate, latency, drops, log, stalls)
 
 
 class FrameCheck:

@@ -23,6 +23,7 @@ from .common import (
     Signals,
     await_peer,
     check_id,
+    check_pipeline,
     link_choice,
     load_signing,
     oversize_note,
@@ -95,6 +96,7 @@ def _send_file(o: SendOptions, printed: list[bool]) -> int:
     if o.timeout <= 0:
         raise Fail("--timeout must be positive")
     link = link_choice(o.rate, o.profile, o.distance, o.sysid, o.profile_file, o.pipe_rate)
+    check_pipeline(o.pipeline)
     if o.to is not None and o.dir is not None:
         raise Fail("--dir is where --from downloads go; with --to, FILE is the file to send")
     if o.to is None and (o.name is not None or o.overwrite):

@@ -31,8 +31,9 @@ BURST = 16  # packets sent without yielding to the loop (receives and timers get
 SPIN_GUARD = 0.001  # least sleep when a wake-up time is already past but nothing went out
 CATCH_UP = 0.002  # a late wake-up by up to this much keeps the pacer's schedule (timer granularity)
 QUIET_MIN, QUIET_MAX = 0.02, 2.0
-PIPE_BACKLOG = 16 * 1024  # bytes written to a pipeline and not yet taken by its socket: no more file data
+PIPE_BACKLOG = 32 * 1024  # bytes on a pipeline not yet taken by the peer (at least; rate x 0.1 s on a fast one)
 PIPE_WAIT = 0.005  # s between looks at a pipeline that is behind
+PIPE_TIMEOUT = 2.0  # s a pipeline may stay behind before it counts as timed out (closed, then reconnected)
 
 
 @dataclass
@@ -58,6 +59,9 @@ class Runner:
         self.ep = endpoint
         self.pipe = pipe  # a link.pipe.PipeLink, or None
         self.pipe_rate_Bps = pipe_rate_Bps
+        self._pipe_behind_since: float | None = None
+        # what may be on its way on a pipeline at once: what a drop or a timeout can cost
+        self.pipe_window = max(PIPE_BACKLOG, int(0.1 * (pipe_rate_Bps or 0)))
         # something that may take a datagram before the endpoint does (`take(data, source) ->
         # bool`): ttctl.link.probes.LinkProbes beside an onboard end
         self.probes = probes
@@ -83,6 +87,8 @@ class Runner:
             pipe.on_open = self._pipe_open
             pipe.on_close = self._pipe_close
             pipe.on_data = self._pipe_data
+            pipe.on_forget = lambda n: endpoint.forget_source(("pipe", n))
+            pipe.on_connect = self._pipe_hello
 
     # -- the clock ------------------------------------------------------------------------------
     def now(self) -> float:
@@ -186,10 +192,31 @@ class Runner:
 
     def _pipe_data(self, data: bytes, n: int) -> None:
         try:
-            self.ep.receive_stream(self.now(), data, ("pipe", n))
+            if self.ep.receive_stream(self.now(), data, ("pipe", n)):
+                self.pipe.confirm(n)  # a valid frame: the peer is on it (tcpin)
         except Exception as e:  # a bug, not bad input
             self._error = self._error or e
         self.kick()
+
+    def _check_pipe(self, real: float) -> None:
+        """A pipeline whose socket takes nothing for PIPE_TIMEOUT timed out: closed (file data
+        back on the link at once), and connected again (tcpout) or awaited (tcpin)."""
+        assert self.pipe is not None
+        if self.pipe.backlog() < self.pipe_window:
+            self._pipe_behind_since = None
+        elif self._pipe_behind_since is None:
+            self._pipe_behind_since = real
+        elif real - self._pipe_behind_since >= PIPE_TIMEOUT:
+            self._pipe_behind_since = None
+            self.pipe.drop(f"timed out: nothing sent for {PIPE_TIMEOUT:g} s")
+
+    def _pipe_hello(self, write: Callable[[bytes], None]) -> None:
+        """The first frame on a pipeline we connected: the accepting side takes the connection
+        as the pipeline once a valid frame came on it."""
+        b = self.ep.b
+        kind = b.MavType.MAV_TYPE_GCS if self.ep.sysid == 255 else b.MavType.MAV_TYPE_ONBOARD_CONTROLLER
+        frame = self.ep.encoder.encode(b.Heartbeat(type=int(kind), autopilot=int(b.MavAutopilot.MAV_AUTOPILOT_INVALID)))
+        write(self.ep.pipe.sign(frame))
 
     def _quiet(self) -> float:
         """Three packet times of the link (`quiet`, when the caller knows the rate) or of what
@@ -223,7 +250,9 @@ class Runner:
                 self.stats.packets_out += 1
                 self.stats.bytes_out += len(pkt)
             pipe = self.pipe
-            while pipe is not None and pipe.is_open and pipe.backlog() < PIPE_BACKLOG and sent < 4 * BURST:
+            if pipe is not None and pipe.is_open:
+                self._check_pipe(real)
+            while pipe is not None and pipe.is_open and pipe.backlog() < self.pipe_window and sent < 4 * BURST:
                 frame = self.ep.pipe.poll(now)
                 if frame is None:
                     break
@@ -247,7 +276,7 @@ class Runner:
                 continue
             hello_at = self._hello_due if self.hello is not None and self.last_rx is None else None
             times = [t for t in (self.ep.wakeup(), flush_at, hello_at) if t is not None]
-            if pipe is not None and pipe.is_open and pipe.backlog() >= PIPE_BACKLOG:
+            if pipe is not None and pipe.is_open and pipe.backlog() >= self.pipe_window:
                 # the pipeline's socket is behind: look again shortly rather than at the pacer's time
                 times = [max(t, real + PIPE_WAIT) for t in times]
             target = min(times) if times else None

@@ -9,8 +9,12 @@ by a closed one never meets the next one's bytes. Frames are written whole (`wri
 connection had not yet sent when it closes goes with it. The socket's send buffer is kept small
 so that what a close loses is what the pacer had let go, not megabytes a kernel held.
 
-A newer connection on `tcpin` replaces the older one (a peer that reconnects after a silent
-drop is not locked out by its own dead connection).
+On `tcpin`, a connection becomes the pipeline only once a valid frame came on it (`confirm`,
+called by the driver when the endpoint parsed one): a stranger who connects to the port gets no
+file data and takes nothing over. A newer confirmed connection replaces the older one (a peer
+that reconnects after a silent drop is not locked out by its own dead connection). The side that
+connects says hello at once (`on_connect`: the driver writes a HEARTBEAT), so that the accepting
+side can confirm it before any file moves.
 """
 
 from __future__ import annotations
@@ -18,6 +22,15 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import socket
+import struct
+
+try:
+    import fcntl
+    import termios
+
+    _OUTQ: int | None = termios.TIOCOUTQ  # the same request as SIOCOUTQ for a socket (Linux)
+except (ImportError, AttributeError):  # pragma: no cover - not Linux
+    _OUTQ = None
 from collections.abc import Callable
 
 from .transport import Spec, TransportError, _os_reason, addr_text, parse_spec
@@ -25,6 +38,7 @@ from .transport import Spec, TransportError, _os_reason, addr_text, parse_spec
 RETRY_S = 1.0
 SNDBUF = 32 * 1024
 NEVER_OPEN_S = 10.0  # a pipeline not open after this long is told once
+MAX_PENDING = 8  # tcpin connections kept while they prove who they are
 
 
 def parse_pipe(text: str) -> Spec:
@@ -49,11 +63,15 @@ class PipeLink:
         self.on_open: Callable[[int], None] = lambda n: None
         self.on_data: Callable[[bytes, int], None] = lambda data, n: None
         self.on_close: Callable[[int, str], None] = lambda n, words: None
+        self.on_forget: Callable[[int], None] = lambda n: None  # an unproven connection ended
+        self.on_connect: Callable[[Callable[[bytes], None]], None] = lambda write: None  # (tcpout) say hello
         self.connection = 0  # the open connection's number (0: none open)
         self.opened = 0
         self.bytes_out = 0
         self.bytes_in = 0
         self._transport: asyncio.Transport | None = None
+        self._pending: dict[int, asyncio.Transport] = {}  # tcpin connections not yet proven to be the peer
+        self._numbers = 0
         self._server: asyncio.base_events.Server | None = None
         self._task: asyncio.Task[None] | None = None
         self._closed = False
@@ -96,15 +114,33 @@ class PipeLink:
             await asyncio.sleep(RETRY_S)
 
     def backlog(self) -> int:
-        """Bytes written and not yet handed to the socket."""
+        """Bytes written and not yet taken by the peer: what asyncio holds, and what the kernel
+        sent and the peer has not acknowledged or has not sent yet (SIOCOUTQ, on Linux)."""
         t = self._transport
-        return t.get_write_buffer_size() if t is not None else 0
+        if t is None:
+            return 0
+        held = t.get_write_buffer_size()
+        sock = t.get_extra_info("socket")
+        if sock is not None and _OUTQ is not None:
+            with contextlib.suppress(OSError, ValueError):
+                held += struct.unpack("i", fcntl.ioctl(sock.fileno(), _OUTQ, b"\0\0\0\0"))[0]
+        return held
 
     def write(self, frame: bytes) -> None:
         t = self._transport
         if t is not None:
             t.write(frame)
             self.bytes_out += len(frame)
+
+    def drop(self, words: str) -> None:
+        """End the open connection ourselves (it timed out), in `words`."""
+        t, n = self._transport, self.connection
+        if t is None:
+            return
+        self._transport, self.connection = None, 0
+        self.log(f"pipeline closed ({words}): file data back on the low-speed channel")
+        self.on_close(n, words)
+        t.abort()
 
     def close(self) -> None:
         self._closed = True
@@ -114,6 +150,9 @@ class PipeLink:
             self._server.close()
         if self._transport is not None:
             self._transport.abort()
+        for t in self._pending.values():
+            t.abort()
+        self._pending.clear()
 
     # -- from the connections -----------------------------------------------------------------
     def _made(self, conn: _Conn, transport: asyncio.Transport) -> None:
@@ -125,20 +164,40 @@ class PipeLink:
             with contextlib.suppress(OSError):
                 sock.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, SNDBUF)
                 sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+        self._numbers += 1
+        conn.number = self._numbers
+        if self.spec.kind == "tcpin":
+            self._pending[conn.number] = transport
+            while len(self._pending) > MAX_PENDING:  # the oldest unproven one goes
+                old = next(iter(self._pending))
+                self._pending.pop(old).abort()
+            return
+        self.on_connect(transport.write)
+        self._take(conn.number, transport)
+
+    def confirm(self, n: int) -> None:
+        """A valid frame came on connection `n`: on tcpin it becomes the pipeline."""
+        transport = self._pending.pop(n, None)
+        if transport is not None and not self._closed:
+            self._take(n, transport)
+
+    def _take(self, n: int, transport: asyncio.Transport) -> None:
         if self._transport is not None:  # a newer connection replaces the older one
             old, old_n = self._transport, self.connection
             self._transport, self.connection = None, 0
             self.on_close(old_n, "replaced by a newer connection")
             old.abort()
         self.opened += 1
-        conn.number = self.opened
-        self.connection = conn.number
+        self.connection = n
         self._transport = transport
         peer = transport.get_extra_info("peername")
         self.log(f"pipeline open ({self.where()}, {addr_text(peer) if peer else 'peer'}): file data goes on it")
-        self.on_open(conn.number)
+        self.on_open(n)
 
     def _lost(self, conn: _Conn, words: str) -> None:
+        if self._pending.pop(conn.number, None) is not None:
+            self.on_forget(conn.number)  # never proven: its half frame, if any, goes
+            return
         if conn.number == 0 or conn.number != self.connection:
             return  # replaced, or never taken
         self._transport = None
@@ -148,7 +207,7 @@ class PipeLink:
             self.on_close(conn.number, words)
 
     def _data(self, conn: _Conn, data: bytes) -> None:
-        if conn.number and conn.number == self.connection:
+        if conn.number and (conn.number == self.connection or conn.number in self._pending):
             self.bytes_in += len(data)
             self.on_data(data, conn.number)
 

@@ -8,23 +8,28 @@ relay then connects to `to` (the onboard end's `--pipeline tcpin:`, as the onboa
 are at most a chunk each way. At each drop (START:SECONDS, from the relay's start) both
 connections close and what they had in flight is lost; for SECONDS nothing listens for the tablet
 side (its attempts are refused: the pipeline cannot open, as after DJI's send timeouts and
-disconnects), then it may connect again.
+disconnects), then it may connect again. During a stall (START:SECONDS) the connections stay
+open but nothing moves either way: DJI's send timeouts, which the ends must notice themselves.
 """
 
 from __future__ import annotations
 
 import asyncio
 import contextlib
+import socket
 from collections.abc import Callable
 
 from .transport import Spec, _os_reason
 
 CHUNK = 4096
+SOCKET_BUFFER = 16 * 1024  # per socket: a MOP pipeline holds little in flight, a kernel's TCP buffers megabytes
 
 
 class PipeRelay:
     def __init__(self, listen: Spec, to: Spec, rate_Bps: float, latency_s: float,
-                 drops: list[tuple[float, float]], log: Callable[[str], None]) -> None:
+                 drops: list[tuple[float, float]], log: Callable[[str], None],
+                 stalls: list[tuple[float, float]] | None = None) -> None:
+        self.stalls = sorted(stalls or [])
         self.listen = listen
         self.to = to
         self.rate_Bps = rate_Bps
@@ -78,6 +83,11 @@ class PipeRelay:
         return (f"pipeline {self.bytes['up']} B up, {self.bytes['down']} B down, {self.closes} closed "
                 f"({self.lost['up'] + self.lost['down']} B in flight lost), {self.refused} refused")
 
+    def _stalled_for(self) -> float:
+        now = asyncio.get_running_loop().time() - self._t0
+        return max((start + seconds - now for start, seconds in self.stalls if start <= now < start + seconds),
+                   default=0.0)
+
     def _down_now(self) -> bool:
         now = asyncio.get_running_loop().time() - self._t0
         return any(start <= now < start + seconds for start, seconds in self.drops)
@@ -115,6 +125,12 @@ class PipeRelay:
                      f"({_os_reason(e)})")
             writer.transport.abort()
             return
+        for w in (writer, o_writer):  # what waits here is a chunk, not what a kernel would buffer
+            sock = w.get_extra_info("socket")
+            if sock is not None:
+                with contextlib.suppress(OSError):
+                    sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, SOCKET_BUFFER)
+                    sock.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, SOCKET_BUFFER)
         self._close_pair()  # a newer pipeline replaces an older one
         self._pair = (writer, o_writer)
         conn = self.connection
@@ -132,6 +148,11 @@ class PipeRelay:
                 break
             if not data or self.connection != conn:
                 break
+            if (left := self._stalled_for()) > 0:  # a stall: this chunk (and all behind it) waits
+                await asyncio.sleep(left)
+                free_at = loop.time()
+                if self.connection != conn:
+                    break
             self._in_flight[way] += len(data)
             free_at = max(loop.time(), free_at) + len(data) / self.rate_Bps
             await asyncio.sleep(max(0.0, free_at - loop.time()))  # serialised: read no more meanwhile

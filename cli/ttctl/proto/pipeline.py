@@ -82,6 +82,10 @@ class Pipe:
         else:
             sender.use_path(self.ep.geometry, 1.0 / self._packet_rate if self._packet_rate else 0.0, stream=False)
 
+    def sign(self, frame: bytes) -> bytes:
+        """`frame` as it goes on the pipeline (signed under the pipeline's link id, when signed)."""
+        return self._sign(frame) if self._sign is not None else frame
+
     def poll(self, now: float) -> bytes | None:
         """The next frame for the pipeline, if one may leave now."""
         if not self.is_open:

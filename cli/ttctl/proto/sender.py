@@ -272,8 +272,14 @@ class FileSender:
 
     def _tail_due(self) -> float | None:
         """When the oldest unacknowledged bytes become worth sending again on an otherwise idle
-        link (a tail-loss probe: the link would idle until the next status anyway)."""
-        return min((ts for s, e, ts in self._sent if not self.acked.covers(s, e)), default=None)
+        link (a tail-loss probe: the link would idle until the next status anyway). On a pipeline
+        nothing is lost while it stays open (a close moves the data, and this wait, back to the
+        packets), so there a probe waits for the status that should have come."""
+        oldest = min((ts for s, e, ts in self._sent if not self.acked.covers(s, e)), default=None)
+        return oldest + self._probe_wait() if oldest is not None else None
+
+    def _probe_wait(self) -> float:
+        return max(3 * self.rtt, 1.5) if self.on_stream else 0.0  # (statuses come every second or so)
 
     def _choose_mode(self) -> str:
         if self.cfg.frame_mode != "auto":
@@ -356,8 +362,9 @@ class FileSender:
         last known to be missing (each send leaves it missing with probability p), the one
         sent longest ago among those. No part of the tail starves when statuses are lost."""
         best: tuple[int, float, int] | None = None
+        wait = self._probe_wait()
         for s, e, ts in self._sent:
-            if ts > now:
+            if ts + wait > now:
                 continue
             gaps = self.acked.gaps(s, e)
             if not gaps:
