@@ -150,6 +150,8 @@ class App:
         self.tcp = s
         self.connections += 1
         self._pm_in = self._mav()
+        mav = self.pm.MAVLink(None, srcSystem=255, srcComponent=190)
+        s.sendall(mav.heartbeat_encode(6, 8, 0, 0, 4).pack(mav))  # hello: the node takes the connection
 
     def close_pipe(self, now: float) -> None:
         if self.tcp is not None:

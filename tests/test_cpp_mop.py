@@ -279,7 +279,7 @@ def test_commands_keep_their_latency_during_a_file_on_the_pipeline(mop_node: Pat
     node.wait_ready()
     src = tmp_path / "big.bin"
     src.write_bytes(random.Random(5).randbytes(1 << 20))
-    app = App(node, pm, tmp_path)
+    app = App(node, pm, tmp_path, rate_Bps=60_000.0)  # (a rate a busy test machine keeps up with on both ends)
     try:
         idle = command_latencies(app, 12, lambda: True, 60)
         sender = app.ep.send_file(src, NODE)

@@ -8,7 +8,7 @@ headers, tests/mop_lib.py):
 - the same with the stand-in closing the pipeline twice under the node mid-transfer: ttctl
   carries on over the low-speed channel and back, the file arrives whole;
 - a fetch the node serves over the pipeline through an SDK that takes at most 7 bytes a send;
-- a send that never returns: a timeout after 5 s, the connection closed under it, accepted again.
+- a send that never returns: a timeout after 2 s, the connection closed under it, accepted again.
 """
 
 from __future__ import annotations
@@ -61,7 +61,8 @@ def test_send_file_2mb_over_the_pipeline(mop_node: Path, tmp_path: Path, nodes: 
     assert sha(node.inbox / "big.bin") == sha(src)
     assert r["pipeline_opens"] == 1 and r["pipeline_closes"] == 0 and r["pipeline_bytes_out"] >= MB2, r
     stats = node.stop()
-    assert stats["sdk_bytes_in"] == r["pipeline_bytes_out"], (stats, r)  # every byte ttctl wrote there
+    # every byte ttctl wrote there (and its hello, a HEARTBEAT, which it does not count)
+    assert 0 <= stats["sdk_bytes_in"] - r["pipeline_bytes_out"] <= 64, (stats, r)
     assert stats["pipe_frames_in"] >= MB2 // 247 and stats["bad_bytes"] == 0, stats
 
 
@@ -96,7 +97,7 @@ def test_a_fetch_served_over_the_pipeline_in_short_writes(mop_node: Path, tmp_pa
 
 
 def test_a_send_that_never_returns_is_a_timeout(mop_node: Path, tmp_path: Path, nodes: Any) -> None:
-    """The SDK's send hangs after 100 kB (until the connection is closed under it): after 5 s
+    """The SDK's send hangs after 100 kB (until the connection is closed under it): after 2 s
     the node gives the connection up in one line, closes it so the call returns, and accepts
     the app again; the fetch completes whole."""
     node = nodes(mop_node, tmp_path, {"TTCTL_FAKE_MOP_STALL": "100000"})
@@ -112,5 +113,5 @@ def test_a_send_that_never_returns_is_a_timeout(mop_node: Path, tmp_path: Path, 
     stats = node.stop()
     assert stats["sdk_stalls"] == 1 and stats["timeouts"] == 1 and stats["connections"] >= 2, stats
     closed = node.pipe_events("closed")
-    assert "did not return within 5 s" in closed[0]["words"], closed
+    assert "did not return within 2 s" in closed[0]["words"], closed
     assert stats["sdk_live_handles"] == 0, stats

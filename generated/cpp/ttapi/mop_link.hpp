@@ -14,7 +14,7 @@
 // frames; realLen short of len leaves the rest to go first on the same connection); on any error
 // (DJI_ERROR_MOP_CHANNEL_MODULE_CODE_CONNECTION_CLOSE when the app goes) _Close and _Destroy the
 // connection and _Accept again after a second. A failed _Create or _Bind is tried again every
-// second; a _SendData that has not returned in 5 s is a timeout (_Close under it, then the same).
+// second; a _SendData that has not returned in 2 s is a timeout (_Close under it, then the same).
 // Every return code other than success reaches the report callback in DJI's words (dji_error.h),
 // once per call and code; a close, once per close.
 //

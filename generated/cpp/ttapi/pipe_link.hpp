@@ -17,9 +17,11 @@
 // On the node's thread (NodeSide::step, called by the link's run(): PsdkLink::attach,
 // DttLink::attach), each connection's bytes go through a fresh Parser (a half frame left at a
 // close is dropped, never glued to the next connection's bytes) and its frames to
-// Node::receive_pipe(); while a connection is up the node's file data is pulled from
-// Node::poll_pipe() (paced at NodeConfig::pipe_rate_Bps), but not while more than WRITE_LIMIT
-// bytes written are still unsent. Node::set_pipe() follows the connection.
+// Node::receive_pipe(). A connection becomes the pipeline once a valid frame came on it (the app
+// says hello; a stranger on the port gets no file data), as ttctl's tcpin does; then the node's
+// file data is pulled from Node::poll_pipe() (paced at NodeConfig::pipe_rate_Bps), but not while
+// more than window() bytes written are still unsent (32 KiB, or 0.1 s of the rate if more).
+// Node::set_pipe() follows the connection.
 //
 // What happens is reported through one callback, from PipeLink's threads: listening, a
 // connection opened, a connection closed (with the SDK's words for why), and every other
@@ -57,7 +59,7 @@ struct PipeProblem {
 struct PipeReport {
     enum class Kind : std::uint8_t {
         listening,  // waiting for the app to open the pipeline
-        opened,  // a connection: file data moves to it
+        opened,  // a connection (file data moves to it once a valid frame came on it)
         closed,  // it closed (`problem`: why, in the SDK's words): file data is back on the link
         problem,  // an SDK call failed (`problem`), reported once per call and code
     };
@@ -156,12 +158,12 @@ struct PipeStats {
 /// run()), start(); stop() (or the destructor) ends its threads.
 class PipeLink final : public NodeSide {
 public:
-    static constexpr std::size_t WRITE_LIMIT = 16 * 1024;  // unsent bytes beyond which no data is pulled
-    static constexpr std::size_t TX = WRITE_LIMIT + 2 * MAX_FRAME;
+    static constexpr std::size_t WINDOW = 32 * 1024;  // unsent bytes beyond which no data is pulled (at least)
+    static constexpr std::size_t TX = 128 * 1024 + 2 * MAX_FRAME;  // room for 0.1 s of 1.28 MB/s
     static constexpr std::size_t RX = 64 * 1024;  // read bytes waiting for the node's thread
     static constexpr std::size_t CHUNK = 4096;  // bytes per SDK call
     static constexpr double BACKOFF = 1.0;  // s between a failure or a close and the next try
-    static constexpr double SEND_TIMEOUT = 5.0;  // s a send may take before the connection is given up
+    static constexpr double SEND_TIMEOUT = 2.0;  // s a send may take before the connection is given up
     static constexpr std::size_t KINDS = 32;  // distinct (call, code) problems remembered
 
     using Report = std::function<void(const PipeReport&)>;
@@ -169,7 +171,12 @@ public:
     PipeLink(Node& node, PipeTransport& transport, Report report = nullptr)
         : node_(node), transport_(transport), report_(std::move(report))
     {
+        const double w = 0.1 * node.config().pipe_rate_Bps;  // 0.1 s of the rate on a fast pipeline
+        window_ = std::min(std::max(WINDOW, w > 0 ? static_cast<std::size_t>(w) : 0), TX - 2 * MAX_FRAME);
     }
+
+    /// Unsent bytes beyond which no file data is pulled.
+    std::size_t window() const noexcept { return window_; }
     PipeLink(const PipeLink&) = delete;
     PipeLink& operator=(const PipeLink&) = delete;
     ~PipeLink() override { stop(); }
@@ -236,12 +243,12 @@ public:
                 dead_ = true;
                 dead_why_ = PipeProblem{};
                 dead_why_.call = "PipeLink";
-                dead_why_.words = "a send did not return within 5 s (a timeout): the pipeline is closed and "
+                dead_why_.words = "a send did not return within 2 s (a timeout): the pipeline is closed and "
                                   "accepted again";
                 ++stats_.timeouts;
             }
             gen = gen_;
-            up = connected_ && !dead_;
+            up = connected_ && !dead_ && proven_gen_ == gen_;  // a valid frame came on it
         }
         if (stalled) {
             transport_.abort_connection();  // the blocked calls return; the connection thread closes it
@@ -253,6 +260,7 @@ public:
             parser_gen_ = gen;
         }
         bool more_in = false;
+        bool proved = false;
         for (int round = 0; round < 16; ++round) {  // at most 64 KiB a turn: the link gets its turns
             std::uint8_t chunk[CHUNK];
             std::size_t n = 0;
@@ -280,6 +288,10 @@ public:
             std::lock_guard<std::mutex> lock(m_);
             stats_.frames_in += frames;
             stats_.bad_bytes += parser_.stats().skipped_bytes - skipped;
+            if (frames != 0 && proven_gen_ != parser_gen_) {
+                proven_gen_ = parser_gen_;  // the connection proved itself: the pipeline from the next step
+                proved = true;
+            }
         }
         bool full = false;
         while (node_.pipe_open()) {
@@ -288,7 +300,7 @@ public:
                 if (gen_ != gen || !connected_ || dead_) {
                     break;
                 }
-                if (tx_.size() > WRITE_LIMIT) {
+                if (tx_.size() > window_) {
                     full = true;
                     break;
                 }
@@ -301,12 +313,12 @@ public:
             {
                 std::lock_guard<std::mutex> lock(m_);
                 if (gen_ == gen && connected_ && !dead_) {
-                    tx_.write(frame, n);  // room: TX holds WRITE_LIMIT and two frames more
+                    tx_.write(frame, n);  // room: TX holds the window and two frames more
                 }
             }
             cv_.notify_all();
         }
-        if (more_in) {
+        if (more_in || proved) {
             return now;
         }
         if (full) {
@@ -549,6 +561,8 @@ private:
     bool in_send_ = false;
     double send_started_ = 0.0;
     std::uint64_t gen_ = 0;  // the connection's number
+    std::uint64_t proven_gen_ = 0;  // the last connection a valid frame came on
+    std::size_t window_ = WINDOW;
     ByteRing<RX> rx_;
     ByteRing<TX> tx_;
     PipeStats stats_;
