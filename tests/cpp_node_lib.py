@@ -286,6 +286,28 @@ class ServingOnboards:
         line = self.stdout.readline().strip()
         return [] if line == "-" else [bytes.fromhex(h) for h in line.split()]
 
+    def set_pipe(self, name: str, now: float, open_: bool) -> None:
+        """A MOP pipeline opens or closes beside the link (20000 B/s, as node_driver's)."""
+        if name == "python":
+            if open_:
+                self.python.pipe.open(now, 20000.0)
+            else:
+                self.python.pipe.close(now)
+        else:
+            self.stdin.write(f"{'O' if open_ else 'C'} {now!r}\n")
+
+    def poll_pipe(self, name: str, now: float) -> list[bytes]:
+        """The frames the onboard end puts on the pipeline now."""
+        if name == "python":
+            out = []
+            while (frame := self.python.pipe.poll(now)) is not None:
+                out.append(frame)
+            return out
+        self.stdin.write(f"Q {now!r}\n")
+        self.stdin.flush()
+        line = self.stdout.readline().strip()
+        return [] if line == "-" else [bytes.fromhex(h) for h in line.split()]
+
     def close(self) -> None:
         self.stdin.close()
         self.drv.wait(20)

@@ -8,7 +8,10 @@ programs run against ttctl's Python ends through `ttctl link relay`:
 - the OSDK 3.9 build (the M100's SDK, whose recvInfo.len counts two bytes more than 4.1's) takes
   a 4 KB file in full 100-byte packets, and serves one; the 4.1 build the same; a program that
   subtracts only PackageMin stalls on 3.9;
-- the Payload SDK build takes a file and serves one in 128-byte packets (--profile psdk).
+- the Payload SDK build takes a file and serves one in 128-byte packets (--profile psdk);
+- the MOP build (the Payload SDK's low-speed channel and a MOP pipeline, with the stand-in of
+  dji_mop_channel.h) takes a file from `send-file --profile mop --pipeline tcpout:`, its data over
+  the pipeline, and says on stderr that the pipeline opened and closed (DJI's words).
 """
 
 from __future__ import annotations
@@ -19,6 +22,7 @@ import random
 import re
 import shutil
 import signal
+import socket
 import subprocess
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -65,20 +69,23 @@ def gxx(*args: str) -> None:
 def built(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     tmp = tmp_path_factory.mktemp("docs_dji_cpp")
     code = blocks()
-    assert set(code) == {"osdk_main.cpp", "psdk_main.cpp"}, sorted(code)
+    assert set(code) == {"osdk_main.cpp", "psdk_main.cpp", "mop_main.cpp"}, sorted(code)
     out = tmp / "out"
     proc = run_ttctl("gen", str(ROOT / "dialects" / "ttapi.xml"), "--lang", "cpp", "-o", str(out), timeout=300)
     assert proc.returncode == 0, proc.stderr
     for name, text in code.items():
         (tmp / name).write_text(text)
     inc = ["-I", str(out / "cpp")]
-    exes = {"osdk-3.9": tmp / "osdk39", "osdk-4.1": tmp / "osdk41", "psdk": tmp / "psdk"}
+    exes = {"osdk-3.9": tmp / "osdk39", "osdk-4.1": tmp / "osdk41", "psdk": tmp / "psdk", "mop": tmp / "mop"}
     jobs = [(*WARN, "-O1", *inc, *system_includes(OSDK[v]), f"-DFAKE_OSDK_VERSION={v.replace('.', '')}",
              str(tmp / "osdk_main.cpp"), str(OSDK_STANDIN), "-pthread", "-o", str(exes[f"osdk-{v}"]), "-lz")
             for v in ("3.9", "4.1")]
     jobs.append((*WARN, "-O1", *inc, "-I", str(FAKE_PSDK), *system_includes(PSDK), str(tmp / "psdk_main.cpp"),
                  str(FAKE_PSDK / "fake_psdk.cpp"), str(FAKE_PSDK / "fake_application.cpp"), "-pthread", "-o",
                  str(exes["psdk"]), "-lz"))
+    jobs.append((*WARN, "-O1", *inc, "-I", str(FAKE_PSDK), *system_includes(PSDK), str(tmp / "mop_main.cpp"),
+                 str(FAKE_PSDK / "fake_psdk.cpp"), str(FAKE_PSDK / "fake_mop.cpp"),
+                 str(FAKE_PSDK / "fake_application.cpp"), "-pthread", "-o", str(exes["mop"]), "-lz"))
     with ThreadPoolExecutor(max_workers=2) as pool:
         for job in [pool.submit(gxx, *args) for args in jobs]:
             job.result()
@@ -224,3 +231,37 @@ def test_subtracting_only_packagemin_stalls_a_4kb_upload_on_osdk_39(built: dict[
     finally:
         prog.kill()
         prog.wait(10)
+
+
+def test_the_mop_program_takes_a_file_over_the_pipeline(built: dict[str, Path], tmp_path: Path) -> None:
+    """The doc's MOP program with both stand-ins: `send-file --profile mop --pipeline tcpout:`
+    delivers 300 kB whole, all of it written to the pipeline; the program's stderr says the
+    pipeline opened, and closed in DJI's words when send-file went."""
+    (tmp_path / "outbox").mkdir()
+    src = tmp_path / "up.bin"
+    src.write_bytes(random.Random(9).randbytes(300_000))
+    b, p = free_port(), free_port(socket.SOCK_STREAM)
+    with open(tmp_path / "prog.out", "w") as out, open(tmp_path / "prog.err", "w") as err:
+        prog = subprocess.Popen([str(built["mop"])], cwd=tmp_path, stdout=out, stderr=err,
+                                env={**os.environ, "FAKE_PSDK_LISTEN": f"{LOCAL}:{b}", "TTCTL_FAKE_MOP_PORT": str(p)})
+    try:
+        time.sleep(0.3)
+        assert prog.poll() is None, (tmp_path / "prog.err").read_text()
+        proc, r = send(str(src), "--to", f"udpout:{LOCAL}:{b}", "--profile", "mop", "--pipeline",
+                       f"tcpout:{LOCAL}:{p}", "--timeout", "30", timeout=150)
+        assert proc.returncode == 0 and r["ok"], proc.stderr
+        assert r["pipeline_opens"] == 1 and r["pipeline_bytes_out"] >= 300_000, r
+        assert sha(tmp_path / "inbox" / "up.bin") == sha(src)
+        deadline = time.monotonic() + 10
+        while "Connection of channel is closed" not in (tmp_path / "prog.err").read_text():
+            assert time.monotonic() < deadline, (tmp_path / "prog.err").read_text()
+            time.sleep(0.05)
+    finally:
+        prog.send_signal(signal.SIGINT)
+        code = prog.wait(20)
+    assert code == 0
+    assert (tmp_path / "prog.err").read_text().splitlines() == [
+        "pipeline open: file data goes on it",
+        "pipeline: DjiMopChannel_RecvData: Connection of channel is closed. The peer channel do not work or "
+        "abnormally be closed. Please confirm state of the peer channel and reaccept the connection request of "
+        "MSDK/OSDK"]

@@ -112,7 +112,7 @@ def test_generated_files_are_formatted(tree: dict[str, Any]) -> None:
         "ttapi/enums.hpp", "ttapi/messages.hpp", "ttapi/ttapi.hpp", "ttapi/signing.hpp", "ttapi/packets.hpp",
         "ttapi/udp_forward.hpp", "ttapi/sha256.hpp", "ttapi/scheduler.hpp", "ttapi/commands.hpp",
         *(f"ttapi/{h}.hpp" for h in (*RUNTIME_HEADERS, *TRANSFER_HEADERS, *NODE_HEADERS, *SDK_HEADERS)),
-        "ttapi/udp_link.hpp",
+        "ttapi/udp_link.hpp", "ttapi/pipe_link.hpp",
         "conformance.cpp", "conformance_json.hpp", "conformance_json_reader.hpp", "onboard/ttapi_plugin.hpp"}
     for p in files:
         lines = p.read_text().split("\n")

@@ -242,11 +242,12 @@ def test_cpp_namespace_builds_and_runs(tmp_path: Path) -> None:
     assert {p.relative_to(cpp).as_posix() for p in cpp.rglob("*") if p.is_file()} == {
         "myco/drone/enums.hpp", "myco/drone/messages.hpp", "myco/drone/ttapi.hpp", "myco/drone/signing.hpp",
         "myco/drone/packets.hpp", "myco/drone/udp_forward.hpp", "myco/drone/sha256.hpp", "myco/drone/scheduler.hpp",
-        "myco/drone/commands.hpp", "myco/drone/udp_link.hpp", "conformance.cpp", "conformance_json.hpp",
-        "conformance_json_reader.hpp", "onboard/ttapi_plugin.hpp",
+        "myco/drone/commands.hpp", "myco/drone/udp_link.hpp", "myco/drone/pipe_link.hpp", "conformance.cpp",
+        "conformance_json.hpp", "conformance_json_reader.hpp", "onboard/ttapi_plugin.hpp",
         *(f"myco/drone/{h}.hpp" for h in (*RUNTIME_HEADERS, *TRANSFER_HEADERS, *NODE_HEADERS, *SDK_HEADERS))}
     for names, ns in (((*RUNTIME_HEADERS, "enums", "messages"), "myco::drone"),
-                      (("scheduler", "commands", *TRANSFER_HEADERS, *NODE_HEADERS, *SDK_HEADERS, "udp_link"),
+                      (("scheduler", "commands", *TRANSFER_HEADERS, *NODE_HEADERS, *SDK_HEADERS, "udp_link",
+                        "pipe_link"),
                        "myco::drone::link")):
         for name in names:
             text = (cpp / "myco" / "drone" / f"{name}.hpp").read_text()

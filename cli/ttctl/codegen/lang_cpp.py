@@ -21,6 +21,9 @@ the link, in namespace <ns>::link:
                               answers (SetpointDesk), receiving, files, NodePump, DttLink
   cpp/<ident>/psdk_link.hpp   link::PsdkLink: a Node on DJI's Payload SDK low-speed channel (needs its header)
   cpp/<ident>/osdk_link.hpp   link::OsdkLink: a Node on DJI's Onboard SDK 3.x or 4.x DTT (needs its header)
+  cpp/<ident>/pipe_link.hpp   link::PipeLink: a MOP pipeline beside a Node's link, over any SDK's PipeTransport
+  cpp/<ident>/mop_link.hpp    link::MopLink: the pipeline on the Payload SDK's dji_mop_channel.h (needs its header)
+  cpp/<ident>/osdk_mop_link.hpp  link::OsdkMopLink: the pipeline on the Onboard SDK 4.1's MopServer (M300)
   cpp/<ident>/udp_link.hpp    link::UdpLink: a Node on UDP (POSIX)
   cpp/<ident>/enums.hpp       one `enum class` per enum
   cpp/<ident>/messages.hpp    one struct per message
@@ -70,13 +73,14 @@ TRANSFER_HEADERS = ("transfer", "transfer_base", "file_names", "ranges", "posix_
                     "sender", "sender_control", "sender_data", "sender_frame_size")
 # The node: node.hpp includes node_config.hpp and setpoints.hpp first and its parts (the others)
 # after the class.
-NODE_HEADERS = ("node", "node_config", "setpoints", "node_receive", "node_files", "node_pump", "dtt_link")
+NODE_HEADERS = ("node", "node_config", "setpoints", "node_receive", "node_files", "node_pipe", "node_pump",
+                "dtt_link")
 # Links on DJI's SDKs that need the SDK's own header (compiled in tests against DJI's vendored
 # headers, tests/vendor/dji/): the node on the Payload SDK's low-speed channel, and on the Onboard
 # SDK's DTT (3.x and 4.x).
-SDK_HEADERS = ("psdk_link", "osdk_link")
+SDK_HEADERS = ("psdk_link", "osdk_link", "mop_link", "osdk_mop_link")
 _SUB_HEADERS = (*RUNTIME_HEADERS, "enums", "messages", "signing", "packets", "sha256", "scheduler", "commands",
-                *TRANSFER_HEADERS, *NODE_HEADERS, *SDK_HEADERS, "udp_link", "udp_forward")
+                *TRANSFER_HEADERS, *NODE_HEADERS, *SDK_HEADERS, "pipe_link", "udp_link", "udp_forward")
 # What the onboard link runtime (commands.hpp, transfer.hpp, node.hpp) is written against: these
 # messages with ttctl's ids and CRC_EXTRA (ttctl.wire.contract), and these enums.
 LINK_MESSAGES = ("HEARTBEAT", "TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_DATA", "TT_FILE_REQUEST", "TT_ACTION_COMMAND",
@@ -264,6 +268,7 @@ class _Cpp:
             *_headers(ident, TRANSFER_HEADERS),
             *_headers(ident, NODE_HEADERS),
             *_headers(ident, SDK_HEADERS),
+            Output(f"cpp/{ident}/pipe_link.hpp", "cpp/pipe_link.hpp.j2"),
             Output(f"cpp/{ident}/udp_link.hpp", "cpp/udp_link.hpp.j2"),
         ] if carries_link(d) else []
         return [

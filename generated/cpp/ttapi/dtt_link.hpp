@@ -67,7 +67,18 @@ public:
                 send_(p, n);
                 sent_.fetch_add(1, std::memory_order_relaxed);
             });
+            if (side_ != nullptr) {
+                next = std::min(next, side_->step(monotonic_now()));
+            }
         }
+    }
+
+    /// Drive `side` too (a MOP pipeline, pipe_link.hpp) on run()'s thread; before run(). It must
+    /// outlive the run.
+    void attach(NodeSide& side)
+    {
+        side_ = &side;
+        side.set_wake([this] { inbox_.poke(); });
     }
 
     void stop() noexcept
@@ -85,6 +96,7 @@ private:
     NodePump pump_;
     PacketInbox<QUEUE, MTU> inbox_;
     std::atomic<bool> stop_{false};
+    NodeSide* side_ = nullptr;
     std::atomic<std::uint64_t> dropped_{0};
     std::atomic<std::uint64_t> sent_{0};
 };

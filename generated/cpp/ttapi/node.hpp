@@ -31,7 +31,9 @@
 //                      driving (poll, wakeup), periodic work
 //   node_receive.hpp   Node: packets in, per source; frames for this end, handled; commands run
 //   node_files.hpp     Node: uploads, fetches served from the serve folder, file transfer events
-//   node_pump.hpp      NodePump: drives a Node from a loop of your own
+//   node_pipe.hpp      Node: the MOP pipeline beside the link (file data on it while it is open),
+//                      PipeOut, and when the node needs driving (wakeup)
+//   node_pump.hpp      NodePump: drives a Node from a loop of your own; NodeSide
 //   dtt_link.hpp       DttLink: the node on DJI's Onboard SDK 4
 #ifndef TTCTL_TTAPI_NODE_HPP
 #define TTCTL_TTAPI_NODE_HPP
@@ -154,6 +156,7 @@ public:
         : cfg_(std::move(cfg)),
           encoder_(cfg_.sysid, cfg_.compid),
           scheduler_(cfg_.mtu, cfg_.rate_Bps, cfg_.signing),
+          pipe_(cfg_.pipe_rate_Bps, nullptr),
           server_(cfg_.sysid, cfg_.compid),
           context_(*this),
           sources_(new Source[MAX_SOURCES]),
@@ -165,6 +168,12 @@ public:
             sources_[i].rx.set_signing(cfg_.signing);
         }
         geometry_ok_ = Geometry::make(cfg_.mtu, cfg_.signing != nullptr, geometry_);
+        Geometry::make(PIPE_MTU, cfg_.signing != nullptr, pipe_geometry_);
+        if (cfg_.signing != nullptr) {  // the pipeline's frames: their own link id (node_pipe.hpp)
+            pipe_signing_.reset(new Signing(cfg_.signing->key(), cfg_.signing->link_id() ^ PIPE_LINK_BIT,
+                                            cfg_.signing->allow_unsigned()));
+            pipe_.set_signing(pipe_signing_.get());
+        }
         if (!cfg_.inbox.empty()) {
             store_.reset(new ReceiveDir(cfg_.inbox, cfg_.quota));
             TransferConfig rcfg = cfg_.transfer;
@@ -364,39 +373,9 @@ public:
         return n;
     }
 
-    /// When the node next needs poll() (infinity: only when a packet arrives).
-    double wakeup() const noexcept
-    {
-        double when = std::numeric_limits<double>::infinity();
-        double t = 0.0;
-        if (receiver_ && receiver_->deadline(t)) {
-            when = std::min(when, t);
-        }
-        bool data = scheduler_.busy();
-        for (std::size_t i = 0; i < MAX_SENDERS; ++i) {
-            const FileSender& s = senders_[i];
-            if (!s.active()) {
-                continue;
-            }
-            if (s.deadline(now_, t)) {
-                when = std::min(when, t);
-            }
-            data = data || s.has_data(now_);
-            if (s.done()) {
-                when = std::min(when, s.finished_at() + RETIRE_AFTER);
-            }
-        }
-        if (data) {
-            when = std::min(when, scheduler_.ready_at());
-        }
-        if (cfg_.heartbeat_interval > 0) {
-            when = std::min(when, heartbeat_due_);
-        }
-        for (const TimerEntry& e : timers_) {
-            when = std::min(when, e.due);
-        }
-        return when;
-    }
+    /// When the node next needs poll() (infinity: only when a packet arrives). While a pipeline
+    /// is open, file data waits for pipe_wakeup() instead (node_pipe.hpp).
+    double wakeup() const noexcept;
 
     /// When the quietest source holding half a frame last sent something; false if none does.
     bool pending_since(double& when) const noexcept;
@@ -424,6 +403,20 @@ public:
 
     // IdSource: a transfer id, 32 random bits, never 0, not in use here.
     std::uint32_t new_id() override;
+
+    // -- a MOP pipeline beside the link (node_pipe.hpp) ------------------------------------------
+    /// A pipeline opened (file data moves to it, at cfg.pipe_rate_Bps, in PIPE_MTU geometry) or
+    /// closed (running transfers carry on over the link, with its geometry and pace, from the
+    /// next offsets; the receiver's statuses name what was in flight).
+    void set_pipe(bool open, double now);
+    bool pipe_open() const noexcept { return pipe_open_; }
+    /// The next file-data frame for the pipeline into `out` (MAX_FRAME bytes), whole and signed
+    /// if signing is on, if its pacer lets one go now; its length, or 0.
+    std::size_t poll_pipe(double now, std::uint8_t* out);
+    /// When poll_pipe() may have a frame (infinity: no file data waiting, or no pipeline).
+    double pipe_wakeup() const noexcept;
+    /// A whole frame from a pipeline (a stream parser cut it out): handled as any received frame.
+    std::size_t receive_pipe(double now, const std::uint8_t* frame, std::size_t n);
 
 private:
     static constexpr double STATUS_BYTES = 60.0;  // a typical TT_FILE_STATUS frame
@@ -482,6 +475,7 @@ private:
     void refuse_request(std::uint8_t sysid, std::uint8_t compid, std::uint32_t request_id, TtFileResult result,
                         std::string_view name, std::string_view reason);
     FileSender* free_sender() noexcept;
+    void route(FileSender& s) noexcept;  // to the pipeline while one is open, else to the link (node_pipe.hpp)
     void retire(FileSender& s) noexcept;
     void sender_finished(const FileSender& s);
     static void file_event_thunk(void* user, FileEvent what, const Incoming& t, const char* final_path);
@@ -531,6 +525,8 @@ private:
     NodeConfig cfg_;
     Encoder encoder_;  // unsigned: the scheduler signs frames as they leave
     Scheduler scheduler_;
+    std::unique_ptr<Signing> pipe_signing_;  // signs the pipeline's frames (link id ^ PIPE_LINK_BIT)
+    PipeOut pipe_;  // file data while a pipeline is open (node_pipe.hpp)
     CommandServer server_;
     SetpointDesk setpoints_;
     NodeContext context_;
@@ -553,6 +549,8 @@ private:
     bool started_ = false;
     Geometry geometry_;  // how file data fills the link's packets (cfg_.mtu, signing)
     bool geometry_ok_ = false;
+    Geometry pipe_geometry_;  // the same on a pipeline (PIPE_MTU, signing)
+    bool pipe_open_ = false;
     double heartbeat_due_ = 0.0;
     bool has_last_rx_ = false;
     double last_rx_ = 0.0;
@@ -600,6 +598,7 @@ inline std::uint8_t NodeContext::compid() const noexcept { return node_.config()
 
 #include "node_receive.hpp"
 #include "node_files.hpp"
+#include "node_pipe.hpp"
 #include "node_pump.hpp"
 #include "dtt_link.hpp"
 

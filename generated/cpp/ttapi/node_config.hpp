@@ -18,6 +18,13 @@
 
 namespace ttapi::link {
 
+/// A MOP pipeline (a byte stream, mop_link.hpp) has no packet size: file data on it takes the
+/// frame geometry of 280-byte packets (TT_FILE_DATA_WIDE, or TT_FILE_DATA_FIT with 246 bytes).
+inline constexpr std::size_t PIPE_MTU = 280;
+/// Signed, a pipeline's frames carry link id `link_id ^ PIPE_LINK_BIT`: signing orders timestamps
+/// per (link id, system, component), and the two paths deliver with different delays.
+inline constexpr std::uint8_t PIPE_LINK_BIT = 0x80;
+
 /// How a node is set up.
 struct NodeConfig {
     static constexpr double M100_DOWNLINK_BPS = 6700.0;  // ttctl's m100 profile at 10 m
@@ -37,6 +44,10 @@ struct NodeConfig {
     /// channel. Packets, file-data frames (transfer_base.hpp's Geometry) and pacing follow it;
     /// below 22 bytes (35 signed) start() refuses it.
     std::size_t mtu = 100;
+    /// While a MOP pipeline is open beside the link (mop_link.hpp), the node's file-data frames
+    /// go on it, paced at this rate (bytes/s; 0: unpaced), in PIPE_MTU geometry; everything else
+    /// stays on the link. Incoming rate grants use it too while the pipeline is open.
+    double pipe_rate_Bps = 100000.0;
     std::string inbox;  // files received land here ("": this end takes no files)
     std::string serve;  // files a peer may fetch ("": none)
     Quota quota;  // of the inbox
@@ -99,7 +110,12 @@ struct NodeStats {
     std::uint64_t files_received = 0;
     std::uint64_t files_refused = 0;
     std::uint64_t files_served = 0;
-    std::uint64_t vr_confirmed = 0;  // TT_VR_CONTROLLER confirmed (NAMED_VALUE_INT "vrbtn<index>")
+    std::uint64_t vr_confirmed = 0;
+    std::uint64_t pipe_opens = 0;  // times a MOP pipeline opened (file data moved to it)
+    std::uint64_t pipe_closes = 0;  // times it closed (file data back on the link)
+    std::uint64_t pipe_frames_in = 0;  // whole frames that arrived on a pipeline
+    std::uint64_t pipe_frames_out = 0;  // file-data frames sent on a pipeline
+    std::uint64_t pipe_bytes_out = 0;  // their bytes  // TT_VR_CONTROLLER confirmed (NAMED_VALUE_INT "vrbtn<index>")
 };
 
 }  // namespace ttapi::link

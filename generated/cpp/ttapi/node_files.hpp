@@ -30,12 +30,11 @@ inline bool Node::send_file(const char* path, std::string_view name, std::uint8_
         why << static_cast<std::uint64_t>(MAX_SENDERS) << " files are being sent from here; ask again later";
         return false;
     }
-    s->set_geometry(geometry_);  // data frames sized to the link's packets (and signing)
+    s->set_geometry(pipe_open_ ? pipe_geometry_ : geometry_);  // data frames sized to the path's packets
     if (!s->start(*this, encoder_, path, name, sysid, compid, cfg_.transfer, request_id, overwrite, now_, why)) {
         return false;
     }
-    s->set_byte_time(cfg_.rate_Bps > 0 ? 1.0 / cfg_.rate_Bps : 0.0);
-    scheduler_.add_source(s);
+    route(*s);  // on the pipeline while one is open, else on the link
     if (request_id != 0 && events_) {
         NodeEvent e;
         e.kind = NodeEvent::Kind::serving;
@@ -256,6 +255,7 @@ inline void Node::retire(FileSender& s) noexcept
         return;
     }
     scheduler_.remove_source(&s);
+    pipe_.remove_source(&s);
     s.release();
 }
 

@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <mutex>
 
@@ -81,6 +82,18 @@ private:
     double target_ = 0.0;
 };
 
+/// Work beside a link's own on the node's thread (a MOP pipeline: pipe_link.hpp's PipeLink):
+/// a link's run() calls step() each turn and sleeps no longer than it says; the side cuts that
+/// sleep short from its own threads with the `wake` it is given (bytes arrived, room to write).
+class NodeSide {
+public:
+    virtual ~NodeSide() = default;
+    /// Do what is due now; returns when to come back (infinity: when woken).
+    virtual double step(double now) = 0;
+    /// How to wake the node's thread (called from any thread, never from an SDK's callback).
+    virtual void set_wake(std::function<void()> wake) = 0;
+};
+
 /// Packets from an SDK's thread to the node's: a fixed queue of Q packets of at most SIZE bytes,
 /// allocation-free. put() copies and returns at once; take() waits for one until a deadline.
 template <std::size_t Q, std::size_t SIZE>
@@ -120,12 +133,13 @@ public:
     bool take(double deadline, std::uint8_t* out, std::size_t& n)
     {
         std::unique_lock<std::mutex> lock(m_);
-        if (count_ == 0) {
+        if (count_ == 0 && !poked_) {
             const double wait = deadline - monotonic_now();
             if (wait > 0) {
                 cv_.wait_for(lock, std::chrono::duration<double>(std::min(wait, 0.5)));
             }
         }
+        poked_ = false;
         if (count_ == 0) {
             return false;
         }
@@ -140,6 +154,17 @@ public:
     /// Ends a take() that waits (a stop).
     void wake() noexcept { cv_.notify_all(); }
 
+    /// Ends the current or the next take() early (a NodeSide has work), without a packet; for
+    /// threads of our own (it waits for the lock).
+    void poke()
+    {
+        {
+            std::lock_guard<std::mutex> lock(m_);
+            poked_ = true;
+        }
+        cv_.notify_all();
+    }
+
 private:
     struct Slot {
         std::uint8_t bytes[SIZE];
@@ -151,6 +176,7 @@ private:
     Slot queue_[Q] = {};
     std::size_t head_ = 0;
     std::size_t count_ = 0;
+    bool poked_ = false;
 };
 
 }  // namespace ttapi::link

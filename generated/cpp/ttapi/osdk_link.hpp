@@ -96,6 +96,8 @@ public:
     }
 
     void run(const std::atomic<bool>* external = nullptr) { dtt_.run(external); }
+    /// Drive `side` too (a MOP pipeline on OSDK 4.1: osdk_mop_link.hpp), before run().
+    void attach(NodeSide& side) { dtt_.attach(side); }
     void stop() noexcept { dtt_.stop(); }
     const DttLink& dtt() const noexcept { return dtt_; }
 

@@ -182,7 +182,18 @@ public:
                 node_.receive(monotonic_now(), packet, len, 0);
             }
             next = step(monotonic_now());
+            if (side_ != nullptr) {
+                next = std::min(next, side_->step(monotonic_now()));
+            }
         }
+    }
+
+    /// Drive `side` too (a MOP pipeline, pipe_link.hpp) on run()'s thread; before run(). It must
+    /// outlive the run.
+    void attach(NodeSide& side)
+    {
+        side_ = &side;
+        side.set_wake([this] { inbox_.poke(); });
     }
 
     void stop() noexcept
@@ -372,6 +383,7 @@ private:
     NodePump pump_;
     PacketInbox<QUEUE, MAX_IN> inbox_;
     std::atomic<bool> stop_{false};
+    NodeSide* side_ = nullptr;
     std::atomic<std::uint64_t> callbacks_{0};
     std::atomic<std::uint64_t> dropped_{0};
     std::uint64_t sent_ = 0;

@@ -412,6 +412,95 @@ private:
 
 using Scheduler = BasicScheduler<>;
 
+/// Bulk frames on a byte stream (a MOP pipeline beside the link, node_pipe.hpp): whole frames,
+/// one at a time, pulled round-robin from the sources, signed as they leave (with a Signing: the
+/// pipeline's own link id, see node_pipe.hpp), paced at the stream's rate, making up SLACK seconds
+/// of a late wake-up (a stream has no radio buffer a burst would overflow). A stream has no
+/// packets, so nothing is packed or split. (ttctl's proto/scheduler.py: next_pipe_frame.)
+template <std::size_t MaxSources = 16>
+class BasicPipeOut {
+public:
+    static constexpr double SLACK = 0.02;
+
+    explicit BasicPipeOut(double rate_Bps = 0.0, Signing* signing = nullptr) noexcept
+        : rate_(rate_Bps), signing_(signing)
+    {
+    }
+    BasicPipeOut(const BasicPipeOut&) = delete;
+    BasicPipeOut& operator=(const BasicPipeOut&) = delete;
+
+    void set_signing(Signing* signing) noexcept { signing_ = signing; }
+    /// A pipeline opened at `now`: the pace starts from it.
+    void open(double now) noexcept { next_free_ = now; }
+    /// When the next frame may leave (0 if unpaced).
+    double ready_at() const noexcept { return rate_ > 0.0 ? next_free_ : 0.0; }
+    std::size_t source_count() const noexcept { return count_; }
+
+    bool add_source(BulkSource* source) noexcept
+    {
+        for (std::size_t i = 0; i < count_; ++i) {
+            if (sources_[i] == source) {
+                return true;
+            }
+        }
+        if (source == nullptr || count_ >= MaxSources) {
+            return false;
+        }
+        sources_[count_++] = source;
+        return true;
+    }
+
+    void remove_source(BulkSource* source) noexcept
+    {
+        for (std::size_t i = 0; i < count_; ++i) {
+            if (sources_[i] == source) {
+                for (std::size_t k = i + 1; k < count_; ++k) {
+                    sources_[k - 1] = sources_[k];
+                }
+                sources_[--count_] = nullptr;
+                return;
+            }
+        }
+    }
+
+    /// The next frame into `out` (MAX_FRAME bytes) if the pacer lets one go now; its length, or 0.
+    std::size_t next_frame(double now, std::uint8_t* out) noexcept
+    {
+        if (rate_ > 0.0 && now < next_free_ - 1e-9) {
+            return 0;
+        }
+        for (std::size_t k = 0; k < count_; ++k) {
+            const std::size_t i = (rr_ + k) % count_;
+            std::size_t n = sources_[i]->pull(now, MAX_FRAME, out);
+            if (n == 0 || n > MAX_FRAME - SIGNATURE_LENGTH) {
+                continue;
+            }
+            rr_ = (i + 1) % count_;
+            if (signing_ != nullptr && out[2] == 0) {
+                n = signing_->sign(out, n, MAX_FRAME, Signing::now());
+                if (n == 0) {
+                    continue;  // not a whole unsigned frame of this dialect: dropped
+                }
+            }
+            if (rate_ > 0.0) {
+                next_free_ = std::max(now - SLACK, next_free_) + static_cast<double>(n) / rate_;
+            }
+            return n;
+        }
+        return 0;
+    }
+
+private:
+    double rate_;
+    double next_free_ = 0.0;
+    Signing* signing_;
+    BulkSource* sources_[MaxSources] = {};
+    std::size_t count_ = 0;
+    std::size_t rr_ = 0;
+};
+
+using PipeOut = BasicPipeOut<>;
+
 }  // namespace ttapi::link
 
 #endif  // TTCTL_TTAPI_SCHEDULER_HPP

@@ -154,6 +154,40 @@ public:
     void set_byte_time(double seconds) noexcept { byte_time_ = seconds; }
     /// How data frames fill the link's packets (the node sets it from its mtu and signing).
     void set_geometry(const Geometry& g) noexcept { geo_ = g; }
+    /// File data takes another path from now on (a MOP pipeline opened or closed, node_pipe.hpp):
+    /// frames are cut for it from the next offset. What was sent and not acknowledged stays owed
+    /// (the receiver's status reports what the old path lost, and that is resent). Loss learnt on
+    /// the old path says nothing of the new one; on a stream, automatic frames are wide.
+    void use_path(const Geometry& g, double byte_time, bool stream) noexcept
+    {
+        if (stream == on_stream_ && g.mtu == geo_.mtu && g.sig == geo_.sig && g.fit == geo_.fit
+            && byte_time == byte_time_) {
+            return;
+        }
+        geo_ = g;
+        byte_time_ = byte_time;
+        on_stream_ = stream;
+        mode_wide_ = first_wide();
+        has_loss_[0] = has_loss_[1] = false;
+        pending_head_ = pending_count_ = 0;
+        outcomes_n_[0] = outcomes_n_[1] = 0;
+        outcomes_at_[0] = outcomes_at_[1] = 0;
+    }
+    bool on_stream() const noexcept { return on_stream_; }
+    /// How long an unacknowledged frame waits before a tail-loss probe may repeat it: on a
+    /// pipeline, for the status that should have come (statuses come every second or so).
+    double probe_wait() const noexcept { return on_stream_ ? std::max(3 * rtt_, 1.5) : 0.0; }
+    /// Whether a data frame is wanted (its grant may hold it back: then `when` says till when;
+    /// else 0).
+    bool data_wanted(double now, double& when) const noexcept
+    {
+        when = 0.0;
+        double g = 0.0;
+        if (pacer_.ready_at(g)) {
+            when = g;
+        }
+        return wants_data(now);
+    }
     const Geometry& geometry() const noexcept { return geo_; }
 
     void cancel(double now) { finish(now, false, "CANCELLED", "cancelled"); }
@@ -220,7 +254,7 @@ private:
         offer_interval_ = cfg_.offer_interval;
         has_last_offer_ = false;
         offers_since_answer_ = 0;
-        mode_wide_ = cfg_.frame_mode == TransferConfig::FrameMode::wide;
+        mode_wide_ = first_wide();
         has_loss_[0] = has_loss_[1] = false;
         pending_head_ = pending_count_ = 0;
         outcomes_n_[0] = outcomes_n_[1] = 0;
@@ -383,6 +417,13 @@ private:
     // -- loss and frame size (sender_frame_size.hpp) ----------------------------------------
     void classify_later(std::uint64_t start, std::uint64_t end, double when, bool wide) noexcept;
     bool choose_wide() const noexcept;
+    bool first_wide() const noexcept  // the frame size a transfer (or a new path) starts with
+    {
+        if (cfg_.frame_mode == TransferConfig::FrameMode::automatic) {
+            return on_stream_;
+        }
+        return cfg_.frame_mode == TransferConfig::FrameMode::wide;
+    }
     void classify(double horizon, std::uint64_t re, bool truncated, const std::uint64_t (*missing)[2],
                   std::size_t m) noexcept;
 
@@ -439,6 +480,7 @@ private:
     double last_offer_ = 0.0;
     int offers_since_answer_ = 0;
     bool mode_wide_ = false;
+    bool on_stream_ = false;  // file data goes on a pipeline now (use_path)
     double loss_[2] = {0.0, 0.0};  // per-packet loss estimates: narrow, wide
     bool has_loss_[2] = {false, false};
     std::unique_ptr<Pending[]> pending_{new Pending[TransferLimits::IN_FLIGHT]};  // first sends not yet judged

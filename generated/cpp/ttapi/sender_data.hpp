@@ -118,7 +118,9 @@ inline std::size_t FileSender::pull(double now, std::size_t space, std::uint8_t*
 }
 
 // When the oldest unacknowledged bytes become worth sending again on an otherwise idle link
-// (a tail-loss probe: the link would idle until the next status anyway).
+// (a tail-loss probe: the link would idle until the next status anyway). On a pipeline nothing
+// is lost while it stays open (a close moves the data, and this wait, back to the link), so
+// there a probe waits for the status that should have come (probe_wait).
 inline bool FileSender::tail_due(double& due) const noexcept
 {
     bool any = false;
@@ -132,6 +134,9 @@ inline bool FileSender::tail_due(double& due) const noexcept
         }
         any = true;
     }
+    if (any) {
+        due += probe_wait();
+    }
     return any;
 }
 
@@ -144,9 +149,10 @@ inline bool FileSender::tail_candidate(double now, std::uint64_t& at) const noex
     std::uint32_t best_since = 0;
     double best_when = 0.0;
     std::uint64_t best_gap = 0;
+    const double wait = probe_wait();
     for (std::size_t i = 0; i < records_; ++i) {
         const Record& r = records_at(i);
-        if (r.when > now) {
+        if (r.when + wait > now) {
             continue;
         }
         std::uint64_t gap = 0;

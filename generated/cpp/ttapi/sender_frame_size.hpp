@@ -48,6 +48,9 @@ inline bool FileSender::choose_wide() const noexcept
     if (cfg_.frame_mode != TransferConfig::FrameMode::automatic) {
         return cfg_.frame_mode == TransferConfig::FrameMode::wide;
     }
+    if (on_stream_) {
+        return true;  // a stream loses nothing but what is in flight when it closes
+    }
     if (pacer_.grant() != 0) {
         // sharing the link: a wide frame's three packets back to back fill the radio's buffer
         // for the others, and the buffer's overflow takes the whole frame

@@ -97,6 +97,7 @@ public:
     }
 
     std::uint8_t link_id() const noexcept { return link_id_; }
+    const std::uint8_t* key() const noexcept { return key_; }
     void set_link_id(std::uint8_t id) noexcept { link_id_ = id; }
     bool allow_unsigned() const noexcept { return allow_unsigned_; }
     void set_allow_unsigned(bool allow) noexcept { allow_unsigned_ = allow; }

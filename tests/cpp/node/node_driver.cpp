@@ -11,7 +11,9 @@
 // is told to). Script lines: `I ID` queues a transfer id for the node to draw (as the Python end's
 // seeded random numbers give it); `R NOW HEX` a packet arrives at NOW; `P NOW` the node is
 // polled at NOW until it has nothing more to send: the driver prints the packets' hex,
-// space-separated, or `-`, and flushes.
+// space-separated, or `-`, and flushes. A MOP pipeline beside the link (paced at 20000 B/s):
+// `O NOW` it opens, `C NOW` it closes, `Q NOW` the node's pipeline frames at NOW are printed as
+// `P` prints packets, `S NOW HEX` a whole frame arrives on it.
 #include <cstdint>
 #include <cstdio>
 #include <deque>
@@ -49,6 +51,7 @@ int main(int argc, char** argv)
         cfg.signing = signing.get();
     }
     cfg.heartbeat_interval = 0;
+    cfg.pipe_rate_Bps = 20000.0;
     cfg.new_id = [&ids]() -> std::uint32_t {
         if (ids.empty()) {
             return 0xDEADBEEF;
@@ -80,17 +83,25 @@ int main(int argc, char** argv)
         }
         double now = 0;
         in >> now;
-        if (op == "R") {
+        if (op == "O" || op == "C") {
+            node.set_pipe(op == "O", now);
+            continue;
+        }
+        if (op == "R" || op == "S") {
             std::string hex;
             in >> hex;
             std::vector<std::uint8_t> data;
             for (std::size_t i = 0; i + 1 < hex.size(); i += 2) {
                 data.push_back(static_cast<std::uint8_t>(std::stoul(hex.substr(i, 2), nullptr, 16)));
             }
-            node.receive(now, data.data(), data.size());
-        } else if (op == "P") {
+            if (op == "R") {
+                node.receive(now, data.data(), data.size());
+            } else {
+                node.receive_pipe(now, data.data(), data.size());
+            }
+        } else if (op == "P" || op == "Q") {
             std::string out;
-            for (std::size_t n; (n = node.poll(now, pkt)) != 0;) {
+            for (std::size_t n; (n = op == "P" ? node.poll(now, pkt) : node.poll_pipe(now, pkt)) != 0;) {
                 if (!out.empty()) {
                     out += ' ';
                 }

@@ -173,7 +173,8 @@ void MobileDevice::setFromMSDKCallback(VehicleCallBack callback, UserData userDa
 }
 
 #if FAKE_OSDK_VERSION == 41
-Vehicle::Vehicle(Linker* /*linker*/) : mobileDevice(new MobileDevice(this)) {}
+// (the MOP server's stand-in is fake_osdk_mop.cpp: a program that links it uses vehicle->mopServer)
+Vehicle::Vehicle(Linker* /*linker*/) : mobileDevice(new MobileDevice(this)), djiHms(nullptr), mopServer(nullptr) {}
 
 Setup::Setup(bool enableAdvancedSensing) : vehicle(nullptr), linker(nullptr), useAdvancedSensing(enableAdvancedSensing)
 {
@@ -192,16 +193,26 @@ Vehicle::~Vehicle() { delete mobileDevice; }
 }  // namespace DJI
 
 #if FAKE_OSDK_VERSION == 41
+// fake_osdk_mop.cpp's MOP server, when the program links it (weak symbols: null otherwise).
+__attribute__((weak)) DJI::OSDK::MopServer* fake_osdk_mop_server();
+__attribute__((weak)) void fake_osdk_mop_server_free(DJI::OSDK::MopServer* server);
+
 LinuxSetup::LinuxSetup(int /*argc*/, char** /*argv*/, bool enableAdvancedSensing)
     : Setup(enableAdvancedSensing), functionTimeout(1), activateData(), environment(nullptr)
 {
     vehicle = new Vehicle(static_cast<DJI::OSDK::Linker*>(nullptr));  // "activated"
     g_radio = new Radio(vehicle->mobileDevice);
+    if (fake_osdk_mop_server != nullptr) {
+        vehicle->mopServer = fake_osdk_mop_server();  // as the SDK's initMopServer on Linux
+    }
 }
 
 LinuxSetup::~LinuxSetup()
 {
     delete g_radio;
+    if (fake_osdk_mop_server_free != nullptr) {
+        fake_osdk_mop_server_free(vehicle->mopServer);
+    }
     delete vehicle;
 }
 
