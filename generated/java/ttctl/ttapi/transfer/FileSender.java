@@ -317,7 +317,12 @@ final class FileSender {
 
     /** When the oldest unacknowledged bytes become worth sending again (a tail-loss probe). */
     double tailDue() {
-        return log.tailDue(acked);
+        return log.tailDue(acked) + probeWait(); // (NaN: none)
+    }
+
+    /** On an open pipeline nothing is lost: a probe waits for the status that should have come (Python's). */
+    private double probeWait() {
+        return onStream ? Math.max(3 * rtt, 1.5) : 0.0;
     }
 
     private String chooseMode() {
@@ -353,7 +358,7 @@ final class FileSender {
             length = (int) Math.min(cap, size - offset);
             nextNew += length;
         } else {
-            long tail = log.tailCandidate(now, acked);
+            long tail = log.tailCandidate(now - probeWait(), acked);
             if (tail < 0) {
                 return null;
             }
