@@ -111,7 +111,8 @@ def cpp_nodes() -> Iterator[Any]:
 MEASURING = {"test_fair_sharing.py", "test_link_fit_live.py", "test_bench_live.py", "test_bench_latency.py",
              "test_java_transfer.py", "test_cpp_node_transfer.py", "test_udp_forward.py", "test_cpp_node_sharing.py",
              "test_gcs_bridge.py", "test_java_bridge_e2e.py",
-             "test_java_pipeline.py"}  # (latency against idle, goodput against the rate: on one worker)
+             # (latency against idle, goodput against the rate: on one worker)
+             "test_java_pipeline.py", "test_cpp_mop.py"}
 
 
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:

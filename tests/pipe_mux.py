@@ -65,7 +65,8 @@ class PipeMux:
         self.dropped_at: list[int] = []
         self.bad_up = 0
         self.garbage_bytes = 0
-        self.threads = [threading.Thread(target=f, daemon=True) for f in (self._from_tablet, self._from_air, self._pipe)]
+        self.threads = [threading.Thread(target=f, daemon=True)
+                        for f in (self._from_tablet, self._from_air, self._pipe)]
         for t in self.threads:
             t.start()
 

@@ -164,14 +164,14 @@ def test_pipeline_closed_twice_mid_transfer(classes: Path, tmp_path: Path, start
 
 
 def test_short_writes_keep_frames_whole(classes: Path, tmp_path: Path, start: Start, pm: object) -> None:
-    r, text, mux, _, _ = transfer(classes, tmp_path, start, pm, env={"TTCTL_FAKE_PIPELINE_SHORT": "1"})
+    r, text, _mux, _, _ = transfer(classes, tmp_path, start, pm, env={"TTCTL_FAKE_PIPELINE_SHORT": "1"})
     assert int(r["pipe_short_writes"]) > 1000, r
     assert int(r["pipe_connects"]) == 1, text[-2000:]
 
 
 def test_a_pipeline_that_never_opens_leaves_everything_on_the_link(classes: Path, tmp_path: Path, start: Start,
                                                                    pm: object) -> None:
-    port, back = onboard(start, tmp_path)
+    port, _back = onboard(start, tmp_path)
     mux = PipeMux(pm, port, mtu=255)  # type: ignore[arg-type]
     up = tmp_path / "mission.bin"
     up.write_bytes(random.Random(29).randbytes(40000))
@@ -249,7 +249,8 @@ def mop_onboard(start: Start, tmp: Path, pipe_port: int, *extra: str) -> tuple[i
     return port, back
 
 
-def mop_transfer(classes: Path, tmp: Path, back: Path, ports: tuple[int, int], *args: str) -> tuple[dict[str, str], str]:
+def mop_transfer(classes: Path, tmp: Path, back: Path, ports: tuple[int, int],
+                 *args: str) -> tuple[dict[str, str], str]:
     up = tmp / "mission.bin"
     up.write_bytes(random.Random(27).randbytes(MB2))
     r, text = tablet(classes, tmp, ports, "run=e2e", f"send={up}", "fetch=flight.log", f"dir={tmp / 'got'}",

@@ -50,8 +50,8 @@ def _outage(text: str, option: str = "--outage") -> tuple[float, float]:
         window = float(start), float(length)
     except ValueError:
         raise Fail(f"{option} wants START:SECONDS (seconds from the relay's start), not {text!r}") from None
-    if not all(0 <= v < 1e9 for v in window):
-        raise Fail(f"{option} {text}: START and SECONDS must be numbers of seconds, 0 or more")
+    if option != "--outage" and not (0 <= window[0] < 1e9 and 0 < window[1] < 1e9):  # (--outage: Impairments)
+        raise Fail(f"{option} {text}: a window needs a start >= 0 and a positive duration, in seconds")
     return window
 
 
@@ -60,6 +60,8 @@ def _pipe_relay(o: RelayOptions, prof: Any, log: Any) -> Any:
     from ..link.pipe_relay import PipeRelay
     from ..link.transport import TransportError, parse_spec
 
+    if o.pipe_rate is not None and not 0 < o.pipe_rate < float("inf"):
+        raise Fail("--pipe-rate must be a positive number of bytes per second")
     if o.pipe_listen is None and o.pipe_to is None:
         if o.pipe_drops or o.pipe_stalls:
             raise Fail(f"{'--pipe-drop' if o.pipe_drops else '--pipe-stall'} needs a pipeline: --pipe-listen and "
