@@ -130,20 +130,27 @@ class Scheduler:
         """The next bulk frame for the pipeline, if one may leave now (`space`: the largest frame
         the stream takes in one piece, any MAVLink frame)."""
         pipe = self.pipe
-        if pipe is None or not pipe.ready(now) or not self.sources:
+        if pipe is None or not pipe.ready(now):
             return None
+        pulled = self._pull(now, space)
+        if pulled is None:
+            return None
+        sign = self._pipe_sign or self.sign
+        frame = sign(pulled) if sign is not None else pulled
+        pipe.sent(now, len(frame))
+        self.pipe_frames += 1
+        self.pipe_bytes += len(frame)
+        return frame
+
+    def _pull(self, now: float, space: int) -> bytes | None:
+        """The next bulk frame from the sources, round-robin."""
         n = len(self.sources)
         for k in range(n):
             i = (self._rr + k) % n
             pulled = self.sources[i](now, space)
             if pulled is not None:
                 self._rr = (i + 1) % n
-                sign = self._pipe_sign or self.sign
-                frame = sign(pulled) if sign is not None else pulled
-                pipe.sent(now, len(frame))
-                self.pipe_frames += 1
-                self.pipe_bytes += len(frame)
-                return frame
+                return pulled
         return None
 
     @property
@@ -216,14 +223,8 @@ class Scheduler:
             return frame, BULK, None
         if self.pipe is not None:
             return None  # bulk data takes the pipeline
-        n = len(self.sources)
-        for k in range(n):
-            i = (self._rr + k) % n
-            pulled = self.sources[i](now, space)
-            if pulled is not None:
-                self._rr = (i + 1) % n
-                return pulled, BULK, None
-        return None
+        pulled = self._pull(now, space)
+        return None if pulled is None else (pulled, BULK, None)
 
     def wants_to_send(self, now: float) -> bool:
         """Something is queued or a source may produce (callers use ready_at for timing)."""
