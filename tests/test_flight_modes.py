@@ -52,7 +52,8 @@ def test_on_the_ground_modes_are_selected_or_refused_with_the_reason() -> None:
     s.run(6)
     assert s.v.state is State.HOVERING and s.mode() == (AUTO, LOITER)
     assert -s.v.pos[2] == pytest.approx(2.0, abs=0.2)  # MIS_TAKEOFF_ALT
-    assert s.set_mode(AUTO, TAKEOFF) == TEMPORARILY_REJECTED
+    s.said.clear()  # in the air, at MIS_TAKEOFF_ALT already: PX4 holds and says so
+    assert s.set_mode(AUTO, TAKEOFF) == ACCEPTED and "Already higher than takeoff altitude" in s.said
 
 
 def test_auto_modes_in_the_air_do_what_they_say() -> None:
@@ -321,7 +322,16 @@ def test_take_off_as_px4_and_qgroundcontrol_do_it() -> None:
     assert s.v.state is State.TAKING_OFF
     s.run(10)
     assert s.v.state is State.HOVERING and -s.v.pos[2] == pytest.approx(6.0, abs=0.2)
-    assert s.command(int(C.MAV_CMD_NAV_TAKEOFF), -1, 0, 0, NAN, NAN, NAN, home + 9) == DENIED  # flying
+    # in the air PX4 selects take-off mode: up to a higher altitude, or held where it is when lower
+    assert s.command(int(C.MAV_CMD_NAV_TAKEOFF), -1, 0, 0, NAN, NAN, NAN, home + 9) == ACCEPTED
+    assert s.v.state is State.TAKING_OFF and s.mode() == (AUTO, TAKEOFF)
+    s.run(6)
+    assert s.v.state is State.HOVERING and -s.v.pos[2] == pytest.approx(9.0, abs=0.2)
+    s.said.clear()
+    assert s.command(int(C.MAV_CMD_NAV_TAKEOFF), -1, 0, 0, NAN, NAN, NAN, home + 4) == ACCEPTED
+    assert "Already higher than takeoff altitude" in s.said
+    s.run(2)
+    assert s.v.state is State.HOVERING and -s.v.pos[2] == pytest.approx(9.0, abs=0.2)
     assert s.command(int(C.MAV_CMD_NAV_LAND)) == ACCEPTED
     s.run(15)
     s.said.clear()

@@ -229,9 +229,10 @@ class FlightModes:
             else:
                 v.hover()
         elif sub == TAKEOFF:
-            if not landed:
-                raise Refused("TAKEOFF: already flying", temporary=True)
-            if v.armed:
+            if not landed:  # PX4: take-off mode in the air climbs to MIS_TAKEOFF_ALT or holds above it
+                if not v.takeoff_in_air(self._param("MIS_TAKEOFF_ALT")):
+                    self.say(INFO, "Already higher than takeoff altitude")
+            elif v.armed:
                 v.takeoff()
             else:
                 self.ground, self.takeoff_alt = (AUTO, TAKEOFF), None  # it takes off when armed, as PX4 does
@@ -258,8 +259,6 @@ class FlightModes:
         sends the take-off first, then arms)."""
         v = self.ap.vehicle
         s = v.snapshot()
-        if v.state is not State.LANDED:
-            raise Refused(f"cannot take off while {v.state.value}")
         minimum = self._param("MIS_TAKEOFF_ALT")
         alt = minimum if amsl is None else amsl - s.home.alt
         if alt < minimum:
@@ -268,7 +267,10 @@ class FlightModes:
         limits = getattr(v, "limits", None)
         if limits is not None and alt > limits.max_alt:
             raise Refused(f"takeoff altitude {alt:.0f} m above {limits.max_alt:g} m")
-        if v.armed:
+        if v.state is not State.LANDED:  # PX4 takes it in the air too: take-off mode, climbing or holding
+            if not v.takeoff_in_air(alt):
+                self.say(INFO, "Already higher than takeoff altitude")
+        elif v.armed:
             v.takeoff(alt)
         else:
             self.ground, self.takeoff_alt = (AUTO, TAKEOFF), alt

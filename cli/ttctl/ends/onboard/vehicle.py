@@ -91,6 +91,7 @@ class Vehicle(Protocol):
     def arm(self) -> None: ...
     def disarm(self) -> None: ...
     def takeoff(self, alt: float | None = None) -> None: ...
+    def takeoff_in_air(self, alt: float) -> bool: ...
     def land(self) -> None: ...
     def hover(self) -> None: ...
     def goto(self, n: float, e: float, alt: float, yaw: float | None = None) -> None: ...
@@ -143,15 +144,16 @@ class Snapshot:
         return math.degrees(self.yaw) % 360.0
 
 
-def _order(method: Callable[..., None]) -> Callable[..., None]:
+def _order(method: Callable[..., Any]) -> Callable[..., Any]:
     """A command that, carried out (not refused), changes what the vehicle does: counted in
     `orders`, so that a mission can tell its own leg from something else taking over (a hold
     during a mission's take-off is still 'hovering', yet no longer the mission's)."""
 
     @functools.wraps(method)
-    def run(self: SimVehicle, *args: Any, **kw: Any) -> None:
-        method(self, *args, **kw)
+    def run(self: SimVehicle, *args: Any, **kw: Any) -> Any:
+        out = method(self, *args, **kw)
         self.orders += 1
+        return out
 
     return run
 
@@ -214,6 +216,21 @@ class SimVehicle:
             raise Refused(f"cannot take off while {self.state.value}")
         self.state = State.TAKING_OFF
         self._fly_to(self.pos[0], self.pos[1], -alt, None)
+
+    @_order
+    def takeoff_in_air(self, alt: float) -> bool:
+        """PX4's take-off mode selected in the air: climb to `alt` over the current position, or
+        hold there when already higher (False: "Already higher than takeoff altitude")."""
+        if self.state is State.LANDED:
+            raise Refused("on the ground")
+        self.route, self.leg = [], -1
+        if -self.pos[2] >= alt - 0.1:
+            self.state = State.HOVERING
+            self._fly_to(self.pos[0], self.pos[1], self.pos[2], None)
+            return False
+        self.state = State.TAKING_OFF
+        self._fly_to(self.pos[0], self.pos[1], -alt, None)
+        return True
 
     @_order
     def land(self) -> None:
