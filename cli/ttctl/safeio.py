@@ -1,6 +1,9 @@
 """Reading a file a user named, safely: only a regular file (a FIFO, a device such as /dev/zero
 or a directory is refused in one line, never blocked on or read forever), and never more than a
-cap, counted while reading (a file that grows, or lies about its size, stops at the cap).
+cap, counted while reading (a file that grows, or lies about its size, stops at the cap). And
+writing one: `output_problem` says why a file cannot be written (then renamed into place) at a
+path: a folder missing or read-only, a directory, or a FIFO or device there (renaming over
+/dev/null as root would replace the system's own).
 
 A leaf module (it imports only `errors`), so the library and the CLI both use it.
 """
@@ -81,3 +84,25 @@ def read_text_capped(path: str | os.PathLike[str], what: str, limit: int, *, cod
 
 
 __all__ = ["KiB", "MiB", "read_capped", "read_text_capped", "regular_file_problem"]
+
+
+def output_problem(path: str) -> str | None:
+    """Why a regular file cannot be written at `path` and renamed into place (its folder missing
+    or read-only, a directory there, or something that is no regular file: a FIFO, a device, a
+    socket, which a rename would replace), or None."""
+    target = os.path.abspath(path)
+    folder = os.path.dirname(target)
+    if os.path.isdir(target):
+        return f"{path} is a directory"
+    try:
+        st = os.stat(target)
+    except OSError:
+        st = None
+    if st is not None and not stat.S_ISREG(st.st_mode):
+        return f"cannot write {path}: not a regular file (a FIFO or a device is never replaced)"
+    if not os.path.isdir(folder):
+        return f"cannot write {path}: {folder} is not a directory" if os.path.exists(folder) \
+            else f"cannot write {path}: no folder {folder}"
+    if not os.access(folder, os.W_OK | os.X_OK):
+        return f"cannot write {path}: {folder} is not writable"
+    return None

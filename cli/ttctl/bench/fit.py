@@ -98,6 +98,8 @@ def load_measurement(path: str) -> Measurement:
         report = json.loads(raw)
     except (UnicodeDecodeError, json.JSONDecodeError) as e:
         raise _bad(path, f"not JSON ({e})") from None
+    except RecursionError:  # the decoder recurses once per level
+        raise _bad(path, "nested too deeply to be a measurement") from None
     if not isinstance(report, dict):
         raise _bad(path, "not a JSON object")
     for key in ("conditions", "uplink", "downlink"):

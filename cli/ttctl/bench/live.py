@@ -95,7 +95,7 @@ def check(o: Options) -> tuple[Any, float]:
     """Everything that can be refused, refused before measuring: (endpoint spec, pace B/s)."""
     from ..link.model import ProfileError, load_profile
     from ..link.transport import TransportError, parse_spec
-    from .plots import output_problem
+    from ..safeio import output_problem
 
     try:
         spec = parse_spec(o.to, udp="udpout", allowed=("udpout",))

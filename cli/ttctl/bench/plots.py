@@ -10,6 +10,8 @@ import tempfile
 from collections.abc import Callable
 from typing import Any, BinaryIO
 
+from ..safeio import output_problem
+
 INSTALL_HINT = "plotting needs matplotlib: pip install 'ttctl[plot]'"
 
 
@@ -35,21 +37,6 @@ def require_matplotlib(path: str | None = None) -> None:
             from ..errors import Fail
 
             raise Fail(problem)
-
-
-def output_problem(path: str) -> str | None:
-    """Why a file cannot be written at `path` (its folder missing or read-only, or a directory
-    there), or None."""
-    target = os.path.abspath(path)
-    folder = os.path.dirname(target)
-    if os.path.isdir(target):
-        return f"{path} is a directory"
-    if not os.path.isdir(folder):
-        return f"cannot write {path}: {folder} is not a directory" if os.path.exists(folder) \
-            else f"cannot write {path}: no folder {folder}"
-    if not os.access(folder, os.W_OK | os.X_OK):
-        return f"cannot write {path}: {folder} is not writable"
-    return None
 
 
 def save_atomically(fig: Any, path: str) -> None:

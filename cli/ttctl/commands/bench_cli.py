@@ -94,9 +94,12 @@ def bench_transfer(
     from ..bench.transfer import run
     from ..link.model import ProfileError, load_profile
 
+    chosen = [p.strip() for p in protocols.split(",") if p.strip()]
+    if not chosen:
+        raise Fail("--protocols names none: give one or more of ttctl, ttctl-signed, thesis, mavftp")
     try:
         prof = load_profile(profile, str(profile_file) if profile_file else None)
-        code = run(prof, distance, size, seeds, [p.strip() for p in protocols.split(",") if p.strip()], json_out,
+        code = run(prof, distance, size, seeds, chosen, json_out,
                    str(plot) if plot else None, quick)
     except ProfileError as e:
         raise Fail(str(e)) from None

@@ -77,12 +77,12 @@ def bench_latency(
                             "count": count, "interval_s": interval, "file_bytes": size, "seed": seed,
                             "packet_time_ms": round(1000 * lat.packet_time(prof, distance), 1),
                             "bound_ms": round(1000 * bound, 1)}
+    from .dialect import load_bindings
+
+    b = load_bindings(dialect, include or [])  # the model too: a dialect that cannot be read is refused
     if to is None:
         phases = lat.run_model(prof, distance, count, seed, interval, size)
     else:
-        from .dialect import load_bindings
-
-        b = load_bindings(dialect, include or [])
         phases, extra = _live(to, prof, distance, count, interval, size, seed, fetch, timeout, profile_file, b)
         meta.update(extra)
     rep = lat.report(phases, meta, bound)

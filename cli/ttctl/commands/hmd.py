@@ -156,7 +156,8 @@ class _Link:
 
         self.spec = parse_endpoint(o.to or "", "udpout")
         self.b = load_bindings(o.dialect, o.include_dirs)
-        choice = link_choice(o.rate, o.profile or ("m100" if o.rate is None and o.profile_file is None else None),
+        default = "m100" if o.rate is None and o.profile_file is None else None
+        choice = link_choice(o.rate, o.profile if o.profile is not None else default,
                              o.distance, TABLET[0], o.profile_file)
         # Poses are newest-wins: a queue in the radio's buffer would only make them stale. Paced
         # a little below the profile's capacity the buffer stays empty (at exactly the capacity
@@ -244,7 +245,7 @@ class _Link:
 
 
 def dump(o: DumpOptions) -> int:
-    from ..hmd.formats import check_output, format_for, open_writer
+    from ..hmd.formats import await_reader, check_output, format_for, open_writer
     from ..hmd.frames import Continuity, convert
 
     _check(o)
@@ -276,7 +277,12 @@ def dump(o: DumpOptions) -> int:
         else:
             meta = {"source": o.source, "rate_hmd": o.rate_hmd, "rate_controllers": o.rate_controllers,
                     **({"seed": o.seed} if o.source == "synthetic" else {})}
-        writer = open_writer(o.output, fmt, o.frame, o.parent_frame, meta)
+        reader = await_reader(o.output, stop.is_set)  # a FIFO: its reader first, Ctrl-C heard meanwhile
+        try:
+            writer = open_writer(o.output, fmt, o.frame, o.parent_frame, meta)
+        finally:
+            if reader is not None:
+                os.close(reader)
         keep, keep_link = Continuity(), Continuity()
         first_t: float | None = None
         for s in source.samples():

@@ -15,7 +15,8 @@ _NAME = re.compile(r"[A-Za-z0-9_-]{1,64}")
 def fit_command(paths: list[str], output: str, name: str | None, base: str, as_json: bool,
                 force: bool = False) -> int:
     from ..bench import fit as F
-    from ..bench.plots import output_problem, write_atomically
+    from ..bench.plots import write_atomically
+    from ..safeio import output_problem
 
     if not output.endswith(".toml"):
         raise Fail(f"-o {output}: the name must end in .toml (a link profile)")

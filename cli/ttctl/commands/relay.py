@@ -162,6 +162,18 @@ def relay(o: RelayOptions) -> int:
                   validate=FrameCheck(b))
     except ProfileError as e:
         raise Fail(str(e)) from None
+    note = prof.extrapolated(o.distance)
+    if note:
+        err(f"warning: {note}")
+    for d in ("up", "down"):  # a burst that outlasts any run is an outage: say so
+        dp = prof.direction(d)
+        mean = imp.burst_mean or dp.burst_mean
+        seconds = mean * prof.mtu / prof.capacity_Bps(d, o.distance)
+        if (imp.loss_model or dp.loss_model) == "burst" and seconds > 60:
+            lasts = f"about {seconds:.3g} s" if seconds < 1e9 else "longer than any run"
+            err(f"warning: a mean loss burst of {mean:g} packets lasts {lasts} on the {d}link: "
+                f"once lost, the link stays lost for the rest of the run")
+            break
     pipe = _pipe_relay(o, prof, lambda text: err(f"relay: {text}"))
 
     async def main() -> None:

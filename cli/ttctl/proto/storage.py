@@ -28,6 +28,7 @@ import json
 import os
 import stat
 import time
+import weakref
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -108,7 +109,7 @@ class Partial:
     def _load(self) -> None:
         try:
             state = json.loads(self.state_path.read_text())
-        except (OSError, ValueError):
+        except (OSError, ValueError, RecursionError):  # damaged state: start afresh
             return
         if not isinstance(state, dict) or state.get("name") != self.name or state.get("size") != self.size \
                 or state.get("sha256") != self.sha256.hex() or state.get("original") != self.original:
@@ -236,6 +237,7 @@ class Partial:
             with contextlib.suppress(FileNotFoundError):
                 os.unlink(self.data_path)
         self.discard_state()
+        self.store.forget_others(self.name, self.key)
         return final
 
     def discard(self) -> None:
@@ -260,6 +262,7 @@ class ReceiveDir:
         self.partial_dir = self.root / PARTIAL_DIR
         self.created: list[Path] = []  # directories this process created, outermost first
         self._lock_fd: int | None = None
+        self._live: weakref.WeakValueDictionary[str, Partial] = weakref.WeakValueDictionary()
 
     # -- life cycle ---------------------------------------------------------------------------
     def check(self) -> None:
@@ -414,7 +417,32 @@ class ReceiveDir:
         return False
 
     def partial(self, name: str, size: int, sha256: bytes, original: int | None = None) -> Partial:
-        return Partial(self, name, size, sha256, original)
+        p = Partial(self, name, size, sha256, original)
+        self._live[p.key] = p
+        return p
+
+    def forget_others(self, name: str, keep: str) -> None:
+        """After a file took `name`: the partial state of other contents under that name (a transfer
+        killed, then another file sent under its name) would stay forever; remove it, unless a
+        transfer of this process still writes it."""
+        try:
+            states = list(self.partial_dir.glob("*.json"))
+        except OSError:
+            return
+        for path in states:
+            key = path.stem
+            if key == keep or key in self._live:
+                continue
+            try:
+                with open(path, "rb") as f:
+                    state = json.loads(f.read(1 << 16))
+            except (OSError, ValueError, RecursionError):
+                continue
+            if not isinstance(state, dict) or state.get("name") != name:
+                continue
+            for suffix in (".part", ".out", ".json"):
+                with contextlib.suppress(OSError):
+                    (self.partial_dir / f"{key}{suffix}").unlink()
 
 
 class FileSource:

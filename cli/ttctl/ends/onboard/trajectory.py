@@ -46,6 +46,8 @@ def parse_trajectory(text: str, max_alt: float = 120.0) -> list[Waypoint]:
         mark = getattr(e, "problem_mark", None)
         where = f"line {mark.line + 1}, column {mark.column + 1}: " if mark is not None else ""
         raise TrajectoryError(f"{where}not valid YAML ({getattr(e, 'problem', None) or e})") from None
+    except RecursionError:  # PyYAML's composer recurses once per level
+        raise TrajectoryError("nested too deeply to be a trajectory") from None
     if root is None:
         raise TrajectoryError("the file is empty")
     speed: float | None = None

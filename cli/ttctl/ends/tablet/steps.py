@@ -181,6 +181,8 @@ def parse_script(text: str, b: Any = None) -> list[Step]:
         mark = getattr(e, "problem_mark", None)
         where = f"line {mark.line + 1}: " if mark is not None else ""
         raise StepError(f"{where}not valid YAML ({getattr(e, 'problem', None) or e})") from None
+    except RecursionError:  # PyYAML's composer recurses once per level
+        raise StepError("nested too deeply to be a script") from None
     if not isinstance(root, yaml.SequenceNode) or not root.value:
         raise StepError("a script is a non-empty YAML list of steps")
     steps = []

@@ -15,8 +15,11 @@ MCAP and bag need the `record` extra (rosbags, mcap); JSONL and CSV need nothing
 
 from __future__ import annotations
 
+import errno
 import os
-from collections.abc import Iterator
+import stat
+import time
+from collections.abc import Callable, Iterator
 from typing import Any
 
 from ttctl.errors import Fail
@@ -82,6 +85,28 @@ def check_output(path: str | None, fmt: str) -> None:
         raise Fail(f"{path}: folder {folder} does not exist")
     if not os.access(folder, os.W_OK | os.X_OK):
         raise Fail(f"{path}: cannot write in folder {folder} (permission denied)")
+
+
+def await_reader(path: str | None, stopped: Callable[[], bool]) -> int | None:
+    """When `path` is a FIFO, wait (interruptibly: `stopped` is polled) until a reader opens it and
+    return a write descriptor that keeps it open until the writer has opened it too; None for
+    anything else. A blocking open() would wait in the kernel, deaf to Ctrl-C. Fail when stopped."""
+    if path is None:
+        return None
+    try:
+        if not stat.S_ISFIFO(os.stat(path).st_mode):
+            return None
+    except OSError:
+        return None
+    while True:
+        try:
+            return os.open(path, os.O_WRONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
+        except OSError as e:
+            if e.errno != errno.ENXIO:  # ENXIO: no reader yet
+                raise Fail(f"{path}: cannot write ({e.strerror})") from None
+        if stopped():
+            raise Fail(f"{path}: stopped while waiting for a reader of this FIFO (nothing recorded)", 130)
+        time.sleep(0.05)
 
 
 def open_writer(path: str | None, fmt: str, frame: str, parent_frame: str, meta: dict[str, Any]) -> Writer:

@@ -214,7 +214,7 @@ def read_bag(path: str) -> Recording:
             info = json.loads(ROS1.decode_string(raw))
             frame, parent, meta = info["frame"], info["parent_frame"], info.get("meta", {})
             version = int(info.get("version", 1))
-        except (ValueError, KeyError, TypeError) as e:  # CodecError is a ValueError
+        except (ValueError, KeyError, TypeError, RecursionError) as e:  # CodecError is a ValueError
             raise Fail(f"{path}: bad {INFO_TOPIC} message ({e})") from None
         if version > ROS_VERSION:
             raise Fail(f"{path}: recording version {version}; this ttctl reads up to {ROS_VERSION}")

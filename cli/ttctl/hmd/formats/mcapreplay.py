@@ -101,7 +101,7 @@ def read_mcap(path: str) -> Recording:
         meta = json.loads(info.get("meta", "{}"))
         frame, parent = info["frame"], info["parent_frame"]
         version = int(info.get("version", "1"))
-    except (ValueError, KeyError) as e:
+    except (ValueError, KeyError, RecursionError) as e:
         raise Fail(f"{path}: bad 'ttctl' metadata record ({e})") from None
     if version > ROS_VERSION:
         raise Fail(f"{path}: recording version {version}; this ttctl reads up to {ROS_VERSION}")

@@ -304,7 +304,7 @@ class Rebuilder:
             flags_ok = all(v is None or isinstance(v, bool) for v in (valid, connected))
             if kind not in KINDS or role not in ROLES or not isinstance(index, int) or not flags_ok:
                 raise ValueError(f"bad value in {text!r}")
-        except (ValueError, KeyError, TypeError) as e:
+        except (ValueError, KeyError, TypeError, RecursionError) as e:
             raise Fail(f"{self.where}: bad /vr/devices message at {from_ns(ns):.6f}: {e}") from None
         self._devices[device.frame] = (device, valid, connected)
         if valid is False:

@@ -57,7 +57,7 @@ def read_ros_folder(path: str) -> Recording:
         info = json.loads(raw)
         frame, parent, meta = info["frame"], info["parent_frame"], info.get("meta", {})
         version = int(info.get("version", 1))
-    except (ValueError, KeyError, TypeError) as e:
+    except (ValueError, KeyError, TypeError, RecursionError) as e:
         raise Fail(f"{path}: bad {INFO_TOPIC} message ({e})") from None
     if version > VERSION:
         raise Fail(f"{path}: recording version {version}; this ttctl reads up to {VERSION}")

@@ -296,7 +296,7 @@ def read_jsonl(path: str) -> Recording:
     if last is not None:
         try:
             truncated = not isinstance(json.loads(last), dict)
-        except (ValueError, UnicodeDecodeError):
+        except (ValueError, UnicodeDecodeError, RecursionError):
             truncated = True
     return Recording(frame, parent, meta, _jsonl_samples(path, frame, parent, truncated), "jsonl", truncated)
 
@@ -308,6 +308,8 @@ def _json_object(text: str, path: str, n: int) -> dict[str, Any]:
         raise Fail(f"{path} line {n}: not JSON ({e.msg} at column {e.colno})") from None
     except ValueError as e:  # e.g. a number too long to convert
         raise Fail(f"{path} line {n}: not JSON ({e})") from None
+    except RecursionError:  # the decoder recurses once per level
+        raise Fail(f"{path} line {n}: nested too deeply to be a sample") from None
     if not isinstance(obj, dict):
         raise Fail(f"{path} line {n}: a {type(obj).__name__}, not an object")
     return obj
@@ -333,7 +335,7 @@ def _jsonl_samples(path: str, frame: str, parent: str, truncated: bool) -> Itera
                 obj, end = scan(text, 0)
                 if end != len(text) - 1 or text[end] != "\n":  # not one value and a newline: json.loads decides
                     obj = json.loads(text)
-            except (StopIteration, ValueError):  # the scanner's "no value here", or json.loads' errors
+            except (StopIteration, ValueError, RecursionError):  # the scanner's "no value here", or json.loads' errors
                 if not text.strip():
                     continue
                 obj = _json_object(text, path, n)  # the value, or a Fail saying what is wrong
