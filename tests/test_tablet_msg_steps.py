@@ -169,3 +169,14 @@ def test_a_bad_enum_value_refuses_the_script_before_anything_is_sent(survey: Pat
     node.wait_for("plan seq=3")
     assert [p for p in plans(node) if not p.startswith("seq=3 ")] == [], node.stderr
 
+
+def test_the_tablet_names_a_message_it_cannot_decode_once(survey: Path, start: Any) -> None:
+    """The vehicle speaks survey (SV_BEACON 5 times a second), the tablet ttctl's own dialect."""
+    node, port = onboard(start, survey, "--dialect", "survey.xml")
+    t = tablet(survey, port, "- wait: 2\n- status\n")
+    assert t.returncode == 0, t.stdout + t.stderr
+    notes = [line for line in t.stderr.splitlines() if "msgid 52001" in line]
+    assert len(notes) == 1, t.stderr
+    assert notes[0].startswith("ttctl: tablet: 1/240 at 127.0.0.1:")
+    assert "which dialect ttapi does not have: counted and ignored (do both ends use the same --dialect?)" in notes[0]
+    assert node.p.poll() is None
