@@ -9,6 +9,7 @@ the script's first, valid step)."""
 
 from __future__ import annotations
 
+import shutil
 import subprocess
 import time
 from pathlib import Path
@@ -16,7 +17,7 @@ from typing import Any
 
 import pytest
 
-from conftest import assert_no_traceback, run_ttctl
+from conftest import ROOT, assert_no_traceback, run_ttctl
 from e2e_lib import LOCAL, Proc, free_port
 
 SURVEY = """<?xml version="1.0"?>
@@ -179,4 +180,34 @@ def test_the_tablet_names_a_message_it_cannot_decode_once(survey: Path, start: A
     assert len(notes) == 1, t.stderr
     assert notes[0].startswith("ttctl: tablet: 1/240 at 127.0.0.1:")
     assert "which dialect ttapi does not have: counted and ignored (do both ends use the same --dialect?)" in notes[0]
+    assert node.p.poll() is None
+
+
+@pytest.fixture(scope="module")
+def java_classes(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    if shutil.which("javac") is None or shutil.which("java") is None:
+        pytest.skip("needs a JDK (javac, java)")
+    from conformance_lib import build_java
+
+    cls, _ = build_java(tmp_path_factory.mktemp("java_unknown"), [ROOT / "tests" / "java" / "unknown" /
+                                                                  "UnknownTablet.java"])
+    return cls
+
+
+def test_the_java_tablet_names_a_message_it_cannot_decode_once(survey: Path, start: Any, java_classes: Path) -> None:
+    """The generated Java runtime (ttapi) against a vehicle speaking survey: its Session counts
+    SV_BEACON's frames and tells onProblem, once, in the Python ends' words; the vehicle's frames
+    of ttapi are still decoded."""
+    node, port = onboard(start, survey, "--dialect", "survey.xml")
+    java = subprocess.run(["java", "-cp", str(java_classes), "UnknownTablet", str(port), "2.5"], capture_output=True,
+                          text=True, timeout=60)
+    assert java.returncode == 0, java.stdout + java.stderr
+    lines = java.stdout.splitlines()
+    problems = [line for line in lines if line.startswith("PROBLEM ")]
+    assert problems == ["PROBLEM 1/240 sends msgid 52001, which dialect ttapi does not have: counted and ignored "
+                        "(do both ends use the same dialect?)"], java.stdout + java.stderr
+    counts = {k: int(v) for k, v in (line.split() for line in lines if line.startswith(("UNKNOWN ", "HEARD ")))}
+    assert counts["UNKNOWN"] >= 5, java.stdout  # 5 a second for 2.5 s, each counted
+    assert counts["HEARD"] >= 2, java.stdout  # the vehicle's HEARTBEATs, at least
+    assert "msgid" not in java.stderr
     assert node.p.poll() is None
