@@ -9,6 +9,7 @@ the script's first, valid step)."""
 
 from __future__ import annotations
 
+import re
 import shutil
 import subprocess
 import time
@@ -180,6 +181,9 @@ def test_the_tablet_names_a_message_it_cannot_decode_once(survey: Path, start: A
     assert len(notes) == 1, t.stderr
     assert notes[0].startswith("ttctl: tablet: 1/240 at 127.0.0.1:")
     assert "which dialect ttapi does not have: counted and ignored (do both ends use the same --dialect?)" in notes[0]
+    (status,) = [line for line in t.stdout.splitlines() if line.startswith("step 2 status: ")]
+    counted = re.search(r" frames \(and (\d+) of messages dialect ttapi lacks\)", status)
+    assert counted is not None and int(counted.group(1)) >= 5, status  # 5 a second for 2 s, each counted
     assert node.p.poll() is None
 
 

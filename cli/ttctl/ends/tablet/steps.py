@@ -403,5 +403,6 @@ def status_line(s: TabletSession) -> str:
     age = f"{loop.time() - v.heard:.1f} s ago" if v.heard is not None else "never"
     age += " (link lost)" if s.link.lost_at is not None else ""
     rtt = f", command round trip {link.rtt_ms:.0f} ms" if link.rtt_ms is not None else ""
+    unknown = f" (and {s.ep.unknown} of messages dialect {s.b.name} lacks)" if s.ep.unknown else ""
     return (f"{v.state}{' (armed)' if v.armed else ''}: {v.n:.1f} N {v.e:.1f} E {v.altitude:.1f} m, "
-            f"{v.speed:.1f} m/s; heard {age}, {link.frames} frames{rtt}")
+            f"{v.speed:.1f} m/s; heard {age}, {link.frames} frames{unknown}{rtt}")
