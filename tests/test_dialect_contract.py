@@ -313,8 +313,12 @@ def test_conditions_on_the_latest_message(robolab: Any) -> None:
         assert words in str(e.value), text
     with pytest.raises(StepError, match="no message KR_NOPE"):
         check_step("msg", "KR_NOPE seq=1", "", b)
+    # without until: sent once, as the README says (it was refused)
+    assert check_step("msg", {"send": "KR_MOTOR_CONTROL"}, "", b).describe() == "msg KR_MOTOR_CONTROL"
+    with pytest.raises(StepError, match="timeout go with until"):
+        check_step("msg", {"send": "KR_MOTOR_CONTROL", "timeout": 5}, "", b)
     with pytest.raises(StepError, match="msg wants"):
-        check_step("msg", {"send": "KR_MOTOR_CONTROL"}, "", b)
+        check_step("msg", {"until": "KR_MOTOR_STATUS.seq == 3"}, "", b)
     step = check_step("msg", {"send": "KR_MOTOR_CONTROL seq=3", "until": "KR_MOTOR_STATUS.seq == 3", "every": 0.5},
                       "", b)
     assert step.describe() == "msg KR_MOTOR_CONTROL seq=3 until KR_MOTOR_STATUS.seq == 3"

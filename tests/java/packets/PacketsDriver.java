@@ -103,7 +103,7 @@ public final class PacketsDriver {
         sb.append(' ').append(messages(got)).append('/').append(rx.pending());
         PacketReceiver.Stats s = rx.stats();
         sb.append(' ').append(s.packets()).append(':').append(s.frames()).append(':').append(s.badFrames()).append(':')
-                .append(s.carriesDropped()).append(':').append(s.rescans());
+                .append(s.carriesDropped()).append(':').append(s.rescans()).append(':').append(s.unknown());
         return sb.toString();
     }
 

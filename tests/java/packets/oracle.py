@@ -38,7 +38,7 @@ def receive(t: list[str]) -> str:
         toks.append(messages(got) + f"/{rx.pending}")
     toks.append(messages(rx.flush()) + f"/{rx.pending}")
     s = rx.stats
-    toks.append(f"{s.packets}:{s.frames}:{s.bad_frames}:{s.carries_dropped}:{s.rescans}")
+    toks.append(f"{s.packets}:{s.frames}:{s.bad_frames}:{s.carries_dropped}:{s.rescans}:{s.unknown}")
     return " ".join(["R", *toks])
 
 

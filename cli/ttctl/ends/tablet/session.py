@@ -21,7 +21,7 @@ from ...proto.transfer import TransferConfig
 from ...wire.bindings import Bindings
 from ...wire.contract import RUNTIME_MESSAGES, TtAction
 from ..plugins import Context, Dispatcher, Plugin
-from ..runtime import Runner
+from ..runtime import Runner, unknown_note
 from .gcs_bridge import GcsBridge
 
 TABLET = (255, 190)
@@ -251,6 +251,11 @@ class TabletSession:
         return b"".join(parts[k] for k in range(last + 1)).decode("utf-8", "replace")
 
     def _on_file_event(self, what: str, obj: Any) -> None:
+        if what == "unknown-message":  # counted by the endpoint (ep.unknown); named once per msgid
+            self.log(f"tablet: {unknown_note(self.b, obj)}")
+            _, msgid, (sysid, compid) = obj
+            self.on_event("unknown-message", {"msgid": msgid, "from": f"{sysid}/{compid}"})
+            return
         self._file_events[obj] = what
         self._changed.set()
 

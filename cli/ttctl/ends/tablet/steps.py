@@ -17,6 +17,7 @@ A script is a YAML list; each item is one step, a name with its argument:
     - status
     - watch: 10                     # a live view of the vehicle and the link for 10 s
     - msg: KR_MOTOR_CONTROL dir=FORWARD speed=40   # any message of the dialect (ttctl.ends.tablet.usermsg), once
+    - msg: {send: KR_MOTOR_CONTROL seq=7 dir=STOP}  # the same, once
     - wait: {until: KR_MOTOR_STATUS.seq == 7, timeout: 30}
     - msg: {send: KR_MOTOR_CONTROL seq=8 dir=STOP, until: KR_MOTOR_STATUS.seq == 8, every: 1, timeout: 30}
                                     # again every second until the vehicle's answer says it arrived
@@ -64,7 +65,8 @@ class Step:
         if isinstance(self.arg, dict):
             timeout = f" (timeout {self.arg['timeout']:g} s)" if "timeout" in self.arg else ""
             send = f" {self.arg['send']}" if "send" in self.arg else ""
-            return f"{self.name}{send} until {self.arg['until']}{timeout}"
+            until = f" until {self.arg['until']}" if "until" in self.arg else ""
+            return f"{self.name}{send}{until}{timeout}"
         if isinstance(self.arg, list):
             return f"{self.name} {' '.join(f'{x:g}' for x in self.arg)}"
         if isinstance(self.arg, float):
@@ -238,21 +240,25 @@ def check_step(name: str, arg: Any, where: str = "", b: Any = None) -> Step:
     return Step(name, arg, where)
 
 
-MSG_FORMS = ("msg wants a message of the dialect, NAME field=value ..., or {send: NAME field=value ..., "
-             "until: CONDITION, every: SECONDS, timeout: SECONDS}")
+MSG_FORMS = ("msg wants a message of the dialect, NAME field=value ..., or {send: NAME field=value ...} (once), "
+             "or {send: ..., until: CONDITION, every: SECONDS, timeout: SECONDS}")
 
 
 def _check_msg(arg: Any, b: Any) -> None:
     if b is None:
         raise StepError("msg needs the link's dialect")
     if isinstance(arg, dict):
-        if not {"send", "until"} <= set(arg) <= {"send", "until", "every", "timeout"}:
+        if not {"send"} <= set(arg) <= {"send", "until", "every", "timeout"}:
             raise StepError(MSG_FORMS)
-        check_condition(arg["until"], b)
-        every = _numbers([arg.get("every", 1.0)], 1, "every")[0]
-        timeout = _numbers([arg.get("timeout", 30.0)], 1, "timeout")[0]
-        if not 0.05 <= every <= 3600 or not 0 < timeout <= 86400:
-            raise StepError("msg: every wants 0.05..3600 s and timeout 0..86400 s")
+        if "until" not in arg and set(arg) != {"send"}:
+            raise StepError(f"msg: {' and '.join(sorted(set(arg) - {'send'}))} go with until (without it, "
+                            "msg sends once)")
+        if "until" in arg:
+            check_condition(arg["until"], b)
+            every = _numbers([arg.get("every", 1.0)], 1, "every")[0]
+            timeout = _numbers([arg.get("timeout", 30.0)], 1, "timeout")[0]
+            if not 0.05 <= every <= 3600 or not 0 < timeout <= 86400:
+                raise StepError("msg: every wants 0.05..3600 s and timeout 0..86400 s")
         arg = arg["send"]
     if not isinstance(arg, str) or not arg.strip():
         raise StepError(MSG_FORMS)
@@ -328,7 +334,7 @@ async def _send(s: TabletSession, arg: Any) -> str:
         msg = build(s.b, text, s.target)
     except MessageError as e:
         raise StepError(str(e)) from None
-    if not isinstance(arg, dict):
+    if not isinstance(arg, dict) or "until" not in arg:
         s.send_message(msg)
         return f"sent {describe(msg, b=s.b)}"
     parts = check_condition(arg["until"], s.b)
@@ -399,5 +405,6 @@ def status_line(s: TabletSession) -> str:
     age = f"{loop.time() - v.heard:.1f} s ago" if v.heard is not None else "never"
     age += " (link lost)" if s.link.lost_at is not None else ""
     rtt = f", command round trip {link.rtt_ms:.0f} ms" if link.rtt_ms is not None else ""
+    unknown = f" (and {s.ep.unknown} of messages dialect {s.b.name} lacks)" if s.ep.unknown else ""
     return (f"{v.state}{' (armed)' if v.armed else ''}: {v.n:.1f} N {v.e:.1f} E {v.altitude:.1f} m, "
-            f"{v.speed:.1f} m/s; heard {age}, {link.frames} frames{rtt}")
+            f"{v.speed:.1f} m/s; heard {age}, {link.frames} frames{unknown}{rtt}")

@@ -6,17 +6,20 @@ type from the vehicle.
     MY_PONG.seq == 7 and MY_STATUS.mode != IDLE           (`wait until`)
 
 Values: integers (decimal, 0x hex, negative where the type allows), floats (nan and inf too),
-enum entries by name (in full, or without the enum's prefix; `A|B` for a bitmask), strings for
-char[N] (quoted when they hold spaces; UTF-8, at most N bytes), lists `[1,2,3]` or `1,2,3` of
-exactly N values for arrays, and for uint8_t[N] also a quoted string (its UTF-8 bytes, zero
-padded). Fields left out are 0 (empty); target_system and target_component, when the message
-has them, default to the vehicle's ids. Each refusal names the message, the field and why.
+enum entries by name (in full, or without the enum's prefix; `A|B` only for a bitmask) or by a
+number that is an entry (for a bitmask: made of its bits), strings for char[N] (quoted when
+they hold spaces; UTF-8, at most N bytes), lists `[1,2,3]` or `1,2,3` of exactly N values for
+arrays (an enum array: N entries, `[SINGLE,BURST,CONTINUOUS]`, never text), and for uint8_t[N]
+without an enum also a quoted string (its UTF-8 bytes, zero padded). Fields left out are 0
+(empty); target_system and target_component, when the message has them, default to the
+vehicle's ids. Each refusal names the message, the field and why.
 """
 
 from __future__ import annotations
 
 import contextlib
 import difflib
+import enum
 import math
 import re
 import shlex
@@ -70,23 +73,63 @@ def _where(cls: Any, f: FieldSpec) -> str:
     return f"{cls.NAME}.{f.name}"
 
 
+SHOWN = 8  # entries a refusal lists before "and N more"
+
+
+def _members(f: FieldSpec) -> dict[str, int]:
+    """Every entry of the field's enum by name (aliases, 0 and multi-bit entries of a bitmask too,
+    which iterating an IntFlag leaves out)."""
+    return {name: int(m) for name, m in f.enum.__members__.items()}
+
+
+def is_bitmask(f: FieldSpec) -> bool:
+    return f.enum is not None and issubclass(f.enum, enum.IntFlag)
+
+
+def _short(f: FieldSpec, name: str) -> str:
+    return name.removeprefix(f"{f.enum_name}_")
+
+
+def entries(f: FieldSpec, values: bool = False) -> str:
+    """The first few entries of the field's enum, for a refusal: "A, B, C and 4 more" (with
+    `values`: "A=1, B=2, ...")."""
+    members = _members(f)
+    shown = ", ".join(_short(f, n) + (f"={v}" if values else "") for n, v in list(members.items())[:SHOWN])
+    return shown + (f" and {len(members) - SHOWN} more" if len(members) > SHOWN else "")
+
+
 def _enum_value(cls: Any, f: FieldSpec, word: str) -> int:
     """An entry of the field's enum by name: in full, or without the enum's prefix."""
-    e = f.enum
-    if e is None:
+    if f.enum is None:
         raise MessageError(f"{_where(cls, f)} takes a number ({f.describe()}), not {word!r}")
-    members = {m.name: int(m.value) for m in e}
+    members = _members(f)
     for key in (word, word.upper(), f"{f.enum_name}_{word.upper()}"):
         if key in members:
             return members[key]
-    shown = ", ".join(n.removeprefix(f"{f.enum_name}_") for n in list(members)[:8])
-    more = f" and {len(members) - 8} more" if len(members) > 8 else ""
-    raise MessageError(f"{_where(cls, f)}: {word!r} is not an entry of {f.enum_name} ({shown}{more})")
+    raise MessageError(f"{_where(cls, f)}: {word!r} is not an entry of {f.enum_name} ({entries(f)})")
 
 
-def _integer(cls: Any, f: FieldSpec, raw: Any) -> int:
+def _in_enum(cls: Any, f: FieldSpec, v: int) -> None:
+    """A number given for an enum field must be one of its entries, or for a bitmask made of its
+    bits (0: none of them)."""
+    members = _members(f)
+    if is_bitmask(f):
+        bits = 0
+        for x in members.values():
+            bits |= x
+        if v & ~bits:
+            raise MessageError(f"{_where(cls, f)}: {v} has bits outside {f.enum_name} ({v & ~bits:#x}; its bits: "
+                               f"{entries(f, values=True)})")
+    elif v not in members.values():
+        raise MessageError(f"{_where(cls, f)}: {v} is not an entry of {f.enum_name} ({entries(f, values=True)})")
+
+
+def _integer(cls: Any, f: FieldSpec, raw: Any, strict: bool = True) -> int:
+    """`raw` as an integer of the field's type; of its enum, by name or number (`strict`: a
+    number must be an entry, or bits of the bitmask; a condition may compare with any number)."""
     if isinstance(raw, bool):
         raise MessageError(f"{_where(cls, f)} takes a number ({f.describe()}), not {raw!r}")
+    named = False
     if isinstance(raw, int):
         v = raw
     elif isinstance(raw, float):
@@ -98,14 +141,20 @@ def _integer(cls: Any, f: FieldSpec, raw: Any) -> int:
         if _INT.match(text):
             v = int(text, 0) if not re.match(r"^[+-]?0\d", text) else int(text, 10)
         elif f.enum is not None:
-            v = 0
-            for word in text.split("|"):
+            words = text.split("|")
+            if len(words) > 1 and not is_bitmask(f):
+                raise MessageError(f"{_where(cls, f)}: {text!r}: {f.enum_name} is not a bitmask, give one entry "
+                                   f"({entries(f)})")
+            v, named = 0, True
+            for word in words:
                 v |= _enum_value(cls, f, word.strip())
         else:
             raise MessageError(f"{_where(cls, f)}: {text!r} is not an integer ({f.describe()})")
     lo, hi = RANGES[f.base]
     if not lo <= v <= hi:
         raise MessageError(f"{_where(cls, f)}: {v} is outside {f.base}'s {lo}..{hi}")
+    if f.enum is not None and strict and not named:
+        _in_enum(cls, f, v)
     return v
 
 
@@ -121,7 +170,7 @@ def _real(cls: Any, f: FieldSpec, raw: Any) -> float:
     return v
 
 
-def _scalar(cls: Any, f: FieldSpec, raw: Any) -> Any:
+def _scalar(cls: Any, f: FieldSpec, raw: Any, strict: bool = True) -> Any:
     if f.base in ("float", "double"):
         return _real(cls, f, raw)
     if f.base == "char":
@@ -129,7 +178,7 @@ def _scalar(cls: Any, f: FieldSpec, raw: Any) -> Any:
         if len(text.encode("utf-8")) != 1:
             raise MessageError(f"{_where(cls, f)} takes one character (char), not {text!r}")
         return text
-    return _integer(cls, f, raw)
+    return _integer(cls, f, raw, strict)
 
 
 def _items(raw: Any) -> list[Any]:
@@ -151,15 +200,21 @@ def convert(cls: Any, f: FieldSpec, raw: Any) -> Any:
         if n > f.length:
             raise MessageError(f"{_where(cls, f)}: {n} bytes do not fit char[{f.length}]")
         return text
-    if f.base == "uint8_t" and isinstance(raw, str) and not re.match(r"^\s*\[?\s*[-+\d]", raw):
+    if f.base == "uint8_t" and f.enum is None and isinstance(raw, str) and not re.match(r"^\s*\[?\s*[-+\d]", raw):
         data = raw.encode("utf-8")
         if len(data) > f.length:
             raise MessageError(f"{_where(cls, f)}: {len(data)} bytes do not fit uint8_t[{f.length}]")
         return data + bytes(f.length - len(data))
     items = _items(raw)
+    one = FieldSpec(f.name, f.base, 0, f.enum, f.enum_name)
+    if f.enum is not None:  # entries (never text's bytes), each checked before their number
+        values = [_scalar(cls, one, x) for x in items]
+        if len(values) != f.length:
+            raise MessageError(f"{_where(cls, f)} wants {f.length} entries of {f.enum_name} ({entries(f)}), "
+                               f"got {len(values)}")
+        return bytes(values) if f.base == "uint8_t" else values
     if len(items) != f.length:
         raise MessageError(f"{_where(cls, f)} wants {f.length} values ({f.describe()}), got {len(items)}")
-    one = FieldSpec(f.name, f.base, 0, f.enum, f.enum_name)
     values = [_scalar(cls, one, x) for x in items]
     return bytes(values) if f.base == "uint8_t" else values
 
@@ -213,8 +268,9 @@ def describe(msg: Any, limit: int = 6, b: Any = None) -> str:
         v = getattr(msg, name)
         e = enums.get(msg.ENUMS.get(name, ""))
         if e is not None and isinstance(v, int) and not isinstance(v, bool):
-            with contextlib.suppress(ValueError):
-                v = e(v).name or v
+            v = _entry_name(e, v)
+        elif e is not None and isinstance(v, (bytes, bytearray, list, tuple)):
+            v = "[" + ",".join(str(_entry_name(e, x)) for x in v) + "]"  # an enum array: its entries
         if isinstance(v, float):
             v = f"{v:.4g}"
         elif isinstance(v, (bytes, bytearray)):
@@ -225,6 +281,13 @@ def describe(msg: Any, limit: int = 6, b: Any = None) -> str:
         parts.append(f"{name}={v}")
     more = " ..." if len(msg.FIELDS) > limit else ""
     return f"{msg.NAME} {' '.join(parts)}{more}"
+
+
+def _entry_name(e: Any, v: int) -> Any:
+    """An enum's value by its entry's name, where it has one (else the number)."""
+    with contextlib.suppress(ValueError, TypeError):
+        return e(v).name or v
+    return v
 
 
 # -- conditions on the latest message of a type ---------------------------------------------------
@@ -253,7 +316,7 @@ class Operand:
         if self.index is None and f.length:
             raise MessageError(f"{self.text} is an array: compare one element, as {self.text}[0]")
         one = FieldSpec(f.name, f.base, 0, f.enum, f.enum_name)
-        return _scalar(self.cls, one, raw.strip().strip("'\""))
+        return _scalar(self.cls, one, raw.strip().strip("'\""), strict=False)
 
 
 _OPERAND = re.compile(r"^([A-Za-z_]\w*)\.([A-Za-z_]\w*)(?:\[(\d+)\])?$")

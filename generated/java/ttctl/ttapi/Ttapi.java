@@ -287,6 +287,12 @@ public final class Ttapi implements ttctl.ttapi.runtime.MavlinkDialect {
         all[224] = new ttctl.ttapi.runtime.MessageInfo(50014, "TT_FILE_DATA_FIT", 50, 255, 255);
     }
 
+    /** {@link #NAME}. */
+    @Override
+    public String name() {
+        return NAME;
+    }
+
     @Override
     public ttctl.ttapi.runtime.MessageInfo info(int msgId) {
         int i = Arrays.binarySearch(IDS, msgId);

@@ -154,6 +154,11 @@ public final class DjiLink implements Link {
         this(sender, new PacketReceiver(dialect));
     }
 
+    @Override
+    public void setUnknownListener(PacketReceiver.UnknownListener listener) {
+        receiving.setUnknownListener(listener);
+    }
+
     /** Gives up on a missing completion after this long (at least 1 ms). */
     public DjiLink setCompletionTimeoutMillis(long millis) {
         if (millis < 1) {

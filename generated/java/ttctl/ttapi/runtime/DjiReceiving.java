@@ -41,6 +41,10 @@ final class DjiReceiving {
         this.exec = exec;
     }
 
+    void setUnknownListener(PacketReceiver.UnknownListener listener) {
+        receiver.setUnknownListener(listener);
+    }
+
     /** A packet from the onboard computer: copied, then parsed on the link's thread (see {@link DjiLink}). */
     void take(byte[] data) {
         try {

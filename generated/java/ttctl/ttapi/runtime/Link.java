@@ -46,4 +46,12 @@ public interface Link extends Closeable {
     default String problem() {
         return null;
     }
+
+    /**
+     * Who is told of frames of messages the link's dialect lacks (its {@link PacketReceiver}'s
+     * {@link PacketReceiver.UnknownListener}, on the link's receiving thread); null: nobody. A
+     * {@link Session} sets it to name each such message once. Links that parse nothing ignore it.
+     */
+    default void setUnknownListener(PacketReceiver.UnknownListener listener) {
+    }
 }

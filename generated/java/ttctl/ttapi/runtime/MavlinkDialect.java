@@ -13,4 +13,9 @@ public interface MavlinkDialect {
      * @throws IllegalArgumentException for an unknown msgid or a payload that is too long
      */
     MavlinkMessage unpack(int msgId, byte[] payload, int off, int len);
+
+    /** The dialect's name, for people ("ttapi": its XML file's stem); the generated registry gives its NAME. */
+    default String name() {
+        return "(unnamed)";
+    }
 }

@@ -24,6 +24,12 @@ import java.util.function.Consumer;
  * are refused unless the signing allows them; a refused frame counts as a bad frame and is
  * dropped. Without one, signed frames are accepted without verification.
  *
+ * <p>A frame of a message the dialect lacks (the peer speaks another dialect) is counted
+ * ({@link Stats#unknown()}) and told to the {@link UnknownListener}, when it stands where a frame
+ * would: at the packet's start or right after a frame, and ending at the packet's end or at the
+ * next magic byte (so that a stray magic byte inside data is not taken for one). The scan goes on
+ * as without it: this only counts and tells, as ttctl's Python receiver does.
+ *
  * <p>No input makes it throw: garbage, truncated, empty and oversized packets are scanned like any
  * other. Not thread-safe: feed it from one thread (or lock around it).
  */
@@ -38,6 +44,7 @@ public final class PacketReceiver {
         volatile long unsignedRefused;
         volatile long badSignatures;
         volatile long replayed;
+        volatile long unknown;
 
         /** Packets fed (empty ones included). */
         public long packets() {
@@ -79,12 +86,27 @@ public final class PacketReceiver {
             return replayed;
         }
 
+        /** Frames of messages the dialect lacks (see {@link UnknownListener}). */
+        public long unknown() {
+            return unknown;
+        }
+
         @Override
         public String toString() {
             return "Stats(packets=" + packets + ", frames=" + frames + ", badFrames=" + badFrames
                     + ", carriesDropped=" + carriesDropped + ", rescans=" + rescans + ", unsignedRefused="
-                    + unsignedRefused + ", badSignatures=" + badSignatures + ", replayed=" + replayed + ")";
+                    + unsignedRefused + ", badSignatures=" + badSignatures + ", replayed=" + replayed + ", unknown="
+                    + unknown + ")";
         }
+    }
+
+    /**
+     * Told of every frame of a message the receiver's dialect lacks (see the class comment), on
+     * the feeding thread: keep it short, never block. A {@link Session} names each msgid once.
+     */
+    public interface UnknownListener {
+        /** {@code dialect}: the receiver's dialect's name ({@link MavlinkDialect#name()}). */
+        void onUnknown(String dialect, int msgId, int sysId, int compId);
     }
 
     private static final byte[] EMPTY = new byte[0];
@@ -98,6 +120,7 @@ public final class PacketReceiver {
     private byte[] origin = EMPTY;
     /** Packets appended to the carry, scanned again if it proves false. */
     private List<byte[]> taken = new ArrayList<>();
+    private volatile UnknownListener unknownListener;
 
     /** A receiver for {@code dialect}'s messages that accepts signed frames unverified. */
     public PacketReceiver(MavlinkDialect dialect) {
@@ -116,6 +139,26 @@ public final class PacketReceiver {
     /** The counters. */
     public Stats stats() {
         return stats;
+    }
+
+    /** The dialect whose messages it decodes. */
+    public MavlinkDialect dialect() {
+        return dialect;
+    }
+
+    /** Who is told of frames of messages the dialect lacks (null: nobody; they are counted all the same). */
+    public void setUnknownListener(UnknownListener listener) {
+        this.unknownListener = listener;
+    }
+
+    /**
+     * The words ttctl's ends use for a peer's message their dialect lacks (said once per msgid):
+     * "SYS/COMP sends msgid N, which dialect D does not have: counted and ignored (do both ends
+     * use the same dialect?)".
+     */
+    public static String unknownNote(String dialect, int msgId, int sysId, int compId) {
+        return sysId + "/" + compId + " sends msgid " + msgId + ", which dialect " + dialect
+                + " does not have: counted and ignored (do both ends use the same dialect?)";
     }
 
     /** The signing that verifies incoming frames, or null. */
@@ -343,6 +386,7 @@ public final class PacketReceiver {
         int head = -1; // a frame that runs past the end of this packet
         int n = pkt.length;
         int i = pos;
+        int boundary = pos; // where the packing rule would begin the next frame
         while (true) {
             int j = indexOfMagic(pkt, i);
             if (j < 0) {
@@ -356,6 +400,9 @@ public final class PacketReceiver {
             }
             int total = total(pkt, j);
             if (total < 0) {
+                if (j == boundary) {
+                    boundary = unknown(pkt, j);
+                }
                 i = j + 1;
                 continue;
             }
@@ -365,6 +412,7 @@ public final class PacketReceiver {
                     out.add(msg);
                     head = -1; // a complete frame after it: that head was false
                     i = j + total;
+                    boundary = i;
                 } else {
                     stats.badFrames++;
                     i = j + 1;
@@ -382,6 +430,37 @@ public final class PacketReceiver {
             origin = carry;
             taken = new ArrayList<>();
         }
+    }
+
+    /**
+     * Counts a frame at a frame boundary whose msgid the dialect lacks, and tells the listener;
+     * returns the next boundary: where such a frame ends (-1 if it was not one).
+     */
+    private int unknown(byte[] pkt, int j) {
+        int incompat = pkt[j + 2] & 0xFF;
+        if ((incompat & ~Frame.INCOMPAT_SIGNED) != 0) {
+            return -1;
+        }
+        int msgId = (pkt[j + 7] & 0xFF) | (pkt[j + 8] & 0xFF) << 8 | (pkt[j + 9] & 0xFF) << 16;
+        if (dialect.info(msgId) != null) {
+            return -1; // known, but longer than its definition allows: not a frame
+        }
+        int n = pkt.length;
+        int end = j + Frame.HEADER_LENGTH + (pkt[j + 1] & 0xFF) + Frame.CHECKSUM_LENGTH
+                + (incompat != 0 ? Frame.SIGNATURE_LENGTH : 0);
+        if (end == n || (end < n && (pkt[end] & 0xFF) == Frame.MAGIC) || (j == 0 && end > n)) {
+            stats.unknown++;
+            UnknownListener l = unknownListener;
+            if (l != null) {
+                try {
+                    l.onUnknown(dialect.name(), msgId, pkt[j + 5] & 0xFF, pkt[j + 6] & 0xFF);
+                } catch (RuntimeException e) { // a listener's mistake never costs a frame
+                    System.err.println("ttctl PacketReceiver: unknown-message listener: " + e);
+                }
+            }
+            return end;
+        }
+        return -1;
     }
 
     private static int indexOfMagic(byte[] buf, int from) {

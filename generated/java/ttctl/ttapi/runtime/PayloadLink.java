@@ -89,6 +89,11 @@ public final class PayloadLink implements Link {
         this(sender, new PacketReceiver(dialect));
     }
 
+    @Override
+    public void setUnknownListener(PacketReceiver.UnknownListener listener) {
+        link.setUnknownListener(listener);
+    }
+
     /** The SDK's error in its words: "description (errorCode)", or whichever it gave. */
     static String words(String errorCode, String description) {
         boolean d = description != null && !description.trim().isEmpty();

@@ -55,6 +55,14 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
          */
         public Signing signing;
         /**
+         * Told, in words for people, what the session notices that is wrong but no command's or
+         * transfer's business, on the listener executor: for now a message of the vehicle the
+         * dialect lacks ("1/240 sends msgid 52001, which dialect ttapi does not have: counted and
+         * ignored (do both ends use the same dialect?)"), once per msgid, as ttctl's ends say it;
+         * {@link Session#unknownMessages()} counts them all. Null: the words go to System.err.
+         */
+        public Consumer<String> onProblem;
+        /**
          * Milliseconds between the session's own HEARTBEATs (MAV_TYPE_GCS, at CONTROL priority,
          * the first at {@link Session#start()}); 0 or less: none. The default, 1000, keeps the
          * vehicle's link-loss watch (COM_DL_LOSS_T, 10 s) from taking an idle tablet for a lost
@@ -101,8 +109,14 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
     private final ExecutorService ownListeners;
     private final long heartbeatMillis;
     private java.util.concurrent.ScheduledExecutorService heartbeats;
+    private final Consumer<String> onProblem;
+    private final java.util.Set<Integer> unknownTold = new java.util.HashSet<>();
+    private long unknownMessages;
     private boolean started;
     private boolean closed;
+
+    /** At most this many msgids are named (a peer of garbage cannot grow the set without end). */
+    static final int UNKNOWN_NAMED = 256;
 
     /** A session of {@code sysId}/{@code compId} on {@code link}, with the default options. */
     public Session(Link link, int sysId, int compId) {
@@ -115,6 +129,7 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         }
         Options o = options != null ? options : new Options();
         this.link = link;
+        this.onProblem = o.onProblem;
         this.ownListeners = o.listeners == null ? Callbacks.newThread("ttctl-listeners") : null;
         this.listeners = o.listeners != null ? Callbacks.serial(o.listeners) : ownListeners;
         this.scheduler = new LinkScheduler(link, o.rate);
@@ -161,6 +176,12 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
                 }
             });
         }
+        link.setUnknownListener(new PacketReceiver.UnknownListener() {
+            @Override
+            public void onUnknown(String dialect, int msgId, int sysId, int compId) {
+                unknown(dialect, msgId, sysId, compId);
+            }
+        });
         if (link instanceof DjiLink) {
             ((DjiLink) link).setListenerExecutor(listeners);
         } else if (link instanceof PayloadLink) {
@@ -233,6 +254,43 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         return closed;
     }
 
+    /** A frame of a message the dialect lacks (on the link's thread): counted, named once per msgid. */
+    private void unknown(String dialect, int msgId, int sysId, int compId) {
+        synchronized (unknownTold) {
+            unknownMessages++;
+            if (unknownTold.size() >= UNKNOWN_NAMED || !unknownTold.add(msgId)) {
+                return;
+            }
+        }
+        final String words = PacketReceiver.unknownNote(dialect, msgId, sysId, compId);
+        final Consumer<String> l = onProblem;
+        if (l == null) {
+            System.err.println("ttctl Session: " + words);
+            return;
+        }
+        try {
+            listeners.execute(new Runnable() {
+                @Override
+                public void run() {
+                    try {
+                        l.accept(words);
+                    } catch (RuntimeException e) {
+                        System.err.println("ttctl Session: onProblem: " + e);
+                    }
+                }
+            });
+        } catch (java.util.concurrent.RejectedExecutionException e) { // closing
+            System.err.println("ttctl Session: " + words);
+        }
+    }
+
+    /** Frames of messages the dialect lacks received so far (each msgid named once, see {@link Options#onProblem}). */
+    public long unknownMessages() {
+        synchronized (unknownTold) {
+            return unknownMessages;
+        }
+    }
+
     /** A message from the link: to the commands, the transfers and the dispatcher (whose handlers run on the listener executor). */
     @Override
     public void accept(MavlinkMessage msg) {
@@ -298,6 +356,7 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         if (heartbeats != null) {
             heartbeats.shutdownNow();
         }
+        link.setUnknownListener(null);
         if (link instanceof UdpLink) {
             ((UdpLink) link).removeListener(this);
         } else if (link instanceof DjiLink) {

@@ -124,6 +124,11 @@ public final class UdpLink implements Link {
         this.remote = remote;
     }
 
+    @Override
+    public void setUnknownListener(PacketReceiver.UnknownListener listener) {
+        receiver.setUnknownListener(listener);
+    }
+
     /** The receiver's counters (read them from any thread; they are updated by the reader). */
     public PacketReceiver.Stats stats() {
         return receiver.stats();
