@@ -25,6 +25,7 @@ import pytest
 from pymavlink import mavutil
 
 from e2e_lib import LOCAL, Start, free_port, relay
+from machine import busy
 
 BIN = Path(sys.executable).parent
 
@@ -216,7 +217,7 @@ def test_a_flooding_ground_station_is_throttled_and_app_commands_keep_their_late
     p95 = lambda xs: sorted(xs)[max(0, round(0.95 * len(xs)) - 1)]  # noqa: E731
     report = {"idle_ms": [round(x) for x in idle], "during_ms": [round(x) for x in during], "rss_kb": (rss0, rss1)}
     print("MEASURED", json.dumps(report))
-    assert p95(during) <= p95(idle) + 200, report
+    assert p95(during) <= p95(idle) + 200 * busy(), report  # the tail waits for cores on a busy machine too
     assert statistics.median(during) <= statistics.median(idle) + 100, report
     assert rss1 - rss0 < 8_000, report  # kB: bounded queues, not a copy of the flood
     summary = re.search(r"(\d+) frames up \((\d+) sent, (\d+) retries dropped as duplicates, (\d+) overtaken by "
@@ -384,7 +385,7 @@ def test_streams_fit_the_downlink_share_and_message_interval_says_what_is_kept(t
         assert 0.7 * said <= rates[name] <= 1.3 * said, report  # the interval said is the one kept
     assert 0.8 <= rates["HEARTBEAT"] <= 1.2, report
     assert nbytes / 6 <= 0.5 * 6700 * 1.15, report  # about --dtt-gcs-share 0.5 of the m100 downlink, not more
-    assert report["gpi_age_p95_ms_above_min"] <= 250, report  # newest wins: no queue of stale positions
+    assert report["gpi_age_p95_ms_above_min"] <= 250 * busy(), report  # newest wins: no queue of stale positions
 
 
 def test_bad_ground_station_endpoints_get_one_line_errors() -> None:
