@@ -387,3 +387,46 @@ def test_heartbeat_base_mode_follows_the_mode_as_px4_sets_it() -> None:
     assert s.set_mode(ALTCTL) == ACCEPTED
     hb = heartbeat(s.b, s.v.snapshot(), s.ap.flight.custom_mode(s.v.snapshot()))
     assert hb.base_mode == 1 | 64 | 16 | 128  # MANUAL_INPUT, STABILIZE, armed
+
+
+def test_set_mode_is_taken_as_px4_takes_it() -> None:
+    """SET_MODE (message 11) is PX4's DO_SET_MODE (mavlink_receiver: base mode, main and sub from
+    custom_mode's bytes 2 and 3), answered with COMMAND_ACK for DO_SET_MODE: entered, or refused
+    with the reason, never ignored."""
+    s = Sim()
+    s.takeoff(3)
+    s.g.out.clear()
+    s.send(s.b.SetMode(target_system=1, base_mode=1, custom_mode=(AUTO << 16) | (RTL << 24)))
+    acks = [m for m, _ in s.g.out if m.NAME == "COMMAND_ACK"]
+    assert [(a.command, a.result) for a in acks] == [(int(s.b.MavCmd.MAV_CMD_DO_SET_MODE), ACCEPTED)]
+    assert s.mode() == (AUTO, RTL)
+    s.g.out.clear()
+    s.send(s.b.SetMode(target_system=1, base_mode=1, custom_mode=7 << 16))  # STABILIZED: not flown here
+    acks = [m for m, _ in s.g.out if m.NAME == "COMMAND_ACK"]
+    assert [a.result for a in acks] == [DENIED]
+    assert any("not a mode flown here" in m.text for m, _ in s.g.out if m.NAME == "STATUSTEXT")
+    s.g.out.clear()
+    s.send(s.b.SetMode(target_system=9, base_mode=1, custom_mode=(AUTO << 16) | (LAND << 24)))  # another vehicle's
+    assert not s.g.out and s.mode() == (AUTO, RTL)
+
+
+def test_request_data_stream_is_bounded() -> None:
+    """REQUEST_DATA_STREAM(ALL, 65535 Hz) streams at 50 Hz at most (ArduPilot's SRn_ ceiling), and
+    says so once; the heartbeat stays at 1 Hz."""
+    s = Sim()
+    s.run(1.0)
+    s.sent.clear()
+    for _ in range(2):
+        s.send(s.b.RequestDataStream(target_system=1, target_component=1, req_stream_id=0, req_message_rate=65535,
+                                     start_stop=1))
+    told = [m.text for m, _ in s.g.out if m.NAME == "STATUSTEXT"]
+    assert told == ["streams held to 50 Hz (asked 65535 Hz)"], told
+    s.g.out.clear()
+    s.sent.clear()
+    s.run(2.0)
+    per_name: dict[str, int] = {}
+    for m in s.sent:
+        per_name[m.NAME] = per_name.get(m.NAME, 0) + 1
+    assert per_name["HEARTBEAT"] <= 3
+    assert max(per_name.values()) <= 2 * 50 + 2, per_name  # at most 50 a second of each
+    assert per_name["GLOBAL_POSITION_INT"] >= 30, per_name  # faster than its default 4 Hz (dt 0.05 s: ~one a step)

@@ -121,12 +121,16 @@ def test_a_mission_reports_item_numbers_and_reaches_every_item() -> None:
     assert s.command(C.MAV_CMD_MISSION_START) == 0
     s.got.clear()
     top = 0.0
+    modes: set[tuple[int, int]] = set()
 
     def done() -> bool:
         nonlocal top
         top = max(top, math.hypot(s.v.vel[0], s.v.vel[1]))
+        if s.ap.runner is not None and s.ap.runner.running:
+            modes.add(s.ap.flight.current(s.v.state))
         return s.ap.runner is not None and s.ap.runner.state == COMPLETE
     assert s.run(120, done)
+    assert modes == {(4, 4)}  # PX4's navigator flies the take-off item too in AUTO MISSION, and says so
     assert s.reached() == [0, 1, 2, 3]
     seen = [c for i, c in enumerate(s.currents()) if i == 0 or c != s.currents()[i - 1]]
     assert seen == [0, 1, 2, 3]  # MISSION_CURRENT is the item number

@@ -88,6 +88,9 @@ class FlightModes:
     def current(self, state: State) -> tuple[int, int]:
         if state is State.LANDED:
             return self.ground
+        runner = self.ap.runner
+        if runner is not None and runner.flying():  # PX4's navigator flies every item in MISSION
+            return AUTO, MISSION
         if state is State.MANUAL:
             return self.manual_main, 0
         if state is State.MOVING:

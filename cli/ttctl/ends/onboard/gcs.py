@@ -23,6 +23,7 @@ from .vehicle import Refused, Snapshot
 
 TARGETED = ("target_system",)
 REPEAT = 5.0  # s: a COMMAND_LONG with confirmation > 0 equal to the last one done is its retry
+STREAM_MAX_HZ = 50  # REQUEST_DATA_STREAM's ceiling, as ArduPilot's SRn_ stream rates (0-50 Hz)
 
 
 def _arg(x: float, default: float) -> float:
@@ -43,6 +44,7 @@ class GroundStations:
         self.out: list[tuple[Any, Hashable]] = []
         self._peer_links: dict[tuple[int, int], Hashable] = {}
         self._told_unsupported: set[int] = set()
+        self._told_stream_cap = False
         self._done: dict[tuple[int, int], tuple[Any, float, int]] = {}  # each peer's last command and its result
         ap.missions = Missions(b, sysid, compid, self._to_peer, self.log)
         self.builders: dict[int, Callable[[Snapshot], Any]] = {
@@ -123,6 +125,12 @@ class GroundStations:
             return
         if self.services.on_message(now, msg, lambda m: self._to_peer(m, peer), peer):
             return
+        if isinstance(msg, b.SetMode):  # PX4 takes SET_MODE as DO_SET_MODE and acknowledges it as one
+            msg = b.CommandLong(target_system=self.sysid, target_component=self.compid,
+                                command=int(b.MavCmd.MAV_CMD_DO_SET_MODE), confirmation=0,
+                                param1=float(msg.base_mode), param2=float((msg.custom_mode >> 16) & 0xFF),
+                                param3=float((msg.custom_mode >> 24) & 0xFF), param4=0.0, param5=0.0, param6=0.0,
+                                param7=0.0)
         if isinstance(msg, (b.CommandLong, b.CommandInt)):
             key = (peer, type(msg).__name__, msg.command, *(
                 "nan" if isinstance(v, float) and math.isnan(v) else v  # NaN (unused: MAVSDK, QGC) equals NaN here
@@ -166,7 +174,11 @@ class GroundStations:
         elif isinstance(msg, b.SetAttitudeTarget):
             self.ap.flight.complain(now, "attitude is not flown")  # OFFBOARD stays refused
         elif isinstance(msg, b.RequestDataStream):
-            self.rates.set_all(msg.req_message_rate if msg.start_stop else 0)
+            hz = min(msg.req_message_rate, STREAM_MAX_HZ) if msg.start_stop else 0
+            if hz < msg.req_message_rate and msg.start_stop and not self._told_stream_cap:
+                self._told_stream_cap = True
+                self._refusal(f"streams held to {STREAM_MAX_HZ} Hz (asked {msg.req_message_rate} Hz)")
+            self.rates.set_all(hz)
         elif isinstance(msg, b.MissionSetCurrent):
             self.ap.set_current(msg.seq)
         elif self.ap.missions is not None and type(msg).__name__.startswith("Mission"):

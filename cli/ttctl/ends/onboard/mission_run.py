@@ -180,6 +180,11 @@ class MissionRunner:
             return v.state not in (State.LANDING, State.LANDED)
         return v.state not in (State.RETURNING, State.LANDING, State.LANDED)
 
+    def flying(self) -> bool:
+        """The vehicle flies this mission's items (a take-off item, a landing, a hold between legs):
+        PX4 reports MISSION through all of them."""
+        return self.running and (self.leg is None or not self._interrupted())
+
     def step(self, now: float) -> None:
         if not self.running:
             if self.roi is not None and self.vehicle.state is State.HOVERING:
