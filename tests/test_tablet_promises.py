@@ -329,3 +329,42 @@ def test_a_ground_stations_reposition_beyond_tt_max_dist_is_refused_in_words() -
     denied = int(s.b.MavResult.MAV_RESULT_DENIED)
     assert s.command(int(C.MAV_CMD_DO_REPOSITION), -1, 1, 0, float("nan"), far_lat, home.lon, home.alt + 5) == denied
     assert "".join(s.said[2:]) == "refused: 2227 m from home is beyond the 1000 m limit (TT_MAX_DIST)", s.said
+
+
+def test_a_command_waiting_for_a_lost_link_says_so_at_once_and_ctrl_c_gives_it_up(tmp_path: Path,
+                                                                                  start: Start) -> None:
+    """The vehicle gone, `land` at the prompt says at once that it waits for the link (not after
+    its tries have run out, 46 s later on the m100's link), and Ctrl-C gives it up."""
+    port = free_port()
+    node = vehicle(start, tmp_path, port)
+    p = subprocess.Popen(ttctl_cmd() + ["emulate", "tablet", "--to", f"udpout:{LOCAL}:{port}"], stdin=subprocess.PIPE,
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert p.stdin is not None and p.stderr is not None
+        p.stdin.write("status\n")
+        p.stdin.flush()
+        assert p.stdout is not None and "landed" in p.stdout.readline()  # the vehicle heard
+        node.kill()
+        lines: list[str] = []
+        reader = threading.Thread(target=lambda: lines.extend(iter(p.stderr.readline, "")), daemon=True)  # type: ignore[union-attr]
+        reader.start()
+        time.sleep(5)  # the link is lost after 3.5 s of silence
+        p.stdin.write("land\n")
+        p.stdin.flush()
+        t0 = time.monotonic()
+        while not any("waiting for the link" in ln for ln in lines) and time.monotonic() - t0 < 5:
+            time.sleep(0.05)
+        said = time.monotonic() - t0
+        p.send_signal(signal.SIGINT)
+        time.sleep(1)
+        p.stdin.write("quit\n")
+        p.stdin.flush()
+        p.wait(timeout=20)
+        reader.join(5)
+    finally:
+        p.kill()
+    waiting = [ln for ln in lines if "waiting for the link" in ln]
+    assert waiting and said < 2.0, (said, lines)
+    assert waiting[0].startswith("ttctl: land: waiting for the link (nothing heard from the vehicle for "), waiting
+    assert any("land: cancelled" in ln for ln in lines), lines
+    assert p.returncode == 0, lines

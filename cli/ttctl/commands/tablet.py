@@ -335,8 +335,20 @@ async def _prompt(s: Any, sigs: Signals, base: Path, b: Any = None, as_json: boo
         else:
             print(f"ttctl: {words}", file=sys.stderr, flush=True)
 
+    def waiting(step: Any) -> None:
+        """A command waits while the link is lost: said at once (not after its tries run out), with
+        how to give it up."""
+        quiet = s.silence()
+        what = step.describe() if not isinstance(step, str) else step
+        if as_json:
+            print(json.dumps({"event": "waiting", "what": what, "silent": round(quiet or 0.0, 1)}), flush=True)
+        else:
+            print(f"ttctl: {what}: waiting for the link (nothing heard from the vehicle for {quiet or 0.0:.1f} s); "
+                  f"Ctrl-C gives it up", file=sys.stderr, flush=True)
+
     backlog: list[str] = []
     current: asyncio.Task[str] | None = None
+    told_waiting = False
     step: Any = None
     eof = False
     getter: asyncio.Task[str | None] = loop.create_task(lines.get())
@@ -354,12 +366,17 @@ async def _prompt(s: Any, sigs: Signals, base: Path, b: Any = None, as_json: boo
                     said(line, False, str(e))
                     continue
                 current = loop.create_task(run_step(s, step, base))
+                told_waiting = False
             if current is None and eof:
                 return 0
             waits: set[asyncio.Future[Any]] = {stopper}
             waits |= {getter} if not eof else set()
             waits |= {current} if current is not None else set()
-            done, _ = await asyncio.wait(waits, return_when=asyncio.FIRST_COMPLETED)
+            done, _ = await asyncio.wait(waits, return_when=asyncio.FIRST_COMPLETED,
+                                         timeout=0.25 if current is not None and not told_waiting else None)
+            if current is not None and current not in done and not told_waiting and s.silence() is not None:
+                told_waiting = True
+                waiting(step)
             if current is not None and current in done:
                 try:
                     said(step, True, current.result())
