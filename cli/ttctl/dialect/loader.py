@@ -40,6 +40,10 @@ from .source import (
 )
 
 MAX_INCLUDE_DEPTH = 32
+# pymavlink's mavgen (generator/mavgen.py, MAXIMUM_INCLUDE_FILE_NESTING = 5) expands includes in
+# 5 rounds: a file included 6 deep is never parsed, and mavgen stops with "ERROR in includes
+# tree, no base found!" (checked with pymavlink 2.4.50). ttctl follows them, with a warning.
+MAVGEN_INCLUDE_NESTING = 5
 _TYPE_RE = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d+)\])?\Z")
 _VALUE_RE = re.compile(r"\s*(?:(0[xX][0-9a-fA-F]+)|(0[bB][01]+)|2\*\*(\d+)|(\d+))\s*\Z")
 
@@ -412,6 +416,13 @@ class _Loader:
             if len(stack) >= MAX_INCLUDE_DEPTH:
                 self.rep.error(loc, "INCLUDE-DEPTH", f"includes nested deeper than {MAX_INCLUDE_DEPTH} files", name)
                 continue
+            if len(stack) == MAVGEN_INCLUDE_NESTING + 1:  # the first file mavgen would not load; once per chain
+                chain = " -> ".join(os.path.basename(self.shown.get(p, p)) for p in [*stack, treal])
+                self.rep.warning(loc, "INCLUDE-DEPTH-MAVGEN",
+                                 f"includes nested {len(stack)} deep ({chain}); pymavlink's mavgen follows includes "
+                                 f"only {MAVGEN_INCLUDE_NESTING} deep and stops with 'ERROR in includes tree, no base "
+                                 "found!': other MAVLink tools cannot build this dialect (fold a level into its "
+                                 "includer)", name)
             sub = self.load(target, stack, loc)
             if sub is not None:
                 df.resolved.append(treal)

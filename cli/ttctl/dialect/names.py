@@ -93,7 +93,7 @@ RUNTIME_TYPE_NAMES = _words(
 # Members every generated message class/struct defines; a field of the same name would
 # shadow them. Kept in one place so the templates and the validator agree.
 GENERATED_MESSAGE_MEMBERS = _words(
-    """MSG_ID NAME CRC_EXTRA PAYLOAD_LENGTH MIN_LENGTH FIELDS ENUMS pack pack_payload unpack
+    """MSG_ID NAME CRC_EXTRA PAYLOAD_LENGTH MIN_LENGTH FIELDS ENUMS TYPES pack pack_payload unpack
     unpack_payload to_dict from_dict encode decode msgid crc_extra self cls get_msgId get_type
     get_seq get_srcSystem get_srcComponent get_signed"""
 )
