@@ -258,9 +258,9 @@ def import_sorted(names: list[str]) -> list[str]:
     """isort's order of names in `from x import (...)`: CONSTANTS (two characters or more),
     Classes, functions, each case-insensitively in natural order (F2A before F13)."""
 
-    def key(n: str) -> tuple[int, list[Any]]:
+    def key(n: str) -> tuple[int, list[Any], list[Any]]:
         group = 0 if len(n) > 1 and n.upper() == n else (1 if n[:1].isupper() else 2)
-        return group, _natural(n.lower())
+        return group, _natural(n.lower()), _natural(n)  # FooBar before Foobar, as isort has them
 
     return sorted(names, key=key)
 

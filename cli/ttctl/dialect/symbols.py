@@ -114,6 +114,8 @@ def type_names(d: Dialect) -> TypeNames:
     for (kind, xml), ident in shared.items():
         (tn.messages if kind == "message" else tn.enums)[xml] = ident
     for item, (reason, other) in why.items():
+        if other is None and camel(item[1]) not in PYTHON_MODULE_TYPES:
+            continue  # a runtime's or java.lang's type: the validator refuses the name
         tn.renamed.append((item[0], item[1], other, "TYPE-RENAMED",
                            f"{item[0]} {item[1]} is generated as {shared[item]} in Python, C++ and Java, as {reason} "
                            "(the wire is unchanged)"))
