@@ -267,9 +267,17 @@ def test_includes_deeper_than_mavgen_follows_are_named(tmp_path: Path) -> None:
     pm = subprocess.run([*mavgen, str(tmp_path / "pm.py"), "d0.xml"], cwd=tmp_path, capture_output=True, text=True,
                         timeout=120)
     assert "ERROR in includes tree, no base found!" in pm.stdout + pm.stderr
-    (tmp_path / "d5.xml").write_text((tmp_path / "d5.xml").read_text().replace("<include>d6.xml</include>", ""))
-    proc = run_ttctl("validate", "d0.xml", "--format", "json", cwd=tmp_path)
-    assert [d for d in json.loads(proc.stdout)["diagnostics"] if d["severity"] == "warning"] == []
-    pm = subprocess.run([*mavgen, str(tmp_path / "pm.py"), "d0.xml"], cwd=tmp_path, capture_output=True, text=True,
-                        timeout=120)
-    assert pm.returncode == 0, pm.stdout + pm.stderr
+    # mavgen reads includes breadth first: d6 included by the root too is 1 deep, and mavgen builds it
+    d0 = tmp_path / "d0.xml"
+    d0.write_text(d0.read_text().replace("<include>d1.xml</include>",
+                                         "<include>d1.xml</include><include>d6.xml</include>"))
+    for _ in range(2):
+        proc = run_ttctl("validate", "d0.xml", "--format", "json", cwd=tmp_path)
+        assert [d for d in json.loads(proc.stdout)["diagnostics"] if d["severity"] == "warning"] == []
+        pm = subprocess.run([*mavgen, str(tmp_path / "pm.py"), "d0.xml"], cwd=tmp_path, capture_output=True,
+                            text=True, timeout=120)
+        assert pm.returncode == 0, pm.stdout + pm.stderr
+        # and with 5 levels only
+        d0.write_text(d0.read_text().replace("<include>d6.xml</include>", ""))
+        d5 = tmp_path / "d5.xml"
+        d5.write_text(d5.read_text().replace("<include>d6.xml</include>", ""))
