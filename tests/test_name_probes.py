@@ -55,9 +55,9 @@ NOTES = [
                          "is LeafMode"),
     (38, "TYPE-RENAMED", "enum LEAF_STATUS is generated as LeafStatusEnum"),
     (43, "CASE-COLLISION", "enum FOO_BAR is generated as Java class FooBarEnum, as enum FOOBAR is Foobar"),
-    (69, "TYPE-RENAMED", "message CLASS_VAR is generated as ClassVarMessage"),
-    (73, "TYPE-RENAMED", "message ANY is generated as AnyMessage"),
-    (90, "CASE-COLLISION", "message SIMSTATE is generated as Java class SimstateMessage, as message SIM_STATE is "
+    (79, "TYPE-RENAMED", "message CLASS_VAR is generated as ClassVarMessage"),
+    (83, "TYPE-RENAMED", "message ANY is generated as AnyMessage"),
+    (100, "CASE-COLLISION", "message SIMSTATE is generated as Java class SimstateMessage, as message SIM_STATE is "
                            "SimState"),
 ]
 
@@ -96,7 +96,13 @@ public final class UseProbes {
         m.mode = (byte) ttctl.name_probes.enums.LeafModeEnum.LEAF_MODE_FLY;
         ttctl.name_probes.msg.SimstateMessage s = new ttctl.name_probes.msg.SimstateMessage();
         ttctl.name_probes.msg.SimState t = new ttctl.name_probes.msg.SimState();
+        ttctl.name_probes.msg.ProbeFields p = new ttctl.name_probes.msg.ProbeFields();
+        p.Wire = 200;
+        p.big = -1L;
+        p.flags = ttctl.name_probes.enums.JavaTables.ENTRY_NAMES | ttctl.name_probes.enums.JavaTables.String;
         boolean ok = m.mode == 1 && ttctl.name_probes.enums.FooBarEnum.FOO_BAR_A == 0
+            && "ENTRY_NAMES|String".equals(ttctl.name_probes.enums.JavaTables.flags(p.flags))
+            && p.toString().contains("big=18446744073709551615")
             && ttctl.name_probes.enums.Foobar.FOOBAR_A == 0 && s.msgId() != t.msgId();
         System.exit(ok ? 0 : 1);
     }
@@ -234,6 +240,8 @@ def _dialect(tmp: Path, name: str, body: str) -> Path:
 
 @pytest.mark.parametrize(("field", "why"), [
     ("TYPES", "PROBE.TYPES: 'TYPES' is a member every generated message class defines"),
+    ("java", "PROBE.java: the generated Java message class calls java.util.Arrays, which a field named java hides; "
+             "rename the field"),
     ("Probe", "PROBE.Probe: a field cannot be spelled like its message's generated type Probe (C++ refuses a member "
               "named like its class); rename the field"),
 ])
@@ -246,6 +254,20 @@ def test_a_field_no_generator_can_emit_is_refused_with_its_line(tmp_path: Path, 
     assert [(d["line"], d["code"], d["message"]) for d in errors] == [(7, "RESERVED-NAME", why)]
     gen = run_ttctl("gen", str(xml), "-o", str(tmp_path / "out"))
     assert gen.returncode == 1 and "nothing generated" in gen.stderr and not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("entry", ["java", "Long"])
+def test_an_entry_java_cannot_have_is_refused_with_its_line(tmp_path: Path, entry: str) -> None:
+    xml = tmp_path / "refused.xml"
+    xml.write_text('<?xml version="1.0"?>\n<mavlink>\n  <enums>\n    <enum name="FLAGS" bitmask="true">\n'
+                   f'      <entry value="1" name="{entry}"/>\n    </enum>\n  </enums>\n  <messages/>\n</mavlink>\n')
+    proc = run_ttctl("validate", str(xml), "--format", "json")
+    assert proc.returncode == 1
+    errors = [(d["line"], d["code"], d["message"]) for d in json.loads(proc.stdout)["diagnostics"]
+              if d["severity"] == "error"]
+    calls = "java.util.Arrays" if entry == "java" else "Long.toHexString"
+    assert errors == [(5, "RESERVED-NAME", f"FLAGS.{entry}: the generated Java enum class calls {calls}, which an "
+                                           f"entry named {entry} hides; rename the entry")]
 
 
 def test_includes_deeper_than_mavgen_follows_are_named(tmp_path: Path) -> None:

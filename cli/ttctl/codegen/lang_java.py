@@ -101,6 +101,14 @@ def registry_class(d: Dialect) -> str:
 
 
 
+def free_name(name: str, taken: list[str]) -> str:
+    """`name`, or with `_` appended until none of `taken` is called that (a private member of a
+    generated class that an entry or a field would otherwise redefine)."""
+    while name in taken:
+        name += "_"
+    return name
+
+
 class _Refs:
     """How generated code outside the runtime package names runtime and message classes:
     imported simple names unless two classes would share one."""
@@ -109,7 +117,9 @@ class _Refs:
         self.root = root
         self.msg_names = {class_name(m, d) for m in d.messages if m.complete}
         self.d = d
-        self.clash = {n for n in RUNTIME_CLASSES if n in self.msg_names}
+        # a message class or a field (Wire, Unsigned) of a runtime class's name hides it in Java
+        fields = {f.name for m in d.messages for f in m.fields}
+        self.clash = {n for n in RUNTIME_CLASSES if n in self.msg_names or n in fields}
 
     def rt(self, simple: str, own_class: str = "") -> str:
         if simple in self.clash or simple == own_class:
@@ -183,6 +193,7 @@ class _Java:
             "registry": registry_class(d),
             "class_name": lambda m: class_name(m, d),
             "java_enum_class": lambda e: enum_class(e.name, d),
+            "free_name": free_name,
             "java_type": java_type,
             "is_text": is_text,
             "is_bytes": is_bytes,

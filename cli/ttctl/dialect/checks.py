@@ -23,6 +23,8 @@ from .names import (
     C_MACROS,
     GENERATED_MESSAGE_MEMBERS,
     IDENTIFIER_RE,
+    JAVA_QUALIFIERS_IN_ENUMS,
+    JAVA_QUALIFIERS_IN_MESSAGES,
     JAVA_RESERVED_TYPES,
     RESERVED_WORDS,
     RUNTIME_TYPE_NAMES,
@@ -242,6 +244,17 @@ def _renamed(d: Dialect, rep: Reporter) -> None:
             continue  # two names that camel-case alike: a NAME-COLLISION error already
         rep.note(by_name[(kind, xml)], code, text, xml)
     entry_names = {x.name for e in d.enums for x in e.entries}
+    for e in d.enums if entry_names & JAVA_QUALIFIERS_IN_ENUMS.keys() else []:
+        for x in e.entries:
+            if x.name in JAVA_QUALIFIERS_IN_ENUMS:
+                rep.error(x.loc, "RESERVED-NAME", f"{e.name}.{x.name}: {JAVA_QUALIFIERS_IN_ENUMS[x.name]}; rename the "
+                          "entry", x.name)
+    field_names = {f.name for m in d.messages for f in m.fields}
+    for m in d.messages if field_names & JAVA_QUALIFIERS_IN_MESSAGES.keys() else []:
+        for f in m.fields:
+            if f.name in JAVA_QUALIFIERS_IN_MESSAGES:
+                rep.error(f.loc, "RESERVED-NAME", f"{m.name}.{f.name}: {JAVA_QUALIFIERS_IN_MESSAGES[f.name]}; rename "
+                          "the field", f.name)
     if any(python_entry_clash(n) for n in entry_names):
         for e in d.enums:
             for x in e.entries:

@@ -98,6 +98,17 @@ GENERATED_MESSAGE_MEMBERS = _words(
     get_seq get_srcSystem get_srcComponent get_signed"""
 )
 
+# Names the generated Java code uses as the first part of a qualified name (java.util.Arrays,
+# Long.toHexString): Java resolves such a name to a field or constant of the class first, so a
+# field (message classes) or an entry (enum classes) of that name breaks them.
+JAVA_QUALIFIERS_IN_MESSAGES: dict[str, str] = {
+    "java": "the generated Java message class calls java.util.Arrays, which a field named java hides",
+}
+JAVA_QUALIFIERS_IN_ENUMS: dict[str, str] = {
+    "java": "the generated Java enum class calls java.util.Arrays, which an entry named java hides",
+    "Long": "the generated Java enum class calls Long.toHexString, which an entry named Long hides",
+}
+
 
 def camel(name: str) -> str:
     """UPPER_SNAKE or lower_snake to CamelCase: GPS_RAW_INT -> GpsRawInt, GPS2_RAW -> Gps2Raw."""
