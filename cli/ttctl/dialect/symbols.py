@@ -60,8 +60,8 @@ class TypeNames:
 _Item = tuple[str, str]  # (kind, XML name)
 
 
-def _assign(items: list[_Item], reserved: frozenset[str], fold: bool,
-            taken: set[str] | None = None) -> tuple[dict[_Item, str], dict[_Item, tuple[str, str | None]]]:
+def _assign(items: list[_Item], reserved: frozenset[str],
+            fold: bool) -> tuple[dict[_Item, str], dict[_Item, tuple[str, str | None]]]:
     """Names for (kind, XML name) items in priority order: their CamelCase name where it is free
     (and not `reserved`), else with the kind's suffix (and a number if still taken). Returns
     (names, why) where `why` says, for a renamed item, why and whose name it yielded to."""
@@ -72,10 +72,9 @@ def _assign(items: list[_Item], reserved: frozenset[str], fold: bool,
     owner: dict[str, tuple[str, str]] = {}
     names: dict[tuple[str, str], str] = {}
     why: dict[tuple[str, str], tuple[str, str | None]] = {}
-    used = set(taken or ())
     for item in items:
         c = camel(item[1])
-        if key(c) in reserved_keys or key(c) in owner or key(c) in used:
+        if key(c) in reserved_keys or key(c) in owner:
             continue
         owner[key(c)] = item
         names[item] = c
@@ -89,7 +88,7 @@ def _assign(items: list[_Item], reserved: frozenset[str], fold: bool,
                      else (f"the generated Python code imports {c}", None))
         base = c + (MESSAGE_SUFFIX if kind == "message" else ENUM_SUFFIX)
         cand, n = base, 2
-        while key(cand) in reserved_keys or key(cand) in owner or key(cand) in used:
+        while key(cand) in reserved_keys or key(cand) in owner:
             cand, n = f"{base}{n}", n + 1
         owner[key(cand)] = item
         names[item] = cand
