@@ -94,11 +94,10 @@ def make_stream(messages: list[Message], count: int, seed: int = 1) -> bytes:
     return b"".join(frames)
 
 
-def _ours_source(messages: list[Message], ident: str) -> str:
-    from ..dialect.names import camel
-
+def _ours_source(messages: list[Message], ident: str, types: dict[str, str]) -> str:
+    """`types`: the generated C++ type of each message by name (dialect.symbols.type_names)."""
     cases = "\n".join(
-        f"    case {ident}::{camel(m.name)}::MSG_ID:\n        keep(f.as<{ident}::{camel(m.name)}>());\n        break;"
+        f"    case {ident}::{types[m.name]}::MSG_ID:\n        keep(f.as<{ident}::{types[m.name]}>());\n        break;"
         for m in messages)
     return f"""// ttctl's generated C++: Parser + decode into the message struct.
 #include "{ident}/{ident}.hpp"
@@ -262,6 +261,7 @@ def run(tmp: Path, seconds_budget: float = 20) -> dict[str, Any]:
     """Generate, build and run the comparison in `tmp`; returns messages/s of both decoders,
     their ratio (ours / mavgen's) and the stream size. Raises RuntimeError if a step fails."""
     from ..codegen.engine import dialect_ident, language, render, write_tree
+    from ..dialect.symbols import type_names
     from ..validate import load_and_check
 
     t0 = time.monotonic()
@@ -283,7 +283,7 @@ def run(tmp: Path, seconds_budget: float = 20) -> dict[str, Any]:
     src = tmp / "src"
     src.mkdir(exist_ok=True)
     (src / "keep.hpp").write_text(_KEEP)
-    (src / "ours.cpp").write_text(_ours_source(messages, ident))
+    (src / "ours.cpp").write_text(_ours_source(messages, ident, type_names(dialect).messages))
     (src / "mavgen.cpp").write_text(_mavgen_source(messages))
     (src / "main.cpp").write_text(_MAIN)
 

@@ -14,6 +14,7 @@ import re
 
 from ..dialect.model import Dialect, Enum, Field, Message
 from ..dialect.names import camel
+from ..dialect.symbols import type_names
 from .text import wrap
 
 # base type -> Java type of a scalar field
@@ -67,8 +68,16 @@ TYPE_MAPPING = [
 
 
 
-def class_name(m: Message) -> str:
-    return camel(m.name)
+def class_name(m: Message, d: Dialect) -> str:
+    """The Java class of message `m` of dialect `d` (see dialect.symbols: mangled where two
+    files would collide on a case-insensitive file system)."""
+    return type_names(d).java_messages[m.name]
+
+
+def enum_class(name: str, d: Dialect | None) -> str:
+    """The Java class of the enum called `name` (CamelCase when the dialect lacks it)."""
+    got = type_names(d).java_enums.get(name) if d is not None else None
+    return got or camel(name)
 
 
 def java_type(f: Field) -> str:
@@ -206,9 +215,9 @@ def field_doc(f: Field, d: Dialect | None = None, root: str | None = None) -> st
     notes = [f.declared_type]
     if f.enum:
         if d is not None and root is not None and f.enum in d.enums_by_name:
-            notes.append(f"enum {{@link {root}.enums.{camel(f.enum)}}}")
+            notes.append(f"enum {{@link {root}.enums.{enum_class(f.enum, d)}}}")
         else:
-            notes.append(f"enum {_escape_doc(camel(f.enum))}")
+            notes.append(f"enum {_escape_doc(enum_class(f.enum, d))}")
     if f.extension:
         notes.append("extension")
     return f"RAW:{_escape_doc(' '.join(text.split()))} ({'; '.join(notes)})"

@@ -40,6 +40,7 @@ from typing import Any
 
 from ..dialect.model import Dialect, Enum, Field, Message
 from ..dialect.names import C_RESERVED, CPP_KEYWORDS, RUNTIME_TYPE_NAMES, camel
+from ..dialect.symbols import type_names
 from .engine import Output, dialect_ident
 from .text import wrap
 
@@ -192,15 +193,21 @@ def comment(text: str, indent: int = 0, width: int = 100, prefix: str = "/// ") 
     return "\n".join(out)
 
 
-def field_comment(f: Field, indent: int = 4) -> str:
+def field_comment(f: Field, indent: int = 4, d: Dialect | None = None) -> str:
     extra = []
     if f.units:
         extra.append(f"[{f.units}]")
     if f.enum:
-        extra.append(f"(enum {camel(f.enum)})")
+        extra.append(f"(enum {enum_class(f.enum, d)})")
     if f.extension:
         extra.append("(extension)")
     return comment(" ".join([f.description or f.name, *extra]), indent)
+
+
+def enum_class(name: str, d: Dialect | None) -> str:
+    """The generated type of the enum called `name` (CamelCase when the dialect lacks it)."""
+    got = type_names(d).enums.get(name) if d is not None else None
+    return got or camel(name)
 
 
 def local(m: Message, name: str) -> str:
@@ -216,13 +223,13 @@ def handler_name(m: Message) -> str:
     return f"on_{m.name.lower()}"
 
 
-def handler_fields(m: Message, indent: int = 4) -> str:
+def handler_fields(m: Message, indent: int = 4, d: Dialect | None = None) -> str:
     """A handler's comment lines listing the message's fields: name (type, units, enum) and
     description, in XML order."""
     lines = [" " * indent + "/// Fields of msg:"]
     for f in m.fields:
-        notes = [f.declared_type, *([f.units] if f.units else []), *([f"enum {camel(f.enum)}"] if f.enum else []),
-                 *(["extension"] if f.extension else [])]
+        notes = [f.declared_type, *([f.units] if f.units else []),
+                 *([f"enum {enum_class(f.enum, d)}"] if f.enum else []), *(["extension"] if f.extension else [])]
         head = f"- {f.name} ({', '.join(notes)})"
         text = _clean(f.description)
         lines.extend(comment(f"{head}: {text}" if text else head, indent, prefix="///   ").split("\n"))
@@ -306,9 +313,9 @@ class _Cpp:
             "enum_base": enum_base,
             "enum_value": enum_value,
             "comment": comment,
-            "field_comment": field_comment,
+            "field_comment": lambda f, indent=4: field_comment(f, indent, d),
             "handler_name": handler_name,
-            "handler_fields": handler_fields,
+            "handler_fields": lambda m, indent=4: handler_fields(m, indent, d),
             "local": local,
             "field_kind": field_kind,
         }

@@ -27,6 +27,7 @@ from .java_fields import (
     TYPE_MAPPING,
     class_name,
     default_value,
+    enum_class,
     enum_table,
     enum_type,
     field_doc,
@@ -100,14 +101,25 @@ def registry_class(d: Dialect) -> str:
 
 
 
+def free_name(name: str, taken: list[str]) -> str:
+    """`name`, or with `_` appended until none of `taken` is called that (a private member of a
+    generated class that an entry or a field would otherwise redefine)."""
+    while name in taken:
+        name += "_"
+    return name
+
+
 class _Refs:
     """How generated code outside the runtime package names runtime and message classes:
     imported simple names unless two classes would share one."""
 
     def __init__(self, d: Dialect, root: str) -> None:
         self.root = root
-        self.msg_names = {class_name(m) for m in d.messages if m.complete}
-        self.clash = {n for n in RUNTIME_CLASSES if n in self.msg_names}
+        self.msg_names = {class_name(m, d) for m in d.messages if m.complete}
+        self.d = d
+        # a message class or a field (Wire, Unsigned) of a runtime class's name hides it in Java
+        fields = {f.name for m in d.messages for f in m.fields}
+        self.clash = {n for n in RUNTIME_CLASSES if n in self.msg_names or n in fields}
 
     def rt(self, simple: str, own_class: str = "") -> str:
         if simple in self.clash or simple == own_class:
@@ -125,7 +137,7 @@ class _Refs:
                 if n not in self.clash and n != own_class]
 
     def msg(self, m: Message, own_class: str = "") -> str:
-        cn = class_name(m)
+        cn = class_name(m, self.d)
         if cn in RUNTIME_CLASSES or cn == own_class:
             return f"{self.root}.msg.{cn}"
         return cn
@@ -133,7 +145,7 @@ class _Refs:
     def msg_imports(self, msgs: list[Message], own_class: str = "") -> list[str]:
         out = set()
         for m in msgs:
-            cn = class_name(m)
+            cn = class_name(m, self.d)
             if cn not in RUNTIME_CLASSES and cn != own_class:
                 out.add(f"import {self.root}.msg.{cn};")
         return sorted(out)
@@ -156,17 +168,17 @@ class _Java:
             for n in TRANSFER_FILES:
                 outs.append(Output(f"{root}/transfer/{n}.java", f"java/runtime/transfer/{n}.java.j2"))
         for m in sorted((m for m in d.messages if m.complete), key=lambda m: m.id):
-            outs.append(Output(f"{root}/msg/{class_name(m)}.java", "java/Message.java.j2", context={"m": m}))
+            outs.append(Output(f"{root}/msg/{class_name(m, d)}.java", "java/Message.java.j2", context={"m": m}))
         for e in sorted(d.enums, key=lambda e: e.name):
-            outs.append(Output(f"{root}/enums/{camel(e.name)}.java", "java/Enum.java.j2", context={"e": e}))
+            outs.append(Output(f"{root}/enums/{enum_class(e.name, d)}.java", "java/Enum.java.j2", context={"e": e}))
         outs.append(Output("java/Conformance.java", "java/Conformance.java.j2"))
         outs.append(Output("java/ConformanceJson.java", "java/ConformanceJson.java.j2"))
         for m in sends(d, "tablet"):
-            outs.append(Output(f"{root}/commands/Send{class_name(m)}.java", "java/SendSkeleton.java.j2",
-                               skeleton=True, context={"m": m, "cls": f"Send{class_name(m)}"}))
+            outs.append(Output(f"{root}/commands/Send{class_name(m, d)}.java", "java/SendSkeleton.java.j2",
+                               skeleton=True, context={"m": m, "cls": f"Send{class_name(m, d)}"}))
         for m in receives(d, "tablet"):
-            outs.append(Output(f"{root}/commands/Receive{class_name(m)}.java", "java/ReceiveSkeleton.java.j2",
-                               skeleton=True, context={"m": m, "cls": f"Receive{class_name(m)}"}))
+            outs.append(Output(f"{root}/commands/Receive{class_name(m, d)}.java", "java/ReceiveSkeleton.java.j2",
+                               skeleton=True, context={"m": m, "cls": f"Receive{class_name(m, d)}"}))
         return outs
 
     def owned_dirs(self, d: Dialect) -> list[str]:
@@ -179,7 +191,9 @@ class _Java:
         return {
             "pkg": pkg,
             "registry": registry_class(d),
-            "class_name": class_name,
+            "class_name": lambda m: class_name(m, d),
+            "java_enum_class": lambda e: enum_class(e.name, d),
+            "free_name": free_name,
             "java_type": java_type,
             "is_text": is_text,
             "is_bytes": is_bytes,

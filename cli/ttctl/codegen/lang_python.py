@@ -4,10 +4,12 @@ handler module skeleton for ttctl's plugin system."""
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from typing import Any
 
 from ..dialect.model import BASE_TYPES, Dialect, Enum, Field, Message
 from ..dialect.names import camel
+from ..dialect.symbols import python_entry, type_names
 from .engine import Output, dialect_ident
 from .text import wrap as wrap_words
 
@@ -164,15 +166,68 @@ def doc(text: str, indent: int = 4) -> str:
     return t or "(no description)"
 
 
-def field_doc(f: Field) -> str:
+def field_doc(f: Field, d: Dialect | None = None) -> str:
     extra = []
     if f.units:
         extra.append(f"[{f.units}]")
     if f.enum:
-        extra.append(f"(enum {camel(f.enum)})")
+        extra.append(f"(enum {enum_class(f.enum, d)})")
     if f.extension:
         extra.append("(extension)")
     return doc(" ".join([f.description, *extra]))
+
+
+# Names the class body of a generated message refers to (annotations, defaults), and how to
+# reach them when one of the message's fields has that name (a field `bytes` or `Any` would
+# otherwise be taken as the type in the class's own scope, which mypy refuses).
+_SHADOWABLE: dict[str, tuple[str, str]] = {
+    **{n: (f"_builtins.{n}", "import builtins as _builtins")
+       for n in ("int", "float", "str", "bytes", "bytearray", "tuple", "dict")},
+    "Any": ("_typing.Any", "import typing as _typing"),
+    "ClassVar": ("_typing.ClassVar", "import typing as _typing"),
+    "Sequence": ("_abc.Sequence", "import collections.abc as _abc"),
+    "struct": ("_struct", "import struct as _struct"),
+}
+_IDENT = re.compile(r"\b[A-Za-z_][A-Za-z0-9_]*\b")
+
+
+def shadowed_names(d: Dialect) -> frozenset[str]:
+    """The names of _SHADOWABLE that a field of the dialect is called: spelled qualified in
+    every message (so that a bare import is never left unused or redefined by a parameter)."""
+    fields = {f.name for m in d.messages for f in m.fields}
+    return frozenset(n for n in _SHADOWABLE if n in fields)
+
+
+def qualifier(m: Message, own: str, shadowed: frozenset[str]) -> Callable[[str], str]:
+    """A function spelling a type expression (or a default) for the class body of message `m`
+    (class `own`): unchanged unless the dialect's fields shadow a name in it."""
+    table = {n: _SHADOWABLE[n][0] for n in shadowed}
+    if own in {f.name for f in m.fields}:  # a field named like its own class: the class is Self inside it
+        table[own] = "_typing.Self"
+    if not table:
+        return lambda text: text
+
+    def q(text: str) -> str:
+        if "bytes" in table:  # a call in a default is flagged by ruff (B008) unless it is the builtin's
+            text = re.sub(r"\bbytes\((\d+)\)", lambda x: f'b"\\x00" * {x.group(1)}', text)
+        return _IDENT.sub(lambda x: table.get(x.group(0), x.group(0)), text)
+
+    return q
+
+
+def shadow_imports(messages: list[Message], own: Callable[[Message], str], shadowed: frozenset[str]) -> list[str]:
+    """The module's plain imports: struct, and those the qualified spellings of qualifier() need
+    (in isort's order)."""
+    lines = {"import struct", *(_SHADOWABLE[n][1] for n in shadowed)}
+    if any(own(m) in {f.name for f in m.fields} for m in messages):
+        lines.add("import typing as _typing")
+    return sorted(lines, key=lambda line: (line.split()[1], line))
+
+
+def enum_class(name: str, d: Dialect | None) -> str:
+    """The generated type of the enum called `name` (CamelCase when the dialect lacks it)."""
+    got = type_names(d).enums.get(name) if d is not None else None
+    return got or camel(name)
 
 
 def wrap(text: str, width: int = 96, prefix: str = "    ") -> str:
@@ -203,9 +258,9 @@ def import_sorted(names: list[str]) -> list[str]:
     """isort's order of names in `from x import (...)`: CONSTANTS (two characters or more),
     Classes, functions, each case-insensitively in natural order (F2A before F13)."""
 
-    def key(n: str) -> tuple[int, list[Any]]:
+    def key(n: str) -> tuple[int, list[Any], list[Any]]:
         group = 0 if len(n) > 1 and n.upper() == n else (1 if n[:1].isupper() else 2)
-        return group, _natural(n.lower())
+        return group, _natural(n.lower()), _natural(n)  # FooBar before Foobar, as isort has them
 
     return sorted(names, key=key)
 
@@ -240,6 +295,7 @@ class _Python:
         return [f"python/{package(d, self.override)}"]
 
     def globals(self, d: Dialect) -> dict[str, Any]:
+        shadowed = shadowed_names(d)
         return {
             "pkg": package(d, self.override),
             "py_type": py_type,
@@ -248,7 +304,11 @@ class _Python:
             "pack_arg": pack_arg,
             "unpack_plan": unpack_plan,
             "doc": doc,
-            "field_doc": field_doc,
+            "field_doc": lambda f: field_doc(f, d),
+            "py_entry": python_entry,
+            "qualifier": lambda m: qualifier(m, type_names(d).messages[m.name], shadowed),
+            "shadow_imports": lambda ms: shadow_imports(ms, lambda m: type_names(d).messages[m.name], shadowed),
+            "shadowed": shadowed,
             "wrap": wrap,
             "enum_base": enum_base,
             "isort_sorted": isort_sorted,

@@ -23,6 +23,8 @@ from .names import (
     C_MACROS,
     GENERATED_MESSAGE_MEMBERS,
     IDENTIFIER_RE,
+    JAVA_QUALIFIERS_IN_ENUMS,
+    JAVA_QUALIFIERS_IN_MESSAGES,
     JAVA_RESERVED_TYPES,
     RESERVED_WORDS,
     RUNTIME_TYPE_NAMES,
@@ -32,6 +34,7 @@ from .names import (
     reserved_identifier,
     spelled,
 )
+from .symbols import python_entry, python_entry_clash, type_names
 
 
 class CheckOptions(NamedTuple):
@@ -159,13 +162,13 @@ class _Named(Protocol):
 
 
 def _collisions(items: Sequence[_Named], kind: str, camelfn: Callable[[str], str] | None,
-                rep: Reporter, files: bool = False) -> None:
+                rep: Reporter) -> None:
     """Error when two names give the same name after case folding, or (with `camelfn`) the
-    same identifier after camel-casing. For `files` (types: one generated file each), a
-    warning when the camel-cased names differ only in case."""
+    same identifier after camel-casing. (Types whose names differ only in case once
+    camel-cased, and a message and an enum of the same name, are renamed in the generated code:
+    see _renamed.)"""
     folded: dict[str, tuple[str, _Named]] = {}
     camels: dict[str, tuple[str, _Named]] = {}
-    camel_folded: dict[str, tuple[str, _Named]] = {}
     for item in items:
         name = item.name
         key = name.casefold()
@@ -188,15 +191,6 @@ def _collisions(items: Sequence[_Named], kind: str, camelfn: Callable[[str], str
                       "(one generated identifier or file would overwrite the other)", name)
             continue
         camels[c] = (name, item)
-        if files:
-            prev = camel_folded.get(c.casefold())
-            if prev is not None:
-                rep.warning(item.loc, "CASE-COLLISION",
-                            f"{kind} {name} and {prev[0]} at {prev[1].loc.short()} differ in case only once "
-                            f"camel-cased ({c} vs {camelfn(prev[0])}): their generated files collide on "
-                            "case-insensitive file systems", name)
-                continue
-            camel_folded[c.casefold()] = (name, item)
 
 
 def _names(d: Dialect, rep: Reporter) -> None:
@@ -224,7 +218,8 @@ def _names(d: Dialect, rep: Reporter) -> None:
     rank = {f.path: i for i, f in enumerate(d.files)}
     types: list[Message | Enum] = [*d.messages, *d.enums]
     types.sort(key=lambda t: (rank.get(t.loc.path, -1), t.loc.line))  # report the later definition
-    _collisions(types, "type", camel, rep, files=True)
+    _collisions(types, "type", camel, rep)
+    _renamed(d, rep)
     stems: dict[str, str] = {}
     for df in d.files:
         key = df.stem.casefold()
@@ -233,6 +228,49 @@ def _names(d: Dialect, rep: Reporter) -> None:
                       f"dialect file {df.path} has the same name as {stems[key]} after case folding "
                       "(their generated modules would overwrite each other)", df.stem)
         stems[key] = df.path
+
+
+def _renamed(d: Dialect, rep: Reporter) -> None:
+    """A note for every type the generators rename (dialect.symbols), at its definition, and an
+    error for a field that C++ cannot have: one spelled like its own message's type."""
+    tn = type_names(d)
+    by_name: dict[tuple[str, str], Loc] = {}
+    for m in d.messages:
+        by_name.setdefault(("message", m.name), m.loc)
+    for e in d.enums:
+        by_name.setdefault(("enum", e.name), e.parts[-1] if e.parts else e.loc)
+    for kind, xml, other, code, text in tn.renamed:
+        if code == "TYPE-RENAMED" and other is not None and other != xml:
+            continue  # two names that camel-case alike: a NAME-COLLISION error already
+        rep.note(by_name[(kind, xml)], code, text, xml)
+    entry_names = {x.name for e in d.enums for x in e.entries}
+    for e in d.enums if entry_names & JAVA_QUALIFIERS_IN_ENUMS.keys() else []:
+        for x in e.entries:
+            if x.name in JAVA_QUALIFIERS_IN_ENUMS:
+                rep.error(x.loc, "RESERVED-NAME", f"{e.name}.{x.name}: {JAVA_QUALIFIERS_IN_ENUMS[x.name]}; rename the "
+                          "entry", x.name)
+    field_names = {f.name for m in d.messages for f in m.fields}
+    for m in d.messages if field_names & JAVA_QUALIFIERS_IN_MESSAGES.keys() else []:
+        for f in m.fields:
+            if f.name in JAVA_QUALIFIERS_IN_MESSAGES:
+                rep.error(f.loc, "RESERVED-NAME", f"{m.name}.{f.name}: {JAVA_QUALIFIERS_IN_MESSAGES[f.name]}; rename "
+                          "the field", f.name)
+    if any(python_entry_clash(n) for n in entry_names):
+        for e in d.enums:
+            for x in e.entries:
+                py = python_entry(e, x.name)
+                if py != x.name:
+                    rep.note(x.loc, "ENTRY-RENAMED",
+                             f"{e.name}.{x.name} is generated as {type_names(d).enums[e.name]}.{py} in Python, whose "
+                             f"IntEnum and IntFlag reserve '{x.name}' (C++ and Java keep {x.name}; the wire is "
+                             "unchanged)", x.name)
+    for m in d.messages:
+        own = tn.messages.get(m.name)
+        for f in m.fields:
+            if f.name == own:
+                rep.error(f.loc, "RESERVED-NAME",
+                          f"{m.name}.{f.name}: a field cannot be spelled like its message's generated type {own} "
+                          "(C++ refuses a member named like its class); rename the field", f.name)
 
 
 def _message(d: Dialect, m: Message, rep: Reporter, opts: CheckOptions, own: bool,

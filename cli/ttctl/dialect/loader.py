@@ -40,6 +40,10 @@ from .source import (
 )
 
 MAX_INCLUDE_DEPTH = 32
+# pymavlink's mavgen (generator/mavgen.py, MAXIMUM_INCLUDE_FILE_NESTING = 5) expands includes in
+# 5 rounds: a file included 6 deep is never parsed, and mavgen stops with "ERROR in includes
+# tree, no base found!" (checked with pymavlink 2.4.50). ttctl follows them, with a warning.
+MAVGEN_INCLUDE_NESTING = 5
 _TYPE_RE = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d+)\])?\Z")
 _VALUE_RE = re.compile(r"\s*(?:(0[xX][0-9a-fA-F]+)|(0[bB][01]+)|2\*\*(\d+)|(\d+))\s*\Z")
 
@@ -339,6 +343,33 @@ class _Loader:
         self.shown: dict[str, str] = {}  # realpath -> path as the user will see it
         self.by_name: dict[str, str] = {}  # file name (case-folded) -> realpath of the first loaded
         self.incomplete = False  # an include is missing or unreadable
+        self.edges: list[tuple[str, str, Loc, str]] = []  # includer, included (realpaths), where, as written
+
+    def mavgen_depth(self, root: str) -> None:
+        """Warn, once per chain, where a file is included deeper than pymavlink's mavgen follows.
+        mavgen expands includes in rounds (breadth first), so a file's depth is its shortest chain."""
+        parents: dict[str, tuple[str, Loc, str] | None] = {root: None}
+        frontier, depth = [root], 0
+        while frontier and depth <= MAVGEN_INCLUDE_NESTING:
+            depth += 1
+            nxt = []
+            for f in frontier:
+                for a, b, loc, name in self.edges:
+                    if a == f and b not in parents:
+                        parents[b] = (a, loc, name)
+                        nxt.append(b)
+            frontier = nxt
+        for f in frontier if depth > MAVGEN_INCLUDE_NESTING else []:
+            chain, at = [f], parents[f]
+            assert at is not None
+            _, loc, name = at
+            while (up := parents[chain[-1]]) is not None:
+                chain.append(up[0])
+            shown = " -> ".join(os.path.basename(self.shown.get(p, p)) for p in reversed(chain))
+            self.rep.warning(loc, "INCLUDE-DEPTH-MAVGEN",
+                             f"includes nested {depth} deep ({shown}); pymavlink's mavgen follows includes only "
+                             f"{MAVGEN_INCLUDE_NESTING} deep and stops with 'ERROR in includes tree, no base found!': "
+                             "other MAVLink tools cannot build this dialect (fold a level into its includer)", name)
 
     def search_path(self, includer: str) -> list[str]:
         return [os.path.dirname(includer), *self.include_dirs]
@@ -412,6 +443,7 @@ class _Loader:
             if len(stack) >= MAX_INCLUDE_DEPTH:
                 self.rep.error(loc, "INCLUDE-DEPTH", f"includes nested deeper than {MAX_INCLUDE_DEPTH} files", name)
                 continue
+            self.edges.append((real, treal, loc, name))
             sub = self.load(target, stack, loc)
             if sub is not None:
                 df.resolved.append(treal)
@@ -548,6 +580,7 @@ def load_dialect(path: str, include_dirs: list[str] | None = None, schema: bool 
     loader = _Loader(include_dirs or [], rep, schema)
     root = loader.load(path, [], None)
     assert root is not None
+    loader.mavgen_depth(os.path.realpath(path))
     files = loader.order
     enums = merge_enums(files, rep)
     messages = [m for f in files for m in f.messages]

@@ -93,10 +93,21 @@ RUNTIME_TYPE_NAMES = _words(
 # Members every generated message class/struct defines; a field of the same name would
 # shadow them. Kept in one place so the templates and the validator agree.
 GENERATED_MESSAGE_MEMBERS = _words(
-    """MSG_ID NAME CRC_EXTRA PAYLOAD_LENGTH MIN_LENGTH FIELDS ENUMS pack pack_payload unpack
+    """MSG_ID NAME CRC_EXTRA PAYLOAD_LENGTH MIN_LENGTH FIELDS ENUMS TYPES pack pack_payload unpack
     unpack_payload to_dict from_dict encode decode msgid crc_extra self cls get_msgId get_type
     get_seq get_srcSystem get_srcComponent get_signed"""
 )
+
+# Names the generated Java code uses as the first part of a qualified name (java.util.Arrays,
+# Long.toHexString): Java resolves such a name to a field or constant of the class first, so a
+# field (message classes) or an entry (enum classes) of that name breaks them.
+JAVA_QUALIFIERS_IN_MESSAGES: dict[str, str] = {
+    "java": "the generated Java message class calls java.util.Arrays, which a field named java hides",
+}
+JAVA_QUALIFIERS_IN_ENUMS: dict[str, str] = {
+    "java": "the generated Java enum class calls java.util.Arrays, which an entry named java hides",
+    "Long": "the generated Java enum class calls Long.toHexString, which an entry named Long hides",
+}
 
 
 def camel(name: str) -> str:
