@@ -264,6 +264,7 @@ class GcsBridge:
         u = self.uplink.stats
         return (f"ground stations: {self.stats.up} frames up ({u.sent} sent, {u.duplicates} retries dropped as "
                 f"duplicates, {u.replaced} overtaken by newer, {u.overflow} dropped for room, "
-                f"{self.stats.not_carried} for other systems not carried), {self.stats.down} down"
+                + (f"{u.user_overflow} of their own messages dropped for room, " if u.user_overflow else "")
+                + f"{self.stats.not_carried} for other systems not carried), {self.stats.down} down"
                 + (f"; MAVLink 1: {self.stats.v1_up} up, {self.stats.v1_down} down, {self.stats.v1_dropped} not "
                    f"carried" if self.stats.v1_up or self.stats.v1_dropped else ""))
