@@ -357,3 +357,35 @@ def test_the_doc_shows_the_plugin_answering_with_reply() -> None:
     assert "ctx.reply(m.KrMotorStatus(" in (OWN / "motors.py").read_text()
     assert "ctx.reply(m.KrMotorStatus(" in doc_block("on_kr_motor_control")
 
+
+
+def test_a_message_the_tablet_lacks_is_carried_by_its_header_as_mavlink_router_does(own: Path, start: Start) -> None:
+    """A tablet that speaks only ttapi between a station and a robolab vehicle: the station's
+    KR_MOTOR_CONTROL (an id the tablet cannot check) is carried up by its header and reaches the
+    plugin, said once; from a station at the tablet's own ids (which the bridge must rewrite, and
+    the CRC covers) it is not, said once; no crash anywhere."""
+    c = chain(start, own, stations=2, onboard=("--dialect", "robolab.xml", "--plugin", "motors.py"))
+    a, b = RawStation(own, c.gcs[0], 250, 190), RawStation(own, c.gcs[1], 255, 190)
+    try:
+        for st in (a, b):
+            while st.vehicle is None:
+                st.pump(0.2)
+        m = a.mod
+        for seq in range(6):
+            a.send(m.MAVLink_kr_motor_control_message(1, seq, m.KR_VEHICLE_DIR_FORWARD, 20))
+            b.send(m.MAVLink_kr_motor_control_message(1, 100 + seq, m.KR_VEHICLE_DIR_FORWARD, 20))
+            a.pump(0.3)
+            b.pump(0.1)
+        c.onboard.wait_for("motors: seq ", timeout=10)
+    finally:
+        a.sock.close()
+        b.sock.close()
+    handled = {int(s) for s in re.findall(r"motors: seq (\d+)", c.onboard.stderr)}
+    assert handled and handled <= set(range(6)), handled  # (10 % loss: most of them) and none of 255/190's
+    line = c.stop_tablet()
+    err = c.tablet.stderr if c.tablet is not None else ""
+    assert err.count("carrying message id 51000 from a ground station by its header") == 1, err
+    assert err.count("not carrying message id 51000 from a ground station: the tablet's dialect (ttapi) lacks it "
+                     "and the station uses the tablet's own ids 255/190") == 1, err
+    assert re.search(r"ids the dialect lacks: \d+ carried by header, 6 not", line), line
+    no_traceback(c.onboard, c.relay, c.tablet)
