@@ -331,6 +331,59 @@ def test_a_flood_an_unknown_id_and_a_raising_plugin_are_counted_said_once_and_st
     assert "Traceback" not in err
 
 
+TELL = '''
+from robolab import messages as m
+
+from ttctl.ends.plugins import Context, Plugin, handles
+
+
+class Tell(Plugin):
+    @handles(m.KrMotorControl)
+    def on_control(self, msg: m.KrMotorControl, ctx: Context) -> None:
+        if msg.seq == 7:  # to station 250 alone, then to every station
+            ctx.send_gcs(m.KrMotorStatus(seq=1007, note="to 250"), to=250)
+            ctx.send_gcs(m.KrMotorStatus(target_system=0, seq=2007, note="to all"))
+        elif msg.seq == 8:
+            ctx.send_gcs(m.KrMotorStatus(seq=1008), to=(99, 1))  # no such station: ValueError, counted
+'''
+
+
+def test_a_plugin_publishes_to_one_station_or_to_every_one(own: Path, start: Start) -> None:
+    """`ctx.send_gcs(msg, to=sysid)` reaches that station only (on its own link, addressed to it),
+    `ctx.send_gcs(msg)` every station; a station nobody heard is a ValueError the node survives."""
+    (own / "tell.py").write_text(TELL)
+    p250, p251 = free_port(), free_port()
+    node = start("onboard", "emulate", "onboard", "--dialect", "robolab.xml", "--plugin", "tell.py",
+                 "--no-entry-points", "--listen", f"udpin:{LOCAL}:{free_port()}",
+                 "--gcs", f"udpout:{LOCAL}:{p250}", "--gcs", f"udpout:{LOCAL}:{p251}")
+    node.wait_for("plugins Tell", timeout=60)
+    a, b = RawStation(own, p250, 250, 190), RawStation(own, p251, 251, 190)
+    try:
+        for st in (a, b):
+            while st.vehicle is None:
+                st.pump(0.2)
+        m = a.mod
+        a.send(m.MAVLink_heartbeat_message(m.MAV_TYPE_GCS, m.MAV_AUTOPILOT_INVALID, 0, 0, 4, 3))  # heard: 250
+        a.pump(0.2)
+        b.send(m.MAVLink_kr_motor_control_message(1, 7, m.KR_VEHICLE_DIR_FORWARD, 20))
+        b.send(m.MAVLink_kr_motor_control_message(1, 8, m.KR_VEHICLE_DIR_FORWARD, 20))
+        for _ in range(10):
+            a.pump(0.1)
+            b.pump(0.1)
+    finally:
+        a.sock.close()
+        b.sock.close()
+    at_a = sorted((x.seq, x.target_system) for x in a.kinds("KR_MOTOR_STATUS"))
+    at_b = sorted((x.seq, x.target_system) for x in b.kinds("KR_MOTOR_STATUS"))
+    assert at_a == [(1007, 250), (2007, 0)], at_a
+    assert at_b == [(2007, 0)], at_b
+    node.signal(2)
+    assert node.wait(15) == 0
+    assert node.stderr.count("plugin Tell.on_control failed on KR_MOTOR_CONTROL: ValueError: no ground station "
+                             "99/1 was heard here") == 1, node.stderr
+    assert "Traceback" not in node.stderr
+
+
 def test_the_bridge_queues_a_stations_own_messages_behind_its_commands() -> None:
     """The tablet's uplink (sans-IO): a station flooding its own messages keeps 16 of them at
     most, and its COMMAND_LONG and HEARTBEAT leave first."""
