@@ -442,3 +442,44 @@ def test_a_message_the_tablet_lacks_is_carried_by_its_header_as_mavlink_router_d
                      "and the station uses the tablet's own ids 255/190") == 1, err
     assert re.search(r"ids the dialect lacks: \d+ carried by header, 6 not", line), line
     no_traceback(c.onboard, c.relay, c.tablet)
+
+
+def test_a_station_flooding_its_own_messages_through_the_tablet_starves_no_command(own: Path, start: Start) -> None:
+    """Through tablet -> m100 relay -> onboard: a station sends KR_MOTOR_CONTROL as fast as it can
+    for 6 s; meanwhile its COMMAND_LONGs are acked and the vehicle's HEARTBEAT keeps coming, and
+    some of its own messages are still answered."""
+    c = chain(start, own, onboard=("--dialect", "robolab.xml", "--plugin", "motors.py"),
+              tablet=("--dialect", "robolab.xml"))
+    st = RawStation(own, c.gcs[0], 250, 190)
+    acks: list[float] = []
+    try:
+        while st.vehicle is None:
+            st.pump(0.2)
+        m = st.mod
+        begin = time.monotonic()
+        sent = 0
+        asked_at = 0.0
+        while time.monotonic() - begin < 6.0:
+            for _ in range(50):
+                st.send(m.MAVLink_kr_motor_control_message(1, sent & 0xFFFF, m.KR_VEHICLE_DIR_FORWARD, 10))
+                sent += 1
+            now = time.monotonic()
+            if now - asked_at > 1.0:  # a command a second, as a station polls
+                st.send(m.MAVLink_command_long_message(1, 1, m.MAV_CMD_REQUEST_MESSAGE, 0,
+                                                       m.MAVLINK_MSG_ID_AUTOPILOT_VERSION, 0, 0, 0, 0, 0, 0))
+                asked_at = now
+            st.pump(0.01)
+        st.pump(2.0)
+        acks = [t for t, x in st.seen if x.get_type() == "COMMAND_ACK"]
+        heartbeats = [t for t, x in st.seen if x.get_type() == "HEARTBEAT" and x.get_srcComponent() == 1
+                      and t >= begin]
+        answers = st.kinds("KR_MOTOR_STATUS", begin)
+    finally:
+        st.sock.close()
+    assert sent > 5000, sent
+    assert len(acks) >= 4, len(acks)  # 6 asked over a 10 % lossy link, each the whole round trip
+    assert len(heartbeats) >= 5 and max(b - a for a, b in itertools.pairwise(heartbeats)) < 3.0, heartbeats
+    assert answers, "none of the station's own messages was answered"
+    line = c.stop_tablet()
+    assert re.search(r"\d+ of their own messages dropped for room", line), line
+    no_traceback(c.onboard, c.relay, c.tablet)
