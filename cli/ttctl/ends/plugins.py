@@ -40,7 +40,9 @@ class Context:
     tablet, or the ground station it came from, on the link it came in on (directly, or back
     through the tablet's bridge), with `target_system`/`target_component` set to the request's
     source if the message has them. `send_gcs(msg)` publishes to every ground station;
-    `send_gcs(msg, to=(sysid, compid))` (or `to=sysid`) to one."""
+    `send_gcs(msg, to=(sysid, compid))` (or `to=sysid`) to one. On the onboard end the user's
+    plugins hear ground stations' messages as well as the tablet's: `source` says which
+    ("tablet" or "gcs")."""
 
     def __init__(self, send: Callable[..., None] | None = None, log: Callable[[str], None] | None = None,
                  sysid: int = 1, compid: int = 240, vehicle: Any = None,
