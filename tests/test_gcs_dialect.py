@@ -350,7 +350,8 @@ class Tell(Plugin):
 
 def test_a_plugin_publishes_to_one_station_or_to_every_one(own: Path, start: Start) -> None:
     """`ctx.send_gcs(msg, to=sysid)` reaches that station only (on its own link, addressed to it),
-    `ctx.send_gcs(msg)` every station; a station nobody heard is a ValueError the node survives."""
+    `ctx.send_gcs(msg)` every station; a station nobody heard is a ValueError the node survives; a
+    message for another vehicle (target_system 2) does not reach the plugin."""
     (own / "tell.py").write_text(TELL)
     p250, p251 = free_port(), free_port()
     node = start("onboard", "emulate", "onboard", "--dialect", "robolab.xml", "--plugin", "tell.py",
@@ -365,6 +366,7 @@ def test_a_plugin_publishes_to_one_station_or_to_every_one(own: Path, start: Sta
         m = a.mod
         a.send(m.MAVLink_heartbeat_message(m.MAV_TYPE_GCS, m.MAV_AUTOPILOT_INVALID, 0, 0, 4, 3))  # heard: 250
         a.pump(0.2)
+        b.send(m.MAVLink_kr_motor_control_message(2, 7, m.KR_VEHICLE_DIR_FORWARD, 20))  # vehicle 2's: not ours
         b.send(m.MAVLink_kr_motor_control_message(1, 7, m.KR_VEHICLE_DIR_FORWARD, 20))
         b.send(m.MAVLink_kr_motor_control_message(1, 8, m.KR_VEHICLE_DIR_FORWARD, 20))
         for _ in range(10):

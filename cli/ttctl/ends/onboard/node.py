@@ -398,6 +398,8 @@ class OnboardNode:
         second per station), their `ctx.reply` back to that station on the link it came in on."""
         if not self.gcs_dispatcher.handlers_for(msg.MSG_ID):
             return
+        if getattr(msg, "target_system", 0) not in (0, self.cfg.sysid):
+            return  # another vehicle's (a ground station's link may be shared by a fleet)
         src = (msg.get_srcSystem(), msg.get_srcComponent())
         if not self.user.admit(now, src, msg.NAME):
             return
