@@ -45,8 +45,11 @@ def test_which_frames_are_a_ground_stations() -> None:
                  "FILE_TRANSFER_PROTOCOL", "MANUAL_CONTROL", "SET_POSITION_TARGET_LOCAL_NED", "REQUEST_DATA_STREAM"):
         assert ground_station_protocol(name), name
         assert from_ground_station(name, TABLET, False), name  # whoever sends it (a naive bridge keeps 255/190)
-    for name in ("TT_ACTION_COMMAND", "TT_FILE_OFFER", "DJI_POSE_STAMPED", "KR_MOTOR_CONTROL", "TT_LOG"):
+    for name in ("TT_ACTION_COMMAND", "TT_FILE_OFFER", "DJI_POSE_STAMPED", "TT_LOG"):
         assert not from_ground_station(name, (245, 190), False), name
+    # the user's own messages: a ground station's unless the tablet sends them (issue 28)
+    assert from_ground_station("KR_MOTOR_CONTROL", (245, 190), False)
+    assert not from_ground_station("KR_MOTOR_CONTROL", TABLET, False)
     assert not from_ground_station("HEARTBEAT", TABLET, True)  # the tablet's own heartbeat stays the tablet's
     assert from_ground_station("HEARTBEAT", (254, 190), True)
     assert not from_ground_station("HEARTBEAT", (254, 190), False)  # not a ground station's heartbeat

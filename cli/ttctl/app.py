@@ -111,7 +111,9 @@ def validate(
 def gen(
     dialect: Annotated[Path | None, typer.Argument(help="Dialect XML file (default: dialects/ttapi.xml).",
                                                      show_default=False)] = None,
-    lang: Annotated[str, typer.Option("--lang", help="Comma-separated: python,cpp,java.")] = "python,cpp,java",
+    lang: Annotated[str, typer.Option("--lang", help="Comma-separated: python,cpp,java; xml writes the dialect as one "
+                                                  "file, includes resolved (MAVSDK's load_custom_xml, libmav).")]
+    = "python,cpp,java",
     out: Annotated[Path, typer.Option("-o", "--out", help="Output directory.")] = Path("generated"),
     check: Annotated[bool, typer.Option("--check", help="Write nothing; list files that differ; exit 1 if any.")]
     = False,

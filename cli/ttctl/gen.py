@@ -9,12 +9,13 @@ import sys
 from collections.abc import Callable
 from pathlib import Path
 
-from .codegen.engine import LANGUAGES, Names, language, render, write_tree
+from .codegen.engine import LANGUAGES, Names, Output, language, render, write_tree
 from .dialect.names import C_RESERVED, CPP_KEYWORDS, IDENTIFIER_RE, JAVA_CONTEXTUAL, JAVA_KEYWORDS, PYTHON_KEYWORDS
 from .validate import include_dir_problem, load_and_check, user_warnings
 
 DEFAULT_DIALECT = "dialects/ttapi.xml"
 DEFAULT_OUT = "generated"
+XML = "xml"  # not a language: the dialect as one XML file, its includes resolved (codegen/xml_export.py)
 
 
 class GenError(Exception):
@@ -27,9 +28,10 @@ def parse_langs(spec: str) -> list[str]:
     langs = [s.strip().lower() for s in spec.split(",") if s.strip()]
     aliases = {"py": "python", "c++": "cpp", "cxx": "cpp"}
     langs = [aliases.get(x, x) for x in langs]
-    bad = [x for x in langs if x not in LANGUAGES]
+    bad = [x for x in langs if x not in LANGUAGES and x != XML]
     if bad or not langs:
-        raise GenError(f"--lang: unknown language {', '.join(bad) or '(none)'}; choose from {', '.join(LANGUAGES)}", 2)
+        raise GenError(f"--lang: unknown language {', '.join(bad) or '(none)'}; choose from "
+                       f"{', '.join(LANGUAGES)}, or {XML} (the dialect as one file, includes resolved)", 2)
     return list(dict.fromkeys(langs))
 
 
@@ -191,7 +193,11 @@ def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool
         print(f"{dialect_path}: {rep.errors} error(s); nothing generated", file=sys.stderr)
         return 1
     try:
-        rendered = render(dialect, langs, user_templates, names=names)
+        rendered = render(dialect, [x for x in langs if x != XML], user_templates, names=names)
+        if XML in langs:
+            from .codegen.xml_export import export_path, flatten
+
+            rendered.append((Output(export_path(dialect), ""), flatten(dialect)))
     except Exception as e:  # jinja2 template errors (user templates), undefined names
         import jinja2
 
@@ -199,7 +205,7 @@ def run_gen(dialect_path: str | None, langs_spec: str, out_dir: str, check: bool
             where = f"{e.filename}:{e.lineno}: " if isinstance(e, jinja2.TemplateSyntaxError) else ""
             raise GenError(f"template error: {where}{e}", 2) from None
         raise
-    owned = [p for lang in langs for p in language(lang, names).owned_dirs(dialect)]
+    owned = [p for lang in langs if lang != XML for p in language(lang, names).owned_dirs(dialect)]
     created: list[Path] = []
     try:
         report = write_tree(out, rendered, owned, check, force_skeletons, created)

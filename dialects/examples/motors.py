@@ -1,5 +1,6 @@
 """The robot's motors, onboard: every KR_MOTOR_CONTROL is obeyed and answered with a
-KR_MOTOR_STATUS carrying its seq (the README's walkthrough, and tests/test_own_dialect.py).
+KR_MOTOR_STATUS carrying its seq, to whoever sent it: the tablet, or a ground station on its link
+(the README's walkthrough, tests/test_own_dialect.py and tests/test_gcs_dialect.py).
 
     ttctl emulate onboard --dialect robolab.xml --plugin motors.py
 """
@@ -21,5 +22,5 @@ class Motors(Plugin):
         self.dir, self.speed = e.KrVehicleDir(msg.dir), msg.speed
         self.handled += 1
         ctx.log(f"motors: seq {msg.seq}: {self.dir.name} at {self.speed} %")
-        ctx.send(m.KrMotorStatus(target_system=msg.get_srcSystem(), seq=msg.seq, dir=self.dir, speed=self.speed,
-                                 rpm=self.speed * 12.5, note="ok"), urgent=True)
+        ctx.reply(m.KrMotorStatus(target_system=msg.get_srcSystem(), seq=msg.seq, dir=self.dir, speed=self.speed,
+                                  rpm=self.speed * 12.5, note="ok"), urgent=True)

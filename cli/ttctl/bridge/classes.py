@@ -4,7 +4,9 @@ The tablet end is 255/190, which is also QGroundControl's default: the bridge ca
 station with those ids under another system id (routes.py), so that at the onboard end the
 source tells the tablet's traffic from a ground station's. Frames of the ground-station protocols
 (commands, parameters, missions, FTP, set-points...) are a ground station's whoever sends them:
-the tablet's own traffic is TT_* messages, its set-points and its HEARTBEAT.
+the tablet's own traffic is TT_* messages, its set-points and its HEARTBEAT. Any other message
+(the user's own dialect's) is a ground station's when it comes from other ids than the tablet's:
+the bridge carries every station under ids of its own.
 """
 
 from __future__ import annotations
@@ -28,10 +30,16 @@ def ground_station_protocol(name: str) -> bool:
     return name in PROTOCOL_NAMES or name.startswith(PROTOCOL_PREFIXES)
 
 
+TABLET_PREFIXES = ("TT_", "DJI_")  # the tablet protocol's own messages (ttapi.xml), whoever sends them
+
+
 def from_ground_station(name: str, src: tuple[int, int], gcs_type: bool) -> bool:
     """At the onboard end: is this DTT frame a ground station's? `gcs_type`: a HEARTBEAT of
     MAV_TYPE_GCS. The tablet's own HEARTBEAT stays the tablet's; any other end's GCS heartbeat,
-    and every frame of the ground-station protocols, is a ground station's."""
+    and every frame of the ground-station protocols, is a ground station's; so is any other
+    message (the user's own) from ids other than the tablet's."""
     if name == "HEARTBEAT":
         return gcs_type and src != TABLET
-    return ground_station_protocol(name)
+    if ground_station_protocol(name):
+        return True
+    return src != TABLET and not name.startswith(TABLET_PREFIXES)

@@ -8,6 +8,9 @@ longest-waiting first. The queue is a bulk source of the tablet's scheduler, so 
 commands, acks and file control go ahead of it at packet granularity, and it never takes more
 than `budget_Bps` on average. Bounded: `max_protocol` frames and `max_slots` slots; beyond that
 the oldest protocol frame (or slot) is dropped and counted, whatever a ground station floods.
+Other messages (the user's own dialect's) wait in a queue of their own, `max_user` long, and
+leave after the protocol frames and the slots: a station flooding its own messages loses its
+oldest ones, never a command or a heartbeat.
 """
 
 from __future__ import annotations
@@ -15,10 +18,11 @@ from __future__ import annotations
 from collections import OrderedDict, deque
 from dataclasses import dataclass
 
-from .classes import NEWEST
+from .classes import NEWEST, ground_station_protocol
 
 MAX_PROTOCOL = 64
 MAX_SLOTS = 64
+MAX_USER = 16
 HEADER = 10  # a MAVLink 2 frame's header; the payload runs to the 2-byte CRC (frames here are unsigned)
 
 
@@ -29,6 +33,7 @@ class UplinkStats:
     duplicates: int = 0  # a retry of a frame still waiting
     replaced: int = 0  # a newest-wins frame overtaken while waiting
     overflow: int = 0  # dropped: the queue was full
+    user_overflow: int = 0  # the user's own messages dropped: their queue was full
     sent_bytes: int = 0
 
 
@@ -40,7 +45,7 @@ def _key(frame: bytes) -> tuple[int, int, int, bytes]:
 
 class GcsUplink:
     def __init__(self, budget_Bps: float | None, max_protocol: int = MAX_PROTOCOL, max_slots: int = MAX_SLOTS,
-                 burst: int = 100) -> None:
+                 burst: int = 100, max_user: int = MAX_USER) -> None:
         self.budget = budget_Bps
         self.max_protocol = max_protocol
         self.max_slots = max_slots
@@ -48,6 +53,8 @@ class GcsUplink:
         self.protocol: deque[tuple[tuple[int, int, int, bytes], bytes]] = deque()
         self._waiting: dict[tuple[int, int, int, bytes], int] = {}  # key -> how many copies wait (0 or 1)
         self.slots: OrderedDict[tuple[int, int, int], tuple[bytes, float]] = OrderedDict()
+        self.max_user = max_user
+        self.user: deque[tuple[tuple[int, int, int, bytes], bytes]] = deque()
         self.tokens = float(burst)
         self._at: float | None = None
         self.stats = UplinkStats()
@@ -73,6 +80,15 @@ class GcsUplink:
         if self._waiting.get(key):
             self.stats.duplicates += 1
             return "duplicate"
+        if not ground_station_protocol(name):
+            if len(self.user) >= self.max_user:
+                old, _ = self.user.popleft()
+                self._forget(old)
+                self.stats.user_overflow += 1
+            self.user.append((key, frame))
+            self._waiting[key] = 1
+            self.stats.queued += 1
+            return "queued"
         if len(self.protocol) >= self.max_protocol:
             old, _ = self.protocol.popleft()
             self._forget(old)
@@ -97,8 +113,11 @@ class GcsUplink:
         if self.protocol:
             key, frame = self.protocol.popleft()
             self._forget(key)
-        else:
+        elif self.slots:
             _, (frame, _) = self.slots.popitem(last=False)  # the longest waiting
+        else:
+            key, frame = self.user.popleft()
+            self._forget(key)
         self.tokens -= len(frame)
         self.stats.sent += 1
         self.stats.sent_bytes += len(frame)
@@ -107,10 +126,10 @@ class GcsUplink:
     def has_data(self, now: float) -> bool:
         """Something waits and the budget lets it go now."""
         self._refill(now)
-        return bool(self.protocol or self.slots) and (not self.budget or self.tokens > 0)
+        return bool(self.protocol or self.slots or self.user) and (not self.budget or self.tokens > 0)
 
     def deadline(self, now: float) -> float | None:
-        if not (self.protocol or self.slots):
+        if not (self.protocol or self.slots or self.user):
             return None
         self._refill(now)
         if not self.budget or self.tokens > 0:
@@ -119,7 +138,8 @@ class GcsUplink:
 
     @property
     def waiting_bytes(self) -> int:
-        return sum(len(f) for _, f in self.protocol) + sum(len(f) for f, _ in self.slots.values())
+        return (sum(len(f) for _, f in self.protocol) + sum(len(f) for f, _ in self.slots.values())
+                + sum(len(f) for _, f in self.user))
 
     def __len__(self) -> int:
-        return len(self.protocol) + len(self.slots)
+        return len(self.protocol) + len(self.slots) + len(self.user)

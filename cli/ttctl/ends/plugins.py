@@ -34,7 +34,15 @@ class Context:
     every so often (`every(seconds, fn)`), the dialect itself (`dialect`: its message classes and
     enums, `ctx.dialect.MyPong(...)`), the vehicle (`vehicle.snapshot()` for its state) when the
     end has one, and `shared`, a dict plugins read each other's results from (the orbit camera
-    puts its latest `Camera` under "orbit_camera")."""
+    puts its latest `Camera` under "orbit_camera").
+
+    In a handler, `reply(msg)` answers whoever sent the message being handled (`request`): the
+    tablet, or the ground station it came from, on the link it came in on (directly, or back
+    through the tablet's bridge), with `target_system`/`target_component` set to the request's
+    source if the message has them. `send_gcs(msg)` publishes to every ground station;
+    `send_gcs(msg, to=(sysid, compid))` (or `to=sysid`) to one. On the onboard end the user's
+    plugins hear ground stations' messages as well as the tablet's: `source` says which
+    ("tablet" or "gcs")."""
 
     def __init__(self, send: Callable[..., None] | None = None, log: Callable[[str], None] | None = None,
                  sysid: int = 1, compid: int = 240, vehicle: Any = None,
@@ -50,6 +58,10 @@ class Context:
         self.compid = compid
         self.vehicle = vehicle
         self.logged: list[str] = []
+        self.request: Any = None  # the message being handled (set by Dispatcher.dispatch)
+        self.source: str | None = None  # where it came from: "tablet" or "gcs" (None: outside a handler)
+        self._reply: Callable[[Any, bool], None] | None = None
+        self._send_to: Callable[[Any, tuple[int, int]], None] | None = None
 
     def every(self, seconds: float, fn: Callable[[], None]) -> None:
         """Call fn every `seconds` (of the end's clock) from now on; an fn that raises is logged."""
@@ -68,12 +80,31 @@ class Context:
         self._check(msg)
         self._send(msg, urgent)
 
-    def send_gcs(self, msg: Any) -> None:
-        """Send to every ground station (as the autopilot component)."""
+    def send_gcs(self, msg: Any, to: int | tuple[int, int] | None = None) -> None:
+        """Send to every ground station (as the autopilot component), or with `to` (a system id,
+        or (sysid, compid)) to the one station heard with those ids, on the link it was heard on."""
         if self._send_gcs is None:
             raise RuntimeError("this context has no ground-station link")
         self._check(msg)
-        self._send_gcs(msg)
+        if to is None:
+            self._send_gcs(msg)
+            return
+        if self._send_to is None:
+            raise RuntimeError("this context cannot address one ground station")
+        peer = (to, 0) if isinstance(to, int) else (int(to[0]), int(to[1]))
+        _address(msg, peer)
+        self._send_to(msg, peer)
+
+    def reply(self, msg: Any, urgent: bool = False) -> None:
+        """Answer the message being handled: to the tablet (as `send`) or to the ground station
+        that sent it, on its link; target_system/target_component (if `msg` has them) are set to
+        the request's source. RuntimeError outside a handler, ValueError for a message the
+        link's dialect lacks."""
+        if self._reply is None or self.request is None:
+            raise RuntimeError("reply() answers the message being handled: call it from a handler")
+        self._check(msg)
+        _address(msg, (self.request.get_srcSystem(), self.request.get_srcComponent()))
+        self._reply(msg, urgent)
 
     def _check(self, msg: Any) -> None:
         """A message the link's dialect lacks (or defines otherwise) would be refused by every
@@ -88,6 +119,14 @@ class Context:
         self.logged.append(text)
         if self._log is not None:
             self._log(text)
+
+
+def _address(msg: Any, peer: tuple[int, int]) -> None:
+    """Address `msg` to `peer` where it has the fields for it (a compid 0 leaves it as it is)."""
+    if hasattr(msg, "target_system"):
+        msg.target_system = peer[0]
+    if hasattr(msg, "target_component") and peer[1]:
+        msg.target_component = peer[1]
 
 
 F = TypeVar("F", bound=Callable[..., None])
@@ -188,16 +227,26 @@ class Dispatcher:
     def handlers_for(self, msgid: int) -> list[Handler]:
         return list(self._table.get(msgid, ()))
 
-    def dispatch(self, msg: Any, ctx: Context) -> int:
-        """Run every handler of msg's id; returns how many ran."""
+    def dispatch(self, msg: Any, ctx: Context, reply: Callable[[Any, bool], None] | None = None,
+                 source: str = "tablet") -> int:
+        """Run every handler of msg's id, `ctx.reply` answering through `reply` (None: through
+        `ctx.send`); returns how many ran."""
         handlers = self._table.get(msg.MSG_ID, ())
-        for h in handlers:
-            try:
-                h(msg, ctx)
-            except Exception as e:
-                self.errors += 1
-                if self.on_error is not None:
-                    self.on_error(msg, e, owner(h))
+        if not handlers:
+            return 0
+        saved = ctx.request, ctx.source, ctx._reply
+        ctx.request, ctx.source = msg, source
+        ctx._reply = reply if reply is not None else (lambda m, urgent: ctx.send(m, urgent))
+        try:
+            for h in handlers:
+                try:
+                    h(msg, ctx)
+                except Exception as e:
+                    self.errors += 1
+                    if self.on_error is not None:
+                        self.on_error(msg, e, owner(h))
+        finally:
+            ctx.request, ctx.source, ctx._reply = saved
         return len(handlers)
 
 

@@ -6,7 +6,9 @@ Which DTT frames are a ground station's: bridge/classes.py. While one was heard 
 seconds, the vehicle's broadcasts go down DTT too (its HEARTBEAT always): its streams newest-wins per type, fitted to
 `share` of the downlink (bridge/downfit.py), everything else (acks, parameters, mission items,
 STATUSTEXT, and the HEARTBEAT) in order below the tablet's own commands and acks, an answer equal
-to one still waiting not twice (bridge/answers.py).
+to one still waiting not twice (bridge/answers.py). Plugins' answers to a station's own messages
+(the user's dialect) wait in a small queue of their own beside those, a source of the scheduler
+like them: a station flooding its own messages cannot delay the vehicle's acks or HEARTBEAT.
 """
 
 from __future__ import annotations
@@ -21,6 +23,7 @@ from ...wire.bindings import Bindings
 from .gcs import GroundStations
 
 DTT = "dtt"  # the ground stations' link key for those behind the tablet
+USER_LIMIT = 32  # plugins' answers waiting for the downlink (beyond it the oldest goes, counted)
 
 
 class DttGroundStations:
@@ -32,6 +35,7 @@ class DttGroundStations:
         self.fit = StreamFit(share * downlink_Bps if downlink_Bps else None,
                              asked=lambda mid: gcs.rates.interval.get(mid), encode=self.encoder.encode)
         self.answers = AnswerQueue(self.encoder.encode)
+        self.user = AnswerQueue(self.encoder.encode, limit=USER_LIMIT)
         self.endpoint: Endpoint | None = None
         self.heard_at: float | None = None  # loop time of the last ground-station frame over DTT
         self.frames_in = 0
@@ -41,6 +45,7 @@ class DttGroundStations:
         self.endpoint = endpoint
         endpoint.add_stream(self.answers)
         endpoint.add_stream(self.fit)
+        endpoint.add_stream(self.user)
 
     def takes(self, msg: Any) -> bool:
         b = self.b
@@ -69,4 +74,9 @@ class DttGroundStations:
             msg = b.MessageInterval(message_id=msg.message_id,
                                     interval_us=int(self.fit.interval_us(msg.message_id, msg.interval_us)))
         if self.answers.put(msg):
+            self.frames_out += 1
+
+    def send_user(self, msg: Any) -> None:
+        """A plugin's answer to a station behind the tablet (addressed by its target fields, if any)."""
+        if self.endpoint is not None and self.user.put(msg):
             self.frames_out += 1

@@ -30,6 +30,7 @@ from ..runtime import Runner, unknown_note
 from .autopilot import TABLET, Autopilot
 from .dtt_gcs import DTT, DttGroundStations
 from .gcs import GroundStations
+from .gcs_user import UserTraffic, msgid_of
 from .setpoints import SetpointDesk
 from .trajectory import TrajectoryError, parse_trajectory
 from .vehicle import Home, Refused, SimVehicle, State
@@ -96,6 +97,12 @@ class OnboardNode:
         self.plugins = builtin + (plugins or [])
         for p in self.plugins:
             self.dispatcher.add(p)
+        # the user's plugins also hear ground stations (the built-in ones serve the tablet's VR)
+        self.gcs_dispatcher = Dispatcher(on_error=self._gcs_plugin_error, dialect=bindings)
+        for p in plugins or []:
+            self.gcs_dispatcher.add(p)
+        self.user = UserTraffic(self.log)
+        self._stations: dict[tuple[int, int], tuple[Hashable, Hashable]] = {}  # ids -> (link, address)
         self.endpoint: Endpoint | None = None
         self.runner: Runner | None = None
         self.probes: Any = None  # ttctl.link.probes.LinkProbes
@@ -108,6 +115,7 @@ class OnboardNode:
         self._ctx = Context(send=self._send_dtt, log=self.log, sysid=cfg.sysid, compid=ONBOARD_COMPID,
                             vehicle=self.vehicle, every=self._every,
                             send_gcs=lambda msg: self._send_gcs([(msg, None)]), dialect=bindings)
+        self._ctx._send_to = self._send_to_station
 
     # -- wiring ---------------------------------------------------------------------------------
     def _unix(self, now: float) -> float:
@@ -128,6 +136,9 @@ class OnboardNode:
 
     def _plugin_error(self, msg: Any, e: BaseException, where: str) -> None:
         self.log(f"plugin {where} failed on {msg.NAME}: {type(e).__name__}: {e} (the node keeps running)")
+
+    def _gcs_plugin_error(self, msg: Any, e: BaseException, where: str) -> None:
+        self.user.failed(where, msg.NAME, e)
 
     def context(self) -> Context:
         return self._ctx
@@ -362,10 +373,65 @@ class OnboardNode:
                      f"on a listening link go as MAVLink 2 (give it --gcs udpout:HOST:PORT, where it listens, "
                      f"or set it to MAVLink 2)")
         now = self._wall()
+        unknown = parser.stats.unknown
         for msg in parser.feed(data):
-            link.confirm(source, {(msg.get_srcSystem(), msg.get_srcComponent())})  # a udpin link learns its peers
+            src = (msg.get_srcSystem(), msg.get_srcComponent())
+            link.confirm(source, {src})  # a udpin link learns its peers
             self.gcs.on_message(now, msg, link)
+            if src[0] != self.cfg.sysid:
+                self._remember_station(src, link, source)
+                self._deliver_gcs(now, msg, link, source)
+        if parser.stats.unknown > unknown:
+            who = addr_text(source) if isinstance(source, tuple) else getattr(source, "name", "a connection")
+            self.user.unknown_id(f"{link.spec}: ground station at {who}", msgid_of(data), self.b.name,
+                                 parser.stats.unknown - unknown)
         self._wake.set()
+
+    # -- the user's messages from ground stations ---------------------------------------------------
+    def _remember_station(self, src: tuple[int, int], link: Hashable, address: Hashable) -> None:
+        if src not in self._stations and len(self._stations) >= 64:
+            self._stations.pop(next(iter(self._stations)))
+        self._stations[src] = (link, address)
+
+    def _deliver_gcs(self, now: float, msg: Any, link: Hashable, address: Hashable) -> None:
+        """A ground station's message that user plugins handle: to them (at most gcs_user.RATE a
+        second per station), their `ctx.reply` back to that station on the link it came in on."""
+        if not self.gcs_dispatcher.handlers_for(msg.MSG_ID):
+            return
+        if getattr(msg, "target_system", 0) not in (0, self.cfg.sysid):
+            return  # another vehicle's (a ground station's link may be shared by a fleet)
+        src = (msg.get_srcSystem(), msg.get_srcComponent())
+        if not self.user.admit(now, src, msg.NAME):
+            return
+        self.gcs_dispatcher.dispatch(msg, self._ctx, reply=lambda m, urgent: self._to_station(m, link, address),
+                                     source="gcs")
+
+    def _to_station(self, msg: Any, link: Hashable, address: Hashable) -> None:
+        self.user.stats.replies += 1
+        if link is DTT:
+            self.dtt_gcs.send_user(msg)
+            if self.runner is not None:
+                self.runner.kick()
+            return
+        if not isinstance(link, Transport):
+            return
+        out = self._in_kind(link, self.gcs_encoder.encode(msg))
+        if out is None:
+            return
+        send_to = getattr(link, "send_to", None)
+        if send_to is not None and isinstance(address, tuple):
+            send_to(out, address)
+        else:
+            link.send(out)
+
+    def _send_to_station(self, msg: Any, peer: tuple[int, int]) -> None:
+        """`ctx.send_gcs(msg, to=...)`: to the station heard with those ids (compid 0: any)."""
+        hit = self._stations.get(peer)
+        if hit is None and peer[1] == 0:
+            hit = next((v for k, v in reversed(self._stations.items()) if k[0] == peer[0]), None)
+        if hit is None:
+            raise ValueError(f"no ground station {peer[0]}/{peer[1]} was heard here")
+        self._to_station(msg, *hit)
 
     def _from_dtt_gcs(self, now: float, msg: Any) -> bool:
         """A ground station's frame over DTT (dtt_gcs.py): the vehicle takes it as on its own links."""
@@ -373,6 +439,9 @@ class OnboardNode:
             return False
         self.dtt_gcs.heard(now)
         self.gcs.on_message(self._wall(), msg, DTT)
+        src = (msg.get_srcSystem(), msg.get_srcComponent())
+        self._remember_station(src, DTT, None)
+        self._deliver_gcs(self._wall(), msg, DTT, None)
         self._wake.set()
         return True
 
@@ -453,6 +522,8 @@ class OnboardNode:
 
     async def close(self) -> None:
         self._closed = True
+        if self.user.stats != type(self.user.stats)():
+            self.log(self.user.summary())
         for p in self.plugins:
             with contextlib.suppress(Exception):
                 p.stop()

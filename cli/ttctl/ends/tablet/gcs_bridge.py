@@ -40,6 +40,8 @@ class BridgeStats:
     v1_up: int = 0  # MAVLink 1 frames from stations, carried as MAVLink 2
     v1_down: int = 0  # answers sent to MAVLink 1 stations as MAVLink 1
     v1_dropped: int = 0  # frames MAVLink 1 cannot carry (msgid over 255), or MAVLink 1 ids not in the dialect
+    unknown_up: int = 0  # frames of ids the tablet's dialect lacks, carried by their header (as mavlink-router does)
+    unknown_dropped: int = 0  # ... and those that could not be (signed, several in a datagram, ids to remap)
 
 
 class GcsBridge:
@@ -64,7 +66,7 @@ class GcsBridge:
         self.ep: Endpoint | None = None
         self.kick: Callable[[], None] = lambda: None
         self._task: asyncio.Task[None] | None = None
-        self._told_other: set[int] = set()
+        self._told_other: set[Hashable] = set()
         self.running = False  # every ground-station link open
 
     async def start(self, ep: Endpoint, kick: Callable[[], None]) -> None:
@@ -117,6 +119,7 @@ class GcsBridge:
             self.stats.v1_up += v1.v1_frames - before
             now = asyncio.get_running_loop().time()
             queued = False
+            unknown = parser.stats.unknown
             for msg in parser.feed(data):
                 src = (msg.get_srcSystem(), msg.get_srcComponent())
                 target = getattr(msg, "target_system", 0)
@@ -143,10 +146,40 @@ class GcsBridge:
                 queued = True
                 for req in self.missions.from_gcs(now, msg, carried, frame):
                     self._to_gcs(now, req, carried)
+            if parser.stats.unknown > unknown and not getattr(link, "stream", False):
+                queued = self._unknown_up(now, link, source, data) or queued
             if queued:
                 self.kick()
 
         return receive
+
+    def _unknown_up(self, now: float, link: Transport, source: Hashable, data: bytes) -> bool:
+        """A datagram holding one frame of an id the tablet's dialect lacks: carried toward the
+        vehicle by its header, as mavlink-router forwards what it cannot decode (its CRC cannot
+        be checked here; the vehicle checks it, or counts it as unknown). Not when the station
+        must be carried under other ids (the CRC covers them) or the frame is signed."""
+        plen = data[1] if len(data) >= 12 else -1
+        msgid = data[7] | data[8] << 8 | data[9] << 16 if len(data) >= 10 else -1
+        src = (data[5], data[6]) if len(data) >= 7 else (0, 0)
+        why = None
+        if data[:1] != b"\xfd" or len(data) != 12 + plen:
+            why = "it is signed, or not one MAVLink 2 frame a datagram"
+        elif self.routes.heard(now, link, source, src) != src:
+            why = f"the station uses the tablet's own ids {src[0]}/{src[1]}, which the frame's CRC covers"
+        if why is not None:
+            self.stats.unknown_dropped += 1
+            if ("unknown", msgid) not in self._told_other and len(self._told_other) < 32:
+                self._told_other.add(("unknown", msgid))
+                self.log(f"not carrying message id {msgid} from a ground station: the tablet's dialect "
+                         f"({self.b.name}) lacks it and {why} (give the tablet --dialect)")
+            return False
+        self.uplink.put(now, f"#{msgid}", data)  # (not a protocol frame: the user's queue)
+        self.stats.unknown_up += 1
+        if ("carried", msgid) not in self._told_other and len(self._told_other) < 32:
+            self._told_other.add(("carried", msgid))
+            self.log(f"carrying message id {msgid} from a ground station by its header: the tablet's dialect "
+                     f"({self.b.name}) lacks it, so answers in it cannot come back (give the tablet --dialect)")
+        return True
 
     # -- vehicle -> ground stations ----------------------------------------------------------------
     def divert(self, now: float, msg: Any) -> bool:
@@ -264,6 +297,9 @@ class GcsBridge:
         u = self.uplink.stats
         return (f"ground stations: {self.stats.up} frames up ({u.sent} sent, {u.duplicates} retries dropped as "
                 f"duplicates, {u.replaced} overtaken by newer, {u.overflow} dropped for room, "
-                f"{self.stats.not_carried} for other systems not carried), {self.stats.down} down"
+                + (f"{u.user_overflow} of their own messages dropped for room, " if u.user_overflow else "")
+                + f"{self.stats.not_carried} for other systems not carried), {self.stats.down} down"
+                + (f"; ids the dialect lacks: {self.stats.unknown_up} carried by header, "
+                   f"{self.stats.unknown_dropped} not" if self.stats.unknown_up or self.stats.unknown_dropped else "")
                 + (f"; MAVLink 1: {self.stats.v1_up} up, {self.stats.v1_down} down, {self.stats.v1_dropped} not "
                    f"carried" if self.stats.v1_up or self.stats.v1_dropped else ""))
