@@ -100,6 +100,18 @@ def registry_class(d: Dialect) -> str:
 
 
 
+def tablet_commands(d: Dialect) -> list[Message]:
+    """The messages that get a Send skeleton: those of the root dialect the tablet sends, and
+    TT_ACTION_COMMAND from an included ttapi.xml (the README's take-off, `SendTtActionCommand`,
+    is an app's first command whatever its dialect)."""
+    out = sends(d, "tablet")
+    cmd = d.messages_by_name.get("TT_ACTION_COMMAND")
+    if cmd is not None and cmd not in out and has_contract(d, "TT_ACTION_COMMAND") \
+            and has_contract(d, "TT_COMMAND_ACK"):
+        out = sorted([*out, cmd], key=lambda m: m.id)
+    return out
+
+
 class _Refs:
     """How generated code outside the runtime package names runtime and message classes:
     imported simple names unless two classes would share one."""
@@ -161,7 +173,7 @@ class _Java:
             outs.append(Output(f"{root}/enums/{camel(e.name)}.java", "java/Enum.java.j2", context={"e": e}))
         outs.append(Output("java/Conformance.java", "java/Conformance.java.j2"))
         outs.append(Output("java/ConformanceJson.java", "java/ConformanceJson.java.j2"))
-        for m in sends(d, "tablet"):
+        for m in tablet_commands(d):
             outs.append(Output(f"{root}/commands/Send{class_name(m)}.java", "java/SendSkeleton.java.j2",
                                skeleton=True, context={"m": m, "cls": f"Send{class_name(m)}"}))
         for m in receives(d, "tablet"):
