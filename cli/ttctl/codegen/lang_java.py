@@ -66,7 +66,8 @@ RUNTIME_FILES = [
     "LinkScheduler", "DjiReceiving", "DjiLink", "PayloadLink", "PipelineLink",
     "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
     # the ground-station bridge (issue 22)
-    "GcsRules", "GcsUplink", "GcsQuality", "GcsRoutes", "GcsV1", "GcsV1Stations", "GcsBridge",
+    "GcsRules", "GcsUplink", "GcsQuality", "GcsRoutes", "GcsV1", "GcsV1Stations", "GcsProblems",
+    "GcsBridge",
 ]
 RUNTIME_CLASSES = frozenset(RUNTIME_FILES + ["SendSetpoint"])
 # File transfer (package <root>.transfer), for dialects that have ttctl's file messages.
