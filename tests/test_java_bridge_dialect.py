@@ -8,7 +8,8 @@
 Each station sends KR_MOTOR_CONTROL (10 seqs of its own) until its KR_MOTOR_STATUS comes: every
 answer reaches the station that asked and no other (the plugin, or the C++ handler, answers
 from the onboard end's component, addressed by target_system = the frame's sysid; the bridge
-gives the clashing station its id back). A frame of a message the dialect lacks is carried as
+gives the clashing station its id back); the autopilot's HEARTBEAT, for every station, reaches
+both. A frame of a message the dialect lacks is carried as
 mavlink-router carries it: the Python vehicle names it."""
 
 from __future__ import annotations
@@ -148,6 +149,7 @@ class Station:
 
         self.mav = pm.MAVLink(Out(), srcSystem=sysid, srcComponent=compid)
         self.statuses: dict[int, Any] = {}
+        self.heartbeats: set[tuple[int, int]] = set()  # the sources of the HEARTBEATs heard
 
     def poll(self) -> None:
         while True:
@@ -158,6 +160,8 @@ class Station:
             for m in self.mav.parse_buffer(data) or []:
                 if m.get_type() == "KR_MOTOR_STATUS":
                     self.statuses[m.seq] = m
+                elif m.get_type() == "HEARTBEAT":
+                    self.heartbeats.add((m.get_srcSystem(), m.get_srcComponent()))
 
     def ask(self, seq: int) -> None:
         self.mav.heartbeat_send(6, 8, 0, 0, 0)  # MAV_TYPE_GCS, MAV_AUTOPILOT_INVALID
@@ -216,7 +220,8 @@ def test_java_bridge_carries_the_users_dialect_to_its_stations(classes: Path, pm
                                                                                  sorted(b.statuses))
         assert all(m.target_system == 200 for m in a.statuses.values())
         assert all(m.target_system == 255 and m.rpm == 375.0 for m in b.statuses.values())
-        if vehicle == "python":
+        if vehicle == "python":  # its autopilot's HEARTBEAT is for every station: both have it
+            assert (1, 1) in a.heartbeats and (1, 1) in b.heartbeats, (a.heartbeats, b.heartbeats)
             node.wait_for(f"sends msgid {UNKNOWN_MSGID}", timeout=10)  # type: ignore[attr-defined]
             assert "200/190 at" in node.stderr and "which dialect robolab does not have" in node.stderr  # type: ignore
         assert java.stdin is not None
