@@ -285,6 +285,31 @@ def test_a_wrong_key_is_named(classes: Path, tmp_path: Path, start: Start) -> No
     assert r["problem_after"] == "null" and r["states_after"][-1] == "ok: frames from the onboard end verify again", r
 
 
+def test_a_signing_tablet_never_calls_a_command_the_vehicle_did_a_timeout(classes: Path, tmp_path: Path,
+                                                                        start: Start) -> None:
+    """The bug: with the key on the tablet only, the vehicle took off (MAVLink lets a system
+    without a key act on signed frames) while the app reported TIMEOUT, its unsigned acks
+    refused. Now the command fails UNVERIFIED, its outcome unknown, the situation named. A
+    vehicle with another key stays silent: TIMEOUT, with the key named as the likely cause."""
+    key = random.Random(5).randbytes(32).hex()
+    (tmp_path / "other.key").write_text("not the tablet's key\n")
+    for case, extra in (("nokey", []), ("otherkey", ["--key", str(tmp_path / "other.key")])):
+        port = free_port()
+        node = onboard(start, tmp_path, port, *extra, name=f"onboard-{case}")
+        r = Java(classes, tmp_path, f"signed-{case}", "signedto", port=port, key=key).finish(60)
+        if case == "nokey":
+            node.wait_for("taking off")  # type: ignore[attr-defined]
+            assert r["reason"] == "UNVERIFIED" and r["unsigned"] > 0, r
+            assert "outcome unknown" in r["words"] and "the vehicle answers unsigned (it has no key?)" in r["words"], r
+        else:
+            assert r["reason"] == "TIMEOUT", r
+            assert r["words"].endswith("a vehicle with another key drops them unanswered (the same --key at both "
+                                       "ends?)"), r
+            assert "frames whose signatures do not verify (the same --key at both ends?)" in node.stderr  # type: ignore[attr-defined]
+            assert "taking off" not in node.stderr  # type: ignore[attr-defined]
+        node.kill()  # type: ignore[attr-defined]
+
+
 def test_a_slow_listener_does_not_delay_acks(classes: Path, tmp_path: Path, start: Start) -> None:
     """A dispatcher handler that takes 400 ms per message, acks included (the vehicle's
     telemetry alone is four a second): its backlog grows, and commands are acked in loopback

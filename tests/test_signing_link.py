@@ -60,6 +60,27 @@ def test_signed_ends_fly_and_strangers_get_no_answer(tmp_path: Path, start: Star
     assert "frames whose signatures do not verify" in node.stderr  # type: ignore[attr-defined]
 
 
+def test_a_keyed_tablet_names_the_vehicles_key_problem_and_takes_nothing_off(tmp_path: Path, start: Start) -> None:
+    """The tablet with --key and a vehicle without one (which acts on signed frames, as MAVLink
+    lets a system without a key, and answers unsigned), or with another key (silent): the tablet
+    never takes a vehicle it cannot verify for connected, sends it no command, and says which."""
+    phrase, _, other = _keys(tmp_path)
+    port = free_port()
+    node = _vehicle(start, tmp_path, port)
+    proc = _tablet(tmp_path, port, FLY, "--key", str(phrase))
+    said = one_line(proc.stderr)  # type: ignore[attr-defined]
+    assert proc.returncode == 1 and "no vehicle answered" in said, said  # type: ignore[attr-defined]
+    assert "their frames unsigned and refused for --key: the vehicle answers unsigned (it has no key?)" in said, said
+    assert "taking off" not in node.stderr  # type: ignore[attr-defined]
+    node.kill()  # type: ignore[attr-defined]
+    port = free_port()
+    _vehicle(start, tmp_path, port, "--key", str(other))
+    proc = _tablet(tmp_path, port, FLY, "--key", str(phrase))
+    said = one_line(proc.stderr)  # type: ignore[attr-defined]
+    assert proc.returncode == 1 and "a vehicle with another key drops them unanswered (the same --key at both " \
+        "ends?)" in said, said
+
+
 def test_accept_unsigned_lets_an_unsigned_tablet_in(tmp_path: Path, start: Start) -> None:
     phrase, _, _ = _keys(tmp_path)
     port = free_port()

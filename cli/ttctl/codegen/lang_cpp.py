@@ -41,7 +41,7 @@ from typing import Any
 from ..dialect.model import Dialect, Enum, Field, Message
 from ..dialect.names import C_RESERVED, CPP_KEYWORDS, RUNTIME_TYPE_NAMES, camel
 from ..dialect.symbols import type_names
-from .engine import Output, dialect_ident
+from .engine import Output, dialect_ident, receives
 from .text import wrap
 
 name = "cpp"
@@ -107,6 +107,17 @@ def answers_setpoints(d: Dialect) -> bool:
     return (carries_link(d) and pose is not None and topic is not None
             and topic.entry("DJI_TOPIC_NAME_SETPOINT") is not None
             and {"target_system", "sec", "nsec", "topic_name"} <= {f.name for f in pose.fields})
+
+
+def plugin_handles(d: Dialect) -> list[Message]:
+    """The messages the node's plugin skeleton has a handler for, beside on_command(): those of
+    the root dialect the onboard end receives, and the tablet's set-point (DJI_POSE_STAMPED) when
+    the node answers set-points, from an included ttapi.xml too (the README fills that handler in)."""
+    out = [m for m in receives(d, "onboard") if m.name != "TT_ACTION_COMMAND"]
+    pose = d.messages_by_name.get("DJI_POSE_STAMPED")
+    if answers_setpoints(d) and pose is not None and pose not in out:
+        out = sorted([*out, pose], key=lambda m: m.id)
+    return out
 
 
 def confirms_vr_controller(d: Dialect) -> bool:
@@ -304,6 +315,7 @@ class _Cpp:
             "ns": namespace(d, self.override),
             "link": carries_link(d),
             "setpoints": answers_setpoints(d),
+            "plugin_handles": plugin_handles(d),
             "vr_confirm": confirms_vr_controller(d),
             "folder": folder(d, self.override),
             "umbrella": umbrella(d, self.override),

@@ -67,7 +67,8 @@ RUNTIME_FILES = [
     "LinkScheduler", "DjiReceiving", "DjiLink", "PayloadLink", "PipelineLink",
     "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
     # the ground-station bridge (issue 22)
-    "GcsRules", "GcsUplink", "GcsQuality", "GcsRoutes", "GcsV1", "GcsV1Stations", "GcsBridge",
+    "GcsRules", "GcsUplink", "GcsQuality", "GcsRoutes", "GcsV1", "GcsV1Stations", "GcsProblems",
+    "GcsBridge",
 ]
 RUNTIME_CLASSES = frozenset(RUNTIME_FILES + ["SendSetpoint"])
 # File transfer (package <root>.transfer), for dialects that have ttctl's file messages.
@@ -99,14 +100,24 @@ def registry_class(d: Dialect) -> str:
     return f"{n}Dialect" if taken else n
 
 
-
-
 def free_name(name: str, taken: list[str]) -> str:
     """`name`, or with `_` appended until none of `taken` is called that (a private member of a
     generated class that an entry or a field would otherwise redefine)."""
     while name in taken:
         name += "_"
     return name
+
+
+def tablet_commands(d: Dialect) -> list[Message]:
+    """The messages that get a Send skeleton: those of the root dialect the tablet sends, and
+    TT_ACTION_COMMAND from an included ttapi.xml (the README's take-off, `SendTtActionCommand`,
+    is an app's first command whatever its dialect)."""
+    out = sends(d, "tablet")
+    cmd = d.messages_by_name.get("TT_ACTION_COMMAND")
+    if cmd is not None and cmd not in out and has_contract(d, "TT_ACTION_COMMAND") \
+            and has_contract(d, "TT_COMMAND_ACK"):
+        out = sorted([*out, cmd], key=lambda m: m.id)
+    return out
 
 
 class _Refs:
@@ -173,7 +184,7 @@ class _Java:
             outs.append(Output(f"{root}/enums/{enum_class(e.name, d)}.java", "java/Enum.java.j2", context={"e": e}))
         outs.append(Output("java/Conformance.java", "java/Conformance.java.j2"))
         outs.append(Output("java/ConformanceJson.java", "java/ConformanceJson.java.j2"))
-        for m in sends(d, "tablet"):
+        for m in tablet_commands(d):
             outs.append(Output(f"{root}/commands/Send{class_name(m, d)}.java", "java/SendSkeleton.java.j2",
                                skeleton=True, context={"m": m, "cls": f"Send{class_name(m, d)}"}))
         for m in receives(d, "tablet"):

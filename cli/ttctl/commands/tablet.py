@@ -246,9 +246,18 @@ def heard_note(s: Any) -> str:
         who = ", ".join(f"{a}/{c}" for a, c in peers[:4])
         return (f"frames came only from {who}, not from {s.target[0]}/{s.target[1]} "
                 f"(--target-sysid {s.target[0]}: is that the vehicle's system id?)")
+    refused = getattr(s, "key_refused", None)
+    if packets and refused == "unsigned frames":  # a vehicle without a key acts on signed frames: say so
+        return (f"{packets} packets came, their frames unsigned and refused for --key: the vehicle answers "
+                "unsigned (it has no key?); give it the same --key, or the tablet none")
+    if packets and refused:
+        return f"{packets} packets came, {refused} (the same --key at both ends?)"
     if packets:
         return (f"{packets} packets came but no frame of the dialect in them (another dialect, or signed "
                 "frames without the same --key?)")
+    if getattr(s, "signs", False):
+        return ("nothing came back; the tablet signs its frames (--key): a vehicle with another key drops "
+                "them unanswered (the same --key at both ends?)")
     return ("nothing came back (the tablet needs a HEARTBEAT, or any frame, from the vehicle's onboard "
             "component, which answers the address the tablet's own heartbeats come from)")
 

@@ -126,6 +126,21 @@ public final class GcsCheck {
         ack.target_component = 190;
         byte[] back = GcsRules.withTargetSystem(ack.pack(3, 1, 1), 255, CommandAck.CRC_EXTRA);
         check(((CommandAck) Frame.decode(back, Ttapi.INSTANCE)).target_system == 255, "target given back");
+        // without CRC_EXTRA (messages the dialect lacks): the same bytes as with it
+        check(java.util.Arrays.equals(GcsRules.withByte(c, 5, 254), moved), "withByte re-sources as withSource");
+        byte[] strange = GcsRules.withByte(GcsRules.withByte(c, 7, 52123 & 0xFF), 8, 52123 >> 8 & 0xFF);
+        byte[] datagram = new byte[c.length * 2 + strange.length];
+        System.arraycopy(c, 0, datagram, 0, c.length);
+        System.arraycopy(strange, 0, datagram, c.length, strange.length);
+        System.arraycopy(c, 0, datagram, c.length + strange.length, c.length);
+        java.util.List<byte[]> found = GcsRules.unknownFrames(datagram, 0, datagram.length, Ttapi.INSTANCE);
+        check(found.size() == 1 && java.util.Arrays.equals(found.get(0), strange), "the unknown frame between two known");
+        byte[] signedStrange = new Signing(new byte[32], 1, false).sign(strange);
+        found = GcsRules.unknownFrames(signedStrange, 0, signedStrange.length, Ttapi.INSTANCE);
+        check(found.size() == 1 && java.util.Arrays.equals(found.get(0), strange), "a signed unknown frame, unsigned");
+        byte[] back52123 = GcsRules.withByte(GcsRules.withByte(strange, 7, c[7] & 0xFF), 8, c[8] & 0xFF);
+        check(java.util.Arrays.equals(back52123, c), "the msgid changed back: the CRC is the message's again");
+        check(GcsRules.unknownFrames(strange, 0, strange.length - 1, Ttapi.INSTANCE).isEmpty(), "a cut frame is none");
         System.out.println("FRAME resourced " + hex(moved));
         System.out.println("FRAME retargeted " + hex(back));
         System.out.println("FRAME radio " + hex(GcsRules.radioStatus(5, 1, 229, 87, 70000, 3)));

@@ -46,6 +46,8 @@ import ttctl.ttapi.transfer.TransferResult;
  *     "The product is not connected" for MS ms, then forwards them to the onboard end.
  * wrongkey key=HEX                            UdpLink verifying with that key; waits for frames
  *     from the onboard end (udpout to our PORT), then a command.
+ * signedto port=ONBOARD key=HEX               a signing Session sends TAKE_OFF first, to an onboard end
+ *     with another key or none; the command's reason and words.
  * djikey key=HEX                              DjiLink verifying with that key, fed frames signed
  *     with another, then with it.
  * inbox port=LISTEN dir=DIR serve=DIR secs=S  takes pushed files, serves fetches, for S seconds
@@ -85,6 +87,9 @@ public final class SessionDriver {
                 break;
             case "wrongkey":
                 wrongKey(a, out);
+                break;
+            case "signedto":
+                signedTo(a, out);
                 break;
             case "djikey":
                 djiKey(a, out);
@@ -348,6 +353,29 @@ public final class SessionDriver {
         event("command: " + r);
         out.put("command", r).put("problem", String.valueOf(s.problem())).put("bad_frames", udp.stats().badFrames())
                 .put("bad_signatures", udp.stats().badSignatures()).put("unsigned", udp.stats().unsignedRefused());
+        s.close();
+    }
+
+    /** A signing tablet that speaks first: the vehicle has another key (silence) or none (unsigned answers). */
+    static void signedTo(Map<String, String> a, Json out) throws Exception {
+        Signing signing = new Signing(unhex(a.get("key")), 1, false);
+        UdpLink udp = new UdpLink(new DatagramSocket(new InetSocketAddress("127.0.0.1", 0)),
+                new InetSocketAddress("127.0.0.1", Integer.parseInt(a.get("port"))), Ttapi.INSTANCE, signing);
+        Session.Options o = new Session.Options();
+        o.signing = signing;
+        o.rate = 8000;
+        Session s = new Session(udp, SYS, COMP, o).start();
+        SendTtActionCommand cmd = new SendTtActionCommand(1, 240, TtAction.TT_ACTION_TAKE_OFF, new float[4],
+                new byte[48]);
+        cmd.setTimeoutMillis(500).setBackoff(1.0).setMaxRetries(3);
+        try {
+            s.submit(cmd).get(20, TimeUnit.SECONDS);
+            out.put("reason", "none");
+        } catch (ExecutionException e) {
+            CommandException why = (CommandException) e.getCause();
+            out.put("reason", why.reason().name()).put("words", why.getMessage());
+        }
+        out.put("unsigned", udp.stats().unsignedRefused());
         s.close();
     }
 

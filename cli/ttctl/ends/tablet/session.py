@@ -95,6 +95,8 @@ class TabletSession:
         self.runner = Runner(self.ep, self.transport, pipe=pipe, pipe_rate_Bps=pipe_Bps)
         self._changed = asyncio.Event()
         self._file_events: dict[Any, str] = {}
+        self.signs = signing is not None
+        self.key_refused: str | None = None  # why frames came that --key refused ("unsigned frames", ...)
         self._log_parts: dict[int, dict[int, bytes]] = {}
         self.heartbeats = 0
         self._hb_task: asyncio.Task[None] | None = None
@@ -255,6 +257,9 @@ class TabletSession:
             self.log(f"tablet: {unknown_note(self.b, obj)}")
             _, msgid, (sysid, compid) = obj
             self.on_event("unknown-message", {"msgid": msgid, "from": f"{sysid}/{compid}"})
+            return
+        if what == "link-refused":  # (source, reason): said by heard_note if no vehicle answers
+            self.key_refused = obj[1]
             return
         self._file_events[obj] = what
         self._changed.set()

@@ -14,6 +14,43 @@ final class CommandEnds {
     private CommandEnds() {
     }
 
+    /** An UNVERIFIED command's words for the situation (see {@link Link#unsignedRefused()}). */
+    static final String UNSIGNED_ANSWERS = "the vehicle answers unsigned (it has no key?) and may have carried it out"
+            + " (MAVLink lets a system without a key act on signed frames); give it the same key, or this app none";
+
+    /** A silent link's TIMEOUT when this end signs: a vehicle with another key answers nothing. */
+    static final String SIGNED_SILENCE = "; this app signs its frames: a vehicle with another key drops them unanswered"
+            + " (the same --key at both ends?)";
+
+    /**
+     * Why a command that got no reply in {@code made} tries failed: UNVERIFIED when the link
+     * refused {@code unsigned} frames meanwhile (the vehicle may have done it), else TIMEOUT with
+     * what the link knows ({@code silent}: nothing heard since it started; {@code problem}: the
+     * link's words; {@code signs}: this end signs its frames).
+     */
+    static CommandException gaveUp(CommandJob j, int made, boolean silent, String problem, long unsigned,
+            boolean signs) {
+        String tries = made + " tr" + (made == 1 ? "y" : "ies");
+        if (unsigned > 0) {
+            return new CommandException(CommandException.Reason.UNVERIFIED, j.command.describe() + ": outcome unknown: "
+                    + j.command.silence() + " that verifies after " + tries + ", while the link refused " + unsigned
+                    + " unsigned frame" + (unsigned == 1 ? "" : "s") + ": " + UNSIGNED_ANSWERS, made, null);
+        }
+        return new CommandException(CommandException.Reason.TIMEOUT, j.command.describe() + ": " + j.command.silence()
+                + " after " + tries + (silent ? ", no message received from the link meanwhile" : "")
+                + (silent && problem == null && signs ? SIGNED_SILENCE : "")
+                + (problem != null ? "; " + problem : ""), made, null);
+    }
+
+    /** Unsigned frames the link refused so far (0 if it cannot tell). */
+    static long unsignedRefused(Link link) {
+        try {
+            return link.unsignedRefused();
+        } catch (RuntimeException e) {
+            return 0;
+        }
+    }
+
     static boolean askAgain(CommandJob job) {
         try {
             return job.command.askAgain(job.reply);

@@ -10,6 +10,12 @@ public class CommandException extends Exception {
         /** No (matching) reply within the timeouts of every try; the message says what the link knows. */
         TIMEOUT,
         /**
+         * No reply that verifies came, but the link refused unsigned frames meanwhile: the vehicle
+         * answers unsigned (it has no key?) and, as MAVLink lets a system without a key, may have
+         * acted on the signed command. What it did is unknown: never read this as "not done".
+         */
+        UNVERIFIED,
+        /**
          * The reply came and says no (a TT_COMMAND_ACK that is not ACCEPTED, IN_PROGRESS or DONE:
          * DENIED, FAILED, UNSUPPORTED, BUSY); {@link #reply()} is that reply.
          */

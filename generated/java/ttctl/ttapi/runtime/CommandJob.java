@@ -26,6 +26,7 @@ final class CommandJob implements CommandContext {
     boolean finished; // taken out of the queue: its end is decided
     int made;
     long startedAt; // System.nanoTime() of its first try
+    long unsignedAtStart; // the link's unsigned frames refused when it started (see Link#unsignedRefused)
     long due; // System.nanoTime() of the next try or of giving up
     MavlinkMessage reply;
     boolean askedAgain; // sent once more after a reply, see Command#askAgain

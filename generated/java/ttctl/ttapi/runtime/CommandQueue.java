@@ -459,13 +459,10 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                                 work.add(new Runnable() {
                                     @Override
                                     public void run() {
-                                        String problem = linkProblem();
-                                        boolean silent = lastHeard - j.startedAt < 0;
-                                        CommandEnds.fail(listeners, j, new CommandException(CommandException.Reason.TIMEOUT,
-                                                j.command.describe() + ": " + j.command.silence() + " after " + made
-                                                + " tr" + (made == 1 ? "y" : "ies")
-                                                + (silent ? ", no message received from the link meanwhile" : "")
-                                                + (problem != null ? "; " + problem : ""), made, null));
+                                        CommandEnds.fail(listeners, j, CommandEnds.gaveUp(j, made,
+                                                lastHeard - j.startedAt < 0, linkProblem(),
+                                                CommandEnds.unsignedRefused(link) - j.unsignedAtStart,
+                                                scheduler != null && scheduler.signing()));
                                     }
                                 });
                             }
@@ -483,6 +480,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                         j.commandId = takeId();
                         j.issuedUsec = takeIssueTime();
                         j.startedAt = now;
+                        j.unsignedAtStart = CommandEnds.unsignedRefused(link);
                         j.sending = true;
                         inFlight.add(j);
                         work.add(new Runnable() {

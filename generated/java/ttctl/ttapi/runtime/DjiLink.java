@@ -432,6 +432,11 @@ public final class DjiLink implements Link {
                 (now - lastConfirmed) / 1e9, timeouts);
     }
 
+    @Override
+    public long unsignedRefused() {
+        return receiving.unsignedRefused();
+    }
+
     /**
      * What is wrong, in words, or null: the SDK refuses packets (its own words), has stopped
      * confirming them, or frames from the drone do not verify.

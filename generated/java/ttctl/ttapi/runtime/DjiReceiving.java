@@ -126,6 +126,10 @@ final class DjiReceiving {
         }
     }
 
+    long unsignedRefused() {
+        return receiver.stats().unsignedRefused();
+    }
+
     /** On the link's thread, after each packet: frames refused for their signature are named once. */
     private void watchSignatures() {
         PacketReceiver.Stats st = receiver.stats();

@@ -31,8 +31,10 @@ import java.util.function.Consumer;
  * bridge.close();
  * </pre>
  *
- * <p>Up (a ground station's datagram to the link): frames the dialect does not know, garbage,
- * and frames whose target_system is neither 0 nor the vehicle's are not carried (counted). A
+ * <p>Up (a ground station's datagram to the link): garbage and frames whose target_system is
+ * neither 0 nor the vehicle's are not carried (counted). MAVLink 2 frames of messages the
+ * dialect does not know are carried as mavlink-router carries them, unchecked (their CRC needs
+ * the message's CRC_EXTRA; {@link #unknownCarried()}), for the vehicle's plugins. A
  * ground station whose ids are the tablet's own (255/190, QGroundControl's default) is carried
  * under another system id, the highest of 254, 253... no ground station heard uses, and the
  * vehicle's answers to that id are given back target_system 255. Frames wait in a
@@ -52,9 +54,11 @@ import java.util.function.Consumer;
  * <p>Down (the link to the ground stations): every frame from the vehicle's system id whose
  * component is not the onboard end's ({@value GcsRules#ONBOARD_COMPONENT}) goes, unsigned, with
  * its source ids and sequence number, to the ground station it is for (its target_system and
- * target_component), or to all of them. A {@link Config#sendTo} address always counts as a
- * ground station; one heard on the socket counts until it has been silent 30 s. Once a second
- * each gets a RADIO_STATUS from the vehicle's system id, component
+ * target_component), or to all of them. The onboard end's frames are the app's, but for those
+ * whose target_system is a ground station's (not the tablet's): a plugin's answer to a ground
+ * station's message of the user's dialect goes to that station alone. A {@link Config#sendTo}
+ * address always counts as a ground station; one heard on the socket counts until it has been
+ * silent 30 s. Once a second each gets a RADIO_STATUS from the vehicle's system id, component
  * {@value GcsRules#RADIO_COMPONENT} (the telemetry radio): rssi and remrssi 254 x the share of
  * the vehicle's frames that arrived over the last 5 s (0 after more than 3.5 s of silence,
  * QGroundControl then shows the link lost), txbuf what room the bridge's queue has left,
@@ -179,6 +183,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     private final Link link;
     private final LinkScheduler scheduler;
     private final int vehicle;
+    private final int tabletSys;
     private final DatagramSocket socket;
     private final Parser parser;
     private final MavlinkDialect dialect;
@@ -188,9 +193,8 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     private final GcsRoutes<SocketAddress> routes;
     private final Object lock = new Object();
     private final ScheduledThreadPoolExecutor timer;
-    private final Executor listeners;
     private final java.util.concurrent.ExecutorService ownListeners;
-    private final Consumer<String> onProblem;
+    private final GcsProblems problems;
     private final Thread reader;
     private final LinkScheduler.BulkSource source = new LinkScheduler.BulkSource() {
         @Override
@@ -204,31 +208,29 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     private long datagrams;
     private long notCarried;
     private long unknown;
+    private long unknownCarried;
     private long toGcs;
     private long radioStatus;
     private long sendErrors;
     private long fromVehicle;
     private int lastNotCarriedFor = -1;
     private int peakWaiting;
-    private String problem;
-    private long problemAt;
-    private long toldAt = System.nanoTime() - TimeUnit.SECONDS.toNanos(PROBLEM_SECONDS + 1);
 
     private GcsBridge(Link link, LinkScheduler scheduler, MavlinkDialect dialect, Config c, Executor sessionListeners)
             throws SocketException {
         this.link = link;
         this.scheduler = scheduler;
         this.vehicle = c.vehicle;
+        this.tabletSys = c.tabletSys;
         this.routes = new GcsRoutes<>(c.vehicle, c.tabletSys, c.tabletComp);
         double base = c.uplinkRate > 0 ? c.uplinkRate : scheduler.rate() > 0 ? scheduler.rate() : DEFAULT_UPLINK_RATE;
         this.uplink = new GcsUplink(base * c.share, scheduler.mtu());
         this.parser = new Parser(dialect);
         this.dialect = dialect;
         this.v1 = new GcsV1Stations<>(dialect, GcsRoutes.MAX_STATIONS);
-        this.onProblem = c.onProblem;
         Executor l = c.listeners != null ? Callbacks.serial(c.listeners) : sessionListeners;
         this.ownListeners = l == null ? Callbacks.newThread("ttctl-gcs-listeners") : null;
-        this.listeners = l != null ? l : ownListeners;
+        this.problems = new GcsProblems(c.onProblem, l != null ? l : ownListeners);
         InetSocketAddress to = c.sendTo;
         if (to == null && c.listen == null) {
             to = new InetSocketAddress("127.0.0.1", QGC_PORT);
@@ -343,22 +345,33 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
             parser.feed(up.bytes, 0, up.bytes.length, add);
             parser.flush(add);
             boolean garbage = parser.stats().skippedBytes() > skipped;
-            boolean carried = fromGcs(from, got, garbage);
+            List<byte[]> strange = garbage ? GcsRules.unknownFrames(up.bytes, 0, up.bytes.length, dialect)
+                    : java.util.Collections.<byte[]>emptyList();
+            boolean carried = fromGcs(from, got, garbage, strange);
             if (carried) {
                 scheduler.wake();
             }
         }
     }
 
-    /** Takes a datagram's frames (under the lock); true when some wait to go. */
-    private boolean fromGcs(SocketAddress from, List<MavlinkMessage> frames, boolean garbage) {
+    /** Takes a datagram's frames and those the dialect lacks (under the lock); true when some wait to go. */
+    private boolean fromGcs(SocketAddress from, List<MavlinkMessage> frames, boolean garbage, List<byte[]> strange) {
         long now = System.nanoTime();
         boolean any = false;
         synchronized (lock) {
             datagrams++;
             if (garbage) {
                 unknown++;
-                notCarried++;
+                if (strange.isEmpty()) {
+                    notCarried++;
+                }
+            }
+            for (byte[] f : strange) { // as mavlink-router: for every system (no target is known), unchecked
+                int sys = f[5] & 0xFF;
+                int carriedSys = routes.heard(from, sys, f[6] & 0xFF, now);
+                uplink.offer(carriedSys != sys ? GcsRules.withByte(f, 5, carriedSys) : f, now);
+                unknownCarried++;
+                any = true;
             }
             for (MavlinkMessage m : frames) {
                 byte[] f = m.pack(m.seq(), m.sysId(), m.compId()); // unsigned, as the ground station sent it
@@ -416,17 +429,23 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     /** A message from the link (on the link's thread): the vehicle's ground-station frames go to their ground stations. */
     @Override
     public void accept(MavlinkMessage msg) {
-        if (closed || msg.sysId() != vehicle || msg.compId() == GcsRules.ONBOARD_COMPONENT) {
+        if (closed || msg.sysId() != vehicle) {
             return;
         }
         long now = System.nanoTime();
         byte[] f = msg.pack(msg.seq(), msg.sysId(), msg.compId());
         int ts = GcsRules.targetSystem(f);
         int tc = GcsRules.targetComponent(f);
+        boolean onboard = msg.compId() == GcsRules.ONBOARD_COMPONENT;
+        if (onboard && (ts <= 0 || ts == tabletSys)) {
+            return; // the app's: only those addressed to a ground station (a plugin's answer) go on
+        }
         List<GcsRoutes.Destination<SocketAddress>> to;
         synchronized (lock) {
-            fromVehicle++;
-            quality.frame(msg.sysId(), msg.compId(), msg.seq(), now);
+            if (!onboard) {
+                fromVehicle++;
+                quality.frame(msg.sysId(), msg.compId(), msg.seq(), now);
+            }
             to = routes.destinations(ts, tc);
         }
         for (GcsRoutes.Destination<SocketAddress> d : to) {
@@ -487,40 +506,13 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     }
 
     /** {@code once}: a problem the caller tells once (bounded): told whatever was told just before. */
-    private void problem(final String what, boolean once) {
-        boolean fresh;
-        synchronized (lock) {
-            long now = System.nanoTime();
-            // told when it changes, at most once a second, and again if it lasts: never a flood
-            fresh = once || (!what.equals(problem) || now - toldAt > TimeUnit.SECONDS.toNanos(PROBLEM_SECONDS))
-                    && now - toldAt > TimeUnit.SECONDS.toNanos(1);
-            if (fresh && !once) {
-                toldAt = now;
-            }
-            problem = what;
-            problemAt = now;
-        }
-        final Consumer<String> l = onProblem;
-        if (fresh) {
-            if (l != null) {
-                Callbacks.run(listeners, new Runnable() {
-                    @Override
-                    public void run() {
-                        l.accept(what);
-                    }
-                }, "the GcsBridge problem listener");
-            } else {
-                System.err.println("ttctl GcsBridge: " + what);
-            }
-        }
+    private void problem(String what, boolean once) {
+        problems.tell(what, once);
     }
 
     /** The last problem in words if it was seen within {@value #PROBLEM_SECONDS} s, else null. */
     public String problem() {
-        synchronized (lock) {
-            return problem != null && System.nanoTime() - problemAt < TimeUnit.SECONDS.toNanos(PROBLEM_SECONDS)
-                    ? problem : null;
-        }
+        return problems.last();
     }
 
     private static String describe(SocketAddress a) {
@@ -585,6 +577,13 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     public long unknown() {
         synchronized (lock) {
             return unknown;
+        }
+    }
+
+    /** Frames of messages the dialect lacks carried as mavlink-router does (unchecked, to the vehicle). */
+    public long unknownCarried() {
+        synchronized (lock) {
+            return unknownCarried;
         }
     }
 

@@ -54,4 +54,15 @@ public interface Link extends Closeable {
      */
     default void setUnknownListener(PacketReceiver.UnknownListener listener) {
     }
+
+    /**
+     * Frames the link's {@link Signing} refused so far for being unsigned (0 without a Signing,
+     * or on a link that does not verify frames). A vehicle without a key acts on signed frames, as
+     * MAVLink lets a system that does not sign, and answers unsigned: a {@link CommandQueue} whose
+     * command gets no reply that verifies while these grow fails it
+     * {@link CommandException.Reason#UNVERIFIED}, not {@link CommandException.Reason#TIMEOUT}.
+     */
+    default long unsignedRefused() {
+        return 0;
+    }
 }

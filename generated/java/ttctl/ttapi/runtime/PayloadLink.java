@@ -140,6 +140,11 @@ public final class PayloadLink implements Link {
         return link.problem();
     }
 
+    @Override
+    public long unsignedRefused() {
+        return link.unsignedRefused();
+    }
+
     /** Gives up on a missing completion after this long (at least 1 ms; default 2 s). */
     public PayloadLink setCompletionTimeoutMillis(long millis) {
         link.setCompletionTimeoutMillis(millis);

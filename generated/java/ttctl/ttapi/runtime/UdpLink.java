@@ -152,6 +152,11 @@ public final class UdpLink implements Link {
         return keyProblem;
     }
 
+    @Override
+    public long unsignedRefused() {
+        return receiver.stats().unsignedRefused();
+    }
+
     private void watchSignatures(SocketAddress from) {
         PacketReceiver.Stats st = receiver.stats();
         long u = st.unsignedRefused();
