@@ -17,6 +17,7 @@ RUNTIME_MESSAGES: dict[str, tuple[int, int]] = {
     "SYS_STATUS": (1, 124),
     "SYSTEM_TIME": (2, 137),
     "PING": (4, 237),
+    "SET_MODE": (11, 89),
     "PARAM_REQUEST_READ": (20, 214),
     "PARAM_REQUEST_LIST": (21, 159),
     "PARAM_VALUE": (22, 220),
