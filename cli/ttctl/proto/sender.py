@@ -35,6 +35,7 @@ from .transfer import (
     TransferResult,
     TransferStats,
     meta_check,
+    quiet_after,
     reason_text,
     result_name,
     wilson_upper,
@@ -105,7 +106,7 @@ class FileSender:
         self._probe_due: float | None = None
         self._sends: dict[int, tuple[float, int]] = {}  # offset -> (last send time, sends)
         self._since: dict[int, int] = {}  # offset -> sends since it was last known to be missing
-        self._answers = 0
+        self._data_sent = False  # a data frame of this attempt has left (what the receiver had before is resumed)
 
     def _first_mode(self) -> str:
         if self.cfg.frame_mode == "auto":
@@ -233,8 +234,7 @@ class FileSender:
         """How long without a status, while data flows, before asking where the receiver is:
         three status intervals, an RTT more, and under a grant three frames' time at it more
         (the receiver reports on the frames it gets)."""
-        wait = max(3 * self.cfg.status_interval, 2 * self.rtt + self.cfg.status_interval)
-        return wait + (3 * self.geometry.mtu / self.pacer.grant if self.pacer.grant else 0.0)
+        return quiet_after(self.cfg, self.rtt, self.pacer.grant, self.geometry.mtu)
 
     def _time_out(self, now: float) -> None:
         who = f"{self.target[0]}/{self.target[1]}"
@@ -338,6 +338,7 @@ class FileSender:
         if retx is None:
             self._unclassified.append((offset, offset + length, left, mode))
         self.pacer.sent(now, frame_len)
+        self._data_sent = True
         self.stats.bytes_sent += length
         self.stats.frames_sent += 1
         if self.stats.data_started is None:
@@ -419,7 +420,6 @@ class FileSender:
         self.last_heard = now
         self.heard_any = True
         self.stats.statuses += 1
-        self._answers += 1
         if (self.state == "offering" and self._offers_since_answer == 1 and self._last_offer is not None
                 and not self._rtt_sampled):
             # Karn: only an offer answered without a repeat gives a clean sample
@@ -515,8 +515,10 @@ class FileSender:
             self.acked.add(pos, re)
         if self.acked.total() > before:
             self.last_progress = now
-        if self._answers == 1 and before == 0:
-            self.stats.resumed_bytes = self.acked.total()  # what the receiver had before we sent a byte
+        if not self._data_sent:
+            # what the receiver had before we sent a byte: every status until then says it (the
+            # first may be a busy one, or one of a burst that describes its gaps region by region)
+            self.stats.resumed_bytes = self.acked.total()
         # a resumed transfer: skip what the receiver already has
         while self.next_new < self.size and self.acked.covers(self.next_new, min(self.size, self.next_new + 1)):
             end = next((b for a, b in self.acked if a <= self.next_new < b), self.next_new + 1)
