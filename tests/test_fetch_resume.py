@@ -17,8 +17,11 @@ import time
 from pathlib import Path
 from typing import Any
 
+import pytest
+
+from conftest import run_ttctl
 from cpp_node_lib import needs_gxx, sha, write
-from e2e_lib import LOCAL, Proc, Start, free_port, receiver, send
+from e2e_lib import LOCAL, Proc, Start, free_port, one_line, receiver, send
 
 SIZE = 96_000
 RATE = "16000"  # B/s, the server's pace: a whole file in about 6 s
@@ -96,7 +99,7 @@ def test_a_fetch_resumes_in_the_same_run_when_its_python_server_restarts(tmp_pat
     assert sha(tmp_path / "got" / "log.bin") == sha(src), f"seed {seed}"
     assert r["sha256"] == sha(src)
     assert r["resumed_bytes"] == 0, r
-    assert r["restarts"] == n, (r, f.stderr, f"seed {seed}")
+    assert r["server_restarts"] == n, (r, f.stderr, f"seed {seed}")
     assert f.stderr.count("resuming at") == n, f.stderr
 
 
@@ -126,7 +129,7 @@ def test_a_fetch_resumes_in_the_same_run_when_its_cpp_server_restarts(cpp_node_b
         n = node(i + 1)
     r = finished(f, began, TIMEOUT - 5)
     assert sha(tmp_path / "got" / "log.bin") == sha(src), f"seed {seed}"
-    assert r["restarts"] == 2 and r["resumed_bytes"] == 0, (r, f.stderr)
+    assert r["server_restarts"] == 2 and r["resumed_bytes"] == 0, (r, f.stderr)
     assert n.events("served")
     n.stop()
 
@@ -148,7 +151,7 @@ def test_a_server_back_with_another_file_is_not_spliced(tmp_path: Path, start: S
     receiver(start, tmp_path, spec, "--serve", str(serve), "--rate", RATE, name="server1")
     r = finished(f, began, TIMEOUT - 5)
     assert sha(tmp_path / "got" / "log.bin") == sha(new)
-    assert r["sha256"] == sha(new) and r["restarts"] == 1, r
+    assert r["sha256"] == sha(new) and r["server_restarts"] == 1, r
     assert "a different log.bin" in f.stderr and "from the start" in f.stderr, f.stderr
     assert "resuming at" not in f.stderr, f.stderr
     assert partial_bytes(tmp_path / "got") == 0  # the old file's bytes went with it
@@ -176,7 +179,42 @@ def test_resumed_bytes_of_an_upload_is_what_the_receiver_had(tmp_path: Path, sta
     assert r["restarts"] == 0
 
 
-def test_resumed_bytes_of_a_fetch_is_what_was_here(tmp_path: Path, start: Start) -> None:
+def test_resumed_bytes_of_an_upload_counts_every_region_of_a_gappy_partial(tmp_path: Path, start: Start) -> None:
+    """The receiver's partial file has more gaps than one status holds (a lossy link leaves
+    them): its first answer is a burst of statuses, region by region. resumed_bytes counts what
+    all of them say the receiver had (it counted the first region only: a fraction of it)."""
+    src = write(tmp_path / "up.bin", SIZE, 6)
+    inbox = tmp_path / "inbox"
+    port = free_port()
+    spec = f"udpin:{LOCAL}:{port}"
+    rx = receiver(start, tmp_path, spec, "--rate", RATE, name="rx0")
+    s = start("send0", "send-file", str(src), "--to", f"udpout:{LOCAL}:{port}", "--rate", RATE, "--json")
+    wait_partial(inbox, SIZE // 2, s)
+    s.kill()
+    rx.kill()
+    (record,) = (inbox / ".ttctl-partial").glob("*.json")
+    state = json.loads(record.read_text())
+    held = [tuple(r) for r in state["ranges"]]
+    assert held[0][0] == 0
+    end = held[0][1]
+    holes = [(k * 1200 + 100, k * 1200 + 164) for k in range(24) if k * 1200 + 164 < end]
+    assert len(holes) == 24, held
+    pieces, pos = [], 0
+    for a, b in holes:
+        pieces.append([pos, a])
+        pos = b
+    state["ranges"] = [*pieces, [pos, end], *[list(r) for r in held[1:]]]
+    record.write_text(json.dumps(state))
+    had = partial_bytes(inbox)
+    receiver(start, tmp_path, spec, "--rate", RATE, name="rx1")
+    proc, r = send(str(src), "--to", f"udpout:{LOCAL}:{port}", "--rate", RATE, "--timeout", "20", timeout=60)
+    assert proc.returncode == 0 and r["ok"], proc.stderr
+    assert sha(inbox / "up.bin") == sha(src)
+    assert r["resumed_bytes"] == had, (r, had)
+
+
+@pytest.mark.parametrize("as_json", [True, False])
+def test_resumed_bytes_of_a_fetch_is_what_was_here(tmp_path: Path, start: Start, as_json: bool) -> None:
     """A fetch interrupted (it and its server killed), then run again: resumed_bytes is exactly
     what its partial file held, and the summary line says so."""
     serve = tmp_path / "serve"
@@ -191,8 +229,16 @@ def test_resumed_bytes_of_a_fetch_is_what_was_here(tmp_path: Path, start: Start)
     had = partial_bytes(tmp_path / "got")
     assert 0 < had < SIZE
     receiver(start, tmp_path, spec, "--serve", str(serve), "--rate", RATE, name="server1")
-    proc, r = send("log.bin", "--from", f"udpout:{LOCAL}:{port}", "--dir", str(tmp_path / "got"), "--rate", RATE,
-                   "--timeout", "20", timeout=60)
-    assert proc.returncode == 0 and r["ok"], proc.stderr
+    args = ("log.bin", "--from", f"udpout:{LOCAL}:{port}", "--dir", str(tmp_path / "got"), "--rate", RATE,
+            "--timeout", "20")
+    if as_json:
+        proc, r = send(*args, timeout=60)
+        assert proc.returncode == 0 and r["ok"], proc.stderr
+        assert r["resumed_bytes"] == had and r["server_restarts"] == 0, (r, had)
+    else:
+        proc = run_ttctl("send-file", *args, timeout=60)
+        assert proc.returncode == 0, proc.stderr
+        line = one_line(proc.stdout)
+        assert line.startswith("received log.bin from 1/240") and f"resumed: {had} bytes were already here" in line
+        assert "restarted" not in line
     assert sha(tmp_path / "got" / "log.bin") == sha(src)
-    assert r["resumed_bytes"] == had and r["restarts"] == 0, (r, had)

@@ -399,7 +399,7 @@ async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, sto
         "retransmitted_bytes": None, "frames_sent": None, "frames_received": t.frames if t is not None else 0,
         "path": t.final_path if t is not None else None, "peer": peer, "endpoint": transport.describe(),
         "direction": "fetch", "deflated_bytes": t.size if t is not None and t.original is not None else None,
-        "resumed_bytes": state["resumed"] if ok else 0, "restarts": state["restarts"],
+        "resumed_bytes": state["resumed"] if ok else 0, "server_restarts": state["restarts"],
         **_pipe_report(runner),
     }
     if sigs.stop.is_set() and not ok:
@@ -455,7 +455,10 @@ def _summary(r: dict[str, Any]) -> str:
     if r.get("retransmitted_bytes") is not None:
         parts.append(f"{r['retransmitted_bytes']} bytes retransmitted")
     if r.get("resumed_bytes"):
-        parts.append(f"resumed: {r['resumed_bytes']} bytes were already there")
+        parts.append(f"resumed: {r['resumed_bytes']} bytes were already {'there' if verb == 'sent' else 'here'}")
+    if r.get("server_restarts"):
+        n = r["server_restarts"]
+        parts.append(f"{r['peer']} restarted {n} time{'s' if n > 1 else ''} and served it anew")
     if r.get("deflated_bytes"):
         parts.append(f"deflate {r['bytes'] / r['deflated_bytes']:.1f}x: {r['deflated_bytes']:,} B on the link for "
                      f"{r['bytes']:,} B")

@@ -106,7 +106,8 @@ class FileSender:
         self._probe_due: float | None = None
         self._sends: dict[int, tuple[float, int]] = {}  # offset -> (last send time, sends)
         self._since: dict[int, int] = {}  # offset -> sends since it was last known to be missing
-        self._data_sent = False  # a data frame of this attempt has left (what the receiver had before is resumed)
+        self.sent = RangeSet()  # the bytes this attempt put in data frames
+        self.stats.resumed_bytes = 0  # acknowledged bytes this attempt never sent: the receiver had them
 
     def _first_mode(self) -> str:
         if self.cfg.frame_mode == "auto":
@@ -338,7 +339,7 @@ class FileSender:
         if retx is None:
             self._unclassified.append((offset, offset + length, left, mode))
         self.pacer.sent(now, frame_len)
-        self._data_sent = True
+        self.sent.add(offset, offset + length)
         self.stats.bytes_sent += length
         self.stats.frames_sent += 1
         if self.stats.data_started is None:
@@ -430,8 +431,11 @@ class FileSender:
             self.rtt = min(5.0, max(0.05, now - self._last_offer))
         self._offers_since_answer = 0
         if code == R.TT_FILE_RESULT_COMPLETE:
-            self.acked.add(0, self.size)
             nothing = self.stats.bytes_sent == 0 and self.size > 0
+            if nothing:
+                self.acked.add(0, self.size)  # an identical file was there (or all of it): no resume
+            else:
+                self._ack(0, self.size)
             how = "verified there (it had them already)" if nothing else "delivered and verified"
             self._finish(now, True, "COMPLETE", f"{self.name}: {self.file_size} bytes {how}", nothing)
             return
@@ -482,6 +486,13 @@ class FileSender:
         if self.on_progress:
             self.on_progress(self)
 
+    def _ack(self, start: int, end: int) -> None:
+        """Bytes [start, end) are at the receiver; those newly known that this attempt never sent
+        were there before it (resumed), whatever the order of the statuses that say so."""
+        for a, b in self.acked.gaps(start, end):
+            self.stats.resumed_bytes += sum(y - x for x, y in self.sent.gaps(a, b))
+        self.acked.add(start, end)
+
     def _rtt_from_echo(self, now: float, msg: Any) -> None:
         """A round-trip sample from the status's echo of the latest frame it saw (Karn: only
         frames sent once)."""
@@ -505,20 +516,16 @@ class FileSender:
         missing = [(max(pairs[2 * i], region), min(pairs[2 * i + 1], re)) for i in range(n)]
         missing = [(a, b) for a, b in missing if a < b]
         before = self.acked.total()
-        self.acked.add(0, rc)
+        self._ack(0, rc)
         pos = region
         for a, b in missing:
             if a > pos:
-                self.acked.add(pos, a)
+                self._ack(pos, a)
             pos = max(pos, b)
         if re > pos:
-            self.acked.add(pos, re)
+            self._ack(pos, re)
         if self.acked.total() > before:
             self.last_progress = now
-        if not self._data_sent:
-            # what the receiver had before we sent a byte: every status until then says it (the
-            # first may be a busy one, or one of a burst that describes its gaps region by region)
-            self.stats.resumed_bytes = self.acked.total()
         # a resumed transfer: skip what the receiver already has
         while self.next_new < self.size and self.acked.covers(self.next_new, min(self.size, self.next_new + 1)):
             end = next((b for a, b in self.acked if a <= self.next_new < b), self.next_new + 1)
