@@ -23,6 +23,7 @@ from ..wire.bindings import Bindings
 from ..wire.contract import TtFileFlags
 from ..wire.contract import TtFileResult as R
 from .deflate import DeflatedSource, deflate_meta, deflated
+from .frame_loss import FrameLoss
 from .names import Refused, check_name, encoded
 from .ranges import RangeSet
 from .sharing import GrantPacer
@@ -38,7 +39,6 @@ from .transfer import (
     quiet_after,
     reason_text,
     result_name,
-    wilson_upper,
 )
 
 
@@ -100,9 +100,7 @@ class FileSender:
         self._last_offer: float | None = None
         self._offers_since_answer = 0
         self.mode = self._first_mode()
-        self.loss: dict[str, float | None] = {"narrow": None, "wide": None}  # per-packet loss estimates
-        self._unclassified: list[tuple[int, int, float, str]] = []  # first sends not yet known lost or not
-        self._outcomes: dict[str, list[bool]] = {"narrow": [], "wide": []}  # recent first sends: lost?
+        self.frame_loss = FrameLoss()  # loss per frame size, and the size that carries most
         self._probe_due: float | None = None
         self._sends: dict[int, tuple[float, int]] = {}  # offset -> (last send time, sends)
         self._since: dict[int, int] = {}  # offset -> sends since it was last known to be missing
@@ -125,9 +123,7 @@ class FileSender:
         self.byte_time = byte_time
         self.on_stream = stream
         self.mode = self._first_mode()
-        self.loss = {"narrow": None, "wide": None}
-        self._unclassified = []
-        self._outcomes = {"narrow": [], "wide": []}
+        self.frame_loss = FrameLoss()
 
     def _use(self, z: DeflatedSource | None) -> None:
         """Offer the zlib stream `z`, or the file as it is (None)."""
@@ -291,17 +287,7 @@ class FileSender:
             # sharing the link: a wide frame's three packets back to back fill the radio's
             # buffer for the others, and the buffer's overflow takes the whole frame
             return "narrow"
-        n, w = self.loss["narrow"], self.loss["wide"]
-        p = w if self.mode == "wide" and w is not None else (n if n is not None else w)
-        if p is None:
-            return "narrow"
-        g = self.geometry
-        eff_narrow = g.narrow_cap / g.narrow_frame * (1 - p)
-        eff_wide = WIDE / g.wide_frame * g.survival_wide(p)
-        better = "wide" if eff_wide > eff_narrow else "narrow"
-        if better != self.mode and abs(eff_wide - eff_narrow) < 0.02:
-            return self.mode  # hysteresis
-        return better
+        return self.frame_loss.best(self.mode, self.geometry)
 
     def next_data(self, now: float, space: int) -> Any:
         if self.state != "sending" or not self.pacer.ready(now):
@@ -337,7 +323,7 @@ class FileSender:
         left = now + (frame_len + g.mtu) * self.byte_time
         self._record(left, offset, offset + length)
         if retx is None:
-            self._unclassified.append((offset, offset + length, left, mode))
+            self.frame_loss.first_send(offset, offset + length, left, mode)
         self.pacer.sent(now, frame_len)
         self.sent.add(offset, offset + length)
         self.stats.bytes_sent += length
@@ -550,32 +536,10 @@ class FileSender:
         for a, b in self.acked:
             self.retx.remove(a, b)
         self._sent = [(s, e, ts) for s, e, ts in self._sent if not self.acked.covers(s, e)]
-        self._classify(horizon, re, truncated, missing)
-        self._probe_due = None if self._wants_data(now) else now + max(2 * self.rtt, 0.5)
-
-    def _classify(self, horizon: float, re: int, truncated: bool, missing: list[tuple[int, int]]) -> None:
-        """Loss, measured exactly: each first transmission, once a status covers its bytes, was
-        lost if any of them is reported missing. Estimates come from the last 64 per frame size."""
-        keep: list[tuple[int, int, float, str]] = []
-        for rec in self._unclassified:
-            start, end, when, mode = rec
-            known = when <= horizon and (end <= re or not truncated)
-            if not known:
-                keep.append(rec)
-                continue
-            lost = any(a < end and start < b for a, b in missing)
-            window = self._outcomes[mode]
-            window.append(lost)
-            if len(window) > 64:
-                window.pop(0)
-        self._unclassified = keep
-        for mode in ("narrow", "wide"):
-            window = self._outcomes[mode]
-            if len(window) >= 8:
-                frame_loss = wilson_upper(sum(window), len(window))  # pessimistic: wide frames are costly
-                self.loss[mode] = frame_loss if mode == "narrow" else self.geometry.packet_loss_from_wide(frame_loss)
+        self.frame_loss.classify(horizon, re, truncated, missing, self.geometry)
         if self.cfg.frame_mode == "auto" and self.stats.narrow_frames >= self.cfg.probe_frames:
             self.mode = self._choose_mode()
+        self._probe_due = None if self._wants_data(now) else now + max(2 * self.rtt, 0.5)
 
     def deadline(self, now: float) -> float | None:
         """The next time this transfer needs attention (data waiting for the pacer is the
