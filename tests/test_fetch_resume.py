@@ -14,6 +14,7 @@ from __future__ import annotations
 import json
 import random
 import time
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -53,9 +54,19 @@ def wait_partial(folder: Path, at_least: int, proc: Proc | None = None, timeout:
 
 
 def offsets(seed: int, n: int) -> list[int]:
-    """`n` kill points, increasing, between 15 % and 85 % of the file."""
+    """`n` kill points, increasing, between 15 % and 85 % of the file, one in each n-th of that."""
     rng = random.Random(seed)
-    return sorted(int(SIZE * rng.uniform(0.15, 0.85)) for _ in range(n))
+    step = 0.7 / n
+    return [int(SIZE * rng.uniform(0.15 + i * step, 0.15 + (i + 1) * step)) for i in range(n)]
+
+
+def kill_points(seed: int, n: int, folder: Path, f: Proc) -> Iterator[int]:
+    """Wait for each kill point in turn (each at least 3000 bytes past the previous kill, so
+    that every restarted server serves some of the file before it is killed in its turn)."""
+    had = 0
+    for at in offsets(seed, n):
+        had = wait_partial(folder, min(max(at, had + 3000), SIZE - 10_000), f)
+        yield had
 
 
 def fetch(start: Start, tmp: Path, port: int, name: str = "log.bin") -> Proc:
@@ -75,25 +86,37 @@ def finished(proc: Proc, began: float, bound: float) -> dict[str, Any]:
     return report
 
 
-def test_a_fetch_resumes_in_the_same_run_when_its_python_server_restarts(tmp_path: Path, start: Start) -> None:
-    """recv-file --serve killed and started again 2-3 times at seeded random offsets: the fetch
-    completes in the same run, well within --timeout of the last restart, with the SHA-256 of the
-    served file; each restart is reported, and nothing was there before the run."""
+def python_server(start: Start, tmp: Path, spec: str, serve: Path, name: str, kind: str = "recv-file") -> Proc:
+    """Python's serving end: `ttctl recv-file --serve`, or `ttctl emulate onboard --serve`."""
+    if kind == "recv-file":
+        return receiver(start, tmp, spec, "--serve", str(serve), "--rate", RATE, name=name)
+    p = start(name, "emulate", "onboard", "--listen", spec, "--no-gcs", "--no-entry-points", "--serve", str(serve),
+              "--rate", RATE)
+    p.wait_for("onboard 1:")
+    return p
+
+
+@pytest.mark.parametrize("kind", ["recv-file", "emulate-onboard"])
+def test_a_fetch_resumes_in_the_same_run_when_its_python_server_restarts(tmp_path: Path, start: Start,
+                                                                         kind: str) -> None:
+    """recv-file --serve (or emulate onboard --serve) killed and started again 2-3 times at seeded
+    random offsets: the fetch completes in the same run, well within --timeout of the last
+    restart, with the SHA-256 of the served file; each restart is reported, and nothing was there
+    before the run."""
     seed = random.randrange(1 << 16)
     n = 2 + seed % 2
     serve = tmp_path / "serve"
     src = write(serve / "log.bin", SIZE, seed)
     port = free_port()
     spec = f"udpin:{LOCAL}:{port}"
-    server = receiver(start, tmp_path, spec, "--serve", str(serve), "--rate", RATE, name="server0")
+    server = python_server(start, tmp_path, spec, serve, "server0", kind)
     began = time.monotonic()
     f = fetch(start, tmp_path, port)
     rng = random.Random(seed)
-    for i, at in enumerate(offsets(seed, n)):
-        wait_partial(tmp_path / "got", at, f)
+    for i, _ in enumerate(kill_points(seed, n, tmp_path / "got", f)):
         server.kill()
         time.sleep(rng.uniform(0.2, 1.0))
-        server = receiver(start, tmp_path, spec, "--serve", str(serve), "--rate", RATE, name=f"server{i + 1}")
+        server = python_server(start, tmp_path, spec, serve, f"server{i + 1}", kind)
     # each restart costs a few seconds at most; the old code waited out --timeout after the first
     r = finished(f, began, TIMEOUT - 5)
     assert sha(tmp_path / "got" / "log.bin") == sha(src), f"seed {seed}"
@@ -122,8 +145,7 @@ def test_a_fetch_resumes_in_the_same_run_when_its_cpp_server_restarts(cpp_node_b
     began = time.monotonic()
     f = fetch(start, tmp_path, port)
     rng = random.Random(seed)
-    for i, at in enumerate(offsets(seed, 2)):
-        wait_partial(tmp_path / "got", at, f)
+    for i, _ in enumerate(kill_points(seed, 2, tmp_path / "got", f)):
         n.kill()
         time.sleep(rng.uniform(0.2, 1.0))
         n = node(i + 1)
@@ -155,6 +177,29 @@ def test_a_server_back_with_another_file_is_not_spliced(tmp_path: Path, start: S
     assert "a different log.bin" in f.stderr and "from the start" in f.stderr, f.stderr
     assert "resuming at" not in f.stderr, f.stderr
     assert partial_bytes(tmp_path / "got") == 0  # the old file's bytes went with it
+
+
+def test_a_server_back_without_the_file_refuses_in_its_words(tmp_path: Path, start: Start) -> None:
+    """The server restarts and no longer has log.bin: the fetch asks again, hears NOT_FOUND and
+    ends at once (exit 1) with the server's words, not after --timeout; what arrived is kept."""
+    serve = tmp_path / "serve"
+    src = write(serve / "log.bin", SIZE, 3)
+    port = free_port()
+    spec = f"udpin:{LOCAL}:{port}"
+    server = receiver(start, tmp_path, spec, "--serve", str(serve), "--rate", RATE, name="server0")
+    began = time.monotonic()
+    f = fetch(start, tmp_path, port)
+    wait_partial(tmp_path / "got", SIZE // 3, f)
+    server.kill()
+    src.unlink()
+    receiver(start, tmp_path, spec, "--serve", str(serve), "--rate", RATE, name="server1")
+    assert f.wait(TIMEOUT) == 1, f.stderr
+    assert time.monotonic() - began < TIMEOUT - 5, f.stderr
+    assert one_line(f.stderr).startswith("ttctl: error: not found at 1/240: there is no log.bin in the served folder"
+                                         " (what arrived is kept in "), f.stderr
+    r = json.loads(f.stdout)
+    assert r["code"] == "NOT_FOUND" and not r["ok"], r
+    assert partial_bytes(tmp_path / "got") >= SIZE // 3
 
 
 def test_resumed_bytes_of_an_upload_is_what_the_receiver_had(tmp_path: Path, start: Start) -> None:

@@ -280,15 +280,16 @@ class Endpoint:
             if s.done and now - (s.stats.finished or now) > 30:
                 self._retire(s)
         for req in self.requests.values():
-            if not req.answered:
-                if req._refusal is not None and now >= req._refusal[1] + req.reason_wait:
-                    self._fail_request(req, req._refusal[0])
-                    continue
-                if now >= req.give_up:
-                    req.answered, req.code = True, "TIMEOUT"
-                    req.error = f"no answer to the request for {req.name}"
-                    self._event("request-failed", req)
-                    continue
+            if req.code is not None:
+                continue
+            if req._refusal is not None and now >= req._refusal[1] + req.reason_wait:
+                self._fail_request(req, req._refusal[0])
+                continue
+            if not req.answered and now >= req.give_up:
+                req.answered, req.code = True, "TIMEOUT"
+                req.error = f"no answer to the request for {req.name}"
+                self._event("request-failed", req)
+                continue
             if self.receiver is not None:  # (asked again, too, while its transfer is quiet)
                 for msg in req.control(now, self.receiver):
                     send(enc(msg), CONTROL)
@@ -404,7 +405,7 @@ class Endpoint:
         src = (msg.get_srcSystem(), msg.get_srcComponent())
         if msg.result in (R.TT_FILE_RESULT_NOT_FOUND, R.TT_FILE_RESULT_REQUEST_REFUSED):
             req = self.requests.get(msg.transfer_id)
-            if req is not None and req.target == src and not req.answered:
+            if req is not None and req.target == src and req.code is None:  # (asked again, too: fetches.py)
                 code = "NOT_FOUND" if msg.result == R.TT_FILE_RESULT_NOT_FOUND else "REQUEST_REFUSED"
                 if req.reason is not None:
                     self._fail_request(req, code)
@@ -422,7 +423,7 @@ class Endpoint:
     def _on_reason(self, now: float, msg: Any) -> None:
         src = (msg.get_srcSystem(), msg.get_srcComponent())
         req = self.requests.get(msg.transfer_id)
-        if req is not None and req.target == src and not req.answered:
+        if req is not None and req.target == src and req.code is None:
             req.reason = reason_text(msg.text)
             if req._refusal is not None:
                 self._fail_request(req, req._refusal[0])

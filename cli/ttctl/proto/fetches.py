@@ -81,6 +81,8 @@ class Request:
     def control(self, now: float, receiver: FileReceiver) -> list[Any]:
         """The request's messages, when due: until an offer answers it (with backoff), and once
         answered, while the transfer it started has gone quiet (the server may have restarted)."""
+        if self.code is not None:
+            return []
         if not self.answered:
             if now < self.due:
                 return []
@@ -109,6 +111,10 @@ class Request:
         return quiet_after(self.cfg, self.rtt, receiver.grant, receiver.packet)
 
     def deadline(self, receiver: FileReceiver) -> float | None:
+        if self.code is not None:
+            return None
+        if self._refusal is not None:
+            return self._refusal[1] + self.reason_wait
         if not self.answered:
             return min(self.due, self.give_up) if self._refusal is None else self._refusal[1] + self.reason_wait
         t = self._running(receiver)
