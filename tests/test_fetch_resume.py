@@ -287,3 +287,24 @@ def test_resumed_bytes_of_a_fetch_is_what_was_here(tmp_path: Path, start: Start,
         assert line.startswith("received log.bin from 1/240") and f"resumed: {had} bytes were already here" in line
         assert "restarted" not in line
     assert sha(tmp_path / "got" / "log.bin") == sha(src)
+
+
+def test_a_server_that_never_comes_back_times_out_in_words(tmp_path: Path, start: Start) -> None:
+    """The server is killed for good: the fetch asks again while it waits, and after --timeout
+    without progress ends (exit 1) saying the server went quiet and did not answer its requests."""
+    serve = tmp_path / "serve"
+    write(serve / "log.bin", SIZE, 4)
+    port = free_port()
+    server = receiver(start, tmp_path, f"udpin:{LOCAL}:{port}", "--serve", str(serve), "--rate", RATE)
+    got = tmp_path / "got"
+    got.mkdir()
+    f = start("fetch", "send-file", "log.bin", "--from", f"udpout:{LOCAL}:{port}", "--dir", str(got), "--rate", RATE,
+              "--timeout", "6")
+    wait_partial(got, SIZE // 3, f)
+    server.kill()
+    t0 = time.monotonic()
+    assert f.wait(30) == 1, f.stderr
+    assert 5.0 <= time.monotonic() - t0 < 20, f.stderr
+    line = one_line(f.stderr)
+    assert line.startswith("ttctl: error: timed out: no progress for 6 s (1/240 went quiet and did not answer "), line
+    assert "requests since) (what arrived is kept in " in line, line

@@ -366,7 +366,10 @@ async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, sto
             if t is not None:
                 bar.update(got, t.size)
                 if now - progress_at > o.timeout:
-                    state["error"] = f"timed out: no progress for {o.timeout:g} s"
+                    why = f"timed out: no progress for {o.timeout:g} s"
+                    if req.unanswered:  # the server went quiet, and did not serve the file again
+                        why += f" ({peer} went quiet and did not answer {req.unanswered} requests since)"
+                    state["error"] = why
                     state["code"] = "TIMEOUT"
         if state["done"]:
             await runner.drain(2.0)  # let our COMPLETE status leave, so the peer stops too

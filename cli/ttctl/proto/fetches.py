@@ -61,6 +61,7 @@ class Request:
         self._first_ask: float | None = None
         self._asks = 0
         self.asked_again = 0  # requests repeated because the transfer went quiet
+        self.unanswered = 0  # of those, since the last offer
 
     def messages(self) -> list[Any]:
         return [self.b.TtFileRequest(target_system=self.target[0], target_component=self.target[1],
@@ -76,6 +77,7 @@ class Request:
             self.rtt = min(5.0, max(0.02, now - self._first_ask))  # Karn: an unrepeated request only
         self.answered, self.key = True, key
         self.offers += 1
+        self.unanswered = 0
         self.interval = self.cfg.offer_interval
 
     def control(self, now: float, receiver: FileReceiver) -> list[Any]:
@@ -95,6 +97,7 @@ class Request:
         if t is None or now < max(self.due, t.last_activity + self._quiet(receiver)):
             return []
         self.asked_again += 1
+        self.unanswered += 1
         self.due = now + self.interval
         self.interval = min(self.interval * 1.5, ASK_AGAIN_MAX)
         return self.messages()
