@@ -260,7 +260,7 @@ def test_a_large_stream_is_spooled_to_a_temporary_file_not_memory(tmp_path: Path
 
 def test_a_served_file_over_the_cap_goes_as_it_is(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """Deflating blocks the serving end while it runs: served files over 16 MiB go as they are."""
-    import ttctl.proto.endpoint as ep
+    import ttctl.proto.fetches as ep
 
     monkeypatch.setattr(ep, "SERVE_DEFLATE_MAX", 10_000)
     serve = tmp_path / "results"

@@ -475,7 +475,7 @@ def test_a_flood_of_incomplete_offers_does_not_lock_real_senders_out(tmp_path: P
 def test_a_flood_of_incomplete_requests_is_bounded(tmp_path: Path) -> None:
     """TT_FILE_REQUEST names that never complete are kept for at most MAX_PARTIAL_REQUESTS
     requests (memory grew with every one), and a real request after them is served."""
-    from ttctl.proto.endpoint import MAX_PARTIAL_REQUESTS
+    from ttctl.proto.fetches import MAX_PARTIAL_REQUESTS
 
     serve = tmp_path / "serve"
     serve.mkdir()
@@ -486,7 +486,7 @@ def test_a_flood_of_incomplete_requests_is_bounded(tmp_path: Path) -> None:
         w.onboard.receive(0.0, enc.encode(ttapi.TtFileRequest(
             target_system=ONBOARD[0], target_component=ONBOARD[1], request_id=1 + i, name_length=200,
             name_offset=0, name=b"x" * 80)))
-    assert len(w.onboard._served) <= MAX_PARTIAL_REQUESTS
+    assert len(w.onboard.serving.partial) <= MAX_PARTIAL_REQUESTS
     got = tmp_path / "tab" / "log.txt"
     w.tablet.request_file("log.txt", ONBOARD)
     w.run(10, stop=got.exists)

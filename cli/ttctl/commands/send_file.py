@@ -314,7 +314,8 @@ async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, sto
     wake = asyncio.Event()
     target = (o.target_sysid, o.target_compid)
     peer = who(target)
-    state: dict[str, Any] = {"t": None, "error": None, "code": None, "done": False}
+    state: dict[str, Any] = {"t": None, "error": None, "code": None, "done": False, "accepted": None,
+                             "resumed": 0, "restarts": 0}
     req: Any = None
 
     def on_event(what: str, obj: Any) -> None:
@@ -323,7 +324,9 @@ async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, sto
         elif what.startswith("file-") and req is not None and obj.key[:2] == target \
                 and getattr(obj, "request_id", 0) == req.id and not obj.offered_again:
             state["t"] = obj
-            if what == "file-complete":
+            if what == "file-accepted":
+                _accepted(obj, state, peer, bar.log)
+            elif what == "file-complete":
                 state["done"] = True
             elif what in ("file-refused", "file-failed"):
                 state["error"] = f"could not store {obj.name or name} here: {obj.reason}"
@@ -341,7 +344,7 @@ async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, sto
         raise Fail(f"--dir: {e}") from None
     sigs = Signals(loop, wake)
     started = loop.time()
-    progress_at, have = started, 0
+    progress_at, have, seen = started, 0, None
     try:
         if not await await_peer(runner, wake, sigs, o.timeout):
             return Outcome(False, {}, interrupted=True)
@@ -356,12 +359,17 @@ async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, sto
             t = state["t"]
             now = loop.time()
             got = t.partial.ranges.total() if t is not None and t.partial is not None else 0
+            if t is not seen:  # served anew: its progress counts from what it found here
+                seen, have, progress_at = t, got, now
             if got > have:
                 have, progress_at = got, now
             if t is not None:
                 bar.update(got, t.size)
                 if now - progress_at > o.timeout:
-                    state["error"] = f"timed out: no progress for {o.timeout:g} s"
+                    why = f"timed out: no progress for {o.timeout:g} s"
+                    if req.unanswered:  # the server went quiet, and did not serve the file again
+                        why += f" ({peer} went quiet and did not answer {req.unanswered} requests since)"
+                    state["error"] = why
                     state["code"] = "TIMEOUT"
         if state["done"]:
             await runner.drain(2.0)  # let our COMPLETE status leave, so the peer stops too
@@ -394,6 +402,7 @@ async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, sto
         "retransmitted_bytes": None, "frames_sent": None, "frames_received": t.frames if t is not None else 0,
         "path": t.final_path if t is not None else None, "peer": peer, "endpoint": transport.describe(),
         "direction": "fetch", "deflated_bytes": t.size if t is not None and t.original is not None else None,
+        "resumed_bytes": state["resumed"] if ok else 0, "server_restarts": state["restarts"],
         **_pipe_report(runner),
     }
     if sigs.stop.is_set() and not ok:
@@ -413,6 +422,30 @@ async def _download(o: SendOptions, side: _End, spec: Any, link: LinkChoice, sto
     return Outcome(False, report, err)
 
 
+def _accepted(t: Any, state: dict[str, Any], peer: str, log: Any) -> None:
+    """A fetch's transfer accepted here: the first says what was here already (resumed_bytes,
+    in the file's bytes); a later one is the request served anew, after the server restarted,
+    resumed from this end's partial file if it is the same file, or the new file from the start."""
+    have = t.partial.ranges.total() if t.partial is not None else 0
+    if t.original is not None and t.size:  # a zlib stream's bytes: the file's share of them
+        have = round(have * t.original / t.size)
+    before = state["accepted"]
+    state["accepted"] = t
+    if before is None:
+        state["resumed"] = have
+        return
+    if before is t:
+        return
+    state["restarts"] += 1
+    if (before.sha256, before.file_size) == (t.sha256, t.file_size):
+        log(f"{peer} served {t.name} anew (it restarted): resuming at {have} of {t.file_size} bytes")
+        return
+    state["resumed"] = have  # (here before this run: nothing of the old file counts towards the new one)
+    start = "from the start" if not have else f"from the {have} bytes of it already here"
+    log(f"{peer} now serves a different {t.name} (another SHA-256, {t.file_size} bytes): fetching it again {start}; "
+        "what came of the old one is not used")
+
+
 def _summary(r: dict[str, Any]) -> str:
     verb = "sent" if r["direction"] == "send" else "received"
     if r.get("nothing_sent"):
@@ -425,7 +458,10 @@ def _summary(r: dict[str, Any]) -> str:
     if r.get("retransmitted_bytes") is not None:
         parts.append(f"{r['retransmitted_bytes']} bytes retransmitted")
     if r.get("resumed_bytes"):
-        parts.append(f"resumed: {r['resumed_bytes']} bytes were already there")
+        parts.append(f"resumed: {r['resumed_bytes']} bytes were already {'there' if verb == 'sent' else 'here'}")
+    if r.get("server_restarts"):
+        n = r["server_restarts"]
+        parts.append(f"{r['peer']} restarted {n} time{'s' if n > 1 else ''} and served it anew")
     if r.get("deflated_bytes"):
         parts.append(f"deflate {r['bytes'] / r['deflated_bytes']:.1f}x: {r['deflated_bytes']:,} B on the link for "
                      f"{r['bytes']:,} B")

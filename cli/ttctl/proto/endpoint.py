@@ -10,9 +10,7 @@ packet receiver of its own, so that two peers' packets never mix in one frame.
 
 from __future__ import annotations
 
-import os
 import random
-import stat
 from collections import OrderedDict
 from collections.abc import Callable, Hashable
 from pathlib import Path
@@ -23,68 +21,27 @@ from ..wire.contract import TtFileResult as R
 from ..wire.packets import PacketReceiver
 from .commands import FINAL_OK, Action, Command, CommandClient, CommandServer, log_chunks
 from .deflate import DeflatedSource
-from .names import Refused, check_name, encoded
+from .fetches import Request, Serving
+from .names import Refused, check_name
 from .pipeline import Pipe
-from .ranges import RangeSet
 from .receiver import FileReceiver
 from .scheduler import BULK, CONTROL, TELEMETRY, Scheduler
 from .sender import FileSender
-from .storage import FileSource, ReceiveDir, StorageError, kind_of
+from .storage import FileSource, ReceiveDir
 from .transfer import (
     FIT_MAX,
     FIT_OVERHEAD,
     NARROW,
-    REQUEST_PART,
     RESULT_TEXT,
     WIDE,
     Geometry,
     TransferConfig,
-    reason_fit,
     reason_text,
 )
 
 TARGETED = "target_system"
 STATUS_BYTES = 60  # typical TT_FILE_STATUS frame
 MAX_SOURCES = 64  # packet receivers kept for distinct sources (the least recently heard goes first)
-SERVE_DEFLATE_MAX = 16 << 20  # served files up to this size may go deflated (deflating blocks this end meanwhile)
-MAX_PARTIAL_REQUESTS = 64  # TT_FILE_REQUEST names still arriving, kept at once (the stalest goes first)
-
-
-class Request:
-    """A download we asked for."""
-
-    def __init__(self, bindings: Bindings, request_id: int, name: str, target: tuple[int, int], now: float,
-                 config: TransferConfig) -> None:
-        self.b = bindings
-        self.id = request_id
-        self.name = name
-        self.raw = encoded(name)
-        self.target = target
-        self.due = now
-        self.interval = config.offer_interval
-        self.interval_max = config.offer_interval_max
-        self.give_up = now + config.give_up_after
-        self.reason_wait = config.reason_wait
-        self.answered = False
-        self.code: str | None = None  # NOT_FOUND, REQUEST_REFUSED, TIMEOUT when it failed
-        self.error: str | None = None
-        self.reason: str | None = None
-        self._refusal: tuple[str, float] | None = None
-        self.key: tuple[int, int, int] | None = None
-
-    def messages(self) -> list[Any]:
-        return [self.b.TtFileRequest(target_system=self.target[0], target_component=self.target[1],
-                                     request_id=self.id, name_length=len(self.raw), name_offset=off,
-                                     name=self.raw[off:off + REQUEST_PART])
-                for off in range(0, len(self.raw), REQUEST_PART)]
-
-
-class _ServedRequest:
-    def __init__(self, now: float) -> None:
-        self.name = bytearray()
-        self.have = RangeSet()
-        self.length = 0
-        self.last = now  # when a part last came
 
 
 class Endpoint:
@@ -125,11 +82,10 @@ class Endpoint:
                 # a status with a few gaps is about 50 bytes on the wire (its ranges truncate)
                 "status_min_interval": max(self.cfg.status_min_interval, 3 * STATUS_BYTES / rate_Bps),
                 "status_tail_interval": max(self.cfg.status_tail_interval, 1.2 * STATUS_BYTES / rate_Bps)})
-        self.serve_dir = Path(serve_dir).resolve() if serve_dir else None
+        self.serving = Serving(self, serve_dir)  # the files it serves, on request (fetches.py)
         self.compress = compress  # offer files deflated when that saves (sends and served fetches)
         self.senders: dict[int, FileSender] = {}
         self.requests: dict[int, Request] = {}
-        self._served: dict[tuple[int, int, int], _ServedRequest] = {}
         # transfer, request and first command ids are random (seeded in simulations): never reused by accident
         self._rng = rng or random.SystemRandom()
         self.commands = CommandClient(sysid, compid, first_id=self._rng.randint(1, 65535))
@@ -219,9 +175,8 @@ class Endpoint:
         times = [t for t in (self.commands.deadline(),
                              self.receiver.deadline() if self.receiver else None) if t is not None]
         times += [t for s in self.senders.values() if (t := s.deadline(self.now)) is not None]
-        for r in self.requests.values():
-            if not r.answered:
-                times.append(min(r.due, r.give_up) if r._refusal is None else r._refusal[1] + r.reason_wait)
+        if self.receiver is not None:
+            times += [t for r in self.requests.values() if (t := r.deadline(self.receiver)) is not None]
         file_data = not self.pipe.is_open and any(s.has_data(self.now) for s in self.senders.values())
         if self.scheduler.busy or file_data \
                 or any(s.has_data(self.now) for s in self._streams_out):
@@ -325,21 +280,19 @@ class Endpoint:
             if s.done and now - (s.stats.finished or now) > 30:
                 self._retire(s)
         for req in self.requests.values():
-            if req.answered:
+            if req.code is not None:
                 continue
             if req._refusal is not None and now >= req._refusal[1] + req.reason_wait:
                 self._fail_request(req, req._refusal[0])
                 continue
-            if now >= req.give_up:
+            if not req.answered and now >= req.give_up:
                 req.answered, req.code = True, "TIMEOUT"
                 req.error = f"no answer to the request for {req.name}"
                 self._event("request-failed", req)
                 continue
-            if now >= req.due:
-                for msg in req.messages():
+            if self.receiver is not None:  # (asked again, too, while its transfer is quiet)
+                for msg in req.control(now, self.receiver):
                     send(enc(msg), CONTROL)
-                req.due = now + req.interval
-                req.interval = min(req.interval * 1.5, req.interval_max)
 
     def _refused_by_signing(self, source: Hashable) -> Callable[[bytes, str], None] | None:
         """With signing on: the first frame from `source` refused for its signature (or for
@@ -419,7 +372,7 @@ class Endpoint:
         elif isinstance(msg, b.TtFileReason):
             self._on_reason(now, msg)
         elif isinstance(msg, b.TtFileRequest):
-            self._on_request(now, msg)
+            self.serving.on_request(now, msg)
         elif isinstance(msg, b.TtCommandAck):
             self.commands.on_ack(now, msg)
         elif isinstance(msg, b.TtActionCommand) and self.server is not None:
@@ -444,16 +397,15 @@ class Endpoint:
         src = (msg.get_srcSystem(), msg.get_srcComponent())
         if msg.request_id:
             req = self.requests.get(msg.request_id)
-            if req is not None and req.target == src and not req.answered:
-                req.answered = True
-                req.key = (src[0], src[1], msg.transfer_id)
+            if req is not None and req.target == src and req.code is None:
+                req.answer(now, (src[0], src[1], msg.transfer_id))  # the first offer, or the request served anew
         self.receiver.on_offer(now, msg)
 
     def _on_status(self, now: float, msg: Any) -> None:
         src = (msg.get_srcSystem(), msg.get_srcComponent())
         if msg.result in (R.TT_FILE_RESULT_NOT_FOUND, R.TT_FILE_RESULT_REQUEST_REFUSED):
             req = self.requests.get(msg.transfer_id)
-            if req is not None and req.target == src and not req.answered:
+            if req is not None and req.target == src and req.code is None:  # (asked again, too: fetches.py)
                 code = "NOT_FOUND" if msg.result == R.TT_FILE_RESULT_NOT_FOUND else "REQUEST_REFUSED"
                 if req.reason is not None:
                     self._fail_request(req, code)
@@ -471,7 +423,7 @@ class Endpoint:
     def _on_reason(self, now: float, msg: Any) -> None:
         src = (msg.get_srcSystem(), msg.get_srcComponent())
         req = self.requests.get(msg.transfer_id)
-        if req is not None and req.target == src and not req.answered:
+        if req is not None and req.target == src and req.code is None:
             req.reason = reason_text(msg.text)
             if req._refusal is not None:
                 self._fail_request(req, req._refusal[0])
@@ -484,78 +436,6 @@ class Endpoint:
         req.answered, req.code = True, code
         req.error = req.reason or RESULT_TEXT.get(code, "refused")
         self._event("request-failed", req)
-
-    def _on_request(self, now: float, msg: Any) -> None:
-        if msg.request_id == 0:
-            return
-        src = (msg.get_srcSystem(), msg.get_srcComponent())
-        key = (src[0], src[1], msg.request_id)
-        for s in self.senders.values():
-            if s.request_id == msg.request_id and s.target == src and not s.done:
-                return  # already serving it: the offers repeat on their own
-        part = self._served.get(key)
-        if part is None:
-            if len(self._served) >= MAX_PARTIAL_REQUESTS:
-                # a flood of request names that never complete: the stalest goes (a real
-                # requester's name is whole in one or two messages, and repeated until answered)
-                del self._served[min(self._served, key=lambda k: self._served[k].last)]
-            part = self._served[key] = _ServedRequest(now)
-        part.last = now
-        if not part.length:
-            part.length = msg.name_length
-            part.name = bytearray(msg.name_length)
-        off = msg.name_offset
-        chunk = bytes(msg.name[: max(0, min(len(msg.name), part.length - off))])
-        part.name[off:off + len(chunk)] = chunk
-        part.have.add(off, off + len(chunk))
-        if not part.length or not part.have.covers(0, part.length):
-            return
-        del self._served[key]
-        try:
-            path, name = self._servable(bytes(part.name))
-            try:
-                small = os.stat(path).st_size <= SERVE_DEFLATE_MAX
-            except OSError:
-                small = False  # opening it says what is wrong
-            self.send_file(path, src, name=name, request_id=msg.request_id, compress=self.compress and small)
-        except Refused as e:
-            result = R.TT_FILE_RESULT_NOT_FOUND if e.code == "NOT_FOUND" else R.TT_FILE_RESULT_REQUEST_REFUSED
-            self._refuse_request(src, msg.request_id, result, e.reason)
-        except (StorageError, ValueError) as e:
-            self._refuse_request(src, msg.request_id, R.TT_FILE_RESULT_REQUEST_REFUSED, str(e))
-
-    def _servable(self, raw: bytes) -> tuple[Path, str]:
-        """The served file a request names, or Refused with the reason."""
-        try:
-            name = raw.decode("utf-8")
-        except UnicodeDecodeError:
-            raise Refused("REQUEST_REFUSED", "the name is not valid UTF-8") from None
-        if self.serve_dir is None:
-            raise Refused("REQUEST_REFUSED", "this end serves no files")
-        try:
-            check_name(name)
-        except Refused as e:
-            raise Refused("REQUEST_REFUSED", e.reason) from None
-        path = (self.serve_dir / name).resolve()
-        if self.serve_dir not in path.parents:
-            raise Refused("REQUEST_REFUSED", f"{name} leads outside the served folder")
-        try:
-            st = os.stat(path)
-        except (FileNotFoundError, NotADirectoryError):
-            raise Refused("NOT_FOUND", f"there is no {name} in the served folder") from None
-        except OSError as e:
-            raise Refused("REQUEST_REFUSED", f"{name}: {e.strerror or e}") from None
-        if not stat.S_ISREG(st.st_mode):
-            raise Refused("REQUEST_REFUSED", f"{name} is {kind_of(st.st_mode)}, not a file")
-        return path, name
-
-    def _refuse_request(self, src: tuple[int, int], request_id: int, result: R, reason: str) -> None:
-        why = self.b.TtFileReason(target_system=src[0], target_component=src[1], transfer_id=request_id,
-                                  result=int(result), text=reason_fit(reason))
-        status = self.b.TtFileStatus(target_system=src[0], target_component=src[1], transfer_id=request_id,
-                                     result=int(result))
-        self.scheduler.send(self.encoder.encode(why), CONTROL, key=("request-reason", src, request_id))
-        self.scheduler.send(self.encoder.encode(status), CONTROL, key=("request-status", src, request_id))
 
 
 __all__ = ["BULK", "CONTROL", "TELEMETRY", "Endpoint", "Request"]

@@ -206,6 +206,19 @@ class FileReceiver:
         except (OSError, StorageError):
             return 0
 
+    def _supersede(self, t: Incoming, now: float) -> None:
+        """A request served anew (its server restarted, and was asked again, fetches.py): the
+        quiet transfer that served it before makes way. This one resumes its bytes if it offers
+        the same file (one partial key); another file (another SHA-256: the server's file changed)
+        starts a partial of its own, and the old one's bytes, of a file no longer served, go."""
+        for other in list(self.transfers.values()):
+            if other is not t and other.key[:2] == t.key[:2] and other.request_id == t.request_id \
+                    and other.partial is not None and now - other.last_activity >= self.cfg.status_interval:
+                partial, members = self.groups.get(other.group or "", (None, set()))
+                self._close(other)
+                if partial is not None and members == set() and other.sha256 != t.sha256:
+                    partial.discard()
+
     def _forget_one(self) -> bool:
         """Room for one more: forget the transfer heard from least recently among those not
         receiving (finished, refused, waiting); False if every one is receiving."""
@@ -255,6 +268,7 @@ class FileReceiver:
             if asked != t.name:
                 return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_NAME,
                                     f"this end did not ask {t.who} for {t.name}")
+            self._supersede(t, now)
         elif not self.unsolicited:
             return self._refuse(t, now, R.TT_FILE_RESULT_REFUSED_NAME, "this end takes only the files it asks for")
         if t.original is not None and (held := self._held_as_it_is(t)):

@@ -23,6 +23,7 @@ from ..wire.bindings import Bindings
 from ..wire.contract import TtFileFlags
 from ..wire.contract import TtFileResult as R
 from .deflate import DeflatedSource, deflate_meta, deflated
+from .frame_loss import FrameLoss
 from .names import Refused, check_name, encoded
 from .ranges import RangeSet
 from .sharing import GrantPacer
@@ -35,9 +36,9 @@ from .transfer import (
     TransferResult,
     TransferStats,
     meta_check,
+    quiet_after,
     reason_text,
     result_name,
-    wilson_upper,
 )
 
 
@@ -99,13 +100,12 @@ class FileSender:
         self._last_offer: float | None = None
         self._offers_since_answer = 0
         self.mode = self._first_mode()
-        self.loss: dict[str, float | None] = {"narrow": None, "wide": None}  # per-packet loss estimates
-        self._unclassified: list[tuple[int, int, float, str]] = []  # first sends not yet known lost or not
-        self._outcomes: dict[str, list[bool]] = {"narrow": [], "wide": []}  # recent first sends: lost?
+        self.frame_loss = FrameLoss()  # loss per frame size, and the size that carries most
         self._probe_due: float | None = None
         self._sends: dict[int, tuple[float, int]] = {}  # offset -> (last send time, sends)
         self._since: dict[int, int] = {}  # offset -> sends since it was last known to be missing
-        self._answers = 0
+        self.sent = RangeSet()  # the bytes this attempt put in data frames
+        self.stats.resumed_bytes = 0  # acknowledged bytes this attempt never sent: the receiver had them
 
     def _first_mode(self) -> str:
         if self.cfg.frame_mode == "auto":
@@ -123,9 +123,7 @@ class FileSender:
         self.byte_time = byte_time
         self.on_stream = stream
         self.mode = self._first_mode()
-        self.loss = {"narrow": None, "wide": None}
-        self._unclassified = []
-        self._outcomes = {"narrow": [], "wide": []}
+        self.frame_loss = FrameLoss()
 
     def _use(self, z: DeflatedSource | None) -> None:
         """Offer the zlib stream `z`, or the file as it is (None)."""
@@ -233,8 +231,7 @@ class FileSender:
         """How long without a status, while data flows, before asking where the receiver is:
         three status intervals, an RTT more, and under a grant three frames' time at it more
         (the receiver reports on the frames it gets)."""
-        wait = max(3 * self.cfg.status_interval, 2 * self.rtt + self.cfg.status_interval)
-        return wait + (3 * self.geometry.mtu / self.pacer.grant if self.pacer.grant else 0.0)
+        return quiet_after(self.cfg, self.rtt, self.pacer.grant, self.geometry.mtu)
 
     def _time_out(self, now: float) -> None:
         who = f"{self.target[0]}/{self.target[1]}"
@@ -290,17 +287,7 @@ class FileSender:
             # sharing the link: a wide frame's three packets back to back fill the radio's
             # buffer for the others, and the buffer's overflow takes the whole frame
             return "narrow"
-        n, w = self.loss["narrow"], self.loss["wide"]
-        p = w if self.mode == "wide" and w is not None else (n if n is not None else w)
-        if p is None:
-            return "narrow"
-        g = self.geometry
-        eff_narrow = g.narrow_cap / g.narrow_frame * (1 - p)
-        eff_wide = WIDE / g.wide_frame * g.survival_wide(p)
-        better = "wide" if eff_wide > eff_narrow else "narrow"
-        if better != self.mode and abs(eff_wide - eff_narrow) < 0.02:
-            return self.mode  # hysteresis
-        return better
+        return self.frame_loss.best(self.mode, self.geometry)
 
     def next_data(self, now: float, space: int) -> Any:
         if self.state != "sending" or not self.pacer.ready(now):
@@ -336,8 +323,9 @@ class FileSender:
         left = now + (frame_len + g.mtu) * self.byte_time
         self._record(left, offset, offset + length)
         if retx is None:
-            self._unclassified.append((offset, offset + length, left, mode))
+            self.frame_loss.first_send(offset, offset + length, left, mode)
         self.pacer.sent(now, frame_len)
+        self.sent.add(offset, offset + length)
         self.stats.bytes_sent += length
         self.stats.frames_sent += 1
         if self.stats.data_started is None:
@@ -419,7 +407,6 @@ class FileSender:
         self.last_heard = now
         self.heard_any = True
         self.stats.statuses += 1
-        self._answers += 1
         if (self.state == "offering" and self._offers_since_answer == 1 and self._last_offer is not None
                 and not self._rtt_sampled):
             # Karn: only an offer answered without a repeat gives a clean sample
@@ -430,8 +417,11 @@ class FileSender:
             self.rtt = min(5.0, max(0.05, now - self._last_offer))
         self._offers_since_answer = 0
         if code == R.TT_FILE_RESULT_COMPLETE:
-            self.acked.add(0, self.size)
             nothing = self.stats.bytes_sent == 0 and self.size > 0
+            if nothing:
+                self.acked.add(0, self.size)  # an identical file was there (or all of it): no resume
+            else:
+                self._ack(0, self.size)
             how = "verified there (it had them already)" if nothing else "delivered and verified"
             self._finish(now, True, "COMPLETE", f"{self.name}: {self.file_size} bytes {how}", nothing)
             return
@@ -482,6 +472,13 @@ class FileSender:
         if self.on_progress:
             self.on_progress(self)
 
+    def _ack(self, start: int, end: int) -> None:
+        """Bytes [start, end) are at the receiver; those newly known that this attempt never sent
+        were there before it (resumed), whatever the order of the statuses that say so."""
+        for a, b in self.acked.gaps(start, end):
+            self.stats.resumed_bytes += sum(y - x for x, y in self.sent.gaps(a, b))
+        self.acked.add(start, end)
+
     def _rtt_from_echo(self, now: float, msg: Any) -> None:
         """A round-trip sample from the status's echo of the latest frame it saw (Karn: only
         frames sent once)."""
@@ -505,18 +502,16 @@ class FileSender:
         missing = [(max(pairs[2 * i], region), min(pairs[2 * i + 1], re)) for i in range(n)]
         missing = [(a, b) for a, b in missing if a < b]
         before = self.acked.total()
-        self.acked.add(0, rc)
+        self._ack(0, rc)
         pos = region
         for a, b in missing:
             if a > pos:
-                self.acked.add(pos, a)
+                self._ack(pos, a)
             pos = max(pos, b)
         if re > pos:
-            self.acked.add(pos, re)
+            self._ack(pos, re)
         if self.acked.total() > before:
             self.last_progress = now
-        if self._answers == 1 and before == 0:
-            self.stats.resumed_bytes = self.acked.total()  # what the receiver had before we sent a byte
         # a resumed transfer: skip what the receiver already has
         while self.next_new < self.size and self.acked.covers(self.next_new, min(self.size, self.next_new + 1)):
             end = next((b for a, b in self.acked if a <= self.next_new < b), self.next_new + 1)
@@ -541,32 +536,10 @@ class FileSender:
         for a, b in self.acked:
             self.retx.remove(a, b)
         self._sent = [(s, e, ts) for s, e, ts in self._sent if not self.acked.covers(s, e)]
-        self._classify(horizon, re, truncated, missing)
-        self._probe_due = None if self._wants_data(now) else now + max(2 * self.rtt, 0.5)
-
-    def _classify(self, horizon: float, re: int, truncated: bool, missing: list[tuple[int, int]]) -> None:
-        """Loss, measured exactly: each first transmission, once a status covers its bytes, was
-        lost if any of them is reported missing. Estimates come from the last 64 per frame size."""
-        keep: list[tuple[int, int, float, str]] = []
-        for rec in self._unclassified:
-            start, end, when, mode = rec
-            known = when <= horizon and (end <= re or not truncated)
-            if not known:
-                keep.append(rec)
-                continue
-            lost = any(a < end and start < b for a, b in missing)
-            window = self._outcomes[mode]
-            window.append(lost)
-            if len(window) > 64:
-                window.pop(0)
-        self._unclassified = keep
-        for mode in ("narrow", "wide"):
-            window = self._outcomes[mode]
-            if len(window) >= 8:
-                frame_loss = wilson_upper(sum(window), len(window))  # pessimistic: wide frames are costly
-                self.loss[mode] = frame_loss if mode == "narrow" else self.geometry.packet_loss_from_wide(frame_loss)
+        self.frame_loss.classify(horizon, re, truncated, missing, self.geometry)
         if self.cfg.frame_mode == "auto" and self.stats.narrow_frames >= self.cfg.probe_frames:
             self.mode = self._choose_mode()
+        self._probe_due = None if self._wants_data(now) else now + max(2 * self.rtt, 0.5)
 
     def deadline(self, now: float) -> float | None:
         """The next time this transfer needs attention (data waiting for the pacer is the

@@ -71,6 +71,7 @@ __all__ = [
     "frame_survival_wide",
     "meta_check",
     "packet_loss_from_wide",
+    "quiet_after",
     "reason_fit",
     "reason_text",
     "result_name",
@@ -97,6 +98,16 @@ class TransferConfig:
     probe_frames: int = 24  # narrow frames sent before the first choice of frame size
     checksum_restarts: int = 2  # sender: start again from scratch after a SHA-256 mismatch, this often
     reason_wait: float = 1.0  # sender: wait this long for the words of a refusal before giving the code's
+
+
+def quiet_after(cfg: TransferConfig, rtt: float, grant: float = 0.0, packet: int = 0) -> float:
+    """How long a running transfer may go without word from the far end before this end asks it
+    where it is, since it may have restarted: three status intervals, an RTT more, and under a
+    rate grant three packets' time at it more (the far end reports on, or sends, frames at that
+    pace). A sender then offers again (the restarted receiver resumes from its partial file); a
+    fetch asks again (the restarted server offers the file anew, and this end resumes)."""
+    wait = max(3 * cfg.status_interval, 2 * rtt + cfg.status_interval)
+    return wait + (3 * packet / grant if grant else 0.0)
 
 
 @dataclass
