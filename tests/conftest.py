@@ -14,6 +14,29 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 DIALECTS = ROOT / "dialects"
+
+
+def nav_pages() -> list[Path]:
+    """The docs site's pages in the order of mkdocs.yml's nav (a title's page, or a section's pages)."""
+    import yaml
+
+    def walk(entries: Any) -> Iterator[str]:
+        for entry in entries:
+            value = next(iter(entry.values())) if isinstance(entry, dict) else entry
+            if isinstance(value, list):
+                yield from walk(value)
+            else:
+                yield value
+
+    nav = yaml.safe_load((ROOT / "mkdocs.yml").read_text())["nav"]
+    return [ROOT / "docs" / page for page in walk(nav)]
+
+
+def manual() -> str:
+    """The whole manual: README.md (the front door), then every page of the docs site in nav order.
+    The pages keep the README's old heading levels, so a section runs to the next heading of its
+    level whichever page it ends on."""
+    return "\n\n".join(p.read_text() for p in [ROOT / "README.md", *nav_pages()])
 TTAPI = DIALECTS / "ttapi.xml"
 
 

@@ -11,7 +11,7 @@ import sys
 import pytest
 
 from conformance_lib import Conformance
-from conftest import ROOT
+from conftest import ROOT, manual
 
 OUT = ROOT / "generated"
 BAD = [
@@ -174,7 +174,8 @@ def test_field_values_are_refused_in_the_same_words(programs: list[list[str]]) -
 
 
 def test_the_readme_shows_what_they_say() -> None:
-    text = (ROOT / "README.md").read_text()
+    """The manual (README.md and docs/, conftest.manual()) shows the errors the programs print."""
+    text = manual()
     shown = "$ echo 'D fd0300' | ./conformance\n" + '{"error":"not a MAVLink 2 frame (magic 0xFD, at least 12 bytes)"}'
     assert shown in text
     line = e("TT_COMMAND_ACK", result="300")

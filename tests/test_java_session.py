@@ -39,7 +39,7 @@ from typing import Any
 import pytest
 
 from conformance_lib import build_java
-from conftest import ROOT
+from conftest import ROOT, manual
 from e2e_lib import LOCAL, Start, free_port, relay, send
 
 pytestmark = pytest.mark.skipif(shutil.which("javac") is None or shutil.which("java") is None,
@@ -128,7 +128,7 @@ import ttctl.ttapi.transfer.*;
 
 
 def readme_java_blocks(section: str, until: str) -> list[str]:
-    text = (ROOT / "README.md").read_text()
+    text = manual()
     part = text.split(section, 1)[1].split(until, 1)[0]
     return re.findall(r"```java\n(.+?)```", part, re.S)
 

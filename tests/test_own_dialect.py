@@ -16,7 +16,7 @@ from typing import Any
 
 import pytest
 
-from conftest import ROOT, assert_no_traceback, run_ttctl
+from conftest import ROOT, assert_no_traceback, manual, run_ttctl
 from e2e_lib import LOCAL, Proc, free_port, relay
 
 OWN = ROOT / "dialects" / "examples"
@@ -104,7 +104,7 @@ def test_a_java_tablet_from_the_generated_skeleton_talks_to_the_onboard_end(own:
     sources = sorted(str(p) for p in (own / "gen" / "java").rglob("*.java"))
     sources.append(str(ROOT / "tests" / "java" / "own" / "RobolabTablet.java"))
     # the README's few lines of the same app compile too (pasted into a method)
-    readme = (ROOT / "README.md").read_text().split("## Your own messages", 1)[1].split("\n## ", 1)[0]
+    readme = manual().split("## Your own messages", 1)[1].split("\n## ", 1)[0]
     (block,) = re.findall(r"```java\n(.+?)```", readme, re.S)
     snippet = own / "ReadmeRobolab.java"
     snippet.write_text("import java.util.concurrent.TimeUnit;\nimport ttctl.robolab.Robolab;\n"

@@ -1,4 +1,5 @@
-"""The README's quick start stays true: CI runs its test command verbatim."""
+"""The README's quick start stays true (CI runs its test command verbatim), and the manual (README.md and
+the docs site's pages: conftest.manual()) says what the commands do and print."""
 
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, manual
 
 
 def quick_start_commands() -> list[str]:
@@ -36,21 +37,21 @@ def test_readme_tours_every_subcommand() -> None:
 
     from ttctl.app import app
 
-    text = (ROOT / "README.md").read_text()
+    text = manual()
     group = get_command(app)
     names: list[str] = []
     for name, cmd in group.commands.items():  # type: ignore[attr-defined]
         sub = getattr(cmd, "commands", None)
         names += [f"ttctl {name} {s}" for s in sub] if sub else [f"ttctl {name}"]
     for name in names:
-        assert f"### `{name}" in text, f"README has no tour section for {name}"
+        assert f"### `{name}" in text, f"the manual has no tour section for {name}"
 
 
 def console_examples(heading: str) -> list[tuple[str, list[str]]]:
     """(command, expected output lines) of every `$ ttctl ...` in the console blocks of the tour
     section whose heading starts with `heading`; `...` in the expected output stands for any
     number of lines."""
-    text = (ROOT / "README.md").read_text()
+    text = manual()
     section = text.split(f"### `{heading}", 1)[1].split("\n### ", 1)[0]
     out: list[tuple[str, list[str]]] = []
     for block in re.findall(r"```console\n(.+?)```", section, re.S):
@@ -72,7 +73,7 @@ def matches(expected: list[str], got: list[str]) -> bool:
                          [("ttctl validate", 200, 3), ("ttctl gen", 200, 3), ("ttctl bench link", 80, 1)])
 def test_readme_examples_are_what_the_commands_print(heading: str, columns: int, least: int, tmp_path: Path) -> None:
     """Each example runs as shown (from a folder where `dialects/` and `tests/` are the
-    repository's, and `docs/` takes plots) and prints what the README says it prints: the
+    repository's, and `docs/` takes plots) and prints what the manual says it prints: the
     tours of validate and gen, and bench link's (virtual time: the same every run), as a
     terminal `columns` wide shows it."""
     if heading == "ttctl bench link":
@@ -87,7 +88,7 @@ def test_readme_examples_are_what_the_commands_print(heading: str, columns: int,
     for cmd, expected in examples:
         proc = subprocess.run(cmd, shell=True, cwd=tmp_path, capture_output=True, text=True, env=env, timeout=300)
         got = [line.rstrip() for line in (proc.stdout + proc.stderr).rstrip("\n").split("\n") if line.strip()]
-        assert matches(expected, got), f"$ {cmd}\nREADME:\n" + "\n".join(expected) + "\nprints:\n" + "\n".join(got)
+        assert matches(expected, got), f"$ {cmd}\nthe manual:\n" + "\n".join(expected) + "\nprints:\n" + "\n".join(got)
 
 
 def _options(cmd: object) -> dict[str, str]:
@@ -111,7 +112,7 @@ def test_synopses_are_the_commands_options() -> None:
 
     from ttctl.app import app
 
-    text = (ROOT / "README.md").read_text()
+    text = manual()
     group = get_command(app)
     checked = []
     for name, cmd in group.commands.items():  # type: ignore[attr-defined]
@@ -122,20 +123,20 @@ def test_synopses_are_the_commands_options() -> None:
                 continue  # test_readme_tours_every_subcommand says so
             listed = set(re.findall(r"(?<![\w-])(--?[A-Za-z][\w-]*)", m.group(1) or ""))
             real = _options(c)
-            assert listed <= set(real), f"{full}: the README names {sorted(listed - set(real))}, which it lacks"
+            assert listed <= set(real), f"{full}: the manual names {sorted(listed - set(real))}, which it lacks"
             if full in FULL_SYNOPSIS:
                 missing = {n for o, n in real.items() if n != "help"} - {real[o] for o in listed}
-                assert not missing, f"{full}: the README's synopsis lacks {sorted(missing)}"
+                assert not missing, f"{full}: the manual's synopsis lacks {sorted(missing)}"
                 checked.append(full)
     assert sorted(checked) == sorted(FULL_SYNOPSIS)
 
 
 def test_calibration_table_is_what_bench_link_computes() -> None:
-    """The README's m100-against-the-thesis table quotes `ttctl bench link`'s own numbers."""
+    """The manual's m100-against-the-thesis table quotes `ttctl bench link`'s own numbers."""
     from ttctl.bench import linkbench
     from ttctl.link.model import load_profile
 
-    text = (ROOT / "README.md").read_text()
+    text = manual()
     table = text[text.index("**Calibration: the m100 model against the thesis.**"):]
     table = table[:table.index("\n\n", table.index("|---|"))]
     rep = linkbench.measure(load_profile("m100"))
@@ -161,13 +162,13 @@ def test_calibration_table_is_what_bench_link_computes() -> None:
     assert all(f["ok"] for f in rep["facts"])
 
 
-# -- drift between the README, the help and the code (issue 20) ---------------------------------
+# -- drift between the manual (README.md and docs/), the help and the code (issue 20) ---------------------------------
 
 README = ROOT / "README.md"
 
 
 def _console_blocks() -> list[str]:
-    return re.findall(r"```console\n(.+?)```", README.read_text(), re.S)
+    return re.findall(r"```console\n(.+?)```", manual(), re.S)
 
 
 def test_runtime_dependencies_are_pyprojects() -> None:
@@ -183,23 +184,23 @@ def test_runtime_dependencies_are_pyprojects() -> None:
 def test_example_files_the_readme_shows_or_runs_are_in_the_repository() -> None:
     """A ```python block that starts `# PATH` is the file PATH, byte for byte; every `python
     PATH.py` a console block runs exists (outputs of `ttctl gen -o out` aside)."""
-    text = README.read_text()
+    text = manual()
     shown = re.findall(r"```python\n# ([\w./-]+\.py)\n(.*?)```", text, re.S)
-    assert shown, "the README shows example files by path"
+    assert shown, "the manual shows example files by path"
     for path, body in shown:
-        assert (ROOT / path).is_file(), f"the README shows {path}, which is not in the repository"
-        assert (ROOT / path).read_text() == f"# {path}\n{body}", f"{path} differs from the README's copy"
+        assert (ROOT / path).is_file(), f"the manual shows {path}, which is not in the repository"
+        assert (ROOT / path).read_text() == f"# {path}\n{body}", f"{path} differs from the manual's copy"
     for block in _console_blocks():
         for path in re.findall(r"^\$ python3? ([\w./-]+\.py)", block, re.M):
             if not path.startswith(("out/", "OUT/")):
-                assert (ROOT / path).is_file(), f"the README runs {path}, which is not in the repository"
+                assert (ROOT / path).is_file(), f"the manual runs {path}, which is not in the repository"
 
 
 def test_programs_the_readme_runs_are_built_under_that_name() -> None:
-    text = README.read_text()
+    text = manual()
     for prog in set(re.findall(r"\| \./([\w-]+)", text)):
         assert re.search(rf"(?:g\+\+|javac)[^`\n]*-o {re.escape(prog)}\b", text), \
-            f"the README runs ./{prog} but no compile command it shows writes it (-o {prog})"
+            f"the manual runs ./{prog} but no compile command it shows writes it (-o {prog})"
 
 
 def _endpoint_parses() -> list[tuple[str, str, str]]:
@@ -213,9 +214,9 @@ def _endpoint_parses() -> list[tuple[str, str, str]]:
 
 
 def test_udp_means_what_the_readme_says_it_means() -> None:
-    """The README's rule (`--listen` listens, `--to`/`--from`/`--gcs` send) is what each command
+    """The manual's rule (`--listen` listens, `--to`/`--from`/`--gcs` send) is what each command
     does with a bare `udp:`, and what its --help says."""
-    text = README.read_text()
+    text = manual()
     assert "`--listen` listens (`udpin`" in text and "`--to`, `--from` and `--gcs` send\n(`udpout`)" in text
     assert "mavutil and MAVProxy read `udp:HOST:PORT`\nas *listen*" in text
     parses = _endpoint_parses()
@@ -253,7 +254,7 @@ def test_example_outputs_show_the_defaults_the_commands_have() -> None:
                 for port in re.findall(r"connected to \S+ at (udpout:\S+)", out):
                     assert port == default, f"$ {cmd} prints {port}; its default is {default}"
                     seen += 1
-    assert seen, "the README shows `ttctl emulate tablet` with its default endpoint"
+    assert seen, "the manual shows `ttctl emulate tablet` with its default endpoint"
 
 
 def _help(full: str) -> str:
@@ -263,11 +264,11 @@ def _help(full: str) -> str:
 
 
 def _section(full: str) -> str:
-    text = README.read_text()
+    text = manual()
     return " ".join(text.split(f"### `{full}", 1)[1].split("\n### ", 1)[0].split())
 
 
-# claims the README and --help both make, in words each must carry (and words neither may)
+# claims the manual and --help both make, in words each must carry (and words neither may)
 CLAIMS = [
     ("ttctl link relay", "where downlink packets go", ["valid", "frame", "lately"], ["address last heard"]),
     ("ttctl link relay", "what a burst is counted in", ["slot", "full packet"], ["burst-mean` packets"]),
@@ -278,7 +279,7 @@ CLAIMS = [
 
 @pytest.mark.parametrize(("full", "what", "must", "never"), CLAIMS, ids=[c[1] for c in CLAIMS])
 def test_readme_and_help_say_the_same(full: str, what: str, must: list[str], never: list[str]) -> None:
-    for where, text in (("--help", _help(full)), ("README", _section(full))):
+    for where, text in (("--help", _help(full)), ("the manual", _section(full))):
         for w in must:
             assert w in text, f"{full} {where} does not say {w!r} ({what})"
         for w in never:

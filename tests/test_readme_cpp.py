@@ -22,7 +22,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import ROOT, TTAPI, run_ttctl
+from conftest import ROOT, TTAPI, manual, run_ttctl
 from e2e_lib import LOCAL, Start, free_port, relay, send
 
 pytestmark = pytest.mark.skipif(shutil.which("g++") is None, reason="needs g++")
@@ -40,7 +40,7 @@ def system_includes(root: Path) -> list[str]:
 
 def blocks() -> dict[str, str]:
     """The cpp blocks of the README's C++ onboard section, by the file their first line names."""
-    text = (ROOT / "README.md").read_text()
+    text = manual()
     section = text.split("### C++ onboard: the node", 1)[1].split("\n## ", 1)[0]
     out = {}
     for code in re.findall(r"```cpp\n(.+?)```", section, re.S):
