@@ -9,6 +9,7 @@ import typer
 
 from ..errors import Fail
 from .options import PLOT_EXTRA, ProfileFileOpt
+from .panels import LINK, OUTPUT, RUN, WORKLOAD
 
 bench_app = typer.Typer(help="Benchmarks that print ratios against a named peer, measured in one run.",
                         no_args_is_help=True)
@@ -17,12 +18,12 @@ bench_app = typer.Typer(help="Benchmarks that print ratios against a named peer,
 @bench_app.command("validate")
 def bench_validate(
     dialect: Annotated[Path | None, typer.Argument(help="Dialect XML (default: pymavlink's all.xml).")] = None,
-    runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=200)] = 15,
+    runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=200, rich_help_panel=RUN)] = 15,
     synthetic: Annotated[int | None, typer.Option("--synthetic", help="Time both on a made-up dialect of N "
                                                                       "messages instead (up to 60000: the 8 MiB "
                                                                       "input cap).", min=1, max=60_000,
-                                                  show_default=False)] = None,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+                                                  show_default=False, rich_help_panel=WORKLOAD)] = None,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
     """Whole-process time of `ttctl validate` against `mavgen.py --lang Python3 --wire-protocol 2.0`.
 
@@ -35,8 +36,8 @@ def bench_validate(
 @bench_app.command("gen")
 def bench_gen(
     dialect: Annotated[Path | None, typer.Argument(help="Dialect XML (default: pymavlink's all.xml).")] = None,
-    runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=50)] = 5,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+    runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=50, rich_help_panel=RUN)] = 5,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
     """Whole-process time of `ttctl gen` (three languages) against mavgen's Python3 + C++11 + Java.
 
@@ -50,8 +51,8 @@ def bench_gen(
 def bench_dialect(
     dialect: Annotated[Path | None, typer.Argument(help="Dialect XML (default: the robolab example ttctl "
                                                         "ships).")] = None,
-    runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=100)] = 11,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+    runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=100, rich_help_panel=RUN)] = 11,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
     """What --dialect adds to a link command's start, whole process: shipped dialect against the
     user's with a warm and a cold bindings cache (and `gen --lang python` for scale)."""
@@ -62,11 +63,14 @@ def bench_dialect(
 
 @bench_app.command("codec")
 def bench_codec(
-    seconds: Annotated[float, typer.Option(help="Approximate time budget per measurement.", min=0.05)] = 0.5,
-    rounds: Annotated[int, typer.Option(help="Interleaved rounds; medians are reported.", min=1, max=50)] = 5,
+    seconds: Annotated[float, typer.Option(help="Approximate time budget per measurement.", min=0.05,
+                                           rich_help_panel=RUN)] = 0.5,
+    rounds: Annotated[int, typer.Option(help="Interleaved rounds; medians are reported.", min=1, max=50,
+                                        rich_help_panel=RUN)] = 5,
     cpp: Annotated[bool, typer.Option("--cpp/--no-cpp", help="Also build and compare the C++ decoder with "
-                                                             "mavgen's C library (needs g++).")] = True,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+                                                             "mavgen's C library (needs g++).",
+                                      rich_help_panel=WORKLOAD)] = True,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
     """Generated Python decode/encode against pymavlink, and generated C++ decode against mavgen's C."""
     from ..bench.codec import run
@@ -77,17 +81,20 @@ def bench_codec(
 @bench_app.command("transfer")
 def bench_transfer(
     profile: Annotated[str | None, typer.Option(help="Link profile (see cli/ttctl/link/profiles.toml); default "
-                                                     "m100.", show_default=False)] = None,
+                                                     "m100.", show_default=False, rich_help_panel=LINK)] = None,
     profile_file: ProfileFileOpt = None,
-    distance: Annotated[float, typer.Option(help="Distance in metres.", min=0)] = 10.0,
-    size: Annotated[int, typer.Option("--size", help="File size in bytes.", min=1, max=1 << 26)] = 65536,
-    seeds: Annotated[int, typer.Option(help="Seeds per case; rows report the median.", min=1, max=99)] = 9,
+    distance: Annotated[float, typer.Option(help="Distance in metres.", min=0, rich_help_panel=LINK)] = 10.0,
+    size: Annotated[int, typer.Option("--size", help="File size in bytes.", min=1, max=1 << 26,
+                                      rich_help_panel=WORKLOAD)] = 65536,
+    seeds: Annotated[int, typer.Option(help="Seeds per case; rows report the median.", min=1, max=99,
+                                       rich_help_panel=RUN)] = 9,
     protocols: Annotated[str, typer.Option(help="Comma-separated: ttctl,ttctl-signed,thesis,mavftp (ttctl-signed: "
-                                                "MAVLink 2 signing at both ends).")] \
+                                                "MAVLink 2 signing at both ends).", rich_help_panel=WORKLOAD)] \
     = "ttctl,ttctl-signed,thesis,mavftp",
-    quick: Annotated[bool, typer.Option("--quick", help="Two cases only (a smoke test).")] = False,
-    plot: Annotated[Path | None, typer.Option(help=f"Write a PNG of efficiency against loss ({PLOT_EXTRA}).")] = None,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+    quick: Annotated[bool, typer.Option("--quick", help="Two cases only (a smoke test).", rich_help_panel=RUN)] = False,
+    plot: Annotated[Path | None, typer.Option(help=f"Write a PNG of efficiency against loss ({PLOT_EXTRA}).",
+                                              rich_help_panel=OUTPUT)] = None,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
     """File transfer over the link model in virtual time: ttctl against the thesis protocol and
     MAVLink FTP at 0/10/30 % random and burst loss, both directions, plus command latency."""
@@ -109,37 +116,42 @@ def bench_transfer(
 @bench_app.command("link")
 def bench_link(
     profile: Annotated[str | None, typer.Option(help="Link profile (default m100): the model's, or with --to the "
-                                                     "uplink pace's.", show_default=False)] = None,
+                                                     "uplink pace's.", show_default=False,
+                                                rich_help_panel=LINK)] = None,
     profile_file: ProfileFileOpt = None,
-    plot: Annotated[Path | None, typer.Option(help=f"Write a PNG ({PLOT_EXTRA}).")] = None,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+    plot: Annotated[Path | None, typer.Option(help=f"Write a PNG ({PLOT_EXTRA}).", rich_help_panel=OUTPUT)] = None,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.", rich_help_panel=OUTPUT)] = False,
     to: Annotated[str | None, typer.Option("--to", help="Measure a live link instead of the model: the "
                                                         "udpout:HOST:PORT of a `ttctl bench serve` behind it.",
-                                           show_default=False)] = None,
-    direction: Annotated[str, typer.Option("--direction", help="With --to: up, down or both.")] = "both",
-    sizes: Annotated[str, typer.Option("--sizes", help="With --to: uplink probe sizes in bytes, 10..100.")]
+                                           show_default=False, rich_help_panel=LINK)] = None,
+    direction: Annotated[str, typer.Option("--direction", help="With --to: up, down or both.",
+                                           rich_help_panel=WORKLOAD)] = "both",
+    sizes: Annotated[str, typer.Option("--sizes", help="With --to: uplink probe sizes in bytes, 10..100.",
+                                       rich_help_panel=WORKLOAD)]
     = "10,50,100",
     rates: Annotated[str, typer.Option("--rates", help="With --to: downlink send rates in Hz (100-byte "
-                                                       "probes).")] = "5,10,20",
-    count: Annotated[int, typer.Option("--count", help="With --to: probes per size and per rate.")] = 100,
+                                                       "probes).", rich_help_panel=WORKLOAD)] = "5,10,20",
+    count: Annotated[int, typer.Option("--count", help="With --to: probes per size and per rate.",
+                                       rich_help_panel=WORKLOAD)] = 100,
     rate: Annotated[float | None, typer.Option("--rate", help="With --to: pace the uplink at this many bytes "
                                                               "per second (default: the profile's uplink "
-                                                              "capacity).", show_default=False)] = None,
+                                                              "capacity).", show_default=False,
+                                               rich_help_panel=LINK)] = None,
     label: Annotated[str, typer.Option("--label", help="With --to: a note on the conditions, kept in the "
-                                                       "output.")] = "",
+                                                       "output.", rich_help_panel=OUTPUT)] = "",
     output: Annotated[Path | None, typer.Option("-o", "--output", help="With --to: also write the report to "
                                                                        "FILE.json or FILE.csv.",
-                                                show_default=False)] = None,
+                                                show_default=False, rich_help_panel=OUTPUT)] = None,
     distance: Annotated[float | None, typer.Option("--distance", help="With --to: the distance in metres, kept "
                                                                       "with the measurement (for `ttctl link "
                                                                       "fit`); with --like: replay at this "
                                                                       "distance instead of the measurement's.",
-                                                   show_default=False)] = None,
+                                                   show_default=False, rich_help_panel=LINK)] = None,
     like: Annotated[Path | None, typer.Option("--like", help="Replay this measurement (a `bench link --to -o "
                                                              "FILE.json`) on the model: the same packets at the "
                                                              "same moments, compared figure by figure; exit 1 if "
                                                              "any is outside its tolerance.",
-                                              show_default=False)] = None,
+                                              show_default=False, rich_help_panel=WORKLOAD)] = None,
 ) -> None:
     """The thesis's measurement method replayed on the link model: uplink packet sizes and
     distances, downlink send rates; with --to, the same against a live `ttctl bench serve`."""
@@ -181,7 +193,7 @@ def bench_link(
 
 @bench_app.command("serve")
 def bench_serve(
-    listen: Annotated[str, typer.Option("--listen", help="Where to listen (udpin:HOST:PORT).")]
+    listen: Annotated[str, typer.Option("--listen", help="Where to listen (udpin:HOST:PORT).", rich_help_panel=LINK)]
     = "udpin:0.0.0.0:14570",
 ) -> None:
     """The peer of `ttctl bench link --to`: counts probes, echoes round-trip probes, reports what
@@ -193,16 +205,20 @@ def bench_serve(
 
 @bench_app.command("integrity")
 def bench_integrity(
-    rounds: Annotated[int, typer.Option("--rounds", help="Rounds per topology.", min=1, max=100_000)] = 50,
+    rounds: Annotated[int, typer.Option("--rounds", help="Rounds per topology.", min=1, max=100_000,
+                                        rich_help_panel=RUN)] = 50,
     seed: Annotated[int, typer.Option("--seed", help="Random seed: the same seed draws the same plan (senders, files, "
                                                          "kills); the counts depend on process timing and "
-                                                         "differ run to run.")] = 1,
-    topology: Annotated[str, typer.Option("--topology", help="direct, relay (lossy) or both.")] = "both",
+                                                         "differ run to run.", rich_help_panel=RUN)] = 1,
+    topology: Annotated[str, typer.Option("--topology", help="direct, relay (lossy) or both.",
+                                          rich_help_panel=WORKLOAD)] = "both",
     strangers: Annotated[bool, typer.Option("--strangers/--no-strangers",
-                                            help="Garbage datagrams from other ports throughout.")] = True,
+                                            help="Garbage datagrams from other ports throughout.",
+                                            rich_help_panel=WORKLOAD)] = True,
     keep: Annotated[Path | None, typer.Option("--keep", help="Keep every process's output in this (new or empty) "
-                                                             "folder.", show_default=False)] = None,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+                                                             "folder.", show_default=False,
+                                              rich_help_panel=OUTPUT)] = None,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
     """Soak send-file's promise on real processes: rounds of concurrent senders with equal ids, kills
     and restarts of senders and the receiver, relay loss, strangers; exit 1 if any sender exited 0
@@ -214,8 +230,9 @@ def bench_integrity(
 
 @bench_app.command("ends")
 def bench_ends(
-    seconds: Annotated[float, typer.Option("--seconds", help="Length of each phase.", min=2, max=600)] = 10.0,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+    seconds: Annotated[float, typer.Option("--seconds", help="Length of each phase.", min=2, max=600,
+                                           rich_help_panel=RUN)] = 10.0,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
     """The onboard end's cost on one core: idle at default telemetry, and loaded (50 Hz telemetry on
     both links plus a file download at full link rate): core share and event-loop lag."""
@@ -227,13 +244,13 @@ def bench_ends(
 @bench_app.command("hmd")
 def bench_hmd(
     seconds: Annotated[float, typer.Option("--seconds", help="Length of the long recording run.", min=4,
-                                           max=600)] = 20.0,
+                                           max=600, rich_help_panel=RUN)] = 20.0,
     runs: Annotated[int, typer.Option("--runs", help="Runs of each measurement (the median is reported).", min=1,
-                                      max=20)] = 3,
+                                      max=20, rich_help_panel=RUN)] = 3,
     replay_minutes: Annotated[float, typer.Option("--replay-minutes", help="Length of the recording replayed "
                                                                            "with --speed 0.", min=0.1,
-                                                  max=60)] = 10.0,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+                                                  max=60, rich_help_panel=WORKLOAD)] = 10.0,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
     """What recording VR poses costs: `ttctl hmd dump` of the synthetic source (90 Hz headset, 2 x 250 Hz
     controllers) to MCAP as a share of one core (ceiling 10 %), and replaying a 10-minute recording
