@@ -94,7 +94,15 @@ def validate(
 ) -> None:
     """Validate a MAVLink 2 dialect: XSD and semantic checks, all problems in one run.
 
-    Exit status: 0 no errors (warnings allowed), 1 errors, 2 unreadable input or bad options.
+    Exit status:
+      0    no errors (warnings allowed)
+      1    errors in the dialect (each one printed)
+      2    unreadable input or bad options
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Example:
+      ttctl validate dialects/ttapi.xml
     """
     if fmt not in ("text", "json"):
         raise Fail(f"--format must be 'text' or 'json', not '{fmt}'")
@@ -143,8 +151,18 @@ def gen(
 ) -> None:
     """Generate Python, C++ and Java bindings, skeletons and conformance programs.
 
-    Bindings are rewritten when they change; skeletons (handler and command stubs you fill in)
-    are written once. Refuses a dialect with validation errors.
+    Bindings are rewritten when they change; skeletons (handler and command stubs
+    you fill in) are written once. Refuses a dialect with validation errors.
+
+    Exit status:
+      0    written (with --check: nothing differs)
+      1    the dialect has errors, nothing written (--check: files differ)
+      2    unreadable dialect, bad options or an unusable output folder
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C): what this run created is taken back
+
+    Example:
+      ttctl gen dialects/ttapi.xml -o out --lang python
     """
     from .codegen.engine import Names
     from .gen import GenError, run_gen
@@ -202,11 +220,19 @@ def recv_file_cmd(
 ) -> None:
     """Receive files (the onboard end, 1/240, by default) until interrupted or --count files are in.
 
-    Prints a line per file accepted, refused (with the reason), completed or failed (--json: JSON lines).
-    Files land in DIR/.ttctl-partial first and are renamed into place once their SHA-256 matches.
-    On SIGINT/SIGTERM (exit 0) or a crash, what arrived stays there: offering the file again resumes it.
+    Prints a line per file accepted, refused (with the reason), completed or
+    failed (--json: JSON lines). Files land in DIR/.ttctl-partial first and are
+    renamed into place once their SHA-256 matches. On SIGINT/SIGTERM or a crash,
+    what arrived stays there: offering the file again resumes it.
 
-    Example: ttctl recv-file --listen udpin:0.0.0.0:14560 --dir inbox --profile m100
+    Exit status:
+      0    stopped by Ctrl-C or SIGTERM, or --count files are in
+      2    bad options, an unusable --dir or endpoint
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted while starting (Ctrl-C)
+
+    Example:
+      ttctl recv-file --listen udpin:0.0.0.0:14560 --dir inbox --profile m100
     """
     from .commands.recv_file import RecvOptions, recv_file
 
@@ -262,18 +288,25 @@ def send_file_cmd(
 ) -> None:
     """Send a file to a receiver (ttctl recv-file, or the onboard end), or fetch one with --from.
 
-    A progress bar on stderr when it is a terminal; at the end a summary: bytes, seconds, goodput,
-    efficiency against the link capacity (known from --rate or --profile), retransmitted bytes, and
-    the compression when the file went deflated (text usually does; JPEG and archives never).
-    --json prints one JSON object instead: ok, code, message, name, bytes, seconds, goodput_Bps,
-    capacity_Bps, efficiency, retransmitted_bytes, frames_sent, bytes_sent, resumed_bytes,
-    deflated_bytes (the zlib stream's size, null when sent as it is), deflate_fallback.
-    Sending a file again after an interruption resumes where the receiver got to.
+    A progress bar on stderr when it is a terminal; at the end a summary: bytes,
+    seconds, goodput, efficiency against the link capacity (known from --rate or
+    --profile), retransmitted bytes, and the compression when the file went
+    deflated (text usually does; JPEG and archives never). --json prints one
+    JSON object instead: ok, code, message, name, bytes, seconds, goodput_Bps,
+    capacity_Bps, efficiency, retransmitted_bytes, frames_sent, bytes_sent,
+    resumed_bytes, deflated_bytes (the zlib stream's size, null when sent as it
+    is), deflate_fallback. Sending a file again after an interruption resumes
+    where the receiver got to.
 
-    Exit status: 0 delivered and verified, 1 refused (with the receiver's reason), failed or timed out,
-    2 bad options, a missing file or an unusable endpoint, 130 interrupted.
+    Exit status:
+      0    delivered and verified
+      1    refused (with the receiver's reason), failed or timed out
+      2    bad options, a missing file or an unusable endpoint
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C); sending again resumes
 
-    Example: ttctl send-file photo.jpg --to udpout:192.168.1.20:14560 --profile m100 --distance 50
+    Example:
+      ttctl send-file photo.jpg --to udpout:192.168.1.20:14560 --profile m100
     """
     from .commands.send_file import SendOptions, send_file
 

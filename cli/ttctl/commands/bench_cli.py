@@ -27,7 +27,16 @@ def bench_validate(
 ) -> None:
     """Whole-process time of `ttctl validate` against `mavgen.py --lang Python3 --wire-protocol 2.0`.
 
-    Exit status: 0 within the floor, 1 the floor missed, 2 bad input."""
+    Exit status:
+      0    the ratio meets its floor
+      1    the floor is missed
+      2    bad options or a dialect it cannot read
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Example:
+      ttctl bench validate dialects/ttapi.xml --runs 5
+    """
     from ..bench.validate import run
 
     raise typer.Exit(run(str(dialect) if dialect else None, runs, json_out, synthetic))
@@ -41,7 +50,16 @@ def bench_gen(
 ) -> None:
     """Whole-process time of `ttctl gen` (three languages) against mavgen's Python3 + C++11 + Java.
 
-    Exit status: 0 within the floor, 1 the floor missed, 2 bad input (a dialect gen refuses)."""
+    Exit status:
+      0    the ratio meets its floor
+      1    the floor is missed
+      2    bad options or a dialect gen refuses (its first error quoted)
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Example:
+      ttctl bench gen dialects/ttapi.xml --runs 3
+    """
     from ..bench.gen import run
 
     raise typer.Exit(run(str(dialect) if dialect else None, runs, json_out))
@@ -54,8 +72,20 @@ def bench_dialect(
     runs: Annotated[int, typer.Option(help="Runs of each command.", min=1, max=100, rich_help_panel=RUN)] = 11,
     json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
-    """What --dialect adds to a link command's start, whole process: shipped dialect against the
-    user's with a warm and a cold bindings cache (and `gen --lang python` for scale)."""
+    """What --dialect adds to a link command's start, whole process.
+
+    The shipped dialect against the user's with a warm and a cold bindings
+    cache (and `gen --lang python` for scale).
+
+    Exit status:
+      0    measured (no floor)
+      2    bad options or a dialect it cannot use
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Example:
+      ttctl bench dialect --runs 5
+    """
     from ..bench.dialect import run
 
     run(str(dialect) if dialect else None, runs, json_out)
@@ -72,7 +102,17 @@ def bench_codec(
                                       rich_help_panel=WORKLOAD)] = True,
     json_out: Annotated[bool, typer.Option("--json", help="Print the result as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
-    """Generated Python decode/encode against pymavlink, and generated C++ decode against mavgen's C."""
+    """Generated Python decode/encode against pymavlink, and generated C++ decode against mavgen's C.
+
+    Exit status:
+      0    measured (no floor)
+      2    bad options, fastcrc missing, or the C++ build or run failed
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Example:
+      ttctl bench codec --no-cpp
+    """
     from ..bench.codec import run
 
     run(seconds, rounds, cpp, json_out)
@@ -96,8 +136,21 @@ def bench_transfer(
                                               rich_help_panel=OUTPUT)] = None,
     json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
-    """File transfer over the link model in virtual time: ttctl against the thesis protocol and
-    MAVLink FTP at 0/10/30 % random and burst loss, both directions, plus command latency."""
+    """File transfer over the link model in virtual time, ttctl against the thesis and MAVLink FTP.
+
+    At 0/10/30 % random and burst loss, both directions, plus command latency;
+    the last table checks each figure against its floor or ceiling.
+
+    Exit status:
+      0    every transfer completed and every floor and ceiling held
+      1    a transfer failed, or a floor or ceiling was missed
+      2    bad options or an unusable profile
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Example:
+      ttctl bench transfer --quick --protocols ttctl,mavftp
+    """
     from ..bench.transfer import run
     from ..link.model import ProfileError, load_profile
 
@@ -153,8 +206,25 @@ def bench_link(
                                                              "any is outside its tolerance.",
                                               show_default=False, rich_help_panel=WORKLOAD)] = None,
 ) -> None:
-    """The thesis's measurement method replayed on the link model: uplink packet sizes and
-    distances, downlink send rates; with --to, the same against a live `ttctl bench serve`."""
+    """The thesis's measurement method, on the link model or (--to) on a live link.
+
+    Uplink packet sizes and distances, downlink send rates; with --to, the same
+    against a live `ttctl bench serve`, whose report (-o) `ttctl link fit`
+    reads; with --like, such a report replayed on the model.
+
+    Exit status:
+      0    measured (the model, or a live link that answered throughout)
+      1    --to: the peer stopped answering midway (rows so far kept, marked
+           partial); --like: a figure outside its tolerance
+      2    bad options, an unusable profile, or no peer answers --to
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Examples (the model; then a live link, `ttctl bench serve` at the far end):
+      ttctl bench link
+      ttctl bench link --to udpout:192.168.1.20:14570 --distance 10 \\
+          -o field-10m.json
+    """
     from ..bench import linkbench
     from ..link.model import ProfileError, load_profile
 
@@ -196,8 +266,20 @@ def bench_serve(
     listen: Annotated[str, typer.Option("--listen", help="Where to listen (udpin:HOST:PORT).", rich_help_panel=LINK)]
     = "udpin:0.0.0.0:14570",
 ) -> None:
-    """The peer of `ttctl bench link --to`: counts probes, echoes round-trip probes, reports what
-    arrived and sends downlink probes on request (plain UDP datagrams of at most 100 bytes)."""
+    """The peer of `ttctl bench link --to`, on the far side of the link under test.
+
+    Counts probes, echoes round-trip probes, reports what arrived and sends
+    downlink probes on request (plain UDP datagrams of at most 100 bytes), to
+    whoever asks: run it on a network you trust.
+
+    Exit status:
+      0    stopped by Ctrl-C or SIGTERM
+      2    bad options or an endpoint it cannot open
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+
+    Example:
+      ttctl bench serve --listen udpin:0.0.0.0:14570
+    """
     from ..bench.serve import serve
 
     raise typer.Exit(serve(listen))
@@ -220,9 +302,22 @@ def bench_integrity(
                                               rich_help_panel=OUTPUT)] = None,
     json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
-    """Soak send-file's promise on real processes: rounds of concurrent senders with equal ids, kills
-    and restarts of senders and the receiver, relay loss, strangers; exit 1 if any sender exited 0
-    without the receiver holding its file, or a partial file was ever visible under its name."""
+    """Soak send-file's promise on real processes: concurrent senders, kills, restarts, loss.
+
+    Rounds of concurrent senders with equal ids, kills and restarts of senders
+    and the receiver, relay loss, strangers.
+
+    Exit status:
+      0    every check held
+      1    a sender exited 0 without the receiver holding its file, or a
+           partial file was visible under its name (or another check failed)
+      2    bad options or an unusable --keep
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Example:
+      ttctl bench integrity --rounds 5 --topology direct
+    """
     from ..bench.integrity import main as integrity_main
 
     raise typer.Exit(integrity_main(rounds, seed, topology, strangers, keep, json_out))
@@ -234,8 +329,21 @@ def bench_ends(
                                            rich_help_panel=RUN)] = 10.0,
     json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
-    """The onboard end's cost on one core: idle at default telemetry, and loaded (50 Hz telemetry on
-    both links plus a file download at full link rate): core share and event-loop lag."""
+    """The onboard end's cost on one core: core share and event-loop lag, idle and loaded.
+
+    Idle at default telemetry, and loaded (50 Hz telemetry on both links plus a
+    file download at full link rate).
+
+    Exit status:
+      0    every ceiling held
+      1    a ceiling was missed
+      2    bad options
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Example:
+      ttctl bench ends --seconds 5
+    """
     from ..bench.ends import run
 
     raise typer.Exit(run(seconds, json_out))
@@ -252,9 +360,22 @@ def bench_hmd(
                                                   max=60, rich_help_panel=WORKLOAD)] = 10.0,
     json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
-    """What recording VR poses costs: `ttctl hmd dump` of the synthetic source (90 Hz headset, 2 x 250 Hz
-    controllers) to MCAP as a share of one core (ceiling 10 %), and replaying a 10-minute recording
-    with --speed 0 (ceiling 10 s)."""
+    """What recording VR poses costs, in core share and replay time.
+
+    `ttctl hmd dump` of the synthetic source (90 Hz headset, 2 x 250 Hz
+    controllers) to MCAP as a share of one core (ceiling 10 %), and replaying a
+    10-minute recording with --speed 0 (ceiling 10 s).
+
+    Exit status:
+      0    both ceilings held
+      1    a ceiling was missed, or a dump it ran failed
+      2    bad options
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Example:
+      ttctl bench hmd --runs 1 --replay-minutes 1
+    """
     from ..bench.hmd import run
 
     raise typer.Exit(run(seconds, runs, replay_minutes, json_out))

@@ -75,13 +75,24 @@ def bench_gcs(
                                               rich_help_panel=OUTPUT)] = None,
     json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
-    """A QGroundControl-like ground station through `emulate tablet --gcs` (the bridge) and through
-    a naive forwarder, side by side over `link relay --profile m100` with loss, to `emulate onboard`:
-    connect sequence, parameter list, mission upload and download, position age at the ground
-    station, and the app's command latency idle and with the ground station on.
+    """A ground station through the tablet end (the bridge) against a naive forwarder.
 
-    Exit status: 0 when the issue's floors hold (at 10 m, 10 % random loss), 1 when one is missed,
-    2 bad input."""
+    A QGroundControl-like ground station through `emulate tablet --gcs` and
+    through a naive forwarder, side by side over `link relay --profile m100`
+    with loss, to `emulate onboard`: connect sequence, parameter list, mission
+    upload and download, position age at the ground station, and the app's
+    command latency idle and with the ground station on.
+
+    Exit status:
+      0    the floors hold (they count at 10 m, 10 % random loss)
+      1    a floor is missed
+      2    bad options or an unusable --keep
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Example:
+      ttctl bench gcs --quick
+    """
     from ..bench.gcs import MODES, Options, run
 
     if loss_model not in ("random", "burst"):

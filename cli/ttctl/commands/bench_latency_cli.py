@@ -52,13 +52,23 @@ def bench_latency(
     dialect: DialectOpt = None,
     include: DialectIncludeOpt = None,
 ) -> None:
-    """Command latency (TT_ACTION_COMMAND -> TT_COMMAND_ACK): idle, during an upload and during a
-    download; p50/p95/max, retries, and during/idle ratios. On the link model in virtual time, or
-    live (--to) against a real onboard end. Exit 1 if a transfer phase's p95 is over idle p95 +
-    a packet time + a margin (what the scheduler promises) or the phase could not run (a refused
-    fetch, a peer that takes no files), 2 for bad input or no peer.
+    """Command latency (TT_ACTION_COMMAND -> TT_COMMAND_ACK): idle, during an upload and a download.
 
-    Example: ttctl bench latency --to udpout:127.0.0.1:14550 --count 20 --interval 0.5
+    p50/p95/max, retries, and during/idle ratios. On the link model in virtual
+    time, or live (--to) against a real onboard end.
+
+    Exit status:
+      0    every transfer phase's p95 is within idle p95 + a packet time +
+           a margin (what the scheduler promises)
+      1    one is not, or a phase could not run (a refused fetch, a peer that
+           takes no files)
+      2    bad options, an unusable profile or dialect, or no peer (--to)
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Examples (the model; then live, with emulate onboard running):
+      ttctl bench latency --count 20
+      ttctl bench latency --to udpout:127.0.0.1:14560 --count 20 --interval 0.5
     """
     from ..bench import latency as lat
     from ..link.model import ProfileError, load_profile

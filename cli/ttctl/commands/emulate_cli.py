@@ -79,11 +79,20 @@ def emulate_onboard_cmd(
     pipeline: PipelineOpt = None,
     pipe_rate: PipeRateOpt = None,
 ) -> None:
-    """The onboard computer's end, flying a simulated multicopter: the tablet's DTT link (commands,
-    telemetry, files) and ground-station links (HEARTBEAT, telemetry, commands, parameters,
-    missions) to the same vehicle. Runs until interrupted (exit 0).
+    """The onboard computer's end, flying a simulated multicopter.
 
-    Example: ttctl emulate onboard --inbox inbox   (then open QGroundControl)
+    The tablet's DTT link (commands, telemetry, files) and ground-station links
+    (HEARTBEAT, telemetry, commands, parameters, missions) to the same vehicle.
+    Runs until interrupted.
+
+    Exit status:
+      0    stopped by Ctrl-C or SIGTERM
+      2    bad options, a bad plugin, or an endpoint it cannot open
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted while starting (Ctrl-C)
+
+    Example (then open QGroundControl, or run emulate tablet):
+      ttctl emulate onboard --inbox inbox
     """
     from .emulate import OnboardOptions, emulate_onboard
 
@@ -131,12 +140,24 @@ def emulate_tablet_cmd(
     pipeline: PipelineOpt = None,
     pipe_rate: PipeRateOpt = None,
 ) -> None:
-    """The tablet's end: commands (take-off, land, hover, return, set-points, trajectories),
-    files both ways, any message of the --dialect (msg NAME field=value) and the vehicle's state
-    and messages, from a prompt (history, completion) or a --script. With --gcs, ground stations
-    fly the same vehicle through it meanwhile, and it runs until interrupted.
+    """The tablet's end: commands, files and messages to the vehicle, from a prompt or a --script.
 
-    Example: ttctl emulate tablet --to udpout:127.0.0.1:14560 --script flight.yaml
+    Commands (take-off, land, hover, return, set-points, trajectories), files
+    both ways, any message of the --dialect (msg NAME field=value) and the
+    vehicle's state and messages, from a prompt (history, completion) or a
+    --script. With --gcs, ground stations fly the same vehicle through it
+    meanwhile, and it runs until interrupted.
+
+    Exit status:
+      0    every --script step succeeded; the prompt ended (quit, Ctrl-D);
+           with --gcs, stopped by Ctrl-C or SIGTERM
+      1    a step failed (the vehicle's own words), or no vehicle answered
+      2    bad options or an unreadable --script
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  Ctrl-C (at the prompt, a first one cancels a waiting command)
+
+    Example (with emulate onboard running):
+      ttctl emulate tablet --script flight.yaml
     """
     from .tablet import TabletOptions, emulate_tablet
 

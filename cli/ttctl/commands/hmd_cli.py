@@ -61,11 +61,21 @@ def hmd_dump_cmd(
     dialect: DialectOpt = None,
     include: DialectIncludeOpt = None,
 ) -> None:
-    """Record VR poses: JSONL to stdout by default, or CSV, a ROS 2 MCAP file or a ROS 1 bag;
-    optionally streamed to the drone (--to; paced for --profile, m100 by default). Ctrl-C
-    finishes the file and exits 0.
+    """Record VR poses: JSONL to stdout, or CSV, a ROS 2 MCAP file or a ROS 1 bag.
 
-    Example: ttctl hmd dump --duration 10 -o poses.mcap
+    Optionally streamed to the drone (--to; paced for --profile, m100 by
+    default). Ctrl-C finishes the file.
+
+    Exit status:
+      0    recorded (--duration, the recording's end, or Ctrl-C)
+      1    a damaged recording without --salvage; with --to, the onboard end
+           never answered or did not confirm a button change
+      2    bad options, an unreadable recording, or -o exists (--force)
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted while starting (Ctrl-C)
+
+    Example (10 s of the synthetic headset):
+      ttctl hmd dump --duration 10 -o poses.mcap
     """
     from .hmd import DumpOptions, dump
 
@@ -81,7 +91,17 @@ def hmd_pulse_cmd(
     us: Annotated[int, typer.Option("--us", help="Pulse length in microseconds, 0..3999 (clamped).",
                                     rich_help_panel=POSES)] = 2000,
 ) -> None:
-    """A haptic pulse on a controller (the openvr source; needs ttctl\\[vr] and SteamVR)."""
+    """A haptic pulse on a controller (the openvr source; needs ttctl\\[vr] and SteamVR).
+
+    Exit status:
+      0    pulsed
+      2    bad options, or no headset (the VR extra, SteamVR, a controller)
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Example:
+      ttctl hmd pulse --device left --us 3000
+    """
     from .hmd import pulse
 
     raise typer.Exit(pulse(device, us))

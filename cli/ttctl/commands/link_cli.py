@@ -85,21 +85,31 @@ def link_relay(
 ) -> None:
     """The emulated DJI radio link, as a process between the two ends, in real time.
 
-    Packets arriving on --listen (the tablet side) go through the profile's uplink model (rate, SDK
-    buffer, loss, latency) and reach --to after the modelled time, or are lost, corrupted, duplicated
-    or reordered as asked. Packets from --to go through the downlink model to every address that sent
-    a valid frame to --listen lately. Datagrams over the profile's MTU (100 bytes) are dropped, as DJI refuses them.
-    A stats line goes to stderr every --stats-interval seconds, and a last one on SIGINT/SIGTERM (exit 0).
-    The relay carries packets, whatever they hold; it learns who is behind an address only from valid
-    frames of the --dialect (so strangers cannot divert the link).
+    Packets arriving on --listen (the tablet side) go through the profile's
+    uplink model (rate, SDK buffer, loss, latency) and reach --to after the
+    modelled time, or are lost, corrupted, duplicated or reordered as asked.
+    Packets from --to go through the downlink model to every address that sent
+    a valid frame to --listen lately. Datagrams over the profile's MTU (100
+    bytes) are dropped, as DJI refuses them. A stats line goes to stderr every
+    --stats-interval seconds, and a last one on SIGINT/SIGTERM. The relay
+    carries packets, whatever they hold; it learns who is behind an address
+    only from valid frames of the --dialect (so strangers cannot divert it).
 
-    Example, three shells:
-    ttctl link relay --listen udp:127.0.0.1:14550 --to udp:127.0.0.1:14560 --loss 0.1
-    ttctl recv-file --listen udpin:127.0.0.1:14560 --dir inbox --profile m100
-    ttctl send-file FILE --to udpout:127.0.0.1:14550 --profile m100
+    With --profile mop and --pipe-listen/--pipe-to it also carries a MOP
+    pipeline (a byte stream at the profile's pipeline rate) between the ends'
+    --pipeline options; --pipe-drop and --outage close it.
 
-    With --profile mop and --pipe-listen/--pipe-to it also carries a MOP pipeline (a byte stream at the
-    profile's pipeline rate) between the ends' --pipeline options; --pipe-drop and --outage close it.
+    Exit status:
+      0    stopped by Ctrl-C or SIGTERM
+      2    bad options or an endpoint it cannot open
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted while starting (Ctrl-C)
+
+    Example, in three shells:
+      ttctl link relay --listen udp:127.0.0.1:14550 --to udp:127.0.0.1:14560 \\
+          --loss 0.1
+      ttctl recv-file --listen udpin:127.0.0.1:14560 --dir inbox
+      ttctl send-file FILE --to udpout:127.0.0.1:14550 --profile m100
     """
     from .relay import RelayOptions, relay
 
@@ -130,12 +140,23 @@ def link_fit(
                                         rich_help_panel=OUTPUT)]
     = False,
 ) -> None:
-    """A link profile fitted from your own measurements: rate and loss against distance, pacing,
-    SDK buffer depth, latency and burstiness (Gilbert-Elliott from the loss runs). Each measurement
-    is then replayed on the fitted profile and compared figure by figure (the residuals). Use the
-    profile with --profile-file wherever --profile is accepted.
+    """A link profile fitted from your own measurements (of `ttctl bench link --to`).
 
-    Example: ttctl link fit field-10m.json field-150m.json -o myfield.toml
+    Rate and loss against distance, pacing, SDK buffer depth, latency and
+    burstiness (Gilbert-Elliott from the loss runs). Each measurement is then
+    replayed on the fitted profile and compared figure by figure (the
+    residuals). Use the profile with --profile-file wherever --profile is
+    accepted.
+
+    Exit status:
+      0    the profile is written
+      2    unreadable or unusable measurements, bad options, or -o exists
+           (--force replaces it) or cannot be written
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C); nothing written
+
+    Example:
+      ttctl link fit field-10m.json field-150m.json -o myfield.toml
     """
     from .link_fit import fit_command
 
