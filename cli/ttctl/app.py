@@ -42,7 +42,10 @@ from .errors import Fail
 
 app = typer.Typer(
     name="ttctl",
-    help="Toolchain for custom MAVLink 2 links over DJI Data Transparent Transmission.",
+    help="Toolchain for custom MAVLink 2 links over DJI Data Transparent Transmission.\n\n"
+         "Start with your dialect: ttctl validate dialects/ttapi.xml, then ttctl gen.\n"
+         "Every command's --help groups its options, shows an example and says what\n"
+         "its exit statuses mean.",
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,

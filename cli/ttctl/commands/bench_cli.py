@@ -11,7 +11,9 @@ from ..errors import Fail
 from .options import PLOT_EXTRA, ProfileFileOpt
 from .panels import LINK, OUTPUT, RUN, WORKLOAD
 
-bench_app = typer.Typer(help="Benchmarks that print ratios against a named peer, measured in one run.",
+bench_app = typer.Typer(help="Benchmarks that print ratios against a named peer, measured in one run.\n\n"
+                             "Start with ttctl bench link (the link model against the thesis's\n"
+                             "measurements, in a second), then ttctl bench transfer --quick.",
                         no_args_is_help=True)
 
 
