@@ -13,30 +13,10 @@ import click
 import pytest
 
 from conftest import ROOT, assert_no_traceback, run_ttctl
+from test_hostile_options import TREE as HOSTILE_TREE
 
-
-def _tree() -> list[tuple[str, click.Command]]:
-    """(full path, command) of every command of the real command tree, as the command line builds it."""
-    from ttctl.app import app
-    from ttctl.commands.lazy import lazy_command
-
-    out: list[tuple[str, click.Command]] = []
-
-    def walk(cmd: click.Command, path: list[str]) -> None:
-        if isinstance(cmd, click.Group):
-            ctx = click.Context(cmd)
-            for n in cmd.list_commands(ctx):
-                sub = cmd.get_command(ctx, n)
-                assert sub is not None
-                walk(sub, [*path, n])
-        else:
-            out.append((" ".join(path), cmd))
-
-    walk(lazy_command(app), [])
-    return out
-
-
-TREE = _tree()
+# every command of the real command tree, as the command line builds it
+TREE = [(" ".join(path), cmd) for path, cmd in HOSTILE_TREE]
 NAMES = [name for name, _ in TREE]
 WIDTH = 80  # the newcomer's terminal
 CODES = {0, 1, 2, 3, 130}

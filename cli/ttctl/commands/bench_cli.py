@@ -278,6 +278,7 @@ def bench_serve(
       0    stopped by Ctrl-C or SIGTERM
       2    bad options or an endpoint it cannot open
       3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted while starting (Ctrl-C)
 
     Example:
       ttctl bench serve --listen udpin:0.0.0.0:14570
