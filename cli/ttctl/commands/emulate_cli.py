@@ -148,15 +148,20 @@ def emulate_tablet_cmd(
     --script. With --gcs, ground stations fly the same vehicle through it
     meanwhile, and it runs until interrupted.
 
+    At the prompt try `takeoff 5`, `status`, `land`; a --script is a YAML list
+    of the same steps (`- takeoff: 5`).
+
     Exit status:
       0    every --script step succeeded; the prompt ended (quit, Ctrl-D);
            with --gcs, stopped by Ctrl-C or SIGTERM
-      1    a step failed (the vehicle's own words), or no vehicle answered
+      1    a --script step failed (why, in the vehicle's words), or no vehicle
+           answered
       2    bad options or an unreadable --script
       3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
       130  Ctrl-C (at the prompt, a first one cancels a waiting command)
 
-    Example (with emulate onboard running):
+    Examples (with emulate onboard running):
+      ttctl emulate tablet
       ttctl emulate tablet --script flight.yaml
     """
     from .tablet import TabletOptions, emulate_tablet
