@@ -22,9 +22,9 @@ ProfileFileOpt = Annotated[Path | None, typer.Option("--profile-file", help="Tak
                                                      rich_help_panel=LINK)]
 PipelineOpt = Annotated[str | None, typer.Option(
     "--pipeline", metavar="tcpin:HOST:PORT|tcpout:HOST:PORT", show_default=False,
-    help="A MOP pipeline beside the link (DJI's SDK interconnection, or a rehearsal of it through `ttctl link "
-         "relay --profile mop`): tcpin accepts, as the onboard computer does; tcpout connects, as the app does, "
-         "again after every close. While it is open, file data goes on it and everything else stays on the link.",
+    help="A MOP pipeline beside the link (DJI's SDK interconnection, or `ttctl link relay --profile mop`), for "
+         "file data while it is open: tcpin accepts (the onboard computer), tcpout connects (the app), again "
+         "after every close.",
     rich_help_panel=PIPELINE)]
 PipeRateOpt = Annotated[float | None, typer.Option(
     "--pipe-rate", show_default=False,
