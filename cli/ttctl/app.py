@@ -37,11 +37,15 @@ from .commands.options import (
     ProfileOpt,
     RateOpt,
 )
+from .commands.panels import CHECKS, CODE, DIALECT, FILES, IDS, LINK, OUTPUT, RUN
 from .errors import Fail
 
 app = typer.Typer(
     name="ttctl",
-    help="Toolchain for custom MAVLink 2 links over DJI Data Transparent Transmission.",
+    help="Toolchain for custom MAVLink 2 links over DJI Data Transparent Transmission.\n\n"
+         "Start with your dialect: ttctl validate dialects/ttapi.xml, then ttctl gen.\n"
+         "Every command's --help groups its options, shows an example and says what\n"
+         "its exit statuses mean.",
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
@@ -72,7 +76,8 @@ def _root(
 
 IncludeOpt = Annotated[
     list[Path] | None,
-    typer.Option("-I", "--include-dir", help="Extra directory to search for <include> files (repeatable)."),
+    typer.Option("-I", "--include-dir", help="Extra directory to search for <include> files (repeatable).",
+                 rich_help_panel=DIALECT),
 ]
 
 
@@ -81,15 +86,26 @@ def validate(
     dialect: Annotated[Path, typer.Argument(help="Dialect XML file.", show_default=False)],
     include: IncludeOpt = None,
     mtu: Annotated[int, typer.Option(help="Packet size budget in bytes; warn for messages of this dialect whose "
-                                          "largest frame does not fit one packet (0: off).", min=0, max=65535)] = 100,
-    signed: Annotated[bool, typer.Option("--signed", help="Budget for signed frames (+13 bytes).")] = False,
-    fmt: Annotated[str, typer.Option("--format", help="text or json.")] = "text",
+                                          "largest frame does not fit one packet (0: off).", min=0, max=65535,
+                                     rich_help_panel=CHECKS)] = 100,
+    signed: Annotated[bool, typer.Option("--signed", help="Budget for signed frames (+13 bytes).",
+                                         rich_help_panel=CHECKS)] = False,
+    fmt: Annotated[str, typer.Option("--format", help="text or json.", rich_help_panel=OUTPUT)] = "text",
     all_warnings: Annotated[bool, typer.Option("--all-warnings",
-                                               help="Also show warnings inside pymavlink's own dialects.")] = False,
+                                               help="Also show warnings inside pymavlink's own dialects.",
+                                               rich_help_panel=CHECKS)] = False,
 ) -> None:
     """Validate a MAVLink 2 dialect: XSD and semantic checks, all problems in one run.
 
-    Exit status: 0 no errors (warnings allowed), 1 errors, 2 unreadable input or bad options.
+    Exit status:
+      0    no errors (warnings allowed)
+      1    errors in the dialect (each one printed)
+      2    unreadable input or bad options
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Example:
+      ttctl validate dialects/ttapi.xml
     """
     if fmt not in ("text", "json"):
         raise Fail(f"--format must be 'text' or 'json', not '{fmt}'")
@@ -112,30 +128,45 @@ def gen(
     dialect: Annotated[Path | None, typer.Argument(help="Dialect XML file (default: dialects/ttapi.xml).",
                                                      show_default=False)] = None,
     lang: Annotated[str, typer.Option("--lang", help="Comma-separated: python,cpp,java; xml writes the dialect as one "
-                                                  "file, includes resolved (MAVSDK's load_custom_xml, libmav).")]
-    = "python,cpp,java",
-    out: Annotated[Path, typer.Option("-o", "--out", help="Output directory.")] = Path("generated"),
-    check: Annotated[bool, typer.Option("--check", help="Write nothing; list files that differ; exit 1 if any.")]
+                                                  "file, includes resolved (MAVSDK's load_custom_xml, libmav).",
+                                      rich_help_panel=CODE)] = "python,cpp,java",
+    out: Annotated[Path, typer.Option("-o", "--out", help="Output directory.",
+                                      rich_help_panel=OUTPUT)] = Path("generated"),
+    check: Annotated[bool, typer.Option("--check", help="Write nothing; list files that differ; exit 1 if any.",
+                                        rich_help_panel=OUTPUT)]
     = False,
     force_skeletons: Annotated[bool, typer.Option("--force-skeletons",
-                                                  help="Overwrite skeletons (code you edit) too.")] = False,
+                                                  help="Overwrite skeletons (code you edit) too.",
+                                                  rich_help_panel=OUTPUT)] = False,
     include: IncludeOpt = None,
     templates: Annotated[Path | None, typer.Option("--templates",
-                                                      help="Folder of templates overriding ttctl's, by name.")] = None,
+                                                      help="Folder of templates overriding ttctl's, by name.",
+                                                   rich_help_panel=CODE)] = None,
     python_package: Annotated[str | None, typer.Option(
         "--python-package", metavar="NAME", show_default=False,
-        help="Python package of the bindings (default: the dialect's name).")] = None,
+        help="Python package of the bindings (default: the dialect's name).", rich_help_panel=CODE)] = None,
     cpp_namespace: Annotated[str | None, typer.Option(
         "--cpp-namespace", metavar="NAME", show_default=False,
-        help="C++ namespace, a or a::b (default: the dialect's name); headers in cpp/a/b/.")] = None,
+        help="C++ namespace, a or a::b (default: the dialect's name); headers in cpp/a/b/.",
+        rich_help_panel=CODE)] = None,
     java_package: Annotated[str | None, typer.Option(
         "--java-package", metavar="NAME", show_default=False,
-        help="Java package, a.b.c (default: ttctl.<dialect>).")] = None,
+        help="Java package, a.b.c (default: ttctl.<dialect>).", rich_help_panel=CODE)] = None,
 ) -> None:
     """Generate Python, C++ and Java bindings, skeletons and conformance programs.
 
-    Bindings are rewritten when they change; skeletons (handler and command stubs you fill in)
-    are written once. Refuses a dialect with validation errors.
+    Bindings are rewritten when they change; skeletons (handler and command stubs
+    you fill in) are written once. Refuses a dialect with validation errors.
+
+    Exit status:
+      0    written (with --check: nothing differs)
+      1    the dialect has errors, nothing written (--check: files differ)
+      2    unreadable dialect, bad options or an unusable output folder
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C): what this run created is taken back
+
+    Example:
+      ttctl gen dialects/ttapi.xml -o out --lang python
     """
     from .codegen.engine import Names
     from .gen import GenError, run_gen
@@ -160,22 +191,25 @@ app.add_typer(hmd_app, name="hmd")
 def recv_file_cmd(
     listen: Annotated[str, typer.Option("--listen", help="Endpoint: udpin:HOST:PORT (udp: means udpin), "
                                                          "tcpin:HOST:PORT, or udpout:/tcp: to reach out.",
-                                        show_default=False)],
+                                        show_default=False, rich_help_panel=LINK)],
     folder: Annotated[Path, typer.Option("--dir", help="Where received files go (created if missing).",
-                                         show_default=False)],
+                                         show_default=False, rich_help_panel=FILES)],
     overwrite: Annotated[bool, typer.Option("--overwrite", help="Allow replacing files, when the sender asks "
-                                                                "for it too.")] = False,
+                                                                "for it too.", rich_help_panel=FILES)] = False,
     max_file: Annotated[int | None, typer.Option("--max-file", help="Largest file accepted, bytes "
-                                                                    "(default 1 GiB).", show_default=False)] = None,
+                                                                    "(default 1 GiB).", show_default=False,
+                                                 rich_help_panel=FILES)] = None,
     max_dir: Annotated[int | None, typer.Option("--max-dir", help="Quota for everything in --dir, partial files "
                                                                   "included, bytes (default 8 GiB).",
-                                                show_default=False)] = None,
+                                                show_default=False, rich_help_panel=FILES)] = None,
     serve: Annotated[Path | None, typer.Option("--serve", help="Offer the files in this folder for download "
-                                                               "(send-file --from).", show_default=False)] = None,
+                                                               "(send-file --from).", show_default=False,
+                                               rich_help_panel=FILES)] = None,
     count: Annotated[int | None, typer.Option("--count", help="Exit 0 after this many files completed.",
-                                              show_default=False)] = None,
-    sysid: Annotated[int, typer.Option("--sysid", help="This end's MAVLink system id.")] = 1,
-    compid: Annotated[int, typer.Option("--compid", help="This end's MAVLink component id.")] = 240,
+                                              show_default=False, rich_help_panel=RUN)] = None,
+    sysid: Annotated[int, typer.Option("--sysid", help="This end's MAVLink system id.", rich_help_panel=IDS)] = 1,
+    compid: Annotated[int, typer.Option("--compid", help="This end's MAVLink component id.",
+                                        rich_help_panel=IDS)] = 240,
     rate: RateOpt = None,
     profile: ProfileOpt = None,
     profile_file: ProfileFileOpt = None,
@@ -190,11 +224,19 @@ def recv_file_cmd(
 ) -> None:
     """Receive files (the onboard end, 1/240, by default) until interrupted or --count files are in.
 
-    Prints a line per file accepted, refused (with the reason), completed or failed (--json: JSON lines).
-    Files land in DIR/.ttctl-partial first and are renamed into place once their SHA-256 matches.
-    On SIGINT/SIGTERM (exit 0) or a crash, what arrived stays there: offering the file again resumes it.
+    Prints a line per file accepted, refused (with the reason), completed or
+    failed (--json: JSON lines). Files land in DIR/.ttctl-partial first and are
+    renamed into place once their SHA-256 matches. On SIGINT/SIGTERM or a crash,
+    what arrived stays there: offering the file again resumes it.
 
-    Example: ttctl recv-file --listen udpin:0.0.0.0:14560 --dir inbox --profile m100
+    Exit status:
+      0    stopped by Ctrl-C or SIGTERM, or --count files are in
+      2    bad options, an unusable --dir or endpoint
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted while starting (Ctrl-C)
+
+    Example:
+      ttctl recv-file --listen udpin:0.0.0.0:14560 --dir inbox --profile m100
     """
     from .commands.recv_file import RecvOptions, recv_file
 
@@ -210,51 +252,65 @@ def send_file_cmd(
                                         show_default=False)],
     to: Annotated[str | None, typer.Option("--to", help="Send FILE to this endpoint: udpout:HOST:PORT (udp: "
                                                         "means udpout), tcp:HOST:PORT, udpin:/tcpin: to wait "
-                                                        "for the peer.", show_default=False)] = None,
+                                                        "for the peer.", show_default=False,
+                                           rich_help_panel=LINK)] = None,
     from_: Annotated[str | None, typer.Option("--from", help="Fetch FILE from a receiver started with --serve "
-                                                             "at this endpoint.", show_default=False)] = None,
+                                                             "at this endpoint.", show_default=False,
+                                              rich_help_panel=LINK)] = None,
     name: Annotated[str | None, typer.Option("--name", help="Name at the receiver (default: FILE's base name); "
-                                                            "a relative path.", show_default=False)] = None,
+                                                            "a relative path.", show_default=False,
+                                             rich_help_panel=FILES)] = None,
     overwrite: Annotated[bool, typer.Option("--overwrite", help="Ask the receiver to replace an existing "
-                                                                "file.")] = False,
+                                                                "file.", rich_help_panel=FILES)] = False,
     folder: Annotated[Path | None, typer.Option("--dir", help="With --from: where the file goes (default: .).",
-                                                show_default=False)] = None,
+                                                show_default=False, rich_help_panel=FILES)] = None,
     json_out: JsonOpt = False,
     rate: RateOpt = None,
     profile: ProfileOpt = None,
     profile_file: ProfileFileOpt = None,
     distance: DistanceOpt = 10.0,
-    sysid: Annotated[int, typer.Option("--sysid", help="This end's MAVLink system id.")] = 255,
-    compid: Annotated[int, typer.Option("--compid", help="This end's MAVLink component id.")] = 190,
-    target_sysid: Annotated[int, typer.Option("--target-sysid", help="The receiver's system id.")] = 1,
-    target_compid: Annotated[int, typer.Option("--target-compid", help="The receiver's component id.")] = 240,
+    sysid: Annotated[int, typer.Option("--sysid", help="This end's MAVLink system id.", rich_help_panel=IDS)] = 255,
+    compid: Annotated[int, typer.Option("--compid", help="This end's MAVLink component id.",
+                                        rich_help_panel=IDS)] = 190,
+    target_sysid: Annotated[int, typer.Option("--target-sysid", help="The receiver's system id.",
+                                              rich_help_panel=IDS)] = 1,
+    target_compid: Annotated[int, typer.Option("--target-compid", help="The receiver's component id.",
+                                               rich_help_panel=IDS)] = 240,
     timeout: Annotated[float, typer.Option("--timeout", help="Give up after this many seconds without progress "
                                                              "(no new bytes acknowledged: a receiver that only "
-                                                             "says busy does not count).")] = 60.0,
+                                                             "says busy does not count).", rich_help_panel=RUN)] = 60.0,
     key: KeyOpt = None,
     accept_unsigned: AcceptUnsignedOpt = False,
     dialect: DialectOpt = None,
     include: DialectIncludeOpt = None,
     no_compress: Annotated[bool, typer.Option("--no-compress", help="Send the file as it is, never as its zlib "
                                                                     "stream (by default a file that deflates "
-                                                                    "well goes deflated).")] = False,
+                                                                    "well goes deflated).",
+                                              rich_help_panel=FILES)] = False,
     pipeline: PipelineOpt = None,
     pipe_rate: PipeRateOpt = None,
 ) -> None:
     """Send a file to a receiver (ttctl recv-file, or the onboard end), or fetch one with --from.
 
-    A progress bar on stderr when it is a terminal; at the end a summary: bytes, seconds, goodput,
-    efficiency against the link capacity (known from --rate or --profile), retransmitted bytes, and
-    the compression when the file went deflated (text usually does; JPEG and archives never).
-    --json prints one JSON object instead: ok, code, message, name, bytes, seconds, goodput_Bps,
-    capacity_Bps, efficiency, retransmitted_bytes, frames_sent, bytes_sent, resumed_bytes,
-    deflated_bytes (the zlib stream's size, null when sent as it is), deflate_fallback.
-    Sending a file again after an interruption resumes where the receiver got to.
+    A progress bar on stderr when it is a terminal; at the end a summary: bytes,
+    seconds, goodput, efficiency against the link capacity (known from --rate or
+    --profile), retransmitted bytes, and the compression when the file went
+    deflated (text usually does; JPEG and archives never). --json prints one
+    JSON object instead: ok, code, message, name, bytes, seconds, goodput_Bps,
+    capacity_Bps, efficiency, retransmitted_bytes, frames_sent, bytes_sent,
+    resumed_bytes, deflated_bytes (the zlib stream's size, null when sent as it
+    is), deflate_fallback. Sending a file again after an interruption resumes
+    where the receiver got to.
 
-    Exit status: 0 delivered and verified, 1 refused (with the receiver's reason), failed or timed out,
-    2 bad options, a missing file or an unusable endpoint, 130 interrupted.
+    Exit status:
+      0    delivered and verified
+      1    refused (with the receiver's reason), failed or timed out
+      2    bad options, a missing file or an unusable endpoint
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C); sending again resumes
 
-    Example: ttctl send-file photo.jpg --to udpout:192.168.1.20:14560 --profile m100 --distance 50
+    Example:
+      ttctl send-file photo.jpg --to udpout:192.168.1.20:14560 --profile m100
     """
     from .commands.send_file import SendOptions, send_file
 

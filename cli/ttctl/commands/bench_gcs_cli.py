@@ -9,6 +9,7 @@ from typing import Annotated
 import typer
 
 from ..errors import Fail
+from .panels import GCS, IMPAIRMENTS, LINK, OUTPUT, RUN, WORKLOAD
 
 
 def _distances(text: str) -> list[float]:
@@ -40,39 +41,58 @@ def _ids(text: str) -> tuple[int, int]:
 
 def bench_gcs(
     distance: Annotated[str, typer.Option("--distance", help="Distances in metres, comma-separated (e.g. "
-                                                             "10,150).")] = "10",
+                                                             "10,150).", rich_help_panel=LINK)] = "10",
     loss: Annotated[float, typer.Option("--loss", help="Packet loss probability of the relay, both "
-                                                       "directions.", min=0.0, max=0.9)] = 0.1,
-    loss_model: Annotated[str, typer.Option("--loss-model", help="random or burst.")] = "random",
+                                                       "directions.", min=0.0, max=0.9,
+                                        rich_help_panel=IMPAIRMENTS)] = 0.1,
+    loss_model: Annotated[str, typer.Option("--loss-model", help="random or burst.",
+                                            rich_help_panel=IMPAIRMENTS)] = "random",
     items: Annotated[int, typer.Option("--items", help="Mission items uploaded and downloaded.", min=1,
-                                       max=200)] = 20,
+                                       max=200, rich_help_panel=WORKLOAD)] = 20,
     commands: Annotated[int, typer.Option("--commands", help="App commands idle (and at least as many with the "
-                                                             "ground station on).", min=1, max=1000)] = 50,
+                                                             "ground station on).", min=1, max=1000,
+                                          rich_help_panel=WORKLOAD)] = 50,
     interval: Annotated[float, typer.Option("--interval", help="Seconds between app commands.", min=0.1,
-                                            max=60)] = 0.5,
+                                            max=60, rich_help_panel=WORKLOAD)] = 0.5,
     step_timeout: Annotated[float, typer.Option("--step-timeout", help="Seconds a ground-station step may "
                                                                        "wait in all before it counts as "
-                                                                       "failed.", min=5, max=600)] = 60.0,
-    seed: Annotated[int, typer.Option("--seed", help="The relay's random seed.")] = 1,
+                                                                       "failed.", min=5, max=600,
+                                                rich_help_panel=RUN)] = 60.0,
+    seed: Annotated[int, typer.Option("--seed", help="The relay's random seed.", rich_help_panel=RUN)] = 1,
     gcs_id: Annotated[str, typer.Option("--gcs-id", help="The ground station's SYSID/COMPID (QGroundControl's "
-                                                         "default, which is also the tablet's).")] = "255/190",
+                                                         "default, which is also the tablet's).",
+                                        rich_help_panel=GCS)] = "255/190",
     sticks: Annotated[float, typer.Option("--sticks", help="The ground station also sends MANUAL_CONTROL this "
                                                            "many times a second once it hears the vehicle (a "
-                                                           "joystick; 0: none).", min=0, max=100)] = 0.0,
-    only: Annotated[str, typer.Option("--only", help="bridge, naive or both.")] = "both",
-    quick: Annotated[bool, typer.Option("--quick", help="A smoke test: 10 items, 4 commands, 20 s steps.")]
+                                                           "joystick; 0: none).", min=0, max=100,
+                                          rich_help_panel=GCS)] = 0.0,
+    only: Annotated[str, typer.Option("--only", help="bridge, naive or both.", rich_help_panel=WORKLOAD)] = "both",
+    quick: Annotated[bool, typer.Option("--quick", help="A smoke test: 10 items, 4 commands, 20 s steps.",
+                                        rich_help_panel=RUN)]
     = False,
     keep: Annotated[Path | None, typer.Option("--keep", help="Keep every process's stderr in this (new or "
-                                                             "empty) folder.", show_default=False)] = None,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+                                                             "empty) folder.", show_default=False,
+                                              rich_help_panel=OUTPUT)] = None,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.", rich_help_panel=OUTPUT)] = False,
 ) -> None:
-    """A QGroundControl-like ground station through `emulate tablet --gcs` (the bridge) and through
-    a naive forwarder, side by side over `link relay --profile m100` with loss, to `emulate onboard`:
-    connect sequence, parameter list, mission upload and download, position age at the ground
-    station, and the app's command latency idle and with the ground station on.
+    """A ground station through the tablet end (the bridge) against a naive forwarder.
 
-    Exit status: 0 when the issue's floors hold (at 10 m, 10 % random loss), 1 when one is missed,
-    2 bad input."""
+    A QGroundControl-like ground station through `emulate tablet --gcs` and
+    through a naive forwarder, side by side over `link relay --profile m100`
+    with loss, to `emulate onboard`: connect sequence, parameter list, mission
+    upload and download, position age at the ground station, and the app's
+    command latency idle and with the ground station on.
+
+    Exit status:
+      0    the floors hold (they count at 10 m, 10 % random loss)
+      1    a floor is missed
+      2    bad options or an unusable --keep
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Example:
+      ttctl bench gcs --quick
+    """
     from ..bench.gcs import MODES, Options, run
 
     if loss_model not in ("random", "burst"):

@@ -11,6 +11,7 @@ import typer
 from ..errors import Fail
 from .common import err
 from .options import DialectIncludeOpt, DialectOpt, ProfileFileOpt
+from .panels import LINK, OUTPUT, RUN, WORKLOAD
 
 if TYPE_CHECKING:
     from ..bench.latency import Phase
@@ -22,40 +23,52 @@ def bench_latency(
     to: Annotated[str | None, typer.Option("--to", help="Measure live: the onboard end (ttctl emulate onboard, "
                                                         "recv-file), or a relay in front of it, as udpout:HOST:PORT "
                                                         "(or tcp:, udpin:). Without it: the link model, in virtual "
-                                                        "time.", show_default=False)] = None,
+                                                        "time.", show_default=False, rich_help_panel=LINK)] = None,
     profile: Annotated[str | None, typer.Option("--profile", help="Link profile: the model's (without --to), or this "
                                                                   "end's pacing (with --to); default m100.",
-                                                show_default=False)] = None,
+                                                show_default=False, rich_help_panel=LINK)] = None,
     profile_file: ProfileFileOpt = None,
-    distance: Annotated[float, typer.Option("--distance", help="Distance in metres.", min=0)] = 10.0,
+    distance: Annotated[float, typer.Option("--distance", help="Distance in metres.", min=0,
+                                            rich_help_panel=LINK)] = 10.0,
     count: Annotated[int, typer.Option("--count", help="Commands per phase (idle, upload, download).", min=1,
-                                       max=10_000)] = 50,
+                                       max=10_000, rich_help_panel=WORKLOAD)] = 50,
     interval: Annotated[float, typer.Option("--interval", help="One command every this many seconds (at a random "
                                                                "moment in the first half).", min=0.05,
-                                            max=60)] = 1.0,
+                                            max=60, rich_help_panel=WORKLOAD)] = 1.0,
     size: Annotated[int | None, typer.Option("--size", help="Bytes of the file moved during the transfer phases "
                                                             "(sent again while commands remain; default 64 KiB, "
                                                             "2 MB on a profile with a MOP pipeline).", min=1,
-                                             max=1 << 26, show_default=False)] = None,
-    seed: Annotated[int, typer.Option("--seed", help="Random seed (model: the same seed, the same numbers).")] = 1,
+                                             max=1 << 26, show_default=False, rich_help_panel=WORKLOAD)] = None,
+    seed: Annotated[int, typer.Option("--seed", help="Random seed (model: the same seed, the same numbers).",
+                                      rich_help_panel=RUN)] = 1,
     fetch: Annotated[str | None, typer.Option("--fetch", help="With --to: a file the peer serves (emulate onboard "
                                                               "--serve DIR), fetched during the download phase; "
                                                               "without it that phase is skipped.",
-                                              show_default=False)] = None,
+                                              show_default=False, rich_help_panel=WORKLOAD)] = None,
     timeout: Annotated[float, typer.Option("--timeout", help="With --to: seconds to wait for the peer's first "
                                                              "ack before giving up (exit 2).", min=0.1,
-                                           max=600)] = 10.0,
-    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+                                           max=600, rich_help_panel=RUN)] = 10.0,
+    json_out: Annotated[bool, typer.Option("--json", help="Print the report as JSON.", rich_help_panel=OUTPUT)] = False,
     dialect: DialectOpt = None,
     include: DialectIncludeOpt = None,
 ) -> None:
-    """Command latency (TT_ACTION_COMMAND -> TT_COMMAND_ACK): idle, during an upload and during a
-    download; p50/p95/max, retries, and during/idle ratios. On the link model in virtual time, or
-    live (--to) against a real onboard end. Exit 1 if a transfer phase's p95 is over idle p95 +
-    a packet time + a margin (what the scheduler promises) or the phase could not run (a refused
-    fetch, a peer that takes no files), 2 for bad input or no peer.
+    """Command latency (TT_ACTION_COMMAND -> TT_COMMAND_ACK): idle, during an upload and a download.
 
-    Example: ttctl bench latency --to udpout:127.0.0.1:14550 --count 20 --interval 0.5
+    p50/p95/max, retries, and during/idle ratios. On the link model in virtual
+    time, or live (--to) against a real onboard end.
+
+    Exit status:
+      0    every transfer phase's p95 is within idle p95 + a packet time +
+           a margin (what the scheduler promises)
+      1    one is not, or a phase could not run (a refused fetch, a peer that
+           takes no files)
+      2    bad options, an unusable profile or dialect, or no peer (--to)
+      3    internal error (a bug; TTCTL_DEBUG=1 shows the traceback)
+      130  interrupted (Ctrl-C)
+
+    Examples (the model; then live, with emulate onboard running):
+      ttctl bench latency --count 20
+      ttctl bench latency --to udpout:127.0.0.1:14560 --count 20 --interval 0.5
     """
     from ..bench import latency as lat
     from ..link.model import ProfileError, load_profile
