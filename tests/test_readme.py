@@ -103,7 +103,8 @@ def _options(cmd: object) -> dict[str, str]:
 
 # tours whose heading is the command's full synopsis: every option it has, in brackets
 FULL_SYNOPSIS = ["ttctl validate", "ttctl gen", "ttctl bench validate", "ttctl bench gen", "ttctl bench transfer",
-                 "ttctl bench link", "ttctl send-file", "ttctl recv-file"]
+                 "ttctl bench link", "ttctl send-file", "ttctl recv-file", "ttctl link relay", "ttctl emulate onboard",
+                 "ttctl emulate tablet", "ttctl hmd dump", "ttctl bench latency"]
 
 
 def test_synopses_are_the_commands_options() -> None:
