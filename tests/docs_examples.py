@@ -8,7 +8,8 @@ fresh folder holding a link to the repository's `dialects/`:
 - a command ending in `&` starts in the background; the lines shown under it are the first it
   prints (waited for);
 - `$ # ...` (a comment) shows lines that background commands print meanwhile: each must come;
-- any other command runs to its end, and prints exactly what is shown.
+- any other command runs to its end, and prints exactly what is shown (`...` inside a line
+  stands for any text: a path the manual leaves out).
 
 Figures that vary by design are compared by their shape (`normalize`): the ports the block
 names are replaced by free ones, a client's port by `PORT`, the folder the block runs in by the
@@ -71,7 +72,14 @@ def matches(expected: list[str], got: list[str]) -> bool:
         return not got
     if expected[0].strip() == "...":
         return any(matches(expected[1:], got[i:]) for i in range(len(got) + 1))
-    return bool(got) and got[0] == expected[0] and matches(expected[1:], got[1:])
+    return bool(got) and _line_matches(expected[0], got[0]) and matches(expected[1:], got[1:])
+
+
+def _line_matches(expected: str, got: str) -> bool:
+    """Equal, or equal but for each `...` inside the expected line (a path left out, say)."""
+    if expected == got:
+        return True
+    return "..." in expected and re.fullmatch(".*?".join(map(re.escape, expected.split("..."))), got) is not None
 
 
 def normalize(line: str, ports: dict[str, str], folder: Path) -> str:
@@ -100,9 +108,12 @@ def _env() -> dict[str, str]:
             "PYTHONUNBUFFERED": "1", "COLUMNS": "200", "TERM": "dumb"}
 
 
-def run_block(block: Block, folder: Path) -> None:
-    """Run the block's commands in `folder`; assert that each prints what the manual shows."""
+def run_block(block: Block, folder: Path, files: tuple[str, ...] = ()) -> None:
+    """Run the block's commands in `folder` (holding `dialects/` and a copy of each of the
+    repository's `files`); assert that each prints what the manual shows."""
     (folder / "dialects").symlink_to(ROOT / "dialects")
+    for name in files:
+        (folder / Path(name).name).write_bytes((ROOT / name).read_bytes())
     text = "\n".join(c for c, _ in block.steps)
     ports = {p: str(_free_port()) for p in sorted(set(re.findall(r"127\.0\.0\.1:(145\d\d)\b", text)))}
     background: list[tuple[subprocess.Popen[str], Path]] = []
@@ -120,10 +131,10 @@ def run_block(block: Block, folder: Path) -> None:
         deadline = time.monotonic() + scaled(20)
         while True:
             got = [x for p in paths for x in lines_of(p)]
-            if all(e in got for e in expected if e != "...") or time.monotonic() > deadline:
+            missing = [e for e in expected if e != "..." and not any(_line_matches(e, g) for g in got)]
+            if not missing or time.monotonic() > deadline:
                 break
             time.sleep(0.1)
-        missing = [e for e in expected if e != "..." and e not in got]
         assert not missing, f"{block.where}: {what}\nthe manual:\n" + "\n".join(expected) + \
             "\nprints:\n" + "\n".join(got)
 
