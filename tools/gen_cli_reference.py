@@ -67,9 +67,20 @@ def _unrich(text: str) -> str:
 
 
 def _cell(text: str) -> str:
-    """Text for a Markdown table cell, shown as written (no HTML, no emphasis, no column breaks)."""
-    text = html.escape(_unrich(text), quote=False)
-    return re.sub(r"([|*_`\[\]\\])", r"\\\1", " ".join(text.split()))
+    """Text for a Markdown table cell, shown as written (no HTML, no emphasis, no column
+    breaks); `code` in the help stays code."""
+    text = " ".join(_unrich(text).split())
+    parts = text.split("`")
+    if len(parts) % 2 == 0:  # an unpaired backtick: no code spans
+        parts = [text]
+    out = []
+    for k, part in enumerate(parts):
+        if k % 2:
+            out.append(f"`{part}`")  # Python-Markdown's tables leave a pipe in code alone
+        else:
+            part = html.escape(part, quote=False)
+            out.append(re.sub(r"([|*_`\[\]\\])", r"\\\1", part))
+    return "".join(out)
 
 
 def _sections(doc: str) -> tuple[list[str], list[str], list[str]]:
@@ -108,6 +119,27 @@ def _examples(lines: list[str]) -> list[str]:
     while body and not body[-1].strip():
         body.pop()
     return body
+
+
+def _argument_help(cmd: click.Command) -> dict[str, str]:
+    """name -> the help each argument declares (typer.Argument(help=...)). Read from the command's
+    function: click 8.5 drops an argument's help that typer 0.25 hands it, so the click command
+    has it only with older clicks, and the page would depend on click's version."""
+    import typing
+
+    from typer.models import ArgumentInfo
+
+    if cmd.callback is None:
+        return {}
+    func = inspect.unwrap(cmd.callback)
+    out: dict[str, str] = {}
+    hints = typing.get_type_hints(func, include_extras=True)
+    for name, param in inspect.signature(func).parameters.items():
+        infos = [*getattr(hints.get(name), "__metadata__", ()), param.default]
+        for info in infos:
+            if isinstance(info, ArgumentInfo) and info.help:
+                out[name] = info.help
+    return out
 
 
 def _options(cmd: click.Command, ctx: click.Context) -> dict[str | None, list[tuple[str, str, str]]]:
@@ -162,8 +194,8 @@ def _command_page(path: list[str], cmd: click.Command) -> list[str]:
     if arguments:
         out += ["**Arguments**", "", "| Argument | Type | Help | |", "|---|---|---|---|"]
         for a in arguments:
-            metavar = a.make_metavar(ctx) if "ctx" in inspect.signature(a.make_metavar).parameters else a.make_metavar()
-            help_ = getattr(a, "help", None) or ""
+            metavar = a.make_metavar(ctx)
+            help_ = _argument_help(cmd).get(a.name or "", "")
             flags = "required" if a.required else ""
             if not a.required and a.default is not None and getattr(a, "show_default", True) is not False:
                 flags = f"default: {a.default}"

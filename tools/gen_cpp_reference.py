@@ -113,7 +113,7 @@ def _escape(text: str) -> str:
     out = []
     for k, part in enumerate(parts):
         if k % 2:
-            out.append("`" + part.replace("|", "\\|") + "`")
+            out.append(f"`{part}`")  # Python-Markdown's tables leave a pipe in code alone
         else:
             part = part.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
             out.append(re.sub(r"([|*_\[\]\\])", r"\\\1", part))
@@ -121,7 +121,7 @@ def _escape(text: str) -> str:
 
 
 def _escape_code(text: str) -> str:
-    return text.replace("|", "\\|").replace("`", "'")
+    return text.replace("`", "'")  # Python-Markdown's tables leave a pipe in code alone
 
 
 def render() -> str:
