@@ -8,6 +8,7 @@ fresh folder holding a link to the repository's `dialects/`:
 - a command ending in `&` starts in the background; the lines shown under it are the first it
   prints (waited for);
 - `$ # ...` (a comment) shows lines that background commands print meanwhile: each must come;
+- a command whose output starts `^C` gets Ctrl-C (SIGINT) a moment after it starts;
 - any other command runs to its end, and prints exactly what is shown (`...` inside a line
   stands for any text: a path the manual leaves out).
 
@@ -155,10 +156,14 @@ def run_block(block: Block, folder: Path, files: tuple[str, ...] = ()) -> None:
                 assert matches(expected, got), f"{block.where}: $ {cmd}\nthe manual:\n" + "\n".join(expected) + \
                     "\nprints first:\n" + "\n".join(got)
                 continue
-            proc = subprocess.run(["bash", "-c", real(cmd)], cwd=folder, stdout=subprocess.PIPE,
-                                  stderr=subprocess.STDOUT, text=True, env=_env(), timeout=scaled(120))
-            got = [normalize(x.rstrip(), ports, folder) for x in proc.stdout.splitlines() if x.strip()]
-            assert "Traceback" not in proc.stdout, proc.stdout
+            if expected and expected[0].startswith("^C"):  # Ctrl-C before it printed anything
+                expected[0] = expected[0][2:]
+                output = _interrupted(real(cmd), folder)
+            else:
+                output = subprocess.run(["bash", "-c", real(cmd)], cwd=folder, stdout=subprocess.PIPE,
+                                        stderr=subprocess.STDOUT, text=True, env=_env(), timeout=scaled(120)).stdout
+            got = [normalize(x.rstrip(), ports, folder) for x in output.splitlines() if x.strip()]
+            assert "Traceback" not in output, output
             assert matches(expected, got), f"{block.where}: $ {cmd}\nthe manual:\n" + "\n".join(expected) + \
                 "\nprints:\n" + "\n".join(got)
     finally:
@@ -170,6 +175,25 @@ def run_block(block: Block, folder: Path, files: tuple[str, ...] = ()) -> None:
             except subprocess.TimeoutExpired:
                 os.killpg(proc.pid, signal.SIGKILL)
                 proc.wait()
+
+
+def _interrupted(cmd: str, folder: Path) -> str:
+    """What the command prints when Ctrl-C comes a moment after it started (it has printed
+    nothing by then), as the terminal's SIGINT to its process group."""
+    proc = subprocess.Popen(["bash", "-c", cmd], cwd=folder, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            text=True, env=_env(), start_new_session=True)
+    try:
+        out, _ = proc.communicate(timeout=scaled(2))  # ended on its own: not what the manual shows
+        return out
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGINT)
+    try:
+        out, _ = proc.communicate(timeout=scaled(20))
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        out, _ = proc.communicate()
+        return out + "\n(still running 20 s after Ctrl-C)"
+    return out
 
 
 @functools.cache
