@@ -152,3 +152,22 @@ def test_help_example_runs(name: str, tmp_path: Path) -> None:
     proc = run_ttctl(*shlex.split(line)[1:], cwd=tmp_path, timeout=120)
     assert_no_traceback(proc)
     assert proc.returncode == 0, f"$ {line}\n{proc.stdout[-2000:]}{proc.stderr[-2000:]}"
+
+
+def test_every_argument_shows_its_help() -> None:
+    """An argument's declared help is in its command's --help (click 8.5's Argument once reset
+    typer's to None, so DIALECT, FILE... showed without a word)."""
+    from typer.core import TyperArgument
+
+    seen = 0
+    for name, cmd in TREE:
+        args = [p for p in cmd.params if isinstance(p, TyperArgument)]
+        if not args:
+            continue
+        proc = run_ttctl(*name.split(), "--help", env={"COLUMNS": "200"})
+        assert proc.returncode == 0, proc.stderr
+        for p in args:
+            assert p.help, f"{name}: argument {p.name} has no help"
+            assert " ".join(p.help.split()[:4]) in " ".join(proc.stdout.split()), (name, p.name, proc.stdout)
+            seen += 1
+    assert seen >= 5

@@ -16,6 +16,7 @@ from collections.abc import Callable, Iterator
 from typing import Any
 
 import click
+from typer.core import TyperArgument
 from typer.main import (
     get_command_from_info,
     get_command_name,
@@ -23,6 +24,27 @@ from typer.main import (
     solve_typer_info_defaults,
 )
 from typer.models import TyperInfo
+
+
+def _keep_argument_help() -> None:
+    """click 8.5's Argument takes a `help` of its own and sets it (None) after typer's
+    TyperArgument has stored the declared one, so every argument's help vanished from `--help`.
+    Put the declared text back once the base class is done."""
+    init = TyperArgument.__init__
+    if getattr(init, "__ttctl_keeps_help__", False):
+        return
+
+    @functools.wraps(init)
+    def keep(self: TyperArgument, *args: Any, help: str | None = None, **kw: Any) -> None:
+        init(self, *args, help=help, **kw)
+        if help is not None and getattr(self, "help", None) is None:
+            self.help = help
+
+    keep.__ttctl_keeps_help__ = True  # type: ignore[attr-defined]
+    TyperArgument.__init__ = keep  # type: ignore[method-assign]
+
+
+_keep_argument_help()
 
 
 class LazyCommands(dict[str, Any]):
