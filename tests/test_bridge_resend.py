@@ -89,3 +89,22 @@ def test_a_takeoff_resent_by_the_bridge_after_a_land_is_not_done_again() -> None
     s.send(command(b, int(C.MAV_CMD_NAV_TAKEOFF), 0, 0, 0, math.nan, math.nan, math.nan, 305))  # a new one: done
     s.run(0.5)
     assert s.v.snapshot().state.name != "LANDING"
+
+
+def test_a_flood_of_requests_is_followed_boundedly_and_resends_stop_at_the_bound() -> None:
+    """A station flooding parameter reads: at most MAX_PENDING followed (the oldest left to the
+    station), each resent a few times at most, none after BOUND."""
+    from ttctl.bridge.resend import MAX_PENDING
+
+    u = Up()
+    b = u.b
+    for i in range(500):
+        u.request(i * 0.001, b.ParamRequestRead(target_system=1, target_component=1, param_id=f"P{i}".encode(),
+                                                param_index=-1))
+    assert len(u.r.pending) == MAX_PENDING
+    sent = [f for t in range(1, 100) for _, f in u.r.tick(0.5 + t / 10)]
+    assert len(sent) <= 4 * MAX_PENDING and not u.r.pending and u.r.given_up == MAX_PENDING
+    # a command for another component (a camera) is not followed: the onboard end answers for the autopilot
+    u.request(20.0, b.CommandLong(target_system=1, target_component=100, command=512, confirmation=0, param1=0,
+                                  param2=0, param3=0, param4=0, param5=0, param6=0, param7=0))
+    assert not u.r.pending
