@@ -98,6 +98,10 @@ class GcsUplink:
         self.stats.queued += 1
         return "queued"
 
+    def waiting(self, frame: bytes) -> bool:
+        """This protocol (or user) frame still waits here: it has not gone to the link yet."""
+        return bool(self._waiting.get(_key(frame)))
+
     def _forget(self, key: tuple[int, int, int, bytes]) -> None:
         self._waiting.pop(key, None)
 

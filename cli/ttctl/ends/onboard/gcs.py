@@ -22,7 +22,8 @@ from .missions import Missions
 from .vehicle import Refused, Snapshot
 
 TARGETED = ("target_system",)
-REPEAT = 5.0  # s: a COMMAND_LONG with confirmation > 0 equal to the last one done is its retry
+REPEAT = 5.0  # s: a COMMAND_LONG with confirmation > 0 equal to one done this recently is its retry
+HISTORY = 8  # commands remembered per peer for that (a retry of the one before the last is still one)
 STREAM_MAX_HZ = 50  # REQUEST_DATA_STREAM's ceiling, as ArduPilot's SRn_ stream rates (0-50 Hz)
 
 
@@ -45,7 +46,8 @@ class GroundStations:
         self._peer_links: dict[tuple[int, int], Hashable] = {}
         self._told_unsupported: set[int] = set()
         self._told_stream_cap = False
-        self._done: dict[tuple[int, int], tuple[Any, float, int]] = {}  # each peer's last command and its result
+        # each peer's last commands (key, when, result): a retry of any of them is answered, not done again
+        self._done: dict[tuple[int, int], list[tuple[Any, float, int]]] = {}
         ap.missions = Missions(b, sysid, compid, self._to_peer, self.log)
         self.builders: dict[int, Callable[[Snapshot], Any]] = {
             b.Heartbeat.MSG_ID: lambda s: telemetry.heartbeat(b, s, self.ap.flight.custom_mode(s)),
@@ -136,17 +138,25 @@ class GroundStations:
                 "nan" if isinstance(v, float) and math.isnan(v) else v  # NaN (unused: MAVSDK, QGC) equals NaN here
                 for v in (msg.param1, msg.param2, msg.param3, msg.param4, getattr(msg, "param5", getattr(msg, "x", 0)),
                           getattr(msg, "param6", getattr(msg, "y", 0)), getattr(msg, "param7", getattr(msg, "z", 0)))))
-            done = self._done.get(peer)
-            if getattr(msg, "confirmation", 0) > 0 and done is not None and done[0] == key and now - done[1] < REPEAT:
-                # a ground station's retry of a command done here (its ack was lost on the way): the same
-                # answer again, not done twice (a take-off retried while climbing is not "denied")
-                self._to_peer(b.CommandAck(command=msg.command, result=done[2], target_system=peer[0],
+            done = self._retry_of(now, peer, key, msg)
+            if done is not None:
+                # a retry of a command done here (its ack was lost on the way, or the tablet's bridge
+                # resent it): the same answer again, not done twice (a take-off retried while climbing
+                # is not "denied", nor a second take-off)
+                if msg.command in self.ap.flight_commands:
+                    self.log(f"{self._cmd_name(msg.command)} from {peer[0]}/{peer[1]} again: answered as before "
+                             f"({self._result_name(done)}), not done twice")
+                self._to_peer(b.CommandAck(command=msg.command, result=done, target_system=peer[0],
                                            target_component=peer[1]), peer)
                 return
             result, extra = self._command(now, msg)
-            self._done[peer] = (key, now, int(result))
+            history = self._done.setdefault(peer, [])
+            history.append((key, now, int(result)))
+            del history[:-HISTORY]
             if len(self._done) > 64:  # (strangers on a listening link: each a peer)
                 self._done.pop(next(iter(self._done)))
+            if msg.command in self.ap.flight_commands:
+                self.log(f"{self._cmd_name(msg.command)} from {peer[0]}/{peer[1]}: {self._result_name(int(result))}")
             if result == b.MavResult.MAV_RESULT_ACCEPTED and msg.command in self.ap.flight_commands:
                 self.ap.commanded_by(peer[0], now)
             self._to_peer(b.CommandAck(command=msg.command, result=int(result), target_system=peer[0],
@@ -183,6 +193,32 @@ class GroundStations:
             self.ap.set_current(msg.seq)
         elif self.ap.missions is not None and type(msg).__name__.startswith("Mission"):
             self.ap.missions.on_message(now, msg)
+
+    def _retry_of(self, now: float, peer: tuple[int, int], key: Any, msg: Any) -> int | None:
+        """The recorded result when `msg` retries a command this peer had done within REPEAT: a
+        COMMAND_LONG with confirmation > 0 (a ground station's retry, or the tablet's bridge resending
+        what the link may have lost), or a COMMAND_INT equal to one done (it has no confirmation: the
+        bridge's resend and a station's retry look alike, and PX4 takes both as one command)."""
+        if getattr(msg, "confirmation", 1) <= 0:
+            return None  # a new command, whatever it equals
+        A = self.b.MavResult
+        for k, when, result in reversed(self._done.get(peer, [])):
+            if k == key and now - when < REPEAT:
+                # what was done is not done again; what was refused is tried again (the state may have changed)
+                return result if result in (A.MAV_RESULT_ACCEPTED, A.MAV_RESULT_IN_PROGRESS) else None
+        return None
+
+    def _cmd_name(self, cmd: int) -> str:
+        try:
+            return str(self.b.MavCmd(cmd).name).removeprefix("MAV_CMD_")
+        except ValueError:
+            return f"command {cmd}"
+
+    def _result_name(self, result: int) -> str:
+        try:
+            return str(self.b.MavResult(result).name).removeprefix("MAV_RESULT_")
+        except ValueError:
+            return f"result {result}"
 
     def _command(self, now: float, msg: Any) -> tuple[int, list[Any]]:
         C, A = self.b.MavCmd, self.b.MavResult

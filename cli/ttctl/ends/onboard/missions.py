@@ -32,6 +32,7 @@ class _Upload:
     ahead: dict[int, Any] = field(default_factory=dict)  # items that came before an earlier one
     asked_at: float = 0.0
     tries: int = 0
+    denied_to: tuple[int, int] | None = None  # the last other station told its upload was denied
 
 
 class Missions:
@@ -135,6 +136,16 @@ class Missions:
         b, R = self.b, self.b.MavMissionResult
         peer = (msg.get_srcSystem(), msg.get_srcComponent())
         if isinstance(msg, b.MissionCount):
+            up = self.upload
+            if up is not None and peer != up.peer:
+                # another station's upload is under way: a second transaction is denied, as PX4 denies
+                # it (MAV_MISSION_DENIED), and the first goes on (it would otherwise time out)
+                self._ack(peer, int(R.MAV_MISSION_DENIED), msg.mission_type)
+                if up.denied_to != peer:
+                    up.denied_to = peer
+                    self.warn(f"mission upload from {peer[0]}/{peer[1]} denied: one from {up.peer[0]}/{up.peer[1]}"
+                              f" is in progress")
+                return
             self.done = None
             if msg.count == 0:
                 self.plans[msg.mission_type] = []

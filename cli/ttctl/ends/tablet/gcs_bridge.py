@@ -18,6 +18,7 @@ from typing import Any
 from ...bridge.classes import ONBOARD_COMPID, RADIO_COMPID
 from ...bridge.downloads import DownloadRelay
 from ...bridge.missions import MissionRelay
+from ...bridge.resend import Resender
 from ...bridge.routes import Routes
 from ...bridge.uplink import MAX_PROTOCOL, GcsUplink
 from ...link.transport import Spec, Transport, make_transport
@@ -61,6 +62,8 @@ class GcsBridge:
         self.autopilot = b.encoder(vehicle_sysid, 1)  # the mission relay's requests, as the vehicle's
         self.missions = MissionRelay(self._request)
         self.downloads = DownloadRelay(self._request_up)
+        # one-shot requests (commands, parameter reads, mission lists) sent again until answered
+        self.resend = Resender(lambda msg, seq, who: bytes(msg.pack(seq, *who)), self.uplink.waiting)
         self._up_seq = 0
         self.stats = BridgeStats()
         self.ep: Endpoint | None = None
@@ -142,6 +145,7 @@ class GcsBridge:
                         continue
                 frame = msg.pack(msg.get_seq(), *carried)
                 self.uplink.put(now, msg.NAME, frame)
+                self.resend.request(now, msg.NAME, msg, carried, bytes(frame))
                 self.stats.up += 1
                 queued = True
                 for req in self.missions.from_gcs(now, msg, carried, frame):
@@ -193,8 +197,9 @@ class GcsBridge:
         target = None
         if hasattr(msg, "target_system"):
             target = (int(msg.target_system), int(getattr(msg, "target_component", 0) or 0))
+        who = target if target is not None and target[0] else None
+        self.resend.answer(loop_now, msg, who)  # (the answer to a request: no more resends of it)
         if msg.NAME.startswith("MISSION_"):
-            who = target if target is not None and target[0] else None
             forward, again, requests = self.missions.from_vehicle(loop_now, msg, who)
             passed, ahead = self.downloads.from_vehicle(loop_now, msg, who)
             forward = forward and passed
@@ -276,7 +281,10 @@ class GcsBridge:
             again = self.missions.tick(now)  # (and a mission upload's lost count or last item, sent again)
             for frame in again:
                 self.uplink.put(now, "MISSION_ITEM_INT", frame)  # (protocol frames: the name tells only newest-wins)
-            if again:
+            resent = self.resend.tick(now)  # one-shot requests whose answer has not come in a round trip
+            for name, frame in resent:
+                self.uplink.put(now, name, frame)
+            if again or resent:
                 self.kick()
             if now < due:
                 await asyncio.sleep(TICK)
@@ -298,7 +306,9 @@ class GcsBridge:
         return (f"ground stations: {self.stats.up} frames up ({u.sent} sent, {u.duplicates} retries dropped as "
                 f"duplicates, {u.replaced} overtaken by newer, {u.overflow} dropped for room, "
                 + (f"{u.user_overflow} of their own messages dropped for room, " if u.user_overflow else "")
-                + f"{self.stats.not_carried} for other systems not carried), {self.stats.down} down"
+                + f"{self.stats.not_carried} for other systems not carried), {self.stats.down} down; "
+                + f"{self.resend.resent} one-shot requests resent ({self.resend.rescued} answered only then, "
+                + f"{self.resend.given_up} never)"
                 + (f"; ids the dialect lacks: {self.stats.unknown_up} carried by header, "
                    f"{self.stats.unknown_dropped} not" if self.stats.unknown_up or self.stats.unknown_dropped else "")
                 + (f"; MAVLink 1: {self.stats.v1_up} up, {self.stats.v1_down} down, {self.stats.v1_dropped} not "

@@ -42,7 +42,9 @@ import java.util.function.Consumer;
  * waiting frame dropped; MANUAL_CONTROL, set-points and HEARTBEAT newest only; at most 64 of
  * each) and leave as a bulk source of the link's {@link LinkScheduler}: after the app's
  * commands and telemetry, and at most {@link Config#share} of the uplink's rate. The scheduler
- * signs them when the link is signed.
+ * signs them when the link is signed. A ground station's one-shot requests (commands, parameter
+ * reads and sets, mission lists) go again, through that queue, at the link's round trip until the
+ * vehicle's answer passes back, for at most 4 s ({@link GcsResend}, {@link #resent()}).
  *
  * <p>MAVLink 1 (pymavlink's default, older ground stations): a station's MAVLink 1 frames are
  * carried as MAVLink 2 (the same msgid and payload, re-framed, the CRC recomputed with the
@@ -75,6 +77,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     /** QGroundControl's (and MAVProxy's) port for vehicles and radios. */
     public static final int QGC_PORT = 14550;
     public static final long RADIO_STATUS_MILLIS = 1000;
+    static final long RESEND_TICK_MILLIS = 100;
     /** The M100's uplink in bytes per second, the budget's base when the scheduler is not paced. */
     public static final double DEFAULT_UPLINK_RATE = 500;
     public static final double DEFAULT_SHARE = 0.8;
@@ -190,6 +193,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     private final GcsV1Stations<SocketAddress> v1;
     private final GcsUplink uplink;
     private final GcsQuality quality = new GcsQuality();
+    private final GcsResend resend = new GcsResend(); // one-shot requests sent again until answered
     private final GcsRoutes<SocketAddress> routes;
     private final Object lock = new Object();
     private final ScheduledThreadPoolExecutor timer;
@@ -302,6 +306,34 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
                 tick();
             }
         }, RADIO_STATUS_MILLIS, RADIO_STATUS_MILLIS, TimeUnit.MILLISECONDS);
+        timer.scheduleAtFixedRate(new Runnable() {
+            @Override
+            public void run() {
+                resendDue();
+            }
+        }, RESEND_TICK_MILLIS, RESEND_TICK_MILLIS, TimeUnit.MILLISECONDS);
+    }
+
+    /** One-shot requests whose answer has not come in a round trip go again ({@link GcsResend}). */
+    private void resendDue() {
+        boolean any;
+        synchronized (lock) {
+            List<byte[]> again = resend.due(System.nanoTime(), uplink);
+            for (byte[] f : again) {
+                uplink.offer(f, System.nanoTime());
+            }
+            any = !again.isEmpty();
+        }
+        if (any) {
+            scheduler.wake();
+        }
+    }
+
+    /** Frames of ground stations' one-shot requests sent again ({@link GcsResend}). */
+    public long resent() {
+        synchronized (lock) {
+            return resend.resent();
+        }
     }
 
     /** The local UDP port of the bridge's socket. */
@@ -386,6 +418,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
                     f = GcsRules.withSource(f, carriedSys, m.crcExtra());
                 }
                 uplink.offer(f, now);
+                resend.request(f, m.crcExtra(), now);
                 any = true;
             }
             peakWaiting = Math.max(peakWaiting, uplink.waiting());
@@ -445,6 +478,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
             if (!onboard) {
                 fromVehicle++;
                 quality.frame(msg.sysId(), msg.compId(), msg.seq(), now);
+                resend.answer(f, now); // the answer to a request: no more resends of it
             }
             to = routes.destinations(ts, tc);
         }

@@ -171,6 +171,16 @@ public final class GcsUplink {
         return tokens > 0 ? now : now + (long) Math.ceil((1.0 - tokens) / bytesPerNano);
     }
 
+    /** Whether a PROTOCOL frame equal to {@code frame} (sequence number aside) still waits to go. */
+    public boolean holds(byte[] frame) {
+        for (byte[] w : protocol) {
+            if (GcsRules.sameMessage(w, frame)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** Frames waiting (PROTOCOL and NEWEST). */
     public int waiting() {
         return protocol.size() + newest.size();

@@ -1,0 +1,183 @@
+"""A ground station's one-shot requests, delivered over DTT as over a wire: the bridge sends again
+what the link may have lost until the vehicle's answer passes back down, or BOUND passes.
+
+MAVProxy sends a command, `wp list` or a parameter read once; over a radio that loses one packet
+in ten, one such request in five went unanswered (the request or its answer lost). Telemetry
+radios retransmit for this (ExpressLRS's "stubborn sender"); here the bridge, which sees both the
+request going up and the answer coming down, resends the request at the link's round trip (its
+own measure: request to answer, from requests answered at the first send), backing off, for at
+most BOUND seconds. What answers what:
+
+- COMMAND_LONG / COMMAND_INT: the COMMAND_ACK for that command to that station. A resent
+  COMMAND_LONG goes with its confirmation counted up, which the vehicle takes as a retry of one it
+  did (answered with its recorded result, never done twice: onboard/gcs.py); a COMMAND_INT, which
+  has no confirmation, is taken as a retry when it equals one done within its REPEAT seconds.
+- MISSION_REQUEST_LIST: that station's MISSION_COUNT (or a MISSION_ACK); MISSION_REQUEST_INT (one
+  the bridge passed up): that item (or a MISSION_ACK); MISSION_CLEAR_ALL: a MISSION_ACK.
+  (MISSION_COUNT and the items of an upload are resent by missions.py, which knows the upload.)
+- PARAM_REQUEST_READ, PARAM_SET: a PARAM_VALUE of that name (or index); PARAM_REQUEST_LIST: any
+  PARAM_VALUE (the list has begun; the station asks again for what it misses).
+
+A resend is not made while the request (or an earlier send of it) still waits in the bridge's
+uplink queue: the link has not had it yet, and the resends use that queue, inside its share of
+the uplink and behind the app's own commands. Sans-IO: `request` when a station's frame goes up,
+`answer` for each frame the vehicle sends a station, `tick` for the frames to send again.
+"""
+
+from __future__ import annotations
+
+from collections import OrderedDict
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+BOUND = 4.0  # s after the station's request: no more resends (a station's own retry starts it again)
+FIRST_RTT = 0.4  # s: the round trip assumed before one is measured (m100: 0.2-0.3 s)
+MIN_RTO, MAX_RTO = 0.3, 1.5  # s: a resend's wait, at least and at most
+BACKOFF = 1.5
+MAX_PENDING = 32  # requests followed at once; beyond that the oldest is left to its station
+REQUESTS = frozenset({"COMMAND_LONG", "COMMAND_INT", "MISSION_REQUEST_LIST", "MISSION_REQUEST_INT",
+                      "MISSION_REQUEST", "MISSION_CLEAR_ALL", "PARAM_REQUEST_READ", "PARAM_SET",
+                      "PARAM_REQUEST_LIST"})
+
+Key = tuple[Any, ...]
+
+
+@dataclass
+class _Pending:
+    name: str
+    msg: Any  # the station's message, as decoded
+    who: tuple[int, int]  # the ids it is carried under
+    frame: bytes  # the last frame of it sent up
+    first: float  # when the station sent it (its latest send)
+    due: float  # when to send it again
+    rto: float
+    sends: int = 1
+    seq: int = 0
+
+
+class Resender:
+    """`pack(msg, seq, who)` makes the frame of `msg` as carried under `who`; `waiting(frame)`
+    says whether the uplink queue still holds that frame (it has not gone yet)."""
+
+    def __init__(self, pack: Callable[[Any, int, tuple[int, int]], bytes], waiting: Callable[[bytes], bool],
+                 bound: float = BOUND) -> None:
+        self.pack = pack
+        self.waiting = waiting
+        self.bound = bound
+        self.pending: OrderedDict[Key, _Pending] = OrderedDict()
+        self.srtt: float | None = None
+        self.rttvar = FIRST_RTT / 4  # (a first resend after 0.8 s: three within BOUND)
+        self.resent = 0  # frames sent again
+        self.answered = 0  # requests whose answer came
+        self.rescued = 0  # ... after a resend
+        self.given_up = 0  # requests BOUND passed over without an answer
+
+    def rto(self) -> float:
+        srtt = FIRST_RTT if self.srtt is None else self.srtt
+        return min(MAX_RTO, max(MIN_RTO, srtt + 4 * self.rttvar))
+
+    @staticmethod
+    def key(name: str, msg: Any, who: tuple[int, int]) -> Key | None:
+        """What identifies the request and its answer; None: not a request followed here."""
+        if name in ("COMMAND_LONG", "COMMAND_INT"):
+            if int(getattr(msg, "target_component", 0)) not in (0, 1):
+                return None  # (another component: the onboard end answers for the autopilot only)
+            return who, "cmd", int(msg.command)
+        if name == "MISSION_REQUEST_LIST":
+            return who, "mlist", int(msg.mission_type)
+        if name in ("MISSION_REQUEST_INT", "MISSION_REQUEST"):
+            return who, "mitem", int(msg.mission_type), int(msg.seq)
+        if name == "MISSION_CLEAR_ALL":
+            return who, "mclear"
+        if name in ("PARAM_REQUEST_READ", "PARAM_SET"):
+            index = int(getattr(msg, "param_index", -1))
+            return who, "param", _name(msg.param_id) if index < 0 else index
+        if name == "PARAM_REQUEST_LIST":
+            return who, "params"
+        return None
+
+    # -- a station's request going up ------------------------------------------------------------
+    def request(self, now: float, name: str, msg: Any, who: tuple[int, int], frame: bytes) -> None:
+        if name not in REQUESTS:
+            return
+        key = self.key(name, msg, who)
+        if key is None:
+            return
+        p = self.pending.pop(key, None)
+        if p is not None and p.name == name:  # the station's own retry (or a new one like it): followed afresh
+            p.msg, p.frame, p.first, p.due, p.rto = msg, frame, now, now + self.rto(), self.rto()
+        else:
+            p = _Pending(name, msg, who, frame, now, now + self.rto(), self.rto(), seq=msg.get_seq())
+        self.pending[key] = p
+        while len(self.pending) > MAX_PENDING:
+            self.pending.popitem(last=False)
+
+    # -- the vehicle's answer coming down ----------------------------------------------------------
+    def answer(self, now: float, msg: Any, who: tuple[int, int] | None) -> None:
+        """A frame from the vehicle for the station carried as `who` (None: for every station)."""
+        name = msg.NAME
+        done: list[Key] = []
+        if name == "COMMAND_ACK" and who is not None:
+            done = [(who, "cmd", int(msg.command))]
+        elif name == "PARAM_VALUE":  # (no target: every station gets it)
+            pid, index = _name(msg.param_id), int(msg.param_index)
+            done = [k for k in self.pending if k[1] == "params" or (k[1] == "param" and k[2] in (pid, index))]
+        elif name == "MISSION_COUNT" and who is not None:
+            done = [(who, "mlist", int(msg.mission_type))]
+        elif name in ("MISSION_ITEM_INT", "MISSION_ITEM") and who is not None:
+            done = [(who, "mitem", int(msg.mission_type), int(msg.seq))]
+        elif name == "MISSION_ACK" and who is not None:
+            done = [k for k in self.pending if k[0] == who and k[1] in ("mlist", "mitem", "mclear")]
+        for k in done:
+            p = self.pending.pop(k, None)
+            if p is None:
+                continue
+            self.answered += 1
+            if p.sends == 1:  # an unrepeated request only (Karn): its round trip
+                self._sample(now - p.first)
+            else:
+                self.rescued += 1
+
+    def _sample(self, rtt: float) -> None:
+        rtt = min(5.0, max(0.0, rtt))
+        if self.srtt is None:
+            self.srtt, self.rttvar = rtt, rtt / 2
+        else:
+            self.rttvar = 0.75 * self.rttvar + 0.25 * abs(self.srtt - rtt)
+            self.srtt = 0.875 * self.srtt + 0.125 * rtt
+
+    # -- time ----------------------------------------------------------------------------------------
+    def tick(self, now: float) -> list[tuple[str, bytes]]:
+        """(name, frame) to put in the uplink queue again now."""
+        out: list[tuple[str, bytes]] = []
+        for key in list(self.pending):
+            p = self.pending[key]
+            if now - p.first >= self.bound:
+                del self.pending[key]
+                self.given_up += 1
+                continue
+            if now < p.due:
+                continue
+            if self.waiting(p.frame):  # not gone yet: its round trip starts when it goes
+                p.due = now + p.rto
+                continue
+            if p.name == "COMMAND_LONG":  # counted up: the vehicle takes it as a retry, never a second command
+                p.msg.confirmation = min(255, int(p.msg.confirmation) + 1)
+            p.seq = (p.seq + 1) & 0xFF
+            p.frame = self.pack(p.msg, p.seq, p.who)
+            p.sends += 1
+            p.rto = min(MAX_RTO * 2, p.rto * BACKOFF)
+            p.due = now + p.rto
+            self.resent += 1
+            out.append((p.name, p.frame))
+        return out
+
+    def deadline(self) -> float | None:
+        return min((p.due for p in self.pending.values()), default=None)
+
+
+def _name(raw: Any) -> str:
+    if isinstance(raw, bytes):
+        raw = raw.decode("utf-8", "replace")
+    return str(raw).split("\x00", 1)[0]

@@ -1,0 +1,175 @@
+"""One-shot requests through the tablet's bridge (issue 29, item 2): a ground station that sends a
+command, a parameter read or a mission list request ONCE (as MAVProxy does) is answered at 10 %
+loss as on a wire, because the bridge resends what the link may have lost until the vehicle's
+answer passes back; a resend is recognised at the vehicle as a retry (never done twice); and a
+second station's MISSION_COUNT beside an upload in progress is denied, the upload completes.
+Real processes: pymavlink and MAVProxy -> `emulate tablet --gcs` -> `link relay --profile m100
+--loss ...` -> `emulate onboard`."""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+import threading
+import time
+from pathlib import Path
+from typing import Any
+
+os.environ.setdefault("MAVLINK20", "1")  # before pymavlink is imported: ground stations speak MAVLink 2
+
+from e2e_lib import Start, run_mavproxy
+from test_gcs_bridge_peers import HOME, M_PER_DEG, Gcs, chain, no_traceback
+
+ANSWER_WAIT = 6.0  # s a station waits for the answer to its one request (the bridge's bound is ~4 s)
+
+
+def once(gcs: Gcs, send: Any, answered: Any) -> bool:
+    """`send()` once; True when a message satisfying `answered` comes within ANSWER_WAIT."""
+    send()
+    return gcs.pump(ANSWER_WAIT, answered) is not None
+
+
+def test_one_shot_requests_at_10_percent_loss_are_answered(tmp_path: Path, start: Start) -> None:
+    """20 COMMAND_LONG (REQUEST_MESSAGE), 20 PARAM_REQUEST_READ and 20 MISSION_REQUEST_LIST, each
+    sent once: at least 19 of each answered (without the bridge's resends 75-90 % were)."""
+    from conftest import shipped
+    from ttctl.ends.onboard.autopilot import Autopilot
+    from ttctl.ends.onboard.vehicle import SimVehicle
+
+    names = [p.name for p in Autopilot(shipped(), SimVehicle()).params.params][:20]
+    c = chain(start, tmp_path, model="random", seed=7)
+    gcs = Gcs(c.gcs[0])
+    m = gcs.m
+    try:
+        gcs.vehicle("HEARTBEAT", timeout=15)
+        cmd = m.MAV_CMD_REQUEST_MESSAGE
+        commands = sum(once(gcs, lambda: gcs.conn.mav.command_long_send(1, 1, cmd, 0, 242, 0, 0, 0, 0, 0, 0),
+                            lambda x: x.get_type() == "COMMAND_ACK" and x.command == cmd) for _ in range(20))
+        params = sum(once(gcs, lambda n=n: gcs.conn.mav.param_request_read_send(1, 1, n.encode(), -1),
+                          lambda x, n=n: x.get_type() == "PARAM_VALUE" and x.param_id == n) for n in names)
+        lists = sum(once(gcs, lambda: gcs.conn.mav.mission_request_list_send(1, 1, 0),
+                         lambda x: x.get_type() == "MISSION_COUNT" and x.get_srcSystem() == 1) for _ in range(20))
+    finally:
+        gcs.close()
+    summary = c.stop_tablet()
+    assert (commands, params, lists) >= (19, 19, 19) and min(commands, params, lists) >= 19, (commands, params,
+                                                                                             lists, summary)
+    assert re.search(r"[1-9]\d* one-shot requests? resent", summary), summary  # the link did lose some
+    no_traceback(c.onboard, c.relay, c.tablet)
+
+
+def test_takeoffs_resent_by_the_bridge_are_done_once(tmp_path: Path, start: Start) -> None:
+    """At 30 % loss a take-off sent once is resent by the bridge when its ack does not come back
+    in a round trip; the vehicle, which did it, answers the resend as a retry: each take-off is
+    done exactly once (the onboard end's log), and some were resends it recognised."""
+    c = chain(start, tmp_path, model="random", seed=3, loss="0.3")
+    gcs = Gcs(c.gcs[0])
+    m = gcs.m
+    nan = math.nan
+    sent = 0
+    try:
+        gcs.vehicle("HEARTBEAT", timeout=20)
+        assert gcs.command(m.MAV_CMD_COMPONENT_ARM_DISARM, 1) == m.MAV_RESULT_ACCEPTED
+        tko = m.MAV_CMD_NAV_TAKEOFF
+        for i in range(12):
+            sent += 1  # each a new take-off (another altitude), sent once, confirmation 0
+            once(gcs, lambda i=i: gcs.conn.mav.command_long_send(1, 1, tko, 0, 0, 0, 0, nan, nan, nan, 300.0 + i),
+                 lambda x: x.get_type() == "COMMAND_ACK" and x.command == tko)
+    finally:
+        gcs.close()
+    c.stop_tablet()
+    log = c.onboard.stderr
+    done = re.findall(r"NAV_TAKEOFF from \d+/\d+: ACCEPTED", log)
+    again = re.findall(r"NAV_TAKEOFF from \d+/\d+ again: answered as before", log)
+    assert len(done) == sent, log[-3000:]
+    assert again, log[-3000:]  # the bridge's resends reached a vehicle that had done it
+    no_traceback(c.onboard, c.relay, c.tablet)
+
+
+def test_mavproxy_rtl_sent_once_after_takeoff_returns_the_vehicle(tmp_path: Path, start: Start) -> None:
+    """MAVProxy 1.8.75 types `long NAV_RETURN_TO_LAUNCH` once (it never resends) while a pymavlink
+    station has the vehicle flying: ACCEPTED comes back to MAVProxy and the vehicle returns (RTL)."""
+    c = chain(start, tmp_path, stations=2, model="random", seed=11)
+    gcs = Gcs(c.gcs[0])
+    m = gcs.m
+    nan = math.nan
+    try:
+        gcs.vehicle("HEARTBEAT", timeout=15)
+        assert gcs.command(m.MAV_CMD_COMPONENT_ARM_DISARM, 1) == m.MAV_RESULT_ACCEPTED
+        assert gcs.command(m.MAV_CMD_NAV_TAKEOFF, 0, 0, 0, nan, nan, nan, 295 + 10) == m.MAV_RESULT_ACCEPTED
+        gcs.vehicle("GLOBAL_POSITION_INT", lambda p: p.relative_alt > 5000, timeout=20)
+        north = HOME[0] + 40 / M_PER_DEG  # 40 m away, so that returning is seen
+        assert gcs.command(m.MAV_CMD_DO_REPOSITION, -1, 1, 0, nan, north, HOME[1], 295 + 10) == m.MAV_RESULT_ACCEPTED
+        gcs.vehicle("GLOBAL_POSITION_INT", lambda p: p.lat > (HOME[0] + 30 / M_PER_DEG) * 1e7, timeout=30)
+        got: list[str] = []
+        mavproxy = threading.Thread(target=lambda: got.append(run_mavproxy(
+            c.gcs[1], (("", 8.0), ("long NAV_RETURN_TO_LAUNCH", 5.0)), tmp_path, "--cmd=set param_ftp 0",
+            "--source-system=250")), daemon=True)
+        mavproxy.start()  # (this station keeps reading meanwhile: what the vehicle says is seen as it comes)
+        hb = gcs.vehicle("HEARTBEAT", lambda h: (h.custom_mode >> 16) & 0xFF == 4 and h.custom_mode >> 24 == 5,
+                         timeout=25)  # PX4's AUTO.RTL
+        gcs.vehicle("GLOBAL_POSITION_INT", lambda p: p.lat < (HOME[0] + 10 / M_PER_DEG) * 1e7, timeout=30)  # back
+        mavproxy.join(40)
+    finally:
+        gcs.close()
+    assert hb is not None
+    assert got and re.search(r"COMMAND_ACK.*NAV_RETURN_TO_LAUNCH.*ACCEPTED", got[0]), got[0][-3000:] if got else ""
+    assert re.search(r"RETURN_TO_LAUNCH from 250/\d+: ACCEPTED", c.onboard.stderr), c.onboard.stderr[-3000:]
+    c.stop_tablet()
+    no_traceback(c.onboard, c.relay, c.tablet)
+
+
+def test_a_second_stations_mission_count_is_denied_beside_an_upload(tmp_path: Path, start: Start) -> None:
+    """Station A uploads 5 items (answering the vehicle's requests, as QGroundControl does) while
+    station B floods MISSION_COUNT: A's upload completes (MISSION_ACK ACCEPTED, the vehicle's log),
+    B gets MISSION_ACK DENIED, as PX4 denies a second transaction."""
+    c = chain(start, tmp_path, stations=2, model="random", seed=5)
+    a, b = Gcs(c.gcs[0]), Gcs(c.gcs[1], sysid=200, compid=190)
+    m = a.m
+    lat0, lon0 = HOME
+    stop = threading.Event()
+    b_acks: list[int] = []
+
+    def intruder() -> None:
+        while not stop.is_set():
+            b.conn.mav.mission_count_send(1, 1, 3, 0)
+            msg = b.pump(0.25, lambda x: x.get_type() == "MISSION_ACK")
+            if msg is not None:
+                b_acks.append(int(msg.type))
+
+    try:
+        a.vehicle("HEARTBEAT", timeout=15)
+        b.vehicle("HEARTBEAT", timeout=15)
+        a.conn.mav.mission_count_send(1, 1, 5, 0)
+        first = a.pump(8.0, lambda x: x.get_type() in ("MISSION_REQUEST_INT", "MISSION_REQUEST"))
+        assert first is not None, c.onboard.stderr[-2000:]
+        flood = threading.Thread(target=intruder, daemon=True)
+        flood.start()
+        ack = None
+        pending = first
+        end = time.monotonic() + 40
+        while time.monotonic() < end:
+            if pending is not None and pending.get_type() in ("MISSION_REQUEST_INT", "MISSION_REQUEST"):
+                s = int(pending.seq)
+                a.pump(0.4)  # a station taking its time over each item: the upload lasts while B floods
+                a.conn.mav.mission_item_int_send(1, 1, s, m.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, m.MAV_CMD_NAV_WAYPOINT,
+                                                 0, 1, 0, 0, 0, math.nan, int((lat0 + s * 1e-5) * 1e7),
+                                                 int(lon0 * 1e7), 10.0, 0)
+            elif pending is not None and pending.get_type() == "MISSION_ACK":
+                ack = pending
+                break
+            pending = a.pump(3.0, lambda x: x.get_type() in ("MISSION_REQUEST_INT", "MISSION_REQUEST",
+                                                             "MISSION_ACK"))
+        time.sleep(1.0)
+        stop.set()
+        flood.join(5)
+    finally:
+        stop.set()
+        a.close()
+        b.close()
+    assert "mission of 5 items received" in c.onboard.stderr, c.onboard.stderr[-3000:]
+    assert ack is not None and ack.type == m.MAV_MISSION_ACCEPTED, (ack, c.onboard.stderr[-3000:])
+    assert m.MAV_MISSION_DENIED in b_acks, b_acks
+    c.stop_tablet()
+    no_traceback(c.onboard, c.relay, c.tablet)
