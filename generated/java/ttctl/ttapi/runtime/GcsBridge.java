@@ -73,7 +73,7 @@ import java.util.function.Consumer;
  * grows with what a ground station sends: at most 64 + 64 frames wait, at most
  * {@value GcsRoutes#MAX_STATIONS} ground stations heard are remembered.
  */
-public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable {
+public final class GcsBridge extends GcsBridgeCounts implements Consumer<MavlinkMessage>, AutoCloseable {
     /** QGroundControl's (and MAVProxy's) port for vehicles and radios. */
     public static final int QGC_PORT = 14550;
     public static final long RADIO_STATUS_MILLIS = 1000;
@@ -190,12 +190,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     private final DatagramSocket socket;
     private final Parser parser;
     private final MavlinkDialect dialect;
-    private final GcsV1Stations<SocketAddress> v1;
-    private final GcsUplink uplink;
     private final GcsQuality quality = new GcsQuality();
-    private final GcsResend resend = new GcsResend(); // one-shot requests sent again until answered
-    private final GcsRoutes<SocketAddress> routes;
-    private final Object lock = new Object();
     private final ScheduledThreadPoolExecutor timer;
     private final java.util.concurrent.ExecutorService ownListeners;
     private final GcsProblems problems;
@@ -209,29 +204,18 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
     private boolean wakePending;
     private int radioSeq;
     private volatile boolean closed;
-    private long datagrams;
-    private long notCarried;
-    private long unknown;
-    private long unknownCarried;
-    private long toGcs;
-    private long radioStatus;
-    private long sendErrors;
-    private long fromVehicle;
-    private int lastNotCarriedFor = -1;
-    private int peakWaiting;
 
     private GcsBridge(Link link, LinkScheduler scheduler, MavlinkDialect dialect, Config c, Executor sessionListeners)
             throws SocketException {
+        super(new GcsUplink(uplinkBase(c, scheduler) * c.share, scheduler.mtu()),
+                new GcsRoutes<SocketAddress>(c.vehicle, c.tabletSys, c.tabletComp),
+                new GcsV1Stations<SocketAddress>(dialect, GcsRoutes.MAX_STATIONS), new GcsResend());
         this.link = link;
         this.scheduler = scheduler;
         this.vehicle = c.vehicle;
         this.tabletSys = c.tabletSys;
-        this.routes = new GcsRoutes<>(c.vehicle, c.tabletSys, c.tabletComp);
-        double base = c.uplinkRate > 0 ? c.uplinkRate : scheduler.rate() > 0 ? scheduler.rate() : DEFAULT_UPLINK_RATE;
-        this.uplink = new GcsUplink(base * c.share, scheduler.mtu());
         this.parser = new Parser(dialect);
         this.dialect = dialect;
-        this.v1 = new GcsV1Stations<>(dialect, GcsRoutes.MAX_STATIONS);
         Executor l = c.listeners != null ? Callbacks.serial(c.listeners) : sessionListeners;
         this.ownListeners = l == null ? Callbacks.newThread("ttctl-gcs-listeners") : null;
         this.problems = new GcsProblems(c.onProblem, l != null ? l : ownListeners);
@@ -259,6 +243,11 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
             }
         }, "ttctl-gcs-bridge");
         reader.setDaemon(true);
+    }
+
+    /** The uplink's rate the bridge's share is of: the configured one, else the scheduler's pace. */
+    private static double uplinkBase(Config c, LinkScheduler scheduler) {
+        return c.uplinkRate > 0 ? c.uplinkRate : scheduler.rate() > 0 ? scheduler.rate() : DEFAULT_UPLINK_RATE;
     }
 
     /**
@@ -326,13 +315,6 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
         }
         if (any) {
             scheduler.wake();
-        }
-    }
-
-    /** Frames of ground stations' one-shot requests sent again ({@link GcsResend}). */
-    public long resent() {
-        synchronized (lock) {
-            return resend.resent();
         }
     }
 
@@ -533,7 +515,7 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
         }
     }
 
-    // ---- problems, counters, close ----
+    // ---- problems, close (the counters: GcsBridgeCounts) ----
 
     private void problem(final String what) {
         problem(what, false);
@@ -562,140 +544,6 @@ public final class GcsBridge implements Consumer<MavlinkMessage>, AutoCloseable 
             Thread.sleep(millis);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-        }
-    }
-
-    /** Frames that went up the link (handed to the scheduler). */
-    public long carried() {
-        synchronized (lock) {
-            return uplink.pulled();
-        }
-    }
-
-    /** Bytes of the frames that went up the link (unsigned: signing adds 13 a frame). */
-    public long carriedBytes() {
-        synchronized (lock) {
-            return uplink.pulledBytes();
-        }
-    }
-
-    /** Frames dropped as a ground station's retry of a frame still waiting. */
-    public long duplicates() {
-        synchronized (lock) {
-            return uplink.duplicates();
-        }
-    }
-
-    /** Frames dropped because too many waited (RADIO_STATUS's {@code fixed}). */
-    public long overflow() {
-        synchronized (lock) {
-            return uplink.overflow();
-        }
-    }
-
-    /** NEWEST frames replaced by a newer one before they went. */
-    public long replaced() {
-        synchronized (lock) {
-            return uplink.replaced();
-        }
-    }
-
-    /** Frames for another system and datagrams with bytes that are no frame of the dialect: not carried. */
-    public long notCarried() {
-        synchronized (lock) {
-            return notCarried;
-        }
-    }
-
-    /** Datagrams with bytes that are no frame of the dialect (unknown messages, bad checksums, garbage). */
-    public long unknown() {
-        synchronized (lock) {
-            return unknown;
-        }
-    }
-
-    /** Frames of messages the dialect lacks carried as mavlink-router does (unchecked, to the vehicle). */
-    public long unknownCarried() {
-        synchronized (lock) {
-            return unknownCarried;
-        }
-    }
-
-    /** MAVLink 1 frames from ground stations carried as MAVLink 2. */
-    public long v1Up() {
-        return v1.up();
-    }
-
-    /** Frames sent to MAVLink 1 ground stations as MAVLink 1. */
-    public long v1Down() {
-        return v1.down();
-    }
-
-    /** What MAVLink 1 could not carry: answers with ids over 255, MAVLink 1 ids the dialect lacks. */
-    public long v1Dropped() {
-        return v1.dropped();
-    }
-
-    /** The system id the last frame not carried was for, or -1. */
-    public int lastNotCarriedFor() {
-        synchronized (lock) {
-            return lastNotCarriedFor;
-        }
-    }
-
-    /** The vehicle's frames sent to ground stations (one per ground station it went to). */
-    public long toGcs() {
-        synchronized (lock) {
-            return toGcs;
-        }
-    }
-
-    /** RADIO_STATUS frames sent to ground stations. */
-    public long radioStatus() {
-        synchronized (lock) {
-            return radioStatus;
-        }
-    }
-
-    /** Ground-station frames of the vehicle received from the link. */
-    public long fromVehicle() {
-        synchronized (lock) {
-            return fromVehicle;
-        }
-    }
-
-    /** Datagrams received from ground stations. */
-    public long datagrams() {
-        synchronized (lock) {
-            return datagrams;
-        }
-    }
-
-    /** Sends to a ground station the socket refused. */
-    public long sendErrors() {
-        synchronized (lock) {
-            return sendErrors;
-        }
-    }
-
-    /** Frames waiting to go up now. */
-    public int waiting() {
-        synchronized (lock) {
-            return uplink.waiting();
-        }
-    }
-
-    /** The most frames that ever waited at once (at most 128). */
-    public int peakWaiting() {
-        synchronized (lock) {
-            return peakWaiting;
-        }
-    }
-
-    /** Ground stations the bridge sends to now (the sendTo address and those heard). */
-    public int peers() {
-        synchronized (lock) {
-            return routes.size();
         }
     }
 
