@@ -11,7 +11,7 @@ picks each frame in this order:
    share of the downlink: so what is left for the answers is never less than the rest);
 3. short answers (acks, MISSION_COUNT, STATUSTEXT, MESSAGE_INTERVAL, ...) in order: a command's
    ack does not wait for a list;
-4. bulk answers (FTP data, parameter and mission lists, log data), one lane per station they are
+4. bulk answers (FTP data, parameter and mission lists both ways, log data), one lane per station they are
    addressed to (and one for those addressed to every station), fair by bytes between the lanes
    that have something waiting: two stations downloading share the rest of the link, and a
    station's one parameter does not wait behind another's 64 KB file.
@@ -32,7 +32,8 @@ from .downfit import StreamFit
 REPEAT = 0.5  # s after a HEARTBEAT left, it leaves again if no newer one came
 LANES = 16
 BULK = frozenset({"FILE_TRANSFER_PROTOCOL", "PARAM_VALUE", "PARAM_EXT_VALUE", "MISSION_ITEM_INT", "MISSION_ITEM",
-                  "LOG_ENTRY", "LOG_DATA", "ENCAPSULATED_DATA", "DATA_TRANSMISSION_HANDSHAKE"})
+                  "MISSION_REQUEST_INT", "MISSION_REQUEST", "LOG_ENTRY", "LOG_DATA", "ENCAPSULATED_DATA",
+                  "DATA_TRANSMISSION_HANDSHAKE"})
 SHORT_LIMIT = 128
 
 Lane = tuple[int, int] | None  # the station a bulk answer is addressed to (None: every station)
