@@ -92,6 +92,24 @@ def test_the_table_shows_both_columns_and_the_floors(both: dict[str, Any]) -> No
     assert "SYSTEM_TIME" in text and "not MAVSDK" in text
 
 
+def test_ftp_download_keeps_the_heartbeat_and_positions_against_idle_in_the_same_run() -> None:
+    """`--ftp KB`: after the mission the ground station fetches a file by MAVLink FTP (pymavlink's
+    mavftp) and the report prints its longest HEARTBEAT gap and position rate during the download
+    against idle just before (issue 29: under 2 s, at least 0.8 of idle)."""
+    rep = _bench("--only", "bridge", "--ftp", "16")
+    (b,) = rep["runs"]
+    assert rep["ftp_kb"] == 16 and "ftp" not in b["failed"], b["failed"]
+    assert b["ftp_s"] > 0 and b["hb_gap_idle_s"] > 0 and b["gpi_idle_hz"] > 0, b
+    assert b["hb_gap_ftp_s"] < 2.0 and b["gpi_ftp_hz"] >= 0.8 * b["gpi_idle_hz"], b
+    out = io.StringIO()
+    print_report(rep, out)
+    text = out.getvalue()
+    assert re.search(r"MAVLink FTP download, 16 KB \(s\) .*\d+\.\d", text), text
+    assert re.search(r"longest HEARTBEAT gap, idle \(s\) .*\d\.\d", text)
+    assert re.search(r"longest HEARTBEAT gap, FTP on \(s\) .*\d\.\d", text)
+    assert re.search(r"positions a second, FTP on \(Hz\) .*\d\.\d", text)
+
+
 @pytest.mark.parametrize(("args", "words"), [
     (["--distance", "ten"], "--distance: 'ten' is not a number"),
     (["--gcs-id", "300/1"], "--gcs-id: 300/1 is outside"),

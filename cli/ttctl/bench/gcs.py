@@ -10,7 +10,9 @@ and a QGroundControl-like pymavlink peer listening on G (see gcs_peer). The app'
 tablet prompt's `hover`: on the ground the vehicle answers DENIED, a whole round trip through the
 tablet's command queue (retries included), timed from the line written to its answer read.
 Idle: before the ground station starts; connected: during its connect, mission upload and
-download (the commands go on until its sequence ends).
+download (the commands go on until its sequence ends). With `--ftp KB` the onboard end serves a
+file of that size and the ground station then fetches it by MAVLink FTP (gcs_peer.py): its longest
+HEARTBEAT gap and position rate during the download against the same idle just before.
 """
 
 from __future__ import annotations
@@ -52,6 +54,7 @@ class Options:
     quick: bool = False
     modes: tuple[str, ...] = MODES
     keep: str | None = None  # keep every process's stderr in this folder
+    ftp_kb: int = 0  # the ground station fetches a file of this size by MAVLink FTP after the mission (0: no)
 
 
 @dataclass
@@ -72,6 +75,11 @@ class Run:
     ack_wait_s: float | None = None
     download_s: float | None = None
     items_checked: bool = False
+    ftp_s: float | None = None
+    hb_gap_idle_s: float | None = None
+    hb_gap_ftp_s: float | None = None
+    gpi_idle_hz: float | None = None
+    gpi_ftp_hz: float | None = None
     age_p50_ms: float | None = None
     age_p95_ms: float | None = None
     ages: int = 0
@@ -243,9 +251,18 @@ def run_one(o: Options, mode: str, distance: float, folder: Path, progress: Any)
     ttctl = console_script("ttctl", "ttctl")
     ob, rl, g = free_port(), free_port(), free_port()
     link = ["--profile", o.profile, "--distance", f"{distance:g}"]
+    ftp: tuple[str, bytes] | None = None
+    serve: list[str] = []
+    if o.ftp_kb:
+        import random
+
+        (folder / "serve").mkdir()
+        data = random.Random(o.seed).randbytes(o.ftp_kb * 1024)
+        (folder / "serve" / "bench.bin").write_bytes(data)
+        ftp, serve = ("/serve/bench.bin", data), ["--serve", str(folder / "serve")]
     try:
         onboard = procs.start("onboard", [*ttctl, "emulate", "onboard", "--no-gcs", "--listen", f"udpin:{LOCAL}:{ob}",
-                                          *link])
+                                          *link, *serve])
         relay = procs.start("relay", [*ttctl, "link", "relay", "--listen", f"udp:{LOCAL}:{rl}", "--to",
                                       f"udp:{LOCAL}:{ob}", *link, "--loss", f"{o.loss:g}", "--loss-model",
                                       o.loss_model, "--seed", str(o.seed), "--stats-interval", "0"])
@@ -282,7 +299,8 @@ def run_one(o: Options, mode: str, distance: float, folder: Path, progress: Any)
         r.idle_p50_ms, r.idle_p95_ms = percentile(lat, 0.5), percentile(lat, 0.95)
         if why:
             r.notes.append(f"idle command: {why}")
-        progress(f"{mode} {distance:g} m: the ground station connects, uploads and downloads {o.items} items")
+        progress(f"{mode} {distance:g} m: the ground station connects, uploads and downloads {o.items} items"
+                 + (f", then fetches {o.ftp_kb} KB by MAVLink FTP" if o.ftp_kb else ""))
         peer = QgcLikePeer(g, sysid=o.gcs_id[0], compid=o.gcs_id[1], deadline_s=o.step_timeout,
                            sticks_hz=o.sticks_hz)
         done = threading.Event()
@@ -290,7 +308,7 @@ def run_one(o: Options, mode: str, distance: float, folder: Path, progress: Any)
 
         def gcs() -> None:
             try:
-                box["f"] = run_sequence(peer, o.items, linger=lambda: box.get("commands_done", False))
+                box["f"] = run_sequence(peer, o.items, linger=lambda: box.get("commands_done", False), ftp=ftp)
             except Exception as e:  # reported as the run's failure, not a traceback
                 box["error"] = f"{type(e).__name__}: {e}"
             finally:
@@ -320,6 +338,8 @@ def run_one(o: Options, mode: str, distance: float, folder: Path, progress: Any)
         r.ack_wait_s = f.ack_wait_s
         r.upload_s, r.upload_restarts, r.download_s, r.items_checked = (f.upload_s, f.upload_restarts, f.download_s,
                                                                         f.items_checked)
+        r.ftp_s, r.hb_gap_idle_s, r.hb_gap_ftp_s = f.ftp_s, f.hb_gap_idle_s, f.hb_gap_ftp_s
+        r.gpi_idle_hz, r.gpi_ftp_hz = f.gpi_idle_hz, f.gpi_ftp_hz
         r.age_p50_ms, r.age_p95_ms, r.ages, r.age_method = (percentile(f.ages_ms, 0.5), percentile(f.ages_ms, 0.95),
                                                             len(f.ages_ms), f.age_method)
         r.failed.update(f.failed)
@@ -362,6 +382,7 @@ def run(o: Options) -> int:
     rep: dict[str, Any] = {"profile": o.profile, "loss": o.loss, "loss_model": o.loss_model, "items": o.items,
                            "commands": o.commands, "interval_s": o.interval, "seed": o.seed,
                            "gcs_id": f"{o.gcs_id[0]}/{o.gcs_id[1]}", "sticks_hz": o.sticks_hz,
+                           "ftp_kb": o.ftp_kb,
                            "runs": [asdict(r) for r in runs]}
     rep["checks"] = checks(rep)
     if o.json_out:

@@ -15,6 +15,11 @@ src/MissionManager/PlanManager.h, src/Vehicle/Vehicle.cc):
   item again in the first case and starts over (MISSION_COUNT) in the second, within the same 5
   retries, so a lost frame costs time, not the run.
 
+With an FTP step (`bench gcs --ftp KB`), after the mission the peer listens for a few seconds, then
+fetches a file from the vehicle by MAVLink FTP with pymavlink's own client (mavftp, whole 239-byte
+reads): the longest gap between the vehicle's HEARTBEATs and the rate of its GLOBAL_POSITION_INT
+during the download, against the same while idle just before (issue 29).
+
 Every GLOBAL_POSITION_INT is stamped on receipt: its age is the receive time minus the moment
 the vehicle stamped it (time_boot_ms), placed on this machine's clock by SYSTEM_TIME (which
 carries time_unix_usec and time_boot_ms of one instant; both ends share the clock on loopback).
@@ -23,6 +28,7 @@ Without SYSTEM_TIME the offset is the minimum over the run (ages then start at 0
 
 from __future__ import annotations
 
+import itertools
 import math
 import os
 import time
@@ -60,6 +66,11 @@ class Figures:
     items_checked: bool = False  # the 20 items downloaded are the ones uploaded
     ages_ms: list[float] = field(default_factory=list)
     age_method: str = ""
+    ftp_s: float | None = None  # the FTP download
+    hb_gap_idle_s: float | None = None  # the longest HEARTBEAT gap, listening idle just before it
+    hb_gap_ftp_s: float | None = None  # ... during it
+    gpi_idle_hz: float | None = None  # GLOBAL_POSITION_INT a second, idle and during it
+    gpi_ftp_hz: float | None = None
     failed: dict[str, str] = field(default_factory=dict)  # step -> why
 
 
@@ -85,6 +96,9 @@ class QgcLikePeer:
         self.positions: list[tuple[float, int]] = []  # (receive unix time, time_boot_ms)
         self.heard = False
         self.f = Figures()
+        self.beats: list[float] = []  # when each of the vehicle's HEARTBEATs came (whoever read it: mavftp too)
+        self.fixes: list[float] = []  # ... each GLOBAL_POSITION_INT
+        self.conn.message_hooks.append(self._hook)
 
     def close(self) -> None:
         self.conn.close()
@@ -115,6 +129,39 @@ class QgcLikePeer:
                 continue
             self._note(msg)
             return msg
+
+    def _hook(self, conn: Any, msg: Any) -> None:
+        if msg.get_type() == "BAD_DATA" or (msg.get_srcSystem(), msg.get_srcComponent()) != (self.target,
+                                                                                                VEHICLE_COMPID):
+            return
+        if msg.get_type() == "HEARTBEAT":
+            self.beats.append(time.monotonic())
+        elif msg.get_type() == "GLOBAL_POSITION_INT":
+            self.fixes.append(time.monotonic())
+
+    def _stream(self, t0: float, t1: float) -> tuple[float, float]:
+        """The longest HEARTBEAT gap and the GLOBAL_POSITION_INT rate between t0 and t1."""
+        beats = [t0, *(t for t in self.beats if t0 <= t <= t1), t1]
+        gap = max(b - a for a, b in itertools.pairwise(beats))
+        return round(gap, 2), round(sum(1 for t in self.fixes if t0 <= t <= t1) / (t1 - t0), 2)
+
+    def ftp(self, path: str, expect: bytes, idle_s: float = 6.0) -> None:
+        """Listen `idle_s`, then fetch `path` by MAVLink FTP (pymavlink's mavftp): it must be `expect`."""
+        from pymavlink import mavftp
+
+        t0 = time.monotonic()
+        self.pump(idle_s)
+        t1 = time.monotonic()
+        self.f.hb_gap_idle_s, self.f.gpi_idle_hz = self._stream(t0, t1)
+        client = mavftp.MAVFTP(self.conn, target_system=self.target, target_component=VEHICLE_COMPID)
+        client.ftp_settings.burst_read_size = 239
+        got = client.read(path, len(expect))
+        t2 = time.monotonic()
+        self.f.hb_gap_ftp_s, self.f.gpi_ftp_hz = self._stream(t1, t2)
+        if got != expect:
+            raise StepFailed(f"FTP download of {path}: " + ("nothing came whole" if got is None else
+                                                           f"{len(got)} bytes, not the {len(expect)} served"))
+        self.f.ftp_s = t2 - t1
 
     def _note(self, msg: Any) -> None:
         kind = msg.get_type()
@@ -352,10 +399,10 @@ class QgcLikePeer:
         self._send(self.m.MAVLink_mission_request_int_message(self.target, VEHICLE_COMPID, seq, 0))
 
 
-def run_sequence(peer: QgcLikePeer, items: int, linger: Any = None) -> Figures:
-    """Connect, upload `items`, download them; then keep the link up (heartbeats, position ages)
-    until `linger()` is true. A step that fails is named in Figures.failed, and the rest skipped
-    where they need it."""
+def run_sequence(peer: QgcLikePeer, items: int, linger: Any = None, ftp: tuple[str, bytes] | None = None) -> Figures:
+    """Connect, upload `items`, download them (and fetch `ftp`'s file, if any); then keep the link
+    up (heartbeats, position ages) until `linger()` is true. A step that fails is named in
+    Figures.failed, and the rest skipped where they need it."""
     f = peer.f
     try:
         peer.connect()
@@ -369,6 +416,11 @@ def run_sequence(peer: QgcLikePeer, items: int, linger: Any = None) -> Figures:
                 step()
             except StepFailed as e:
                 f.failed[name] = str(e)
+        if ftp is not None and peer.heard:
+            try:
+                peer.ftp(*ftp)
+            except StepFailed as e:
+                f.failed["ftp"] = str(e)
     while linger is not None and not linger():
         peer.pump(0.2)
     f.ages_ms, f.age_method = peer.ages()

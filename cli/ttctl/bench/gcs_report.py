@@ -25,8 +25,17 @@ ROWS = (
     ("gcs_p50_ms", "app command p50, GCS on", "ms"),
     ("gcs_p95_ms", "app command p95, GCS on", "ms"),
 )
+FTP_ROWS = (  # with --ftp KB: the ground station's view of the vehicle while it downloads, against idle
+    ("ftp_s", "MAVLink FTP download, {ftp} KB", "s"),
+    ("hb_gap_idle_s", "longest HEARTBEAT gap, idle", "s"),
+    ("hb_gap_ftp_s", "longest HEARTBEAT gap, FTP on", "s"),
+    ("gpi_idle_hz", "positions a second, idle", "Hz"),
+    ("gpi_ftp_hz", "positions a second, FTP on", "Hz"),
+)
+HIGHER_BETTER = {"gpi_idle_hz", "gpi_ftp_hz"}
 STEP_OF = {"connect_s": "connect", "params_s": "connect", "upload_s": "upload", "download_s": "download",
-           "age_p50_ms": "connect", "age_p95_ms": "connect"}
+           "age_p50_ms": "connect", "age_p95_ms": "connect", "ftp_s": "ftp", "hb_gap_ftp_s": "ftp",
+           "gpi_ftp_hz": "ftp"}
 
 
 def _pair(runs: list[dict[str, Any]], distance: float) -> tuple[dict[str, Any] | None, dict[str, Any] | None]:
@@ -83,7 +92,7 @@ def checks(rep: dict[str, Any]) -> list[dict[str, Any]]:
 def _fmt(v: float | None, unit: str) -> str:
     if v is None:
         return "-"
-    return f"{v:.1f}" if unit == "s" else f"{v:.0f}"
+    return f"{v:.1f}" if unit in ("s", "Hz") else f"{v:.0f}"
 
 
 def print_report(rep: dict[str, Any], out: Any = None) -> None:
@@ -99,10 +108,12 @@ def print_report(rep: dict[str, Any], out: Any = None) -> None:
         for col in ("figure", "bridge", "naive", "naive/bridge", "floor", "holds"):
             t.add_column(col, justify="left" if col == "figure" else "right")
         ch = {(c["check"], c["kind"]): c for c in rep["checks"] if c["distance_m"] == d}
-        for key, label, unit in ROWS:
+        for key, label, unit in ROWS + (FTP_ROWS if rep.get("ftp_kb") else ()):
             bv, nv = _value(b, key), _value(n, key)
             nfail = _naive_failed(n, key)
             ratio = "naive failed" if nfail else (f"{nv / bv:.1f}x" if bv and nv is not None else "-")
+            if key in HIGHER_BETTER:
+                ratio = "-"
             floor = ch.get((key, "floor"))
             floor_text = "" if floor is None else f"<= {floor['floor']:.0f}, {RATIO:g}x"
             holds = ""
@@ -112,7 +123,7 @@ def print_report(rep: dict[str, Any], out: Any = None) -> None:
                 holds = "[green]yes[/]" if all(oks) else "[red]no[/]"
                 if not floor["counts"]:
                     holds += " (ref.)"
-            t.add_row(f"{label.format(items=rep['items'])} ({unit})", _fmt(bv, unit),
+            t.add_row(f"{label.format(items=rep['items'], ftp=rep.get('ftp_kb'))} ({unit})", _fmt(bv, unit),
                       "failed" if nfail else _fmt(nv, unit), ratio, floor_text, holds)
         console.print(t)
         for r in (b, n):

@@ -66,6 +66,10 @@ def bench_gcs(
                                                            "many times a second once it hears the vehicle (a "
                                                            "joystick; 0: none).", min=0, max=100,
                                           rich_help_panel=GCS)] = 0.0,
+    ftp: Annotated[int, typer.Option("--ftp", help="After the mission the ground station fetches a file of this "
+                                                   "many KB by MAVLink FTP (pymavlink's mavftp): its longest "
+                                                   "HEARTBEAT gap and position rate during it against idle "
+                                                   "(0: no).", min=0, max=1024, rich_help_panel=WORKLOAD)] = 0,
     only: Annotated[str, typer.Option("--only", help="bridge, naive or both.", rich_help_panel=WORKLOAD)] = "both",
     quick: Annotated[bool, typer.Option("--quick", help="A smoke test: 10 items, 4 commands, 20 s steps.",
                                         rich_help_panel=RUN)]
@@ -103,7 +107,7 @@ def bench_gcs(
         raise Fail(f"--keep: {keep} is not a new or empty folder")
     o = Options(_distances(distance), loss, loss_model, items, commands, interval, step_timeout, seed,
                 gcs_id=_ids(gcs_id), sticks_hz=sticks, json_out=json_out, quick=quick, keep=str(keep) if keep else None,
-                modes=MODES if only == "both" else (only,))
+                modes=MODES if only == "both" else (only,), ftp_kb=ftp)
     if quick:
         o.items, o.commands, o.interval, o.step_timeout = min(items, 10), min(commands, 4), min(interval, 0.5), 20.0
     raise typer.Exit(run(o))

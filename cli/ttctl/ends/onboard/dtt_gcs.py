@@ -3,10 +3,13 @@
 its own ground-station links, as the autopilot (compid 1).
 
 Which DTT frames are a ground station's: bridge/classes.py. While one was heard within PRESENCE
-seconds, the vehicle's broadcasts go down DTT too (its HEARTBEAT always): its streams newest-wins per type, fitted to
-`share` of the downlink (bridge/downfit.py), everything else (acks, parameters, mission items,
-STATUSTEXT, and the HEARTBEAT) in order below the tablet's own commands and acks, an answer equal
-to one still waiting not twice (bridge/answers.py). Plugins' answers to a station's own messages
+seconds, the vehicle's broadcasts go down DTT too (its HEARTBEAT always). All of it leaves through
+one fair source below the tablet's own commands and acks (bridge/downmux.py): the HEARTBEAT first
+(twice a second), then the streams newest-wins per type, fitted to `share` of the downlink
+(bridge/downfit.py), then short answers (acks, STATUSTEXT) in order, then bulk answers (FTP,
+parameter and mission lists) fair by bytes between the stations they are for; an answer equal to
+one still waiting not twice (bridge/answers.py). An FTP burst to one station so never holds back
+the HEARTBEAT or the position every station gets. Plugins' answers to a station's own messages
 (the user's dialect) wait in a small queue of their own beside those, a source of the scheduler
 like them: a station flooding its own messages cannot delay the vehicle's acks or HEARTBEAT.
 """
@@ -18,6 +21,7 @@ from typing import Any
 from ...bridge.answers import AnswerQueue
 from ...bridge.classes import PRESENCE, from_ground_station
 from ...bridge.downfit import StreamFit
+from ...bridge.downmux import FairDownlink
 from ...proto.endpoint import Endpoint
 from ...wire.bindings import Bindings
 from .gcs import GroundStations
@@ -34,7 +38,7 @@ class DttGroundStations:
         self.encoder = b.encoder(sysid, compid)  # unsigned: the DTT scheduler signs as frames leave
         self.fit = StreamFit(share * downlink_Bps if downlink_Bps else None,
                              asked=lambda mid: gcs.rates.interval.get(mid), encode=self.encoder.encode)
-        self.answers = AnswerQueue(self.encoder.encode)
+        self.down = FairDownlink(self.fit, self.encoder.encode)
         self.user = AnswerQueue(self.encoder.encode, limit=USER_LIMIT)
         self.endpoint: Endpoint | None = None
         self.heard_at: float | None = None  # loop time of the last ground-station frame over DTT
@@ -43,8 +47,7 @@ class DttGroundStations:
 
     def attach(self, endpoint: Endpoint) -> None:
         self.endpoint = endpoint
-        endpoint.add_stream(self.answers)
-        endpoint.add_stream(self.fit)
+        endpoint.add_stream(self.down)
         endpoint.add_stream(self.user)
 
     def takes(self, msg: Any) -> bool:
@@ -65,15 +68,19 @@ class DttGroundStations:
             return
         b = self.b
         msgid = msg.MSG_ID
-        # (HEARTBEAT is not fitted: in order with the answers, a ground station learns the autopilot
-        # type before the first PARAM_VALUE, which MAVProxy decodes by it)
+        # (HEARTBEAT is not fitted: it goes first, so a ground station learns the autopilot type
+        # before the first PARAM_VALUE, which MAVProxy decodes by it, and never waits for a burst)
+        if isinstance(msg, b.Heartbeat):
+            self.down.put_heartbeat(now, msg)
+            self.frames_out += 1
+            return
         if broadcast and msgid in self.gcs.rates.builders and msgid != b.Heartbeat.MSG_ID:
             self.fit.put(now, msgid, msg)  # a stream: newest wins, fitted
             return
         if isinstance(msg, b.MessageInterval):  # the interval this link keeps, not the one asked
             msg = b.MessageInterval(message_id=msg.message_id,
                                     interval_us=int(self.fit.interval_us(msg.message_id, msg.interval_us)))
-        if self.answers.put(msg):
+        if self.down.put(msg):
             self.frames_out += 1
 
     def send_user(self, msg: Any) -> None:
