@@ -75,6 +75,9 @@ class Endpoint:
                          if receive_dir is not None else None)
         if self.receiver is not None:
             self.receiver.packet = mtu
+        # what is not control traffic: the transfers' own frames and a hello's HEARTBEAT (every sender sends one)
+        self._not_control = (bindings.TtFileOffer, bindings.TtFileStatus, bindings.TtFileReason, bindings.TtFileRequest,
+                             bindings.Heartbeat)
         if self.receiver is not None and rate_Bps:
             # statuses go back over our own link: on a slow one, fewer of them
             self.receiver.cfg = TransferConfig(**{
@@ -360,6 +363,8 @@ class Endpoint:
             else:
                 self.receiver.on_data(now, msg, WIDE if isinstance(msg, b.TtFileDataWide) else NARROW)
             return
+        if self.receiver is not None and not isinstance(msg, self._not_control):
+            self.receiver.control_at = now  # another process's commands share the link: grants leave them room
         if self.divert is not None and self.divert(now, msg):
             return
         if not self._for_us(msg):
