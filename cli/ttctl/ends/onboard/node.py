@@ -503,12 +503,14 @@ class OnboardNode:
             wall = now - self.started
             self._send_gcs(self.gcs.tick(wall))
             if self.endpoint is not None:
-                if self.vehicle_time >= self._hb_due:
+                # on the wall clock, as the link runs, whatever --speed is (on the vehicle's clock, at
+                # --speed 4 they took four times their share of the downlink from the tablet's downloads)
+                if wall >= self._hb_due:
                     self.endpoint.send_message(telemetry_heartbeat(self.b, self.vehicle.snapshot()))
-                    self._hb_due = self.vehicle_time + 1.0
-                if self.cfg.telemetry_hz > 0 and self.vehicle_time >= self._tele_due:
+                    self._hb_due = wall + 1.0
+                if self.cfg.telemetry_hz > 0 and wall >= self._tele_due:
                     self._tablet_telemetry()
-                    self._tele_due = self.vehicle_time + 1.0 / self.cfg.telemetry_hz
+                    self._tele_due = wall + 1.0 / self.cfg.telemetry_hz
                 if self.runner is not None:
                     self.runner.kick()
             self._wake.clear()
