@@ -31,11 +31,14 @@ def test_a_lone_transfer_is_granted_room_once_commands_are_heard() -> None:
     assert share(500, 3, control=True) == int(CONTROL_FILL * 500 / 3) < share(500, 3) == int(GRANT_FILL * 500 / 3)
 
 
-def test_the_receiver_hears_commands_but_not_hellos_or_transfers(tmp_path: Path) -> None:
+def test_the_receiver_hears_commands_but_not_hellos_or_telemetry(tmp_path: Path) -> None:
     ep = Endpoint(B, 1, 240, mtu=255, receive_dir=ReceiveDir(tmp_path), inbound_Bps=500)
     tablet = B.encoder(255, 190)
     assert ep.receiver is not None
     ep.receive(1.0, tablet.encode(B.Heartbeat(type=6, autopilot=8)), "a")  # every sender's hello
+    assert ep.receiver.control_at is None
+    vehicle = B.encoder(1, 240)  # the other end's telemetry (a fetch from the onboard end) is not control traffic
+    ep.receive(1.5, vehicle.encode(B.TtNavSatFix(time_usec=1, latitude=460503000, longitude=144686000)), "a")
     assert ep.receiver.control_at is None
     ep.receive(2.0, tablet.encode(B.TtActionCommand(target_system=1, target_component=240, action=1)), "a")
     assert ep.receiver.control_at == 2.0

@@ -14,8 +14,9 @@ Commands from another process (the tablet beside `send-file` processes) meet the
 packets in the radio's two-packet buffer, first come first served. At 0.97 of the link a packet
 that waits takes some 30 packet times to drain, so a command found one or two packets waiting
 (0.5 s instead of 0.25) or a full buffer (dropped: a 3 s retry); a lone transfer, paced to the
-whole link with three-packet frames, kept it full. So once a control frame (anything but the
-transfers' own frames and a hello's HEARTBEAT) has come in within CONTROL_WINDOW, the grants
+whole link with three-packet frames, kept it full. So once a control frame (a command, a
+setpoint, a VR pose, a ground station's request taken over DTT; not the other end's telemetry)
+has come in within CONTROL_WINDOW (endpoint.py), the grants
 share CONTROL_FILL of the capacity and a lone transfer is granted too: a backlog drains in a few
 packet times and a command waits about the packet on the air (tests/test_commands_beside_files).
 
