@@ -188,6 +188,28 @@ def test_a_stream_that_inflates_to_less_is_refused(tmp_path: Path) -> None:
     assert finals(on) == []
 
 
+def test_a_stream_with_a_preset_dictionary_is_refused_in_ttctls_words_and_leaves_no_folder(tmp_path: Path) -> None:
+    """zlib says "Error 2 while decompressing data" for a stream that asks for a preset
+    dictionary; the refusal says it in ttctl's terms, and the failed transfer leaves no empty
+    partial folder behind (the receiver keeps running: nothing else would remove it)."""
+    text = mission_yaml()
+    c = zlib.compressobj(6, zdict=b"mission")
+    stream = c.compress(text) + c.flush()
+    s, on, _ = send_forged(tmp_path, stream, text, len(text))
+    assert s.result is not None and s.result.code == "FAILED_CHECKSUM"
+    assert s.result.message == "the stream asks for a preset dictionary, which a ttctl stream never uses"
+    assert finals(on) == [] and not (on / ".ttctl-partial").exists()
+
+
+def test_a_finished_transfer_leaves_no_empty_partial_folder(tmp_path: Path) -> None:
+    on = tmp_path / "on"
+    w = World(tmp_path, onboard_dir=on)
+    s = w.tablet.send_file("log.csv", ONBOARD, source=BytesSource(flight_log_csv(seconds=10), "log.csv"))
+    w.run(300, stop=lambda: s.done)
+    assert s.result is not None and s.result.ok, s.result
+    assert finals(on) == ["log.csv"] and not (on / ".ttctl-partial").exists()
+
+
 def test_a_stream_the_receiver_cannot_inflate_makes_a_real_sender_send_the_file(tmp_path: Path) -> None:
     """A sender whose stream failed there (a corruption that slipped through, an inflater that
     disagrees) sends the file as it is rather than the same stream again."""

@@ -142,6 +142,17 @@ def _drop(spool: Any) -> None:
         spool.close()
 
 
+def _zlib_words(e: zlib.error) -> str:
+    """zlib's complaint in ttctl's terms: its detail when it gives one ("invalid stored block
+    lengths"), never its bare status codes ("Error 2 while decompressing data" is Z_NEED_DICT)."""
+    text = str(e)
+    if ": " in text:
+        return f"the stream does not inflate ({text.split(': ', 1)[1]})"
+    if text.startswith("Error 2 "):
+        return "the stream asks for a preset dictionary, which a ttctl stream never uses"
+    return "the stream does not inflate (it is not a zlib stream as ttctl makes them)"
+
+
 def inflate_to(src_fd: int, stream_size: int, dest: Path, original: int, sha256: bytes) -> None:
     """Inflate the zlib stream held in the first `stream_size` bytes of `src_fd` into `dest`
     (created, fsynced), never writing more than `original` bytes; InflateError, with `dest`
@@ -166,7 +177,7 @@ def inflate_to(src_fd: int, stream_size: int, dest: Path, original: int, sha256:
             try:
                 out = z.decompress(data, original - written + 1)
             except zlib.error as e:
-                raise InflateError(f"the stream does not inflate ({str(e).split(': ', 1)[-1]})") from None
+                raise InflateError(_zlib_words(e)) from None
             if written + len(out) > original:
                 raise InflateError(f"the stream inflates to more than the {original} bytes offered")
             if out:

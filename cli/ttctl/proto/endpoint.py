@@ -75,6 +75,10 @@ class Endpoint:
                          if receive_dir is not None else None)
         if self.receiver is not None:
             self.receiver.packet = mtu
+        # the tablet's control traffic, which rate grants leave room for (not the other end's telemetry,
+        # nor a sender's hello HEARTBEAT); ground stations' frames the onboard end takes over DTT count too
+        self._control = tuple(getattr(bindings, n) for n in ("TtActionCommand", "DjiPoseStamped", "TtVrPose",
+                                                              "TtVrController") if hasattr(bindings, n))
         if self.receiver is not None and rate_Bps:
             # statuses go back over our own link: on a slow one, fewer of them
             self.receiver.cfg = TransferConfig(**{
@@ -360,7 +364,11 @@ class Endpoint:
             else:
                 self.receiver.on_data(now, msg, WIDE if isinstance(msg, b.TtFileDataWide) else NARROW)
             return
+        if self.receiver is not None and isinstance(msg, self._control):
+            self.receiver.control_at = now  # another process's commands share the link: grants leave them room
         if self.divert is not None and self.divert(now, msg):
+            if self.receiver is not None and self.server is not None:  # a ground station's request, not telemetry
+                self.receiver.control_at = now
             return
         if not self._for_us(msg):
             self.ignored += 1

@@ -29,7 +29,7 @@ from ..wire.contract import TtFileResult as R
 from .deflate import InflateError, parse_deflate_meta
 from .names import SHA_LEN, Refused, check_name
 from .ranges import RangeSet
-from .sharing import ACTIVE_WINDOW, REGRANT, InboundLoad, share
+from .sharing import ACTIVE_WINDOW, CONTROL_WINDOW, REGRANT, InboundLoad, share
 from .storage import DiskFull, Partial, ReceiveDir, StorageError, partial_key
 from .transfer import MAX_RANGES, NARROW, NARROW_FRAME, WIDE_FRAME, Key, TransferConfig, meta_check, reason_fit
 
@@ -142,6 +142,7 @@ class FileReceiver:
         self.packet = 100  # the link's packet size, bytes (set by the endpoint): one packet's time at a grant
         self.sharing: frozenset[Key] = frozenset()  # the transfers the link is shared among
         self.load = InboundLoad()  # what else comes in (the endpoint counts packets, on_data the data)
+        self.control_at: float | None = None  # when a control frame (a command, a setpoint) last came in
         self._grant_field = "rate_grant" in getattr(bindings.TtFileStatus, "FIELDS", ("rate_grant",))
 
     def expect(self, peer: tuple[int, int], request_id: int, name: str) -> None:
@@ -498,7 +499,8 @@ class FileReceiver:
         window = max(ACTIVE_WINDOW, 4.0 * self.packet / self.grant) if self.grant else ACTIVE_WINDOW
         sharing = frozenset(k for k, t in self.transfers.items()
                             if t.partial is not None and now - t.last_activity < window)
-        grant = share(self.inbound_Bps, len(sharing), self.load.other_Bps(now))
+        control = self.control_at is not None and now - self.control_at < CONTROL_WINDOW
+        grant = share(self.inbound_Bps, len(sharing), self.load.other_Bps(now), control)
         if sharing == self.sharing and (grant == 0) == (self.grant == 0) \
                 and abs(grant - self.grant) <= REGRANT * self.grant:
             return

@@ -10,6 +10,16 @@ ends or goes quiet) is told to every other at once. GRANT_FILL of the capacity g
 data; the rest keeps room for offers, polls and commands. A lone transfer gets no grant (0): it
 paces to its own rate, as before.
 
+Commands from another process (the tablet beside `send-file` processes) meet the senders'
+packets in the radio's two-packet buffer, first come first served. At 0.97 of the link a packet
+that waits takes some 30 packet times to drain, so a command found one or two packets waiting
+(0.5 s instead of 0.25) or a full buffer (dropped: a 3 s retry); a lone transfer, paced to the
+whole link with three-packet frames, kept it full. So once a control frame (a command, a
+setpoint, a VR pose, a ground station's request taken over DTT; not the other end's telemetry)
+has come in within CONTROL_WINDOW (endpoint.py), the grants
+share CONTROL_FILL of the capacity and a lone transfer is granted too: a backlog drains in a few
+packet times and a command waits about the packet on the air (tests/test_commands_beside_files).
+
 Two sender habits change under a grant: it sends one-packet frames only (a wide frame's three
 packets back to back fill the radio's buffer for the others, and an overflow takes the whole
 frame), and it waits three frames' time at its grant longer before polling a quiet receiver;
@@ -36,12 +46,19 @@ LOAD_WINDOW = 5.0  # s over which the other traffic is measured
 REGRANT = 0.1  # a grant changes (and is told) when the share moves by more than this fraction
 
 
-def share(capacity_Bps: float | None, sharing: int, other_Bps: float = 0.0) -> int:
+CONTROL_FILL = 0.75  # of the capacity granted to file data while control traffic shares the link
+CONTROL_WINDOW = 60.0  # s: a command (or other control frame) heard within this: the link carries control traffic
+
+
+def share(capacity_Bps: float | None, sharing: int, other_Bps: float = 0.0, control: bool = False) -> int:
     """Each transfer's grant when `sharing` transfers share `capacity_Bps`, of which `other_Bps`
-    is taken by frames that are not file data (0: no grant)."""
-    if capacity_Bps is None or capacity_Bps <= 0 or sharing < 2:
+    is taken by frames that are not file data (0: no grant). With `control` (commands heard
+    lately) a lone transfer is granted too: paced to its link it would fill the radio's buffer
+    for the commands of another process."""
+    if capacity_Bps is None or capacity_Bps <= 0 or sharing < 1 or (sharing < 2 and not control):
         return 0
-    budget = max(MIN_FILL * capacity_Bps, GRANT_FILL * capacity_Bps - OTHER_ROOM * other_Bps)
+    fill = CONTROL_FILL if control else GRANT_FILL
+    budget = max(MIN_FILL * capacity_Bps, fill * capacity_Bps - OTHER_ROOM * other_Bps)
     return max(MIN_GRANT, min(MAX_GRANT, int(budget / sharing)))
 
 
@@ -98,4 +115,4 @@ class GrantPacer:
             self.next_free = max(now, self.next_free) + nbytes / self.grant
 
 
-__all__ = ["ACTIVE_WINDOW", "GRANT_FILL", "GrantPacer", "InboundLoad", "share"]
+__all__ = ["ACTIVE_WINDOW", "CONTROL_WINDOW", "GRANT_FILL", "GrantPacer", "InboundLoad", "share"]

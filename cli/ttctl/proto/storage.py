@@ -238,6 +238,7 @@ class Partial:
                 os.unlink(self.data_path)
         self.discard_state()
         self.store.forget_others(self.name, self.key)
+        self.store.tidy()
         return final
 
     def discard(self) -> None:
@@ -246,6 +247,7 @@ class Partial:
             with contextlib.suppress(FileNotFoundError):
                 p.unlink()
         self.ranges = RangeSet()
+        self.store.tidy()
 
     def discard_state(self) -> None:
         with contextlib.suppress(FileNotFoundError):
@@ -328,6 +330,14 @@ class ReceiveDir:
             except OSError as e:
                 raise StorageError(f"cannot create {d}: {e.strerror or e}") from None
             self.created.append(d)
+
+    def tidy(self) -> None:
+        """Remove the partial folder when nothing is left in it (a file finished or was
+        discarded): a long-running receiver leaves only the files it received. Every writer
+        makes the folder again before it writes (`make_partial_dir`)."""
+        with contextlib.suppress(OSError):
+            self.partial_dir.rmdir()  # only if empty
+        self.created = [d for d in self.created if d != self.partial_dir or d.exists()]
 
     def make_partial_dir(self) -> None:
         if not self.partial_dir.is_dir():

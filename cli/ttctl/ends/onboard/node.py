@@ -356,6 +356,9 @@ class OnboardNode:
         elif what == "file-complete":
             how = f", deflated to {t.size} B on the link" if t.original is not None else ""
             self._say(6, f"received {t.name} ({t.file_size} bytes){how}")  # the file's size, not its stream's
+        elif what in ("file-accepted", "file-busy", "file-refused", "file-failed"):
+            self.log(f"dtt: {incoming_text(what, t)}")  # as `recv-file` says them
+
 
     def _from_gcs(self, link: Transport, data: bytes, source: Hashable) -> None:
         parser = self._gcs_parsers.get((link, source))
@@ -500,12 +503,14 @@ class OnboardNode:
             wall = now - self.started
             self._send_gcs(self.gcs.tick(wall))
             if self.endpoint is not None:
-                if self.vehicle_time >= self._hb_due:
+                # on the wall clock, as the link runs, whatever --speed is (on the vehicle's clock, at
+                # --speed 4 they took four times their share of the downlink from the tablet's downloads)
+                if wall >= self._hb_due:
                     self.endpoint.send_message(telemetry_heartbeat(self.b, self.vehicle.snapshot()))
-                    self._hb_due = self.vehicle_time + 1.0
-                if self.cfg.telemetry_hz > 0 and self.vehicle_time >= self._tele_due:
+                    self._hb_due = wall + 1.0
+                if self.cfg.telemetry_hz > 0 and wall >= self._tele_due:
                     self._tablet_telemetry()
-                    self._tele_due = self.vehicle_time + 1.0 / self.cfg.telemetry_hz
+                    self._tele_due = wall + 1.0 / self.cfg.telemetry_hz
                 if self.runner is not None:
                     self.runner.kick()
             self._wake.clear()
@@ -545,6 +550,22 @@ def telemetry_heartbeat(b: Bindings, s: Any) -> Any:
     hb.type = int(b.MavType.MAV_TYPE_ONBOARD_CONTROLLER)
     hb.autopilot = int(b.MavAutopilot.MAV_AUTOPILOT_INVALID)
     return hb
+
+
+def incoming_text(what: str, t: Any) -> str:
+    """An incoming transfer's accept, wait, refusal or failure in words, the receiver's own
+    reason included (the lines `recv-file` prints)."""
+    name, peer = t.name or "?", f"{t.key[0]}/{t.key[1]}"
+    if what == "file-accepted":
+        have = t.partial.ranges.total() if t.partial is not None else 0
+        how = f", deflated to {t.size} B on the link" if t.original is not None else ""
+        return f"accepted {name} ({t.file_size} bytes) from {peer}{how}" + (
+            f", resuming with {have} bytes already here" if have else "")
+    if what == "file-busy":
+        return f"{name} from {peer} waits: {t.reason}"
+    if what == "file-refused":
+        return f"refused {name} from {peer}: {t.reason}"
+    return f"failed {name} from {peer}: {t.reason}"
 
 
 __all__ = ["OnboardConfig", "OnboardNode", "State"]
