@@ -3,6 +3,8 @@ exit, nothing left behind, never a traceback (real processes)."""
 
 from __future__ import annotations
 
+import os
+import re
 import signal
 import statistics
 import subprocess
@@ -64,13 +66,30 @@ def test_bench_plot_path_is_checked_before_any_work(tmp_path: Path, bench: str) 
 
 
 def _startup() -> float:
-    """How long this machine takes to start a bare interpreter (median of 5)."""
+    """How long this machine takes to start an interpreter as the console script does, site and
+    the script's own `import re, sys` included, before any ttctl code (median of 5)."""
     times = []
     for _ in range(5):
         t0 = time.perf_counter()
-        subprocess.run([sys.executable, "-S", "-c", "pass"], check=True)
+        subprocess.run([sys.executable, "-c", "import re, sys"], check=True)
         times.append(time.perf_counter() - t0)
     return statistics.median(times)
+
+
+def _before_ttctl(err: str) -> bool:
+    """Did the interrupt land before any code of ttctl ran: in the console script pip writes
+    (`import re`, `import sys`, then `from ttctl.entry import main`), ahead of that last line,
+    with no frame of the package itself?"""
+    frames = re.findall(r'File "([^"]+)", line (\d+)', err)
+    if not frames or "KeyboardInterrupt" not in err:
+        return False
+    script = [int(n) for f, n in frames if os.path.basename(f) == "ttctl"]
+    ours = [f for f, _ in frames if f"{os.sep}ttctl{os.sep}" in f]
+    if not script or ours:
+        return False
+    head = Path(frames[0][0]).read_text().splitlines()
+    first_ours = next((i + 1 for i, line in enumerate(head) if "ttctl" in line and "import" in line), 0)
+    return 0 < script[0] < first_ours
 
 
 @pytest.mark.parametrize("args", [["validate", str(TTAPI)], ["gen", str(TTAPI), "-o", "{tmp}/out"],
@@ -90,6 +109,8 @@ def test_ctrl_c_at_any_moment_is_one_quiet_line(tmp_path: Path, args: list[str])
         time.sleep(delay)
         p.send_signal(signal.SIGINT)
         _, err = p.communicate(timeout=60)
+        if _before_ttctl(err):
+            continue  # the interpreter, or the console script's own first imports, still starting (busy machine)
         assert "Traceback" not in err and "KeyboardInterrupt" not in err, (delay, err)
         assert p.returncode in (0, 1, 130), (delay, p.returncode, err)
         if p.returncode == 130:
