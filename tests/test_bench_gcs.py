@@ -86,8 +86,8 @@ def test_the_table_shows_both_columns_and_the_floors(both: dict[str, Any]) -> No
     text = out.getvalue()
     assert "bridge" in text and "naive/bridge" in text
     assert re.search(r"connect, QGC-like \(s\) .*\d+\.\d .*(\d+\.\d|failed) .*(\d+\.\dx|naive failed) .*<= 10, 3x",
-                     text)
-    assert re.search(r"mission upload, 10 items \(s\) .*\d+\.\d", text)
+                     text), text
+    assert re.search(r"mission upload, 10 items \(s\) .*\d+\.\d", text), text
     assert re.search(r"naive: .*packets up", text)
     assert "SYSTEM_TIME" in text and "not MAVSDK" in text
 

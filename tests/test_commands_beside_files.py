@@ -45,6 +45,23 @@ def test_the_receiver_hears_commands_but_not_hellos_or_telemetry(tmp_path: Path)
     ep.close()
 
 
+def test_no_control_grant_while_a_pipeline_carries_the_data(tmp_path: Path) -> None:
+    """Commands stay in the packets while file data goes on a pipeline: they never wait behind it,
+    so a lone transfer keeps the pipeline's whole rate (the control grant would cap it at 0.75 of
+    the rate, or at what TT_FILE_STATUS.rate_grant holds); when the pipeline closes the data is back
+    beside the commands and the control grant returns."""
+    ep = Endpoint(B, 1, 240, mtu=255, receive_dir=ReceiveDir(tmp_path), inbound_Bps=500)
+    rx = ep.receiver
+    assert rx is not None
+    ep.receive(2.0, B.encoder(255, 190).encode(B.TtActionCommand(target_system=1, target_component=240, action=1)),
+               "a")
+    ep.pipe.open(2.5, 100_000)
+    assert rx.control_apart and rx.inbound_Bps == 100_000
+    ep.pipe.close(3.0)
+    assert not rx.control_apart and rx.inbound_Bps == 500
+    ep.close()
+
+
 @pytest.mark.parametrize("senders", [1, 3, 5])
 def test_commands_keep_their_bound_while_transfers_from_other_processes_run(senders: int) -> None:
     prof = load_profile("m100")

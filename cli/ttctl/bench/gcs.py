@@ -324,7 +324,9 @@ def run_one(o: Options, mode: str, distance: float, folder: Path, progress: Any)
         r.gcs_p50_ms, r.gcs_p95_ms = percentile(lat, 0.5), percentile(lat, 0.95)
         if why:
             r.notes.append(f"command with a ground station: {why}")
-        done.wait(4 * o.step_timeout + 30)
+        waited = 4 * o.step_timeout + 30
+        if not done.wait(waited):  # a step still running has no figure: say so, never a bare "-"
+            r.failed["ground station"] = f"its sequence had not ended after {waited:g} s more"
         peer.close()
         if tablet.poll() is not None:
             r.notes.append(f"the tablet end exited {tablet.returncode}: {_last(procs.stderr('tablet'))}")

@@ -60,6 +60,8 @@ class Pipe:
         self.ep.scheduler.open_pipe(rate_Bps, now, sign=self._sign)
         if self.ep.receiver is not None and self._packet_inbound is not None:
             self.ep.receiver.inbound_Bps = rate_Bps  # grants share the pipeline among transfers
+        if self.ep.receiver is not None:
+            self.ep.receiver.control_apart = True  # commands stay in the packets: they never wait behind data
         for s in self.ep.senders.values():
             self.adopt(s)
 
@@ -72,6 +74,7 @@ class Pipe:
         self.ep.scheduler.close_pipe()
         if self.ep.receiver is not None:
             self.ep.receiver.inbound_Bps = self._packet_inbound
+            self.ep.receiver.control_apart = False
         for s in self.ep.senders.values():
             self.adopt(s)
 

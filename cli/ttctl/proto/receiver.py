@@ -143,6 +143,7 @@ class FileReceiver:
         self.sharing: frozenset[Key] = frozenset()  # the transfers the link is shared among
         self.load = InboundLoad()  # what else comes in (the endpoint counts packets, on_data the data)
         self.control_at: float | None = None  # when a control frame (a command, a setpoint) last came in
+        self.control_apart = False  # file data takes another path than control (a pipeline): no control grant
         self._grant_field = "rate_grant" in getattr(bindings.TtFileStatus, "FIELDS", ("rate_grant",))
 
     def expect(self, peer: tuple[int, int], request_id: int, name: str) -> None:
@@ -499,7 +500,7 @@ class FileReceiver:
         window = max(ACTIVE_WINDOW, 4.0 * self.packet / self.grant) if self.grant else ACTIVE_WINDOW
         sharing = frozenset(k for k, t in self.transfers.items()
                             if t.partial is not None and now - t.last_activity < window)
-        control = self.control_at is not None and now - self.control_at < CONTROL_WINDOW
+        control = self.control_at is not None and now - self.control_at < CONTROL_WINDOW and not self.control_apart
         grant = share(self.inbound_Bps, len(sharing), self.load.other_Bps(now), control)
         if sharing == self.sharing and (grant == 0) == (self.grant == 0) \
                 and abs(grant - self.grant) <= REGRANT * self.grant:

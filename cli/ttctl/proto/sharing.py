@@ -19,6 +19,8 @@ setpoint, a VR pose, a ground station's request taken over DTT; not the other en
 has come in within CONTROL_WINDOW (endpoint.py), the grants
 share CONTROL_FILL of the capacity and a lone transfer is granted too: a backlog drains in a few
 packet times and a command waits about the packet on the air (tests/test_commands_beside_files).
+While a pipeline carries the file data (pipeline.py) commands stay in the packets and never wait
+behind it, so there the control grant does not apply (Receiver.control_apart).
 
 Two sender habits change under a grant: it sends one-packet frames only (a wide frame's three
 packets back to back fill the radio's buffer for the others, and an overflow takes the whole

@@ -198,9 +198,14 @@ public final class UdpLink implements Link {
     private void readLoop() {
         byte[] buf = new byte[65536];
         DatagramPacket packet = new DatagramPacket(buf, buf.length);
+        final SocketAddress[] from = new SocketAddress[1];
         final Consumer<MavlinkMessage> deliver = new Consumer<MavlinkMessage>() {
             @Override
             public void accept(MavlinkMessage msg) {
+                if (learnsRemote && from[0] != null) {
+                    // before any listener runs: an answer it queues may leave at once, from the scheduler's thread
+                    remote = from[0];
+                }
                 for (Consumer<? super MavlinkMessage> l : listeners) {
                     try {
                         l.accept(msg);
@@ -230,11 +235,8 @@ public final class UdpLink implements Link {
                 }
                 continue; // e.g. ICMP port unreachable reported on the socket: keep reading
             }
-            long before = receiver.stats().frames();
+            from[0] = packet.getSocketAddress(); // a valid (and verified) frame moves the remote: garbage never does
             receiver.feed(buf, packet.getOffset(), packet.getLength(), deliver);
-            if (learnsRemote && receiver.stats().frames() > before) {
-                remote = packet.getSocketAddress(); // a valid (and verified) frame: garbage never moves it
-            }
             watchSignatures(packet.getSocketAddress());
         }
     }
