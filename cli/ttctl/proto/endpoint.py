@@ -31,11 +31,14 @@ from .storage import FileSource, ReceiveDir
 from .transfer import (
     FIT_MAX,
     FIT_OVERHEAD,
+    MAX_RANGES,
     NARROW,
     RESULT_TEXT,
+    SIGNATURE,
     WIDE,
     Geometry,
     TransferConfig,
+    ranges_per_status,
     reason_text,
 )
 
@@ -75,17 +78,23 @@ class Endpoint:
                          if receive_dir is not None else None)
         if self.receiver is not None:
             self.receiver.packet = mtu
+            self.receiver.ranges_per_status = ranges_per_status(mtu, signing is not None)
+            per = self.receiver.ranges_per_status
+            # as many gaps in a report as MAX_RANGES-gap statuses would hold, in more, one-packet statuses
+            self.receiver.cfg = TransferConfig(**{**vars(self.receiver.cfg), "status_batches": -(
+                -self.cfg.status_batches * MAX_RANGES // per)})
         # the tablet's control traffic, which rate grants leave room for (not the other end's telemetry,
         # nor a sender's hello HEARTBEAT); ground stations' frames the onboard end takes over DTT count too
         self._control = tuple(getattr(bindings, n) for n in ("TtActionCommand", "DjiPoseStamped", "TtVrPose",
                                                               "TtVrController") if hasattr(bindings, n))
         if self.receiver is not None and rate_Bps:
             # statuses go back over our own link: on a slow one, fewer of them
+            # (a status with a few gaps is about 60 bytes on the wire, its ranges truncated; a signature 13 more)
+            status = STATUS_BYTES + (SIGNATURE if signing is not None else 0)
             self.receiver.cfg = TransferConfig(**{
-                **vars(self.cfg),
-                # a status with a few gaps is about 50 bytes on the wire (its ranges truncate)
-                "status_min_interval": max(self.cfg.status_min_interval, 3 * STATUS_BYTES / rate_Bps),
-                "status_tail_interval": max(self.cfg.status_tail_interval, 1.2 * STATUS_BYTES / rate_Bps)})
+                **vars(self.receiver.cfg),
+                "status_min_interval": max(self.cfg.status_min_interval, 1.5 * status / rate_Bps),
+                "status_tail_interval": max(self.cfg.status_tail_interval, 0.8 * status / rate_Bps)})
         self.serving = Serving(self, serve_dir)  # the files it serves, on request (fetches.py)
         self.compress = compress  # offer files deflated when that saves (sends and served fetches)
         self.senders: dict[int, FileSender] = {}

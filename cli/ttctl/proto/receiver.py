@@ -31,7 +31,17 @@ from .names import SHA_LEN, Refused, check_name
 from .ranges import RangeSet
 from .sharing import ACTIVE_WINDOW, CONTROL_WINDOW, REGRANT, InboundLoad, share
 from .storage import DiskFull, Partial, ReceiveDir, StorageError, partial_key
-from .transfer import MAX_RANGES, NARROW, NARROW_FRAME, WIDE_FRAME, Key, TransferConfig, meta_check, reason_fit
+from .transfer import (
+    MAX_RANGES,
+    NARROW,
+    NARROW_FRAME,
+    RANGES_MORE,
+    WIDE_FRAME,
+    Key,
+    TransferConfig,
+    meta_check,
+    reason_fit,
+)
 
 MAX_PENDING_OFFERS = 64  # offers whose metadata is still arriving: a flood of them is not our memory's problem
 MAX_UNKNOWN = 256  # transfer ids recently told 'unknown'
@@ -144,6 +154,7 @@ class FileReceiver:
         self.load = InboundLoad()  # what else comes in (the endpoint counts packets, on_data the data)
         self.control_at: float | None = None  # when a control frame (a command, a setpoint) last came in
         self.control_apart = False  # file data takes another path than control (a pipeline): no control grant
+        self.ranges_per_status = MAX_RANGES  # gaps per status: as many as fit one packet (set by the endpoint)
         self._grant_field = "rate_grant" in getattr(bindings.TtFileStatus, "FIELDS", ("rate_grant",))
 
     def expect(self, peer: tuple[int, int], request_id: int, name: str) -> None:
@@ -484,11 +495,12 @@ class FileReceiver:
         gaps = ranges.gaps(rc, last)
         out = []
         start = rc
+        per = self.ranges_per_status
         for k in range(max(1, self.cfg.status_batches)):
-            batch = gaps[k * MAX_RANGES:(k + 1) * MAX_RANGES]
-            more = len(gaps) > (k + 1) * MAX_RANGES
+            batch = gaps[k * per:(k + 1) * per]
+            more = len(gaps) > (k + 1) * per
             end = batch[-1][1] if more else last
-            out.append(self._status(t, rc, start, end, batch))
+            out.append(self._status(t, rc, start, end, batch, more))
             start = end
             if not more:
                 break
@@ -516,7 +528,7 @@ class FileReceiver:
             t.status_due = soon
 
     def _status(self, t: Incoming, rc: int, region: int, re: int,
-                gaps: list[tuple[int, int]]) -> Any:
+                gaps: list[tuple[int, int]], more: bool = False) -> Any:
         flat = [x for gap in gaps for x in gap]
         extra = {}
         if self._grant_field:  # (a dialect with an older copy of ttapi.xml has no grants)
@@ -526,7 +538,8 @@ class FileReceiver:
             target_system=t.key[0], target_component=t.key[1], transfer_id=t.key[2], result=int(t.result),
             received_contiguous=rc, region_start=region, received_end=re, last_offset=t.last_offset,
             hold_ms=min(65535, int(1000 * (self.now - t.last_data))) if t.last_data is not None else 65535,
-            range_count=len(gaps), meta_check=t.check, ranges=flat + [0] * (2 * MAX_RANGES - len(flat)), **extra)
+            range_count=len(gaps) | (RANGES_MORE if more else 0), meta_check=t.check,
+            ranges=flat + [0] * (2 * MAX_RANGES - len(flat)), **extra)
 
     def reason_message(self, t: Incoming) -> Any:
         return self.b.TtFileReason(target_system=t.key[0], target_component=t.key[1], transfer_id=t.key[2],

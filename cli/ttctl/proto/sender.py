@@ -30,6 +30,7 @@ from .sharing import GrantPacer
 from .transfer import (
     DTT,
     META_PART,
+    RANGES_MORE,
     RESULT_TEXT,
     WIDE,
     TransferConfig,
@@ -298,6 +299,7 @@ class FileSender:
             return None  # a narrow frame takes a packet of its own: wait for the next one
         cap = WIDE if mode == "wide" else g.narrow_cap
         retx = self.retx.first()
+        new = False  # bytes never sent before: their fate measures the loss of this frame size
         if retx is not None:
             # a data frame always carries min(cap, size - offset) bytes (the receiver counts on
             # it), so a short gap is resent with the bytes after it
@@ -309,6 +311,7 @@ class FileSender:
             offset = self.next_new
             length = min(cap, self.size - offset)
             self.next_new += length
+            new = True
         else:
             tail = self._tail_candidate(now)
             if tail is None:
@@ -322,7 +325,7 @@ class FileSender:
         # when its last byte can have left: frames longer than a packet take several packets
         left = now + (frame_len + g.mtu) * self.byte_time
         self._record(left, offset, offset + length)
-        if retx is None:
+        if new:  # (not a resend from the tail: a repeat of bytes that may well have arrived)
             self.frame_loss.first_send(offset, offset + length, left, mode)
         self.pacer.sent(now, frame_len)
         self.sent.add(offset, offset + length)
@@ -497,7 +500,7 @@ class FileSender:
         rc = min(msg.received_contiguous, self.size)
         region = max(rc, min(msg.region_start, self.size))
         re = max(region, min(msg.received_end, self.size))
-        n = min(msg.range_count, len(msg.ranges) // 2)
+        n = min(msg.range_count & ~RANGES_MORE, len(msg.ranges) // 2)
         pairs = list(msg.ranges)
         missing = [(max(pairs[2 * i], region), min(pairs[2 * i + 1], re)) for i in range(n)]
         missing = [(a, b) for a, b in missing if a < b]
@@ -524,7 +527,8 @@ class FileSender:
         echo = self._sends.get(msg.last_offset)
         if echo is not None and msg.hold_ms != 65535:
             horizon = min(horizon, echo[0] - 2 * self.geometry.mtu * self.byte_time)
-        truncated = n >= len(msg.ranges) // 2  # bytes past received_end are unknown, not missing
+        # bytes past received_end are unknown, not missing
+        truncated = bool(msg.range_count & RANGES_MORE) or n >= len(msg.ranges) // 2
         if re < self.next_new and not truncated:
             missing = [*missing, (re, self.next_new)]
         for a, b in missing:
@@ -533,10 +537,11 @@ class FileSender:
                     continue
                 self.retx.add(max(a, s), min(b, e))
                 self._since[s] = 0
+            self.frame_loss.lost(a, b, horizon)
         for a, b in self.acked:
             self.retx.remove(a, b)
         self._sent = [(s, e, ts) for s, e, ts in self._sent if not self.acked.covers(s, e)]
-        self.frame_loss.classify(horizon, re, truncated, missing, self.geometry)
+        self.frame_loss.classify(horizon, re, truncated, missing, self.geometry, rc, region)
         if self.cfg.frame_mode == "auto" and self.stats.narrow_frames >= self.cfg.probe_frames:
             self.mode = self._choose_mode()
         self._probe_due = None if self._wants_data(now) else now + max(2 * self.rtt, 0.5)

@@ -47,6 +47,19 @@ SIGNATURE = 13  # a MAVLink 2 signature's bytes
 META_PART = 71  # metadata bytes per TT_FILE_OFFER
 REQUEST_PART = 80  # name bytes per TT_FILE_REQUEST
 MAX_RANGES = 7  # missing ranges per TT_FILE_STATUS
+# range_count's top bit: more gaps follow past received_end (the status is one of several), so the bytes
+# there are unknown, not missing. A status that fits one packet holds fewer than MAX_RANGES gaps; a sender
+# that knows only "MAX_RANGES gaps: more follow" reads min(range_count, MAX_RANGES) = MAX_RANGES and the
+# zero pairs after the real ones as empty gaps, so it takes the status the same way.
+RANGES_MORE = 0x80
+STATUS_FIXED = 12 + 2 + 32  # TT_FILE_STATUS's header, checksum and payload before its ranges (8 bytes a gap)
+
+
+def ranges_per_status(mtu: int, signed: bool) -> int:
+    """The gaps a TT_FILE_STATUS may list and still fit one packet of `mtu` bytes (at least 1, at most
+    MAX_RANGES): a status over two packets is lost when either is, and the sender then hears nothing."""
+    room = mtu - STATUS_FIXED - (SIGNATURE if signed else 0)
+    return max(1, min(MAX_RANGES, room // 8))
 REASON_BYTES = 80
 
 __all__ = [
@@ -58,10 +71,12 @@ __all__ = [
     "META_PART",
     "NARROW",
     "NARROW_FRAME",
+    "RANGES_MORE",
     "REASON_BYTES",
     "REQUEST_PART",
     "SHA_LEN",
     "SIGNATURE",
+    "STATUS_FIXED",
     "WIDE",
     "WIDE_FRAME",
     "Geometry",
@@ -72,6 +87,7 @@ __all__ = [
     "meta_check",
     "packet_loss_from_wide",
     "quiet_after",
+    "ranges_per_status",
     "reason_fit",
     "reason_text",
     "result_name",

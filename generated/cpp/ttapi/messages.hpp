@@ -17899,7 +17899,9 @@ struct TtFileStatus {
     /// Time between the arrival of that frame and this status, at most 65535. [ms]
     std::uint16_t hold_ms{};
 
-    /// Number of missing ranges listed in ranges.
+    /// Number of missing ranges listed in ranges (bits 0-6). Bit 7 set: more gaps follow past
+    /// received_end (this status is one of a burst, sized to fit one packet), so the bytes there
+    /// are unknown, not missing; a status listing all 7 ranges says the same without it.
     std::uint8_t range_count{};
 
     /// The first 4 bytes, little-endian, of the SHA-256 of the offer's whole metadata blob (the

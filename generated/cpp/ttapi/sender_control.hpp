@@ -237,7 +237,7 @@ inline void FileSender::apply_status(double now, const TtFileStatus& msg) noexce
     const std::uint64_t rc = std::min<std::uint64_t>(msg.received_contiguous, size);
     const std::uint64_t region = std::max(rc, std::min<std::uint64_t>(msg.region_start, size));
     const std::uint64_t re = std::max(region, std::min<std::uint64_t>(msg.received_end, size));
-    const std::size_t n = std::min<std::size_t>(msg.range_count, MAX_RANGES);
+    const std::size_t n = std::min<std::size_t>(msg.range_count & ~RANGES_MORE & 0xFF, MAX_RANGES);
     std::uint64_t missing[MAX_RANGES + 1][2];
     std::size_t m = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -280,7 +280,8 @@ inline void FileSender::apply_status(double now, const TtFileStatus& msg) noexce
     if (echo != nullptr && msg.hold_ms != 65535) {
         horizon = std::min(horizon, echo->time - 2.0 * static_cast<double>(geo_.mtu) * byte_time_);
     }
-    const bool truncated = n >= MAX_RANGES;  // bytes past received_end are unknown, not missing
+    // bytes past received_end are unknown, not missing
+    const bool truncated = (msg.range_count & RANGES_MORE) != 0 || n >= MAX_RANGES;
     if (re < next_new_ && !truncated) {
         missing[m][0] = re;
         missing[m][1] = next_new_;

@@ -61,6 +61,7 @@ inline std::size_t FileSender::pull(double now, std::size_t space, std::uint8_t*
         }
         offset = tail;
         stats_.bytes_retransmitted += std::min<std::uint64_t>(cap, size_ - offset);
+        first_send = false;  // a tail resend: a repeat of bytes that may well have arrived
     }
     const std::size_t length = static_cast<std::size_t>(std::min<std::uint64_t>(cap, size_ - offset));
     std::uint8_t data[WIDE] = {};

@@ -33,6 +33,9 @@ inline constexpr std::size_t SIGNATURE_BYTES = 13;  // a signed frame is this mu
 inline constexpr std::size_t META_PART = 71;  // metadata bytes per TT_FILE_OFFER
 inline constexpr std::size_t REQUEST_PART = 80;  // name bytes per TT_FILE_REQUEST
 inline constexpr std::size_t MAX_RANGES = 7;  // missing ranges per TT_FILE_STATUS
+// range_count's top bit: more gaps follow past received_end (a status of a burst that holds fewer than
+// MAX_RANGES gaps so that it fits one packet); the bytes there are unknown, not missing
+inline constexpr unsigned RANGES_MORE = 0x80;
 inline constexpr std::size_t REASON_BYTES = 80;  // TT_FILE_REASON.text
 inline constexpr std::size_t SHA_LEN = 32;
 inline constexpr std::size_t META_MAX = 255;

@@ -19945,7 +19945,7 @@ class TtFileStatus(Message):
     """Time between the arrival of that frame and this status, at most 65535. [ms]"""
 
     range_count: int
-    """Number of missing ranges listed in ranges."""
+    """Number of missing ranges listed in ranges (bits 0-6). Bit 7 set: more gaps follow past received_end (this status is one of a burst, sized to fit one packet), so the bytes there are unknown, not missing; a status listing all 7 ranges says the same without it."""
 
     meta_check: int
     """The first 4 bytes, little-endian, of the SHA-256 of the offer's whole metadata blob (the file's SHA-256 then its name), once the receiver has all of it; 0 before (and in answers to a request). It binds the status, COMPLETE above all, to that file under that name."""

@@ -61,7 +61,11 @@ public final class TtFileStatus extends MavlinkMessage {
     /** Time between the arrival of that frame and this status, at most 65535. [ms] (uint16_t) */
     public int hold_ms;
 
-    /** Number of missing ranges listed in ranges. (uint8_t) */
+    /**
+     * Number of missing ranges listed in ranges (bits 0-6). Bit 7 set: more gaps follow past
+     * received_end (this status is one of a burst, sized to fit one packet), so the bytes there are
+     * unknown, not missing; a status listing all 7 ranges says the same without it. (uint8_t)
+     */
     public int range_count;
 
     /**

@@ -28,6 +28,12 @@ import ttctl.ttapi.runtime.MavlinkMessage;
  * than the receiver's latest rate grant allows ({@link Sharing}), when it gives one.
  */
 final class FileSender {
+    /**
+     * range_count's top bit: more gaps follow past received_end (a status of a burst that holds
+     * fewer than the maximum gaps so that it fits one packet); the bytes there are unknown, not missing.
+     */
+    static final int RANGES_MORE = 0x80;
+
     static final int META_PART = 71;
 
     final LongSupplier newId;
@@ -348,6 +354,7 @@ final class FileSender {
         long[] r = retx.first();
         long offset;
         int length;
+        boolean fresh = false; // bytes never sent before: their fate measures this frame size's loss
         if (r != null) {
             offset = r[0];
             length = (int) Math.min(cap, size - offset);
@@ -357,6 +364,7 @@ final class FileSender {
             offset = nextNew;
             length = (int) Math.min(cap, size - offset);
             nextNew += length;
+            fresh = true;
         } else {
             long tail = log.tailCandidate(now - probeWait(), acked);
             if (tail < 0) {
@@ -376,7 +384,7 @@ final class FileSender {
         log.sending(now, offset);
         double left = now + (frameLen + g.mtu) * byteTime;
         log.record(left, offset, offset + length);
-        if (r == null) {
+        if (fresh) { // (not a tail resend: a repeat of bytes that may well have arrived)
             loss.sent(offset, offset + length, left, wide);
         }
         pacer.sent(now, frameLen);
@@ -517,7 +525,7 @@ final class FileSender {
         long region = Math.max(rc, Math.min(msg.region_start, size));
         long re = Math.max(region, Math.min(msg.received_end, size));
         int slots = msg.ranges == null ? 0 : msg.ranges.length / 2;
-        int n = Math.min(msg.range_count, slots);
+        int n = Math.min(msg.range_count & ~RANGES_MORE, slots);
         List<long[]> missing = new ArrayList<>();
         for (int i = 0; i < n; i++) {
             long a = Math.max(msg.ranges[2 * i], region);
@@ -553,7 +561,7 @@ final class FileSender {
         if (echo != null && msg.hold_ms != 65535) {
             horizon = Math.min(horizon, echo[0] - 2 * geometry.mtu * byteTime);
         }
-        boolean truncated = n >= slots;
+        boolean truncated = (msg.range_count & RANGES_MORE) != 0 || n >= slots; // bytes past re: unknown
         if (re < nextNew && !truncated) {
             missing.add(new long[] {re, nextNew});
         }
