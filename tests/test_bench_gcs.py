@@ -153,3 +153,32 @@ def test_sigterm_stops_the_runs_processes(tmp_path: Any) -> None:
         # a zombie is gone too (its parent has not reaped it yet): only a live one fails
         state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
         assert state == "Z", f"process {pid} outlived the bench"
+
+
+def test_a_floor_physics_rules_out_says_so() -> None:
+    """3x the naive forwarder is out of reach where the naive forwarder is already within 3x of
+    what the link allows (a mission's bytes up and a round trip; a position's time down the link), and
+    a p95 of a handful of commands is their largest: the report says which, with the figures."""
+    from ttctl.bench.gcs_report import checks, physical_best
+
+    best_up, why_up = physical_best("m100", 10.0, "upload_s", 10)
+    assert 1.1 < best_up < 1.4 and "520 bytes up at 500 B/s" in why_up  # a bridge pipelines the items
+    best_age, _ = physical_best("m100", 10.0, "age_p95_ms", 10)
+    assert 40 < best_age < 60
+
+    def run(mode: str, upload: float, age: float, gcs: list[float]) -> dict[str, Any]:
+        return {"mode": mode, "distance_m": 10.0, "started": True, "failed": {}, "connect_s": 1.0,
+                "upload_s": upload, "age_p95_ms": age, "idle_ms": [175.0, 176.0, 1675.0, 1676.0],
+                "idle_p95_ms": 1676.0, "gcs_ms": gcs, "gcs_p95_ms": max(gcs), "gcs_failed": 0}
+
+    rep = {"profile": "m100", "loss": 0.1, "loss_model": "random", "items": 10,
+           "runs": [run("bridge", 2.5, 82.0, [175.0, 175.0, 229.0, 247.0, 4680.0]),
+                    run("naive", 5.2, 82.0, [175.0] * 20)]}
+    limits = {(c["check"], c["kind"]): c.get("limit") for c in checks(rep)}
+    assert limits[("upload_s", "vs naive")] is None  # 1.7 s is within reach: the miss is the bridge's
+    assert "would be 27 ms, under the 46 ms" in limits[("age_p95_ms", "vs naive")]
+    assert "a p95 of 4 commands is about their largest" in limits[("gcs_p95_ms", "floor")]
+    assert limits[("connect_s", "vs naive")] is None  # 1.0 s: nothing stops 3x there
+    rep["runs"][1]["upload_s"] = 3.0  # 3x of 3 s would be 1 s: under the link's 1.1 s
+    assert "would be 1.0 s, under the 1.1 s physics allows" in \
+        {(c["check"], c["kind"]): c.get("limit") for c in checks(rep)}[("upload_s", "vs naive")]

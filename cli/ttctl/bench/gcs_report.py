@@ -59,6 +59,34 @@ def _naive_failed(n: dict[str, Any] | None, key: str) -> bool:
     return n.get(key) is None and (STEP_OF.get(key, "") in n["failed"] or "ground station" in n["failed"])
 
 
+# frame sizes on the wire (MAVLink 2, unsigned, trailing zeros kept: the worst case)
+FEW_SAMPLES = 20  # commands under which a p95 is about the largest one: a retry decides it
+ITEM_FRAME, REQUEST_FRAME, POSITION_FRAME = 52, 20, 42  # MISSION_ITEM_INT, MISSION_REQUEST_INT, GLOBAL_POSITION_INT
+
+
+def physical_best(profile: str, distance: float, key: str, items: int) -> tuple[float, str] | None:
+    """The least a figure can be on this link whatever a bridge does, and why (None: no bound
+    computed): a mission upload moves its items' bytes up the link and needs the vehicle's last
+    answer back (a bridge that pipelines the items pays one round trip, not one per item); a
+    position's age is its frame's time on the downlink and the downlink's latency."""
+    from ..link.model import load_profile
+
+    try:
+        p = load_profile(profile)
+    except Exception:  # a profile from a file the report cannot load: no bound
+        return None
+    up, down = p.direction("up"), p.direction("down")
+    if key == "upload_s":
+        best = up.service_time(ITEM_FRAME * items, distance) + up.latency_s \
+            + down.service_time(REQUEST_FRAME, distance) + down.latency_s
+        return best, (f"{items} items are {ITEM_FRAME * items} bytes up at {up.rate_at(distance):.0f} B/s and a "
+                      "round trip, with no loss")
+    if key == "age_p95_ms":
+        best = 1000 * (down.service_time(POSITION_FRAME, distance) + down.latency_s)
+        return best, f"a position takes {best:.0f} ms down this link (its frame's time and the latency) with no loss"
+    return None
+
+
 def checks(rep: dict[str, Any]) -> list[dict[str, Any]]:
     """Each floor at each distance: the bridge's figure against its floor, and against the naive
     forwarder's. Only those at the issue's conditions count for the exit status."""
@@ -74,8 +102,15 @@ def checks(rep: dict[str, Any]) -> list[dict[str, Any]]:
         limits["gcs_p95_ms"] = idle + APP_BOUND_MS if idle is not None else float("nan")
         for key, floor in limits.items():
             v = _value(b, key)
-            out.append({"distance_m": d, "check": key, "kind": "floor", "value": v, "floor": round(floor, 1),
-                        "ok": v is not None and v <= floor, "counts": counts})
+            fc = {"distance_m": d, "check": key, "kind": "floor", "value": v, "floor": round(floor, 1),
+                  "ok": v is not None and v <= floor, "counts": counts}
+            few = min(len(b.get("idle_ms") or []), len(b.get("gcs_ms") or []))
+            if key == "gcs_p95_ms" and not fc["ok"] and v is not None and few < FEW_SAMPLES:
+                tries = [round(x) for x in sorted(b["gcs_ms"])[-2:]]
+                fc["limit"] = (f"a p95 of {few} commands is about their largest: a command whose try or ack the "
+                               f"{rep['loss']:.0%} loss took waits for the app's retry (the largest here: "
+                               f"{', '.join(map(str, tries))} ms); run without --quick for more")
+            out.append(fc)
             nv = _value(n, key)
             if n is None:
                 continue
@@ -84,8 +119,15 @@ def checks(rep: dict[str, Any]) -> list[dict[str, Any]]:
                             "ok": v is not None, "naive": "failed", "counts": counts})
             else:
                 ratio = round(nv / v, 2) if v and nv is not None else None
-                out.append({"distance_m": d, "check": key, "kind": "vs naive", "value": ratio, "floor": RATIO,
-                            "ok": ratio is not None and ratio >= RATIO, "naive": "measured", "counts": counts})
+                c = {"distance_m": d, "check": key, "kind": "vs naive", "value": ratio, "floor": RATIO,
+                     "ok": ratio is not None and ratio >= RATIO, "naive": "measured", "counts": counts}
+                best = physical_best(rep["profile"], d, key, rep.get("items", 0))
+                if not c["ok"] and nv is not None and best is not None and nv / RATIO < best[0]:
+                    unit = "ms" if key.endswith("_ms") else "s"
+                    c["limit"] = (f"{RATIO:g}x the naive forwarder's {_fmt(nv, unit)} {unit} would be "
+                                  f"{_fmt(nv / RATIO, unit)} {unit}, under the {_fmt(best[0], unit)} {unit} physics "
+                                  f"allows: {best[1]}")
+                out.append(c)
     return out
 
 
@@ -150,6 +192,9 @@ def print_report(rep: dict[str, Any], out: Any = None) -> None:
             words += r["notes"]
             for w in words:
                 console.print(f"{r['mode']}: {w}", markup=False, highlight=False)
+    for c in rep["checks"]:
+        if c.get("limit"):
+            console.print(f"limit ({c['check']}, {c['distance_m']:g} m): {c['limit']}", markup=False, highlight=False)
     method = next((r["age_method"] for r in rep["runs"] if r["age_method"]), "")
     console.print("connect: HEARTBEAT, AUTOPILOT_VERSION, parameters, mission list; the ground station is "
                   "pymavlink with QGroundControl's timeouts and retries (missions by pymavlink, not MAVSDK); "
