@@ -22,6 +22,7 @@ COUNT_AGAIN = 0.6  # s without a request from the vehicle after the count: it wa
 COUNT_TRIES = 5
 ACK_WAIT = 1.0  # s after the vehicle asked for the last item without a MISSION_ACK: it is sent again
 ACK_TRIES = 4
+ECHO_WINDOW = 3.0  # s after an upload's verdict in which the vehicle's answers to the bridge's resends come
 STALE = 15.0  # s without a word of an upload: it is over (the ground station gave up)
 UPLOAD = ("MISSION_ITEM_INT", "MISSION_ITEM")
 REQUESTS = ("MISSION_REQUEST_INT", "MISSION_REQUEST")
@@ -48,10 +49,13 @@ class MissionRelay:
     """`request(carried_ids, seq, mission_type)` makes the MISSION_REQUEST_INT for a ground station
     (as from the vehicle's autopilot); the caller sends it to the station that uses those ids."""
 
-    def __init__(self, request: Callable[[tuple[int, int], int, int], Any], window: int = WINDOW) -> None:
+    def __init__(self, request: Callable[[tuple[int, int], int, int], Any], window: int = WINDOW,
+                 waiting: Callable[[bytes], bool] = lambda frame: False) -> None:
         self.request = request
         self.window = window
+        self.waiting = waiting  # whether a frame still waits in the uplink queue (it has not gone yet)
         self.uploads: dict[tuple[int, int], _Upload] = {}
+        self.echoes: dict[tuple[int, int], tuple[int, int, float]] = {}  # who -> (type, acks to swallow, since)
         self.resent = 0
         self.swallowed = 0
 
@@ -117,11 +121,16 @@ class MissionRelay:
             if up.wanted < 0 and not up.asks and now - up.count_sent >= COUNT_AGAIN and up.count_tries < COUNT_TRIES:
                 self._count_again(now, up)
                 out.append(up.count_frame)
-            elif (up.wanted == up.count - 1 and up.count - 1 in up.cache and now - up.last >= ACK_WAIT
-                  and up.last_again < ACK_TRIES):
-                # the vehicle has asked for the last item and said nothing since: the item or its
-                # MISSION_ACK was lost (the station, its items all given, waits and sends nothing):
-                # the last item again, which the vehicle answers with its verdict again
+            elif (up.wanted == up.count - 1 or len(up.cache) == up.count) and up.count - 1 in up.cache \
+                    and any(self.waiting(f) for f in up.cache.values()):
+                up.last = now  # items still queued for the link: the wait for the verdict starts when they left
+            elif ((up.wanted == up.count - 1 or len(up.cache) == up.count) and up.count - 1 in up.cache
+                  and now - up.last >= ACK_WAIT and up.last_again < ACK_TRIES):
+                # the vehicle has asked for the last item, or every item has gone up (pipelined, the
+                # vehicle needs ask for none of them), and nothing came since: an item or the
+                # MISSION_ACK was lost (the station, its items all given, waits and sends nothing:
+                # MAVSDK then says TIMEOUT of an upload the vehicle stored). The last item again,
+                # which the vehicle answers with its verdict again, or with a request for one it lacks
                 up.last_again += 1
                 up.last = now
                 out.append(up.cache[up.count - 1])
@@ -133,6 +142,18 @@ class MissionRelay:
         (pass it on?, frames to send up again, requests for the ground station)."""
         if who is None:
             return True, [], []
+        echo = self.echoes.get(who)
+        if echo is not None and msg.NAME == "MISSION_ACK":
+            kind, left, since = echo
+            fresh = self.uploads.get(who)
+            if msg.mission_type == kind and now - since < ECHO_WINDOW and left > 0 and (
+                    fresh is None or (fresh.wanted < 0 and not fresh.asks)):  # (not a verdict on a newer upload)
+                # the vehicle's verdict again, for a last item the bridge sent again (the station sent it
+                # once): the station has its verdict, and to it this one would end its next upload
+                # (MAVSDK: PROTOCOL_ERROR). Swallowed.
+                self.echoes[who] = (kind, left - 1, since)
+                self.swallowed += 1
+                return False, [], []
         up = self.uploads.get(who)
         if up is None:
             return True, [], []
@@ -151,4 +172,6 @@ class MissionRelay:
             return False, again, self._prefetch(who, up)
         if name == "MISSION_ACK" and msg.mission_type == up.mission_type:
             del self.uploads[who]  # the vehicle's verdict, passed on as it is
+            if up.last_again:  # the last item went again: the vehicle may answer each send of it
+                self.echoes[who] = (up.mission_type, up.last_again, now)
         return True, [], []

@@ -60,7 +60,7 @@ class GcsBridge:
         self._v1_told: set[int] = set()  # msgids said once
         self.radio = b.encoder(vehicle_sysid, RADIO_COMPID)
         self.autopilot = b.encoder(vehicle_sysid, 1)  # the mission relay's requests, as the vehicle's
-        self.missions = MissionRelay(self._request)
+        self.missions = MissionRelay(self._request, waiting=self.uplink.waiting)
         self.downloads = DownloadRelay(self._request_up)
         # one-shot requests (commands, parameter reads, mission lists) sent again until answered
         self.resend = Resender(lambda msg, seq, who: bytes(msg.pack(seq, *who)), self.uplink.waiting)
