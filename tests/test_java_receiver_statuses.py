@@ -63,7 +63,7 @@ def test_statuses_fit_one_packet(burst_classes: Path, tmp_path: Path, mtu: int, 
                            str(tmp_path / "inbox"), str(mtu), "signed" if signed else "unsigned", str(gaps)],
                           capture_output=True, text=True, timeout=60)
     assert proc.returncode == 0, proc.stdout + proc.stderr
-    calls = [json.loads(line) for line in proc.stdout.splitlines()]
+    calls = [json.loads(line) for line in proc.stdout.splitlines()][1:]
     bursts = [c["statuses"] for c in calls if any(s["range_count"] for s in c["statuses"])]
     assert bursts, proc.stdout
     for burst in bursts:
@@ -83,3 +83,27 @@ def test_statuses_fit_one_packet(burst_classes: Path, tmp_path: Path, mtu: int, 
         base = 1 << 24  # (BurstCheck's: the data arrives past 16 MiB, every other frame)
         assert gap_list == [(0, base), *((base + 80 * k, base + 80 * (k + 1)) for k in range(1, 2 * listed - 2, 2))], \
             burst
+
+
+@pytest.mark.parametrize("signed", [True, False])
+@pytest.mark.parametrize("rate", [500, 6700])
+def test_statuses_as_often_as_pythons(burst_classes: Path, tmp_path: Path, signed: bool, rate: int) -> None:
+    """As ttctl's Python endpoint (since the one-packet statuses): on a slow link (the M100's
+    500 B/s uplink) statuses may go 1.5 statuses' bytes at the rate apart, 0.8 near the end, a
+    signature counted; the Java receiver takes the same intervals from its link's rate."""
+    from conftest import shipped
+    from ttctl.proto.endpoint import Endpoint
+    from ttctl.proto.storage import ReceiveDir
+
+    b = shipped()
+    signing = b.mavlink.Signing(bytes(32), 1, False) if signed else None
+    py = Endpoint(b, 1, 240, mtu=100, rate_Bps=float(rate), signing=signing, receive_dir=ReceiveDir(tmp_path / "py"))
+    (tmp_path / "inbox").mkdir()
+    proc = subprocess.run(["java", "-cp", str(burst_classes), "ttctl.ttapi.transfer.BurstCheck",
+                           str(tmp_path / "inbox"), "100", "signed" if signed else "unsigned", "3", str(rate)],
+                          capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    got = json.loads(proc.stdout.splitlines()[0])
+    assert py.receiver is not None
+    assert got == {"min": pytest.approx(py.receiver.cfg.status_min_interval, rel=1e-12),
+                   "tail": pytest.approx(py.receiver.cfg.status_tail_interval, rel=1e-12)}

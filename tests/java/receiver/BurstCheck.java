@@ -19,7 +19,8 @@ import ttctl.ttapi.runtime.UdpLink;
 /**
  * The statuses a tablet's FileTransfers receiver says when the gaps are many, on a virtual clock
  * (in the transfer package: its receiver is package-private). Arguments: the inbox folder, the
- * link's packet size, "signed" or "unsigned", and the number of gaps. A FileTransfers on a
+ * link's packet size, "signed" or "unsigned", the number of gaps and optionally the link's rate
+ * (B/s; it prints the receiver's status intervals first). A FileTransfers on a
  * LinkScheduler of that packet size over a UdpLink on 127.0.0.1 (signed like a Session: the signer
  * set first) takes an offer of a file whose first 16 MiB are lost and then every other 80-byte
  * frame (as many gaps in all as the argument says), and its
@@ -57,6 +58,11 @@ public final class BurstCheck {
             });
         }
         FileTransfers ft = new FileTransfers(sched, 1, 240);
+        if (argv.length > 4) { // the link's rate: how often statuses may go
+            ft.setLinkRate(Double.parseDouble(argv[4]));
+        }
+        System.out.println(String.format(Locale.ROOT, "{\"min\": %s, \"tail\": %s}",
+                Double.toString(ft.receiver.cfg.statusMinInterval), Double.toString(ft.receiver.cfg.statusTailInterval)));
         ReceiveDir inbox = new ReceiveDir(new File(argv[0]), 1L << 30, 8L << 30, false);
         inbox.check();
         FileReceiver rx = ft.receiver;
