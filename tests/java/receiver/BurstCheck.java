@@ -61,8 +61,9 @@ public final class BurstCheck {
         if (argv.length > 4) { // the link's rate: how often statuses may go
             ft.setLinkRate(Double.parseDouble(argv[4]));
         }
+        TransferConfig c = ft.receiver.cfg;
         System.out.println(String.format(Locale.ROOT, "{\"min\": %s, \"tail\": %s}",
-                Double.toString(ft.receiver.cfg.statusMinInterval), Double.toString(ft.receiver.cfg.statusTailInterval)));
+                Double.toString(c.statusMinInterval), Double.toString(c.statusTailInterval)));
         ReceiveDir inbox = new ReceiveDir(new File(argv[0]), 1L << 30, 8L << 30, false);
         inbox.check();
         FileReceiver rx = ft.receiver;
