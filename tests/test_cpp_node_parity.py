@@ -14,6 +14,7 @@ from __future__ import annotations
 import random
 import subprocess
 import unicodedata
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -182,12 +183,14 @@ def test_the_scheduler_builds_the_packets_pythons_builds(cpp_node_bins: dict[str
 # -- the node: the Python endpoint's decisions ----------------------------------------------------
 
 def receiving_script(tmp: Path, seed: int, loss: float, size: int, mtu: int = 100, key: bytes | None = None,
-                     start: int = 0) -> tuple[list[str], list[str]]:
-    """A Python tablet (Endpoint 255/190, seeded) uploads a file and sends commands to a Python
-    onboard Endpoint (1/240, paced at 6700 B/s) over a channel of `mtu`-byte packets that loses
-    `loss` of them either way, in virtual time (5 ms steps), both ends signing with `key` from
-    timestamp `start` if given. Returns the onboard end's input as a node_driver script, and what
-    it sent at each poll."""
+                     start: int = 0, lose: Callable[[int, float], bool] | None = None,
+                     tablet_rate: float = 500.0, onboard_rate: float = 6700.0) -> tuple[list[str], list[str]]:
+    """A Python tablet (Endpoint 255/190, seeded, paced at `tablet_rate`) uploads a file and sends
+    commands to a Python onboard Endpoint (1/240, paced at `onboard_rate`) over a channel of `mtu`-byte
+    packets that loses `loss` of them either way (and the tablet's i-th packet sent at `now` when
+    `lose(i, now)`), in virtual time (5 ms steps), both ends signing with `key` from timestamp
+    `start` if given. Returns the onboard end's input as a node_driver script, and what it sent
+    at each poll."""
     from ttctl.proto.endpoint import Endpoint
     from ttctl.proto.storage import BytesSource, ReceiveDir
 
@@ -196,9 +199,9 @@ def receiving_script(tmp: Path, seed: int, loss: float, size: int, mtu: int = 10
     def signing() -> Any:
         return b.mavlink.Signing(key, 0, False, start) if key is not None else None
 
-    tx = Endpoint(b, *TABLET, mtu=mtu, rate_Bps=500.0, rng=random.Random(seed), signing=signing())
+    tx = Endpoint(b, *TABLET, mtu=mtu, rate_Bps=tablet_rate, rng=random.Random(seed), signing=signing())
     # an action that accepts every command, as node_driver's (without one, both ends answer UNSUPPORTED)
-    rx = Endpoint(b, 1, 240, mtu=mtu, rate_Bps=6700.0, receive_dir=ReceiveDir(tmp / "python"), signing=signing(),
+    rx = Endpoint(b, 1, 240, mtu=mtu, rate_Bps=onboard_rate, receive_dir=ReceiveDir(tmp / "python"), signing=signing(),
                   action=lambda msg: int(ttapi.TtResult.TT_RESULT_ACCEPTED))
     data = random.Random(seed + 1).randbytes(size)
     sender = tx.send_file("f.bin", (1, 240), source=BytesSource(data, "f.bin"))
@@ -206,12 +209,14 @@ def receiving_script(tmp: Path, seed: int, loss: float, size: int, mtu: int = 10
     sent: list[str] = []
     now = 0.0
     commands = 0
+    up = 0  # the tablet's packets so far
     while not sender.done and now < 300:
         if commands < 6 and rng.random() < 0.01:
             tx.command(b.TtActionCommand(action=commands % 5), (1, 240))
             commands += 1
         while (pkt := tx.poll(now)) is not None:
-            if rng.random() >= loss:
+            up += 1
+            if rng.random() >= loss and not (lose is not None and lose(up - 1, now)):
                 script.append(f"R {now!r} {pkt.hex()}")
                 rx.receive(now, pkt)
         out = []
@@ -260,6 +265,73 @@ def test_the_node_answers_what_pythons_endpoint_answers(cpp_node_bins: dict[str,
         assert g == w, (i, polls[i], g, w)
     assert (tmp_path / "cpp" / "f.bin").read_bytes() == (tmp_path / "python" / "f.bin").read_bytes()
     assert sum(w != "-" for w in want) > 20
+
+
+def status_frames(sent: list[str]) -> list[tuple[int, Any]]:
+    """The TT_FILE_STATUS frames in what an end sent (node_driver's lines: each poll's packets in
+    hex, '-' for none; a frame may go on in the next packet): (the whole frame's length, it)."""
+    from ttapi.mavlink import decode
+
+    stream = b"".join(bytes.fromhex(p) for line in sent if line != "-" for p in line.split())
+    out = []
+    i = 0
+    while i < len(stream):
+        assert stream[i] == 0xFD, (i, stream[i:i + 16].hex())
+        n = 12 + stream[i + 1] + (13 if stream[i + 2] & 1 else 0)
+        frame = stream[i:i + n]
+        if frame[7] | frame[8] << 8 | frame[9] << 16 == ttapi.TtFileStatus.MSG_ID:
+            out.append((n, decode(frame)))
+        i += n
+    return out
+
+
+@pytest.mark.parametrize("seed,mtu,signed,per,rate", [(21, 100, True, 5, 6700), (22, 100, False, 6, 6700),
+                                                      (23, 128, True, 7, 6700), (24, 128, False, 7, 6700),
+                                                      (25, 100, True, 5, 500), (26, 100, False, 6, 500)])
+def test_the_nodes_statuses_fit_one_packet(cpp_node_bins: dict[str, Path], tmp_path: Path, seed: int, mtu: int,
+                                           signed: bool, per: int, rate: int) -> None:
+    """As ttctl's Python receiver (proto/endpoint.py ranges_per_status, RANGES_MORE): the node's
+    statuses list only the gaps that fit one packet of its link (a 7-gap status is 102 bytes, 115
+    signed: two DTT packets, lost when either is), as many in a report as three 7-gap statuses
+    would hold, with range_count's top bit on every status of a burst but the last (more gaps
+    follow past received_end): an upload whose every other packet is lost for its first 1.5 s
+    leaves dozens of gaps; the node sends what Python's Endpoint sends, byte for byte, and the
+    transfer completes. On a 500 B/s link (the M100's uplink) statuses come as often as Python's:
+    at least 1.5 statuses' bytes at the link's rate apart (a signature counted), 0.8 near the end."""
+    from ttctl.proto.transfer import MAX_RANGES, RANGES_MORE, ranges_per_status
+
+    assert ranges_per_status(mtu, signed) == per
+    key = random.Random(seed).randbytes(32) if signed else None
+    start = shipped_bindings().mavlink.Signing.now() + 10**11
+    script, want = receiving_script(tmp_path, seed, 0.0, 20_000, mtu, key, start,
+                                    lose=lambda i, now: now < 1.5 and i % 2 == 1, tablet_rate=20_000.0,
+                                    onboard_rate=float(rate))
+    signing = [key.hex(), str(start)] if key is not None else []
+    run = subprocess.run([str(cpp_node_bins["driver"]), str(tmp_path / "cpp"), "-", str(rate), "0", str(mtu), *signing],
+                         input="\n".join(script) + "\n", capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr
+    got = run.stdout.splitlines()
+    statuses = status_frames(got)
+    bursts: list[list[Any]] = []
+    for n, s in statuses:
+        assert n <= mtu, (n, s)
+        assert s.range_count & ~RANGES_MORE <= per, s
+        if s.region_start == s.received_contiguous:  # the first of a burst
+            bursts.append([])
+        bursts[-1].append(s)
+    full = -(-3 * MAX_RANGES // per)  # statuses in a burst that lists as many gaps as it may
+    several = [b for b in bursts if len(b) > 1]
+    assert several, [len(b) for b in bursts]
+    # (at 500 B/s a burst waits in the scheduler, and the next one's statuses replace its own by key)
+    for b in bursts if rate > 1000 else []:
+        assert len(b) <= full, b
+        more = [bool(s.range_count & RANGES_MORE) for s in b]
+        assert more[:-1] == [True] * (len(b) - 1), b
+        assert not more[-1] or len(b) == full, b
+    assert len(got) == len(want)
+    for i, (g, w) in enumerate(zip(got, want, strict=True)):
+        assert g == w, (i, g, w)
+    assert (tmp_path / "cpp" / "f.bin").read_bytes() == (tmp_path / "python" / "f.bin").read_bytes()
 
 
 @pytest.mark.parametrize("seed,loss,mtu,signed", [(3, 0.02, 100, False), (4, 0.1, 100, False), (5, 0.25, 100, False),

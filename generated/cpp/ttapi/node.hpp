@@ -177,15 +177,15 @@ public:
         if (!cfg_.inbox.empty()) {
             store_.reset(new ReceiveDir(cfg_.inbox, cfg_.quota));
             TransferConfig rcfg = cfg_.transfer;
-            if (cfg_.rate_Bps > 0) {
-                // statuses go back over our own link: on a slow one, fewer of them (STATUS_BYTES)
-                rcfg.status_min_interval = std::max(rcfg.status_min_interval, 3 * STATUS_BYTES / cfg_.rate_Bps);
-                rcfg.status_tail_interval = std::max(rcfg.status_tail_interval, 1.2 * STATUS_BYTES / cfg_.rate_Bps);
+            if (cfg_.rate_Bps > 0) {  // statuses go back over our own link: as often as it carries them (endpoint.py)
+                const double status = STATUS_BYTES + (cfg_.signing != nullptr ? double(SIGNATURE_BYTES) : 0.0);
+                rcfg.status_min_interval = std::max(rcfg.status_min_interval, 1.5 * status / cfg_.rate_Bps);
+                rcfg.status_tail_interval = std::max(rcfg.status_tail_interval, 0.8 * status / cfg_.rate_Bps);
             }
             receiver_.reset(new FileReceiver(*store_, cfg_.sysid, cfg_.compid, rcfg, cfg_.max_transfers));
             receiver_->set_event_handler(&Node::file_event_thunk, this);
             receiver_->set_inbound(cfg_.inbound_Bps);  // rate grants to concurrent uploads (sharing.hpp)
-            receiver_->set_packet(cfg_.mtu);
+            receiver_->set_packet(cfg_.mtu, cfg_.signing != nullptr);  // statuses: what fits a packet
         }
         dispatcher_.set_outbox(context_);
         heartbeat_.type = 18;  // MAV_TYPE_ONBOARD_CONTROLLER

@@ -190,8 +190,13 @@ public:
     void on_data(double now, std::uint32_t transfer_id, std::uint32_t offset, const std::uint8_t* data,
                  std::size_t cap, std::size_t frame_len, std::uint8_t src_sysid, std::uint8_t src_compid);
 
-    /// The link's packet size (the node's mtu): grant-derived intervals are counted in packets.
-    void set_packet(std::size_t mtu) noexcept { packet_ = mtu; }
+    /// The link's packet size (the node's mtu) and whether its frames are signed: grant-derived
+    /// intervals are counted in packets, and a status lists only the gaps that fit one packet.
+    void set_packet(std::size_t mtu, bool signed_frames = false) noexcept
+    {
+        packet_ = mtu;
+        per_status_ = ranges_per_status(mtu, signed_frames);
+    }
 
     // -- statuses (receiver_status.hpp) -----------------------------------------------------
     /// Statuses due now (each after the reason for a refusal or failure), with their keys;
@@ -412,7 +417,7 @@ private:
     template <class Emit>
     void statuses(const Incoming& t, Emit& emit) const;
     TtFileStatus status(const Incoming& t, std::uint64_t rc, std::uint64_t region, std::uint64_t re,
-                        const std::uint64_t (*gaps)[2], std::size_t count) const noexcept;
+                        const std::uint64_t (*gaps)[2], std::size_t count, bool more = false) const noexcept;
     void tell_unknown(std::uint8_t sysid, std::uint8_t compid, std::uint32_t id, double now) noexcept;
     void forget_unknown(std::uint8_t sysid, std::uint8_t compid, std::uint32_t id) noexcept;
 
@@ -433,6 +438,7 @@ private:
     std::size_t unknown_due_count_ = 0;
     double inbound_Bps_ = 0.0;
     std::size_t packet_ = 100;  // the link's packet size
+    std::size_t per_status_ = MAX_RANGES;  // gaps a status lists (as many as fit one packet)
     double packet() const noexcept { return static_cast<double>(packet_); }
     std::uint16_t grant_ = 0;
     std::size_t sharing_count_ = 0;  // transfers flagged `sharing` at the last share(), closed ones included

@@ -176,18 +176,21 @@ inline void FileReceiver::statuses(const Incoming& t, Emit& emit) const
     const auto& ranges = grp(t.group).ranges();
     const std::uint64_t rc = ranges.prefix();
     const std::uint64_t last = ranges.last_end();
-    constexpr std::size_t MAX_BATCHES = 8;
+    // as many gaps in a report as status_batches MAX_RANGES-gap statuses would hold, in statuses of
+    // per_status_ gaps (one packet each), range_count's top bit on all but the last (as ttctl's endpoint)
+    constexpr std::size_t MAX_BATCHES = 16;  // (key_of keeps 4 bits of the index)
     std::uint64_t gaps[MAX_RANGES * MAX_BATCHES][2];
-    const std::size_t batches = std::clamp<std::size_t>(static_cast<std::size_t>(std::max(1, cfg_.status_batches)),
-                                                        1, MAX_BATCHES);
-    const std::size_t total = ranges.gaps(rc, last, gaps, MAX_RANGES * batches);
+    const std::size_t per = per_status_;
+    const std::size_t wanted = static_cast<std::size_t>(std::max(1, cfg_.status_batches)) * MAX_RANGES;
+    const std::size_t batches = std::clamp<std::size_t>((wanted + per - 1) / per, 1, MAX_BATCHES);
+    const std::size_t total = ranges.gaps(rc, last, gaps, per * batches);
     std::uint64_t start = rc;
     for (std::size_t k = 0; k < batches; ++k) {
-        const std::size_t from = k * MAX_RANGES;
-        const std::size_t count = total > from ? std::min(MAX_RANGES, total - from) : 0;
-        const bool more = total > (k + 1) * MAX_RANGES;
+        const std::size_t from = k * per;
+        const std::size_t count = total > from ? std::min(per, total - from) : 0;
+        const bool more = total > (k + 1) * per;
         const std::uint64_t end = more ? gaps[from + count - 1][1] : last;
-        emit(status(t, rc, start, end, gaps + from, count), key_of(KEY_STATUS, k, t.sysid, t.compid, t.id));
+        emit(status(t, rc, start, end, gaps + from, count, more), key_of(KEY_STATUS, k, t.sysid, t.compid, t.id));
         start = end;
         if (!more) {
             break;
@@ -196,7 +199,7 @@ inline void FileReceiver::statuses(const Incoming& t, Emit& emit) const
 }
 
 inline TtFileStatus FileReceiver::status(const Incoming& t, std::uint64_t rc, std::uint64_t region, std::uint64_t re,
-                                         const std::uint64_t (*gaps)[2], std::size_t count) const noexcept
+                                         const std::uint64_t (*gaps)[2], std::size_t count, bool more) const noexcept
 {
     TtFileStatus s;
     s.target_system = t.sysid;
@@ -213,7 +216,7 @@ inline TtFileStatus FileReceiver::status(const Incoming& t, std::uint64_t rc, st
     } else {
         s.hold_ms = 65535;
     }
-    s.range_count = static_cast<std::uint8_t>(count);
+    s.range_count = static_cast<std::uint8_t>(count | (more ? RANGES_MORE : 0u));
     s.meta_check = t.check;
     const bool sharing = t.sharing && t.group >= 0
                          && t.result == static_cast<std::uint8_t>(TtFileResult::TT_FILE_RESULT_IN_PROGRESS);

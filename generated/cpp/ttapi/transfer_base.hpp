@@ -36,6 +36,19 @@ inline constexpr std::size_t MAX_RANGES = 7;  // missing ranges per TT_FILE_STAT
 // range_count's top bit: more gaps follow past received_end (a status of a burst that holds fewer than
 // MAX_RANGES gaps so that it fits one packet); the bytes there are unknown, not missing
 inline constexpr unsigned RANGES_MORE = 0x80;
+inline constexpr std::size_t STATUS_FIXED = 12 + 2 + 32;  // TT_FILE_STATUS before its ranges (8 bytes a gap)
+
+/// The gaps a TT_FILE_STATUS may list and still fit one packet of `mtu` bytes, signed or not (at
+/// least 1, at most MAX_RANGES; ttctl's Python ranges_per_status): a status over two packets is lost
+/// when either is, and the sender then hears nothing (a 7-gap status is 102 bytes, 115 signed).
+inline constexpr std::size_t ranges_per_status(std::size_t mtu, bool signed_frames) noexcept
+{
+    const std::size_t fixed = STATUS_FIXED + (signed_frames ? SIGNATURE_BYTES : 0);
+    const std::size_t room = mtu > fixed ? (mtu - fixed) / 8 : 0;
+    return room < 1 ? 1 : (room > MAX_RANGES ? MAX_RANGES : room);
+}
+static_assert(ranges_per_status(100, false) == 6 && ranges_per_status(100, true) == 5
+              && ranges_per_status(128, true) == MAX_RANGES, "a status fits one packet");
 inline constexpr std::size_t REASON_BYTES = 80;  // TT_FILE_REASON.text
 inline constexpr std::size_t SHA_LEN = 32;
 inline constexpr std::size_t META_MAX = 255;

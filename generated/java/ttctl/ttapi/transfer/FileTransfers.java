@@ -129,7 +129,16 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         });
         new Geometry(scheduler.mtu(), false); // refuses a packet too small for a file-data frame
         this.receiver.mtu = scheduler.mtu();
+        fitStatuses();
         setInboundCapacity(this.cfg.inboundCapacity);
+    }
+
+    /**
+     * Statuses (they go on the link's scheduler, never a pipeline) list as many gaps as fit one of
+     * its packets, signed or not (a signer set later is taken at the next tick). Under the lock.
+     */
+    void fitStatuses() {
+        receiver.statuses.fit(scheduler.mtu(), scheduler.signing());
     }
 
     /** Starts the timer thread (once). */
@@ -235,12 +244,13 @@ public final class FileTransfers implements Consumer<MavlinkMessage>, AutoClosea
         return r > 0 ? r : scheduler.rate();
     }
 
-    /** Statuses go back over our own link: on a slow one, fewer of them (as ttctl's endpoint). */
+    /** Statuses go back over our own link: as often as it carries them, a signature counted (ttctl's endpoint). */
     private TransferConfig receiverConfig(double r) {
         TransferConfig c = cfg.copy();
         if (r > 0) {
-            c.statusMinInterval = Math.max(c.statusMinInterval, 3.0 * STATUS_BYTES / r);
-            c.statusTailInterval = Math.max(c.statusTailInterval, 1.2 * STATUS_BYTES / r);
+            double status = STATUS_BYTES + (scheduler.signing() ? Geometry.SIGNATURE : 0);
+            c.statusMinInterval = Math.max(c.statusMinInterval, 1.5 * status / r);
+            c.statusTailInterval = Math.max(c.statusTailInterval, 0.8 * status / r);
         }
         return c;
     }

@@ -85,10 +85,11 @@ final class Incoming {
 
     /**
      * What this transfer's receiver says now: the reason for a refusal or failure (when it gave
-     * one), then its status (in up to {@code batches} frames when the gaps need more than one),
-     * each carrying {@code grant} (B/s, 0: none).
+     * one), then its status (in up to {@code batches} frames of at most {@code per} gaps each
+     * when the gaps need more than one, range_count's top bit set on all but the last), each
+     * carrying {@code grant} (B/s, 0: none).
      */
-    List<MavlinkMessage> answers(int batches, double now, int grant) {
+    List<MavlinkMessage> answers(int batches, int per, double now, int grant) {
         List<MavlinkMessage> out = new ArrayList<>();
         if (explained(result) && !reason.isEmpty()) {
             TtFileReason r = new TtFileReason();
@@ -99,15 +100,15 @@ final class Incoming {
             r.text = Arrays.copyOf(Names.fit(reason, 80), 80);
             out.add(r);
         }
-        out.addAll(statuses(batches, now, grant));
+        out.addAll(statuses(batches, per, now, grant));
         return out;
     }
 
-    private List<MavlinkMessage> statuses(int batches, double now, int grant) {
+    private List<MavlinkMessage> statuses(int batches, int per, double now, int grant) {
         List<MavlinkMessage> out = new ArrayList<>();
         if (partial == null) {
             long done = result == TtFileResult.TT_FILE_RESULT_COMPLETE ? size : 0;
-            out.add(status(done, done, done, new ArrayList<long[]>(), now, grant));
+            out.add(status(done, done, done, new ArrayList<long[]>(), false, now, grant));
             return out;
         }
         RangeSet ranges = partial.ranges;
@@ -116,11 +117,11 @@ final class Incoming {
         List<long[]> gaps = ranges.gaps(rc, last);
         long start = rc;
         for (int k = 0; k < batches; k++) {
-            int from = k * FileReceiver.MAX_RANGES;
-            List<long[]> batch = gaps.subList(Math.min(from, gaps.size()), Math.min(from + FileReceiver.MAX_RANGES, gaps.size()));
-            boolean more = gaps.size() > (k + 1) * FileReceiver.MAX_RANGES;
+            int from = k * per;
+            List<long[]> batch = gaps.subList(Math.min(from, gaps.size()), Math.min(from + per, gaps.size()));
+            boolean more = gaps.size() > (k + 1) * per;
             long end = more ? batch.get(batch.size() - 1)[1] : last;
-            out.add(status(rc, start, end, batch, now, grant));
+            out.add(status(rc, start, end, batch, more, now, grant));
             start = end;
             if (!more) {
                 break;
@@ -129,7 +130,8 @@ final class Incoming {
         return out;
     }
 
-    private TtFileStatus status(long rc, long region, long re, List<long[]> gaps, double now, int grant) {
+    private TtFileStatus status(long rc, long region, long re, List<long[]> gaps, boolean more, double now,
+                                int grant) {
         TtFileStatus s = new TtFileStatus();
         s.target_system = key.sys;
         s.target_component = key.comp;
@@ -140,7 +142,7 @@ final class Incoming {
         s.received_end = re;
         s.last_offset = lastOffset;
         s.hold_ms = Double.isNaN(lastData) ? 65535 : (int) Math.min(65535, 1000 * (now - lastData));
-        s.range_count = gaps.size();
+        s.range_count = gaps.size() | (more ? ReceiverStatuses.RANGES_MORE : 0);
         s.meta_check = check;
         s.rate_grant = grant;
         s.ranges = new long[2 * FileReceiver.MAX_RANGES];

@@ -35,6 +35,10 @@ final class ReceiverStatuses {
      */
     static final int COMPLETE_REPEATS = 2;
     static final double COMPLETE_REPEAT_GAP = 0.05;
+    /** range_count's top bit: more gaps follow past received_end (the status is one of a burst). */
+    static final int RANGES_MORE = 0x80;
+    /** A TT_FILE_STATUS's header, checksum and payload before its ranges (8 bytes a gap). */
+    static final int STATUS_FIXED = 12 + 2 + 32;
 
     private final FileReceiver rx;
     private final LinkedHashMap<FileReceiver.Key, Double> unknown = new LinkedHashMap<>(); // told 'unknown', when
@@ -43,9 +47,35 @@ final class ReceiverStatuses {
     int grant; // each sharing transfer's rate grant, B/s (0: none)
     Set<FileReceiver.Key> sharing = Collections.emptySet(); // the transfers the link is shared among
     final Sharing.Load load = new Sharing.Load(); // what else comes in (the router counts packets, onData the data)
+    int perStatus = FileReceiver.MAX_RANGES; // gaps a status lists: what fits one packet of the link (fit)
 
     ReceiverStatuses(FileReceiver rx) {
         this.rx = rx;
+    }
+
+    /**
+     * The gaps a TT_FILE_STATUS may list and still fit one packet of {@code mtu} bytes, signed or
+     * not (at least 1, at most {@value FileReceiver#MAX_RANGES}), as ttctl's Python
+     * proto/transfer.py ranges_per_status: a status over two packets is lost when either is, and
+     * the sender then hears nothing (a 7-gap status is 102 bytes, 115 signed).
+     */
+    static int rangesPerStatus(int mtu, boolean signed) {
+        int room = mtu - STATUS_FIXED - (signed ? Geometry.SIGNATURE : 0);
+        return Math.max(1, Math.min(FileReceiver.MAX_RANGES, room / 8));
+    }
+
+    /** Statuses go back in packets of {@code mtu} bytes, signed or not: each lists what fits one. */
+    void fit(int mtu, boolean signed) {
+        perStatus = rangesPerStatus(mtu, signed);
+    }
+
+    /**
+     * Statuses in a report: as many gaps as {@link TransferConfig#statusBatches} statuses of
+     * {@value FileReceiver#MAX_RANGES} gaps would hold, in more statuses of {@link #perStatus}
+     * (as ttctl's endpoint).
+     */
+    int batches() {
+        return Math.max(1, (rx.cfg.statusBatches * FileReceiver.MAX_RANGES + perStatus - 1) / perStatus);
     }
 
     /** {@code key} is a transfer we know now. */
@@ -152,7 +182,7 @@ final class ReceiverStatuses {
             if (t.partial != null) {
                 t.partial.save();
             }
-            out.addAll(t.answers(Math.max(1, cfg.statusBatches), now, grantOf(t)));
+            out.addAll(t.answers(batches(), perStatus, now, grantOf(t)));
             t.lastStatus = now;
             t.quietDue = Double.NaN;
             boolean flowing = t.result == TtFileResult.TT_FILE_RESULT_IN_PROGRESS && t.partial != null

@@ -169,6 +169,7 @@ final class TransferTimer implements Runnable {
             }
             next = min(next, f.deadline(now));
         }
+        ft.fitStatuses();
         for (MavlinkMessage m : ft.receiver.control(now)) {
             out.add(ft.encode(m));
         }
