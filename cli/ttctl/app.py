@@ -423,9 +423,12 @@ def main() -> None:
     moment one quiet line and exit 130 (`ttctl.entry` covers the imports before this)."""
     import signal
 
+    from .interrupts import install
+
     try:
+        install()  # from here a Ctrl-C raises KeyboardInterrupt, remembered even where Python loses it
         code = _run()
-    except KeyboardInterrupt:  # while a failure was being reported
+    except KeyboardInterrupt:  # while the handler was being installed, or a failure was being reported
         with contextlib.suppress(Exception):
             print("ttctl: interrupted", file=sys.stderr)
         code = 130

@@ -21,10 +21,8 @@ def main() -> None:
     except KeyboardInterrupt:  # a Ctrl-C that came while Python was loading this very module
         _interrupted(_signal.SIGINT, None)
     from .app import main as app_main
-    from .interrupts import install
 
-    install()  # from here a Ctrl-C raises KeyboardInterrupt, and is remembered even where Python loses it
-    app_main()
+    app_main()  # installs its own handler inside the block that turns a KeyboardInterrupt into exit 130
 
 
 __all__ = ["main"]

@@ -36,9 +36,9 @@ _default_hook = sys.unraisablehook
 
 
 def install() -> None:
-    import signal
+    import _signal  # not `signal`: its wrapper converts the old handler to an enum after the new one is live
 
-    signal.signal(signal.SIGINT, on_sigint)
+    _signal.signal(_signal.SIGINT, on_sigint)
     sys.unraisablehook = _quiet_lost_interrupt
 
 
