@@ -27,7 +27,8 @@ from .transfer import REQUEST_PART, TransferConfig, quiet_after, reason_fit
 
 if TYPE_CHECKING:
     from .endpoint import Endpoint
-    from .receiver import FileReceiver, Incoming
+    from .incoming import Incoming
+    from .receiver import FileReceiver
 
 SERVE_DEFLATE_MAX = 16 << 20  # served files up to this size may go deflated (deflating blocks this end meanwhile)
 MAX_PARTIAL_REQUESTS = 64  # TT_FILE_REQUEST names still arriving, kept at once (the stalest goes first)
