@@ -18,7 +18,7 @@ the link, in namespace <ns>::link:
                               words, the name rules, byte ranges, storage, the receiver, the sender
   cpp/<ident>/node.hpp        link::Node: all of it on one link, heartbeat, timers; DttLink (DJI OSDK 4);
                               it includes its pieces (NODE_HEADERS): the config, the set-points'
-                              answers (SetpointDesk), receiving, files, NodePump, DttLink
+                              answers (SetpointDesk), NodeContext, receiving, files, NodePump, DttLink
   cpp/<ident>/psdk_link.hpp   link::PsdkLink: a Node on DJI's Payload SDK low-speed channel (needs its header)
   cpp/<ident>/osdk_link.hpp   link::OsdkLink: a Node on DJI's Onboard SDK 3.x or 4.x DTT (needs its header)
   cpp/<ident>/pipe_link.hpp   link::PipeLink: a MOP pipeline beside a Node's link, over any SDK's PipeTransport
@@ -72,10 +72,10 @@ TRANSFER_HEADERS = ("transfer", "transfer_base", "file_names", "ranges", "posix_
                     "partial", "file_source", "receiver", "receiver_offers", "receiver_data", "receiver_status",
                     "sharing",
                     "sender", "sender_control", "sender_data", "sender_frame_size")
-# The node: node.hpp includes node_config.hpp and setpoints.hpp first and its parts (the others)
-# after the class.
-NODE_HEADERS = ("node", "node_config", "setpoints", "node_receive", "node_files", "node_pipe", "node_pump",
-                "dtt_link")
+# The node: node.hpp includes node_config.hpp, setpoints.hpp and node_context.hpp first and its
+# other parts after the class.
+NODE_HEADERS = ("node", "node_config", "setpoints", "node_context", "node_receive", "node_files", "node_pipe",
+                "node_pump", "dtt_link")
 # Links on DJI's SDKs that need the SDK's own header (compiled in tests against DJI's vendored
 # headers, tests/vendor/dji/): the node on the Payload SDK's low-speed channel, and on the Onboard
 # SDK's DTT (3.x and 4.x).

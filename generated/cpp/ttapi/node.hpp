@@ -27,8 +27,8 @@
 // The node is in pieces (this header includes them all):
 //   node_config.hpp    NodeConfig (how a node is set up), NodeEvent and NodeStats (what it reports)
 //   setpoints.hpp      SetpointDesk: the tablet's set-points answered (flown once, echoed; or refused)
-//   node.hpp           NodeContext, NodePlugin and the Node class: what the user binds, sending,
-//                      driving (poll, wakeup), periodic work
+//   node_context.hpp   NodeContext and NodePlugin: what the user binds (handlers, commands, timers)
+//   node.hpp           the Node class: sending, driving (poll, wakeup), periodic work
 //   node_receive.hpp   Node: packets in, per source; frames for this end, handled; commands run
 //   node_files.hpp     Node: uploads, fetches served from the serve folder, file transfer events
 //   node_pipe.hpp      Node: the MOP pipeline beside the link (file data on it while it is open),
@@ -73,70 +73,11 @@ inline double monotonic_now() noexcept
 }
 class Node;
 
-/// What NodeContext::setpoint() did with a DJI_POSE_STAMPED.
-enum class SetpointVerdict : std::uint8_t {
-    not_setpoint,  // another topic: nothing done, nothing answered (yours to handle)
-    flown,  // flown now, echoed to its sender
-    refused,  // refused now, the words said ("set-point refused: ...")
-    repeated,  // the sender's last stamp again: answered again as before, not flown
-};
+}  // namespace ttapi::link
 
-/// What a handler (and a timer, and a command's action) may do: send any message of the
-/// dialect, log, ask the time. It is the node's Outbox: `ctx.send(msg)` queues the message at
-/// control priority (a reply: ahead of telemetry and file data); `ctx.telemetry(msg)` behind
-/// control frames (the oldest is dropped beyond 32 waiting; with a key, a newer one replaces a
-/// queued one with the same key).
-class NodeContext final : public Outbox {
-public:
-    explicit NodeContext(Node& node) noexcept : node_(node) {}
+#include "node_context.hpp"
 
-    bool send_payload(const MessageInfo& info, const std::uint8_t* payload, std::size_t n) override;
-
-    /// Queue a message at telemetry priority (`key` != 0: newest wins among queued ones).
-    template <class M>
-    bool telemetry(const M& msg, std::uint64_t key = 0);
-
-    /// Queue a message at `priority`.
-    template <class M>
-    bool send_at(const M& msg, Priority priority, std::uint64_t key = 0);
-
-    /// A TT_LOG line to the tablet (`severity`: MAV_SEVERITY, 6 INFO), behind control frames;
-    /// `urgent`: ahead of telemetry (words that explain a refusal go so).
-    void log(std::string_view text, std::uint8_t severity = 6, bool urgent = false);
-
-    /// Answer the tablet's set-point (`msg` of topic SETPOINT; another topic: not_setpoint, and
-    /// nothing done): `fly()` flies it and returns std::nullopt, or refuses it and returns why
-    /// (std::optional<std::string>); it runs once per stamp and sender (a repeat is answered
-    /// again, not flown twice). Flown: the set-point is echoed to its sender (the same stamp and
-    /// topic); refused: a TT_LOG warning "set-point refused: <why>", ahead of telemetry.
-    ///
-    ///     ctx.setpoint(msg, frame, [&]() -> std::optional<std::string> {
-    ///         if (msg.position[2] < 0.5) {
-    ///             return "altitude below 0.5 m: land instead";
-    ///         }
-    ///         fly_to(msg.position);  // north, east, altitude above home
-    ///         return std::nullopt;
-    ///     });
-    template <class Fly>
-    SetpointVerdict setpoint(const DjiPoseStamped& msg, const Frame& frame, Fly&& fly);
-
-    double now() const noexcept;
-    std::uint8_t sysid() const noexcept;
-    std::uint8_t compid() const noexcept;
-    Node& node() noexcept { return node_; }
-
-private:
-    Node& node_;
-};
-
-/// A set of handlers and periodic work for a Node (the generated skeleton is one): attach()
-/// binds them.
-class NodePlugin {
-public:
-    virtual ~NodePlugin() = default;
-    virtual const char* name() const noexcept = 0;
-    virtual void attach(Node& node) = 0;
-};
+namespace ttapi::link {
 
 /// See the header comment.
 class Node final : public IdSource {
