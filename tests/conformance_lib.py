@@ -22,6 +22,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from conftest import TTAPI, pymavlink_dialects, run_ttctl
+from machine import scaled
 from ttctl.dialect.model import INTEGER_RANGES, Dialect, Field, Message
 from ttctl.validate import load_and_check
 
@@ -105,6 +106,7 @@ class Conformance:
         self._buf = b""
 
     def ask(self, line: str, timeout: float = 30.0) -> str:
+        timeout = scaled(timeout)  # longer on a busy machine
         assert self.proc.stdin is not None and self.proc.stdout is not None
         if "\n" in line:
             raise ValueError("one line at a time")

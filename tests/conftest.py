@@ -64,8 +64,11 @@ def ttctl_cmd() -> list[str]:
 
 def run_ttctl(*args: str, cwd: str | os.PathLike[str] | None = None, timeout: float = 120,
               input: bytes | None = None, env: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
-    """Run the installed console script as a real process (`env`: variables to add)."""
-    return subprocess.run(ttctl_cmd() + list(args), cwd=cwd, capture_output=True, text=True, timeout=timeout,
+    """Run the installed console script as a real process (`env`: variables to add); `timeout`
+    is the idle machine's allowance, stretched on a busy one (machine.scaled)."""
+    from machine import scaled
+
+    return subprocess.run(ttctl_cmd() + list(args), cwd=cwd, capture_output=True, text=True, timeout=scaled(timeout),
                           input=input.decode() if input is not None else None,
                           env={**os.environ, **env} if env else None)
 

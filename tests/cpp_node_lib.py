@@ -46,6 +46,7 @@ import pytest
 import ttapi
 from conftest import ROOT, TTAPI, run_ttctl
 from e2e_lib import LOCAL
+from machine import scaled
 from ttctl.wire.packets import packetize
 
 needs_gxx = pytest.mark.skipif(shutil.which("g++") is None, reason="needs g++")
@@ -160,6 +161,7 @@ class Node:
         return out
 
     def wait_event(self, kind: str, timeout: float = 30.0, **match: Any) -> dict[str, Any]:
+        timeout = scaled(timeout)  # longer on a busy machine
         end = time.monotonic() + timeout
         while time.monotonic() < end:
             for e in self.events(kind):

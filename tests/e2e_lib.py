@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from conftest import assert_no_traceback, run_ttctl, ttctl_cmd
+from machine import scaled
 
 LOCAL = "127.0.0.1"
 SIZE = 64 * 1024
@@ -44,6 +45,7 @@ class Proc:
         return self.err_path.read_text()
 
     def wait_for(self, text: str, timeout: float = 15.0, where: str = "stderr") -> None:
+        timeout = scaled(timeout)  # an allowance for starting up: longer on a busy machine
         end = time.monotonic() + timeout
         while time.monotonic() < end:
             if text in (self.stderr if where == "stderr" else self.stdout):
@@ -55,6 +57,7 @@ class Proc:
                              f"{self.stdout}\n{self.stderr}")
 
     def wait(self, timeout: float = 15.0) -> int:
+        timeout = scaled(timeout)
         try:
             return self.p.wait(timeout)
         except subprocess.TimeoutExpired:
@@ -145,9 +148,10 @@ def run_mavproxy(port: int, steps: tuple[tuple[str, float], ...], cwd: Path, *ex
 
 async def until(probe: Callable[[], Any], pred: Callable[[Any], bool], timeout: float, poll: float = 0.2) -> Any:
     """Await `probe()` until `pred` holds of its value (a MAVSDK getter, say); AssertionError
-    with the last value after `timeout` s."""
+    with the last value after `timeout` s (stretched on a busy machine)."""
     import asyncio
 
+    timeout = scaled(timeout)
     end = time.monotonic() + timeout
     value = None
     while time.monotonic() < end:

@@ -25,6 +25,7 @@ from typing import Any
 
 from conftest import ROOT, run_ttctl, shipped
 from e2e_lib import LOCAL, free_port
+from machine import scaled
 
 WARN = ["-std=c++17", "-Wall", "-Wextra", "-Wpedantic", "-Werror"]
 PSDK_INCLUDE = ROOT / "tests" / "vendor" / "dji" / "psdk-3.13.1" / "psdk_lib" / "include"
@@ -74,6 +75,7 @@ class MopNode:
         return [x for x in self.lines() if x["event"] == "pipe" and x["kind"] == kind]
 
     def wait_for(self, what: Callable[[], bool], timeout: float = 30) -> None:
+        timeout = scaled(timeout)  # longer on a busy machine
         end = time.monotonic() + timeout
         while time.monotonic() < end:
             if what():
@@ -86,6 +88,7 @@ class MopNode:
         self.wait_for(lambda: bool(self.pipe_events("listening")))
 
     def stop(self, timeout: float = 30) -> dict[str, Any]:
+        timeout = scaled(timeout)  # longer on a busy machine
         self.p.send_signal(signal.SIGINT)
         assert self.p.wait(timeout) == 0, self.err.read_text()
         return next(x for x in self.lines() if x["event"] == "stats")

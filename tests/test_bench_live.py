@@ -15,6 +15,7 @@ import pytest
 
 from conftest import ROOT, assert_no_traceback, run_ttctl, ttctl_cmd
 from e2e_lib import LOCAL, Proc, Start, free_port
+from machine import scaled
 
 PROFILE = tomllib.loads((ROOT / "cli" / "ttctl" / "link" / "profiles.toml").read_text())["m100"]
 RATE = 4000  # B/s, the relay's --rate both ways
@@ -181,7 +182,7 @@ def test_server_killed_midway_keeps_rows_marked_partial(start: Start, tmp_path: 
     png = tmp_path / "rows.png"
     p, err = bench_bg(tmp_path, sport, "--direction", "up", "--sizes", "20,50,100", "--count", "100", "--rate",
                       "2000", "-o", str(out), "--plot", str(png))
-    end = time.monotonic() + 20
+    end = time.monotonic() + scaled(20)
     while "up 20 B:" not in err.read_text():
         assert time.monotonic() < end and p.poll() is None, err.read_text()
         time.sleep(0.02)

@@ -40,6 +40,7 @@ import pytest
 from conformance_lib import pymavlink_module
 from conftest import ROOT
 from e2e_lib import LOCAL, free_port, send
+from machine import scaled
 from mop_lib import NODE, WARN, App, MopNode, build_mop_node, sha
 
 pytestmark = pytest.mark.skipif(shutil.which("g++") is None, reason="needs g++")
@@ -186,7 +187,7 @@ def test_a_flood_of_garbage_on_the_pipeline(mop_node: Path, pm: Any, tmp_path: P
         cmd = mav.tt_action_command_encode(1, 240, 7, 1, 0, [0.0] * 4, b"").pack(mav)
         s.sendall(bytes(300) + cmd)
         acked = False
-        end = time.monotonic() + 30
+        end = time.monotonic() + scaled(30)
         parser = pm.MAVLink(None)
         parser.robust_parsing = True
         while not acked and time.monotonic() < end:

@@ -32,6 +32,7 @@ import pytest
 import ttapi
 from cpp_node_lib import PROGRAM, WARN, Raw, generate, needs_gxx, sha, write
 from e2e_lib import LOCAL, Start, free_port, receiver, relay, send
+from machine import scaled
 from ttctl.bench.textfiles import flight_log_csv, mission_yaml
 
 pytestmark = needs_gxx
@@ -112,6 +113,7 @@ def test_the_node_killed_mid_deflated_upload_resumes_the_stream(cpp_node_bins: d
 def stream_held(inbox: Path, least: int, timeout: float = 30.0) -> int:
     """Bytes of a zlib stream (a partial whose key ends in -z<size>) the record says arrived,
     once at least `least`."""
+    timeout = scaled(timeout)  # longer on a busy machine
     end = time.monotonic() + timeout
     while time.monotonic() < end:
         for rec in (inbox / ".ttctl-partial").glob("*-z*.json"):

@@ -20,6 +20,7 @@ from typing import Any
 
 from cpp_node_lib import needs_gxx, sha, write
 from e2e_lib import LOCAL, Start, free_port, receiver, relay, send
+from machine import scaled
 
 pytestmark = needs_gxx
 
@@ -106,6 +107,7 @@ def partial_bytes(inbox: Path) -> int:
 
 
 def wait_partial(inbox: Path, at_least: int, timeout: float = 30.0) -> int:
+    timeout = scaled(timeout)  # longer on a busy machine
     end = time.monotonic() + timeout
     while time.monotonic() < end:
         n = partial_bytes(inbox)

@@ -31,6 +31,7 @@ import pytest
 
 from conftest import ROOT, run_ttctl
 from e2e_lib import LOCAL, Start, free_port, relay, send
+from machine import scaled
 
 pytestmark = pytest.mark.skipif(shutil.which("g++") is None, reason="needs g++")
 
@@ -72,6 +73,7 @@ class PsdkNode:
         return [json.loads(line) for line in self.out.read_text().splitlines() if line.startswith("{")]
 
     def wait_ready(self, timeout: float = 30) -> None:
+        timeout = scaled(timeout)  # longer on a busy machine
         end = time.monotonic() + timeout
         while time.monotonic() < end:
             if any(x["event"] == "ready" for x in self.lines()):

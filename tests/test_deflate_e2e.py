@@ -12,6 +12,7 @@ import pytest
 
 from conftest import assert_no_traceback, run_ttctl
 from e2e_lib import LOCAL, Start, free_port, receiver, relay, send
+from machine import scaled
 from test_sendrecv_e2e import _saved_bytes
 from ttctl.bench.textfiles import flight_log_csv, mission_yaml
 
@@ -66,7 +67,7 @@ def test_a_killed_deflating_sender_resumes(tmp_path: Path, start: Start) -> None
     recv = receiver(start, tmp_path, f"udpin:{LOCAL}:{b}", "--count", "1")
     first = start("send1", "send-file", str(log), "--to", f"udpout:{LOCAL}:{a}", "--rate", "20000", "--json")
     inbox = tmp_path / "inbox"
-    end = time.monotonic() + 30
+    end = time.monotonic() + scaled(30)
     while _saved_bytes(inbox) < 16 * 1024:
         assert time.monotonic() < end and first.p.poll() is None, (first.stdout, first.stderr, recv.stdout)
         time.sleep(0.02)

@@ -32,6 +32,7 @@ import pytest
 
 from conftest import ROOT, run_ttctl
 from e2e_lib import LOCAL, Start, free_port, relay, send
+from machine import scaled
 
 pytestmark = pytest.mark.skipif(shutil.which("g++") is None, reason="needs g++")
 
@@ -252,7 +253,7 @@ def test_the_mop_program_takes_a_file_over_the_pipeline(built: dict[str, Path], 
         assert proc.returncode == 0 and r["ok"], proc.stderr
         assert r["pipeline_opens"] == 1 and r["pipeline_bytes_out"] >= 300_000, r
         assert sha(tmp_path / "inbox" / "up.bin") == sha(src)
-        deadline = time.monotonic() + 10
+        deadline = time.monotonic() + scaled(10)
         while "Connection of channel is closed" not in (tmp_path / "prog.err").read_text():
             assert time.monotonic() < deadline, (tmp_path / "prog.err").read_text()
             time.sleep(0.05)

@@ -16,6 +16,7 @@ from typing import Any
 import pytest
 
 from e2e_lib import LOCAL, Start, free_port, mavproxy_exe, run_mavproxy, until
+from machine import scaled
 from mavsdk_child import fly
 
 EARTH_RADIUS = 6_378_137.0
@@ -225,6 +226,7 @@ def test_qgroundcontrol_px4_guided_actions(tmp_path: Path, start: Start) -> None
         return str(mavutil.interpret_px4_mode(hb.base_mode, hb.custom_mode))
 
     def until(kind: str, condition: str, timeout: float = 15) -> Any:
+        timeout = scaled(timeout)  # longer on a busy machine
         msg = conn.recv_match(type=kind, condition=condition, blocking=True, timeout=timeout)
         assert msg is not None, (kind, condition, node.stderr[-500:])
         return msg

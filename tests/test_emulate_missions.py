@@ -15,6 +15,7 @@ from typing import Any
 import pytest
 
 from e2e_lib import LOCAL, Start, free_port, mavproxy_exe, run_mavproxy
+from machine import scaled
 from mavsdk_child import fly
 from test_emulate_mavsdk import _until, onboard
 from test_emulate_onboard import command, gcs, wait_for
@@ -117,7 +118,7 @@ def test_mavsdk_geofence_is_enforced_with_gf_action(start: Start) -> None:
         await _until(tel.position, lambda p: p.relative_altitude_m > 3.8, 20)
         await act.goto_location(north(lat0, 35), lon0, home.absolute_altitude_m + 4, math.nan)
         top = 0.0
-        end = time.monotonic() + 40
+        end = time.monotonic() + scaled(40)
         while time.monotonic() < end and await tel.flight_mode() != FlightMode.RETURN_TO_LAUNCH:
             top = max(top, ((await tel.position()).latitude_deg - lat0) * M_PER_DEG)
             await asyncio.sleep(0.1)
@@ -168,7 +169,7 @@ def test_mission_items_reached_and_commands_checked_in_state(gcs: tuple[Any, Any
     reached: list[int] = []
     currents: list[int] = []
     top = 0.0
-    end = time.monotonic() + 60
+    end = time.monotonic() + scaled(60)
     while time.monotonic() < end and 3 not in reached:
         r = conn.recv_match(type=["MISSION_ITEM_REACHED", "MISSION_CURRENT", "VFR_HUD"], blocking=True, timeout=0.5)
         if r is None:

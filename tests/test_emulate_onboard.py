@@ -12,6 +12,7 @@ from typing import Any
 import pytest
 
 from e2e_lib import LOCAL, Start, free_port, mavproxy_exe, run_mavproxy
+from machine import scaled
 
 SPEED = "4"  # the vehicle's clock runs 4x faster than the wall clock
 
@@ -37,6 +38,7 @@ def gcs(tmp_path: Path, start: Start) -> Iterator[tuple[Any, Any]]:
 
 
 def ack(conn: Any, command: int, timeout: float = 5.0) -> int:
+    timeout = scaled(timeout)  # longer on a busy machine
     end = time.monotonic() + timeout
     while time.monotonic() < end:
         m = conn.recv_match(type="COMMAND_ACK", blocking=True, timeout=0.5)
@@ -60,6 +62,7 @@ def command(conn: Any, cmd: int, *params: float, tries: int = 1) -> int:
 
 
 def wait_for(conn: Any, kind: str, pred: Any, timeout: float = 20.0) -> Any:
+    timeout = scaled(timeout)  # longer on a busy machine
     end = time.monotonic() + timeout
     last = None
     while time.monotonic() < end:

@@ -23,6 +23,7 @@ import pytest
 from conftest import run_ttctl
 from cpp_node_lib import needs_gxx, sha, write
 from e2e_lib import LOCAL, Proc, Start, free_port, one_line, receiver, send
+from machine import scaled
 
 SIZE = 96_000
 RATE = "16000"  # B/s, the server's pace: a whole file in about 6 s
@@ -42,6 +43,7 @@ def partial_bytes(folder: Path) -> int:
 
 
 def wait_partial(folder: Path, at_least: int, proc: Proc | None = None, timeout: float = 30.0) -> int:
+    timeout = scaled(timeout)  # longer on a busy machine
     end = time.monotonic() + timeout
     while time.monotonic() < end:
         n = partial_bytes(folder)

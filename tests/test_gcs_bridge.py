@@ -25,7 +25,7 @@ import pytest
 from pymavlink import mavutil
 
 from e2e_lib import LOCAL, Start, free_port, relay
-from machine import busy
+from machine import busy, scaled
 
 BIN = Path(sys.executable).parent
 
@@ -60,6 +60,7 @@ class Beat:
 
 
 def wait_msg(m: Any, kind: str, pred: Any = lambda x: True, timeout: float = 10.0) -> Any:
+    timeout = scaled(timeout)  # longer on a busy machine
     end = time.monotonic() + timeout
     while time.monotonic() < end:
         x = m.recv_match(type=kind, blocking=True, timeout=0.5)
@@ -175,7 +176,7 @@ def test_a_flooding_ground_station_is_throttled_and_app_commands_keep_their_late
     threading.Thread(target=flood, daemon=True).start()
     try:
         assert tab.stdout is not None and tab.stdin is not None
-        deadline = time.monotonic() + 20
+        deadline = time.monotonic() + scaled(20)
         while time.monotonic() < deadline:  # the tablet says it is connected on stderr
             if "tablet: connected" in (tmp_path / "tablet.err").read_text():
                 break
@@ -258,6 +259,7 @@ def upload(m: Any, items: list[tuple[int, int, float]], timeout: float = 30.0) -
 
 
 def download(m: Any, timeout: float = 30.0) -> list[tuple[int, int, float]]:
+    timeout = scaled(timeout)  # longer on a busy machine
     count = None
     for _ in range(5):  # the list asked for again after 1.5 s of silence, as QGroundControl does
         m.mav.mission_request_list_send(1, 1, 0)

@@ -19,6 +19,7 @@ from typing import Any
 os.environ.setdefault("MAVLINK20", "1")  # before pymavlink is imported: ground stations speak MAVLink 2
 
 from e2e_lib import Start, run_mavproxy
+from machine import scaled
 from test_gcs_bridge_peers import HOME, M_PER_DEG, Gcs, chain, no_traceback
 
 ANSWER_WAIT = 6.0  # s a station waits for the answer to its one request (the bridge's bound is ~4 s)
@@ -148,7 +149,7 @@ def test_a_second_stations_mission_count_is_denied_beside_an_upload(tmp_path: Pa
         flood.start()
         ack = None
         pending = first
-        end = time.monotonic() + 40
+        end = time.monotonic() + scaled(40)
         while time.monotonic() < end:
             if pending is not None and pending.get_type() in ("MISSION_REQUEST_INT", "MISSION_REQUEST"):
                 s = int(pending.seq)

@@ -27,6 +27,7 @@ import pytest
 os.environ.setdefault("MAVLINK20", "1")  # before pymavlink is imported: ground stations speak MAVLink 2
 
 from e2e_lib import LOCAL, Proc, Start, data_file, free_port, run_mavproxy, until
+from machine import scaled
 from mavsdk_child import fly
 
 M_PER_DEG = 111_319.5
@@ -119,6 +120,7 @@ class Gcs:
                 return msg
 
     def wait(self, kind: str, cond: Callable[[Any], bool] = lambda m: True, timeout: float = 10.0) -> Any:
+        timeout = scaled(timeout)  # longer on a busy machine
         msg = self.pump(timeout, lambda m: m.get_type() == kind and cond(m))
         assert msg is not None, f"no {kind} as asked in {timeout} s"
         return msg
@@ -444,7 +446,7 @@ def test_tablet_script_flies_and_sends_a_file_while_a_ground_station_watches(tmp
         gcs.vehicle("HEARTBEAT", timeout=15)
         params = {"MPC_XY_VEL_MAX": gcs.param("MPC_XY_VEL_MAX"), "NAV_DLL_ACT": gcs.param_int("NAV_DLL_ACT")}
         top = 0
-        end = time.monotonic() + 120
+        end = time.monotonic() + scaled(120)
         while time.monotonic() < end and '"step": 6' not in c.tablet.stdout:
             p = gcs.pump(0.5, lambda x: x.get_type() == "GLOBAL_POSITION_INT" and x.get_srcSystem() == 1)
             top = max(top, p.relative_alt if p is not None else 0)

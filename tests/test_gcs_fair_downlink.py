@@ -17,6 +17,7 @@ from typing import Any
 os.environ.setdefault("MAVLINK20", "1")  # before pymavlink is imported: ground stations speak MAVLink 2
 
 from e2e_lib import LOCAL, Start, data_file
+from machine import scaled
 from test_gcs_bridge_peers import Gcs, chain, no_traceback
 
 IDLE_S = 8.0
@@ -72,7 +73,7 @@ def test_an_ftp_download_does_not_cost_another_station_the_vehicle(tmp_path: Pat
         idle_gpi, idle_gap = rate(listener, "GLOBAL_POSITION_INT", i0, i1), longest_gap(listener, i0, i1)
         thread = threading.Thread(target=download, args=(c.gcs[0], "/serve/log.bin", got, out), daemon=True)
         thread.start()
-        end = time.monotonic() + 75
+        end = time.monotonic() + scaled(75)
         while thread.is_alive() and time.monotonic() < end:
             listener.pump(0.5)
         thread.join(1)

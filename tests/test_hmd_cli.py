@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 
 from conftest import assert_no_traceback, run_ttctl, ttctl_cmd
+from machine import scaled
 from ttctl.hmd.formats import read_recording
 from ttctl.hmd.frames import pose_to_ros
 from ttctl.hmd.model import ControllerSample, PoseSample
@@ -167,7 +168,7 @@ def test_ctrl_c_finishes_the_file_and_exits_0(tmp_path: Path, fmt: str) -> None:
     out = tmp_path / f"live.{fmt}"
     p = subprocess.Popen(ttctl_cmd() + ["hmd", "dump", "-o", str(out)], stdout=subprocess.PIPE,
                          stderr=subprocess.PIPE, text=True)
-    end = time.monotonic() + 30
+    end = time.monotonic() + scaled(30)
     while not os.listdir(tmp_path) and time.monotonic() < end:  # the temporary file: recording has begun
         time.sleep(0.05)
     time.sleep(1.5)

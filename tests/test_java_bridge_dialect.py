@@ -28,6 +28,7 @@ import pytest
 
 from conftest import DIALECTS, ROOT, pymavlink_dialects, run_ttctl
 from e2e_lib import LOCAL, Start, free_port, relay
+from machine import scaled
 
 pytestmark = pytest.mark.skipif(shutil.which("javac") is None or shutil.which("java") is None,
                                 reason="needs a JDK (javac, java)")
@@ -197,7 +198,7 @@ def test_java_bridge_carries_the_users_dialect_to_its_stations(classes: Path, pm
     java = subprocess.Popen(["java", "-cp", str(classes), "RobolabBridge", str(front), str(listen), "500"],
                             stdin=subprocess.PIPE, stdout=out, stderr=subprocess.STDOUT, text=True)
     try:
-        end = time.monotonic() + 20
+        end = time.monotonic() + scaled(20)
         while "ready" not in (tmp_path / "bridge.out").read_text() and time.monotonic() < end:
             time.sleep(0.05)
         a, b = Station(pm, listen, 200), Station(pm, listen, 255)  # b: the tablet's own ids (QGroundControl's)
@@ -205,7 +206,7 @@ def test_java_bridge_carries_the_users_dialect_to_its_stations(classes: Path, pm
             a.unknown()
         want = {a: list(range(100, 110)), b: list(range(200, 210))}
         asked: dict[tuple[int, int], float] = {}
-        end = time.monotonic() + 50
+        end = time.monotonic() + scaled(50)
         while time.monotonic() < end and any(s not in st.statuses for st, seqs in want.items() for s in seqs):
             now = time.monotonic()
             for st, seqs in want.items():

@@ -24,7 +24,7 @@ import pytest
 from conformance_lib import build_java
 from conftest import ROOT
 from e2e_lib import LOCAL, Start, free_port, relay
-from machine import busy
+from machine import busy, scaled
 
 pytestmark = pytest.mark.skipif(not (shutil.which("javac") and shutil.which("java")),
                                 reason="needs a JDK (javac, java)")
@@ -108,6 +108,7 @@ class Driver:
         assert self.line("ready").startswith("ready")
 
     def line(self, prefix: str, timeout: float = 30) -> str:
+        timeout = scaled(timeout)  # longer on a busy machine
         assert self.p.stdout is not None
         end = time.monotonic() + timeout
         while time.monotonic() < end:

@@ -29,6 +29,7 @@ from pymavlink.dialects.v10 import common as v1
 from conformance_lib import build_java
 from conftest import ROOT
 from e2e_lib import LOCAL, Start, free_port, relay
+from machine import scaled
 from ttctl.bench import shipped
 from ttctl.wire.v1 import Upgrader, downgrade
 from v1_station import V1Station
@@ -136,7 +137,7 @@ def test_pymavlink_in_mavlink1_flies_through_the_java_bridge(classes: Path, tmp_
     beater = threading.Thread(target=st.beat, daemon=True)
     try:
         assert drv.stdout is not None and drv.stdout.readline().startswith("ready")
-        end = time.monotonic() + 30
+        end = time.monotonic() + scaled(30)
         while st.peer is None and time.monotonic() < end:  # the bridge's first (MAVLink 2) frames say where it is
             try:
                 st.peer = st.sock.recvfrom(4096)[1]

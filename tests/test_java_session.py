@@ -41,6 +41,7 @@ import pytest
 from conformance_lib import build_java
 from conftest import ROOT, manual
 from e2e_lib import LOCAL, Start, free_port, relay, send
+from machine import scaled
 
 pytestmark = pytest.mark.skipif(shutil.which("javac") is None or shutil.which("java") is None,
                                 reason="needs a JDK (javac, java)")
@@ -70,6 +71,7 @@ class Java:
         return self.out_path.read_text()
 
     def wait_for(self, text: str, timeout: float = 30.0) -> str:
+        timeout = scaled(timeout)  # longer on a busy machine
         end = time.monotonic() + timeout
         while time.monotonic() < end:
             for line in self.text.splitlines():
@@ -366,7 +368,7 @@ def test_a_pushed_file_resumes_after_the_tablet_is_killed(classes: Path, tmp_pat
                                "--target-compid", "190"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
         j1.wait_for("incoming incoming push.bin", timeout=30)
-        end = time.monotonic() + 60
+        end = time.monotonic() + scaled(60)
         while time.monotonic() < end and max(progress(j1.text, "push.bin"), default=0) < 24000:
             time.sleep(0.05)
         j1.kill()

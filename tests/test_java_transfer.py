@@ -28,6 +28,7 @@ import pytest
 from conformance_lib import build_java
 from conftest import ROOT
 from e2e_lib import LOCAL, SIZE, Start, free_port, receiver, relay, send
+from machine import scaled
 
 pytestmark = pytest.mark.skipif(shutil.which("javac") is None or shutil.which("java") is None,
                                 reason="needs a JDK (javac, java)")
@@ -58,6 +59,7 @@ class Driver:
         return self.out_path.read_text()
 
     def wait_for(self, text: str, timeout: float = 30.0) -> str:
+        timeout = scaled(timeout)  # longer on a busy machine
         end = time.monotonic() + timeout
         while time.monotonic() < end:
             for line in self.text.splitlines():

@@ -16,6 +16,7 @@ import pytest
 
 from conftest import assert_no_traceback, run_ttctl
 from e2e_lib import LOCAL, SIZE, Start, data_file, free_port, one_line, receiver, relay, send
+from machine import scaled
 
 # -- delivery ----------------------------------------------------------------------------------
 
@@ -167,7 +168,7 @@ def test_resume_after_the_receiver_is_killed(tmp_path: Path, start: Start) -> No
     recv = receiver(start, tmp_path, f"udpin:{LOCAL}:{b}", name="recv1")
     first = start("send1", "send-file", str(src), "--to", f"udpout:{LOCAL}:{a}", "--rate", "20000", "--json")
     inbox = tmp_path / "inbox"
-    end = time.monotonic() + 20
+    end = time.monotonic() + scaled(20)
     while _saved_bytes(inbox) < 16 * 1024:
         assert time.monotonic() < end and first.p.poll() is None, (first.stdout, first.stderr, recv.stdout)
         time.sleep(0.02)

@@ -14,6 +14,7 @@ from pymavlink.dialects.v20 import common as pm
 
 from conftest import assert_no_traceback, run_ttctl
 from e2e_lib import LOCAL, Start, data_file, free_port, one_line, receiver, send
+from machine import scaled
 
 PASSPHRASE = "field day 2026"
 KEY = hashlib.sha256(PASSPHRASE.encode()).digest()
@@ -113,7 +114,7 @@ def test_pymavlink_talks_to_a_signed_vehicle(tmp_path: Path, start: Start) -> No
         mav.signing.link_id = 1
         mav.signing.timestamp = int((time.time() - 1420070400) * 100_000)
         got: list[object] = []
-        deadline = time.monotonic() + 15
+        deadline = time.monotonic() + scaled(15)
         while time.monotonic() < deadline and len(got) < 5:
             s.sendto(bytes(pm.MAVLink_heartbeat_message(6, 8, 0, 0, 4, 3).pack(mav)), (LOCAL, port))
             try:
