@@ -8,6 +8,7 @@ Real processes: pymavlink and MAVProxy -> `emulate tablet --gcs` -> `link relay 
 
 from __future__ import annotations
 
+import contextlib
 import math
 import os
 import re
@@ -172,5 +173,71 @@ def test_a_second_stations_mission_count_is_denied_beside_an_upload(tmp_path: Pa
     assert "mission of 5 items received" in c.onboard.stderr, c.onboard.stderr[-3000:]
     assert ack is not None and ack.type == m.MAV_MISSION_ACCEPTED, (ack, c.onboard.stderr[-3000:])
     assert m.MAV_MISSION_DENIED in b_acks, b_acks
+    c.stop_tablet()
+    no_traceback(c.onboard, c.relay, c.tablet)
+
+
+def run_mavproxy_on_a_pty(port: int, steps: tuple[tuple[str, float], ...], cwd: Path) -> str:
+    """MAVProxy 1.8.75, unmodified, on a pseudo-terminal, as a user types at it (its console is
+    interactive there, unlike on a pipe): each step types its line and waits its seconds.
+    Returns what it printed."""
+    import pty
+    import subprocess
+
+    from e2e_lib import LOCAL, mavproxy_exe
+
+    master, slave = pty.openpty()
+    p = subprocess.Popen([mavproxy_exe(), f"--master=udpin:{LOCAL}:{port}", "--source-system=255",
+                          "--cmd=set param_ftp 0"], stdin=slave, stdout=slave, stderr=slave, cwd=cwd,
+                         start_new_session=True)
+    os.close(slave)
+    out = bytearray()
+
+    def read() -> None:
+        with contextlib.suppress(OSError):  # EIO once MAVProxy has gone
+            while data := os.read(master, 4096):
+                out.extend(data)
+
+    reader = threading.Thread(target=read, daemon=True)
+    reader.start()
+    try:
+        for line, wait in steps:
+            if line:
+                os.write(master, (line + "\r").encode())
+            time.sleep(scaled(wait))
+    finally:
+        p.kill()
+        p.wait()
+        reader.join(5)
+        os.close(master)
+    return out.decode(errors="replace")
+
+
+def test_mavproxy_on_a_pty_sets_an_int32_and_returns_the_vehicle(tmp_path: Path, start: Start) -> None:
+    """MAVProxy typed at on a terminal, through the RC link at 10 % loss (each of its commands
+    sent once): `param set` of an INT32 parameter takes (a second station reads the new value
+    from the vehicle), `arm throttle` and `takeoff` fly it, and `long NAV_RETURN_TO_LAUNCH` is
+    ACCEPTED and the vehicle returns (PX4's AUTO.RTL in its HEARTBEAT, as MAVProxy shows it)."""
+    c = chain(start, tmp_path, stations=2, model="random", seed=13)
+    witness = Gcs(c.gcs[1], sysid=200, compid=190)
+    try:
+        witness.vehicle("HEARTBEAT", timeout=15)
+        before = witness.param_int("NAV_DLL_ACT")
+        want = 2 if before != 2 else 3
+        got = run_mavproxy_on_a_pty(c.gcs[0], (("", 12.0), (f"param set NAV_DLL_ACT {want}", 4.0),
+                                               ("param show NAV_DLL_ACT", 2.0), ("arm throttle", 3.0),
+                                               ("takeoff 10", 8.0), ("long NAV_RETURN_TO_LAUNCH", 6.0)), tmp_path)
+        witness.pump(3.0)  # what came while MAVProxy ran (its parameter list among it: the old value)
+        after = witness.param_int("NAV_DLL_ACT")
+    finally:
+        witness.close()
+    assert after == want, (before, after, got[-3000:])
+    assert re.search(rf"NAV_DLL_ACT\s+{want}\b", got), got[-3000:]
+    assert re.search(r"COMMAND_ACK: COMPONENT_ARM_DISARM: ACCEPTED", got), got[-3000:]
+    assert re.search(r"COMMAND_ACK: NAV_TAKEOFF: ACCEPTED", got), got[-3000:]
+    assert re.search(r"COMMAND_ACK: NAV_RETURN_TO_LAUNCH: ACCEPTED", got), got[-3000:]
+    assert re.search(r"Mode RTL", got), got[-3000:]  # the vehicle's HEARTBEAT said AUTO.RTL, as MAVProxy read it
+    assert re.search(r"RETURN_TO_LAUNCH from 255/\d+: ACCEPTED\n(.*\n)*.*returning", c.onboard.stderr), \
+        c.onboard.stderr[-3000:]
     c.stop_tablet()
     no_traceback(c.onboard, c.relay, c.tablet)
