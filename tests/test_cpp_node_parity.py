@@ -184,13 +184,14 @@ def test_the_scheduler_builds_the_packets_pythons_builds(cpp_node_bins: dict[str
 
 def receiving_script(tmp: Path, seed: int, loss: float, size: int, mtu: int = 100, key: bytes | None = None,
                      start: int = 0, lose: Callable[[int, float], bool] | None = None,
-                     tablet_rate: float = 500.0, onboard_rate: float = 6700.0) -> tuple[list[str], list[str]]:
+                     tablet_rate: float = 500.0, onboard_rate: float = 6700.0,
+                     inbound: float | None = None) -> tuple[list[str], list[str]]:
     """A Python tablet (Endpoint 255/190, seeded, paced at `tablet_rate`) uploads a file and sends
     commands to a Python onboard Endpoint (1/240, paced at `onboard_rate`) over a channel of `mtu`-byte
     packets that loses `loss` of them either way (and the tablet's i-th packet sent at `now` when
     `lose(i, now)`), in virtual time (5 ms steps), both ends signing with `key` from timestamp
-    `start` if given. Returns the onboard end's input as a node_driver script, and what it sent
-    at each poll."""
+    `start` if given; the onboard end grants rates on an `inbound` B/s link if given. Returns
+    the onboard end's input as a node_driver script, and what it sent at each poll."""
     from ttctl.proto.endpoint import Endpoint
     from ttctl.proto.storage import BytesSource, ReceiveDir
 
@@ -202,7 +203,7 @@ def receiving_script(tmp: Path, seed: int, loss: float, size: int, mtu: int = 10
     tx = Endpoint(b, *TABLET, mtu=mtu, rate_Bps=tablet_rate, rng=random.Random(seed), signing=signing())
     # an action that accepts every command, as node_driver's (without one, both ends answer UNSUPPORTED)
     rx = Endpoint(b, 1, 240, mtu=mtu, rate_Bps=onboard_rate, receive_dir=ReceiveDir(tmp / "python"), signing=signing(),
-                  action=lambda msg: int(ttapi.TtResult.TT_RESULT_ACCEPTED))
+                  action=lambda msg: int(ttapi.TtResult.TT_RESULT_ACCEPTED), inbound_Bps=inbound)
     data = random.Random(seed + 1).randbytes(size)
     sender = tx.send_file("f.bin", (1, 240), source=BytesSource(data, "f.bin"))
     script: list[str] = []
@@ -239,26 +240,37 @@ def shipped_bindings() -> Any:
     return shipped()
 
 
-@pytest.mark.parametrize("seed,loss,mtu,signed", [(1, 0.1, 100, False), (2, 0.25, 100, False), (6, 0.1, 128, False),
-                                                 (11, 0.1, 100, True), (12, 0.1, 128, True)])
+@pytest.mark.parametrize("seed,loss,mtu,signed,inbound", [(1, 0.1, 100, False, None), (2, 0.25, 100, False, None),
+                                                         (6, 0.1, 128, False, None), (11, 0.1, 100, True, None),
+                                                         (12, 0.1, 128, True, None), (13, 0.1, 100, False, 500.0),
+                                                         (14, 0.1, 100, True, 500.0)])
 def test_the_node_answers_what_pythons_endpoint_answers(cpp_node_bins: dict[str, Path], tmp_path: Path, seed: int,
-                                                        loss: float, mtu: int, signed: bool) -> None:
+                                                        loss: float, mtu: int, signed: bool,
+                                                        inbound: float | None) -> None:
     """The C++ node and ttctl's Python Endpoint, as the onboard end of an upload with commands
     over a lossy channel in virtual time, given the same packets at the same moments, send the
     same packets byte for byte at the same moments: the same statuses (when, how many, which
     gaps, hold times), the same acks, the same pacing; and store the same file. On DJI's DTT
     (100-byte packets) and the Payload SDK channel (128: TT_FILE_DATA_FIT frames come in), and
-    signed (one-packet TT_FILE_DATA_FIT frames; signings started ahead of the clock sign alike)."""
+    signed (one-packet TT_FILE_DATA_FIT frames; signings started ahead of the clock sign alike).
+    With an inbound rate (the M100's 500 B/s uplink) both grant the lone upload CONTROL_FILL of
+    it once the tablet's commands are heard (sharing.py): the same grants in the same statuses."""
     key = random.Random(seed).randbytes(32) if signed else None
     start = shipped_bindings().mavlink.Signing.now() + 10**11
-    script, want = receiving_script(tmp_path, seed, loss, 20_000, mtu, key, start)
+    script, want = receiving_script(tmp_path, seed, loss, 20_000, mtu, key, start, inbound=inbound)
     if mtu != 100 or signed:
         assert sum("5ec300" in line for line in script if line.startswith("R")) > 20  # TT_FILE_DATA_FIT's msgid
     signing = [key.hex(), str(start)] if key is not None else []
-    run = subprocess.run([str(cpp_node_bins["driver"]), str(tmp_path / "cpp"), "-", "6700", "0", str(mtu), *signing],
-                         input="\n".join(script) + "\n", capture_output=True, text=True, timeout=120)
+    run = subprocess.run([str(cpp_node_bins["driver"]), str(tmp_path / "cpp"), "-", "6700", str(inbound or 0), str(mtu),
+                          *signing], input="\n".join(script) + "\n", capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stderr
     got = run.stdout.splitlines()
+    if inbound:  # a lone upload, granted because commands came: 0.75 of 500 B/s less room for the commands
+        from ttctl.proto.sharing import CONTROL_FILL, MIN_FILL, share
+
+        grants = {s.rate_grant for _, s in status_frames(got)} - {0}
+        assert grants and all(MIN_FILL * inbound <= g <= CONTROL_FILL * inbound for g in grants), grants
+        assert share(inbound, 1, 0.0, control=True) == int(CONTROL_FILL * inbound)
     assert len(got) == len(want)
     polls = [line for line in script if line.startswith("P")]
     for i, (g, w) in enumerate(zip(got, want, strict=True)):

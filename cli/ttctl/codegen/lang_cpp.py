@@ -87,6 +87,9 @@ _SUB_HEADERS = (*RUNTIME_HEADERS, "enums", "messages", "signing", "packets", "sh
 LINK_MESSAGES = ("HEARTBEAT", "TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_DATA", "TT_FILE_REQUEST", "TT_ACTION_COMMAND",
                  "TT_LOG", "TT_FILE_DATA_WIDE", "TT_COMMAND_ACK", "TT_FILE_REASON")
 LINK_ENUMS = ("TT_FILE_RESULT", "TT_FILE_FLAGS", "TT_RESULT")
+# The tablet's control traffic, which the node's rate grants leave room for once heard (as
+# proto/endpoint.py's `_control`): commands, set-points, VR poses and controllers.
+CONTROL_MESSAGES = ("TT_ACTION_COMMAND", "DJI_POSE_STAMPED", "TT_VR_POSE", "TT_VR_CONTROLLER")
 
 
 def carries_link(d: Dialect) -> bool:
@@ -317,6 +320,7 @@ class _Cpp:
             "setpoints": answers_setpoints(d),
             "plugin_handles": plugin_handles(d),
             "vr_confirm": confirms_vr_controller(d),
+            "control_ids": [m.id for m in d.messages if m.name in CONTROL_MESSAGES],
             "folder": folder(d, self.override),
             "umbrella": umbrella(d, self.override),
             "guard": lambda part: guard(d, part, self.override),

@@ -62,6 +62,9 @@ inline void Node::set_pipe(bool open, double now)
         // rate grants share out what the path of file data can carry
         receiver_->set_inbound(open ? cfg_.pipe_rate_Bps : cfg_.inbound_Bps);
     }
+    if (receiver_) {
+        receiver_->set_control_apart(open);  // commands stay in the packets: they never wait behind data
+    }
 }
 
 inline std::size_t Node::poll_pipe(double now, std::uint8_t* out)

@@ -307,6 +307,9 @@ inline bool Node::handle(const Frame& f)
         }
         return true;
     }
+    if (receiver_ && (f.msgid == 50004u || f.msgid == 50005u || f.msgid == 50011u || f.msgid == 50012u)) {
+        receiver_->heard_control(now);  // the tablet's control traffic shares the link: grants leave it room
+    }
     if (!for_us(f)) {
         ++stats_.ignored;
         return true;

@@ -156,6 +156,15 @@ public:
     /// What this end can take from its link, B/s, shared out among concurrent incoming
     /// transfers by rate grants (sharing.hpp; 0: no grants).
     void set_inbound(double Bps) noexcept { inbound_Bps_ = Bps > 0.0 ? Bps : 0.0; }
+    /// A control frame (a command, a set-point, a VR frame) came in at `now`: for
+    /// Sharing::CONTROL_WINDOW the grants leave room for such traffic (Sharing::share).
+    void heard_control(double now) noexcept
+    {
+        control_at_ = now;
+        heard_control_ = true;
+    }
+    /// File data takes another path than control frames (a MOP pipeline): no control grant.
+    void set_control_apart(bool apart) noexcept { control_apart_ = apart; }
     /// Each sharing transfer's rate grant, B/s (0: none).
     std::uint16_t grant() const noexcept { return grant_; }
     /// What else comes in (the node counts every packet from its link, on_data the data frames):
@@ -437,6 +446,9 @@ private:
     Unknown unknown_due_[TransferLimits::MAX_UNKNOWN] = {};
     std::size_t unknown_due_count_ = 0;
     double inbound_Bps_ = 0.0;
+    double control_at_ = 0.0;  // when a control frame last came in (if heard_control_)
+    bool heard_control_ = false;
+    bool control_apart_ = false;
     std::size_t packet_ = 100;  // the link's packet size
     std::size_t per_status_ = MAX_RANGES;  // gaps a status lists (as many as fit one packet)
     double packet() const noexcept { return static_cast<double>(packet_); }

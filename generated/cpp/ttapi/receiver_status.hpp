@@ -98,7 +98,8 @@ inline void FileReceiver::share(double now) noexcept
     }
     changed = changed || was != sharing_count_;  // one that shared was closed
     sharing_count_ = n;
-    const std::uint16_t grant = Sharing::share(inbound_Bps_, n, load_.other_Bps(now));
+    const bool control = heard_control_ && now - control_at_ < Sharing::CONTROL_WINDOW && !control_apart_;
+    const std::uint16_t grant = Sharing::share(inbound_Bps_, n, load_.other_Bps(now), control);
     if ((!changed && !Sharing::regrant(grant_, grant)) || grant == grant_) {
         return;
     }

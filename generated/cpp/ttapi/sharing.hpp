@@ -10,7 +10,11 @@
 // transfers it is receiving and has heard from lately (share()), and says each one's share in
 // every status. GRANT_FILL of the capacity goes to file data, less twice the other traffic it
 // measures coming in (InboundLoad: commands, offers, polls), never less than MIN_FILL of it. A
-// lone transfer gets no grant (0): it paces to its sender's own rate.
+// lone transfer gets no grant (0): it paces to its sender's own rate. Once a control frame (a
+// command, a set-point, a VR frame) has come in within CONTROL_WINDOW, the grants share
+// CONTROL_FILL of the capacity and a lone transfer is granted too, so that a command waits about
+// the packet on the air, not behind a full buffer (FileReceiver::heard_control); not while a MOP
+// pipeline carries the file data, where commands never wait behind it (set_control_apart).
 //
 // A grant is told again only when who shares changes or the share moves by more than REGRANT;
 // a new grant is told to the sharing transfers one packet's time at it apart, and each sender
@@ -42,15 +46,22 @@ struct Sharing {
     static constexpr double MIN_FILL = 0.5;  // of the capacity granted, whatever else comes in
     static constexpr double LOAD_WINDOW = 5.0;  // s over which the other traffic is measured
     static constexpr double REGRANT = 0.1;  // a grant changes (and is told) when the share moves by more than this
+    static constexpr double CONTROL_FILL = 0.75;  // of the capacity granted to file data while control traffic shares it
+    static constexpr double CONTROL_WINDOW = 60.0;  // s: a control frame heard within this: the link carries control
 
     /// Each transfer's grant when `sharing` transfers share `capacity_Bps`, of which `other_Bps`
-    /// is taken by frames that are not file data (0: no grant).
-    static std::uint16_t share(double capacity_Bps, std::size_t sharing, double other_Bps = 0.0) noexcept
+    /// is taken by frames that are not file data (0: no grant). With `control` (a command, a
+    /// set-point or a VR frame heard lately) a lone transfer is granted too, and the grants share
+    /// CONTROL_FILL of the capacity: paced to its link a transfer would fill the radio's buffer
+    /// for the commands of another process.
+    static std::uint16_t share(double capacity_Bps, std::size_t sharing, double other_Bps = 0.0,
+                               bool control = false) noexcept
     {
-        if (!(capacity_Bps > 0.0) || sharing < 2) {
+        if (!(capacity_Bps > 0.0) || sharing < 1 || (sharing < 2 && !control)) {
             return 0;
         }
-        const double budget = std::max(MIN_FILL * capacity_Bps, GRANT_FILL * capacity_Bps - OTHER_ROOM * other_Bps);
+        const double fill = control ? CONTROL_FILL : GRANT_FILL;
+        const double budget = std::max(MIN_FILL * capacity_Bps, fill * capacity_Bps - OTHER_ROOM * other_Bps);
         const double each = budget / static_cast<double>(sharing);
         if (each >= static_cast<double>(MAX_GRANT)) {
             return MAX_GRANT;
