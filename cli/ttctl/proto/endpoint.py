@@ -10,6 +10,7 @@ packet receiver of its own, so that two peers' packets never mix in one frame.
 
 from __future__ import annotations
 
+import dataclasses
 import random
 from collections import OrderedDict
 from collections.abc import Callable, Hashable
@@ -78,23 +79,20 @@ class Endpoint:
                          if receive_dir is not None else None)
         if self.receiver is not None:
             self.receiver.packet = mtu
-            self.receiver.ranges_per_status = ranges_per_status(mtu, signing is not None)
-            per = self.receiver.ranges_per_status
+            self.receiver.ranges_per_status = per = ranges_per_status(mtu, signing is not None)
             # as many gaps in a report as MAX_RANGES-gap statuses would hold, in more, one-packet statuses
-            self.receiver.cfg = TransferConfig(**{**vars(self.receiver.cfg), "status_batches": -(
-                -self.cfg.status_batches * MAX_RANGES // per)})
+            paced: dict[str, Any] = {"status_batches": -(-self.cfg.status_batches * MAX_RANGES // per)}
+            if rate_Bps:
+                # statuses go back over our own link: on a slow one, fewer of them (a status with a few
+                # gaps is about 60 bytes on the wire, its ranges truncated; a signature 13 more)
+                status = STATUS_BYTES + (SIGNATURE if signing is not None else 0)
+                paced["status_min_interval"] = max(self.cfg.status_min_interval, 1.5 * status / rate_Bps)
+                paced["status_tail_interval"] = max(self.cfg.status_tail_interval, 0.8 * status / rate_Bps)
+            self.receiver.cfg = dataclasses.replace(self.receiver.cfg, **paced)
         # the tablet's control traffic, which rate grants leave room for (not the other end's telemetry,
         # nor a sender's hello HEARTBEAT); ground stations' frames the onboard end takes over DTT count too
         self._control = tuple(getattr(bindings, n) for n in ("TtActionCommand", "DjiPoseStamped", "TtVrPose",
                                                               "TtVrController") if hasattr(bindings, n))
-        if self.receiver is not None and rate_Bps:
-            # statuses go back over our own link: on a slow one, fewer of them
-            # (a status with a few gaps is about 60 bytes on the wire, its ranges truncated; a signature 13 more)
-            status = STATUS_BYTES + (SIGNATURE if signing is not None else 0)
-            self.receiver.cfg = TransferConfig(**{
-                **vars(self.receiver.cfg),
-                "status_min_interval": max(self.cfg.status_min_interval, 1.5 * status / rate_Bps),
-                "status_tail_interval": max(self.cfg.status_tail_interval, 0.8 * status / rate_Bps)})
         self.serving = Serving(self, serve_dir)  # the files it serves, on request (fetches.py)
         self.compress = compress  # offer files deflated when that saves (sends and served fetches)
         self.senders: dict[int, FileSender] = {}
