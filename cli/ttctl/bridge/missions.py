@@ -118,19 +118,19 @@ class MissionRelay:
         or the last item when no MISSION_ACK came for it."""
         out = []
         for up in self.uploads.values():
+            # the vehicle has asked for the last item, or every item has gone up (pipelined, the
+            # vehicle need ask for none of them): its verdict is due
+            verdict_due = (up.wanted == up.count - 1 or len(up.cache) == up.count) and up.count - 1 in up.cache
             if up.wanted < 0 and not up.asks and now - up.count_sent >= COUNT_AGAIN and up.count_tries < COUNT_TRIES:
                 self._count_again(now, up)
                 out.append(up.count_frame)
-            elif (up.wanted == up.count - 1 or len(up.cache) == up.count) and up.count - 1 in up.cache \
-                    and any(self.waiting(f) for f in up.cache.values()):
+            elif verdict_due and any(self.waiting(f) for f in up.cache.values()):
                 up.last = now  # items still queued for the link: the wait for the verdict starts when they left
-            elif ((up.wanted == up.count - 1 or len(up.cache) == up.count) and up.count - 1 in up.cache
-                  and now - up.last >= ACK_WAIT and up.last_again < ACK_TRIES):
-                # the vehicle has asked for the last item, or every item has gone up (pipelined, the
-                # vehicle needs ask for none of them), and nothing came since: an item or the
-                # MISSION_ACK was lost (the station, its items all given, waits and sends nothing:
-                # MAVSDK then says TIMEOUT of an upload the vehicle stored). The last item again,
-                # which the vehicle answers with its verdict again, or with a request for one it lacks
+            elif verdict_due and now - up.last >= ACK_WAIT and up.last_again < ACK_TRIES:
+                # and nothing came since: an item or the MISSION_ACK was lost (the station, its items
+                # all given, waits and sends nothing: MAVSDK then says TIMEOUT of an upload the
+                # vehicle stored). The last item again, which the vehicle answers with its verdict
+                # again, or with a request for one it lacks
                 up.last_again += 1
                 up.last = now
                 out.append(up.cache[up.count - 1])
