@@ -40,6 +40,7 @@ import pytest
 from conformance_lib import pymavlink_module
 from conftest import ROOT
 from e2e_lib import LOCAL, free_port, send
+from machine import busy as busy_machine
 from machine import scaled
 from mop_lib import NODE, WARN, App, MopNode, build_mop_node, sha
 
@@ -295,6 +296,6 @@ def test_commands_keep_their_latency_during_a_file_on_the_pipeline(mop_node: Pat
     # in-test app itself (Python, beside the node) is what stalls now and then
     assert statistics.median(busy) <= statistics.median(idle) + 0.05, (idle, busy)
     p95 = lambda xs: xs[int(0.95 * (len(xs) - 1))]  # noqa: E731
-    assert p95(busy) <= p95(idle) + 0.5, (idle, busy)
+    assert p95(busy) <= p95(idle) + 0.5 * busy_machine(), (idle, busy)  # (the tail waits for cores too)
     stats = node.stop()
     assert stats["pipe_frames_in"] > 0, stats

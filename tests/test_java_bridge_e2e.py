@@ -312,15 +312,17 @@ def _fly(qgc: Gcs, drv: Driver, listen: int, outage: Callable[[float], float]) -
 
 
 GcsLimit = 128  # GcsUplink.PROTOCOL_LIMIT + NEWEST_LIMIT
+FLOOD_S = 8
 
 
 def _flood(qgc: Gcs, drv: Driver, params: bool) -> dict[str, Any]:
-    """5 s of 50 Hz MANUAL_CONTROL (and PARAM_REQUEST_LIST as often, with `params`) while the
-    app sends its commands; the uplink's GCS bytes stay within the default share (0.8) of the app's pace."""
+    """8 s of 50 Hz MANUAL_CONTROL (and PARAM_REQUEST_LIST as often, with `params`) while the
+    app sends its commands (a command that takes three tries at 10 % loss takes 3.7 s of them);
+    the uplink's GCS bytes stay within the default share (0.8) of the app's pace."""
     before = drv.stats()
-    drv.ask("lat 5")
+    drv.ask(f"lat {FLOOD_S}")
     start = time.monotonic()
-    end = start + 5
+    end = start + FLOOD_S
     nxt = start
     while time.monotonic() < end:
         qgc.m.mav.manual_control_send(1, 0, 0, 500, 0, 0)
