@@ -1,7 +1,7 @@
-"""Commands never lost to bulk, as real processes: five `ttctl send-file` uploads at once
+"""Commands never lost to bulk, as real processes: three `ttctl send-file` uploads at once
 through `ttctl link relay --profile m100` to `ttctl emulate onboard --profile m100` while
 `ttctl emulate tablet` (another process, its packets meeting theirs in the relay's two-packet
-buffer) sends fifty take-off and land commands, on a relay that loses nothing by chance. The
+buffer) sends ten take-off and land commands, on a relay that loses nothing by chance. The
 onboard end has heard the tablet's commands, so its rate grants leave them room
 (proto/sharing.py CONTROL_FILL): no command fails, their p95 stays within `bench latency`'s live
 bound (the idle p95 on the same relay + a full packet's time + 0.2 s), and every file arrives."""
@@ -17,31 +17,25 @@ from pathlib import Path
 
 from conftest import ROOT, ttctl_cmd
 from e2e_lib import LOCAL, Start, free_port, relay
-from machine import scaled
 from ttctl.bench.latency import bound_s, percentile
 from ttctl.link.model import load_profile
 
-SIZE = 10000  # B each: five of them keep the 500 B/s uplink busy for about two minutes
-UPLOADS = 5
-IDLE_PAIRS, BUSY_PAIRS = 5, 25  # take-off and land pairs: 10 commands alone, 50 beside the uploads
+SIZE = 4000  # B each: three of them keep the 500 B/s uplink busy for about half a minute
+SCRIPT = "".join("- takeoff: 2\n- wait: {until: state == hovering, timeout: 30}\n- land\n"
+                 "- wait: {until: state == landed, timeout: 30}\n" for _ in range(5))
 
 
-def script(pairs: int) -> str:
-    return "".join("- takeoff: 2\n- wait: {until: state == hovering, timeout: 30}\n- land\n"
-                   "- wait: {until: state == landed, timeout: 30}\n" for _ in range(pairs))
-
-
-def tablet(folder: Path, port: int, pairs: int) -> subprocess.Popen[str]:
-    (folder / "cmds.yaml").write_text(script(pairs))
+def tablet(folder: Path, port: int) -> subprocess.Popen[str]:
+    (folder / "cmds.yaml").write_text(SCRIPT)
     return subprocess.Popen([*ttctl_cmd(), "emulate", "tablet", "--to", f"udp:{LOCAL}:{port}", "--profile", "m100",
                              "--script", str(folder / "cmds.yaml"), "--json"],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=folder)
 
 
-def command_times(p: subprocess.Popen[str], timeout: float = 240) -> list[float]:
+def command_times(p: subprocess.Popen[str], timeout: float = 120) -> list[float]:
     """Seconds each take-off and land took: from the step before it ending to its own answer (the
     first, which includes connecting, not counted)."""
-    end = time.monotonic() + scaled(timeout)
+    end = time.monotonic() + timeout
     times: list[float] = []
     last = time.monotonic()
     assert p.stdout is not None
@@ -58,7 +52,7 @@ def command_times(p: subprocess.Popen[str], timeout: float = 240) -> list[float]
     return times[1:]
 
 
-def test_five_uploads_and_fifty_of_the_tablets_commands_through_the_m100_relay(tmp_path: Path, start: Start) -> None:
+def test_three_uploads_and_the_tablets_commands_through_the_m100_relay(tmp_path: Path, start: Start) -> None:
     a, b = free_port(), free_port()
     inbox = tmp_path / "inbox"
     start("onboard", "emulate", "onboard", "--listen", f"udpin:{LOCAL}:{b}", "--no-gcs", "--inbox", str(inbox),
@@ -66,21 +60,21 @@ def test_five_uploads_and_fifty_of_the_tablets_commands_through_the_m100_relay(t
     # no random loss: a command the radio loses costs a retry with or without bulk beside it (and
     # the seeded draws fall on different packets when uploads share the link); here only bulk may
     relay(start, a, b, "--profile", "m100", "--loss", "0", "--stats-interval", "0")
-    idle = command_times(tablet(tmp_path, a, IDLE_PAIRS))
+    idle = command_times(tablet(tmp_path, a))
     files = []
-    for i in range(UPLOADS):
+    for i in range(3):
         f = tmp_path / f"up{i}.bin"
         f.write_bytes(random.Random(i).randbytes(SIZE))
         files.append(f)
     senders = [subprocess.Popen([*ttctl_cmd(), "send-file", str(f), "--to", f"udp:{LOCAL}:{a}", "--profile", "m100",
-                                 "--timeout", "90", "--json", "--no-compress"],
+                                 "--timeout", "60", "--json", "--no-compress"],
                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT) for f in files]
     try:
         time.sleep(3.0)  # the uploads under way
-        during = command_times(tablet(tmp_path, a, BUSY_PAIRS))
+        during = command_times(tablet(tmp_path, a))
         assert all(s.poll() is None for s in senders), "the uploads ended before the commands: make the files larger"
         for s in senders:
-            out, err = s.communicate(timeout=scaled(240))
+            out, err = s.communicate(timeout=120)
             assert s.returncode == 0 and json.loads(out)["ok"], err
     finally:
         for s in senders:
@@ -91,5 +85,5 @@ def test_five_uploads_and_fifty_of_the_tablets_commands_through_the_m100_relay(t
     p95 = percentile(during, 0.95)
     print("MEASURED", json.dumps({"idle_ms": [round(1000 * x) for x in idle],
                                   "during_ms": [round(1000 * x) for x in during]}))
-    assert len(during) == 2 * BUSY_PAIRS - 1
+    assert len(during) == 9
     assert p95 <= ceiling, f"command p95 during uploads {1000 * p95:.0f} ms over {1000 * ceiling:.0f} ms"
