@@ -46,7 +46,7 @@ struct Sharing {
     static constexpr double MIN_FILL = 0.5;  // of the capacity granted, whatever else comes in
     static constexpr double LOAD_WINDOW = 5.0;  // s over which the other traffic is measured
     static constexpr double REGRANT = 0.1;  // a grant changes (and is told) when the share moves by more than this
-    static constexpr double CONTROL_FILL = 0.75;  // of the capacity granted to file data while control traffic shares it
+    static constexpr double CONTROL_FILL = 0.75;  // of the capacity granted to file data beside control traffic
     static constexpr double CONTROL_WINDOW = 60.0;  // s: a control frame heard within this: the link carries control
 
     /// Each transfer's grant when `sharing` transfers share `capacity_Bps`, of which `other_Bps`
