@@ -64,27 +64,31 @@ def test_one_shot_requests_at_10_percent_loss_are_answered(tmp_path: Path, start
 def test_takeoffs_resent_by_the_bridge_are_done_once(tmp_path: Path, start: Start) -> None:
     """At 30 % loss a take-off sent once is resent by the bridge when its ack does not come back
     in a round trip; the vehicle, which did it, answers the resend as a retry: each take-off is
-    done exactly once (the onboard end's log), and some were resends it recognised."""
+    done exactly once (the onboard end's log), and some were resends it recognised. (Every one
+    answered ACCEPTED was done; one whose every copy the link lost within the bridge's bound, as a
+    busy machine's longer round trips allow, is not done, and not answered either.)"""
     c = chain(start, tmp_path, model="random", seed=3, loss="0.3")
     gcs = Gcs(c.gcs[0])
     m = gcs.m
     nan = math.nan
-    sent = 0
+    sent = answered = 0
     try:
         gcs.vehicle("HEARTBEAT", timeout=20)
         assert gcs.command(m.MAV_CMD_COMPONENT_ARM_DISARM, 1) == m.MAV_RESULT_ACCEPTED
         tko = m.MAV_CMD_NAV_TAKEOFF
         for i in range(12):
             sent += 1  # each a new take-off (another altitude), sent once, confirmation 0
-            once(gcs, lambda i=i: gcs.conn.mav.command_long_send(1, 1, tko, 0, 0, 0, 0, nan, nan, nan, 300.0 + i),
-                 lambda x: x.get_type() == "COMMAND_ACK" and x.command == tko)
+            answered += once(gcs, lambda i=i: gcs.conn.mav.command_long_send(1, 1, tko, 0, 0, 0, 0, nan, nan, nan,
+                                                                             300.0 + i),
+                             lambda x: x.get_type() == "COMMAND_ACK" and x.command == tko
+                             and x.result == m.MAV_RESULT_ACCEPTED)
     finally:
         gcs.close()
     c.stop_tablet()
     log = c.onboard.stderr
     done = re.findall(r"NAV_TAKEOFF from \d+/\d+: ACCEPTED", log)
     again = re.findall(r"NAV_TAKEOFF from \d+/\d+ again: answered as before", log)
-    assert len(done) == sent, log[-3000:]
+    assert answered <= len(done) <= sent and answered >= sent - 2, (answered, sent, log[-3000:])  # none twice
     assert again, log[-3000:]  # the bridge's resends reached a vehicle that had done it
     no_traceback(c.onboard, c.relay, c.tablet)
 
