@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 
 from conftest import run_ttctl, ttctl_cmd
+from machine import scaled
 
 NOWHERE = "udpout:127.0.0.1:9"
 
@@ -58,7 +59,7 @@ def test_hmd_dump_into_a_fifo_waits_for_its_reader_and_hears_ctrl_c(tmp_path: Pa
     os.mkfifo(fifo)
     p = subprocess.Popen([*ttctl_cmd(), "hmd", "dump", "--duration", "30", "-o", str(fifo)],
                          stderr=subprocess.PIPE, text=True)
-    time.sleep(1.0)
+    time.sleep(scaled(1.5))  # (started and waiting: longer on a busy machine)
     assert p.poll() is None  # waiting for a reader
     p.send_signal(signal.SIGINT)
     _, stderr = p.communicate(timeout=20)
