@@ -23,6 +23,7 @@ from e2e_lib import Start, run_mavproxy
 from machine import scaled
 from test_gcs_bridge_peers import HOME, M_PER_DEG, Gcs, chain, no_traceback
 
+MAX_TAKEOFFS = 40  # P(no resend reaches a vehicle that did the take-off) ~ 0.79 ** 40 < 1e-4
 ANSWER_WAIT = 6.0  # s a station waits for the answer to its one request (the bridge's bound is ~4 s)
 
 
@@ -64,7 +65,8 @@ def test_one_shot_requests_at_10_percent_loss_are_answered(tmp_path: Path, start
 def test_takeoffs_resent_by_the_bridge_are_done_once(tmp_path: Path, start: Start) -> None:
     """At 30 % loss a take-off sent once is resent by the bridge when its ack does not come back
     in a round trip; the vehicle, which did it, answers the resend as a retry: each take-off is
-    done exactly once (the onboard end's log), and some were resends it recognised. (Every one
+    done exactly once (the onboard end's log), and some were resends it recognised (the seeded loss
+    falls on other packets as timing varies, so take-offs go on past 12 until one was). (Every one
     answered ACCEPTED was done; one whose every copy the link lost within the bridge's bound, as a
     busy machine's longer round trips allow, is not done, and not answered either.)"""
     c = chain(start, tmp_path, model="random", seed=3, loss="0.3")
@@ -76,7 +78,10 @@ def test_takeoffs_resent_by_the_bridge_are_done_once(tmp_path: Path, start: Star
         gcs.vehicle("HEARTBEAT", timeout=20)
         assert gcs.command(m.MAV_CMD_COMPONENT_ARM_DISARM, 1) == m.MAV_RESULT_ACCEPTED
         tko = m.MAV_CMD_NAV_TAKEOFF
-        for i in range(12):
+        again_re = r"NAV_TAKEOFF from \d+/\d+ again: answered as before"
+        for i in range(MAX_TAKEOFFS):  # at least 12; more until a resend reached the vehicle after it did one
+            if i >= 12 and re.search(again_re, c.onboard.stderr):
+                break
             sent += 1  # each a new take-off (another altitude), sent once, confirmation 0
             answered += once(gcs, lambda i=i: gcs.conn.mav.command_long_send(1, 1, tko, 0, 0, 0, 0, nan, nan, nan,
                                                                              300.0 + i),
@@ -87,8 +92,9 @@ def test_takeoffs_resent_by_the_bridge_are_done_once(tmp_path: Path, start: Star
     c.stop_tablet()
     log = c.onboard.stderr
     done = re.findall(r"NAV_TAKEOFF from \d+/\d+: ACCEPTED", log)
-    again = re.findall(r"NAV_TAKEOFF from \d+/\d+ again: answered as before", log)
-    assert answered <= len(done) <= sent and answered >= sent - 2, (answered, sent, log[-3000:])  # none twice
+    again = re.findall(again_re, log)
+    lost = 2 * math.ceil(sent / 12)  # take-offs whose every copy may be lost within the bridge's bound
+    assert answered <= len(done) <= sent and answered >= sent - lost, (answered, sent, log[-3000:])  # none twice
     assert again, log[-3000:]  # the bridge's resends reached a vehicle that had done it
     no_traceback(c.onboard, c.relay, c.tablet)
 
