@@ -62,8 +62,8 @@ name = "java"
 RUNTIME_FILES = [
     "Crc", "Wire", "Unsigned", "MavlinkMessage", "MessageInfo", "MavlinkDialect",
     "DecodeException", "Frame", "Parser", "Dispatcher", "Link", "UdpLink", "CommandContext",
-    "CommandException", "Command", "MessageMatcher", "SendCommand", "ReceiveCommand", "CommandJob", "CommandEnds",
-    "CommandQueue",
+    "CommandException", "Command", "MessageMatcher", "SendCommand", "ReceiveCommand", "CommandJob", "CommandIds",
+    "CommandEnds", "CommandQueue",
     "LinkScheduler", "DjiReceiving", "DjiLink", "PayloadLink", "PipelineLink",
     "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
     # the ground-station bridge (issue 22)

@@ -42,6 +42,15 @@ final class CommandEnds {
                 + (problem != null ? "; " + problem : ""), made, null);
     }
 
+    /** What the link says is wrong (for failure messages), or null. */
+    static String linkProblem(Link link, LinkScheduler scheduler) {
+        try {
+            return scheduler != null ? scheduler.linkProblem() : link.problem();
+        } catch (RuntimeException e) {
+            return null;
+        }
+    }
+
     /** Unsigned frames the link refused so far (0 if it cannot tell). */
     static long unsignedRefused(Link link) {
         try {

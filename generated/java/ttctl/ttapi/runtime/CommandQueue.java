@@ -2,7 +2,6 @@
 package ttctl.ttapi.runtime;
 
 import java.io.IOException;
-import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
@@ -14,7 +13,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
-import java.util.function.BiConsumer;
 import java.util.function.Consumer;
 
 /**
@@ -29,14 +27,12 @@ import java.util.function.Consumer;
  * of equal priority run one at a time; a lower priority waits until the higher ones in flight
  * have finished.
  *
- * <p><b>Ids and issue times.</b> Each submission gets a command id (1..65535; the first is drawn
- * at random for every queue, then counting up, skipping ids in flight) and an issue time (wall
- * clock, microseconds since 1970, increasing), the same for all its retries:
- * {@link CommandContext#commandId()} and {@link CommandContext#issuedUsec()}. The generated
- * command skeletons send them in command_id and time_usec unless the app set those fields. The
- * onboard end executes each (peer, command id, issue time) once and answers a retry with the
- * recorded ack, so a retry never runs an action twice and a restarted app's commands are never
- * taken for those of its earlier run.
+ * <p><b>Ids and issue times.</b> Each submission gets a command id and an issue time, the same
+ * for all its tries ({@link CommandContext#commandId()}, {@link CommandContext#issuedUsec()}; see
+ * {@link CommandIds}). The generated command skeletons send them in command_id and time_usec
+ * unless the app set those fields. The onboard end executes each (peer, command id, issue time)
+ * once and answers a retry with the recorded ack, so a retry never runs an action twice and a
+ * restarted app's commands are never taken for those of its earlier run.
  *
  * <p><b>Results.</b> Every {@link #submit} returns a future that always completes. Normally, with
  * the reply (null for a command that awaits none), only when the reply is a success (for acks:
@@ -70,8 +66,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
     private final PriorityQueue<CommandJob> pending = new PriorityQueue<>(16, CommandJob.ORDER);
     private final List<CommandJob> inFlight = new ArrayList<>();
     private long submitted;
-    private int nextId;
-    private long lastIssued;
+    private final CommandIds ids = new CommandIds();
     private boolean paused;
     private boolean closed;
     private Thread worker;
@@ -119,7 +114,6 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         this.compId = compId;
         this.ownListeners = listeners == null ? Callbacks.newThread("ttctl-command-callbacks") : null;
         this.listeners = listeners != null ? listeners : ownListeners;
-        this.nextId = new SecureRandom().nextInt(65535) + 1;
     }
 
     /** Starts the queue's thread (once); commands submitted before wait for it. */
@@ -127,12 +121,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         lock.lock();
         try {
             if (worker == null && !closed) {
-                Thread t = new Thread(new Runnable() {
-                    @Override
-                    public void run() {
-                        loop();
-                    }
-                }, "ttctl-command-queue");
+                Thread t = new Thread(this::loop, "ttctl-command-queue");
                 t.setDaemon(true);
                 worker = t;
                 t.start();
@@ -205,15 +194,12 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                     + ": the command queue is closed", 0, null));
         } else {
             // a cancelled future wakes the queue's thread: the command stops waiting at once
-            future.whenComplete(new BiConsumer<MavlinkMessage, Throwable>() {
-                @Override
-                public void accept(MavlinkMessage reply, Throwable error) {
-                    lock.lock();
-                    try {
-                        changed.signalAll();
-                    } finally {
-                        lock.unlock();
-                    }
+            future.whenComplete((reply, error) -> {
+                lock.lock();
+                try {
+                    changed.signalAll();
+                } finally {
+                    lock.unlock();
                 }
             });
         }
@@ -363,15 +349,6 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         }
     }
 
-    /** What the link says is wrong (for failure messages), or null. */
-    private String linkProblem() {
-        try {
-            return scheduler != null ? scheduler.linkProblem() : link.problem();
-        } catch (RuntimeException e) {
-            return null;
-        }
-    }
-
     // -- the queue's thread -----------------------------------------------------------------
     private boolean eligible(CommandJob head) {
         for (CommandJob j : inFlight) {
@@ -380,27 +357,6 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
             }
         }
         return true;
-    }
-
-    private int takeId() {
-        for (int n = 0; n < 65535; n++) {
-            int id = nextId;
-            nextId = nextId % 65535 + 1;
-            boolean used = false;
-            for (CommandJob j : inFlight) {
-                used |= j.commandId == id;
-            }
-            if (!used) {
-                return id;
-            }
-        }
-        return nextId; // 65535 commands in flight: not reached
-    }
-
-    private long takeIssueTime() {
-        long us = System.currentTimeMillis() * 1000L;
-        lastIssued = us > lastIssued ? us : lastIssued + 1;
-        return lastIssued;
     }
 
     private void loop() {
@@ -432,12 +388,7 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                             it.remove();
                             j.finished = true;
                             final MavlinkMessage reply = j.reply;
-                            work.add(new Runnable() {
-                                @Override
-                                public void run() {
-                                    CommandEnds.replied(listeners, j, reply);
-                                }
-                            });
+                            work.add(() -> CommandEnds.replied(listeners, j, reply));
                         } else if (j.future.isDone()) {
                             it.remove();
                             j.finished = true;
@@ -446,25 +397,15 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                             if (j.made < j.tries) {
                                 j.sending = true;
                                 final int attempt = j.made;
-                                work.add(new Runnable() {
-                                    @Override
-                                    public void run() {
-                                        sendTry(j, attempt);
-                                    }
-                                });
+                                work.add(() -> sendTry(j, attempt));
                             } else {
                                 it.remove();
                                 j.finished = true;
                                 final int made = j.made;
-                                work.add(new Runnable() {
-                                    @Override
-                                    public void run() {
-                                        CommandEnds.fail(listeners, j, CommandEnds.gaveUp(j, made,
-                                                lastHeard - j.startedAt < 0, linkProblem(),
-                                                CommandEnds.unsignedRefused(link) - j.unsignedAtStart,
-                                                scheduler != null && scheduler.signing()));
-                                    }
-                                });
+                                work.add(() -> CommandEnds.fail(listeners, j, CommandEnds.gaveUp(j, made,
+                                        lastHeard - j.startedAt < 0, CommandEnds.linkProblem(link, scheduler),
+                                        CommandEnds.unsignedRefused(link) - j.unsignedAtStart,
+                                        scheduler != null && scheduler.signing())));
                             }
                         } else {
                             next = Math.min(next, j.due - now);
@@ -477,18 +418,13 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                             work.add(CommandEnds.failing(listeners, j, CommandEnds.ended(j, 0)));
                             continue;
                         }
-                        j.commandId = takeId();
-                        j.issuedUsec = takeIssueTime();
+                        j.commandId = ids.take(inFlight);
+                        j.issuedUsec = ids.issueTime();
                         j.startedAt = now;
                         j.unsignedAtStart = CommandEnds.unsignedRefused(link);
                         j.sending = true;
                         inFlight.add(j);
-                        work.add(new Runnable() {
-                            @Override
-                            public void run() {
-                                begin(j);
-                            }
-                        });
+                        work.add(() -> begin(j));
                     }
                     if (!work.isEmpty()) {
                         break;
