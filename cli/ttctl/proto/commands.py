@@ -5,6 +5,16 @@ bulk data), and waits for the TT_COMMAND_ACK with the same id. It repeats the co
 backoff; after the last try it gives up and calls on_failure. Every command ends: on_success or
 on_failure is called exactly once.
 
+On a slow link (an Endpoint paced at 10 KB/s or less) a command whose ack has not come when it
+should have goes once more: a copy, not a try. "Should have" is the round trip of the commands
+answered at their first frame, smoothed as TCP smooths its (RFC 6298: SRTT + 4 RTTVAR), but never
+less than two and a half packets' time (the Endpoint's `copy_after`: 0.5 s on the M100's uplink,
+when the generated Java runtime's commands retry for the same reason). A radio buffer that other
+senders' packets filled, or a lost packet, costs that command the copy's delay rather than the
+retry's 1.5 s; the server answers the copy as it answers a retry. A command answered in time
+costs nothing more, and a round trip that grows (a busy buffer) moves the copy later, so that
+copies do not add to the queue they wait in.
+
 The server executes a (peer, command id, issue time) once: a retry (the same message again) gets
 the recorded ack without running the action twice, while a new command that happens to reuse an
 id (another process of the same peer, or one started again, numbers its commands afresh) has
@@ -35,14 +45,18 @@ class Command:
     timeout: float = 1.5  # first wait for the ack; doubles per retry
     on_success: Callable[[Command], None] | None = None
     on_failure: Callable[[Command], None] | None = None
+    copy_after: float | None = None  # s after the first send that a copy goes if no ack came (None: none)
     # filled in
     submitted_at: float = 0.0
     sent_at: list[float] = field(default_factory=list)
+    copies: int = 0  # copies sent (not tries)
+    copy_delay: float | None = None  # when after its first frame its copy was due (None: none)
     acked_at: float | None = None
     ack: Any = None  # the TtCommandAck that ended it
     error: str | None = None
     _due: float = 0.0
     _wait: float = 0.0
+    _copy_due: float | None = None
 
     @property
     def id(self) -> int:
@@ -70,6 +84,8 @@ class CommandClient:
         self.pending: dict[int, Command] = {}
         self._next_id = first_id if first_id is not None else random.randint(1, 65535)
         self.clock = clock
+        self.srtt: float | None = None  # round trips of commands answered at their first frame (Karn)
+        self.rttvar = 0.0
 
     def submit(self, cmd: Command, now: float) -> Command:
         if cmd.msg.command_id == 0:
@@ -90,10 +106,20 @@ class CommandClient:
         out: list[Any] = []
         for cmd in list(self.pending.values()):
             if now < cmd._due:
+                if cmd._copy_due is not None and now >= cmd._copy_due:
+                    cmd._copy_due = None
+                    cmd.copies += 1
+                    out.append(cmd.msg)
                 continue
             if len(cmd.sent_at) > cmd.retries:
                 self._fail(cmd, f"no ack after {len(cmd.sent_at)} tries")
                 continue
+            copy = self.copy_wait(cmd) if not cmd.sent_at else None
+            if copy is not None and copy < cmd._wait:
+                cmd.copy_delay = copy
+                cmd._copy_due = now + copy
+            else:
+                cmd._copy_due = None  # a retry goes instead
             cmd.sent_at.append(now)
             cmd._due = now + cmd._wait
             cmd._wait *= 2
@@ -109,6 +135,13 @@ class CommandClient:
         del self.pending[cmd.id]
         cmd.ack = ack
         cmd.acked_at = now
+        if len(cmd.sent_at) == 1 and not cmd.copies:  # which frame was answered is known: a sample
+            rtt = now - cmd.sent_at[0]
+            if self.srtt is None:
+                self.srtt, self.rttvar = rtt, rtt / 2
+            else:
+                self.rttvar = 0.75 * self.rttvar + 0.25 * abs(self.srtt - rtt)
+                self.srtt = 0.875 * self.srtt + 0.125 * rtt
         if cmd.ok:
             if cmd.on_success:
                 cmd.on_success(cmd)
@@ -120,6 +153,14 @@ class CommandClient:
             if cmd.on_failure:
                 cmd.on_failure(cmd)
         return cmd
+
+    def copy_wait(self, cmd: Command) -> float | None:
+        """When after its first frame a command's copy goes (None: no copy)."""
+        if cmd.copy_after is None:
+            return None
+        if self.srtt is None:
+            return cmd.copy_after
+        return max(cmd.copy_after, self.srtt + 4 * self.rttvar)
 
     def _fail(self, cmd: Command, why: str) -> None:
         self.pending.pop(cmd.id, None)
@@ -139,7 +180,8 @@ class CommandClient:
             self._fail(cmd, why)
 
     def deadline(self) -> float | None:
-        return min((c._due for c in self.pending.values()), default=None)
+        return min((c._due if c._copy_due is None else min(c._due, c._copy_due) for c in self.pending.values()),
+                   default=None)
 
 
 Outcome = int | tuple[int, str]

@@ -46,6 +46,10 @@ from .transfer import (
 TARGETED = "target_system"
 STATUS_BYTES = 60  # typical TT_FILE_STATUS frame
 MAX_SOURCES = 64  # packet receivers kept for distinct sources (the least recently heard goes first)
+# a command's copy goes at the earliest this many full packets' time after it (commands.py): a frame
+# that arrives behind the two full packets the radio's buffer holds is through in about that
+COPY_PACKETS = 2.5
+COPY_BELOW_BPS = 10_000.0  # ... on links paced at most this fast (DJI's DTT and low-speed channels)
 
 
 class Endpoint:
@@ -74,6 +78,8 @@ class Endpoint:
         self._last_rx: dict[Hashable, float] = {}
         self.geometry = Geometry(mtu, signing is not None)  # ValueError for a packet too small for file data
         self.scheduler = Scheduler(mtu, rate_Bps, sign=bindings.sign(signing) if signing is not None else None)
+        # a command's copy (commands.py), on a link slow enough for it to matter
+        self._copy_after = COPY_PACKETS * mtu / rate_Bps if rate_Bps and rate_Bps <= COPY_BELOW_BPS else None
         self.receiver = (FileReceiver(bindings, receive_dir, sysid, compid, self.cfg, on_event=self._file_event,
                                       unsolicited=unsolicited, inflate=inflate, inbound_Bps=inbound_Bps)
                          if receive_dir is not None else None)
@@ -233,7 +239,8 @@ class Endpoint:
     def command(self, msg: Any, target: tuple[int, int], retries: int = 3,
                 timeout: float = 1.5, on_success: Callable[[Command], None] | None = None,
                 on_failure: Callable[[Command], None] | None = None) -> Command:
-        return self.commands.submit(Command(msg, target, retries, timeout, on_success, on_failure), self.now)
+        return self.commands.submit(Command(msg, target, retries, timeout, on_success, on_failure,
+                                            copy_after=self._copy_after), self.now)
 
     def close(self) -> None:
         if self.receiver is not None:
