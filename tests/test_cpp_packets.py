@@ -265,8 +265,11 @@ def test_urgent_signed_frames_between_the_pieces_of_a_long_one(drv: dict[str, Pa
     from ttctl.wire.packets import packetize
 
     # a fixed timestamp: the refused frame's bytes are rescanned, and a 0xFD among its timestamp
-    # and signature bytes (which follow the timestamp) would count one more false start
-    t0 = 36_000_000_000_000
+    # and signature bytes (which follow the timestamp) would count one more false start. It lies
+    # in the future (2094): a signer takes the clock's time once that passes a given timestamp, so
+    # a past one (this test's first, 36e12, mid-2026) made the bytes, and the count, vary by run
+    t0 = 250_000_000_000_000
+    assert mavlink.Signing(KEY).now() < t0
     signing = mavlink.Signing(KEY, link_id=1, timestamp=t0)
     wide = ttapi.Encoder(sysid=1, compid=240, signing=signing).encode(
         ttapi.TtFileDataWide(transfer_id=1, offset=9, data=bytes(range(247))))

@@ -49,7 +49,9 @@ public final class V1BridgeCheck {
         byte[] hb = unhex(args[0]);
         station.send(new DatagramPacket(hb, hb.length, to));
         long end = System.nanoTime() + 10_000_000_000L;
-        while (bridge.v1Up() < 1 && System.nanoTime() < end) {
+        // until the HEARTBEAT is on the link, as a vehicle's answer can come only after that: the
+        // count goes up as the datagram is read, the station's route only as its frame is queued
+        while ((bridge.v1Up() < 1 || onLink.isEmpty()) && System.nanoTime() < end) {
             Thread.sleep(10);
         }
         byte[] unknown = unhex(args[1]);
