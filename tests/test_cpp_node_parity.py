@@ -185,12 +185,13 @@ def test_the_scheduler_builds_the_packets_pythons_builds(cpp_node_bins: dict[str
 def receiving_script(tmp: Path, seed: int, loss: float, size: int, mtu: int = 100, key: bytes | None = None,
                      start: int = 0, lose: Callable[[int, float], bool] | None = None,
                      tablet_rate: float = 500.0, onboard_rate: float = 6700.0,
-                     inbound: float | None = None) -> tuple[list[str], list[str]]:
+                     inbound: float | None = None, maps: bool = True) -> tuple[list[str], list[str]]:
     """A Python tablet (Endpoint 255/190, seeded, paced at `tablet_rate`) uploads a file and sends
     commands to a Python onboard Endpoint (1/240, paced at `onboard_rate`) over a channel of `mtu`-byte
     packets that loses `loss` of them either way (and the tablet's i-th packet sent at `now` when
     `lose(i, now)`), in virtual time (5 ms steps), both ends signing with `key` from timestamp
-    `start` if given; the onboard end grants rates on an `inbound` B/s link if given. Returns
+    `start` if given; the onboard end grants rates on an `inbound` B/s link if given; without
+    `maps` the tablet's offer does not say it reads TT_FILE_MAP (a sender from before it). Returns
     the onboard end's input as a node_driver script, and what it sent at each poll."""
     from ttctl.proto.endpoint import Endpoint
     from ttctl.proto.storage import BytesSource, ReceiveDir
@@ -206,6 +207,11 @@ def receiving_script(tmp: Path, seed: int, loss: float, size: int, mtu: int = 10
                   action=lambda msg: int(ttapi.TtResult.TT_RESULT_ACCEPTED), inbound_Bps=inbound)
     data = random.Random(seed + 1).randbytes(size)
     sender = tx.send_file("f.bin", (1, 240), source=BytesSource(data, "f.bin"))
+    if not maps:
+        from ttctl.proto.sender import MAP
+
+        sender._flags &= ~MAP
+        sender._use(sender.deflated)
     script: list[str] = []
     sent: list[str] = []
     now = 0.0
@@ -279,9 +285,9 @@ def test_the_node_answers_what_pythons_endpoint_answers(cpp_node_bins: dict[str,
     assert sum(w != "-" for w in want) > 20
 
 
-def status_frames(sent: list[str]) -> list[tuple[int, Any]]:
-    """The TT_FILE_STATUS frames in what an end sent (node_driver's lines: each poll's packets in
-    hex, '-' for none; a frame may go on in the next packet): (the whole frame's length, it)."""
+def status_frames(sent: list[str], msgid: int = ttapi.TtFileStatus.MSG_ID) -> list[tuple[int, Any]]:
+    """The TT_FILE_STATUS (or `msgid`) frames in what an end sent (node_driver's lines: each poll's
+    packets in hex, '-' for none; a frame may go on in the next packet): (the whole frame's length, it)."""
     from ttapi.mavlink import decode
 
     stream = b"".join(bytes.fromhex(p) for line in sent if line != "-" for p in line.split())
@@ -291,17 +297,18 @@ def status_frames(sent: list[str]) -> list[tuple[int, Any]]:
         assert stream[i] == 0xFD, (i, stream[i:i + 16].hex())
         n = 12 + stream[i + 1] + (13 if stream[i + 2] & 1 else 0)
         frame = stream[i:i + n]
-        if frame[7] | frame[8] << 8 | frame[9] << 16 == ttapi.TtFileStatus.MSG_ID:
+        if frame[7] | frame[8] << 8 | frame[9] << 16 == msgid:
             out.append((n, decode(frame)))
         i += n
     return out
 
 
+@pytest.mark.parametrize("maps", [False, True])
 @pytest.mark.parametrize("seed,mtu,signed,per,rate", [(21, 100, True, 5, 6700), (22, 100, False, 6, 6700),
                                                       (23, 128, True, 7, 6700), (24, 128, False, 7, 6700),
                                                       (25, 100, True, 5, 500), (26, 100, False, 6, 500)])
 def test_the_nodes_statuses_fit_one_packet(cpp_node_bins: dict[str, Path], tmp_path: Path, seed: int, mtu: int,
-                                           signed: bool, per: int, rate: int) -> None:
+                                           signed: bool, per: int, rate: int, maps: bool) -> None:
     """As ttctl's Python receiver (proto/endpoint.py ranges_per_status, RANGES_MORE): the node's
     statuses list only the gaps that fit one packet of its link (a 7-gap status is 102 bytes, 115
     signed: two DTT packets, lost when either is), as many in a report as three 7-gap statuses
@@ -309,21 +316,37 @@ def test_the_nodes_statuses_fit_one_packet(cpp_node_bins: dict[str, Path], tmp_p
     follow past received_end): an upload whose every other packet is lost for its first 1.5 s
     leaves dozens of gaps; the node sends what Python's Endpoint sends, byte for byte, and the
     transfer completes. On a 500 B/s link (the M100's uplink) statuses come as often as Python's:
-    at least 1.5 statuses' bytes at the link's rate apart (a signature counted), 0.8 near the end."""
-    from ttctl.proto.transfer import MAX_RANGES, RANGES_MORE, ranges_per_status
+    at least 1.5 statuses' bytes at the link's rate apart (a signature counted), 0.8 near the end.
+    To a sender that reads maps (`maps`: TT_FILE_FLAGS_MAP in its offer, as ttctl's senders) the
+    reports that need more than one status are TT_FILE_MAPs instead, each in one packet too."""
+    from ttctl.proto.transfer import MAP_MORE, MAX_RANGES, RANGES_MORE, ranges_per_status
 
     assert ranges_per_status(mtu, signed) == per
     key = random.Random(seed).randbytes(32) if signed else None
     start = shipped_bindings().mavlink.Signing.now() + 10**11
     script, want = receiving_script(tmp_path, seed, 0.0, 20_000, mtu, key, start,
                                     lose=lambda i, now: now < 1.5 and i % 2 == 1, tablet_rate=20_000.0,
-                                    onboard_rate=float(rate))
+                                    onboard_rate=float(rate), maps=maps)
     signing = [key.hex(), str(start)] if key is not None else []
     run = subprocess.run([str(cpp_node_bins["driver"]), str(tmp_path / "cpp"), "-", str(rate), "0", str(mtu), *signing],
                          input="\n".join(script) + "\n", capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stderr
     got = run.stdout.splitlines()
+    assert len(got) == len(want)
+    for i, (g, w) in enumerate(zip(got, want, strict=True)):
+        assert g == w, (i, g, w)
+    assert (tmp_path / "cpp" / "f.bin").read_bytes() == (tmp_path / "python" / "f.bin").read_bytes()
     statuses = status_frames(got)
+    if maps:
+        found = status_frames(got, ttapi.TtFileMap.MSG_ID)
+        assert len(found) >= 3, len(found)
+        for n, m in found:
+            assert n <= mtu and m.chunk > 0 and m.region_start <= m.received_contiguous + 8 * 52 * m.chunk, (n, m)
+        assert any(m.flags & MAP_MORE for _, m in found) or all(m.received_end - m.region_start
+                                                                  <= 8 * 52 * m.chunk for _, m in found)
+        assert all(s.range_count & ~RANGES_MORE <= per for _, s in statuses)  # (few gaps: a status)
+        return
+
     bursts: list[list[Any]] = []
     for n, s in statuses:
         assert n <= mtu, (n, s)
@@ -340,10 +363,6 @@ def test_the_nodes_statuses_fit_one_packet(cpp_node_bins: dict[str, Path], tmp_p
         more = [bool(s.range_count & RANGES_MORE) for s in b]
         assert more[:-1] == [True] * (len(b) - 1), b
         assert not more[-1] or len(b) == full, b
-    assert len(got) == len(want)
-    for i, (g, w) in enumerate(zip(got, want, strict=True)):
-        assert g == w, (i, g, w)
-    assert (tmp_path / "cpp" / "f.bin").read_bytes() == (tmp_path / "python" / "f.bin").read_bytes()
 
 
 @pytest.mark.parametrize("seed,loss,mtu,signed", [(3, 0.02, 100, False), (4, 0.1, 100, False), (5, 0.25, 100, False),

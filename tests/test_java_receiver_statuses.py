@@ -107,3 +107,34 @@ def test_statuses_as_often_as_pythons(burst_classes: Path, tmp_path: Path, signe
     assert py.receiver is not None
     assert got == {"min": pytest.approx(py.receiver.cfg.status_min_interval, rel=1e-12),
                    "tail": pytest.approx(py.receiver.cfg.status_tail_interval, rel=1e-12)}
+
+
+@pytest.mark.parametrize(("mtu", "signed"), [(100, True), (100, False), (128, True)])
+def test_maps_to_a_sender_that_reads_them_are_pythons(burst_classes: Path, tmp_path: Path, mtu: int,
+                                                      signed: bool) -> None:
+    """To an offer with TT_FILE_FLAGS_MAP, the Java receiver reports 400 gaps as TT_FILE_MAPs: bit
+    for bit what ttctl's Python receiver builds (proto/reports.py map_regions) from the same
+    holdings, each map in one packet of the link, two a report, the first flagged as more follow."""
+    from ttctl.proto.reports import map_regions
+    from ttctl.proto.transfer import map_bytes
+
+    gaps = 400
+    (tmp_path / "inbox").mkdir()
+    proc = subprocess.run(["java", "-cp", str(burst_classes), "ttctl.ttapi.transfer.BurstCheck",
+                           str(tmp_path / "inbox"), str(mtu), "signed" if signed else "unsigned", str(gaps), "6700",
+                           "map"], capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    calls = [json.loads(line) for line in proc.stdout.splitlines()][1:]
+    reports = [c["statuses"] for c in calls if any("map" in s for s in c["statuses"])]
+    assert reports, proc.stdout
+    frames = 2 * gaps - 1  # (BurstCheck's holdings with "map": every other 80-byte frame from 0)
+    held = [(80 * k, 80 * (k + 1)) for k in range(0, frames, 2)]
+    missing = [(a, b) for (_, a), (b, _) in itertools.pairwise(held)]
+    want = map_regions(80, held[-1][1], held[-1][0], 80, missing, map_bytes(mtu, signed), 2)
+    assert want[0][2][:2] == b"\xaa\xaa"  # a frame missing, one there, ...: the bits alternate
+    for report in reports:
+        assert all("map" in s for s in report), report
+        got = [(s["region_start"], s["received_end"], bytes.fromhex(s["map"])[:map_bytes(mtu, signed)],
+                bool(s["flags"] & 1)) for s in report]
+        assert got == want, (got[0][:2], want[0][:2])
+        assert all(s["len"] <= mtu and s["chunk"] == 80 and s["received_contiguous"] == 80 for s in report), report

@@ -3366,6 +3366,25 @@ struct Fields<mav::TtFileDataFit> {
     } };
 };
 
+template <>
+struct Fields<mav::TtFileMap> {
+    static constexpr std::array<FieldSpec, 13> value{ {
+        FIELD(mav::TtFileMap, target_system),
+        FIELD(mav::TtFileMap, target_component),
+        FIELD(mav::TtFileMap, transfer_id),
+        FIELD(mav::TtFileMap, meta_check),
+        FIELD(mav::TtFileMap, received_contiguous),
+        FIELD(mav::TtFileMap, region_start),
+        FIELD(mav::TtFileMap, received_end),
+        FIELD(mav::TtFileMap, last_offset),
+        FIELD(mav::TtFileMap, hold_ms),
+        FIELD(mav::TtFileMap, chunk),
+        FIELD(mav::TtFileMap, rate_grant),
+        FIELD(mav::TtFileMap, flags),
+        FIELD(mav::TtFileMap, map),
+    } };
+};
+
 #undef FIELD
 
 bool decode_fields(const mav::Frame& f, std::string& o)
@@ -4046,6 +4065,9 @@ bool decode_fields(const mav::Frame& f, std::string& o)
     case mav::TtFileDataFit::MSG_ID:
         decode_as<mav::TtFileDataFit>(f, o);
         return true;
+    case mav::TtFileMap::MSG_ID:
+        decode_as<mav::TtFileMap>(f, o);
+        return true;
     default:
         return false;
     }
@@ -4504,6 +4526,8 @@ std::string encode_fields(std::uint32_t msgid, const Json& req, const Header& h)
         return encode_as<mav::TtFileReason>(req, h);
     case mav::TtFileDataFit::MSG_ID:
         return encode_as<mav::TtFileDataFit>(req, h);
+    case mav::TtFileMap::MSG_ID:
+        return encode_as<mav::TtFileMap>(req, h);
     default:
         return error_json("unknown msgid " + std::to_string(msgid));
     }

@@ -830,6 +830,9 @@ public final class Conformance {
             case 50014:
                 fields50014((ttctl.ttapi.msg.TtFileDataFit) m, sb);
                 break;
+            case 50015:
+                fields50015((ttctl.ttapi.msg.TtFileMap) m, sb);
+                break;
             default:
                 throw new IllegalStateException("no fields for msgid " + m.msgId());
         }
@@ -5224,6 +5227,35 @@ public final class Conformance {
         ConformanceJson.u8s(sb, m.data);
     }
 
+    private static void fields50015(ttctl.ttapi.msg.TtFileMap m, StringBuilder sb) {
+        sb.append("\"target_system\":");
+        sb.append(m.target_system);
+        sb.append(",\"target_component\":");
+        sb.append(m.target_component);
+        sb.append(",\"transfer_id\":");
+        sb.append(m.transfer_id);
+        sb.append(",\"meta_check\":");
+        sb.append(m.meta_check);
+        sb.append(",\"received_contiguous\":");
+        sb.append(m.received_contiguous);
+        sb.append(",\"region_start\":");
+        sb.append(m.region_start);
+        sb.append(",\"received_end\":");
+        sb.append(m.received_end);
+        sb.append(",\"last_offset\":");
+        sb.append(m.last_offset);
+        sb.append(",\"hold_ms\":");
+        sb.append(m.hold_ms);
+        sb.append(",\"chunk\":");
+        sb.append(m.chunk);
+        sb.append(",\"rate_grant\":");
+        sb.append(m.rate_grant);
+        sb.append(",\"flags\":");
+        sb.append(m.flags);
+        sb.append(",\"map\":");
+        ConformanceJson.u8s(sb, m.map);
+    }
+
     // --- E ---------------------------------------------------------------------------------
 
     static String encodeLine(String text) {
@@ -5724,6 +5756,8 @@ public final class Conformance {
                 return build50013(fields);
             case 50014:
                 return build50014(fields);
+            case 50015:
+                return build50015(fields);
             default:
                 throw new IllegalArgumentException("unknown msgid " + msgId);
         }
@@ -13995,6 +14029,57 @@ public final class Conformance {
                     break;
                 default:
                     throw new Refusal("TT_FILE_DATA_FIT has no field '" + e.getKey() + "'");
+            }
+        }
+        return m;
+    }
+
+    private static MavlinkMessage build50015(Map<?, ?> fields) {
+        ttctl.ttapi.msg.TtFileMap m = new ttctl.ttapi.msg.TtFileMap();
+        for (Map.Entry<?, ?> e : fields.entrySet()) {
+            Object v = e.getValue();
+            switch ((String) e.getKey()) {
+                case "target_system":
+                    m.target_system = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_MAP.target_system");
+                    break;
+                case "target_component":
+                    m.target_component = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_MAP.target_component");
+                    break;
+                case "transfer_id":
+                    m.transfer_id = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_MAP.transfer_id");
+                    break;
+                case "meta_check":
+                    m.meta_check = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_MAP.meta_check");
+                    break;
+                case "received_contiguous":
+                    m.received_contiguous = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_MAP.received_contiguous");
+                    break;
+                case "region_start":
+                    m.region_start = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_MAP.region_start");
+                    break;
+                case "received_end":
+                    m.received_end = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_MAP.received_end");
+                    break;
+                case "last_offset":
+                    m.last_offset = ConformanceJson.integer(v, 0, 4294967295L, "TT_FILE_MAP.last_offset");
+                    break;
+                case "hold_ms":
+                    m.hold_ms = (int) ConformanceJson.integer(v, 0, 65535, "TT_FILE_MAP.hold_ms");
+                    break;
+                case "chunk":
+                    m.chunk = (int) ConformanceJson.integer(v, 0, 65535, "TT_FILE_MAP.chunk");
+                    break;
+                case "rate_grant":
+                    m.rate_grant = (int) ConformanceJson.integer(v, 0, 65535, "TT_FILE_MAP.rate_grant");
+                    break;
+                case "flags":
+                    m.flags = (int) ConformanceJson.integer(v, 0, 255, "TT_FILE_MAP.flags");
+                    break;
+                case "map":
+                    m.map = ConformanceJson.u8s(v, 52, "TT_FILE_MAP.map");
+                    break;
+                default:
+                    throw new Refusal("TT_FILE_MAP has no field '" + e.getKey() + "'");
             }
         }
         return m;

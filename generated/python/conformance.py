@@ -285,6 +285,7 @@ _KINDS: dict[str, list[tuple[str, int]]] = {
     "TT_VR_CONTROLLER": [("int", 8), ("int", 4), ("int", 1), ("int", 1), ("float", 4), ("float", 4), ("float", 4), ("int", 2)],
     "TT_FILE_REASON": [("int", 1), ("int", 1), ("int", 4), ("int", 1), ("text", 1)],
     "TT_FILE_DATA_FIT": [("int", 4), ("int", 4), ("int", 1), ("bytes", 1)],
+    "TT_FILE_MAP": [("int", 1), ("int", 1), ("int", 4), ("int", 4), ("int", 4), ("int", 4), ("int", 4), ("int", 4), ("int", 2), ("int", 2), ("int", 2), ("int", 1), ("bytes", 1)],
 }
 
 
@@ -541,6 +542,7 @@ _TYPES: dict[str, list[tuple[str, int]]] = {
     "TT_VR_CONTROLLER": [("uint64_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 0), ("float", 0), ("float", 0), ("float", 0), ("uint16_t", 0)],
     "TT_FILE_REASON": [("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("char", 80)],
     "TT_FILE_DATA_FIT": [("uint32_t", 0), ("uint32_t", 0), ("uint8_t", 0), ("uint8_t", 246)],
+    "TT_FILE_MAP": [("uint8_t", 0), ("uint8_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint32_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint16_t", 0), ("uint8_t", 0), ("uint8_t", 52)],
 }
 
 # The refusals of field values, worded alike in the three programs: "<where>: expected <what>,

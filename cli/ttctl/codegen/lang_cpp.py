@@ -85,7 +85,7 @@ _SUB_HEADERS = (*RUNTIME_HEADERS, "enums", "messages", "signing", "packets", "sh
 # What the onboard link runtime (commands.hpp, transfer.hpp, node.hpp) is written against: these
 # messages with ttctl's ids and CRC_EXTRA (ttctl.wire.contract), and these enums.
 LINK_MESSAGES = ("HEARTBEAT", "TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_DATA", "TT_FILE_REQUEST", "TT_ACTION_COMMAND",
-                 "TT_LOG", "TT_FILE_DATA_WIDE", "TT_COMMAND_ACK", "TT_FILE_REASON")
+                 "TT_LOG", "TT_FILE_DATA_WIDE", "TT_COMMAND_ACK", "TT_FILE_REASON", "TT_FILE_MAP")
 LINK_ENUMS = ("TT_FILE_RESULT", "TT_FILE_FLAGS", "TT_RESULT")
 # The tablet's control traffic, which the node's rate grants leave room for once heard (as
 # proto/endpoint.py's `_control`): commands, set-points, VR poses and controllers.

@@ -78,8 +78,9 @@ TRANSFER_FILES = ["RangeSet", "Names", "TransferConfig", "TransferResult", "Tran
 TRANSFER_FILES += ["SentLog", "ReceiverStatuses", "Sharing"]  # split out of FileSender and FileReceiver; rate grants
 TRANSFER_FILES += ["Geometry"]  # the data frames the link's packet size allows
 TRANSFER_FILES += ["DataPath"]  # file data on a MOP pipeline while it is open (issue 27)
+TRANSFER_FILES += ["Reports"]  # a receiver's report as the sender reads it: ranges, or a map (TT_FILE_MAP)
 TRANSFER_MESSAGES = {"TT_FILE_OFFER", "TT_FILE_STATUS", "TT_FILE_REASON", "TT_FILE_DATA", "TT_FILE_DATA_WIDE",
-                     "TT_FILE_DATA_FIT", "TT_FILE_REQUEST"}
+                     "TT_FILE_DATA_FIT", "TT_FILE_REQUEST", "TT_FILE_MAP"}
 
 
 

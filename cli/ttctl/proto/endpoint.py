@@ -39,6 +39,7 @@ from .transfer import (
     WIDE,
     Geometry,
     TransferConfig,
+    map_bytes,
     ranges_per_status,
     reason_text,
 )
@@ -86,6 +87,7 @@ class Endpoint:
         if self.receiver is not None:
             self.receiver.packet = mtu
             self.receiver.ranges_per_status = per = ranges_per_status(mtu, signing is not None)
+            self.receiver.map_bytes = map_bytes(mtu, signing is not None)
             # as many gaps in a report as MAX_RANGES-gap statuses would hold, in more, one-packet statuses
             paced: dict[str, Any] = {"status_batches": -(-self.cfg.status_batches * MAX_RANGES // per)}
             if rate_Bps:
@@ -391,6 +393,10 @@ class Endpoint:
             self._on_offer(now, msg)
         elif isinstance(msg, b.TtFileStatus):
             self._on_status(now, msg)
+        elif isinstance(msg, b.TtFileMap):
+            sender = self.senders.get(msg.transfer_id)
+            if sender is not None and sender.target == (msg.get_srcSystem(), msg.get_srcComponent()):
+                sender.on_map(now, msg)
         elif isinstance(msg, b.TtFileReason):
             self._on_reason(now, msg)
         elif isinstance(msg, b.TtFileRequest):

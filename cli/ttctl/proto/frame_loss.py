@@ -18,7 +18,8 @@ from typing import Any
 
 from .transfer import WIDE, wilson_upper
 
-WINDOW = 64  # outcomes kept per frame size
+WINDOW = 64  # the latest outcomes per frame size the estimate comes from
+LONG_WINDOW = 256  # and those the narrow frames' estimate must also allow, before going wide
 MIN_OUTCOMES = 8  # before an estimate
 HYSTERESIS = 0.02  # efficiency difference under which the current frame size stays
 
@@ -26,6 +27,7 @@ HYSTERESIS = 0.02  # efficiency difference under which the current frame size st
 class FrameLoss:
     def __init__(self) -> None:
         self.loss: dict[str, float | None] = {"narrow": None, "wide": None}  # per-packet loss estimates
+        self.long_loss: float | None = None  # narrow frames' over the longer window
         self._unclassified: list[tuple[int, int, float, str]] = []  # first sends not yet known lost or not
         # the latest first sends by the time they left: (time, lost?). A loss is known as soon as a status
         # reports the gap, an arrival only once a status covers it (later, when gaps are many and each
@@ -52,7 +54,7 @@ class FrameLoss:
     def _outcome(self, mode: str, when: float, lost: bool) -> None:
         window = self._outcomes[mode]
         bisect.insort(window, (when, lost))
-        if len(window) > WINDOW:
+        if len(window) > LONG_WINDOW:
             window.pop(0)
 
     def classify(self, horizon: float, re: int, truncated: bool, missing: list[tuple[int, int]],
@@ -71,16 +73,23 @@ class FrameLoss:
             self._outcome(mode, when, any(a < end and start < b for a, b in missing))
         self._unclassified = keep
         for mode in ("narrow", "wide"):
-            window = self._outcomes[mode]
+            window = self._outcomes[mode][-WINDOW:]
             if len(window) >= MIN_OUTCOMES:
                 # pessimistic: wide frames are costly
                 frame_loss = wilson_upper(sum(lost for _, lost in window), len(window))
                 self.loss[mode] = frame_loss if mode == "narrow" else geometry.packet_loss_from_wide(frame_loss)
+        longer = self._outcomes["narrow"]
+        if len(longer) > WINDOW:
+            self.long_loss = wilson_upper(sum(lost for _, lost in longer), len(longer))
 
     def best(self, current: str, geometry: Any) -> str:
         """The frame size that carries more file bytes per link byte at the loss measured (the
         current one while the two are within HYSTERESIS; narrow before anything is known)."""
         n, w = self.loss["narrow"], self.loss["wide"]
+        if current == "narrow" and n is not None and self.long_loss is not None:
+            # slow to go wide, quick to come back: under bursts of loss a second without one is
+            # common, and wide frames sent into the next burst are lost three packets at a time
+            n = max(n, self.long_loss)
         p = w if current == "wide" and w is not None else (n if n is not None else w)
         if p is None:
             return "narrow"

@@ -43,6 +43,7 @@ class Incoming:
         self.started = now
         self.last_data: float | None = None
         self.last_offset = 0
+        self.chunk = 0  # the latest data frame's capacity: what a bit of a TT_FILE_MAP stands for
         self.seen_end = False  # the last chunk has arrived once: the tail, where every round trip counts
         self.gap_dt = 0.05  # EWMA of the time between data frames
         self.quiet_due: float | None = None  # report when data stops coming

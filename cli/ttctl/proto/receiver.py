@@ -29,9 +29,12 @@ from ..wire.contract import TtFileResult as R
 from .deflate import InflateError, parse_deflate_meta
 from .incoming import Incoming
 from .names import SHA_LEN, Refused, check_name
+from .reports import map_regions
 from .sharing import ACTIVE_WINDOW, CONTROL_WINDOW, REGRANT, InboundLoad, share
 from .storage import DiskFull, Partial, ReceiveDir, StorageError, partial_key
 from .transfer import (
+    MAP_MAX,
+    MAP_MORE,
     MAX_RANGES,
     NARROW,
     NARROW_FRAME,
@@ -63,7 +66,9 @@ _EXPLAINED = {R.TT_FILE_RESULT_REFUSED_NAME, R.TT_FILE_RESULT_REFUSED_EXISTS, R.
               R.TT_FILE_RESULT_REFUSED_BUSY, R.TT_FILE_RESULT_FAILED_CHECKSUM, R.TT_FILE_RESULT_FAILED_DISK_FULL,
               R.TT_FILE_RESULT_FAILED_IO, R.TT_FILE_RESULT_REFUSED_UNSUPPORTED}
 DEFLATE = int(TtFileFlags.TT_FILE_FLAGS_DEFLATE)
-KNOWN_FLAGS = int(TtFileFlags.TT_FILE_FLAGS_OVERWRITE | TtFileFlags.TT_FILE_FLAGS_CANCEL) | DEFLATE
+MAP = int(TtFileFlags.TT_FILE_FLAGS_MAP)
+KNOWN_FLAGS = int(TtFileFlags.TT_FILE_FLAGS_OVERWRITE | TtFileFlags.TT_FILE_FLAGS_CANCEL) | DEFLATE | MAP
+MAP_BURST = 2  # maps per report at most (one covers hundreds of frames)
 
 
 class FileReceiver:
@@ -98,6 +103,7 @@ class FileReceiver:
         self.control_at: float | None = None  # when a control frame (a command, a setpoint) last came in
         self.control_apart = False  # file data takes another path than control (a pipeline): no control grant
         self.ranges_per_status = MAX_RANGES  # gaps per status: as many as fit one packet (set by the endpoint)
+        self.map_bytes = 0  # a TT_FILE_MAP's map bytes that fit one packet (set by the endpoint; 0: no maps)
         self._grant_field = "rate_grant" in getattr(bindings.TtFileStatus, "FIELDS", ("rate_grant",))
 
     def expect(self, peer: tuple[int, int], request_id: int, name: str) -> None:
@@ -302,6 +308,7 @@ class FileReceiver:
             t.gap_dt = 0.8 * t.gap_dt + 0.2 * min(1.0, now - t.last_data)
         t.last_data = now
         t.last_offset = offset
+        t.chunk = cap
         ranges = t.partial.ranges
         new_gap = len(ranges) > gaps_before
         at_end = offset + length >= t.size
@@ -436,6 +443,8 @@ class FileReceiver:
         rc = ranges.prefix()
         last = max((b for _, b in ranges), default=0)
         gaps = ranges.gaps(rc, last)
+        if len(gaps) > self.ranges_per_status and t.flags & MAP and self.map_bytes and t.chunk:
+            return self._maps(t, rc, last, gaps)
         out = []
         start = rc
         per = self.ranges_per_status
@@ -448,6 +457,19 @@ class FileReceiver:
             if not more:
                 break
         return out
+
+    def _maps(self, t: Incoming, rc: int, last: int, gaps: list[tuple[int, int]]) -> list[Any]:
+        """More gaps than a status lists: maps, a bit a frame, each one packet (reports.py)."""
+        return [self._map(t, rc, a, b, t.chunk, bits, more)
+                for a, b, bits, more in map_regions(rc, last, t.last_offset, t.chunk, gaps, self.map_bytes, MAP_BURST)]
+
+    def _map(self, t: Incoming, rc: int, region: int, re: int, chunk: int, bits: bytes, more: bool) -> Any:
+        return self.b.TtFileMap(
+            target_system=t.key[0], target_component=t.key[1], transfer_id=t.key[2], meta_check=t.check,
+            received_contiguous=rc, region_start=region, received_end=re, last_offset=t.last_offset,
+            hold_ms=min(65535, int(1000 * (self.now - t.last_data))) if t.last_data is not None else 65535,
+            chunk=chunk, rate_grant=self.grant if t.key in self.sharing else 0, flags=MAP_MORE if more else 0,
+            map=list(bits) + [0] * (MAP_MAX - len(bits)))
 
     def _share(self, now: float) -> None:
         """Who shares the link now (receiving, heard from lately); on a change, the new grant

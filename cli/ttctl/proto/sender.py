@@ -26,11 +26,11 @@ from .deflate import DeflatedSource, deflate_meta, deflated
 from .frame_loss import FrameLoss
 from .names import Refused, check_name, encoded
 from .ranges import RangeSet
+from .reports import Report, read_map, read_status
 from .sharing import GrantPacer
 from .transfer import (
     DTT,
     META_PART,
-    RANGES_MORE,
     RESULT_TEXT,
     WIDE,
     TransferConfig,
@@ -41,6 +41,8 @@ from .transfer import (
     reason_text,
     result_name,
 )
+
+MAP = int(TtFileFlags.TT_FILE_FLAGS_MAP)
 
 
 class FileSender:
@@ -65,7 +67,8 @@ class FileSender:
         self.target = target
         self.cfg = config or TransferConfig()
         self.request_id = request_id
-        self._flags = int(TtFileFlags.TT_FILE_FLAGS_OVERWRITE) if overwrite else 0
+        # TT_FILE_FLAGS_MAP: this sender reads TT_FILE_MAP (a receiver that never sends one ignores it)
+        self._flags = (int(TtFileFlags.TT_FILE_FLAGS_OVERWRITE) if overwrite else 0) | MAP
         self.fallback: str | None = None  # why a deflated offer went back to the file as it is
         # compress: True decides here; a DeflatedSource of this file was decided before (the
         # command line deflates before its link starts, so that a big file blocks nothing)
@@ -436,6 +439,14 @@ class FileSender:
             self.busy = self.busy or RESULT_TEXT["REFUSED_BUSY"]
             self.state = "offering"  # keep offering (with backoff) until there is room or time is up
             return
+        if code == R.TT_FILE_RESULT_REFUSED_UNSUPPORTED and self._flags & MAP:
+            # a receiver from before TT_FILE_MAP refuses the flag it does not know: offer again without
+            # it (and if it refuses a zlib stream too, that comes next), under a new id
+            self._flags &= ~MAP
+            self._use(self.deflated)
+            self._restart(now, count=False)
+            self.last_progress = now
+            return
         if self.deflated is not None and code in (R.TT_FILE_RESULT_REFUSED_UNSUPPORTED, R.TT_FILE_RESULT_REFUSED_NAME,
                                                   R.TT_FILE_RESULT_FAILED_CHECKSUM):
             # it does not inflate, or (a receiver from before deflate) took the original size
@@ -471,7 +482,22 @@ class FileSender:
         if grant and (self.stats.min_grant is None or grant < self.stats.min_grant):
             self.stats.min_grant = grant
         self._rtt_from_echo(now, msg)
-        self._apply_status(now, msg)
+        self._apply(now, read_status(msg, self.size), msg)
+        if self.on_progress:
+            self.on_progress(self)
+
+    def on_map(self, now: float, msg: Any) -> None:
+        """A TT_FILE_MAP: a status in progress whose gaps come as a bit a chunk."""
+        if self.done or msg.transfer_id != self.id or msg.meta_check != self.check or self.state == "offering":
+            return  # (a map is sent only once data flows: after the status that accepted the offer)
+        self.last_heard = now
+        self.stats.statuses += 1
+        grant = msg.rate_grant
+        self.pacer.update(grant, now)
+        if grant and (self.stats.min_grant is None or grant < self.stats.min_grant):
+            self.stats.min_grant = grant
+        self._rtt_from_echo(now, msg)
+        self._apply(now, read_map(msg, self.size), msg)
         if self.on_progress:
             self.on_progress(self)
 
@@ -497,13 +523,11 @@ class FileSender:
             self.rtt = 0.8 * self.rtt + 0.2 * sample
 
     def _apply_status(self, now: float, msg: Any) -> None:
-        rc = min(msg.received_contiguous, self.size)
-        region = max(rc, min(msg.region_start, self.size))
-        re = max(region, min(msg.received_end, self.size))
-        n = min(msg.range_count & ~RANGES_MORE, len(msg.ranges) // 2)
-        pairs = list(msg.ranges)
-        missing = [(max(pairs[2 * i], region), min(pairs[2 * i + 1], re)) for i in range(n)]
-        missing = [(a, b) for a, b in missing if a < b]
+        self._apply(now, read_status(msg, self.size), msg)
+
+    def _apply(self, now: float, report: Report, msg: Any) -> None:
+        """What a status or a map says (reports.py), `msg` for its echo of the latest frame."""
+        rc, region, re, missing, truncated = report.rc, report.region, report.end, report.missing, report.truncated
         before = self.acked.total()
         self._ack(0, rc)
         pos = region
@@ -527,8 +551,6 @@ class FileSender:
         echo = self._sends.get(msg.last_offset)
         if echo is not None and msg.hold_ms != 65535:
             horizon = min(horizon, echo[0] - 2 * self.geometry.mtu * self.byte_time)
-        # bytes past received_end are unknown, not missing
-        truncated = bool(msg.range_count & RANGES_MORE) or n >= len(msg.ranges) // 2
         if re < self.next_new and not truncated:
             missing = [*missing, (re, self.next_new)]
         for a, b in missing:

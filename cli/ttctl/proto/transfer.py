@@ -61,11 +61,20 @@ def ranges_per_status(mtu: int, signed: bool) -> int:
     room = mtu - STATUS_FIXED - (SIGNATURE if signed else 0)
     return max(1, min(MAX_RANGES, room // 8))
 REASON_BYTES = 80
+MAP_FIXED = 12 + 33  # TT_FILE_MAP's header, checksum and payload before its map
+MAP_MAX = 52  # its map field's bytes
+MAP_MORE = 1  # its flags: more gaps follow past received_end (the bytes there are unknown, not missing)
+
+
+def map_bytes(mtu: int, signed: bool) -> int:
+    """The map bytes of a TT_FILE_MAP that fits one packet of `mtu` bytes (0: none fits)."""
+    return max(0, min(MAP_MAX, mtu - MAP_FIXED - (SIGNATURE if signed else 0)))
 
 __all__ = [
     "DTT",
     "FIT_MAX",
     "FIT_OVERHEAD",
+    "MAP_MORE",
     "MAX_NAME_BYTES",
     "MAX_RANGES",
     "META_PART",
@@ -84,6 +93,7 @@ __all__ = [
     "TransferResult",
     "TransferStats",
     "frame_survival_wide",
+    "map_bytes",
     "meta_check",
     "packet_loss_from_wide",
     "quiet_after",

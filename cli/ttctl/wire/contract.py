@@ -88,6 +88,7 @@ RUNTIME_MESSAGES: dict[str, tuple[int, int]] = {
     "TT_VR_CONTROLLER": (50012, 229),
     "TT_FILE_REASON": (50013, 210),
     "TT_FILE_DATA_FIT": (50014, 50),
+    "TT_FILE_MAP": (50015, 2),
 }
 
 
@@ -112,6 +113,7 @@ class TtFileFlags(IntFlag):
     TT_FILE_FLAGS_OVERWRITE = 1
     TT_FILE_FLAGS_CANCEL = 2
     TT_FILE_FLAGS_DEFLATE = 4
+    TT_FILE_FLAGS_MAP = 8
 
 
 class TtResult(IntEnum):

@@ -4181,6 +4181,10 @@ enum class TtFileFlags : std::uint8_t {
     /// does not inflate refuses the offer with REFUSED_UNSUPPORTED, and the sender offers the file
     /// again uncompressed under a new transfer id.
     TT_FILE_FLAGS_DEFLATE = 4,
+    /// The sender reads TT_FILE_MAP: the receiver may report its gaps as a map of chunks instead of
+    /// ranges when there are more than one TT_FILE_STATUS lists. A receiver that never sends maps
+    /// accepts the flag and ignores it.
+    TT_FILE_FLAGS_MAP = 8,
 };
 
 template <>

@@ -26,7 +26,7 @@ struct MessageInfo {
 };
 
 /// Every message of the dialect, sorted by msgid.
-inline constexpr std::array<MessageInfo, 225> MESSAGE_INFO{ {
+inline constexpr std::array<MessageInfo, 226> MESSAGE_INFO{ {
     {0, 50, 9, 9, "HEARTBEAT"},
     {1, 124, 43, 31, "SYS_STATUS"},
     {2, 137, 12, 12, "SYSTEM_TIME"},
@@ -252,6 +252,7 @@ inline constexpr std::array<MessageInfo, 225> MESSAGE_INFO{ {
     {50012, 229, 28, 28, "TT_VR_CONTROLLER"},
     {50013, 210, 87, 87, "TT_FILE_REASON"},
     {50014, 50, 255, 255, "TT_FILE_DATA_FIT"},
+    {50015, 2, 85, 85, "TT_FILE_MAP"},
 } };
 
 /// The message with this id, or nullptr (binary search).

@@ -18887,6 +18887,121 @@ struct TtFileDataFit {
     }
 };
 
+/// TT_FILE_MAP (id 50015): [sender: any] [runtime] The receiver's gaps as a map, to a sender whose
+/// offer set TT_FILE_FLAGS_MAP: where a TT_FILE_STATUS lists at most 7 missing ranges (8 bytes
+/// each), a map says which chunks of a region arrived, a bit each, so that one packet describes
+/// hundreds of frames at high loss. Bytes below received_contiguous have all arrived;
+/// [region_start, received_end) is cut into chunks of chunk bytes (the last one shorter), and bit i
+/// (map[i / 8], least significant bit first) set says chunk i arrived whole, clear that some of its
+/// bytes are missing. It stands for a TT_FILE_STATUS with result IN_PROGRESS; every other result
+/// comes as TT_FILE_STATUS.
+struct TtFileMap {
+    static constexpr std::uint32_t MSG_ID = 50015;
+    static constexpr std::uint8_t CRC_EXTRA = 2;
+    static constexpr std::size_t PAYLOAD_LENGTH = 85;
+    static constexpr std::size_t MIN_LENGTH = 85;
+    static constexpr const char* NAME = "TT_FILE_MAP";
+
+    /// File sender's system id.
+    std::uint8_t target_system{};
+
+    /// File sender's component id.
+    std::uint8_t target_component{};
+
+    /// Transfer id from the offer.
+    std::uint32_t transfer_id{};
+
+    /// As in TT_FILE_STATUS: it binds the map to the offer's file and name.
+    std::uint32_t meta_check{};
+
+    /// All bytes before this offset have arrived. [bytes]
+    std::uint32_t received_contiguous{};
+
+    /// Start of the region the map describes (received_contiguous in the first map of a burst).
+    /// [bytes]
+    std::uint32_t region_start{};
+
+    /// End of the region the map describes. [bytes]
+    std::uint32_t received_end{};
+
+    /// As in TT_FILE_STATUS: offset of the latest data frame received. [bytes]
+    std::uint32_t last_offset{};
+
+    /// As in TT_FILE_STATUS: time between the arrival of that frame and this map, at most 65535.
+    /// [ms]
+    std::uint16_t hold_ms{};
+
+    /// Bytes a bit stands for (the sender's data frames' size: frames are lost whole). [bytes]
+    std::uint16_t chunk{};
+
+    /// As in TT_FILE_STATUS: the rate this transfer's sender may send its data frames at, 0 for no
+    /// grant. [B/s]
+    std::uint16_t rate_grant{};
+
+    /// Bit 0 set: more gaps follow past received_end (this map is one of a burst), so the bytes
+    /// there are unknown, not missing.
+    std::uint8_t flags{};
+
+    /// A bit a chunk, set when it arrived whole. Last on the wire: a map that fits a packet is
+    /// shorter, its zero bytes truncated (those chunks missing).
+    std::array<std::uint8_t, 52> map{};
+
+    /// The payload in wire order, little endian, into `out` (which must hold PAYLOAD_LENGTH
+    /// bytes); returns its MAVLink 2 truncated length.
+    std::size_t pack_payload(std::uint8_t* out) const noexcept
+    {
+        put_le(out + 0, this->transfer_id);
+        put_le(out + 4, this->meta_check);
+        put_le(out + 8, this->received_contiguous);
+        put_le(out + 12, this->region_start);
+        put_le(out + 16, this->received_end);
+        put_le(out + 20, this->last_offset);
+        put_le(out + 24, this->hold_ms);
+        put_le(out + 26, this->chunk);
+        put_le(out + 28, this->rate_grant);
+        put_le(out + 30, this->target_system);
+        put_le(out + 31, this->target_component);
+        put_le(out + 32, this->flags);
+        put_le(out + 33, this->map);
+        return truncated_length(out, PAYLOAD_LENGTH);
+    }
+
+    /// Decode `n` payload bytes: a truncated payload is zero-extended, bytes beyond
+    /// PAYLOAD_LENGTH are ignored.
+    static TtFileMap unpack_payload(const std::uint8_t* p, std::size_t n) noexcept
+    {
+        if (n < PAYLOAD_LENGTH) {
+            std::uint8_t full[PAYLOAD_LENGTH] = {};
+            if (n != 0) {
+                std::memcpy(full, p, n);
+            }
+            return unpack_payload(full, PAYLOAD_LENGTH);
+        }
+        TtFileMap m;
+        get_le(p + 0, m.transfer_id);
+        get_le(p + 4, m.meta_check);
+        get_le(p + 8, m.received_contiguous);
+        get_le(p + 12, m.region_start);
+        get_le(p + 16, m.received_end);
+        get_le(p + 20, m.last_offset);
+        get_le(p + 24, m.hold_ms);
+        get_le(p + 26, m.chunk);
+        get_le(p + 28, m.rate_grant);
+        get_le(p + 30, m.target_system);
+        get_le(p + 31, m.target_component);
+        get_le(p + 32, m.flags);
+        get_le(p + 33, m.map);
+        return m;
+    }
+
+    /// An unsigned frame into `buf`; returns its size, or 0 if `cap` is too small.
+    std::size_t encode(std::uint8_t* buf, std::size_t cap, std::uint8_t seq = 0, std::uint8_t sysid = 1,
+                       std::uint8_t compid = 1) const noexcept
+    {
+        return encode_message(*this, buf, cap, seq, sysid, compid);
+    }
+};
+
 }  // namespace ttapi
 
 #endif  // TTCTL_TTAPI_MESSAGES_HPP

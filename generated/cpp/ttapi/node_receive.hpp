@@ -104,6 +104,7 @@ inline constexpr TargetField TARGETS[] = {
     {50005, 26, 27},
     {50010, 2, 3},
     {50013, 4, 5},
+    {50015, 30, 31},
     {0xFFFFFFFFu, 255, 255},
 };
 
@@ -325,6 +326,13 @@ inline bool Node::handle(const Frame& f)
     case TtFileStatus::MSG_ID:
         on_status(now, f.as<TtFileStatus>(), f.sysid, f.compid);
         break;
+    case TtFileMap::MSG_ID: {
+        const TtFileMap m = f.as<TtFileMap>();
+        if (FileSender* s = sender_for(m.transfer_id, f.sysid, f.compid)) {
+            s->on_map(now, m);
+        }
+        break;
+    }
     case TtFileReason::MSG_ID: {
         const TtFileReason m = f.as<TtFileReason>();
         if (FileSender* s = sender_for(m.transfer_id, f.sysid, f.compid)) {

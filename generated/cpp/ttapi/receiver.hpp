@@ -77,6 +77,7 @@ struct Incoming {
     bool has_last_data = false;
     double last_data = 0.0;
     std::uint32_t last_offset = 0;
+    std::uint32_t chunk = 0;  // the latest data frame's capacity: what a bit of a TT_FILE_MAP stands for
     bool seen_end = false;  // the last chunk has arrived once: the tail, where every round trip counts
     double gap_dt = 0.05;  // EWMA of the time between data frames
     bool quiet_set = false;
@@ -205,6 +206,7 @@ public:
     {
         packet_ = mtu;
         per_status_ = ranges_per_status(mtu, signed_frames);
+        map_bytes_ = map_bytes(mtu, signed_frames);
     }
 
     // -- statuses (receiver_status.hpp) -----------------------------------------------------
@@ -425,6 +427,8 @@ private:
     double flow_window(const Incoming& t) const noexcept;
     template <class Emit>
     void statuses(const Incoming& t, Emit& emit) const;
+    template <class Emit>
+    void maps(const Incoming& t, std::uint64_t rc, std::uint64_t last, Emit& emit) const;
     TtFileStatus status(const Incoming& t, std::uint64_t rc, std::uint64_t region, std::uint64_t re,
                         const std::uint64_t (*gaps)[2], std::size_t count, bool more = false) const noexcept;
     void tell_unknown(std::uint8_t sysid, std::uint8_t compid, std::uint32_t id, double now) noexcept;
@@ -451,6 +455,7 @@ private:
     bool control_apart_ = false;
     std::size_t packet_ = 100;  // the link's packet size
     std::size_t per_status_ = MAX_RANGES;  // gaps a status lists (as many as fit one packet)
+    std::size_t map_bytes_ = MAP_MAX;  // a TT_FILE_MAP's map bytes (as many as fit one packet)
     double packet() const noexcept { return static_cast<double>(packet_); }
     std::uint16_t grant_ = 0;
     std::size_t sharing_count_ = 0;  // transfers flagged `sharing` at the last share(), closed ones included

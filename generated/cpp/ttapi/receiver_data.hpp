@@ -59,6 +59,7 @@ inline void FileReceiver::on_data(double now, std::uint32_t transfer_id, std::ui
     t.has_last_data = true;
     t.last_data = now;
     t.last_offset = offset;
+    t.chunk = static_cast<std::uint32_t>(cap);
     const std::size_t gaps = partial.ranges().size();
     const bool new_gap = gaps > gaps_before;
     const bool at_end = offset + length >= t.size;

@@ -105,10 +105,12 @@ inline void FileReceiver::decide(int at, double now)
     t.decided = true;
     t.check = meta_check(t.meta, t.meta_length);
     // a flag this receiver does not know (DEFLATE: it does not inflate) is refused in words
-    // naming it; the sender offers again without it
+    // naming it; the sender offers again without it. MAP (the sender reads TT_FILE_MAP) is known
+    // and needs nothing: this receiver reports its gaps as ranges, which every sender reads
     const auto deflate = static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_DEFLATE);
     const auto known = static_cast<std::uint8_t>(static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_OVERWRITE)
                                                  | static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_CANCEL)
+                                                 | static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_MAP)
                                                  | (INFLATES ? deflate : 0));
     const auto unknown = static_cast<std::uint8_t>(t.flags & static_cast<std::uint8_t>(~known));
     if (unknown != 0) {

@@ -185,6 +185,11 @@ inline void FileReceiver::statuses(const Incoming& t, Emit& emit) const
     const std::size_t wanted = static_cast<std::size_t>(std::max(1, cfg_.status_batches)) * MAX_RANGES;
     const std::size_t batches = std::clamp<std::size_t>((wanted + per - 1) / per, 1, MAX_BATCHES);
     const std::size_t total = ranges.gaps(rc, last, gaps, per * batches);
+    if (total > per && (t.flags & static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_MAP)) != 0 && map_bytes_ != 0
+        && t.chunk != 0) {
+        maps(t, rc, last, emit);  // the sender reads maps: a bit a frame instead
+        return;
+    }
     std::uint64_t start = rc;
     for (std::size_t k = 0; k < batches; ++k) {
         const std::size_t from = k * per;
@@ -192,6 +197,54 @@ inline void FileReceiver::statuses(const Incoming& t, Emit& emit) const
         const bool more = total > (k + 1) * per;
         const std::uint64_t end = more ? gaps[from + count - 1][1] : last;
         emit(status(t, rc, start, end, gaps + from, count, more), key_of(KEY_STATUS, k, t.sysid, t.compid, t.id));
+        start = end;
+        if (!more) {
+            break;
+        }
+    }
+}
+
+// More gaps than a status lists, to a sender whose offer set TT_FILE_FLAGS_MAP: TT_FILE_MAPs, a
+// bit a chunk of the sender's frame size on the grid of the latest frame (frames are lost whole:
+// a lost one is one clear bit), from at or just below `rc`, successive regions of 8 * map_bytes_
+// chunks, at most MAP_BURST (ttctl's Python proto/reports.py map_regions).
+template <class Emit>
+inline void FileReceiver::maps(const Incoming& t, std::uint64_t rc, std::uint64_t last, Emit& emit) const
+{
+    const auto& ranges = grp(t.group).ranges();
+    const std::uint64_t chunk = t.chunk;
+    const std::uint64_t back = (rc + chunk - t.last_offset % chunk) % chunk;  // (rc - last_offset) mod chunk
+    std::uint64_t start = rc >= back ? rc - back : 0;
+    for (std::size_t k = 0; k < MAP_BURST; ++k) {
+        const std::uint64_t end = std::min(last, start + 8 * map_bytes_ * chunk);
+        TtFileMap m;
+        m.target_system = t.sysid;
+        m.target_component = t.compid;
+        m.transfer_id = t.id;
+        m.meta_check = t.check;
+        m.received_contiguous = static_cast<std::uint32_t>(rc);
+        m.region_start = static_cast<std::uint32_t>(start);
+        m.received_end = static_cast<std::uint32_t>(end);
+        m.last_offset = t.last_offset;
+        if (t.has_last_data) {
+            const double ms = 1000.0 * (now_ - t.last_data);
+            m.hold_ms = static_cast<std::uint16_t>(ms >= 65535.0 ? 65535.0 : (ms > 0.0 ? ms : 0.0));
+        } else {
+            m.hold_ms = 65535;
+        }
+        m.chunk = static_cast<std::uint16_t>(chunk);
+        const bool sharing =
+            t.sharing && t.result == static_cast<std::uint8_t>(TtFileResult::TT_FILE_RESULT_IN_PROGRESS);
+        m.rate_grant = sharing ? grant_ : std::uint16_t{0};
+        std::size_t i = 0;
+        for (std::uint64_t a = start; a < end; a += chunk, ++i) {
+            if (ranges.covers(a, std::min(a + chunk, end))) {
+                m.map[i >> 3] = static_cast<std::uint8_t>(m.map[i >> 3] | 1u << (i & 7));
+            }
+        }
+        const bool more = end < last;
+        m.flags = more ? MAP_MORE : std::uint8_t{0};
+        emit(static_cast<const TtFileMap&>(m), key_of(KEY_STATUS, k, t.sysid, t.compid, t.id));
         start = end;
         if (!more) {
             break;

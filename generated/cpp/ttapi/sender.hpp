@@ -108,7 +108,10 @@ public:
         target_sysid_ = target_sysid;
         target_compid_ = target_compid;
         request_id_ = request_id;
-        base_flags_ = overwrite ? static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_OVERWRITE) : 0;
+        // MAP: this sender reads TT_FILE_MAP (a receiver that never sends one ignores the flag)
+        base_flags_ = static_cast<std::uint8_t>(
+            (overwrite ? static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_OVERWRITE) : 0)
+            | static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_MAP));
         use(cfg.compress && stream_.make(source_, name.size()));
         result_ = TransferResult();
         done_ = false;
@@ -172,6 +175,7 @@ public:
         pending_head_ = pending_count_ = 0;
         outcomes_n_[0] = outcomes_n_[1] = 0;
         outcomes_at_[0] = outcomes_at_[1] = 0;
+        has_long_loss_ = false;
     }
     bool on_stream() const noexcept { return on_stream_; }
     /// How long an unacknowledged frame waits before a tail-loss probe may repeat it: on a
@@ -213,6 +217,9 @@ public:
     void on_reason(double now, const TtFileReason& msg);
 
     void on_status(double now, const TtFileStatus& msg);
+
+    /// A TT_FILE_MAP: a status in progress whose gaps come as a bit a frame.
+    void on_map(double now, const TtFileMap& msg);
 
     /// The next time this transfer needs attention (data waiting for the pacer is the
     /// scheduler's business, data waiting for its rate grant is this one's); false if none.
@@ -259,6 +266,7 @@ private:
         pending_head_ = pending_count_ = 0;
         outcomes_n_[0] = outcomes_n_[1] = 0;
         outcomes_at_[0] = outcomes_at_[1] = 0;
+        has_long_loss_ = false;
         has_probe_ = false;
         for (std::size_t i = 0; i < TransferLimits::SEND_HISTORY; ++i) {
             history_[i].used = false;
@@ -410,8 +418,10 @@ private:
 
     // -- the receiver's answers (sender_control.hpp) ----------------------------------------
     double quiet_after() const noexcept;
-    void rtt_from_echo(double now, const TtFileStatus& msg) noexcept;
+    void rtt_from_echo(double now, std::uint32_t last_offset, std::uint16_t hold_ms) noexcept;
     void apply_status(double now, const TtFileStatus& msg) noexcept;
+    void apply(double now, std::uint64_t rc, std::uint64_t region, std::uint64_t re, std::uint64_t (*missing)[2],
+               std::size_t m, bool truncated, std::uint32_t last_offset, std::uint16_t hold_ms) noexcept;
     void subtract_acked() noexcept;
 
     // -- loss and frame size (sender_frame_size.hpp) ----------------------------------------
@@ -486,7 +496,9 @@ private:
     std::unique_ptr<Pending[]> pending_{new Pending[TransferLimits::IN_FLIGHT]};  // first sends not yet judged
     std::size_t pending_head_ = 0;
     std::size_t pending_count_ = 0;
-    bool outcomes_[2][64] = {};  // recent first sends: lost?
+    double long_loss_ = 0.0;  // narrow frames' loss over the longer window (LONG_OUTCOMES)
+    bool has_long_loss_ = false;
+    bool outcomes_[2][256] = {};  // recent first sends: lost? (the latest 64 make the estimate)
     std::size_t outcomes_n_[2] = {0, 0};
     std::size_t outcomes_at_[2] = {0, 0};
     bool has_probe_ = false;

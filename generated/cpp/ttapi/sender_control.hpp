@@ -146,6 +146,17 @@ inline void FileSender::on_status(double now, const TtFileStatus& msg)
         state_ = State::offering;  // keep offering (with backoff) until there is room or time is up
         return;
     }
+    if (code == static_cast<std::uint8_t>(R::TT_FILE_RESULT_REFUSED_UNSUPPORTED)
+        && (base_flags_ & static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_MAP)) != 0) {
+        // a receiver from before TT_FILE_MAP refuses the flag it does not know: offer again without
+        // it (and if it refuses a zlib stream too, that comes next), under a new id
+        base_flags_ =
+            static_cast<std::uint8_t>(base_flags_ & ~static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_MAP));
+        use(deflated_);
+        restart(now, false);
+        last_progress_ = now;
+        return;
+    }
     if (code == static_cast<std::uint8_t>(R::TT_FILE_RESULT_FAILED_CHECKSUM) && !deflated_
         && stats_.restarts < cfg_.checksum_restarts && !source_.changed()) {
         restart(now, true);  // the receiver discarded what it had: again, from scratch
@@ -172,8 +183,55 @@ inline void FileSender::on_status(double now, const TtFileStatus& msg)
         last_progress_ = now;
     }
     pacer_.update(rate_grant_of(msg), now);  // a new grant: frames start at the status that told it
-    rtt_from_echo(now, msg);
+    rtt_from_echo(now, msg.last_offset, msg.hold_ms);
     apply_status(now, msg);
+}
+
+inline void FileSender::on_map(double now, const TtFileMap& msg)
+{
+    if (done_ || state_ == State::idle || state_ == State::offering || msg.transfer_id != id_
+        || msg.meta_check != check_) {
+        return;  // (a map is sent only once data flows: after the status that accepted the offer)
+    }
+    last_heard_ = now;
+    ++stats_.statuses;
+    pacer_.update(msg.rate_grant, now);
+    rtt_from_echo(now, msg.last_offset, msg.hold_ms);
+    // its region starts at or just below received_contiguous, on the frames' grid; a chunk whose
+    // bit is clear is missing, and so is all past the map's bits (no receiver sends that)
+    const std::uint64_t size = size_;
+    const std::uint64_t rc = std::min<std::uint64_t>(msg.received_contiguous, size);
+    const std::uint64_t region = std::min<std::uint64_t>(msg.region_start, size);
+    const std::uint64_t re = std::max({region, rc, std::min<std::uint64_t>(msg.received_end, size)});
+    const std::uint64_t chunk = std::max<std::uint64_t>(1, msg.chunk);
+    std::uint64_t missing[4 * MAP_MAX + 2][2];
+    std::size_t m = 0;
+    const std::uint64_t chunks = (re - region + chunk - 1) / chunk;
+    const std::uint64_t bits = 8 * msg.map.size();
+    for (std::uint64_t i = 0; i < std::min(chunks, bits); ++i) {
+        if ((msg.map[i >> 3] >> (i & 7) & 1) == 0) {
+            const std::uint64_t a = region + i * chunk;
+            const std::uint64_t b = std::min(re, a + chunk);
+            if (m != 0 && missing[m - 1][1] == a) {
+                missing[m - 1][1] = b;
+            } else {
+                missing[m][0] = a;
+                missing[m][1] = b;
+                ++m;
+            }
+        }
+    }
+    const std::uint64_t past = region + bits * chunk;
+    if (past < re) {
+        if (m != 0 && missing[m - 1][1] == past) {
+            missing[m - 1][1] = re;
+        } else {
+            missing[m][0] = past;
+            missing[m][1] = re;
+            ++m;
+        }
+    }
+    apply(now, rc, region, re, missing, m, (msg.flags & MAP_MORE) != 0, msg.last_offset, msg.hold_ms);
 }
 
 inline bool FileSender::deadline(double now, double& when) const noexcept
@@ -213,13 +271,13 @@ inline double FileSender::quiet_after() const noexcept
 
 // A round-trip sample from the status's echo of the latest frame it saw (Karn: only frames
 // sent once).
-inline void FileSender::rtt_from_echo(double now, const TtFileStatus& msg) noexcept
+inline void FileSender::rtt_from_echo(double now, std::uint32_t last_offset, std::uint16_t hold_ms) noexcept
 {
-    const History* h = find_history(msg.last_offset);
-    if (h == nullptr || h->sends != 1 || msg.hold_ms == 65535) {
+    const History* h = find_history(last_offset);
+    if (h == nullptr || h->sends != 1 || hold_ms == 65535) {
         return;
     }
-    const double sample = now - msg.hold_ms / 1000.0 - h->time;
+    const double sample = now - hold_ms / 1000.0 - h->time;
     if (!(0.0 < sample && sample < 10.0)) {
         return;
     }
@@ -249,6 +307,19 @@ inline void FileSender::apply_status(double now, const TtFileStatus& msg) noexce
             ++m;
         }
     }
+    // bytes past received_end are unknown, not missing
+    const bool truncated = (msg.range_count & RANGES_MORE) != 0 || n >= MAX_RANGES;
+    apply(now, rc, region, re, missing, m, truncated, msg.last_offset, msg.hold_ms);
+}
+
+// What a status or a map says: bytes below `rc` and in [region, re) outside `missing` arrived;
+// past `re` they are unknown when `truncated`, else the sent ones are missing (missing has room
+// for one range more).
+inline void FileSender::apply(double now, std::uint64_t rc, std::uint64_t region, std::uint64_t re,
+                              std::uint64_t (*missing)[2], std::size_t m, bool truncated, std::uint32_t last_offset,
+                              std::uint16_t hold_ms) noexcept
+{
+    const std::uint64_t size = size_;
     const std::uint64_t before = acked_.total();
     acked_.add(0, rc);
     std::uint64_t pos = region;
@@ -276,12 +347,10 @@ inline void FileSender::apply_status(double now, const TtFileStatus& msg) noexce
     // left at `echo`; anything sent before it arrived before it or was lost (a few packet
     // times of slack for reordering). Without an echo, an RTT before now.
     double horizon = now - rtt_ - 0.05;
-    const History* echo = find_history(msg.last_offset);
-    if (echo != nullptr && msg.hold_ms != 65535) {
+    const History* echo = find_history(last_offset);
+    if (echo != nullptr && hold_ms != 65535) {
         horizon = std::min(horizon, echo->time - 2.0 * static_cast<double>(geo_.mtu) * byte_time_);
     }
-    // bytes past received_end are unknown, not missing
-    const bool truncated = (msg.range_count & RANGES_MORE) != 0 || n >= MAX_RANGES;
     if (re < next_new_ && !truncated) {
         missing[m][0] = re;
         missing[m][1] = next_new_;

@@ -2,9 +2,10 @@
 //
 // FileSender (sender.hpp) of the ttapi dialect's file transfer: the frame size. The loss of
 // each first transmission is measured exactly once a status covers it; from the last 64 per frame
-// size, narrow (one packet: TT_FILE_DATA or TT_FILE_DATA_FIT, as the link's Geometry says) or wide
-// (TT_FILE_DATA_WIDE, spanning packets) frames are chosen, whichever carries more file bytes per
-// byte on the air (transfer.py's arithmetic). A part of sender.hpp, which includes it after the
+// size (and, to go wide, the last 256 narrow ones too), narrow (one packet: TT_FILE_DATA or
+// TT_FILE_DATA_FIT, as the link's Geometry says) or wide (TT_FILE_DATA_WIDE, spanning packets)
+// frames are chosen, whichever carries more file bytes per byte on the air (transfer.py's
+// arithmetic). A part of sender.hpp, which includes it after the
 // class; included on its own, it includes sender.hpp.
 #ifndef TTCTL_TTAPI_SENDER_FRAME_SIZE_HPP
 #ifndef TTCTL_TTAPI_SENDER_HPP
@@ -33,6 +34,11 @@ inline double wilson_upper(std::size_t lost, std::size_t n, double z = 1.0) noex
     return std::min(1.0, (centre + spread) / denom);
 }
 
+// Outcomes the estimate comes from (the latest), and those the narrow frames' estimate must also
+// allow before going wide (as ttctl's Python proto/frame_loss.py WINDOW and LONG_WINDOW).
+inline constexpr std::size_t OUTCOMES = 64;
+inline constexpr std::size_t LONG_OUTCOMES = 256;
+
 inline void FileSender::classify_later(std::uint64_t start, std::uint64_t end, double when, bool wide) noexcept
 {
     if (pending_count_ == TransferLimits::IN_FLIGHT) {
@@ -60,7 +66,9 @@ inline bool FileSender::choose_wide() const noexcept
     if (mode_wide_ && has_loss_[1]) {
         p = loss_[1];
     } else if (has_loss_[0]) {
-        p = loss_[0];
+        // slow to go wide, quick to come back: under bursts of loss a second without one is
+        // common, and wide frames sent into the next burst are lost three packets at a time
+        p = !mode_wide_ && has_long_loss_ ? std::max(loss_[0], long_loss_) : loss_[0];
     } else if (has_loss_[1]) {
         p = loss_[1];
     } else {
@@ -95,19 +103,27 @@ inline void FileSender::classify(double horizon, std::uint64_t re, bool truncate
         }
         const int w = p.wide ? 1 : 0;
         outcomes_[w][outcomes_at_[w]] = lost;
-        outcomes_at_[w] = (outcomes_at_[w] + 1) % 64;
-        outcomes_n_[w] = std::min<std::size_t>(outcomes_n_[w] + 1, 64);
+        outcomes_at_[w] = (outcomes_at_[w] + 1) % LONG_OUTCOMES;
+        outcomes_n_[w] = std::min<std::size_t>(outcomes_n_[w] + 1, LONG_OUTCOMES);
     }
     pending_count_ = kept;
     for (int w = 0; w < 2; ++w) {
-        if (outcomes_n_[w] >= 8) {
-            std::size_t lost = 0;
-            for (std::size_t k = 0; k < outcomes_n_[w]; ++k) {
-                lost += outcomes_[w][k] ? 1 : 0;
-            }
-            const double frame_loss = wilson_upper(lost, outcomes_n_[w]);  // pessimistic: wide frames are costly
+        const std::size_t n = std::min<std::size_t>(outcomes_n_[w], OUTCOMES);
+        std::size_t lost = 0;
+        std::size_t all = 0;
+        for (std::size_t k = 0; k < outcomes_n_[w]; ++k) {  // the latest first
+            const bool l = outcomes_[w][(outcomes_at_[w] + LONG_OUTCOMES - 1 - k) % LONG_OUTCOMES];
+            lost += k < n && l ? 1 : 0;
+            all += l ? 1 : 0;
+        }
+        if (n >= 8) {
+            const double frame_loss = wilson_upper(lost, n);  // pessimistic: wide frames are costly
             loss_[w] = w == 0 ? frame_loss : geo_.packet_loss_from_wide(frame_loss);
             has_loss_[w] = true;
+        }
+        if (w == 0 && outcomes_n_[0] > OUTCOMES) {
+            long_loss_ = wilson_upper(all, outcomes_n_[0]);
+            has_long_loss_ = true;
         }
     }
     if (cfg_.frame_mode == TransferConfig::FrameMode::automatic && stats_.narrow_frames >= cfg_.probe_frames) {

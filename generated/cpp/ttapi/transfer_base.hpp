@@ -49,6 +49,19 @@ inline constexpr std::size_t ranges_per_status(std::size_t mtu, bool signed_fram
 }
 static_assert(ranges_per_status(100, false) == 6 && ranges_per_status(100, true) == 5
               && ranges_per_status(128, true) == MAX_RANGES, "a status fits one packet");
+/// A TT_FILE_MAP's map bytes that fit one packet of `mtu` bytes (ttctl's Python map_bytes): 42
+/// signed in DJI's 100 (336 frames), 52 unsigned; its flags' bit 0 says more maps follow.
+inline constexpr std::size_t MAP_FIXED = 12 + 33;
+inline constexpr std::size_t MAP_MAX = 52;
+inline constexpr std::size_t MAP_BURST = 2;  // maps in a report at most (one covers hundreds of frames)
+inline constexpr std::uint8_t MAP_MORE = 1;
+inline constexpr std::size_t map_bytes(std::size_t mtu, bool signed_frames) noexcept
+{
+    const std::size_t fixed = MAP_FIXED + (signed_frames ? SIGNATURE_BYTES : 0);
+    const std::size_t room = mtu > fixed ? mtu - fixed : 0;
+    return room > MAP_MAX ? MAP_MAX : room;
+}
+static_assert(map_bytes(100, true) == 42 && map_bytes(100, false) == 52, "a map fits one packet");
 inline constexpr std::size_t REASON_BYTES = 80;  // TT_FILE_REASON.text
 inline constexpr std::size_t SHA_LEN = 32;
 inline constexpr std::size_t META_MAX = 255;

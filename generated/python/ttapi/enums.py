@@ -3680,6 +3680,8 @@ class TtFileFlags(IntFlag):
     """The sender abandons this transfer; the receiver keeps its partial state for a later resume."""
     TT_FILE_FLAGS_DEFLATE = 4
     """The offered bytes are a zlib stream (RFC 1950) of the file: size counts the stream's bytes (what TT_FILE_DATA carries and TT_FILE_STATUS ranges count), and the metadata blob is the original file's SHA-256 (32 bytes), its size (uint32, little-endian), then its UTF-8 name (at most 219 bytes). The receiver inflates the whole stream, at most to that size, and checks the SHA-256 on the inflated bytes before the file takes its name. A receiver that does not inflate refuses the offer with REFUSED_UNSUPPORTED, and the sender offers the file again uncompressed under a new transfer id."""
+    TT_FILE_FLAGS_MAP = 8
+    """The sender reads TT_FILE_MAP: the receiver may report its gaps as a map of chunks instead of ranges when there are more than one TT_FILE_STATUS lists. A receiver that never sends maps accepts the flag and ignores it."""
 
 
 class TtFileResult(IntEnum):

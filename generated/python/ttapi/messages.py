@@ -21041,6 +21041,133 @@ class TtFileDataFit(Message):
         return self
 
 
+class TtFileMap(Message):
+    """TT_FILE_MAP (id 50015): [sender: any] [runtime] The receiver's gaps as a map, to a sender whose offer set TT_FILE_FLAGS_MAP: where a TT_FILE_STATUS lists at most 7 missing ranges (8 bytes each), a map says which chunks of a region arrived, a bit each, so that one packet describes hundreds of frames at high loss. Bytes below received_contiguous have all arrived; [region_start, received_end) is cut into chunks of chunk bytes (the last one shorter), and bit i (map[i / 8], least significant bit first) set says chunk i arrived whole, clear that some of its bytes are missing. It stands for a TT_FILE_STATUS with result IN_PROGRESS; every other result comes as TT_FILE_STATUS."""
+
+    __slots__ = ("chunk", "flags", "hold_ms", "last_offset", "map", "meta_check", "rate_grant", "received_contiguous", "received_end", "region_start", "target_component", "target_system", "transfer_id",)
+    MSG_ID: ClassVar[int] = 50015
+    NAME: ClassVar[str] = "TT_FILE_MAP"
+    CRC_EXTRA: ClassVar[int] = 2
+    PAYLOAD_LENGTH: ClassVar[int] = 85
+    MIN_LENGTH: ClassVar[int] = 85
+    FIELDS: ClassVar[tuple[str, ...]] = ("target_system", "target_component", "transfer_id", "meta_check", "received_contiguous", "region_start", "received_end", "last_offset", "hold_ms", "chunk", "rate_grant", "flags", "map",)
+    ENUMS: ClassVar[dict[str, str]] = {}
+    TYPES: ClassVar[tuple[str, ...]] = ("uint8_t", "uint8_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint16_t", "uint16_t", "uint16_t", "uint8_t", "uint8_t[52]",)
+    _IDB: ClassVar[bytes] = b'_\xc3\x00'
+    _XB: ClassVar[bytes] = b'\x02'
+    _S: ClassVar[struct.Struct] = struct.Struct("<IIIIIIHHHBBB52s")
+
+    target_system: int
+    """File sender's system id."""
+
+    target_component: int
+    """File sender's component id."""
+
+    transfer_id: int
+    """Transfer id from the offer."""
+
+    meta_check: int
+    """As in TT_FILE_STATUS: it binds the map to the offer's file and name."""
+
+    received_contiguous: int
+    """All bytes before this offset have arrived. [bytes]"""
+
+    region_start: int
+    """Start of the region the map describes (received_contiguous in the first map of a burst). [bytes]"""
+
+    received_end: int
+    """End of the region the map describes. [bytes]"""
+
+    last_offset: int
+    """As in TT_FILE_STATUS: offset of the latest data frame received. [bytes]"""
+
+    hold_ms: int
+    """As in TT_FILE_STATUS: time between the arrival of that frame and this map, at most 65535. [ms]"""
+
+    chunk: int
+    """Bytes a bit stands for (the sender's data frames' size: frames are lost whole). [bytes]"""
+
+    rate_grant: int
+    """As in TT_FILE_STATUS: the rate this transfer's sender may send its data frames at, 0 for no grant. [B/s]"""
+
+    flags: int
+    """Bit 0 set: more gaps follow past received_end (this map is one of a burst), so the bytes there are unknown, not missing."""
+
+    map: bytes
+    """A bit a chunk, set when it arrived whole. Last on the wire: a map that fits a packet is shorter, its zero bytes truncated (those chunks missing)."""
+
+    def __init__(
+        self,
+        target_system: int = 0,
+        target_component: int = 0,
+        transfer_id: int = 0,
+        meta_check: int = 0,
+        received_contiguous: int = 0,
+        region_start: int = 0,
+        received_end: int = 0,
+        last_offset: int = 0,
+        hold_ms: int = 0,
+        chunk: int = 0,
+        rate_grant: int = 0,
+        flags: int = 0,
+        map: bytes | bytearray | Sequence[int] = bytes(52),
+    ) -> None:
+        self.target_system = target_system
+        self.target_component = target_component
+        self.transfer_id = transfer_id
+        self.meta_check = meta_check
+        self.received_contiguous = received_contiguous
+        self.region_start = region_start
+        self.received_end = received_end
+        self.last_offset = last_offset
+        self.hold_ms = hold_ms
+        self.chunk = chunk
+        self.rate_grant = rate_grant
+        self.flags = flags
+        self.map = _ubytes(map, 52, "TT_FILE_MAP.map", False)
+
+    def pack_payload(self) -> bytes:
+        try:
+            p = self._S.pack(
+                self.transfer_id,
+                self.meta_check,
+                self.received_contiguous,
+                self.region_start,
+                self.received_end,
+                self.last_offset,
+                self.hold_ms,
+                self.chunk,
+                self.rate_grant,
+                self.target_system,
+                self.target_component,
+                self.flags,
+                _ubytes(self.map, 52, "TT_FILE_MAP.map"),
+            )
+        except struct.error as e:
+            raise ValueError(f"TT_FILE_MAP: {e}") from None
+        return p if p[-1] else _truncate(p)
+
+    @classmethod
+    def _unpack(cls, b: Any, off: int) -> TtFileMap:
+        self: TtFileMap = _new(cls)
+        (
+            self.transfer_id,
+            self.meta_check,
+            self.received_contiguous,
+            self.region_start,
+            self.received_end,
+            self.last_offset,
+            self.hold_ms,
+            self.chunk,
+            self.rate_grant,
+            self.target_system,
+            self.target_component,
+            self.flags,
+            self.map,
+        ) = cls._S.unpack_from(b, off)
+        return self
+
+
 ALL: tuple[type[Message], ...] = (
     Heartbeat,
     SysStatus,
@@ -21267,6 +21394,7 @@ ALL: tuple[type[Message], ...] = (
     TtVrController,
     TtFileReason,
     TtFileDataFit,
+    TtFileMap,
 )
 BY_NAME: dict[str, type[Message]] = {cls.NAME: cls for cls in ALL}
 register(ALL)
@@ -21474,6 +21602,7 @@ __all__ = [
     "TtFileData",
     "TtFileDataFit",
     "TtFileDataWide",
+    "TtFileMap",
     "TtFileOffer",
     "TtFileReason",
     "TtFileRequest",

@@ -9,6 +9,8 @@ import java.util.Random;
 import java.util.function.UnaryOperator;
 
 import ttctl.ttapi.Ttapi;
+import ttctl.ttapi.enums.TtFileFlags;
+import ttctl.ttapi.msg.TtFileMap;
 import ttctl.ttapi.msg.TtFileOffer;
 import ttctl.ttapi.msg.TtFileStatus;
 import ttctl.ttapi.runtime.LinkScheduler;
@@ -27,7 +29,9 @@ import ttctl.ttapi.runtime.UdpLink;
  * receiver's control() runs every 10 ms until t = 2 s. Prints each control() call that says
  * anything, as JSON lines: the time and per status the whole frame's length as the scheduler
  * places it in a packet (packed, then signed), range_count, region_start, received_end and the
- * ranges it lists.
+ * ranges it lists. A sixth argument "map" sets TT_FILE_FLAGS_MAP on the offer (the sender reads
+ * TT_FILE_MAP) and has the frames arrive from offset 0 (every other one): each TT_FILE_MAP is
+ * printed too, with its region, chunk, flags and map in hex.
  */
 public final class BurstCheck {
     private BurstCheck() {
@@ -39,7 +43,8 @@ public final class BurstCheck {
         int gaps = Integer.parseInt(argv[3]);
         // the data arrives past 16 MiB, every other frame: gaps [0, BASE) then one a frame wide between
         // frames, their offsets 4 bytes each on the wire (a status is longest when no zero byte truncates)
-        long base = 1L << 24;
+        boolean map = argv.length > 5 && argv[5].equals("map");
+        long base = map ? 0 : 1L << 24; // (maps: from the first frame, so that their bits alternate)
         int frames = 2 * gaps - 1;
         long size = base + 80L * frames;
         byte[] meta = new byte[32 + "burst.bin".length()];
@@ -77,6 +82,7 @@ public final class BurstCheck {
             m.size = size;
             m.meta_length = meta.length;
             m.meta_offset = off;
+            m.flags = map ? TtFileFlags.TT_FILE_FLAGS_MAP : 0;
             m.meta = new byte[71];
             System.arraycopy(meta, off, m.meta, 0, Math.min(71, meta.length - off));
             rx.onOffer(0.0, 255, 190, m);
@@ -90,15 +96,26 @@ public final class BurstCheck {
             }
             List<String> said = new ArrayList<>();
             for (MavlinkMessage m : rx.control(now)) {
-                if (!(m instanceof TtFileStatus)) {
+                if (!(m instanceof TtFileMap) && !(m instanceof TtFileStatus)) {
+                    continue;
+                }
+                byte[] frame = ft.encode(m);
+                UnaryOperator<byte[]> sign = sched.signer();
+                if (sign != null) {
+                    frame = sign.apply(frame); // as the scheduler places it in a packet: packed, then signed
+                }
+                if (m instanceof TtFileMap) {
+                    TtFileMap x = (TtFileMap) m;
+                    StringBuilder bits = new StringBuilder();
+                    for (byte b : x.map) {
+                        bits.append(String.format(Locale.ROOT, "%02x", b & 0xFF));
+                    }
+                    said.add(String.format(Locale.ROOT, "{\"len\": %d, \"map\": \"%s\", \"region_start\": %d, "
+                            + "\"received_end\": %d, \"received_contiguous\": %d, \"chunk\": %d, \"flags\": %d}",
+                            frame.length, bits, x.region_start, x.received_end, x.received_contiguous, x.chunk, x.flags));
                     continue;
                 }
                 TtFileStatus s = (TtFileStatus) m;
-                byte[] frame = ft.encode(s);
-                UnaryOperator<byte[]> sign = sched.signer();
-                if (sign != null) {
-                    frame = sign.apply(frame);
-                }
                 StringBuilder ranges = new StringBuilder();
                 for (int i = 0; i < s.ranges.length; i++) {
                     ranges.append(i == 0 ? "" : ", ").append(s.ranges[i]);

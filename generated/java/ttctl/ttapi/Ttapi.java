@@ -42,7 +42,7 @@ public final class Ttapi implements ttctl.ttapi.runtime.MavlinkDialect {
         373, 375, 376, 385, 386, 387, 388, 390, 9000, 9005,
         12900, 12901, 12902, 12903, 12904, 12905, 12915, 12918, 12919, 12920,
         50000, 50001, 50002, 50003, 50004, 50005, 50006, 50007, 50008, 50009,
-        50010, 50011, 50012, 50013, 50014,
+        50010, 50011, 50012, 50013, 50014, 50015,
     };
     private static final ttctl.ttapi.runtime.MessageInfo[] INFOS = infos();
 
@@ -285,6 +285,7 @@ public final class Ttapi implements ttctl.ttapi.runtime.MavlinkDialect {
         all[222] = new ttctl.ttapi.runtime.MessageInfo(50012, "TT_VR_CONTROLLER", 229, 28, 28);
         all[223] = new ttctl.ttapi.runtime.MessageInfo(50013, "TT_FILE_REASON", 210, 87, 87);
         all[224] = new ttctl.ttapi.runtime.MessageInfo(50014, "TT_FILE_DATA_FIT", 50, 255, 255);
+        all[225] = new ttctl.ttapi.runtime.MessageInfo(50015, "TT_FILE_MAP", 2, 85, 85);
     }
 
     /** {@link #NAME}. */
@@ -767,6 +768,8 @@ public final class Ttapi implements ttctl.ttapi.runtime.MavlinkDialect {
                 return ttctl.ttapi.msg.TtFileReason.unpack(payload, off, len);
             case 50014:
                 return ttctl.ttapi.msg.TtFileDataFit.unpack(payload, off, len);
+            case 50015:
+                return ttctl.ttapi.msg.TtFileMap.unpack(payload, off, len);
             default:
                 throw new IllegalArgumentException("unknown msgid " + msgId);
         }
@@ -1225,6 +1228,8 @@ public final class Ttapi implements ttctl.ttapi.runtime.MavlinkDialect {
                 return new ttctl.ttapi.msg.TtFileReason();
             case "TT_FILE_DATA_FIT":
                 return new ttctl.ttapi.msg.TtFileDataFit();
+            case "TT_FILE_MAP":
+                return new ttctl.ttapi.msg.TtFileMap();
             default:
                 return null;
         }

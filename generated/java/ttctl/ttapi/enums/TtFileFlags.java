@@ -24,14 +24,21 @@ public final class TtFileFlags {
      * uncompressed under a new transfer id.
      */
     public static final int TT_FILE_FLAGS_DEFLATE = 4;
+    /**
+     * The sender reads TT_FILE_MAP: the receiver may report its gaps as a map of chunks instead of
+     * ranges when there are more than one TT_FILE_STATUS lists. A receiver that never sends maps
+     * accepts the flag and ignores it.
+     */
+    public static final int TT_FILE_FLAGS_MAP = 8;
 
     private static final long[] ENTRY_VALUES = {
-        1, 2, 4,
+        1, 2, 4, 8,
     };
     private static final String[] ENTRY_NAMES = {
         "TT_FILE_FLAGS_OVERWRITE",
         "TT_FILE_FLAGS_CANCEL",
         "TT_FILE_FLAGS_DEFLATE",
+        "TT_FILE_FLAGS_MAP",
     };
 
     private TtFileFlags() {

@@ -196,6 +196,8 @@ public final class GcsRules {
                 return 2;
             case 50013:
                 return 4;
+            case 50015:
+                return 30;
             default:
                 return -1;
         }
@@ -338,6 +340,8 @@ public final class GcsRules {
                 return 3;
             case 50013:
                 return 5;
+            case 50015:
+                return 31;
             default:
                 return -1;
         }

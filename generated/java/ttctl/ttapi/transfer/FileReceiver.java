@@ -400,6 +400,7 @@ final class FileReceiver {
         }
         t.lastData = now;
         t.lastOffset = offset;
+        t.chunk = cap;
         RangeSet ranges = t.partial.ranges;
         boolean newGap = ranges.size() > gapsBefore;
         boolean atEnd = offset + length >= t.size;

@@ -13,6 +13,7 @@ import ttctl.ttapi.enums.TtFileResult;
 import ttctl.ttapi.msg.TtFileData;
 import ttctl.ttapi.msg.TtFileDataFit;
 import ttctl.ttapi.msg.TtFileDataWide;
+import ttctl.ttapi.msg.TtFileMap;
 import ttctl.ttapi.msg.TtFileOffer;
 import ttctl.ttapi.msg.TtFileReason;
 import ttctl.ttapi.msg.TtFileStatus;
@@ -48,7 +49,7 @@ final class FileSender {
     final int targetComp;
     final TransferConfig cfg;
     final long requestId;
-    private final int baseFlags;
+    private int baseFlags;
     private final byte[] sha256;
     int flags;
     byte[] meta;
@@ -110,7 +111,8 @@ final class FileSender {
         this.targetComp = targetComp;
         this.cfg = cfg;
         this.requestId = requestId;
-        this.baseFlags = overwrite ? TtFileFlags.TT_FILE_FLAGS_OVERWRITE : 0;
+        // MAP: this sender reads TT_FILE_MAP (a receiver that never sends one ignores the flag)
+        this.baseFlags = (overwrite ? TtFileFlags.TT_FILE_FLAGS_OVERWRITE : 0) | TtFileFlags.TT_FILE_FLAGS_MAP;
         this.sha256 = sha256;
         use(deflated);
         this.started = now;
@@ -467,6 +469,15 @@ final class FileSender {
             state = "offering";
             return;
         }
+        if (code == TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED && (baseFlags & TtFileFlags.TT_FILE_FLAGS_MAP) != 0) {
+            // a receiver from before TT_FILE_MAP refuses the flag it does not know: offer again
+            // without it (and if it refuses a zlib stream too, that comes next), under a new id
+            baseFlags &= ~TtFileFlags.TT_FILE_FLAGS_MAP;
+            use(deflated);
+            restart(now, false);
+            lastProgress = now;
+            return;
+        }
         if (deflated != null && Deflate.fallsBack(code)) { // the file as it is, under a new id
             fallback = reason != null ? reason : Names.resultText(Names.resultName(code), "refused");
             deflated.close();
@@ -499,16 +510,28 @@ final class FileSender {
             lastProgress = now;
         }
         pacer.update(msg.rate_grant, now);
-        rttFromEcho(now, msg);
-        applyStatus(now, msg);
+        rttFromEcho(now, msg.last_offset, msg.hold_ms);
+        apply(now, Reports.of(msg, size), msg.last_offset, msg.hold_ms);
     }
 
-    private void rttFromEcho(double now, TtFileStatus msg) {
-        double[] s = log.sendOf(msg.last_offset);
-        if (s == null || s[1] != 1 || msg.hold_ms == 65535) {
+    /** A TT_FILE_MAP: a status in progress whose gaps come as a bit a frame. */
+    void onMap(double now, TtFileMap msg) {
+        if (done() || msg.transfer_id != id || msg.meta_check != check || "offering".equals(state)) {
+            return; // (a map is sent only once data flows: after the status that accepted the offer)
+        }
+        lastHeard = now;
+        statuses++;
+        pacer.update(msg.rate_grant, now);
+        rttFromEcho(now, msg.last_offset, msg.hold_ms);
+        apply(now, Reports.of(msg, size), msg.last_offset, msg.hold_ms);
+    }
+
+    private void rttFromEcho(double now, long lastOffset, int holdMs) {
+        double[] s = log.sendOf(lastOffset);
+        if (s == null || s[1] != 1 || holdMs == 65535) {
             return;
         }
-        double sample = now - msg.hold_ms / 1000.0 - s[0];
+        double sample = now - holdMs / 1000.0 - s[0];
         if (!(sample > 0.0 && sample < 10.0)) {
             return;
         }
@@ -520,20 +543,12 @@ final class FileSender {
         }
     }
 
-    private void applyStatus(double now, TtFileStatus msg) {
-        long rc = Math.min(msg.received_contiguous, size);
-        long region = Math.max(rc, Math.min(msg.region_start, size));
-        long re = Math.max(region, Math.min(msg.received_end, size));
-        int slots = msg.ranges == null ? 0 : msg.ranges.length / 2;
-        int n = Math.min(msg.range_count & ~RANGES_MORE, slots);
-        List<long[]> missing = new ArrayList<>();
-        for (int i = 0; i < n; i++) {
-            long a = Math.max(msg.ranges[2 * i], region);
-            long b = Math.min(msg.ranges[2 * i + 1], re);
-            if (a < b) {
-                missing.add(new long[] {a, b});
-            }
-        }
+    /** What a status or a map says ({@link Reports}); {@code lastOffset}, {@code holdMs}: its echo. */
+    private void apply(double now, Reports r, long lastOffset, int holdMs) {
+        long rc = r.rc;
+        long region = r.region;
+        long re = r.end;
+        List<long[]> missing = r.missing;
         long before = acked.total();
         acked.add(0, rc);
         long pos = region;
@@ -557,11 +572,11 @@ final class FileSender {
             nextNew = Math.min(end < 0 ? nextNew + 1 : end, size);
         }
         double horizon = now - rtt - 0.05;
-        double[] echo = log.sendOf(msg.last_offset);
-        if (echo != null && msg.hold_ms != 65535) {
+        double[] echo = log.sendOf(lastOffset);
+        if (echo != null && holdMs != 65535) {
             horizon = Math.min(horizon, echo[0] - 2 * geometry.mtu * byteTime);
         }
-        boolean truncated = (msg.range_count & RANGES_MORE) != 0 || n >= slots; // bytes past re: unknown
+        boolean truncated = r.truncated; // bytes past re: unknown
         if (re < nextNew && !truncated) {
             missing.add(new long[] {re, nextNew});
         }

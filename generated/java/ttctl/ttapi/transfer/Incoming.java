@@ -8,6 +8,7 @@ import java.util.List;
 
 import ttctl.ttapi.enums.TtFileFlags;
 import ttctl.ttapi.enums.TtFileResult;
+import ttctl.ttapi.msg.TtFileMap;
 import ttctl.ttapi.msg.TtFileReason;
 import ttctl.ttapi.msg.TtFileStatus;
 import ttctl.ttapi.runtime.MavlinkMessage;
@@ -47,6 +48,7 @@ final class Incoming {
     final double started;
     double lastData = Double.NaN;
     long lastOffset;
+    int chunk; // the latest data frame's capacity: what a bit of a TT_FILE_MAP stands for
     boolean seenEnd;
     double gapDt = 0.05;
     double quietDue = Double.NaN;
@@ -86,10 +88,11 @@ final class Incoming {
     /**
      * What this transfer's receiver says now: the reason for a refusal or failure (when it gave
      * one), then its status (in up to {@code batches} frames of at most {@code per} gaps each
-     * when the gaps need more than one, range_count's top bit set on all but the last), each
-     * carrying {@code grant} (B/s, 0: none).
+     * when the gaps need more than one, range_count's top bit set on all but the last; or, to a
+     * sender whose offer set TT_FILE_FLAGS_MAP, in up to {@value #MAP_BURST} TT_FILE_MAPs of
+     * {@code mapBytes} bytes), each carrying {@code grant} (B/s, 0: none).
      */
-    List<MavlinkMessage> answers(int batches, int per, double now, int grant) {
+    List<MavlinkMessage> answers(int batches, int per, int mapBytes, double now, int grant) {
         List<MavlinkMessage> out = new ArrayList<>();
         if (explained(result) && !reason.isEmpty()) {
             TtFileReason r = new TtFileReason();
@@ -100,11 +103,11 @@ final class Incoming {
             r.text = Arrays.copyOf(Names.fit(reason, 80), 80);
             out.add(r);
         }
-        out.addAll(statuses(batches, per, now, grant));
+        out.addAll(statuses(batches, per, mapBytes, now, grant));
         return out;
     }
 
-    private List<MavlinkMessage> statuses(int batches, int per, double now, int grant) {
+    private List<MavlinkMessage> statuses(int batches, int per, int mapBytes, double now, int grant) {
         List<MavlinkMessage> out = new ArrayList<>();
         if (partial == null) {
             long done = result == TtFileResult.TT_FILE_RESULT_COMPLETE ? size : 0;
@@ -115,6 +118,9 @@ final class Incoming {
         long rc = ranges.prefix();
         long last = ranges.last();
         List<long[]> gaps = ranges.gaps(rc, last);
+        if (gaps.size() > per && (flags & TtFileFlags.TT_FILE_FLAGS_MAP) != 0 && mapBytes > 0 && chunk > 0) {
+            return maps(rc, last, gaps, mapBytes, now, grant);
+        }
         long start = rc;
         for (int k = 0; k < batches; k++) {
             int from = k * per;
@@ -122,6 +128,63 @@ final class Incoming {
             boolean more = gaps.size() > (k + 1) * per;
             long end = more ? batch.get(batch.size() - 1)[1] : last;
             out.add(status(rc, start, end, batch, more, now, grant));
+            start = end;
+            if (!more) {
+                break;
+            }
+        }
+        return out;
+    }
+
+    /** Maps a report holds at most (one covers hundreds of frames), as the Python receiver. */
+    static final int MAP_BURST = 2;
+    /** TT_FILE_MAP's flags: more gaps follow past received_end. */
+    static final int MAP_MORE = 1;
+
+    /**
+     * More gaps than a status lists: TT_FILE_MAPs, a bit a chunk of the sender's frame size on the
+     * grid of the latest frame (frames are lost whole: a lost one is one clear bit), from at or just
+     * below {@code rc}, successive regions of {@code 8 * mapBytes} chunks, as ttctl's Python
+     * proto/reports.py map_regions.
+     */
+    private List<MavlinkMessage> maps(long rc, long last, List<long[]> gaps, int mapBytes, double now, int grant) {
+        List<MavlinkMessage> out = new ArrayList<>();
+        long start = Math.max(0, rc - Math.floorMod(rc - lastOffset, (long) chunk));
+        int k = 0;
+        for (int b = 0; b < MAP_BURST; b++) {
+            long end = Math.min(last, start + 8L * mapBytes * chunk);
+            byte[] m = new byte[TtFileMap.PAYLOAD_LENGTH - 33];
+            long n = (end - start + chunk - 1) / chunk;
+            for (int i = 0; i < n; i++) {
+                m[i >> 3] |= (byte) (1 << (i & 7));
+            }
+            while (k < gaps.size() && gaps.get(k)[0] < end) {
+                long a = gaps.get(k)[0];
+                long e = gaps.get(k)[1];
+                for (long i = (Math.max(a, start) - start) / chunk; i <= (Math.min(e, end) - 1 - start) / chunk; i++) {
+                    m[(int) (i >> 3)] &= (byte) ~(1 << (i & 7));
+                }
+                if (e > end) {
+                    break;
+                }
+                k++;
+            }
+            boolean more = end < last;
+            TtFileMap s = new TtFileMap();
+            s.target_system = key.sys;
+            s.target_component = key.comp;
+            s.transfer_id = key.id;
+            s.meta_check = check;
+            s.received_contiguous = rc;
+            s.region_start = start;
+            s.received_end = end;
+            s.last_offset = lastOffset;
+            s.hold_ms = Double.isNaN(lastData) ? 65535 : (int) Math.min(65535, 1000 * (now - lastData));
+            s.chunk = chunk;
+            s.rate_grant = grant;
+            s.flags = more ? MAP_MORE : 0;
+            s.map = m;
+            out.add(s);
             start = end;
             if (!more) {
                 break;

@@ -9,7 +9,7 @@ import java.util.List;
 /**
  * The loss a sender measures, exactly as ttctl's Python sender does: each first transmission,
  * once a status covers its bytes, was lost if any of them is reported missing; estimates come
- * from the last 64 per frame size (pessimistic: the upper end of the Wilson interval), and choose
+ * from the last 64 per frame size (and, to go wide, the last 256 narrow ones too; pessimistic: the upper end of the Wilson interval), and choose
  * between narrow (one packet) and wide (247-byte, spanning packets) data frames of the link's
  * {@link Geometry}.
  */
@@ -19,6 +19,10 @@ final class LossEstimate {
     private final ArrayDeque<Boolean> wide = new ArrayDeque<>();
     double lossNarrow = Double.NaN;
     double lossWide = Double.NaN;
+    double longLoss = Double.NaN; // narrow frames' over the longer window: going wide needs it too
+    /** Outcomes the estimate comes from (the latest), and those going wide must also allow. */
+    static final int WINDOW = 64;
+    static final int LONG_WINDOW = 256;
     private double wideFrameLoss = Double.NaN; // the upper estimate of wide frames lost, before the geometry
 
     void sent(long start, long end, double when, boolean isWide) {
@@ -46,23 +50,31 @@ final class LossEstimate {
             }
             ArrayDeque<Boolean> window = (Boolean) rec[3] ? wide : narrow;
             window.add(lost);
-            if (window.size() > 64) {
+            if (window.size() > LONG_WINDOW) {
                 window.poll();
             }
         }
         if (narrow.size() >= 8) {
-            lossNarrow = wilsonUpper(count(narrow), narrow.size());
+            lossNarrow = wilsonUpper(countLatest(narrow, WINDOW), Math.min(narrow.size(), WINDOW));
+        }
+        if (narrow.size() > WINDOW) {
+            longLoss = wilsonUpper(countLatest(narrow, LONG_WINDOW), narrow.size());
         }
         if (wide.size() >= 8) {
-            wideFrameLoss = wilsonUpper(count(wide), wide.size());
+            wideFrameLoss = wilsonUpper(countLatest(wide, WINDOW), Math.min(wide.size(), WINDOW));
         }
     }
 
     /** "narrow" or "wide": the more efficient at the loss measured (with hysteresis). */
     String choose(String mode, Geometry g) {
         lossWide = Double.isNaN(wideFrameLoss) ? Double.NaN : g.packetLossFromWide(wideFrameLoss);
-        double p = "wide".equals(mode) && !Double.isNaN(lossWide) ? lossWide
-                : (!Double.isNaN(lossNarrow) ? lossNarrow : lossWide);
+        double n = lossNarrow;
+        if ("narrow".equals(mode) && !Double.isNaN(n) && !Double.isNaN(longLoss)) {
+            // slow to go wide, quick to come back: under bursts of loss a second without one is
+            // common, and wide frames sent into the next burst are lost three packets at a time
+            n = Math.max(n, longLoss);
+        }
+        double p = "wide".equals(mode) && !Double.isNaN(lossWide) ? lossWide : (!Double.isNaN(n) ? n : lossWide);
         if (Double.isNaN(p)) {
             return "narrow";
         }
@@ -75,10 +87,12 @@ final class LossEstimate {
         return better;
     }
 
-    private static int count(ArrayDeque<Boolean> w) {
+    /** Losses among the latest {@code latest} outcomes of {@code w}. */
+    private static int countLatest(ArrayDeque<Boolean> w, int latest) {
         int n = 0;
-        for (Boolean b : w) {
-            if (b) {
+        int k = 0;
+        for (Iterator<Boolean> it = w.descendingIterator(); it.hasNext() && k < latest; k++) {
+            if (it.next()) {
                 n++;
             }
         }

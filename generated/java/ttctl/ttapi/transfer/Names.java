@@ -136,11 +136,12 @@ public final class Names {
 
     /**
      * Why an offer's flags are refused here, in words naming the flags this receiver does not know
-     * (DEFLATE, which it inflates, is known); null if it knows them all.
+     * (DEFLATE, which it inflates, is known; so is MAP, the sender's word that it reads TT_FILE_MAP:
+     * this receiver reports its gaps as ranges, which every sender reads); null if it knows them all.
      */
     static String unknownFlags(int flags) {
         int unknown = flags & 0xFF & ~(TtFileFlags.TT_FILE_FLAGS_OVERWRITE | TtFileFlags.TT_FILE_FLAGS_CANCEL
-                | TtFileFlags.TT_FILE_FLAGS_DEFLATE);
+                | TtFileFlags.TT_FILE_FLAGS_DEFLATE | TtFileFlags.TT_FILE_FLAGS_MAP);
         if (unknown == 0) {
             return null;
         }

@@ -48,6 +48,10 @@ final class ReceiverStatuses {
     Set<FileReceiver.Key> sharing = Collections.emptySet(); // the transfers the link is shared among
     final Sharing.Load load = new Sharing.Load(); // what else comes in (the router counts packets, onData the data)
     int perStatus = FileReceiver.MAX_RANGES; // gaps a status lists: what fits one packet of the link (fit)
+    int mapBytes = MAP_MAX; // a TT_FILE_MAP's map bytes that fit one packet of the link (fit)
+    /** A TT_FILE_MAP's header, checksum and payload before its map, and its map field's bytes. */
+    static final int MAP_FIXED = 12 + 33;
+    static final int MAP_MAX = 52;
 
     ReceiverStatuses(FileReceiver rx) {
         this.rx = rx;
@@ -64,9 +68,18 @@ final class ReceiverStatuses {
         return Math.max(1, Math.min(FileReceiver.MAX_RANGES, room / 8));
     }
 
+    /**
+     * The map bytes of a TT_FILE_MAP that fits one packet of {@code mtu} bytes, signed or not
+     * (42 signed in 100: 336 frames), as ttctl's Python proto/transfer.py map_bytes.
+     */
+    static int mapBytes(int mtu, boolean signed) {
+        return Math.max(0, Math.min(MAP_MAX, mtu - MAP_FIXED - (signed ? Geometry.SIGNATURE : 0)));
+    }
+
     /** Statuses go back in packets of {@code mtu} bytes, signed or not: each lists what fits one. */
     void fit(int mtu, boolean signed) {
         perStatus = rangesPerStatus(mtu, signed);
+        mapBytes = mapBytes(mtu, signed);
     }
 
     /**
@@ -182,7 +195,7 @@ final class ReceiverStatuses {
             if (t.partial != null) {
                 t.partial.save();
             }
-            out.addAll(t.answers(batches(), perStatus, now, grantOf(t)));
+            out.addAll(t.answers(batches(), perStatus, mapBytes, now, grantOf(t)));
             t.lastStatus = now;
             t.quietDue = Double.NaN;
             boolean flowing = t.result == TtFileResult.TT_FILE_RESULT_IN_PROGRESS && t.partial != null

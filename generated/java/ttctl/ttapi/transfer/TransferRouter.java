@@ -8,6 +8,7 @@ import ttctl.ttapi.enums.TtFileResult;
 import ttctl.ttapi.msg.TtFileData;
 import ttctl.ttapi.msg.TtFileDataFit;
 import ttctl.ttapi.msg.TtFileDataWide;
+import ttctl.ttapi.msg.TtFileMap;
 import ttctl.ttapi.msg.TtFileOffer;
 import ttctl.ttapi.msg.TtFileReason;
 import ttctl.ttapi.msg.TtFileRequest;
@@ -64,6 +65,17 @@ final class TransferRouter {
                 TtFileStatus s = (TtFileStatus) msg;
                 if (forUs(s.target_system, s.target_component)) {
                     wake = onStatus(now, s);
+                }
+            } else if (msg instanceof TtFileMap) {
+                TtFileMap m = (TtFileMap) msg;
+                if (forUs(m.target_system, m.target_component)) {
+                    for (FileSender x : ft.senders.values()) {
+                        if (x.id == m.transfer_id && x.targetSys == m.sysId() && x.targetComp == m.compId()) {
+                            x.onMap(now, m);
+                            wake = true;
+                            break;
+                        }
+                    }
                 }
             } else if (msg instanceof TtFileReason) {
                 TtFileReason r = (TtFileReason) msg;
