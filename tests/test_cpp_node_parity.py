@@ -365,11 +365,12 @@ def test_the_nodes_statuses_fit_one_packet(cpp_node_bins: dict[str, Path], tmp_p
         assert not more[-1] or len(b) == full, b
 
 
-@pytest.mark.parametrize("seed,loss,mtu,signed", [(3, 0.02, 100, False), (4, 0.1, 100, False), (5, 0.25, 100, False),
-                                                 (7, 0.02, 128, False), (8, 0.1, 128, False), (9, 0.1, 100, True),
-                                                 (10, 0.02, 128, True)])
+@pytest.mark.parametrize("seed,loss,mtu,signed,old", [(3, 0.02, 100, False, False), (4, 0.1, 100, False, False),
+                                                     (5, 0.25, 100, False, False), (7, 0.02, 128, False, False),
+                                                     (8, 0.1, 128, False, False), (9, 0.1, 100, True, False),
+                                                     (10, 0.02, 128, True, False), (14, 0.25, 100, False, True)])
 def test_the_node_serves_what_pythons_endpoint_serves(cpp_node_bins: dict[str, Path], tmp_path: Path, seed: int,
-                                                      loss: float, mtu: int, signed: bool) -> None:
+                                                      loss: float, mtu: int, signed: bool, old: bool) -> None:
     """Two worlds in virtual time, alike but for the onboard end: a Python tablet fetches a file
     (TT_FILE_REQUEST) over a channel that loses `loss` of the packets either way, from ttctl's
     Python Endpoint in one world and from the C++ node (drawing the same transfer ids) in the
@@ -379,8 +380,10 @@ def test_the_node_serves_what_pythons_endpoint_serves(cpp_node_bins: dict[str, P
     128-byte ones (TT_FILE_DATA_FIT, 107 file bytes filling each packet); signed, in
     TT_FILE_DATA_FIT frames of one packet (66 and 94 file bytes), every frame signed both ways
     (the signings start ahead of the clock, so their timestamps, and so the signatures, are
-    the same in both worlds)."""
+    the same in both worlds). An `old` tablet (from before TT_FILE_MAP) refuses the offer's
+    TT_FILE_FLAGS_MAP by name: both ends offer again without it and serve the file by ranges."""
     from ttctl.proto.endpoint import Endpoint
+    from ttctl.proto.receiver import MAP
     from ttctl.proto.storage import ReceiveDir
 
     b = shipped_bindings()
@@ -396,8 +399,12 @@ def test_the_node_serves_what_pythons_endpoint_serves(cpp_node_bins: dict[str, P
                        receive_dir=ReceiveDir(tmp_path / f"tablet_{name}"),
                        unsolicited=False, accept_commands=False, rng=random.Random(seed),
                        on_event=lambda what, obj, done=done: done.append(True) if what == "file-complete" else None)
+        if old:
+            assert tab.receiver is not None
+            tab.receiver.known_flags &= ~MAP
         tab.request_file("s.bin", (1, 240))
         worlds.append((name, tab, random.Random(seed), done))
+    offer_flags: set[int] = set()
     now = 0.0
     steps = sent = wide = fit = 0
     try:
@@ -414,6 +421,7 @@ def test_the_node_serves_what_pythons_endpoint_serves(cpp_node_bins: dict[str, P
             assert outs["cpp"] == outs["python"], (now, [p.hex() for p in outs["cpp"]],
                                                    [p.hex() for p in outs["python"]])
             sent += len(outs["python"])
+            offer_flags |= {m.flags for p in outs["python"] for m in b.parser().feed(p) if m.NAME == "TT_FILE_OFFER"}
             wide += sum(p.count(bytes.fromhex("59c300")) for p in outs["python"])  # TT_FILE_DATA_WIDE's msgid
             fit += sum(p.count(bytes.fromhex("5ec300")) for p in outs["python"])  # TT_FILE_DATA_FIT's msgid
             steps += 1
@@ -427,4 +435,5 @@ def test_the_node_serves_what_pythons_endpoint_serves(cpp_node_bins: dict[str, P
     if not signed:  # signed, narrow frames carry less and wide ones more: either may win at 10 % loss
         assert (wide > 20) == (loss < 0.05), wide  # little loss: wide frames (the choice is the same too)
     assert (fit > 20) == (mtu == 128 or signed), fit
+    assert {f & MAP for f in offer_flags} == ({MAP, 0} if old else {MAP}), offer_flags  # (refused: again without)
 

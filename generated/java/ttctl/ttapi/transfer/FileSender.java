@@ -33,8 +33,6 @@ final class FileSender {
      * range_count's top bit: more gaps follow past received_end (a status of a burst that holds
      * fewer than the maximum gaps so that it fits one packet); the bytes there are unknown, not missing.
      */
-    static final int RANGES_MORE = 0x80;
-
     static final int META_PART = 71;
 
     final LongSupplier newId;
@@ -511,7 +509,7 @@ final class FileSender {
         }
         pacer.update(msg.rate_grant, now);
         rttFromEcho(now, msg.last_offset, msg.hold_ms);
-        apply(now, Reports.of(msg, size), msg.last_offset, msg.hold_ms);
+        Reports.of(msg, size).applyTo(this, now, msg.last_offset, msg.hold_ms);
     }
 
     /** A TT_FILE_MAP: a status in progress whose gaps come as a bit a frame. */
@@ -523,7 +521,7 @@ final class FileSender {
         statuses++;
         pacer.update(msg.rate_grant, now);
         rttFromEcho(now, msg.last_offset, msg.hold_ms);
-        apply(now, Reports.of(msg, size), msg.last_offset, msg.hold_ms);
+        Reports.of(msg, size).applyTo(this, now, msg.last_offset, msg.hold_ms);
     }
 
     private void rttFromEcho(double now, long lastOffset, int holdMs) {
@@ -543,54 +541,7 @@ final class FileSender {
         }
     }
 
-    /** What a status or a map says ({@link Reports}); {@code lastOffset}, {@code holdMs}: its echo. */
-    private void apply(double now, Reports r, long lastOffset, int holdMs) {
-        long rc = r.rc;
-        long region = r.region;
-        long re = r.end;
-        List<long[]> missing = r.missing;
-        long before = acked.total();
-        acked.add(0, rc);
-        long pos = region;
-        for (long[] m : missing) {
-            if (m[0] > pos) {
-                acked.add(pos, m[0]);
-            }
-            pos = Math.max(pos, m[1]);
-        }
-        if (re > pos) {
-            acked.add(pos, re);
-        }
-        if (acked.total() > before) {
-            lastProgress = now;
-        }
-        if (answers == 1 && before == 0) {
-            resumedBytes = acked.total();
-        }
-        while (nextNew < size && acked.covers(nextNew, Math.min(size, nextNew + 1))) {
-            long end = acked.endOf(nextNew);
-            nextNew = Math.min(end < 0 ? nextNew + 1 : end, size);
-        }
-        double horizon = now - rtt - 0.05;
-        double[] echo = log.sendOf(lastOffset);
-        if (echo != null && holdMs != 65535) {
-            horizon = Math.min(horizon, echo[0] - 2 * geometry.mtu * byteTime);
-        }
-        boolean truncated = r.truncated; // bytes past re: unknown
-        if (re < nextNew && !truncated) {
-            missing.add(new long[] {re, nextNew});
-        }
-        log.lost(missing, horizon, retx);
-        for (int i = 0; i < acked.size(); i++) {
-            long[] a = acked.get(i);
-            retx.remove(a[0], a[1]);
-        }
-        log.prune(acked);
-        classify(horizon, re, truncated, missing);
-        probeDue = wantsData(now) ? Double.NaN : now + Math.max(2 * rtt, 0.5);
-    }
-
-    private void classify(double horizon, long re, boolean truncated, List<long[]> missing) {
+    void classify(double horizon, long re, boolean truncated, List<long[]> missing) {
         loss.classify(horizon, re, truncated, missing);
         if ("auto".equals(cfg.frameMode) && narrowFrames >= cfg.probeFrames) {
             mode = chooseMode();

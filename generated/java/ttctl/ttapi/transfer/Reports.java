@@ -11,7 +11,8 @@ import ttctl.ttapi.msg.TtFileStatus;
  * A receiver's report as a {@link FileSender} reads it, in its two wire forms (as ttctl's Python
  * proto/reports.py): TT_FILE_STATUS's missing ranges, and TT_FILE_MAP's bit per frame, for when
  * the gaps are more than a status lists (a sender that reads maps says so with
- * TT_FILE_FLAGS_MAP in its offer). Bytes below {@code rc}, and in [region, end) outside
+ * TT_FILE_FLAGS_MAP in its offer); and what it does to the sender's books ({@link #applyTo},
+ * Python's sender._apply). Bytes below {@code rc}, and in [region, end) outside
  * {@code missing}, have arrived; past {@code end} they are unknown when {@code truncated} (more
  * reports follow), else the sent ones are missing.
  */
@@ -88,6 +89,54 @@ final class Reports {
         }
         return missing;
     }
+
+    /**
+     * What this report does to sender {@code s}'s books: what arrived is acknowledged, what is
+     * confirmed lost goes to be sent again, the loss of the frames it tells about is measured;
+     * {@code lastOffset}, {@code holdMs}: its echo of the latest frame the receiver had.
+     */
+    void applyTo(FileSender s, double now, long lastOffset, int holdMs) {
+        long re = end;
+        long before = s.acked.total();
+        s.acked.add(0, rc);
+        long pos = region;
+        for (long[] m : missing) {
+            if (m[0] > pos) {
+                s.acked.add(pos, m[0]);
+            }
+            pos = Math.max(pos, m[1]);
+        }
+        if (re > pos) {
+            s.acked.add(pos, re);
+        }
+        if (s.acked.total() > before) {
+            s.lastProgress = now;
+        }
+        if (s.answers == 1 && before == 0) {
+            s.resumedBytes = s.acked.total();
+        }
+        while (s.nextNew < s.size && s.acked.covers(s.nextNew, Math.min(s.size, s.nextNew + 1))) {
+            long to = s.acked.endOf(s.nextNew);
+            s.nextNew = Math.min(to < 0 ? s.nextNew + 1 : to, s.size);
+        }
+        double horizon = now - s.rtt - 0.05;
+        double[] echo = s.log.sendOf(lastOffset);
+        if (echo != null && holdMs != 65535) {
+            horizon = Math.min(horizon, echo[0] - 2 * s.geometry.mtu * s.byteTime);
+        }
+        if (re < s.nextNew && !truncated) { // (truncated: the bytes past re are unknown)
+            missing.add(new long[] {re, s.nextNew});
+        }
+        s.log.lost(missing, horizon, s.retx);
+        for (int i = 0; i < s.acked.size(); i++) {
+            long[] a = s.acked.get(i);
+            s.retx.remove(a[0], a[1]);
+        }
+        s.log.prune(s.acked);
+        s.classify(horizon, re, truncated, missing);
+        s.probeDue = s.wantsData(now) ? Double.NaN : now + Math.max(2 * s.rtt, 0.5);
+    }
+
 
     private static void add(List<long[]> missing, long a, long b) {
         if (!missing.isEmpty() && missing.get(missing.size() - 1)[1] == a) {
