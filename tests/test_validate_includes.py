@@ -72,7 +72,7 @@ def test_bare_ttapi_is_ttctls_shipped_copy_from_anywhere(tmp_path: Path) -> None
                       f"({shown(ttapi, tmp_path)})")
     assert out[1].startswith(f"{shown(ttapi, tmp_path)}:19:3: note: [INCLUDE-SHIPPED] 'common.xml' is pymavlink's copy "
                              f"({shown(common, tmp_path)})"), out[1]
-    assert out[-1].startswith("my.xml: 0 errors, 0 warnings (226 messages, 1 in this file;"), out[-1]
+    assert out[-1].startswith("my.xml: 0 errors, 0 warnings (227 messages, 1 in this file;"), out[-1]
     proc = run_ttctl("validate", "my.xml", "--format", "json", cwd=tmp_path)
     doc = json.loads(proc.stdout)
     assert (doc["ok"], doc["errors"], doc["warnings"], doc["notes"]) == (True, 0, 0, 2)

@@ -45,6 +45,16 @@ from .transfer import (
 MAP = int(TtFileFlags.TT_FILE_FLAGS_MAP)
 
 
+def refused_flags(reason: str | None) -> int:
+    """The offer flags a receiver's words say it does not understand ("offer flags 0x0c not
+    understood here", as ttctl's receivers in every runtime say it); 0 if they name none."""
+    at = (reason or "").find("offer flags 0x")
+    try:
+        return int((reason or "")[at + 14:at + 16], 16) if at >= 0 else 0
+    except ValueError:
+        return 0
+
+
 class FileSender:
     """One outgoing transfer. `new_id()` draws a fresh transfer id (the endpoint's, so that it
     is unique among its transfers); the transfer takes a new one when it starts again."""
@@ -439,9 +449,9 @@ class FileSender:
             self.busy = self.busy or RESULT_TEXT["REFUSED_BUSY"]
             self.state = "offering"  # keep offering (with backoff) until there is room or time is up
             return
-        if code == R.TT_FILE_RESULT_REFUSED_UNSUPPORTED and self._flags & MAP:
-            # a receiver from before TT_FILE_MAP refuses the flag it does not know: offer again without
-            # it (and if it refuses a zlib stream too, that comes next), under a new id
+        if code == R.TT_FILE_RESULT_REFUSED_UNSUPPORTED and self._flags & MAP and refused_flags(self.reason) & MAP:
+            # a receiver from before TT_FILE_MAP refuses the flag it does not know, in words naming it:
+            # offer again without it (and if it refuses a zlib stream too, that comes next), under a new id
             self._flags &= ~MAP
             self._use(self.deflated)
             self._restart(now, count=False)

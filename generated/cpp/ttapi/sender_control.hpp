@@ -16,9 +16,26 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <string_view>
 #include <utility>
 
 namespace ttapi::link {
+
+// The offer flags a receiver's words say it does not understand ("offer flags 0x0c not understood
+// here", as ttctl's receivers in every runtime say it); 0 if they name none.
+inline std::uint8_t refused_flags(std::string_view reason) noexcept
+{
+    const std::size_t at = reason.find("offer flags 0x");
+    if (at == std::string_view::npos || at + 16 > reason.size()) {
+        return 0;
+    }
+    auto digit = [](char c) -> int {
+        return c >= '0' && c <= '9' ? c - '0' : (c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1);
+    };
+    const int hi = digit(reason[at + 14]);
+    const int lo = digit(reason[at + 15]);
+    return hi < 0 || lo < 0 ? std::uint8_t{0} : static_cast<std::uint8_t>(hi << 4 | lo);
+}
 
 template <class Emit>
 inline void FileSender::control(double now, Emit&& emit)
@@ -147,9 +164,10 @@ inline void FileSender::on_status(double now, const TtFileStatus& msg)
         return;
     }
     if (code == static_cast<std::uint8_t>(R::TT_FILE_RESULT_REFUSED_UNSUPPORTED)
-        && (base_flags_ & static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_MAP)) != 0) {
-        // a receiver from before TT_FILE_MAP refuses the flag it does not know: offer again without
-        // it (and if it refuses a zlib stream too, that comes next), under a new id
+        && (base_flags_ & static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_MAP)) != 0 && has_reason_
+        && (refused_flags(reason_.view()) & static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_MAP)) != 0) {
+        // a receiver from before TT_FILE_MAP refuses the flag it does not know, in words naming it:
+        // offer again without it (and if it refuses a zlib stream too, that comes next), under a new id
         base_flags_ =
             static_cast<std::uint8_t>(base_flags_ & ~static_cast<std::uint8_t>(TtFileFlags::TT_FILE_FLAGS_MAP));
         use(deflated_);

@@ -467,9 +467,10 @@ final class FileSender {
             state = "offering";
             return;
         }
-        if (code == TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED && (baseFlags & TtFileFlags.TT_FILE_FLAGS_MAP) != 0) {
-            // a receiver from before TT_FILE_MAP refuses the flag it does not know: offer again
-            // without it (and if it refuses a zlib stream too, that comes next), under a new id
+        if (code == TtFileResult.TT_FILE_RESULT_REFUSED_UNSUPPORTED && (baseFlags & TtFileFlags.TT_FILE_FLAGS_MAP) != 0
+                && (Reports.refusedFlags(reason) & TtFileFlags.TT_FILE_FLAGS_MAP) != 0) {
+            // a receiver from before TT_FILE_MAP refuses the flag it does not know, in words naming
+            // it: offer again without it (and if it refuses a zlib stream too, that comes next)
             baseFlags &= ~TtFileFlags.TT_FILE_FLAGS_MAP;
             use(deflated);
             restart(now, false);

@@ -138,6 +138,20 @@ final class Reports {
     }
 
 
+    /**
+     * The offer flags a receiver's words say it does not understand ("offer flags 0x0c not
+     * understood here", as ttctl's receivers in every runtime say it); 0 if they name none.
+     */
+    static int refusedFlags(String reason) {
+        int at = reason == null ? -1 : reason.indexOf("offer flags 0x");
+        if (at < 0 || at + 16 > reason.length()) {
+            return 0;
+        }
+        int hi = Character.digit(reason.charAt(at + 14), 16);
+        int lo = Character.digit(reason.charAt(at + 15), 16);
+        return hi < 0 || lo < 0 ? 0 : hi << 4 | lo;
+    }
+
     private static void add(List<long[]> missing, long a, long b) {
         if (!missing.isEmpty() && missing.get(missing.size() - 1)[1] == a) {
             missing.get(missing.size() - 1)[1] = b;
