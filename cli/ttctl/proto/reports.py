@@ -2,7 +2,8 @@
 of missing ranges, and TT_FILE_MAP's bit per frame for when the gaps are more than a status
 lists (a sender that reads maps says so with TT_FILE_FLAGS_MAP in its offer). The receiver
 builds maps here (receiver.py builds statuses, which also carry results); the sender reads both
-here into one `Report`, which sender.py applies.
+here into one `Report`, which sender.py applies; and which offer flags a refusal's words name
+(`refused_flags`: a receiver from before TT_FILE_MAP refuses its flag by name).
 """
 
 from __future__ import annotations
@@ -98,4 +99,15 @@ def map_regions(rc: int, last: int, last_offset: int, chunk: int, gaps: list[tup
     return out
 
 
-__all__ = ["Report", "map_gaps", "map_regions", "read_map", "read_status"]
+
+def refused_flags(reason: str | None) -> int:
+    """The offer flags a receiver's words say it does not understand ("offer flags 0x0c not
+    understood here", as ttctl's receivers in every runtime say it); 0 if they name none."""
+    at = (reason or "").find("offer flags 0x")
+    try:
+        return int((reason or "")[at + 14:at + 16], 16) if at >= 0 else 0
+    except ValueError:
+        return 0
+
+
+__all__ = ["Report", "map_gaps", "map_regions", "read_map", "read_status", "refused_flags"]

@@ -26,7 +26,7 @@ from .deflate import DeflatedSource, deflate_meta, deflated
 from .frame_loss import FrameLoss
 from .names import Refused, check_name, encoded
 from .ranges import RangeSet
-from .reports import Report, read_map, read_status
+from .reports import Report, read_map, read_status, refused_flags
 from .sharing import GrantPacer
 from .transfer import (
     DTT,
@@ -44,15 +44,6 @@ from .transfer import (
 
 MAP = int(TtFileFlags.TT_FILE_FLAGS_MAP)
 
-
-def refused_flags(reason: str | None) -> int:
-    """The offer flags a receiver's words say it does not understand ("offer flags 0x0c not
-    understood here", as ttctl's receivers in every runtime say it); 0 if they name none."""
-    at = (reason or "").find("offer flags 0x")
-    try:
-        return int((reason or "")[at + 14:at + 16], 16) if at >= 0 else 0
-    except ValueError:
-        return 0
 
 
 class FileSender:
