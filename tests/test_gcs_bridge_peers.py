@@ -202,19 +202,23 @@ async def persevere(go: Callable[[], Any], keep: bool = False, attempts: int = 3
     raise AssertionError(f"{attempts} mission transfers failed: {failed}")
 
 
-async def again(action: Callable[[], Any], attempts: int = 3) -> None:
-    """A MAVSDK action tried again after a TIMEOUT (MAVSDK resends a command 3 times 0.5 s apart, which
-    a burst of loss can swallow): what its user does. Any other error fails at once."""
+async def again(action: Callable[[], Any], attempts: int = 3) -> Any:
+    """A MAVSDK call tried again after a TIMEOUT (MAVSDK resends a command 3 times 0.5 s apart, and a
+    parameter's PARAM_SET or read as often, which a burst of loss can swallow): what its user does.
+    Action's parameter calls (`set_takeoff_altitude`) report that timeout as PARAMETER_ERROR. Any
+    other error fails at once. Its value."""
     from mavsdk.plugins.action import ActionError
     from mavsdk.plugins.mission import MissionError
+    from mavsdk.plugins.param import ParamError
 
     for i in range(attempts):
         try:
-            await action()
-            return
-        except (ActionError, MissionError) as e:
-            if "TIMEOUT" not in str(e) or i == attempts - 1:
+            return await action()
+        except (ActionError, MissionError, ParamError) as e:
+            lost = "TIMEOUT" in str(e) or (isinstance(e, ActionError) and "PARAMETER_ERROR" in str(e))
+            if not lost or i == attempts - 1:
                 raise
+    return None
 
 
 def test_mavsdk_default_configuration_connects_through_the_bridge(tmp_path: Path, start: Start) -> None:
@@ -263,13 +267,14 @@ def test_mavsdk_flies_a_mission_through_the_bridge(tmp_path: Path, start: Start,
         assert not await tel.armed()
         assert await tel.flight_mode() == FlightMode.HOLD
         await _until(tel.health, lambda h: h.is_armable and h.is_global_position_ok, 15)
-        assert await par.get_param_float("MPC_XY_VEL_MAX") == pytest.approx(1.5)
-        await par.set_param_float("MPC_XY_VEL_MAX", 2.5)
-        assert await par.get_param_float("MPC_XY_VEL_MAX") == pytest.approx(2.5)
-        assert await par.get_param_int("NAV_DLL_ACT") == 2
+        assert await again(lambda: par.get_param_float("MPC_XY_VEL_MAX")) == pytest.approx(1.5)
+        await again(lambda: par.set_param_float("MPC_XY_VEL_MAX", 2.5))
+        assert await again(lambda: par.get_param_float("MPC_XY_VEL_MAX")) == pytest.approx(2.5)
+        assert await again(lambda: par.get_param_int("NAV_DLL_ACT")) == 2
         await again(act.arm)
         await _until(tel.armed, bool, 5)
-        await act.set_takeoff_altitude(4.0)
+        await again(lambda: act.set_takeoff_altitude(4.0))
+        assert await again(lambda: par.get_param_float("MIS_TAKEOFF_ALT")) == pytest.approx(4.0)
         await again(act.takeoff)
         await _until(tel.position, lambda p: p.relative_altitude_m > 3.8, 25)
         await _until(tel.in_air, bool, 5)  # EXTENDED_SYS_STATE, a stream fitted to the link: a little later
@@ -375,9 +380,9 @@ def test_two_ground_stations_each_get_their_own_answers(tmp_path: Path, start: S
 
         watchers = [asyncio.ensure_future(collect("RADIO_STATUS"))]
         await _until(tel.health, lambda h: h.is_armable, 15)
-        assert await par.get_param_int("NAV_DLL_ACT") == 2
+        assert await again(lambda: par.get_param_int("NAV_DLL_ACT")) == 2
         await again(act.arm)
-        await act.set_takeoff_altitude(3.0)
+        await again(lambda: act.set_takeoff_altitude(3.0))
         await again(act.takeoff)
         await _until(tel.position, lambda p: p.relative_altitude_m > 2.8, 20)
         while not side_done.exists():
