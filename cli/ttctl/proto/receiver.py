@@ -308,7 +308,8 @@ class FileReceiver:
             t.gap_dt = 0.8 * t.gap_dt + 0.2 * min(1.0, now - t.last_data)
         t.last_data = now
         t.last_offset = offset
-        t.chunk = cap
+        if offset + length < t.size or not t.chunk:  # (the file's last frame, often a shorter kind, keeps the grid)
+            t.chunk = cap
         ranges = t.partial.ranges
         new_gap = len(ranges) > gaps_before
         at_end = offset + length >= t.size

@@ -59,7 +59,9 @@ inline void FileReceiver::on_data(double now, std::uint32_t transfer_id, std::ui
     t.has_last_data = true;
     t.last_data = now;
     t.last_offset = offset;
-    t.chunk = static_cast<std::uint32_t>(cap);
+    if (offset + length < t.size || t.chunk == 0) {  // (the file's last frame, often a shorter kind, keeps the grid)
+        t.chunk = static_cast<std::uint32_t>(cap);
+    }
     const std::size_t gaps = partial.ranges().size();
     const bool new_gap = gaps > gaps_before;
     const bool at_end = offset + length >= t.size;

@@ -400,7 +400,9 @@ final class FileReceiver {
         }
         t.lastData = now;
         t.lastOffset = offset;
-        t.chunk = cap;
+        if (offset + length < t.size || t.chunk == 0) {  // (the file's last frame, often a shorter kind, keeps the grid)
+            t.chunk = cap;
+        }
         RangeSet ranges = t.partial.ranges;
         boolean newGap = ranges.size() > gapsBefore;
         boolean atEnd = offset + length >= t.size;
