@@ -50,7 +50,14 @@ def test_a_command_is_resent_with_confirmation_counted_up_until_its_ack() -> Non
     assert sent[-1][0] < BOUND and not u.r.pending  # bounded
     u.request(10.0, command(b, 512, 242))
     u.r.answer(10.3, b.CommandAck(command=512, result=0, target_system=WHO[0], target_component=WHO[1]), WHO)
+    # REQUEST_MESSAGE(HOME_POSITION) accepted, but the message travels apart and was lost: asked again
+    assert u.r.pending and [n for n, _ in u.r.tick(11.2)] == ["COMMAND_LONG"]
+    u.r.answer(11.5, b.HomePosition(latitude=1, longitude=2, altitude=3, x=0, y=0, z=0, q=[1, 0, 0, 0],
+                                    approach_x=0, approach_y=0, approach_z=0), None)
     assert not u.r.pending and u.r.tick(12.0) == []  # answered: no resend
+    u.request(20.0, command(b, 512, 9999))  # refused: the ack is the whole answer
+    u.r.answer(20.3, b.CommandAck(command=512, result=3, target_system=WHO[0], target_component=WHO[1]), WHO)
+    assert not u.r.pending
 
 
 def test_no_resend_while_the_request_still_waits_in_the_uplink_queue() -> None:

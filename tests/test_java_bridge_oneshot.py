@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 
 from e2e_lib import LOCAL, Start, free_port, relay
+from test_gcs_bridge_oneshot import ack_and
 from test_java_bridge_e2e import RELAY, Driver, Gcs, classes  # noqa: F401  (the module's fixture)
 
 pytestmark = pytest.mark.skipif(not (shutil.which("javac") and shutil.which("java")),
@@ -42,7 +43,7 @@ def test_java_bridge_answers_one_shot_requests_at_10_percent_loss(classes: Path,
         commands = params = lists = 0
         for i in range(20):
             qgc.m.mav.command_long_send(1, 1, 512, 0, 242, 0, 0, 0, 0, 0, 0)  # REQUEST_MESSAGE(HOME_POSITION)
-            commands += qgc.wait(lambda m: m.get_type() == "COMMAND_ACK" and m.command == 512, WAIT) is not None
+            commands += qgc.wait(ack_and(512, "HOME_POSITION"), WAIT) is not None  # (the ack and the message)
             n = names[i]
             qgc.m.mav.param_request_read_send(1, 1, n.encode(), -1)
             params += qgc.wait(lambda m, n=n: m.get_type() == "PARAM_VALUE" and m.param_id == n, WAIT) is not None

@@ -8,7 +8,11 @@ request going up and the answer coming down, resends the request at the link's r
 own measure: request to answer, from requests answered at the first send), backing off, for at
 most BOUND seconds. What answers what:
 
-- COMMAND_LONG / COMMAND_INT: the COMMAND_ACK for that command to that station. A resent
+- COMMAND_LONG / COMMAND_INT: the COMMAND_ACK for that command to that station; for a command
+  that asks for a message (MAV_CMD_REQUEST_MESSAGE, REQUEST_AUTOPILOT_CAPABILITIES,
+  GET_HOME_POSITION) also that message, which travels apart from the ack and is lost apart from
+  it (an accepting ack without it is not the answer: QGroundControl waits 3 s before asking
+  again for AUTOPILOT_VERSION, the first thing it asks). A resent
   COMMAND_LONG goes with its confirmation counted up, which the vehicle takes as a retry of one it
   did (answered with its recorded result, never done twice: onboard/gcs.py); a COMMAND_INT, which
   has no confirmation, is taken as a retry when it equals one done within its REPEAT seconds.
@@ -42,6 +46,10 @@ REQUESTS = frozenset({"COMMAND_LONG", "COMMAND_INT", "MISSION_REQUEST_LIST", "MI
 
 Key = tuple[Any, ...]
 
+# commands whose answer is a message as well as the ack: command id -> the message id (None: param1)
+ASKS_FOR = {512: None, 520: 148, 410: 242}  # REQUEST_MESSAGE; AUTOPILOT_VERSION; HOME_POSITION
+ACCEPTED = 0  # MAV_RESULT_ACCEPTED
+
 
 @dataclass
 class _Pending:
@@ -54,6 +62,9 @@ class _Pending:
     rto: float
     sends: int = 1
     seq: int = 0
+    wants: int | None = None  # a command asking for a message: that message's id
+    acked: bool = False  # ... its COMMAND_ACK (accepted) has come
+    got: bool = False  # ... the message has come
 
 
 class Resender:
@@ -109,6 +120,11 @@ class Resender:
             p.msg, p.frame, p.first, p.due, p.rto = msg, frame, now, now + self.rto(), self.rto()
         else:
             p = _Pending(name, msg, who, frame, now, now + self.rto(), self.rto(), seq=msg.get_seq())
+        if name in ("COMMAND_LONG", "COMMAND_INT") and int(msg.command) in ASKS_FOR:
+            wants = ASKS_FOR[int(msg.command)]
+            param1 = float(msg.param1)
+            p.wants = wants if wants is not None else (int(param1) if param1 == param1 and param1 >= 0 else None)
+            p.acked = p.got = False
         self.pending[key] = p
         while len(self.pending) > MAX_PENDING:
             self.pending.popitem(last=False)
@@ -118,17 +134,29 @@ class Resender:
         """A frame from the vehicle for the station carried as `who` (None: for every station)."""
         name = msg.NAME
         done: list[Key] = []
+        msgid = getattr(msg, "MSG_ID", None)
+        for key, waits in self.pending.items():  # a message a command asked for (AUTOPILOT_VERSION has no target)
+            if waits.wants is not None and waits.wants == msgid and (who is None or key[0] == who):
+                waits.got = True
+                if waits.acked:
+                    done.append(key)
         if name == "COMMAND_ACK" and who is not None:
-            done = [(who, "cmd", int(msg.command))]
+            key = (who, "cmd", int(msg.command))
+            waits_for = self.pending.get(key)
+            if waits_for is not None and waits_for.wants is not None and not waits_for.got \
+                    and int(msg.result) == ACCEPTED:
+                waits_for.acked = True  # the message is still to come (or was lost): not answered yet
+            else:
+                done.append(key)
         elif name == "PARAM_VALUE":  # (no target: every station gets it)
             pid, index = _name(msg.param_id), int(msg.param_index)
-            done = [k for k in self.pending if k[1] == "params" or (k[1] == "param" and k[2] in (pid, index))]
+            done += [k for k in self.pending if k[1] == "params" or (k[1] == "param" and k[2] in (pid, index))]
         elif name == "MISSION_COUNT" and who is not None:
-            done = [(who, "mlist", int(msg.mission_type))]
+            done.append((who, "mlist", int(msg.mission_type)))
         elif name in ("MISSION_ITEM_INT", "MISSION_ITEM") and who is not None:
-            done = [(who, "mitem", int(msg.mission_type), int(msg.seq))]
+            done.append((who, "mitem", int(msg.mission_type), int(msg.seq)))
         elif name == "MISSION_ACK" and who is not None:
-            done = [k for k in self.pending if k[0] == who and k[1] in ("mlist", "mitem", "mclear")]
+            done += [k for k in self.pending if k[0] == who and k[1] in ("mlist", "mitem", "mclear")]
         for k in done:
             p = self.pending.pop(k, None)
             if p is None:

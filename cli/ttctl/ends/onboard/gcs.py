@@ -139,10 +139,11 @@ class GroundStations:
                 for v in (msg.param1, msg.param2, msg.param3, msg.param4, getattr(msg, "param5", getattr(msg, "x", 0)),
                           getattr(msg, "param6", getattr(msg, "y", 0)), getattr(msg, "param7", getattr(msg, "z", 0)))))
             done = self._retry_of(now, peer, key, msg)
-            if done is not None:
+            if done is not None and msg.command not in self._asks_for_message:
                 # a retry of a command done here (its ack was lost on the way, or the tablet's bridge
                 # resent it): the same answer again, not done twice (a take-off retried while climbing
-                # is not "denied", nor a second take-off)
+                # is not "denied", nor a second take-off). A request for a message is done again: the
+                # message may be what the link lost, and PX4 answers every such request
                 if msg.command in self.ap.flight_commands:
                     self.log(f"{self._cmd_name(msg.command)} from {peer[0]}/{peer[1]} again: answered as before "
                              f"({self._result_name(done)}), not done twice")
@@ -193,6 +194,12 @@ class GroundStations:
             self.ap.set_current(msg.seq)
         elif self.ap.missions is not None and type(msg).__name__.startswith("Mission"):
             self.ap.missions.on_message(now, msg)
+
+    @property
+    def _asks_for_message(self) -> tuple[int, ...]:
+        C = self.b.MavCmd
+        return (int(C.MAV_CMD_REQUEST_MESSAGE), int(C.MAV_CMD_GET_HOME_POSITION),
+                int(C.MAV_CMD_REQUEST_AUTOPILOT_CAPABILITIES))
 
     def _retry_of(self, now: float, peer: tuple[int, int], key: Any, msg: Any) -> int | None:
         """The recorded result when `msg` retries a command this peer had done within REPEAT: a

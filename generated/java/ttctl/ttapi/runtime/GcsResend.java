@@ -19,7 +19,9 @@ import java.util.Map;
  * <li>COMMAND_LONG / COMMAND_INT (to component 0 or 1) until the COMMAND_ACK for that command to
  * that station. A COMMAND_LONG goes again with its confirmation counted up, which the vehicle
  * takes as a retry of one it did (answered as before, never done twice); a COMMAND_INT, which
- * has no confirmation, is taken as a retry when it equals one done within 5 s.</li>
+ * has no confirmation, is taken as a retry when it equals one done within 5 s. A command that asks
+ * for a message (MAV_CMD_REQUEST_MESSAGE, REQUEST_AUTOPILOT_CAPABILITIES, GET_HOME_POSITION) also
+ * until that message, which travels apart from the ack and is lost apart from it.</li>
  * <li>MISSION_REQUEST_LIST until that station's MISSION_COUNT, MISSION_REQUEST_INT / MISSION_REQUEST
  * until that item, MISSION_CLEAR_ALL until a MISSION_ACK (which also ends the other two).</li>
  * <li>PARAM_REQUEST_READ and PARAM_SET until a PARAM_VALUE of that name (or index),
@@ -47,6 +49,9 @@ public final class GcsResend {
         long due;
         double rto;
         int sends = 1;
+        int wants = -1; // a command asking for a message: that message's id
+        boolean acked; // ... its COMMAND_ACK (accepted) has come
+        boolean got; // ... the message has come
     }
 
     private final LinkedHashMap<String, Pending> pending = new LinkedHashMap<>();
@@ -68,6 +73,30 @@ public final class GcsResend {
 
     private static int u16(byte[] f, int offset) {
         return u8(f, offset) | u8(f, offset + 1) << 8;
+    }
+
+    private static float f32(byte[] f, int offset) {
+        return Float.intBitsToFloat(u16(f, offset) | u16(f, offset + 2) << 16);
+    }
+
+    /** The message a COMMAND_LONG / COMMAND_INT asks for (-1: none, or not such a command). */
+    private static int asksFor(byte[] f) {
+        int id = GcsRules.msgId(f);
+        if (id != 76 && id != 75) {
+            return -1;
+        }
+        switch (u16(f, 28)) {
+            case 512: { // MAV_CMD_REQUEST_MESSAGE: param1
+                float p1 = f32(f, 0);
+                return p1 >= 0 && p1 < 1 << 24 ? (int) p1 : -1;
+            }
+            case 520: // MAV_CMD_REQUEST_AUTOPILOT_CAPABILITIES
+                return 148; // AUTOPILOT_VERSION
+            case 410: // MAV_CMD_GET_HOME_POSITION
+                return 242; // HOME_POSITION
+            default:
+                return -1;
+        }
     }
 
     private static String name(byte[] f, int offset) {
@@ -129,6 +158,9 @@ public final class GcsResend {
         p.rto = rto();
         p.due = now + (long) (p.rto * 1e9);
         p.sends = 1;
+        p.wants = asksFor(frame);
+        p.acked = false;
+        p.got = false;
         pending.put(k, p);
         while (pending.size() > MAX_PENDING) {
             Iterator<String> it = pending.keySet().iterator();
@@ -146,10 +178,25 @@ public final class GcsResend {
         if (ts > 0) {
             who = who(ts, Math.max(0, GcsRules.targetComponent(f)));
         }
+        for (Map.Entry<String, Pending> e : pending.entrySet()) { // a message a command asked for (any target)
+            Pending p = e.getValue();
+            if (p.wants >= 0 && p.wants == id && (who == null || e.getKey().startsWith(who))) {
+                p.got = true;
+                if (p.acked) {
+                    done.add(e.getKey());
+                }
+            }
+        }
         switch (id) {
             case 77: // COMMAND_ACK
                 if (who != null) {
-                    done.add(who + "cmd|" + u16(f, 0));
+                    String k = who + "cmd|" + u16(f, 0);
+                    Pending p = pending.get(k);
+                    if (p != null && p.wants >= 0 && !p.got && u8(f, 2) == 0) {
+                        p.acked = true; // accepted, the message still to come (or lost): not answered yet
+                    } else {
+                        done.add(k);
+                    }
                 }
                 break;
             case 22: { // PARAM_VALUE (no target: every station gets it)
@@ -184,7 +231,7 @@ public final class GcsResend {
                 }
                 break;
             default:
-                return;
+                break;
         }
         for (String k : done) {
             Pending p = pending.remove(k);
