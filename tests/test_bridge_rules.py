@@ -184,21 +184,34 @@ def item(seq: int, count_lat: int = 0) -> Any:
 def test_mission_relay_pipelines_an_upload_and_acknowledges_nothing_itself() -> None:
     from ttctl.bridge.missions import MissionRelay
 
-    relay = MissionRelay(lambda who, seq, kind: ("req", who, seq), window=2)
+    queued: list[bytes] = []  # the bridge's uplink queue: frames not yet on the link
+    relay = MissionRelay(lambda who, seq, kind: ("req", who, seq), ahead=2, waiting=lambda f: f in queued,
+                         window=6)
     who = (245, 190)
-    count = B.MissionCount(target_system=1, target_component=1, count=5, mission_type=0)
+    count = B.MissionCount(target_system=1, target_component=1, count=8, mission_type=0)
     pending = relay.from_gcs(0.0, count, who, b"count")
     assert pending == [("req", who, 0)]  # asked at once, not after a round trip over the link
     given: list[int] = []
 
-    def station_answers(t: float) -> None:  # a ground station gives what it is asked for
+    def station_answers(t: float) -> None:  # a ground station gives what it is asked for; it goes up
         while pending:
             _, _, seq = pending.pop(0)
             given.append(seq)
+            queued.append(f"item{seq}".encode())
             pending.extend(relay.from_gcs(t, item(seq), who, f"item{seq}".encode()))
 
+    def link_takes(t: float) -> None:
+        queued.clear()
+        pending.extend(req for _, req in relay.ahead_requests(t))
+        station_answers(t)
+
     station_answers(0.01)
-    assert given == [0, 1]  # two ahead of what the vehicle asked for (nothing yet): the window
+    assert given == [0, 1]  # as many as the uplink queue holds: AHEAD waiting, not a round trip each
+    link_takes(0.1)
+    assert given == [0, 1, 2, 3]  # the next ones as the link takes them, whatever the vehicle said yet
+    link_takes(0.2)
+    link_takes(0.3)
+    assert given == [0, 1, 2, 3, 4, 5]  # no further than the window (6) ahead of the vehicle, silent so far
 
     def vehicle_asks(t: float, seq: int) -> tuple[bool, list[bytes]]:
         req = B.MissionRequestInt(target_system=245, target_component=190, seq=seq, mission_type=0)
@@ -207,15 +220,26 @@ def test_mission_relay_pipelines_an_upload_and_acknowledges_nothing_itself() -> 
         station_answers(t)
         return passed, again
 
-    assert vehicle_asks(0.2, 0) == (False, [])  # on its way: swallowed, nothing resent; one more asked
-    assert given == [0, 1, 2]
-    assert vehicle_asks(0.7, 0) == (False, [b"item0"])  # asked again: it was lost, it goes once more
-    assert vehicle_asks(0.8, 2) == (False, []) and given == [0, 1, 2, 3, 4]  # the vehicle at 2: the rest
-    assert vehicle_asks(0.9, 4) == (False, [])  # the last item asked for: on its way
-    assert relay.tick(1.5) == [] and relay.tick(2.0) == [b"item4"]  # no verdict 1 s later: the last item again
+    assert vehicle_asks(0.35, 0) == (False, [])  # on its way: swallowed, nothing resent
+    assert given == [0, 1, 2, 3, 4, 5, 6]  # and one more may go; the last (7) waits: it starts the station's clock
+    link_takes(0.4)
+    assert given[-1] == 6
+    link_takes(1.4)
+    assert given[-1] == 7  # but asked for nothing for 1 s the station would give up: the last one goes anyway
+    assert vehicle_asks(1.5, 0) == (False, [b"item0"])  # asked again: it was lost, it goes once more
+    assert vehicle_asks(1.55, 0) == (False, [])  # and not again while that one is in flight
+    assert vehicle_asks(1.8, 4) == (False, [b"item4"])  # first asked for 1.6 s after it went up: it was lost
+    assert vehicle_asks(1.95, 12) == (False, [])  # an item never asked of the station: a stale request, swallowed
+    assert relay.uploads[who].wanted == 4
+    assert vehicle_asks(2.0, 7) == (False, [])  # the last item asked for: on its way
+    queued.clear()
+    assert relay.tick(2.5) == [] and relay.tick(2.7) == [b"item7"]  # no verdict 0.6 s later: the last item again
+    assert relay.ahead_requests(3.0) == []  # (the station is not asked again: MAVSDK counts that a retry)
     ack = B.MissionAck(target_system=245, target_component=190, type=0, mission_type=0)
     assert relay.from_vehicle(3.0, ack, who) == (True, [], [])  # the vehicle's own verdict, passed on
     assert who not in relay.uploads
+    late = B.MissionRequestInt(target_system=245, target_component=190, seq=7, mission_type=0)
+    assert relay.from_vehicle(3.1, late, who)[0] is False  # a request sent before the verdict: not the station's
     # a count the vehicle never answers (lost) goes again, and what followed it with it
     relay.from_gcs(10.0, count, who, b"count")
     relay.from_gcs(10.01, item(0), who, b"item0")
@@ -235,7 +259,7 @@ def test_a_lost_mission_ack_after_items_the_vehicle_never_asked_for_brings_the_l
     again, which the vehicle answers with its verdict again."""
     from ttctl.bridge.missions import MissionRelay
 
-    relay = MissionRelay(lambda who, seq, kind: ("req", who, seq), window=4)
+    relay = MissionRelay(lambda who, seq, kind: ("req", who, seq))
     who = (245, 190)
     pending = relay.from_gcs(0.0, B.MissionCount(target_system=1, target_component=1, count=3, mission_type=0),
                              who, b"count")
@@ -304,3 +328,33 @@ def test_download_relay_answers_from_the_vehicles_own_items() -> None:
     assert ask(1.2, 3)[0]  # asked 1.2 s ago and never came: the station's own request goes up
     assert relay.from_gcs(2.0, B.MissionAck(target_system=1, target_component=1, type=0, mission_type=0), who)[0]
     assert who not in relay.downloads
+
+
+def test_a_parameter_list_the_link_lost_part_of_is_completed_by_reads() -> None:
+    """A list of 5 values loses index 2 and 4 on the way down: once the stream is quiet the bridge
+    reads them by index (as the station would, 3 s later), at most TRIES times each, and stops when
+    the list is whole or its bound passes."""
+    from ttctl.bridge.params import QUIET, TRIES, ParamLists
+
+    lists = ParamLists()
+    who = (254, 190)
+    lists.request(0.0, who)
+    assert lists.tick(0.2) == []  # nothing heard yet: the request's own resend covers a lost one
+    for i in (0, 1, 3):
+        lists.value(0.3 + i / 100, i, 5)
+    assert lists.tick(0.35) == []  # the stream goes on
+    assert lists.tick(0.33 + QUIET) == [(who, 2), (who, 4)]  # quiet: the missing ones, read
+    assert lists.tick(0.4 + QUIET) == []  # their answers have a round trip
+    lists.value(1.0, 2, 5)
+    assert lists.tick(1.0 + QUIET) == [(who, 4)]  # one read came back; the other again
+    for t in range(TRIES):
+        lists.tick(2.0 + t)
+    assert lists.tick(9.0) == [] and not lists.lists  # given up after TRIES reads of it
+    lists.request(20.0, who)
+    for i in range(5):
+        lists.value(20.1, i, 5)
+    assert lists.tick(21.0) == [] and not lists.lists and lists.read == 4  # whole: nothing read
+    lists.value(21.0, 7, 5)  # an index beyond the count (a stranger's): ignored
+    lists.request(30.0, who)
+    lists.value(30.1, 0, 100_000)  # a count no vehicle has: not followed
+    assert lists.tick(31.0) == []

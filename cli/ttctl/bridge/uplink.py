@@ -60,9 +60,11 @@ class GcsUplink:
         self.stats = UplinkStats()
 
     # -- in ------------------------------------------------------------------------------------
-    def put(self, now: float, name: str, frame: bytes) -> str:
+    def put(self, now: float, name: str, frame: bytes, first: bool = False) -> str:
         """Queue an unsigned MAVLink 2 frame of message `name`: "queued", "duplicate", "replaced"
-        (a newer frame took a waiting one's slot); "overflow" is counted when the oldest went."""
+        (a newer frame took a waiting one's slot); "overflow" is counted when the oldest went.
+        `first`: a protocol frame the vehicle is waiting for (a lost one, sent again) goes ahead of
+        the protocol frames already waiting."""
         key = _key(frame)
         if name in NEWEST:
             slot = key[:3]
@@ -93,7 +95,10 @@ class GcsUplink:
             old, _ = self.protocol.popleft()
             self._forget(old)
             self.stats.overflow += 1
-        self.protocol.append((key, frame))
+        if first:
+            self.protocol.appendleft((key, frame))
+        else:
+            self.protocol.append((key, frame))
         self._waiting[key] = 1
         self.stats.queued += 1
         return "queued"

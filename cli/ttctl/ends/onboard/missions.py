@@ -20,7 +20,8 @@ from ...wire.bindings import Bindings
 
 RETRY = 0.5  # s before an item is asked for again (a round trip over DTT is about 0.2 s)
 RETRIES = 10
-GAP_ASK = 0.25  # s: a later item came while one is missing: ask for it again, at most this often
+GAP_ASK = 0.15  # s: a later item came while one is missing (the link keeps order: it was lost): ask for it
+# again, at most this often (a resend is then on its way)
 
 
 @dataclass

@@ -18,6 +18,7 @@ from typing import Any
 from ...bridge.classes import ONBOARD_COMPID, RADIO_COMPID
 from ...bridge.downloads import DownloadRelay
 from ...bridge.missions import MissionRelay
+from ...bridge.params import ParamLists
 from ...bridge.resend import Resender
 from ...bridge.routes import Routes
 from ...bridge.uplink import MAX_PROTOCOL, GcsUplink
@@ -64,6 +65,7 @@ class GcsBridge:
         self.downloads = DownloadRelay(self._request_up)
         # one-shot requests (commands, parameter reads, mission lists) sent again until answered
         self.resend = Resender(lambda msg, seq, who: bytes(msg.pack(seq, *who)), self.uplink.waiting)
+        self.params = ParamLists()  # parameter lists: what the link lost of one, read again at once
         self._up_seq = 0
         self.stats = BridgeStats()
         self.ep: Endpoint | None = None
@@ -143,6 +145,8 @@ class GcsBridge:
                     queued = queued or bool(ahead)
                     if not forward:
                         continue
+                if msg.NAME == "PARAM_REQUEST_LIST":
+                    self.params.request(now, carried)
                 frame = msg.pack(msg.get_seq(), *carried)
                 self.uplink.put(now, msg.NAME, frame)
                 self.resend.request(now, msg.NAME, msg, carried, bytes(frame))
@@ -199,14 +203,16 @@ class GcsBridge:
             target = (int(msg.target_system), int(getattr(msg, "target_component", 0) or 0))
         who = target if target is not None and target[0] else None
         self.resend.answer(loop_now, msg, who)  # (the answer to a request: no more resends of it)
+        if msg.NAME == "PARAM_VALUE":
+            self.params.value(loop_now, int(msg.param_index), int(msg.param_count))
         if msg.NAME.startswith("MISSION_"):
             forward, again, requests = self.missions.from_vehicle(loop_now, msg, who)
             passed, ahead = self.downloads.from_vehicle(loop_now, msg, who)
             forward = forward and passed
             for frame in ahead:
                 self.uplink.put(loop_now, "MISSION_REQUEST_INT", frame)
-            for frame in again:
-                self.uplink.put(loop_now, "MISSION_ITEM_INT", frame)
+            for frame in again:  # (an item the vehicle lacks, asked for again: ahead of the next ones)
+                self.uplink.put(loop_now, "MISSION_ITEM_INT", frame, first=True)
             for req in requests:
                 self._to_gcs(loop_now, req, target)  # type: ignore[arg-type]
             if again or ahead:
@@ -233,6 +239,12 @@ class GcsBridge:
         self._up_seq = (self._up_seq + 1) & 0xFF
         return bytes(self.b.MissionRequestInt(target_system=self.vehicle, target_component=1, seq=seq,
                                               mission_type=mission_type).pack(self._up_seq, *who))
+
+    def _param_read_up(self, who: tuple[int, int], index: int) -> bytes:
+        """A PARAM_REQUEST_READ of `index` to the vehicle as the station carried as `who` sends it."""
+        self._up_seq = (self._up_seq + 1) & 0xFF
+        return bytes(self.b.ParamRequestRead(target_system=self.vehicle, target_component=1, param_id=b"",
+                                             param_index=index).pack(self._up_seq, *who))
 
     def _to_gcs(self, now: float, msg: Any, carried: tuple[int, int]) -> None:
         """A frame of the bridge's own, as the vehicle's autopilot, to the station carried as `carried`."""
@@ -279,12 +291,17 @@ class GcsBridge:
         while True:
             now = loop.time()
             again = self.missions.tick(now)  # (and a mission upload's lost count or last item, sent again)
+            for who, req in self.missions.ahead_requests(now):  # (the next items as the uplink takes them)
+                self._to_gcs(now, req, who)
             for frame in again:
                 self.uplink.put(now, "MISSION_ITEM_INT", frame)  # (protocol frames: the name tells only newest-wins)
             resent = self.resend.tick(now)  # one-shot requests whose answer has not come in a round trip
             for name, frame in resent:
                 self.uplink.put(now, name, frame)
-            if again or resent:
+            reads = self.params.tick(now)  # what the link lost of a parameter list, read again
+            for who, index in reads:
+                self.uplink.put(now, "PARAM_REQUEST_READ", self._param_read_up(who, index))
+            if again or resent or reads:
                 self.kick()
             if now < due:
                 await asyncio.sleep(TICK)
@@ -309,6 +326,7 @@ class GcsBridge:
                 + f"{self.stats.not_carried} for other systems not carried), {self.stats.down} down; "
                 + f"{self.resend.resent} one-shot requests resent ({self.resend.rescued} answered only then, "
                 + f"{self.resend.given_up} never)"
+                + (f"; {self.params.read} parameters of lists read again" if self.params.read else "")
                 + (f"; ids the dialect lacks: {self.stats.unknown_up} carried by header, "
                    f"{self.stats.unknown_dropped} not" if self.stats.unknown_up or self.stats.unknown_dropped else "")
                 + (f"; MAVLink 1: {self.stats.v1_up} up, {self.stats.v1_down} down, {self.stats.v1_dropped} not "
