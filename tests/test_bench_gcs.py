@@ -164,7 +164,10 @@ def test_a_floor_physics_rules_out_says_so() -> None:
     from ttctl.bench.gcs_report import checks, physical_best
 
     best_up, why_up = physical_best("m100", 10.0, "upload_s", 10)
-    assert 1.1 < best_up < 1.4 and "520 bytes up at 500 B/s" in why_up  # a bridge pipelines the items
+    assert 1.0 < best_up < 1.4 and "490 bytes up at 500 B/s" in why_up  # a bridge pipelines the items
+    lossy, why_lossy = physical_best("m100", 10.0, "upload_s", 10, 0.1, 124.0)  # the lost sent again, beside the app
+    assert lossy > best_up / 0.9 * 500 / 376 * 0.95 and "544 with the 10% lost sent again" in why_lossy
+    assert "in the 376 B/s the app's commands and the heartbeats (124 B/s) leave" in why_lossy
     best_age, _ = physical_best("m100", 10.0, "age_p95_ms", 10)
     assert 40 < best_age < 60
 
@@ -181,6 +184,9 @@ def test_a_floor_physics_rules_out_says_so() -> None:
     assert "would be 27 ms, under the 46 ms" in limits[("age_p95_ms", "vs naive")]
     assert "a p95 of 4 commands is about their largest" in limits[("gcs_p95_ms", "floor")]
     assert limits[("connect_s", "vs naive")] is None  # 1.0 s: nothing stops 3x there
-    rep["runs"][1]["upload_s"] = 3.0  # 3x of 3 s would be 1 s: under the link's 1.1 s
-    assert "would be 1.0 s, under the 1.1 s physics allows" in \
+    # the app's commands at idle: 3x the naive forwarder's p95 would be under the same run's idle p95
+    assert "would be 58 ms, under the 1676 ms the same commands took with no ground station" in \
+        limits[("gcs_p95_ms", "vs naive")]
+    rep["runs"][1]["upload_s"] = 3.0  # 3x of 3 s would be 1 s: under the 1.3 s of 10 items at 10 % loss
+    assert "would be 1.0 s, under the 1.3 s physics allows" in \
         {(c["check"], c["kind"]): c.get("limit") for c in checks(rep)}[("upload_s", "vs naive")]
