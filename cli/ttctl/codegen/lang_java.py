@@ -68,7 +68,7 @@ RUNTIME_FILES = [
     "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
     # the ground-station bridge (issue 22)
     "GcsRules", "GcsUplink", "GcsQuality", "GcsRoutes", "GcsV1", "GcsV1Stations", "GcsProblems",
-    "GcsResend", "GcsBridgeCounts", "GcsBridge",
+    "GcsResend", "GcsMissions", "GcsDownloads", "GcsParamLists", "GcsProtocols", "GcsBridgeCore", "GcsBridge",
 ]
 RUNTIME_CLASSES = frozenset(RUNTIME_FILES + ["SendSetpoint"])
 # File transfer (package <root>.transfer), for dialects that have ttctl's file messages.

@@ -108,11 +108,13 @@ public final class BridgeDriver {
             } else if (w[0].equals("stats")) {
                 System.out.println(String.format(Locale.ROOT, "STATS carried=%d carriedBytes=%d duplicates=%d overflow=%d replaced=%d "
                         + "notCarried=%d unknown=%d toGcs=%d radio=%d fromVehicle=%d waiting=%d peak=%d peers=%d "
-                        + "datagrams=%d problems=%d uncaught=%d queued=%d resent=%d", bridge.carried(), bridge.carriedBytes(), bridge.duplicates(),
+                        + "datagrams=%d problems=%d uncaught=%d queued=%d resent=%d itemsResent=%d itemsAnswered=%d paramsRead=%d",
+                        bridge.carried(), bridge.carriedBytes(), bridge.duplicates(),
                         bridge.overflow(), bridge.replaced(), bridge.notCarried(), bridge.unknown(), bridge.toGcs(),
                         bridge.radioStatus(), bridge.fromVehicle(), bridge.waiting(), bridge.peakWaiting(),
                         bridge.peers(), bridge.datagrams(), problems.size(), uncaught.get(),
-                        session.scheduler().queued(), bridge.resent()));
+                        session.scheduler().queued(), bridge.resent(),
+                        bridge.missionItemsResent(), bridge.missionItemsAnswered(), bridge.paramsReadAgain()));
             }
             System.out.flush();
         }

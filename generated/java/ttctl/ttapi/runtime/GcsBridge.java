@@ -44,7 +44,11 @@ import java.util.function.Consumer;
  * commands and telemetry, and at most {@link Config#share} of the uplink's rate. The scheduler
  * signs them when the link is signed. A ground station's one-shot requests (commands, parameter
  * reads and sets, mission lists) go again, through that queue, at the link's round trip until the
- * vehicle's answer passes back, for at most 4 s ({@link GcsResend}, {@link #resent()}).
+ * vehicle's answer passes back, for at most 4 s ({@link GcsResend}, {@link #resent()}). Mission
+ * uploads are pipelined (the bridge asks the station for the items as the uplink takes them and
+ * answers the vehicle's requests from them, {@link GcsMissions}), downloads prefetched (the items
+ * asked of the vehicle ahead of the station, {@link GcsDownloads}), and what the link lost of a
+ * parameter list read again at once ({@link GcsParamLists}): as ttctl's Python bridge does.
  *
  * <p>MAVLink 1 (pymavlink's default, older ground stations): a station's MAVLink 1 frames are
  * carried as MAVLink 2 (the same msgid and payload, re-framed, the CRC recomputed with the
@@ -73,7 +77,7 @@ import java.util.function.Consumer;
  * grows with what a ground station sends: at most 64 + 64 frames wait, at most
  * {@value GcsRoutes#MAX_STATIONS} ground stations heard are remembered.
  */
-public final class GcsBridge extends GcsBridgeCounts implements Consumer<MavlinkMessage>, AutoCloseable {
+public final class GcsBridge extends GcsBridgeCore implements Consumer<MavlinkMessage>, AutoCloseable {
     /** QGroundControl's (and MAVProxy's) port for vehicles and radios. */
     public static final int QGC_PORT = 14550;
     public static final long RADIO_STATUS_MILLIS = 1000;
@@ -185,12 +189,10 @@ public final class GcsBridge extends GcsBridgeCounts implements Consumer<Mavlink
 
     private final Link link;
     private final LinkScheduler scheduler;
-    private final int vehicle;
     private final int tabletSys;
     private final DatagramSocket socket;
     private final Parser parser;
     private final MavlinkDialect dialect;
-    private final GcsQuality quality = new GcsQuality();
     private final ScheduledThreadPoolExecutor timer;
     private final java.util.concurrent.ExecutorService ownListeners;
     private final GcsProblems problems;
@@ -209,10 +211,9 @@ public final class GcsBridge extends GcsBridgeCounts implements Consumer<Mavlink
             throws SocketException {
         super(new GcsUplink(uplinkBase(c, scheduler) * c.share, scheduler.mtu()),
                 new GcsRoutes<SocketAddress>(c.vehicle, c.tabletSys, c.tabletComp),
-                new GcsV1Stations<SocketAddress>(dialect, GcsRoutes.MAX_STATIONS), new GcsResend());
+                new GcsV1Stations<SocketAddress>(dialect, GcsRoutes.MAX_STATIONS), new GcsResend(), c.vehicle);
         this.link = link;
         this.scheduler = scheduler;
-        this.vehicle = c.vehicle;
         this.tabletSys = c.tabletSys;
         this.parser = new Parser(dialect);
         this.dialect = dialect;
@@ -303,16 +304,22 @@ public final class GcsBridge extends GcsBridgeCounts implements Consumer<Mavlink
         }, RESEND_TICK_MILLIS, RESEND_TICK_MILLIS, TimeUnit.MILLISECONDS);
     }
 
-    /** One-shot requests whose answer has not come in a round trip go again ({@link GcsResend}). */
+    /**
+     * One-shot requests whose answer has not come in a round trip go again ({@link GcsResend}); the
+     * mission and parameter protocols' own checks ({@link GcsProtocols}).
+     */
     private void resendDue() {
         boolean any;
+        List<byte[]> toStations = new ArrayList<>();
         synchronized (lock) {
-            List<byte[]> again = resend.due(System.nanoTime(), uplink);
+            long now = System.nanoTime();
+            List<byte[]> again = resend.due(now, uplink);
             for (byte[] f : again) {
-                uplink.offer(f, System.nanoTime());
+                uplink.offer(f, now);
             }
-            any = !again.isEmpty();
+            any = protocols.tick(now, toStations) || !again.isEmpty();
         }
+        deliver(toStations, GcsMissions.REQUEST_INT_CRC_EXTRA);
         if (any) {
             scheduler.wake();
         }
@@ -368,43 +375,16 @@ public final class GcsBridge extends GcsBridgeCounts implements Consumer<Mavlink
         }
     }
 
-    /** Takes a datagram's frames and those the dialect lacks (under the lock); true when some wait to go. */
+    /** Takes a datagram's frames and those the dialect lacks; true when some wait to go. */
     private boolean fromGcs(SocketAddress from, List<MavlinkMessage> frames, boolean garbage, List<byte[]> strange) {
-        long now = System.nanoTime();
-        boolean any = false;
+        List<byte[]> answers = new ArrayList<>();
+        List<byte[]> requests = new ArrayList<>();
+        boolean any;
         synchronized (lock) {
-            datagrams++;
-            if (garbage) {
-                unknown++;
-                if (strange.isEmpty()) {
-                    notCarried++;
-                }
-            }
-            for (byte[] f : strange) { // as mavlink-router: for every system (no target is known), unchecked
-                int sys = f[5] & 0xFF;
-                int carriedSys = routes.heard(from, sys, f[6] & 0xFF, now);
-                uplink.offer(carriedSys != sys ? GcsRules.withByte(f, 5, carriedSys) : f, now);
-                unknownCarried++;
-                any = true;
-            }
-            for (MavlinkMessage m : frames) {
-                byte[] f = m.pack(m.seq(), m.sysId(), m.compId()); // unsigned, as the ground station sent it
-                int ts = GcsRules.targetSystem(f);
-                if (ts > 0 && ts != vehicle) {
-                    notCarried++;
-                    lastNotCarriedFor = ts;
-                    continue;
-                }
-                int carriedSys = routes.heard(from, m.sysId(), m.compId(), now);
-                if (carriedSys != m.sysId()) {
-                    f = GcsRules.withSource(f, carriedSys, m.crcExtra());
-                }
-                uplink.offer(f, now);
-                resend.request(f, m.crcExtra(), now);
-                any = true;
-            }
-            peakWaiting = Math.max(peakWaiting, uplink.waiting());
+            any = up(from, frames, garbage, strange, System.nanoTime(), answers, requests);
         }
+        deliver(answers, GcsMissions.ITEM_INT_CRC_EXTRA);
+        deliver(requests, GcsMissions.REQUEST_INT_CRC_EXTRA);
         return any;
     }
 
@@ -455,18 +435,31 @@ public final class GcsBridge extends GcsBridgeCounts implements Consumer<Mavlink
         if (onboard && (ts <= 0 || ts == tabletSys)) {
             return; // the app's: only those addressed to a ground station (a plugin's answer) go on
         }
-        List<GcsRoutes.Destination<SocketAddress>> to;
-        synchronized (lock) {
-            if (!onboard) {
-                fromVehicle++;
-                quality.frame(msg.sysId(), msg.compId(), msg.seq(), now);
-                resend.answer(f, now); // the answer to a request: no more resends of it
+        List<byte[]> requests = new ArrayList<>();
+        boolean forward = true;
+        if (!onboard) {
+            synchronized (lock) {
+                forward = down(f, msg, now, requests);
             }
-            to = routes.destinations(ts, tc);
         }
-        for (GcsRoutes.Destination<SocketAddress> d : to) {
-            send(d.address, d.targetSystem != 0 ? GcsRules.withTargetSystem(f, d.targetSystem, msg.crcExtra()) : f,
-                    false);
+        deliver(requests, GcsMissions.REQUEST_INT_CRC_EXTRA);
+        if (forward) {
+            deliver(java.util.Collections.singletonList(f), msg.crcExtra());
+        } else {
+            scheduler.wake(); // (an item sent again, a request for the next)
+        }
+    }
+
+    /** Frames from the vehicle's ids to the ground stations their targets name (as carried), or to all. */
+    private void deliver(List<byte[]> frames, int crcExtra) {
+        for (byte[] f : frames) {
+            List<GcsRoutes.Destination<SocketAddress>> to;
+            synchronized (lock) {
+                to = routes.destinations(GcsRules.targetSystem(f), GcsRules.targetComponent(f));
+            }
+            for (GcsRoutes.Destination<SocketAddress> d : to) {
+                send(d.address, d.targetSystem != 0 ? GcsRules.withTargetSystem(f, d.targetSystem, crcExtra) : f, false);
+            }
         }
     }
 
@@ -515,7 +508,7 @@ public final class GcsBridge extends GcsBridgeCounts implements Consumer<Mavlink
         }
     }
 
-    // ---- problems, close (the counters: GcsBridgeCounts) ----
+    // ---- problems, close (the counters: GcsBridgeCore) ----
 
     private void problem(final String what) {
         problem(what, false);
@@ -559,6 +552,7 @@ public final class GcsBridge extends GcsBridgeCounts implements Consumer<Mavlink
             }
             closed = true;
             uplink.clear();
+            protocols.clear();
         }
         scheduler.removeSource(source);
         if (link instanceof UdpLink) {

@@ -487,8 +487,16 @@ public final class GcsRules {
         p[4] = (byte) rssi;
         p[5] = (byte) rssi; // remrssi
         p[6] = (byte) txbuf;
-        int n = p.length;
-        while (n > 1 && p[n - 1] == 0) {
+        return frame(seq, sysId, RADIO_COMPONENT, RADIO_STATUS_ID, RADIO_STATUS_CRC_EXTRA, p);
+    }
+
+    /**
+     * An unsigned MAVLink 2 frame of message {@code msgId} from {@code sysId}/{@code compId} with
+     * {@code payload} in wire order, its trailing zeros cut as MAVLink 2 sends it.
+     */
+    public static byte[] frame(int seq, int sysId, int compId, int msgId, int crcExtra, byte[] payload) {
+        int n = payload.length;
+        while (n > 1 && payload[n - 1] == 0) {
             n--;
         }
         byte[] f = new byte[Frame.HEADER_LENGTH + n + Frame.CHECKSUM_LENGTH];
@@ -496,9 +504,11 @@ public final class GcsRules {
         f[1] = (byte) n;
         f[4] = (byte) seq;
         f[5] = (byte) sysId;
-        f[6] = (byte) RADIO_COMPONENT;
-        f[7] = (byte) RADIO_STATUS_ID;
-        System.arraycopy(p, 0, f, Frame.HEADER_LENGTH, n);
-        return recrc(f, RADIO_STATUS_CRC_EXTRA);
+        f[6] = (byte) compId;
+        f[7] = (byte) msgId;
+        f[8] = (byte) (msgId >>> 8);
+        f[9] = (byte) (msgId >>> 16);
+        System.arraycopy(payload, 0, f, Frame.HEADER_LENGTH, n);
+        return recrc(f, crcExtra);
     }
 }

@@ -74,6 +74,14 @@ public final class GcsUplink {
 
     /** Takes a whole unsigned frame from a ground station at {@code now}. */
     public Offer offer(byte[] frame, long now) {
+        return offer(frame, now, false);
+    }
+
+    /**
+     * Takes a frame; {@code first}: a PROTOCOL frame the vehicle is waiting for (a lost one, sent
+     * again) goes ahead of the PROTOCOL frames already waiting.
+     */
+    public Offer offer(byte[] frame, long now, boolean first) {
         int msgId = GcsRules.msgId(frame);
         if (GcsRules.isNewest(msgId)) {
             long key = (long) (frame[5] & 0xFF) << 32 | (long) (frame[6] & 0xFF) << 24 | msgId;
@@ -105,7 +113,11 @@ public final class GcsUplink {
             waitingBytes -= protocol.poll().length;
             overflow++;
         }
-        protocol.add(frame);
+        if (first) {
+            protocol.addFirst(frame);
+        } else {
+            protocol.add(frame);
+        }
         waitingBytes += frame.length;
         queued++;
         return Offer.QUEUED;
