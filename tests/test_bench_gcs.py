@@ -115,6 +115,7 @@ def test_ftp_download_keeps_the_heartbeat_and_positions_against_idle_in_the_same
     (["--gcs-id", "300/1"], "--gcs-id: 300/1 is outside"),
     (["--only", "both,naive"], "--only must be"),
     (["--loss-model", "bursty"], "--loss-model must be"),
+    (["--repeat", "0"], "--repeat"),
 ])
 def test_bad_options_are_one_line_and_exit_2(args: list[str], words: str) -> None:
     proc = run_ttctl("bench", "gcs", *args, timeout=30)
@@ -183,10 +184,56 @@ def test_a_floor_physics_rules_out_says_so() -> None:
     assert limits[("upload_s", "vs naive")] is None  # 1.7 s is within reach: the miss is the bridge's
     assert "would be 27 ms, under the 46 ms" in limits[("age_p95_ms", "vs naive")]
     assert "a p95 of 4 commands is about their largest" in limits[("gcs_p95_ms", "floor")]
-    assert limits[("connect_s", "vs naive")] is None  # 1.0 s: nothing stops 3x there
+    # a naive connect of 1.0 s: 3x would be 0.33 s, under QGroundControl's three requests in a row
+    assert "would be 0.3 s, under the 0.4 s physics allows: 3 requests one after the other, a 123 ms round" \
+        in limits[("connect_s", "vs naive")]
     # the app's commands at idle: 3x the naive forwarder's p95 would be under the same run's idle p95
     assert "would be 58 ms, under the 1676 ms the same commands took with no ground station" in \
         limits[("gcs_p95_ms", "vs naive")]
     rep["runs"][1]["upload_s"] = 3.0  # 3x of 3 s would be 1 s: under the 1.3 s of 10 items at 10 % loss
     assert "would be 1.0 s, under the 1.3 s physics allows" in \
         {(c["check"], c["kind"]): c.get("limit") for c in checks(rep)}[("upload_s", "vs naive")]
+
+
+def test_repeated_runs_are_reported_as_their_medians() -> None:
+    """--repeat: each figure the median of the runs, a failed step counting as the slowest (most
+    failed: no figure, and the floor is missed), the app commands' percentiles over every command,
+    counts summed, each failure named with its seed; the floors judged on the medians."""
+    from ttctl.bench.gcs_report import checks, combine, print_report
+
+    def run(mode: str, seed: int, connect: float | None, upload: float | None, failed: dict[str, str]) -> dict:
+        return {"mode": mode, "distance_m": 10.0, "started": True, "why_not": None, "failed": failed,
+                "connect_s": connect, "params_s": 0.5, "upload_s": upload, "download_s": 2.0 + seed,
+                "age_p50_ms": 50.0, "age_p95_ms": 80.0 + seed, "idle_ms": [100.0 * seed] * 10,
+                "gcs_ms": [100.0 * seed + 1] * 10, "idle_p50_ms": 0.0, "idle_p95_ms": 0.0, "gcs_p50_ms": 0.0,
+                "gcs_p95_ms": 0.0, "idle_failed": 0, "gcs_failed": 1, "gcs_commands": 11, "param_count": 21,
+                "param_reads": seed, "upload_restarts": 1, "ages": 10, "sticks": 0, "items_checked": True,
+                "notes": [], "heartbeat_s": 0.1, "version_s": 0.2, "mission_list_s": 0.3, "ack_wait_s": 0.4,
+                "age_method": "SYSTEM_TIME"}
+
+    samples = [run("bridge", 1, 1.0, 3.0, {}), run("naive", 1, 9.0, 9.0, {}),
+               run("bridge", 2, 3.0, None, {"upload": "gave up"}), run("naive", 2, 8.0, None, {"upload": "x"}),
+               run("bridge", 3, 2.0, 2.5, {}), run("naive", 3, 7.0, None, {"upload": "y"})]
+    runs = combine(samples, [1, 2, 3])
+    b, n = runs
+    assert (b["mode"], n["mode"], b["samples"]) == ("bridge", "naive", 3)
+    assert b["connect_s"] == 2.0 and n["connect_s"] == 8.0
+    assert b["upload_s"] == 3.0  # 2.5, 3.0 and a failure (the slowest): 3.0
+    assert n["upload_s"] is None and "upload" in n["failed"]  # two of three failed: no figure
+    assert b["failed"] == {"upload": "gave up (seed 2)"}
+    assert b["download_s"] == 4.0 and b["age_p95_ms"] == 82.0
+    assert b["idle_p50_ms"] == 200.0 and b["gcs_p95_ms"] == 301.0 and len(b["idle_ms"]) == 30  # every command
+    assert (b["param_reads"], b["upload_restarts"], b["gcs_failed"], b["gcs_commands"]) == (6, 3, 3, 33)
+    assert b["each"]["upload_s"] == [3.0, None, 2.5]
+    rep = {"profile": "m100", "loss": 0.1, "loss_model": "random", "items": 20, "commands": 10, "seed": 1,
+           "seeds": [1, 2, 3], "gcs_id": "255/190", "runs": runs}
+    rep["checks"] = checks(rep)
+    got = {(c["check"], c["kind"]): c for c in rep["checks"]}
+    assert got[("connect_s", "vs naive")]["value"] == 4.0 and got[("connect_s", "vs naive")]["ok"]
+    assert got[("upload_s", "vs naive")]["naive"] == "failed"
+    out = io.StringIO()
+    print_report(rep, out)
+    text = out.getvalue()
+    assert "median of 3 runs (seeds 1-3)" in text
+    assert "bridge: median of 3 runs; each: connect 1.0 3.0 2.0 s; upload 3.0 - 2.5 s; download 3.0 4.0 5.0 s" \
+        in text

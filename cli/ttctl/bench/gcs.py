@@ -55,6 +55,7 @@ class Options:
     modes: tuple[str, ...] = MODES
     keep: str | None = None  # keep every process's stderr in this folder
     ftp_kb: int = 0  # the ground station fetches a file of this size by MAVLink FTP after the mission (0: no)
+    repeat: int = 1  # runs of each, on seeds seed, seed + 1, ...: the report gives their medians
 
 
 @dataclass
@@ -359,8 +360,9 @@ def run_one(o: Options, mode: str, distance: float, folder: Path, progress: Any)
 
 def run(o: Options) -> int:
     import signal
+    from dataclasses import replace
 
-    from .gcs_report import checks, print_report
+    from .gcs_report import checks, combine, print_report
 
     progress = (lambda s: None) if o.json_out else (lambda s: print(s, file=sys.stderr, flush=True))
     runs: list[Run] = []
@@ -371,11 +373,16 @@ def run(o: Options) -> int:
     old = signal.signal(signal.SIGTERM, interrupted)
     try:
         with tempfile.TemporaryDirectory(prefix="ttctl-bench-gcs-") as d:
-            for distance in o.distances:
-                for mode in o.modes:
-                    folder = Path(o.keep or d) / f"{mode}-{distance:g}"
-                    folder.mkdir(parents=True)
-                    runs.append(run_one(o, mode, distance, folder, progress))
+            for i in range(o.repeat):
+                one = replace(o, seed=o.seed + i)
+                for distance in o.distances:
+                    for mode in o.modes:
+                        folder = Path(o.keep or d) / (f"{mode}-{distance:g}" + (f"-seed{one.seed}" if o.repeat > 1
+                                                                                  else ""))
+                        folder.mkdir(parents=True)
+                        if o.repeat > 1:
+                            progress(f"run {i + 1} of {o.repeat} (seed {one.seed})")
+                        runs.append(run_one(one, mode, distance, folder, progress))
     except KeyboardInterrupt:
         print("ttctl: bench gcs interrupted (its processes are stopped)", file=sys.stderr)
         return 130
@@ -384,8 +391,15 @@ def run(o: Options) -> int:
     rep: dict[str, Any] = {"profile": o.profile, "loss": o.loss, "loss_model": o.loss_model, "items": o.items,
                            "commands": o.commands, "interval_s": o.interval, "seed": o.seed,
                            "gcs_id": f"{o.gcs_id[0]}/{o.gcs_id[1]}", "sticks_hz": o.sticks_hz,
-                           "ftp_kb": o.ftp_kb,
-                           "runs": [asdict(r) for r in runs]}
+                           "ftp_kb": o.ftp_kb}
+    samples = [asdict(r) for r in runs]
+    if o.repeat > 1:
+        seeds = [o.seed + i for i in range(o.repeat)]
+        rep["seeds"] = seeds
+        rep["runs"] = combine(samples, seeds)
+        rep["samples"] = samples
+    else:
+        rep["runs"] = samples
     rep["checks"] = checks(rep)
     if o.json_out:
         print(json.dumps(rep, indent=2))

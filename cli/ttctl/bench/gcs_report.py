@@ -38,6 +38,61 @@ STEP_OF = {"connect_s": "connect", "params_s": "connect", "upload_s": "upload", 
            "gpi_ftp_hz": "ftp"}
 
 
+SUMMED = ("param_reads", "upload_restarts", "ages", "idle_failed", "gcs_failed", "gcs_commands", "sticks")
+POOLED = {"idle": ("idle_p50_ms", "idle_p95_ms"), "gcs": ("gcs_p50_ms", "gcs_p95_ms")}
+
+
+def _median(xs: list[float]) -> float | None:
+    if not xs:
+        return None
+    xs = sorted(xs)
+    mid = len(xs) // 2
+    return xs[mid] if len(xs) % 2 else (xs[mid - 1] + xs[mid]) / 2
+
+
+def combine(samples: list[dict[str, Any]], seeds: list[int]) -> list[dict[str, Any]]:
+    """`--repeat`: the runs of each mode and distance (one per seed, in `seeds`' order) as one
+    run whose figures are their medians, a step that failed counting as slower than any that
+    finished (more than half failed: no figure); the app commands' percentiles from every
+    command of every run; counts summed; failures and notes kept, each with its seed."""
+    from .gcs import percentile
+
+    out = []
+    keys = sorted({(r["distance_m"], r["mode"]) for r in samples}, key=lambda k: (k[0], k[1] != "bridge"))
+    for d, mode in keys:
+        group = [(seed, r) for seed, r in zip(seeds, [r for r in samples if (r["distance_m"], r["mode"]) == (d, mode)],
+                                              strict=False)]
+        started = [(seed, r) for seed, r in group if r["started"]]
+        first = dict(group[0][1])
+        if not started:
+            out.append(first)
+            continue
+        c = dict(started[0][1])
+        c["samples"] = len(started)
+        c["failed"] = {step: f"{why} (seed {seed})" for seed, r in started for step, why in r["failed"].items()}
+        c["notes"] = [f"seed {seed}: {n}" for seed, r in group for n in r["notes"]] + [
+            f"seed {seed}: not measured: {r['why_not']}" for seed, r in group if not r["started"]]
+        for key, value in c.items():
+            if key in SUMMED:
+                c[key] = sum(int(r[key] or 0) for _, r in started)
+            elif isinstance(value, float | None) and key.endswith(("_s", "_ms", "_hz")):
+                vals = [r[key] for _, r in started]
+                if all(v is None for v in vals):
+                    continue
+                inf = float("-inf") if key in HIGHER_BETTER else float("inf")  # a failed step: the worst
+                m = _median([v if v is not None else inf for v in vals])
+                c[key] = None if m is None or abs(m) == float("inf") else round(m, 3)
+        for pool, (p50, p95) in POOLED.items():
+            every = [x for _, r in started for x in r[f"{pool}_ms"]]
+            c[f"{pool}_ms"] = every
+            c[p50], c[p95] = percentile(every, 0.5), percentile(every, 0.95)
+        c["items_checked"] = all(r["items_checked"] for _, r in started)
+        c["param_count"] = max(int(r["param_count"] or 0) for _, r in started)
+        c["each"] = {key: [r[key] for _, r in started] for key in ("connect_s", "upload_s", "download_s")}
+        out.append(c)
+    return out
+
+
 def _pair(runs: list[dict[str, Any]], distance: float) -> tuple[dict[str, Any] | None, dict[str, Any] | None]:
     by = {r["mode"]: r for r in runs if r["distance_m"] == distance}
     return by.get("bridge"), by.get("naive")
@@ -65,6 +120,8 @@ FEW_SAMPLES = 20  # commands under which a p95 is about the largest one: a retry
 # MISSION_ITEM_INT (the peer's), MISSION_REQUEST_INT, GLOBAL_POSITION_INT
 ITEM_FRAME, REQUEST_FRAME, POSITION_FRAME = 49, 20, 42
 APP_FRAME, HEARTBEAT_FRAME = 41, 21  # the app's TT_ACTION_COMMAND (hover), a HEARTBEAT
+PARAM_FRAME = 37  # PARAM_VALUE (its last byte, the type, is never zero: nothing trimmed)
+CONNECT_TRIPS = 3  # AUTOPILOT_VERSION, the parameter list, the mission list: each waits for the one before
 
 
 def app_load_Bps(rep: dict[str, Any], run: dict[str, Any] | None) -> float:
@@ -78,13 +135,16 @@ def app_load_Bps(rep: dict[str, Any], run: dict[str, Any] | None) -> float:
 
 
 def physical_best(profile: str, distance: float, key: str, items: int, loss: float = 0.0,
-                  load_Bps: float = 0.0) -> tuple[float, str] | None:
+                  load_Bps: float = 0.0, params: int = 0) -> tuple[float, str] | None:
     """The least a figure can be on this link whatever a bridge does, and why (None: no bound
     computed): a mission upload moves its items' bytes up the link, at random loss `loss` each
     sent 1 / (1 - loss) times on average, in what the run's other traffic (`load_Bps`) leaves of
     the uplink, and needs the vehicle's last answer back (a bridge that pipelines the items pays
-    one round trip, not one per item); a position's age is its frame's time on the downlink and
-    the downlink's latency."""
+    one round trip, not one per item); a connect is QGroundControl's three requests one after
+    the other (AUTOPILOT_VERSION, the parameter list, the mission list), each a round trip, and the
+    `params` values' frames down (the vehicle's HEARTBEAT, which it waits for first, taken as
+    heard at once); a position's age is its frame's time on the downlink and the downlink's
+    latency."""
     from ..link.model import load_profile
 
     try:
@@ -104,6 +164,13 @@ def physical_best(profile: str, distance: float, key: str, items: int, loss: flo
         if load_Bps > 0:
             why += f", in the {free:.0f} B/s the app's commands and the heartbeats ({load_Bps:.0f} B/s) leave"
         return best, why + ", and a round trip" + ("" if loss > 0 else ", with no loss")
+    if key == "connect_s":
+        trip = up.service_time(REQUEST_FRAME, distance) + up.latency_s + down.service_time(REQUEST_FRAME, distance) \
+            + down.latency_s
+        best = CONNECT_TRIPS * trip + down.service_time(PARAM_FRAME * params, distance)
+        return best, (f"{CONNECT_TRIPS} requests one after the other, a {1000 * trip:.0f} ms round trip each, and "
+                      f"{params} parameters' {PARAM_FRAME * params} bytes down at {down.rate_at(distance):.0f} B/s, "
+                      "with no loss")
     if key == "age_p95_ms":
         best = 1000 * (down.service_time(POSITION_FRAME, distance) + down.latency_s)
         return best, f"a position takes {best:.0f} ms down this link (its frame's time and the latency) with no loss"
@@ -145,7 +212,8 @@ def checks(rep: dict[str, Any]) -> list[dict[str, Any]]:
                 c = {"distance_m": d, "check": key, "kind": "vs naive", "value": ratio, "floor": RATIO,
                      "ok": ratio is not None and ratio >= RATIO, "naive": "measured", "counts": counts}
                 random_loss = rep["loss"] if rep["loss_model"] == "random" else 0.0  # (burst: no mean here)
-                best = physical_best(rep["profile"], d, key, rep.get("items", 0), random_loss, app_load_Bps(rep, b))
+                best = physical_best(rep["profile"], d, key, rep.get("items", 0), random_loss, app_load_Bps(rep, b),
+                                     params=int(b.get("param_count") or 0))
                 unit = "ms" if key.endswith("_ms") else "s"
                 if best is not None:
                     best = (best[0], f"the {_fmt(best[0], unit)} {unit} physics allows: {best[1]}")
@@ -174,8 +242,10 @@ def print_report(rep: dict[str, Any], out: Any = None) -> None:
     for d in sorted({r["distance_m"] for r in rep["runs"]}):
         b, n = _pair(rep["runs"], d)
         sticks = f", MANUAL_CONTROL at {rep['sticks_hz']:g} Hz" if rep.get("sticks_hz") else ""
+        seeds = rep.get("seeds") or [rep["seed"]]
+        runs = f", median of {len(seeds)} runs (seeds {seeds[0]}-{seeds[-1]})" if len(seeds) > 1 else ""
         t = Table(title=f"a ground station ({rep['gcs_id']}{sticks}) through the tablet end, bridge against naive "
-                        f"forwarder: {rep['profile']} at {d:g} m, {rep['loss']:.0%} {rep['loss_model']} loss")
+                        f"forwarder: {rep['profile']} at {d:g} m, {rep['loss']:.0%} {rep['loss_model']} loss{runs}")
         for col in ("figure", "bridge", "naive", "naive/bridge", "floor", "holds"):
             t.add_column(col, justify="left" if col == "figure" else "right")
         ch = {(c["check"], c["kind"]): c for c in rep["checks"] if c["distance_m"] == d}
@@ -216,8 +286,12 @@ def print_report(rep: dict[str, Any], out: Any = None) -> None:
                 words.append(f"{r['param_count']} parameters, {r['param_reads']} re-read by index; "
                              f"{r['upload_restarts']} upload(s) started over after a lost MISSION_ACK; "
                              f"{r['ages']} positions; app commands {r['idle_failed']} + {r['gcs_failed']} "
-                             f"unanswered of {rep['commands']} + {r['gcs_commands']}"
+                             f"unanswered of {rep['commands'] * r.get('samples', 1)} + {r['gcs_commands']}"
                              + (f"; {r['sticks']} MANUAL_CONTROL sent" if r.get("sticks") else ""))
+            if r.get("samples", 1) > 1:
+                words.append(f"median of {r['samples']} runs; each: " + "; ".join(
+                    f"{k.removesuffix('_s')} " + " ".join(_fmt(v, "s") for v in vs) + " s"
+                    for k, vs in r["each"].items()))
             words += r["notes"]
             for w in words:
                 console.print(f"{r['mode']}: {w}", markup=False, highlight=False)

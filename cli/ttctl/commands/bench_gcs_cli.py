@@ -59,6 +59,9 @@ def bench_gcs(
                                                                        "failed.", min=5, max=600,
                                                 rich_help_panel=RUN)] = 60.0,
     seed: Annotated[int, typer.Option("--seed", help="The relay's random seed.", rich_help_panel=RUN)] = 1,
+    repeat: Annotated[int, typer.Option("--repeat", help="Runs of each, on seeds --seed, --seed + 1, ...: the "
+                                                         "figures and the floors are their medians.", min=1,
+                                        max=20, rich_help_panel=RUN)] = 1,
     gcs_id: Annotated[str, typer.Option("--gcs-id", help="The ground station's SYSID/COMPID (QGroundControl's "
                                                          "default, which is also the tablet's).",
                                         rich_help_panel=GCS)] = "255/190",
@@ -107,7 +110,7 @@ def bench_gcs(
         raise Fail(f"--keep: {keep} is not a new or empty folder")
     o = Options(_distances(distance), loss, loss_model, items, commands, interval, step_timeout, seed,
                 gcs_id=_ids(gcs_id), sticks_hz=sticks, json_out=json_out, quick=quick, keep=str(keep) if keep else None,
-                modes=MODES if only == "both" else (only,), ftp_kb=ftp)
+                modes=MODES if only == "both" else (only,), ftp_kb=ftp, repeat=repeat)
     if quick:
         o.items, o.commands, o.interval, o.step_timeout = min(items, 10), min(commands, 4), min(interval, 0.5), 20.0
     raise typer.Exit(run(o))

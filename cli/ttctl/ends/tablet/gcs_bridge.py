@@ -234,17 +234,19 @@ class GcsBridge:
         return self.b.MissionRequestInt(target_system=who[0], target_component=who[1], seq=seq,
                                         mission_type=mission_type)
 
-    def _request_up(self, who: tuple[int, int], seq: int, mission_type: int) -> bytes:
-        """A MISSION_REQUEST_INT to the vehicle as the station carried as `who` sends it."""
+    def _as_station(self, who: tuple[int, int], msg: Any) -> bytes:
+        """`msg` to the vehicle's autopilot as the station carried as `who` sends it (the bridge's
+        own requests on a station's behalf), with the bridge's sequence numbers."""
         self._up_seq = (self._up_seq + 1) & 0xFF
-        return bytes(self.b.MissionRequestInt(target_system=self.vehicle, target_component=1, seq=seq,
-                                              mission_type=mission_type).pack(self._up_seq, *who))
+        return bytes(msg.pack(self._up_seq, *who))
+
+    def _request_up(self, who: tuple[int, int], seq: int, mission_type: int) -> bytes:
+        return self._as_station(who, self.b.MissionRequestInt(target_system=self.vehicle, target_component=1,
+                                                              seq=seq, mission_type=mission_type))
 
     def _param_read_up(self, who: tuple[int, int], index: int) -> bytes:
-        """A PARAM_REQUEST_READ of `index` to the vehicle as the station carried as `who` sends it."""
-        self._up_seq = (self._up_seq + 1) & 0xFF
-        return bytes(self.b.ParamRequestRead(target_system=self.vehicle, target_component=1, param_id=b"",
-                                             param_index=index).pack(self._up_seq, *who))
+        return self._as_station(who, self.b.ParamRequestRead(target_system=self.vehicle, target_component=1,
+                                                             param_id=b"", param_index=index))
 
     def _to_gcs(self, now: float, msg: Any, carried: tuple[int, int]) -> None:
         """A frame of the bridge's own, as the vehicle's autopilot, to the station carried as `carried`."""
