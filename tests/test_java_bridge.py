@@ -288,9 +288,9 @@ def test_the_java_mission_and_parameter_protocols_decide_as_the_python_bridges(c
         elif msg.NAME.startswith("MISSION_"):
             fwd, again, reqs = missions.from_vehicle(now, msg, who)
             passed, ahead = downloads.from_vehicle(now, msg, who)
-            for x in again:
+            for x in reversed(again):
                 q.put(now, "MISSION_ITEM_INT", x, first=True)
-                first.append(_describe(x))
+            first += [_describe(x) for x in again]
             for x in ahead:
                 q.put(now, "MISSION_REQUEST_INT", x)
                 up.append(_describe(x))
@@ -389,10 +389,12 @@ def test_the_java_mission_and_parameter_protocols_decide_as_the_python_bridges(c
             st = [_describe(pack((1, 1), r)) for _, r in missions.ahead_requests(next_tick)]
             reads = [pack(who, common.MAVLink_param_request_read_message(1, 1, b"", i))
                      for who, i in params.tick(next_tick)]
-            for x in again + reads:
+            for x in reversed(again):  # (ahead of what waits, in their order)
+                q.put(next_tick, decode(x).NAME, x, first=True)
+            for x in reads:
                 q.put(next_tick, decode(x).NAME, x)
-            python.append(f"1 st[{','.join(st)}] first[] up[{','.join(_describe(x) for x in again + reads)}]"
-                          .replace("1 st", " st", 1))
+            python.append(f" st[{','.join(st)}] first[{','.join(_describe(x) for x in again)}] "
+                          f"up[{','.join(_describe(x) for x in reads)}]")
             next_tick = round(next_tick + 0.1 + rnd.randint(1, 3000) / 1e6, 6)  # (never exactly a bound apart)
         for arrives, f in sorted(x for x in to_vehicle if x[0] <= t):
             to_vehicle.remove((arrives, f))

@@ -13,8 +13,9 @@ from dataclasses import dataclass, field
 from typing import Any
 
 WINDOW = 16  # items asked of the vehicle ahead of the ground station's requests
-ON_ITS_WAY = 0.3  # s: an item asked for this recently is coming (longer: lost, ask again; QGroundControl
-# gives an item 0.25 s and five tries, so a lost one must be asked again well within 1.25 s)
+ON_ITS_WAY = 0.2  # s: an item asked for this recently is coming (longer: lost, ask again; QGroundControl
+# gives an item 0.25 s and five tries, so each of its tries after the first goes up: at 0.3 s every
+# other one was swallowed, and three lost in a row failed a download through the Java bridge)
 STALE = 15.0
 ITEMS = ("MISSION_ITEM_INT", "MISSION_ITEM")
 

@@ -61,7 +61,7 @@ class _Upload:
     count_frame: bytes = b""
     count_sent: float = 0.0
     count_tries: int = 1
-    last_again: int = 0  # times the last item went again for a lost MISSION_ACK
+    last_again: int = 0  # times the last item went again (the vehicle may answer each with its verdict)
     resent_at: dict[int, float] = field(default_factory=dict)  # seq -> when it last went again
     sent_at: dict[int, float] = field(default_factory=dict)  # seq -> when the station's item was queued
     station_asked: float = 0.0  # when the bridge last asked the station for an item (or it sent its count)
@@ -153,17 +153,25 @@ class MissionRelay:
         up.last = now
 
     def tick(self, now: float) -> list[bytes]:
-        """Frames to send up again now: a count the vehicle did not answer (it was lost, and every
-        item sent behind it was dropped: the ground station, asked by the bridge, would not know),
-        or the last item when no MISSION_ACK came for it."""
+        """Frames to send up again now, in order, ahead of what waits: a count the vehicle did not
+        answer (it was lost, or its answer was: either way the vehicle starts the upload afresh
+        when it comes, and every item sent before it is to go again, right behind it, as the first
+        time), or the last item when no MISSION_ACK came for it."""
         out = []
         for up in self.uploads.values():
             # the vehicle has asked for the last item, or every item has gone up (pipelined, the
             # vehicle need ask for none of them): its verdict is due
             verdict_due = (up.wanted == up.count - 1 or len(up.cache) == up.count) and up.count - 1 in up.cache
-            if up.wanted < 0 and not up.asks and now - up.count_sent >= COUNT_AGAIN and up.count_tries < COUNT_TRIES:
+            if up.wanted < 0 and not up.asks and self.waiting(up.count_frame):
+                up.count_sent = now  # the count has not gone yet: its wait for an answer starts when it goes
+            elif up.wanted < 0 and not up.asks and now - up.count_sent >= COUNT_AGAIN and up.count_tries < COUNT_TRIES:
                 self._count_again(now, up)
                 out.append(up.count_frame)
+                for seq in sorted(up.unsent):
+                    if not self.waiting(up.cache[seq]):  # (one still waiting stays where it is: behind it)
+                        out.append(up.cache[seq])
+                        up.sent_at[seq] = now
+                up.unsent.clear()
             elif verdict_due and any(self.waiting(f) for f in up.cache.values()):
                 up.last = now  # items still queued for the link: the wait for the verdict starts when they left
             elif verdict_due and now - up.last >= ACK_WAIT and up.last_again < ACK_TRIES:
@@ -222,6 +230,8 @@ class MissionRelay:
                 up.unsent.discard(seq)
                 up.resent_at[seq] = now
                 self.resent += 1
+                if seq == up.count - 1:
+                    up.last_again += 1  # (the vehicle may answer each send of the last item with its verdict)
             self.swallowed += 1
             return False, again, self._prefetch(now, who, up)
         if name == "MISSION_ACK" and msg.mission_type == up.mission_type:

@@ -93,8 +93,8 @@ public final class ProtocolScript {
                     int tc = id == 73 || id == 39 ? u8(f, 33) : id == 47 ? u8(f, 1) : u8(f, 3);
                     int who = ts > 0 ? ts << 8 | tc : -1;
                     forward = missions.fromVehicle(now, f, who, first, st);
-                    for (byte[] x : first) {
-                        u.offer(x, now, true);
+                    for (int i = first.size() - 1; i >= 0; i--) {
+                        u.offer(first.get(i), now, true);
                     }
                     forward = downloads.fromVehicle(now, f, who, up) && forward;
                     for (byte[] x : up) {
@@ -103,7 +103,10 @@ public final class ProtocolScript {
                 }
                 fwd = forward ? "1" : "0";
             } else if (w[0].equals("tick")) {
-                missions.tick(now, up);
+                missions.tick(now, first);
+                for (int i = first.size() - 1; i >= 0; i--) {
+                    u.offer(first.get(i), now, true);
+                }
                 missions.ahead(now, st);
                 params.tick(now, up);
                 for (byte[] x : up) {

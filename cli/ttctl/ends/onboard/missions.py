@@ -18,8 +18,8 @@ from typing import Any
 
 from ...wire.bindings import Bindings
 
-RETRY = 0.5  # s before an item is asked for again (a round trip over DTT is about 0.2 s)
-RETRIES = 10
+RETRY = 0.25  # s before an item is asked for again: PX4's MAVLINK_MISSION_RETRY_TIMEOUT_DEFAULT (mavlink_mission.h)
+RETRIES = 20  # (5 s without an item: PX4's MAVLINK_MISSION_PROTOCOL_TIMEOUT_DEFAULT)
 GAP_ASK = 0.15  # s: a later item came while one is missing (the link keeps order: it was lost): ask for it
 # again, at most this often (a resend is then on its way)
 

@@ -211,7 +211,7 @@ class GcsBridge:
             forward = forward and passed
             for frame in ahead:
                 self.uplink.put(loop_now, "MISSION_REQUEST_INT", frame)
-            for frame in again:  # (an item the vehicle lacks, asked for again: ahead of the next ones)
+            for frame in reversed(again):  # (an item the vehicle lacks, asked for again: ahead of the next ones)
                 self.uplink.put(loop_now, "MISSION_ITEM_INT", frame, first=True)
             for req in requests:
                 self._to_gcs(loop_now, req, target)  # type: ignore[arg-type]
@@ -295,8 +295,8 @@ class GcsBridge:
             again = self.missions.tick(now)  # (and a mission upload's lost count or last item, sent again)
             for who, req in self.missions.ahead_requests(now):  # (the next items as the uplink takes them)
                 self._to_gcs(now, req, who)
-            for frame in again:
-                self.uplink.put(now, "MISSION_ITEM_INT", frame)  # (protocol frames: the name tells only newest-wins)
+            for frame in reversed(again):  # (ahead of what waits, in their order; protocol frames: the
+                self.uplink.put(now, "MISSION_ITEM_INT", frame, first=True)  # name tells only newest-wins)
             resent = self.resend.tick(now)  # one-shot requests whose answer has not come in a round trip
             for name, frame in resent:
                 self.uplink.put(now, name, frame)

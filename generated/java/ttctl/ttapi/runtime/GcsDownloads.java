@@ -22,8 +22,12 @@ import java.util.Set;
  */
 public final class GcsDownloads {
     static final int WINDOW = 16;
-    /** QGroundControl gives an item 0.25 s and five tries: a lost one is asked again well within 1.25 s. */
-    static final long ON_ITS_WAY_MILLIS = 300;
+    /**
+     * QGroundControl gives an item 0.25 s and five tries: each of its tries after the first goes
+     * up (a lost one is asked again well within its 1.5 s), the first only when the bridge did not
+     * ask for that item just before.
+     */
+    static final long ON_ITS_WAY_MILLIS = 200;
     private static final long ON_ITS_WAY = ON_ITS_WAY_MILLIS * 1_000_000L;
     private static final long STALE = 15_000_000_000L;
     static final int MAX_ITEMS = 1000;

@@ -26,9 +26,10 @@ final class GcsProtocols {
         this.params = new GcsParamLists(vehicle);
     }
 
+    /** Offers what {@code up} holds: {@code first}, ahead of what waits, in their order. */
     private boolean offer(long now, boolean first) {
-        for (byte[] f : up) {
-            uplink.offer(f, now, first);
+        for (int i = 0; i < up.size(); i++) {
+            uplink.offer(up.get(first ? up.size() - 1 - i : i), now, first);
         }
         boolean any = !up.isEmpty();
         up.clear();
@@ -75,10 +76,11 @@ final class GcsProtocols {
 
     /** The protocols' own checks: true when frames were offered to the uplink. */
     boolean tick(long now, List<byte[]> toStations) {
-        missions.tick(now, up); // a lost count or last item, sent again
+        missions.tick(now, up); // a lost count (and the items behind it) or last item, sent again
+        boolean any = offer(now, true);
         missions.ahead(now, toStations); // the next items as the uplink takes them
         params.tick(now, up); // what the link lost of a parameter list, read again
-        return offer(now, false);
+        return offer(now, false) || any;
     }
 
     void clear() {
