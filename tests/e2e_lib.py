@@ -4,6 +4,7 @@ files, killed at the end of its test (the `start` fixture is in conftest.py)."""
 from __future__ import annotations
 
 import json
+import os
 import random
 import socket
 import subprocess
@@ -19,10 +20,32 @@ LOCAL = "127.0.0.1"
 SIZE = 64 * 1024
 
 
+_PORTS_LOW, _PORTS_HIGH = 20000, 32000  # below Linux's ephemeral range (32768-60999)
+_next_port: list[int] = []
+
+
 def free_port(kind: int = socket.SOCK_DGRAM) -> int:
-    with socket.socket(socket.AF_INET, kind) as s:
-        s.bind((LOCAL, 0))
-        return s.getsockname()[1]
+    """A port free now on 127.0.0.1, from below the kernel's ephemeral range and from this pytest
+    worker's own slice of it, each handed out once per slice: a port the kernel gave out as an
+    ephemeral one (bind 0) could be given to another socket (a process's udpout) before the test
+    binds it ("Address already in use", seen beside CPU hogs)."""
+    if not _next_port:
+        worker = os.environ.get("PYTEST_XDIST_WORKER", "gw0")
+        k = int(worker[2:]) if worker[2:].isdigit() else 0
+        width = (_PORTS_HIGH - _PORTS_LOW) // 8
+        _next_port.extend([_PORTS_LOW + (k % 8) * width, width, 0])
+    base, width, i = _next_port
+    for _ in range(width):
+        port = base + (i % width)
+        i += 1
+        with socket.socket(socket.AF_INET, kind) as s:
+            try:
+                s.bind((LOCAL, port))
+            except OSError:
+                continue
+        _next_port[2] = i
+        return port
+    raise RuntimeError(f"no free port in {base}..{base + width - 1}")
 
 
 class Proc:

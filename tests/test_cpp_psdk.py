@@ -229,7 +229,9 @@ def test_a_callback_flood_never_holds_the_sdks_thread(psdk_node: Path, tmp_path:
     assert proc.returncode == 0 and r["ok"], proc.stderr
     assert sha(node.inbox / "s.bin") == sha(src)
     stats = node.stop()
-    assert stats["sdk_callbacks"] >= 200_000 and stats["received"] == stats["sdk_callbacks"], stats
+    # every call counted as received; the stand-in counts a call when it returns and its thread still
+    # runs when the node prints (the relay's datagrams go on): one call may be in flight then
+    assert stats["sdk_callbacks"] >= 200_000 and 0 <= stats["received"] - stats["sdk_callbacks"] <= 1, stats
     assert stats["dropped"] > 0, stats  # the fixed queue was full: dropped, not grown
     assert stats["sdk_slowest_callback_us"] < 200_000, stats  # copies and returns, even on a busy machine
     assert stats["peak_kib"] < 64 * 1024, stats
