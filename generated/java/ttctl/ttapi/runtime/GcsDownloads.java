@@ -76,9 +76,9 @@ public final class GcsDownloads {
         int id = GcsRules.msgId(f);
         if (id == GcsMissions.MISSION_COUNT) {
             downloads.remove(who);
-            int count = GcsMissions.u16(f, 0);
+            int count = GcsRules.u16(f, 0);
             if (count > 0 && count <= MAX_ITEMS) {
-                Download d = new Download(count, GcsMissions.u8(f, 4), now);
+                Download d = new Download(count, GcsRules.u8(f, 4), now);
                 downloads.put(who, d);
                 while (downloads.size() > GcsMissions.MAX_UPLOADS) {
                     Iterator<Integer> it = downloads.keySet().iterator();

@@ -67,8 +67,8 @@ public final class GcsParamLists {
 
     /** A PARAM_VALUE frame came down (every station gets it). */
     public void value(long now, byte[] f) {
-        int count = GcsMissions.u16(f, 4);
-        int index = GcsMissions.u16(f, 6);
+        int count = GcsRules.u16(f, 4);
+        int index = GcsRules.u16(f, 6);
         if (count <= 0 || count > MAX_COUNT || index >= count) {
             return;
         }

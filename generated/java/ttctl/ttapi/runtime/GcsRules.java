@@ -363,11 +363,18 @@ public final class GcsRules {
     }
 
     private static int field(byte[] frame, int offset) {
-        if (offset < 0) {
-            return -1;
-        }
+        return offset < 0 ? -1 : u8(frame, offset);
+    }
+
+    /** The payload byte at {@code offset} of a whole frame (0 past its end: MAVLink 2 cut trailing zeros). */
+    static int u8(byte[] frame, int offset) {
         int plen = frame[1] & 0xFF;
         return offset < plen ? frame[Frame.HEADER_LENGTH + offset] & 0xFF : 0;
+    }
+
+    /** The little-endian uint16 of the payload at {@code offset}, as {@link #u8}. */
+    static int u16(byte[] frame, int offset) {
+        return u8(frame, offset) | u8(frame, offset + 1) << 8;
     }
 
     /**
