@@ -338,30 +338,56 @@ def test_the_vehicle_keeps_items_that_come_ahead_and_acks_a_repeated_last_item_a
 
 
 def test_download_relay_answers_from_the_vehicles_own_items() -> None:
+    """The bridge prefetches a download's items and answers the station from them; the item the
+    station waits for goes up ahead of the prefetch, and one the link lost (its request or its
+    answer: an item asked for later came first) is asked again at once, ahead."""
     from ttctl.bridge.downloads import DownloadRelay
 
-    relay = DownloadRelay(lambda who, seq, kind: f"ask{seq}".encode(), window=3)
+    in_uplink: set[bytes] = set()  # requests still waiting in the bridge's uplink
+    relay = DownloadRelay(lambda who, seq, kind: f"ask{seq}".encode(), window=3, waiting=in_uplink.__contains__)
     who = (245, 190)
+
+    def item(seq: int) -> Any:
+        return B.MissionItemInt(target_system=245, target_component=190, seq=seq, x=seq, mission_type=0)
+
+    def ask(t: float, seq: int, legacy: bool = False) -> tuple[bool, list[Any], list[bytes], list[bytes]]:
+        kind = B.MissionRequest if legacy else B.MissionRequestInt
+        return relay.from_gcs(t, kind(target_system=1, target_component=1, seq=seq, mission_type=0), who)
+
     count = B.MissionCount(target_system=245, target_component=190, count=6, mission_type=0)
-    passed, up = relay.from_vehicle(0.0, count, who)
-    assert passed and up == [b"ask0", b"ask1", b"ask2"]  # asked at once, as the station would, a window ahead
-    for seq in (0, 2):  # 1 is lost on the way
-        held = B.MissionItemInt(target_system=245, target_component=190, seq=seq, x=seq, mission_type=0)
-        assert relay.from_vehicle(0.2, held, who) == (False, [])  # held for the station's request
-
-    def ask(t: float, seq: int) -> tuple[bool, list[Any], list[bytes]]:
-        return relay.from_gcs(t, B.MissionRequestInt(target_system=1, target_component=1, seq=seq, mission_type=0),
-                              who)
-
-    up_, answers, more = ask(0.1, 0)
-    assert not up_ and [a.seq for a in answers] == [0] and more == [b"ask3"]  # the vehicle's own item, at once
-    assert ask(0.15, 1) == (False, [], [b"ask4"])  # asked 0.15 s ago: on its way
-    assert ask(0.22, 1) == (True, [], [])  # the station asks again 0.25 s after it asked: up it goes
-    late = B.MissionItemInt(target_system=245, target_component=190, seq=1, x=1, mission_type=0)
-    assert relay.from_vehicle(0.5, late, who) == (True, [])  # the station waits for it: passed on
-    assert ask(1.2, 3)[0]  # asked 1.2 s ago and never came: the station's own request goes up
+    assert relay.from_vehicle(0.0, count, who) == (True, [], [b"ask0", b"ask1", b"ask2"])  # a window ahead
+    assert relay.from_vehicle(0.2, item(0), who) == (False, [], [])  # held for the station's request
+    assert relay.from_vehicle(0.21, item(2), who) == (False, [b"ask1"], [])  # 1 was lost: asked again, ahead
+    up, answers, first, more = ask(0.25, 0)
+    assert not up and [a.seq for a in answers] == [0] and first == [] and more == [b"ask3"]  # at once
+    assert ask(0.3, 1) == (False, [], [], [b"ask4"])  # asked again 0.09 s ago: on its way
+    assert ask(0.45, 1) == (False, [], [b"ask1"], [])  # the station asks again 0.24 s later: ahead it goes
+    in_uplink.add(b"ask3")
+    assert ask(0.5, 3) == (False, [], [b"ask3"], [b"ask5"])  # the bridge's own, still waiting: moved ahead
+    in_uplink.clear()
+    assert relay.from_vehicle(0.6, item(1), who) == (True, [], [])  # the station waits for it: passed on
+    assert relay.from_vehicle(0.7, item(3), who) == (True, [], [])  # 0..2 all came: nothing lost
+    assert relay.from_vehicle(0.8, item(5), who) == (False, [b"ask4"], [])  # 4, asked before 5, lost
+    assert relay.from_vehicle(0.85, item(5), who) == (False, [], [])  # (5 again: 4 asked after it was)
+    in_uplink.add(b"ask4")
+    assert ask(0.9, 4) == (False, [], [b"ask4"], [])  # moved ahead, not sent twice
+    assert ask(1.0, 4, legacy=True) == (True, [], [], [])  # a legacy request: as the station sent it
     assert relay.from_gcs(2.0, B.MissionAck(target_system=1, target_component=1, type=0, mission_type=0), who)[0]
     assert who not in relay.downloads
+
+
+def test_a_station_request_moves_its_waiting_copy_to_the_head_of_the_uplink() -> None:
+    """`first` with an equal frame waiting: that one goes ahead (not a second copy)."""
+    from ttctl.bridge.uplink import GcsUplink
+
+    q = GcsUplink(None)
+    frames = [bytes([0xFD, 5, 0, 0, i, 245, 190, 51, 0, 0, i, 0, 1, 1, 0, 0, 0]) for i in range(4)]
+    for f in frames:
+        q.put(0.0, "MISSION_REQUEST_INT", f)
+    again = bytearray(frames[2])
+    again[4] = 99  # (another sequence number: the same request)
+    assert q.put(0.1, "MISSION_REQUEST_INT", bytes(again), first=True) == "duplicate"
+    assert [q.pull(0.2, 100) for _ in range(5)] == [frames[2], frames[0], frames[1], frames[3], None]
 
 
 def test_a_parameter_list_the_link_lost_part_of_is_completed_by_reads() -> None:

@@ -258,7 +258,8 @@ def test_the_java_mission_and_parameter_protocols_decide_as_the_python_bridges(c
 
     q = GcsUplink(250.0, burst=100)
     missions = MissionRelay(request, waiting=q.waiting)
-    downloads = DownloadRelay(lambda who, seq, t: pack(who, common.MAVLink_mission_request_int_message(1, 1, seq, t)))
+    downloads = DownloadRelay(lambda who, seq, t: pack(who, common.MAVLink_mission_request_int_message(1, 1, seq, t)),
+                              waiting=q.waiting)
     params = ParamLists()
     stations = {(255, 190): {"plan": 0}, (245, 190): {"plan": 0}}
     vplan: dict[int, int] = {0: 0}  # the vehicle's plan: count per mission type
@@ -287,10 +288,12 @@ def test_the_java_mission_and_parameter_protocols_decide_as_the_python_bridges(c
             params.value(now, msg.param_index, msg.param_count)
         elif msg.NAME.startswith("MISSION_"):
             fwd, again, reqs = missions.from_vehicle(now, msg, who)
-            passed, ahead = downloads.from_vehicle(now, msg, who)
+            passed, lost, ahead = downloads.from_vehicle(now, msg, who)
             for x in reversed(again):
                 q.put(now, "MISSION_ITEM_INT", x, first=True)
-            first += [_describe(x) for x in again]
+            for x in reversed(lost):
+                q.put(now, "MISSION_REQUEST_INT", x, first=True)
+            first += [_describe(x) for x in again + lost]
             for x in ahead:
                 q.put(now, "MISSION_REQUEST_INT", x)
                 up.append(_describe(x))
@@ -308,12 +311,15 @@ def test_the_java_mission_and_parameter_protocols_decide_as_the_python_bridges(c
         msg = decode(f)
         st: list[str] = []
         up: list[bytes] = []
+        wanted: list[bytes] = []
         fwd = True
         if msg.NAME.startswith("MISSION_"):
-            fwd, answers, ahead = downloads.from_gcs(now, msg, who)
+            fwd, answers, wanted, ahead = downloads.from_gcs(now, msg, who)
             st += [_describe(bytes(a.get_msgbuf())) for a in answers]
             for a in answers:
                 to_station.append((now + 0.01, who, a))
+            for x in reversed(wanted):
+                q.put(now, "MISSION_REQUEST_INT", x, first=True)
             up += ahead
         if fwd:
             if msg.NAME == "PARAM_REQUEST_LIST":
@@ -326,7 +332,8 @@ def test_the_java_mission_and_parameter_protocols_decide_as_the_python_bridges(c
             st += [_describe(pack((1, 1), r)) for r in reqs]
             for r in reqs:
                 to_station.append((now + 0.01, who, r))
-        python.append(f"{int(fwd)} st[{','.join(st)}] first[] up[{','.join(_describe(x) for x in up)}]")
+        python.append(f"{int(fwd)} st[{','.join(st)}] first[{','.join(_describe(x) for x in wanted)}] "
+                      f"up[{','.join(_describe(x) for x in up)}]")
 
     def vehicle_gets(now: float, f: bytes) -> None:
         msg = decode(f)

@@ -63,8 +63,8 @@ class GcsUplink:
     def put(self, now: float, name: str, frame: bytes, first: bool = False) -> str:
         """Queue an unsigned MAVLink 2 frame of message `name`: "queued", "duplicate", "replaced"
         (a newer frame took a waiting one's slot); "overflow" is counted when the oldest went.
-        `first`: a protocol frame the vehicle is waiting for (a lost one, sent again) goes ahead of
-        the protocol frames already waiting."""
+        `first`: a protocol frame the vehicle or a station is waiting for (a lost one, sent again)
+        goes ahead of the protocol frames already waiting; if an equal one waits, that one does."""
         key = _key(frame)
         if name in NEWEST:
             slot = key[:3]
@@ -81,6 +81,12 @@ class GcsUplink:
             return verdict
         if self._waiting.get(key):
             self.stats.duplicates += 1
+            if first:  # the copy waiting goes ahead instead
+                for i, (k, f) in enumerate(self.protocol):
+                    if k == key:
+                        del self.protocol[i]
+                        self.protocol.appendleft((k, f))
+                        break
             return "duplicate"
         if not ground_station_protocol(name):
             if len(self.user) >= self.max_user:

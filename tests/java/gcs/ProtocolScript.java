@@ -53,7 +53,7 @@ public final class ProtocolScript {
         String[] head = in.readLine().split(" ");
         GcsUplink u = new GcsUplink(Double.parseDouble(head[1]), Integer.parseInt(head[2]));
         GcsMissions missions = new GcsMissions(1, u);
-        GcsDownloads downloads = new GcsDownloads(1);
+        GcsDownloads downloads = new GcsDownloads(1, u);
         GcsParamLists params = new GcsParamLists(1);
         StringBuilder out = new StringBuilder();
         String line;
@@ -68,7 +68,10 @@ public final class ProtocolScript {
                 int who = Integer.parseInt(w[2]);
                 byte[] f = UplinkScript.unhex(w[3]);
                 int id = f[7] & 0xFF;
-                boolean forward = !(id >= 39 && id <= 51 || id == 73) || downloads.fromGcs(now, f, who, st, up);
+                boolean forward = !(id >= 39 && id <= 51 || id == 73) || downloads.fromGcs(now, f, who, st, first, up);
+                for (int i = first.size() - 1; i >= 0; i--) {
+                    u.offer(first.get(i), now, true);
+                }
                 if (forward) {
                     if (id == 21) {
                         params.request(now, who);
@@ -96,7 +99,12 @@ public final class ProtocolScript {
                     for (int i = first.size() - 1; i >= 0; i--) {
                         u.offer(first.get(i), now, true);
                     }
-                    forward = downloads.fromVehicle(now, f, who, up) && forward;
+                    List<byte[]> lost = new ArrayList<>();
+                    forward = downloads.fromVehicle(now, f, who, lost, up) && forward;
+                    for (int i = lost.size() - 1; i >= 0; i--) {
+                        u.offer(lost.get(i), now, true);
+                    }
+                    first.addAll(lost);
                     for (byte[] x : up) {
                         u.offer(x, now);
                     }

@@ -62,7 +62,7 @@ class GcsBridge:
         self.radio = b.encoder(vehicle_sysid, RADIO_COMPID)
         self.autopilot = b.encoder(vehicle_sysid, 1)  # the mission relay's requests, as the vehicle's
         self.missions = MissionRelay(self._request, waiting=self.uplink.waiting)
-        self.downloads = DownloadRelay(self._request_up)
+        self.downloads = DownloadRelay(self._request_up, waiting=self.uplink.waiting)
         # one-shot requests (commands, parameter reads, mission lists) sent again until answered
         self.resend = Resender(lambda msg, seq, who: bytes(msg.pack(seq, *who)), self.uplink.waiting)
         self.params = ParamLists()  # parameter lists: what the link lost of one, read again at once
@@ -137,12 +137,14 @@ class GcsBridge:
                 carried = self.routes.heard(now, link, source, src)
                 link.confirm(source, {src})  # a listening link answers only who sent frames it carries
                 if msg.NAME.startswith("MISSION_"):
-                    forward, answers, ahead = self.downloads.from_gcs(now, msg, carried)
+                    forward, answers, wanted, ahead = self.downloads.from_gcs(now, msg, carried)
                     for answer in answers:
                         self._to_gcs(now, answer, carried)
+                    for frame in wanted:  # (the item the station waits for: ahead of the prefetch)
+                        self.uplink.put(now, "MISSION_REQUEST_INT", frame, first=True)
                     for frame in ahead:
                         self.uplink.put(now, "MISSION_REQUEST_INT", frame)
-                    queued = queued or bool(ahead)
+                    queued = queued or bool(ahead) or bool(wanted)
                     if not forward:
                         continue
                 if msg.NAME == "PARAM_REQUEST_LIST":
@@ -207,15 +209,17 @@ class GcsBridge:
             self.params.value(loop_now, int(msg.param_index), int(msg.param_count))
         if msg.NAME.startswith("MISSION_"):
             forward, again, requests = self.missions.from_vehicle(loop_now, msg, who)
-            passed, ahead = self.downloads.from_vehicle(loop_now, msg, who)
+            passed, lost, ahead = self.downloads.from_vehicle(loop_now, msg, who)
             forward = forward and passed
             for frame in ahead:
                 self.uplink.put(loop_now, "MISSION_REQUEST_INT", frame)
+            for frame in reversed(lost):  # (items whose requests or answers the link lost: ahead, in order)
+                self.uplink.put(loop_now, "MISSION_REQUEST_INT", frame, first=True)
             for frame in reversed(again):  # (an item the vehicle lacks, asked for again: ahead of the next ones)
                 self.uplink.put(loop_now, "MISSION_ITEM_INT", frame, first=True)
             for req in requests:
                 self._to_gcs(loop_now, req, target)  # type: ignore[arg-type]
-            if again or ahead:
+            if again or ahead or lost:
                 self.kick()
             if not forward:
                 return True

@@ -437,16 +437,19 @@ public final class GcsBridge extends GcsBridgeCore implements Consumer<MavlinkMe
         }
         List<byte[]> requests = new ArrayList<>();
         boolean forward = true;
+        boolean offered = false;
         if (!onboard) {
             synchronized (lock) {
                 forward = down(f, msg, now, requests);
+                offered = protocols.takeOffered();
             }
         }
         deliver(requests, GcsMissions.REQUEST_INT_CRC_EXTRA);
         if (forward) {
             deliver(java.util.Collections.singletonList(f), msg.crcExtra());
-        } else {
-            scheduler.wake(); // (an item sent again, a request for the next)
+        }
+        if (!forward || offered) {
+            scheduler.wake(); // (an item sent again, a request for the next, a download's prefetch)
         }
     }
 

@@ -18,22 +18,36 @@ final class GcsProtocols {
     final GcsParamLists params;
     private final GcsUplink uplink;
     private final List<byte[]> up = new ArrayList<>();
+    private final List<byte[]> first = new ArrayList<>();
+    private boolean offered;
 
     GcsProtocols(int vehicle, GcsUplink uplink) {
         this.uplink = uplink;
         this.missions = new GcsMissions(vehicle, uplink);
-        this.downloads = new GcsDownloads(vehicle);
+        this.downloads = new GcsDownloads(vehicle, uplink);
         this.params = new GcsParamLists(vehicle);
     }
 
-    /** Offers what {@code up} holds: {@code first}, ahead of what waits, in their order. */
-    private boolean offer(long now, boolean first) {
-        for (int i = 0; i < up.size(); i++) {
-            uplink.offer(up.get(first ? up.size() - 1 - i : i), now, first);
+    /** Offers what {@code first} holds ahead of what waits, in their order, then what {@code up} holds. */
+    private boolean offer(long now) {
+        for (int i = first.size() - 1; i >= 0; i--) {
+            uplink.offer(first.get(i), now, true);
         }
-        boolean any = !up.isEmpty();
+        for (byte[] f : up) {
+            uplink.offer(f, now, false);
+        }
+        boolean any = !up.isEmpty() || !first.isEmpty();
         up.clear();
+        first.clear();
+        offered |= any;
         return any;
+    }
+
+    /** Whether frames were offered to the uplink since the last call (its sender is to be woken). */
+    boolean takeOffered() {
+        boolean o = offered;
+        offered = false;
+        return o;
     }
 
     /** A station's frame (carried as {@code who}) before it goes up: false when the bridge answered it. */
@@ -42,8 +56,8 @@ final class GcsProtocols {
         if (!(id >= 39 && id <= 51 || id == 73)) { // (not a mission message)
             return true;
         }
-        boolean forward = downloads.fromGcs(now, f, who, toStations, up);
-        offer(now, false);
+        boolean forward = downloads.fromGcs(now, f, who, toStations, first, up);
+        offer(now); // (the item the station waits for: ahead of the prefetch)
         return forward;
     }
 
@@ -67,20 +81,20 @@ final class GcsProtocols {
         }
         int ts = GcsRules.targetSystem(f);
         int who = ts > 0 ? ts << 8 | Math.max(0, GcsRules.targetComponent(f)) : -1;
-        boolean forward = missions.fromVehicle(now, f, who, up, toStations);
-        offer(now, true); // (an item the vehicle lacks, asked for again: ahead of the next ones)
-        boolean passed = downloads.fromVehicle(now, f, who, up);
-        offer(now, false);
+        boolean forward = missions.fromVehicle(now, f, who, first, toStations);
+        offer(now); // (an item the vehicle lacks, asked for again: ahead of the next ones)
+        boolean passed = downloads.fromVehicle(now, f, who, first, up);
+        offer(now); // (items whose requests or answers the link lost: ahead, in order)
         return forward && passed;
     }
 
     /** The protocols' own checks: true when frames were offered to the uplink. */
     boolean tick(long now, List<byte[]> toStations) {
-        missions.tick(now, up); // a lost count (and the items behind it) or last item, sent again
-        boolean any = offer(now, true);
+        missions.tick(now, first); // a lost count (and the items behind it) or last item, sent again
+        boolean any = offer(now);
         missions.ahead(now, toStations); // the next items as the uplink takes them
         params.tick(now, up); // what the link lost of a parameter list, read again
-        return offer(now, false) || any;
+        return offer(now) || any;
     }
 
     void clear() {

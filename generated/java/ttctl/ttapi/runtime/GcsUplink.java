@@ -78,8 +78,9 @@ public final class GcsUplink {
     }
 
     /**
-     * Takes a frame; {@code first}: a PROTOCOL frame the vehicle is waiting for (a lost one, sent
-     * again) goes ahead of the PROTOCOL frames already waiting.
+     * Takes a frame; {@code first}: a PROTOCOL frame the vehicle or a station is waiting for (a
+     * lost one, sent again) goes ahead of the PROTOCOL frames already waiting; if an equal one
+     * waits, that one does.
      */
     public Offer offer(byte[] frame, long now, boolean first) {
         int msgId = GcsRules.msgId(frame);
@@ -103,9 +104,14 @@ public final class GcsUplink {
             queued++;
             return Offer.QUEUED;
         }
-        for (byte[] w : protocol) {
+        for (Iterator<byte[]> it = protocol.iterator(); it.hasNext();) {
+            byte[] w = it.next();
             if (GcsRules.sameMessage(w, frame)) {
                 duplicates++;
+                if (first) { // the copy waiting goes ahead instead
+                    it.remove();
+                    protocol.addFirst(w);
+                }
                 return Offer.DUPLICATE;
             }
         }
