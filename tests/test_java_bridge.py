@@ -370,6 +370,7 @@ def test_the_java_mission_and_parameter_protocols_decide_as_the_python_bridges(c
     def station_gets(now: float, who: tuple[int, int], msg: Any) -> None:
         n = msg.NAME
         if n == "MISSION_REQUEST_INT" and msg.target_system == who[0] and stations[who].get("count"):
+            stations[who]["asked"] = now
             if msg.seq < stations[who]["count"] and rnd.random() < 0.95:
                 gcs_frame(now, who, common.MAVLink_mission_item_int_message(
                     1, 1, msg.seq, 6, 16, 0, 1, 0, 0, 0, 0, 460503000 + msg.seq, 144686000, 5.0, msg.mission_type))
@@ -393,11 +394,14 @@ def test_the_java_mission_and_parameter_protocols_decide_as_the_python_bridges(c
         while next_tick <= t:
             lines.append(f"tick {round(next_tick * 1e6)}")
             again = missions.tick(next_tick)
-            st = [_describe(pack((1, 1), r)) for _, r in missions.ahead_requests(next_tick)]
-            reads = [pack(who, common.MAVLink_param_request_read_message(1, 1, b"", i))
-                     for who, i in params.tick(next_tick)]
             for x in reversed(again):  # (ahead of what waits, in their order)
                 q.put(next_tick, decode(x).NAME, x, first=True)
+            asks = missions.ahead_requests(next_tick)
+            st = [_describe(pack((1, 1), r)) for _, r in asks]
+            for w, r in asks:  # (the next items, asked of their stations)
+                to_station.append((next_tick + 0.01, w, r))
+            reads = [pack(who, common.MAVLink_param_request_read_message(1, 1, b"", i))
+                     for who, i in params.tick(next_tick)]
             for x in reads:
                 q.put(next_tick, decode(x).NAME, x)
             python.append(f" st[{','.join(st)}] first[{','.join(_describe(x) for x in again)}] "
@@ -421,8 +425,8 @@ def test_the_java_mission_and_parameter_protocols_decide_as_the_python_bridges(c
             gcs_frame(t, who, common.MAVLink_param_request_list_message(1, 1))
         elif r < 0.06 and s.get("want"):
             gcs_frame(t, who, common.MAVLink_mission_request_int_message(1, 1, s["want"].pop(0), 0))
-        elif r < 0.062 and s.get("count"):
-            gcs_frame(t, who, common.MAVLink_mission_count_message(1, 1, s["count"], 0))  # its retry
+        elif r < 0.062 and s.get("count") and t - s.get("asked", 0.0) > 1.5:  # its retry, when not asked
+            gcs_frame(t, who, common.MAVLink_mission_count_message(1, 1, s["count"], 0))  # for an item (QGC: 1.5 s)
     python.append(f"resent {missions.resent} swallowed {missions.swallowed} answered {downloads.answered} "
                   f"read {params.read}")
     proc = subprocess.run(["java", "-cp", str(classes), "ProtocolScript"], input="budget 250 100\n" + "\n".join(lines)

@@ -6,7 +6,8 @@ Over DTT at 10 % loss a list of 21 values loses one or two, and QGroundControl a
 missing ones only after 3 s of silence (its ParameterManager); MAVProxy, after its own. The bridge
 sees every PARAM_VALUE come down, so once the stream has been quiet for QUIET seconds it reads
 each missing index itself (PARAM_REQUEST_READ by index, carried as the station that asked for
-the list), a few at a time, as the station would; the vehicle's answers go down to every station
+the list), a few at a time, as the station would, and again READ_AGAIN seconds after a read that
+brought no answer; the vehicle's answers go down to every station
 as any PARAM_VALUE does. Bounded: BOUND seconds after the list request, TRIES reads of an index,
 at most BATCH at once, MAX_LISTS lists followed. Sans-IO: `request` when a station's
 PARAM_REQUEST_LIST goes up, `value` for each PARAM_VALUE the vehicle sends, `tick` for the
@@ -19,8 +20,10 @@ from collections import OrderedDict
 from dataclasses import dataclass, field
 
 QUIET = 0.5  # s without a PARAM_VALUE: the list's stream has ended (what is missing was lost)
+READ_AGAIN = 0.35  # s after reads without their answers: lost (a round trip is 0.12-0.3 s on the m100)
 BOUND = 10.0  # s after the station's request: no more reads (its own retries go on)
-TRIES = 3  # reads of one index, at most
+TRIES = 5  # reads of one index, at most: all before QGroundControl's own, 3 s after the last value (at 3
+# reads 0.7 s apart, one index of about 150 lists lost all three and the station read it itself)
 BATCH = 8  # reads sent at once
 MAX_LISTS = 8
 MAX_COUNT = 4096  # a count above this is not followed (a stranger's; PX4 has about 1,000)
@@ -72,7 +75,7 @@ class ParamLists:
             if now - lst.first >= self.bound:
                 del self.lists[who]
                 continue
-            if lst.count is None or now - lst.last < self.quiet:
+            if lst.count is None or now - lst.last < (READ_AGAIN if lst.tries else self.quiet):
                 continue  # the stream goes on (or has not begun: the request's own resend covers that)
             missing = [i for i in range(lst.count) if i not in lst.have and lst.tries.get(i, 0) < TRIES][:BATCH]
             if not missing:

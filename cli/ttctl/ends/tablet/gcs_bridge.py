@@ -297,10 +297,10 @@ class GcsBridge:
         while True:
             now = loop.time()
             again = self.missions.tick(now)  # (and a mission upload's lost count or last item, sent again)
-            for who, req in self.missions.ahead_requests(now):  # (the next items as the uplink takes them)
-                self._to_gcs(now, req, who)
             for frame in reversed(again):  # (ahead of what waits, in their order; protocol frames: the
                 self.uplink.put(now, "MISSION_ITEM_INT", frame, first=True)  # name tells only newest-wins)
+            for who, req in self.missions.ahead_requests(now):  # (the next items as the uplink takes them:
+                self._to_gcs(now, req, who)  # those just sent again count as waiting in it)
             resent = self.resend.tick(now)  # one-shot requests whose answer has not come in a round trip
             for name, frame in resent:
                 self.uplink.put(now, name, frame)

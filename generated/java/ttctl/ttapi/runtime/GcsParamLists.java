@@ -16,14 +16,17 @@ import java.util.Set;
  * asks for the missing ones only after 3 s of silence. The bridge sees every PARAM_VALUE come
  * down, so once the stream has been quiet {@value #QUIET_MILLIS} ms it reads each missing index
  * itself (PARAM_REQUEST_READ by index, as the station that asked for the list), at most
- * {@value #BATCH} at once, {@value #TRIES} reads an index, for {@value #BOUND_MILLIS} ms after the
+ * {@value #BATCH} at once, {@value #TRIES} reads an index {@value #READ_AGAIN_MILLIS} ms apart (all
+ * within the station's 3 s), for {@value #BOUND_MILLIS} ms after the
  * request, {@value #MAX_LISTS} lists followed. Sans I/O (times in nanoseconds), not thread-safe (the
  * {@link GcsBridge} locks around it); a station is its carried ids, {@code sys << 8 | comp}.
  */
 public final class GcsParamLists {
     static final long QUIET_MILLIS = 500;
+    /** After a read: its answer comes within a round trip (m100: 0.12-0.3 s), or it was lost. */
+    static final long READ_AGAIN_MILLIS = 350;
     static final long BOUND_MILLIS = 10_000;
-    static final int TRIES = 3;
+    static final int TRIES = 5;
     static final int BATCH = 8;
     static final int MAX_LISTS = 8;
     /** A count above this is not followed (a stranger's; PX4 has about 1,000). */
@@ -96,7 +99,8 @@ public final class GcsParamLists {
                 it.remove();
                 continue;
             }
-            if (w.count < 0 || now - w.last < QUIET_MILLIS * 1_000_000L) {
+            long quiet = (w.tries.isEmpty() ? QUIET_MILLIS : READ_AGAIN_MILLIS) * 1_000_000L;
+            if (w.count < 0 || now - w.last < quiet) {
                 continue; // the stream goes on (or has not begun: the request's own resend covers that)
             }
             int n = 0;
