@@ -333,7 +333,7 @@ def _flood(qgc: Gcs, drv: Driver, params: bool) -> dict[str, Any]:
     lat, tries, errors = drv.latencies()
     took = time.monotonic() - start
     after = drv.stats()
-    assert errors == 0, (lat, errors)
+    assert errors == 0, (lat, errors, (drv.err.flush(), Path(drv.err.name).read_text()[-600:])[1])
     assert after["carriedBytes"] - before["carriedBytes"] <= 0.8 * RATE * took + 100, (before, after, took)
     values = len([1 for t, _ in qgc.of("PARAM_VALUE") if t > start])
     return {"lat": sorted(lat), "try": sorted(tries), "stats": after, "param_values": values}
