@@ -109,6 +109,11 @@ class GcsUplink:
         self.stats.queued += 1
         return "queued"
 
+    def put_ahead(self, now: float, name: str, frames: list[bytes]) -> None:
+        """Protocol `frames` ahead of what waits, in their order (`put` with `first`, last one first)."""
+        for frame in reversed(frames):
+            self.put(now, name, frame, first=True)
+
     def waiting(self, frame: bytes) -> bool:
         """This protocol (or user) frame still waits here: it has not gone to the link yet."""
         return bool(self._waiting.get(_key(frame)))

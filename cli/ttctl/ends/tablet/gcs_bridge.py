@@ -140,8 +140,7 @@ class GcsBridge:
                     forward, answers, wanted, ahead = self.downloads.from_gcs(now, msg, carried)
                     for answer in answers:
                         self._to_gcs(now, answer, carried)
-                    for frame in wanted:  # (the item the station waits for: ahead of the prefetch)
-                        self.uplink.put(now, "MISSION_REQUEST_INT", frame, first=True)
+                    self.uplink.put_ahead(now, "MISSION_REQUEST_INT", wanted)  # (ahead of the prefetch)
                     for frame in ahead:
                         self.uplink.put(now, "MISSION_REQUEST_INT", frame)
                     queued = queued or bool(ahead) or bool(wanted)
@@ -213,10 +212,9 @@ class GcsBridge:
             forward = forward and passed
             for frame in ahead:
                 self.uplink.put(loop_now, "MISSION_REQUEST_INT", frame)
-            for frame in reversed(lost):  # (items whose requests or answers the link lost: ahead, in order)
-                self.uplink.put(loop_now, "MISSION_REQUEST_INT", frame, first=True)
-            for frame in reversed(again):  # (an item the vehicle lacks, asked for again: ahead of the next ones)
-                self.uplink.put(loop_now, "MISSION_ITEM_INT", frame, first=True)
+            self.uplink.put_ahead(loop_now, "MISSION_REQUEST_INT", lost)  # (items whose requests or answers
+            # the link lost) and an item the vehicle lacks, asked for again: ahead of the next ones
+            self.uplink.put_ahead(loop_now, "MISSION_ITEM_INT", again)
             for req in requests:
                 self._to_gcs(loop_now, req, target)  # type: ignore[arg-type]
             if again or ahead or lost:
@@ -297,8 +295,8 @@ class GcsBridge:
         while True:
             now = loop.time()
             again = self.missions.tick(now)  # (and a mission upload's lost count or last item, sent again)
-            for frame in reversed(again):  # (ahead of what waits, in their order; protocol frames: the
-                self.uplink.put(now, "MISSION_ITEM_INT", frame, first=True)  # name tells only newest-wins)
+            self.uplink.put_ahead(now, "MISSION_ITEM_INT", again)  # (protocol frames: the name tells only
+            # newest-wins from the rest)
             for who, req in self.missions.ahead_requests(now):  # (the next items as the uplink takes them:
                 self._to_gcs(now, req, who)  # those just sent again count as waiting in it)
             resent = self.resend.tick(now)  # one-shot requests whose answer has not come in a round trip
