@@ -380,6 +380,51 @@ def test_a_command_is_not_queued_behind_a_file(tmp_path: Path) -> None:
     assert cmd.latency < 0.2 + 0.3
 
 
+
+class _Filler:
+    """A bulk source that always has a 90-byte frame (a ground station's uplink, say)."""
+
+    def pull(self, now: float, space: int) -> bytes:
+        return bytes(90)
+
+    def has_data(self, now: float) -> bool:
+        return True
+
+    def deadline(self, now: float) -> None:
+        return None
+
+
+@pytest.mark.parametrize("offset", [0.0, 0.03, 0.07, 0.11, 0.16])
+def test_a_commands_copy_and_retry_do_not_wait_behind_bulk(offset: float) -> None:
+    """A command's first try may wait for the packet on the air; the copy (0.5 s later on the
+    M100's uplink) and the retry (1.5 s) go at their time: bulk packets before them are cut to
+    leave the radio by then, and the link is not left idle for it."""
+    ep = Endpoint(shipped(), *TABLET, rate_Bps=500.0)
+    ep.add_stream(_Filler())
+    sent: list[tuple[float, bytes]] = []
+    cmd = None
+    t, start = 0.0, 1.0 + offset
+    while t < 4.0:
+        if cmd is None and t >= start:
+            cmd = ep.command(ttapi.TtActionCommand(action=int(ttapi.TtAction.TT_ACTION_HOVER)), ONBOARD)
+        pkt = ep.poll(t)
+        if pkt:
+            sent.append((t, pkt))
+            continue
+        nxt = ep.wakeup()
+        assert nxt is not None
+        t = max(nxt, t) if nxt > t else t + 1e-4  # (never a spin at one time)
+        if cmd is None:
+            t = min(t, start)
+    assert cmd is not None and cmd.sent_at[0] == pytest.approx(start)
+    tries = [at for at, pkt in sent if pkt[0] == 0xFD]  # control frames go first in their packet
+    assert len(tries) == 3, tries
+    assert tries[0] - start <= 90 / 500 + 1e-6  # the packet on the air
+    assert tries[1] == pytest.approx(start + 0.5, abs=1e-6)  # the copy
+    assert tries[2] == pytest.approx(start + 1.5, abs=1e-6)  # the retry
+    filler = sum(len(pkt) for at, pkt in sent if pkt[0] != 0xFD)
+    assert filler >= 0.95 * 500 * 4.0 - sum(len(pkt) for at, pkt in sent if pkt[0] == 0xFD) - 100
+
 def _tmpfs(path: Path, size: str) -> bool:
     if os.geteuid() != 0 or shutil.which("mount") is None:
         return False

@@ -183,6 +183,16 @@ class CommandClient:
         return min((c._due if c._copy_due is None else min(c._due, c._copy_due) for c in self.pending.values()),
                    default=None)
 
+    def next_send(self) -> float | None:
+        """When a command next goes again (a copy or a retry; not a last wait that ends in failure)."""
+        times = []
+        for c in self.pending.values():
+            if c._copy_due is not None:
+                times.append(c._copy_due)
+            if len(c.sent_at) <= c.retries:
+                times.append(c._due)
+        return min(times, default=None)
+
 
 Outcome = int | tuple[int, str]
 Action = Callable[[Any], Outcome]

@@ -108,6 +108,7 @@ class Endpoint:
         # transfer, request and first command ids are random (seeded in simulations): never reused by accident
         self._rng = rng or random.SystemRandom()
         self.commands = CommandClient(sysid, compid, first_id=self._rng.randint(1, 65535))
+        self.scheduler.control_due = self.commands.next_send  # bulk leaves the radio free for a command's retry
         self.server = CommandServer(bindings, sysid, compid, action) if accept_commands else None
         self.clock_ms = clock_ms or (lambda now: int(now * 1000))  # TT_LOG.time_boot_ms
         self._log_id = 0

@@ -8,6 +8,12 @@ packet of their own (the receiver keeps the long frame's pieces apart from it). 
 in a FIFO behind a file, so a command sent during a bulk transfer waits at most for the
 packet on the air.
 
+A command sent again (its copy or retry, when no ack came) is due at a known time
+(`control_due`): bulk data then goes in packets that leave the radio by that time, so the retry
+does not wait behind one. A packet is at most (due - now) x rate bytes of bulk; when not even a
+frame (or a piece of a long one, MIN_PIECE bytes) fits, the link waits for the retry. A first
+try cannot be foreseen, and waits for the packet on the air as before.
+
 With MAVLink signing, frames are signed as they are placed in a packet (`sign`), so their
 timestamps increase in the order they go on the wire whatever the priorities reorder, and no
 frame is slipped between the pieces of a long one (it would arrive, with a later timestamp,
@@ -27,6 +33,7 @@ from collections import deque
 from collections.abc import Callable
 
 SIGNATURE_OVERHEAD = 13
+MIN_PIECE = 20  # bytes: a long frame's piece shorter than this does not go just to fill the time before a retry
 PIPE_SLACK = 0.02  # s of a late wake-up the pipeline's pacer makes up (a stream has no radio buffer to overflow)
 
 CONTROL, TELEMETRY, BULK = 0, 1, 2
@@ -61,8 +68,12 @@ class Pacer:
 
 class Scheduler:
     def __init__(self, mtu: int = 100, rate_Bps: float | None = None, telemetry_limit: int = 32,
-                 sign: Callable[[bytes], bytes] | None = None) -> None:
+                 sign: Callable[[bytes], bytes] | None = None,
+                 control_due: Callable[[], float | None] | None = None) -> None:
         self.mtu = mtu
+        # when a control frame is next known to be queued (a command's copy or retry), or None
+        self.control_due = control_due
+        self._held_until: float | None = None  # bulk data waits for a due control frame until then
         self.sign = sign  # signs an unsigned frame as it is placed (MAVLink signing), or None
         self.pacer = Pacer(rate_Bps)
         self.control: deque[bytes] = deque()
@@ -160,7 +171,20 @@ class Scheduler:
 
     # -- building packets --------------------------------------------------------------------
     def ready_at(self) -> float:
-        return self.pacer.ready_at()
+        t = self.pacer.ready_at()
+        if self._held_until is not None and not (self.control or self.telemetry):
+            due = self.control_due() if self.control_due is not None else None
+            if due is not None and due <= self._held_until:  # only bulk waits, and for that retry still
+                t = max(t, due)
+        return t
+
+    def _bulk_limit(self, now: float) -> int:
+        """How long a packet bulk data may fill now: the whole packet, or what leaves the radio
+        before a control frame falls due (the pacer's rate; unpaced: no limit)."""
+        due = self.control_due() if self.control_due is not None else None
+        if due is None or not self.pacer.rate or due <= now:
+            return self.mtu
+        return min(self.mtu, int((due - now) * self.pacer.rate))
 
     def next_packet(self, now: float) -> bytes | None:
         if not self.pacer.ready(now):
@@ -177,23 +201,36 @@ class Scheduler:
         mtu = self.mtu
         pkt = bytearray()
         over = SIGNATURE_OVERHEAD if self.sign is not None else 0
+        self._held_until = None
+        limit = self._bulk_limit(now)
         if self._spill and self.control and len(self.control[0]) + over <= mtu and self.sign is None:
             while self.control and len(self.control[0]) <= mtu - len(pkt):  # urgent, in a packet of its own
                 pkt += self.control.popleft()
                 self._control_keys.popleft()
             return bytes(pkt)
         if self._spill:
-            pkt += self._spill[:mtu]
-            self._spill = self._spill[mtu:]
+            # signed, nothing goes between a long frame's pieces: a shorter piece would not help
+            n = mtu if self.sign is not None or limit >= mtu else self._piece(limit, len(self._spill))
+            if n == 0:
+                self._held_until = self.control_due() if self.control_due is not None else None
+                return b""
+            pkt += self._spill[:n]
+            self._spill = self._spill[n:]
             if self._spill or len(pkt) == mtu:
                 return bytes(pkt)
         while len(pkt) < mtu:
             space = mtu - len(pkt)
-            got = self._next_frame(now, space)  # (signed, a frame is `over` longer than its source thinks)
+            # (signed, a frame is `over` longer than its source thinks)
+            got = self._next_frame(now, space, limit - len(pkt))
             if got is None:
                 break
             frame, kind, key = got
             size = len(frame) + over
+            if kind == BULK and limit < mtu:  # a control frame is due: only what leaves before it
+                space = limit - len(pkt)
+                if size > space and (size <= mtu or self.sign is not None or self._piece(space, size) == 0):
+                    self._held = frame
+                    break
             if (size <= space or size > mtu) and self.sign is not None:
                 frame = self.sign(frame)  # placed now: signed now
             if size <= space:
@@ -211,9 +248,19 @@ class Scheduler:
                 else:
                     self._held = frame
                 break
+        if not pkt and limit < mtu:  # (what bulk there is waits: a source's frame may not fit either)
+            self._held_until = self.control_due() if self.control_due is not None else None
         return bytes(pkt)
 
-    def _next_frame(self, now: float, space: int) -> tuple[bytes, int, object] | None:
+    @staticmethod
+    def _piece(room: int, left: int) -> int:
+        """How much of a long frame's `left` bytes go in `room` before a due control frame: all
+        that fits, if that is the rest or at least MIN_PIECE bytes, else none."""
+        if room >= left:
+            return left
+        return room if room >= MIN_PIECE else 0
+
+    def _next_frame(self, now: float, space: int, bulk_space: int) -> tuple[bytes, int, object] | None:
         if self.control:
             return self.control.popleft(), CONTROL, self._control_keys.popleft()
         if self.telemetry:
@@ -221,9 +268,9 @@ class Scheduler:
         if self._held is not None:
             frame, self._held = self._held, None
             return frame, BULK, None
-        if self.pipe is not None:
-            return None  # bulk data takes the pipeline
-        pulled = self._pull(now, space)
+        if self.pipe is not None or bulk_space <= 0:
+            return None  # bulk data takes the pipeline, or waits for a due control frame
+        pulled = self._pull(now, min(space, bulk_space))
         return None if pulled is None else (pulled, BULK, None)
 
     def wants_to_send(self, now: float) -> bool:
