@@ -64,7 +64,7 @@ RUNTIME_FILES = [
     "DecodeException", "Frame", "Parser", "Dispatcher", "Link", "UdpLink", "CommandContext",
     "CommandException", "Command", "MessageMatcher", "SendCommand", "ReceiveCommand", "CommandJob", "CommandIds",
     "CommandEnds", "CommandQueue",
-    "LinkScheduler", "DjiReceiving", "DjiLink", "PayloadLink", "PipelineLink",
+    "LinkScheduler", "PacketBuilder", "DjiReceiving", "DjiLink", "PayloadLink", "PipelineLink",
     "Packetizer", "PacketReceiver", "Signing", "UdpForward", "Callbacks", "Session",
     # the ground-station bridge (issue 22)
     "GcsRules", "GcsUplink", "GcsQuality", "GcsRoutes", "GcsV1", "GcsV1Stations", "GcsProblems",

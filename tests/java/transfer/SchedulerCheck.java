@@ -6,6 +6,8 @@ import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.LockSupport;
 
 import ttctl.ttapi.msg.TtActionCommand;
 import ttctl.ttapi.msg.TtFileDataWide;
@@ -17,7 +19,8 @@ import ttctl.ttapi.runtime.LinkScheduler;
  * the next packets; a control frame queued while one is being cut goes in a packet of its own
  * between the pieces; bulk sources take turns; the rate cap holds. With a signer: every frame is
  * signed as it is placed, in the order frames go on the air, and nothing is slipped between a
- * long frame's pieces.
+ * long frame's pieces. With a control frame due at a known time (a command's retry): every bulk
+ * packet sent before it has left the radio by then, and the link is not left idle for it.
  * Prints "ok ..." lines and DONE, or "FAIL ..." and exits 1.
  */
 public final class SchedulerCheck {
@@ -111,6 +114,7 @@ public final class SchedulerCheck {
         }
         check(refused, "a closed scheduler refuses frames");
         signed();
+        due();
         System.out.println("DONE");
     }
 
@@ -180,6 +184,65 @@ public final class SchedulerCheck {
         }
         check(frames == 5, frames + " signed frames, not 5");
         System.out.println("ok signed as placed, in the order on the air, nothing slipped between pieces");
+    }
+
+    /** Bulk before a control frame due at a known time: packets that end by then (at 500 B/s). */
+    static void due() throws Exception {
+        final double rate = 500;
+        final List<long[]> sent = Collections.synchronizedList(new ArrayList<long[]>()); // {at, bytes, control}
+        Link link = new Link() {
+            @Override
+            public void send(byte[] packet) {
+                sent.add(new long[] {System.nanoTime(), packet.length, (packet[0] & 0xFF) == 0xFD ? 1 : 0});
+            }
+
+            @Override
+            public void close() {
+            }
+        };
+        LinkScheduler s = new LinkScheduler(link, 100, rate).start();
+        final AtomicLong due = new AtomicLong(Long.MAX_VALUE);
+        s.addControlDue(due::get);
+        s.addSource(space -> new byte[90]); // a ground station's uplink, say: always a 90-byte frame
+        byte[] cmd = new TtActionCommand(1, 240, 9, 1, 0, new float[4], new byte[48]).pack(0, 255, 190);
+        Thread.sleep(300);
+        long t0 = System.nanoTime();
+        List<Long> dues = new ArrayList<>();
+        for (int i = 0; i < 6; i++) {
+            long at = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(250 + 37 * i);
+            dues.add(at);
+            due.set(at);
+            while (System.nanoTime() - at < 0) {
+                LockSupport.parkNanos(at - System.nanoTime());
+            }
+            s.sendControl(cmd);
+            due.set(Long.MAX_VALUE);
+            Thread.sleep(100);
+        }
+        long t1 = System.nanoTime();
+        s.close();
+        List<long[]> got = new ArrayList<>(sent);
+        long slack = TimeUnit.MILLISECONDS.toNanos(30); // a thread preempted between building and sending
+        int controls = 0;
+        long bulk = 0;
+        for (long[] p : got) {
+            if (p[2] == 1) {
+                controls++;
+                continue;
+            }
+            if (p[0] - t0 >= 0 && t1 - p[0] >= 0) {
+                bulk += p[1];
+            }
+            long ends = p[0] + (long) (p[1] * 1e9 / rate);
+            for (long at : dues) {
+                check(!(p[0] - at < 0 && ends - (at + slack) > 0), "a " + p[1] + "-byte bulk packet sent "
+                        + (at - p[0]) / 1000000 + " ms before a due control frame is still on the radio then");
+            }
+        }
+        check(controls == 6, controls + " control packets, not 6");
+        double secs = (t1 - t0) / 1e9;
+        check(bulk + 6 * cmd.length >= 0.8 * rate * secs, "the link was left idle: " + bulk + " bulk bytes in " + secs + " s");
+        System.out.println("ok bulk packets leave the radio before a due control frame");
     }
 
     static int total(List<byte[]> ps) {

@@ -71,6 +71,9 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
     private boolean closed;
     private Thread worker;
     private volatile long lastHeard = System.nanoTime() - TimeUnit.DAYS.toNanos(1);
+    // when a command in flight next tries again (nanoTime; Long.MAX_VALUE: none): the scheduler
+    // keeps the radio free for it (LinkScheduler.addControlDue)
+    private volatile long nextTry = Long.MAX_VALUE;
 
     /** A queue sending over {@code link} as {@code sysId}/{@code compId}; call {@link #start()}. */
     public CommandQueue(Link link, int sysId, int compId) {
@@ -114,6 +117,9 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
         this.compId = compId;
         this.ownListeners = listeners == null ? Callbacks.newThread("ttctl-command-callbacks") : null;
         this.listeners = listeners != null ? listeners : ownListeners;
+        if (scheduler != null) {
+            scheduler.addControlDue(() -> nextTry);
+        }
     }
 
     /** Starts the queue's thread (once); commands submitted before wait for it. */
@@ -426,6 +432,14 @@ public final class CommandQueue implements CommandContext, Consumer<MavlinkMessa
                         inFlight.add(j);
                         work.add(() -> begin(j));
                     }
+                    long tryAt = Long.MAX_VALUE;
+                    for (CommandJob j : inFlight) {
+                        if (!j.sending && j.reply == null && j.made < j.tries
+                                && (tryAt == Long.MAX_VALUE || j.due - tryAt < 0)) {
+                            tryAt = j.due;
+                        }
+                    }
+                    nextTry = tryAt;
                     if (!work.isEmpty()) {
                         break;
                     }

@@ -3,12 +3,11 @@ package ttctl.ttapi.runtime;
 
 import java.io.IOException;
 import java.util.ArrayDeque;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
-import java.util.function.Consumer;
+import java.util.function.LongSupplier;
 import java.util.function.UnaryOperator;
 
 /**
@@ -20,9 +19,10 @@ import java.util.function.UnaryOperator;
  * data never sits in a queue, so a command sent during a transfer waits at most for the packet
  * on the air.
  *
- * <p>Frames are packed by a {@link Packetizer}: several short frames share a packet, a frame
- * longer than a packet continues in the next packets, and a control frame waiting meanwhile goes
- * first in a packet of its own between those pieces (the receiver keeps them apart).
+ * <p>What goes in each packet is a {@link PacketBuilder}'s business; it packs frames with a
+ * {@link Packetizer}: several short frames share a packet, a frame longer than a packet continues
+ * in the next packets, and a control frame waiting meanwhile goes first in a packet of its own
+ * between those pieces (the receiver keeps them apart).
  *
  * <p>An optional signer ({@link #setSigner}, e.g. {@code Signing::sign}) signs every frame as
  * it is placed in a packet, so timestamps increase in the order frames go on the air whatever
@@ -30,6 +30,12 @@ import java.util.function.UnaryOperator;
  * pieces (it would arrive, newer, before the long frame completes, which the receiver's replay
  * check would then refuse). All methods are thread-safe; one worker thread (daemon)
  * sends. An exception from the link is counted ({@link #sendErrors()}) and never escapes.
+ *
+ * <p>A command's next try is due at a known time ({@link #addControlDue}: a {@link CommandQueue}
+ * on this scheduler adds its own): bulk data then goes in packets that leave the radio by then
+ * (at the rate, or {@link #setLinkRate} on a self-paced link), so the retry does not wait behind
+ * one; when not even a frame (or a piece of a long one, {@link #MIN_PIECE} bytes) fits, the link
+ * waits for the retry. A first try cannot be foreseen, and waits for the packet on the air.
  */
 public final class LinkScheduler implements AutoCloseable {
     /** Priority of commands, acks and file-transfer control: never dropped. */
@@ -37,10 +43,10 @@ public final class LinkScheduler implements AutoCloseable {
     /** Priority of telemetry: the oldest is dropped when {@link #TELEMETRY_LIMIT} wait. */
     public static final int TELEMETRY = 1;
     public static final int TELEMETRY_LIMIT = 32;
-    /** What MAVLink signing adds to a frame. */
-    private static final int SIGNATURE_LENGTH = 13;
     /** After a send the link refused, the next packet waits this long. */
     public static final long ERROR_PAUSE_MILLIS = 50;
+    /** A long frame's piece shorter than this does not go just to fill the time before a retry. */
+    public static final int MIN_PIECE = 20;
 
     /** A source of bulk frames, pulled when a packet has room (called on the worker thread). */
     public interface BulkSource {
@@ -57,20 +63,11 @@ public final class LinkScheduler implements AutoCloseable {
     private final int mtu;
     private final ReentrantLock lock = new ReentrantLock();
     private final Condition changed = lock.newCondition();
-    private final ArrayDeque<byte[]> control = new ArrayDeque<>();
-    private final ArrayDeque<byte[]> telemetry = new ArrayDeque<>();
-    private final ArrayDeque<byte[]> cut = new ArrayDeque<>(); // finished pieces of a long frame
-    private final List<BulkSource> sources = new ArrayList<>();
-    private final Packetizer packer;
-    private final Consumer<byte[]> toCut = new Consumer<byte[]>() {
-        @Override
-        public void accept(byte[] packet) {
-            cut.add(packet);
-        }
-    };
-    private byte[] held; // a bulk frame pulled that did not fit the packet being built
-    private int lastKind; // the queue the last frame came from (2: bulk)
-    private int rr;
+    private final PacketBuilder builder;
+    private final ArrayDeque<byte[]> control; // the builder's queues
+    private final ArrayDeque<byte[]> telemetry;
+    private final List<BulkSource> sources;
+    private double linkRate; // bytes per second for timing bulk before a due control frame when rate is 0
     private volatile UnaryOperator<byte[]> signer;
     private double rate; // bytes per second, 0: unpaced
     private long nextFree = System.nanoTime();
@@ -100,8 +97,11 @@ public final class LinkScheduler implements AutoCloseable {
             throw new IllegalArgumentException("rate must be 0 (unpaced) or positive");
         }
         this.link = link;
-        this.packer = new Packetizer(mtu);
-        this.mtu = packer.mtu();
+        this.builder = new PacketBuilder(mtu);
+        this.mtu = builder.mtu();
+        this.control = builder.control;
+        this.telemetry = builder.telemetry;
+        this.sources = builder.sources;
         this.rate = rateBytesPerSecond;
     }
 
@@ -192,6 +192,40 @@ public final class LinkScheduler implements AutoCloseable {
 
     public int mtu() {
         return mtu;
+    }
+
+    /**
+     * The link's rate in bytes per second, for timing bulk packets before a due control frame
+     * when the rate cap is 0 (a {@link DjiLink} paces itself: the M100's uplink carries about 500).
+     */
+    public LinkScheduler setLinkRate(double bytesPerSecond) {
+        if (bytesPerSecond < 0 || Double.isNaN(bytesPerSecond)) {
+            throw new IllegalArgumentException("the link rate is 0 (unknown) or positive");
+        }
+        lock.lock();
+        try {
+            linkRate = bytesPerSecond;
+        } finally {
+            lock.unlock();
+        }
+        return this;
+    }
+
+    /**
+     * {@code due} tells when a CONTROL frame is next known to be queued ({@link System#nanoTime}
+     * units; {@link Long#MAX_VALUE}: none), e.g. a command's retry. It is called under this
+     * scheduler's lock: it must not block or call back into the scheduler.
+     */
+    public void addControlDue(LongSupplier due) {
+        if (due == null) {
+            throw new NullPointerException("due");
+        }
+        lock.lock();
+        try {
+            builder.dues.add(due);
+        } finally {
+            lock.unlock();
+        }
     }
 
     /** Whether frames are signed as they are placed in packets ({@link #setSigner}). */
@@ -369,18 +403,8 @@ public final class LinkScheduler implements AutoCloseable {
         }
     }
 
-    private byte[] sign(byte[] frame) {
-        UnaryOperator<byte[]> s = signer;
-        if (s == null) {
-            return frame;
-        }
-        byte[] out = s.apply(frame);
-        return out == null ? frame : out;
-    }
-
     private boolean hasWork() {
-        return !control.isEmpty() || !telemetry.isEmpty() || !cut.isEmpty() || held != null
-                || packer.pending() > 0 || (woken && !sources.isEmpty());
+        return builder.waiting() || (woken && !sources.isEmpty());
     }
 
     private void loop() {
@@ -396,6 +420,10 @@ public final class LinkScheduler implements AutoCloseable {
                     }
                     long now = System.nanoTime();
                     long wait = Math.max(rate > 0 ? nextFree - now : 0, holdUntil - now);
+                    if (builder.capped && control.isEmpty() && telemetry.isEmpty()
+                            && builder.controlDue() - builder.bulkWaitUntil <= 0) {
+                        wait = Math.max(wait, builder.bulkWaitUntil - now); // only bulk waits, for that retry still
+                    }
                     if (wait > 0) {
                         changed.awaitNanos(wait); // woken early by a rate change or close: re-check
                         continue;
@@ -412,9 +440,15 @@ public final class LinkScheduler implements AutoCloseable {
                     if (closed) {
                         return;
                     }
-                    packet = build();
+                    packet = builder.build(signer, rate > 0 ? rate : linkRate, System.nanoTime());
+                    if (builder.sourceFailure != null) {
+                        lastError = builder.sourceFailure;
+                        builder.sourceFailure = null;
+                    }
                     if (packet == null || packet.length == 0) {
-                        woken = false; // every source is dry until wake()
+                        if (!builder.capped) {
+                            woken = false; // every source is dry until wake()
+                        }
                         continue;
                     }
                     if (rate > 0) {
@@ -445,97 +479,6 @@ public final class LinkScheduler implements AutoCloseable {
         } catch (Error e) {
             System.err.println("ttctl LinkScheduler: worker stopped: " + e);
             throw e;
-        }
-    }
-
-    /** The next packet, or null (under the lock). */
-    private byte[] build() {
-        boolean signing = signer != null;
-        int over = signing ? SIGNATURE_LENGTH : 0;
-        if (!cut.isEmpty()) {
-            byte[] first = control.peek();
-            if (first != null && first.length <= mtu && !signing) {
-                // urgent: control frames in a packet of their own between a long frame's pieces
-                int n = 0;
-                List<byte[]> take = new ArrayList<>();
-                while (!control.isEmpty() && n + control.peek().length <= mtu) {
-                    byte[] f = control.poll();
-                    take.add(f);
-                    n += f.length;
-                }
-                byte[] pkt = new byte[n];
-                int o = 0;
-                for (byte[] f : take) {
-                    System.arraycopy(f, 0, pkt, o, f.length);
-                    o += f.length;
-                }
-                return pkt;
-            }
-            return cut.poll();
-        }
-        while (cut.isEmpty()) {
-            int space = mtu - packer.pending();
-            byte[] frame = nextFrame(space);
-            if (frame == null) {
-                break;
-            }
-            int size = frame.length + over;
-            if (size <= space || size > mtu) {
-                packer.add(signing ? sign(frame) : frame, toCut); // placed now: signed now
-                if (size > mtu) {
-                    break;
-                }
-            } else {
-                putBack(frame);
-                break;
-            }
-        }
-        if (cut.isEmpty()) {
-            packer.flush(toCut);
-        }
-        return cut.poll();
-    }
-
-    private byte[] nextFrame(int space) {
-        if (!control.isEmpty()) {
-            lastKind = CONTROL;
-            return control.poll();
-        }
-        if (!telemetry.isEmpty()) {
-            lastKind = TELEMETRY;
-            return telemetry.poll();
-        }
-        lastKind = 2;
-        if (held != null) {
-            byte[] f = held;
-            held = null;
-            return f;
-        }
-        int n = sources.size();
-        for (int k = 0; k < n; k++) {
-            int i = (rr + k) % n;
-            byte[] f;
-            try {
-                f = sources.get(i).pull(space);
-            } catch (RuntimeException e) {
-                lastError = "bulk source failed: " + e;
-                f = null;
-            }
-            if (f != null && f.length > 0) {
-                rr = (i + 1) % n;
-                return f;
-            }
-        }
-        return null;
-    }
-
-    private void putBack(byte[] frame) {
-        if (lastKind == CONTROL) {
-            control.addFirst(frame);
-        } else if (lastKind == TELEMETRY) {
-            telemetry.addFirst(frame);
-        } else {
-            held = frame;
         }
     }
 }

@@ -73,7 +73,8 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         public TransferConfig transfers;
         /**
          * The link's rate in bytes per second for the transfers' timing estimates when
-         * {@link #rate} is 0 (a DjiLink: the M100's uplink carries about 500 B/s); 0: none.
+         * {@link #rate} is 0 (a DjiLink: the M100's uplink carries about 500 B/s), and for
+         * ending bulk packets before a command's retry ({@link LinkScheduler#setLinkRate}); 0: none.
          */
         public double linkRate;
         /**
@@ -147,6 +148,7 @@ public final class Session implements Consumer<MavlinkMessage>, AutoCloseable {
         this.files = new FileTransfers(scheduler, sysId, compId, o.transfers, listeners);
         if (o.linkRate > 0) {
             files.setLinkRate(o.linkRate);
+            scheduler.setLinkRate(o.linkRate);
         }
         this.pipeline = o.pipeline;
         this.pipeScheduler = o.pipeline == null ? null : new LinkScheduler(o.pipeline, PipelineLink.MTU, o.pipeRate);
