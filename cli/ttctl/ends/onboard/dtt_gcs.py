@@ -5,7 +5,7 @@ its own ground-station links, as the autopilot (compid 1).
 Which DTT frames are a ground station's: bridge/classes.py. While one was heard within PRESENCE
 seconds, the vehicle's broadcasts go down DTT too (its HEARTBEAT always). All of it leaves through
 one fair source below the tablet's own commands and acks (bridge/downmux.py): the HEARTBEAT first
-(twice a second), then the streams newest-wins per type, fitted to `share` of the downlink
+(three times a second), then the streams newest-wins per type, fitted to `share` of the downlink
 (bridge/downfit.py), then short answers (acks, STATUSTEXT) in order, then bulk answers (FTP,
 parameter and mission lists) fair by bytes between the stations they are for; an answer equal to
 one still waiting not twice (bridge/answers.py). An FTP burst to one station so never holds back
