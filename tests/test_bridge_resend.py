@@ -115,3 +115,32 @@ def test_a_flood_of_requests_is_followed_boundedly_and_resends_stop_at_the_bound
     u.request(20.0, b.CommandLong(target_system=1, target_component=100, command=512, confirmation=0, param1=0,
                                   param2=0, param3=0, param4=0, param5=0, param6=0, param7=0))
     assert not u.r.pending
+
+
+def ftp(b: Any, seq: int, opcode: int, offset: int = 0, req_opcode: int = 0, to: tuple[int, int] = (1, 1)) -> Any:
+    import struct
+
+    head = struct.pack("<HBBBBBBI", seq, 0, opcode, 239 if opcode in (5, 15) else 0, req_opcode, 0, 0, offset)
+    return b.FileTransferProtocol(target_network=0, target_system=to[0], target_component=to[1],
+                                  payload=list(head + bytes(251 - len(head))))
+
+
+def test_an_ftp_request_the_station_sent_twice_is_resent_until_its_reply() -> None:
+    """MAVLink FTP: a request is followed from the station's own retry (mavftp asks for every gap of
+    a burst at once; following those would flood the uplink), resent until the reply of sequence
+    number + 1 for that opcode; a burst read never (a resend would start the burst again)."""
+    u = Up()
+    b = u.b
+    u.request(0.0, ftp(b, 24, 5, 4063))  # ReadFile, sent once: the station's own business
+    u.request(0.0, ftp(b, 2, 15))  # BurstReadFile
+    assert not u.r.pending and [f for t in range(1, 40) for f in u.r.tick(t / 10)] == []
+    u.request(4.0, ftp(b, 24, 5, 4063))  # its retry: followed now
+    u.request(4.0, ftp(b, 2, 15))  # (a burst's retry: still not)
+    sent = [u.decode(f) for t in range(41, 75) for _, f in u.r.tick(t / 10)]
+    assert len(sent) >= 2 and all(bytes(m.payload[:3]) == bytes([24, 0, 0]) and m.payload[3] == 5 for m in sent)
+    # the reply to another request (seq 23 answered as 24), or to another opcode, is not its answer
+    u.r.answer(7.5, ftp(b, 24, 128, 3107, req_opcode=5, to=WHO), WHO)
+    u.r.answer(7.5, ftp(b, 25, 128, 5258, req_opcode=15, to=WHO), WHO)
+    assert list(u.r.pending) == [(WHO, "ftp", 24, 5)]
+    u.r.answer(7.6, ftp(b, 25, 128, 4063, req_opcode=5, to=WHO), WHO)  # ACK of seq 24's ReadFile
+    assert not u.r.pending and u.r.tick(9.0) == []

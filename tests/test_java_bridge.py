@@ -52,6 +52,7 @@ def test_bridge_rules_without_a_vehicle(classes: Path) -> None:
     result = dict(kv.split("=") for kv in proc.stdout.splitlines()[-1].split()[1:])
     assert 3000 <= int(result["budget_bytes"]) <= 3200 and result["busy"] == "refused", result
     assert result["signed"] == "3", result
+    assert result["ftp_resend"] == "ok", result  # GcsResend follows a station's retried MAVLink FTP request
     [problem] = [ln for ln in proc.stdout.splitlines() if ln.startswith("PROBLEM ")]
     assert problem.startswith("PROBLEM sending to the ground station at 192.0.2.1:14550 failed: "), problem
     mav = _mav()

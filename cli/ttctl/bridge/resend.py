@@ -21,6 +21,15 @@ most BOUND seconds. What answers what:
   (MISSION_COUNT and the items of an upload are resent by missions.py, which knows the upload.)
 - PARAM_REQUEST_READ, PARAM_SET: a PARAM_VALUE of that name (or index); PARAM_REQUEST_LIST: any
   PARAM_VALUE (the list has begun; the station asks again for what it misses).
+- FILE_TRANSFER_PROTOCOL (MAVLink FTP), once the station has sent the same request (its sequence
+  number and opcode) a second time: the reply of sequence number + 1 for that opcode. A reply is a
+  frame of up to 266 bytes, three or four DTT packets, so at 10 % loss a third of them are lost,
+  and pymavlink's mavftp, once its burst is done, asks for a missing piece once a second and gives
+  the download up after 5 s without a reply (a lost open: after three tries). The vehicle answers a
+  request it has answered with its recorded reply, so a resend is safe. Not a burst read (its
+  answer is a burst, which a resend would start again), and not before the station's own retry:
+  mavftp asks for all the gaps of a burst at once, and following each of those would flood the
+  uplink with resends of requests whose replies only queue behind the burst.
 
 A resend is not made while the request (or an earlier send of it) still waits in the bridge's
 uplink queue: the link has not had it yet, and the resends use that queue, inside its share of
@@ -30,6 +39,7 @@ the uplink and behind the app's own commands. Sans-IO: `request` when a station'
 
 from __future__ import annotations
 
+import struct
 from collections import OrderedDict
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -42,7 +52,10 @@ BACKOFF = 1.5
 MAX_PENDING = 32  # requests followed at once; beyond that the oldest is left to its station
 REQUESTS = frozenset({"COMMAND_LONG", "COMMAND_INT", "MISSION_REQUEST_LIST", "MISSION_REQUEST_INT",
                       "MISSION_REQUEST", "MISSION_CLEAR_ALL", "PARAM_REQUEST_READ", "PARAM_SET",
-                      "PARAM_REQUEST_LIST"})
+                      "PARAM_REQUEST_LIST", "FILE_TRANSFER_PROTOCOL"})
+FTP_HEADER = struct.Struct("<HBBBB")  # seq, session, opcode, size, req_opcode (MAVLink FTP's payload)
+FTP_BURST = 15  # BurstReadFile
+FTP_SEEN = 64  # FTP requests remembered to know a station's retry
 
 Key = tuple[Any, ...]
 
@@ -83,6 +96,7 @@ class Resender:
         self.answered = 0  # requests whose answer came
         self.rescued = 0  # ... after a resend
         self.given_up = 0  # requests BOUND passed over without an answer
+        self._ftp_seen: OrderedDict[Key, None] = OrderedDict()  # FTP requests sent once by their station
 
     def rto(self) -> float:
         srtt = FIRST_RTT if self.srtt is None else self.srtt
@@ -106,6 +120,11 @@ class Resender:
             return who, "param", _name(msg.param_id) if index < 0 else index
         if name == "PARAM_REQUEST_LIST":
             return who, "params"
+        if name == "FILE_TRANSFER_PROTOCOL":
+            seq, _, opcode, _, _ = FTP_HEADER.unpack_from(bytes(msg.payload).ljust(FTP_HEADER.size, b"\0"))
+            if int(msg.target_network) != 0 or opcode == FTP_BURST:
+                return None
+            return who, "ftp", seq, opcode
         return None
 
     # -- a station's request going up ------------------------------------------------------------
@@ -114,6 +133,11 @@ class Resender:
             return
         key = self.key(name, msg, who)
         if key is None:
+            return
+        if key[1] == "ftp" and key not in self.pending and key not in self._ftp_seen:
+            self._ftp_seen[key] = None  # followed from the station's own retry on
+            while len(self._ftp_seen) > FTP_SEEN:
+                self._ftp_seen.popitem(last=False)
             return
         p = self.pending.pop(key, None)
         if p is not None and p.name == name:  # the station's own retry (or a new one like it): followed afresh
@@ -157,6 +181,9 @@ class Resender:
             done.append((who, "mitem", int(msg.mission_type), int(msg.seq)))
         elif name == "MISSION_ACK" and who is not None:
             done += [k for k in self.pending if k[0] == who and k[1] in ("mlist", "mitem", "mclear")]
+        elif name == "FILE_TRANSFER_PROTOCOL" and who is not None:
+            seq, _, _, _, req_opcode = FTP_HEADER.unpack_from(bytes(msg.payload).ljust(FTP_HEADER.size, b"\0"))
+            done.append((who, "ftp", (seq - 1) & 0xFFFF, req_opcode))
         for k in done:
             p = self.pending.pop(k, None)
             if p is None:

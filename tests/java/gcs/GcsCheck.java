@@ -11,12 +11,14 @@ import java.util.Locale;
 import ttctl.ttapi.Ttapi;
 import ttctl.ttapi.msg.CommandAck;
 import ttctl.ttapi.msg.CommandLong;
+import ttctl.ttapi.msg.FileTransferProtocol;
 import ttctl.ttapi.msg.Heartbeat;
 import ttctl.ttapi.msg.ManualControl;
 import ttctl.ttapi.msg.ParamRequestRead;
 import ttctl.ttapi.runtime.Frame;
 import ttctl.ttapi.runtime.GcsBridge;
 import ttctl.ttapi.runtime.GcsQuality;
+import ttctl.ttapi.runtime.GcsResend;
 import ttctl.ttapi.runtime.GcsRoutes;
 import ttctl.ttapi.runtime.GcsRules;
 import ttctl.ttapi.runtime.GcsUplink;
@@ -417,6 +419,49 @@ public final class GcsCheck {
         sched.close();
     }
 
+    /** A MAVLink FTP frame (payload: seq, session 0, opcode, size, req_opcode, offset) from {@code from}. */
+    static byte[] ftp(int seq, int opcode, int offset, int reqOpcode, int[] to, int[] from) {
+        byte[] p = new byte[251];
+        p[0] = (byte) seq;
+        p[1] = (byte) (seq >>> 8);
+        p[3] = (byte) opcode;
+        p[4] = (byte) (opcode == 5 || opcode == 15 ? 239 : 0);
+        p[5] = (byte) reqOpcode;
+        for (int i = 0; i < 4; i++) {
+            p[8 + i] = (byte) (offset >>> (8 * i));
+        }
+        return new FileTransferProtocol(0, to[0], to[1], p).pack(0, from[0], from[1]);
+    }
+
+    /**
+     * GcsResend and MAVLink FTP (as tests/test_bridge_resend.py checks the Python bridge): a request
+     * is followed from its station's own retry on, until the reply of seq + 1 for its opcode; a burst
+     * read never.
+     */
+    static void ftpResend() {
+        int[] station = {254, 190};
+        int[] vehicle = {1, 1};
+        long s = 1_000_000_000L;
+        GcsResend r = new GcsResend();
+        GcsUplink up = new GcsUplink(0, 100);
+        byte[] read = ftp(24, 5, 4063, 0, vehicle, station);
+        byte[] burst = ftp(2, 15, 0, 0, vehicle, station);
+        r.request(read, FileTransferProtocol.CRC_EXTRA, 0);
+        r.request(burst, FileTransferProtocol.CRC_EXTRA, 0);
+        check(r.pending() == 0 && r.due(3 * s, up).isEmpty(), "an FTP request sent once is its station's business");
+        r.request(read, FileTransferProtocol.CRC_EXTRA, 4 * s);
+        r.request(burst, FileTransferProtocol.CRC_EXTRA, 4 * s);
+        check(r.pending() == 1, "the station's retry of a read is followed, of a burst not: " + r.pending());
+        List<byte[]> again = r.due(5 * s, up);
+        check(again.size() == 1 && java.util.Arrays.equals(again.get(0), read), "the read is resent as it was");
+        r.answer(ftp(24, 128, 3107, 5, station, vehicle), 6 * s); // the reply to seq 23
+        r.answer(ftp(25, 128, 5258, 15, station, vehicle), 6 * s); // a burst's reply of seq 25
+        check(r.pending() == 1, "another request's reply is not the answer");
+        r.answer(ftp(25, 128, 4063, 5, station, vehicle), 6 * s);
+        check(r.pending() == 0 && r.due(9 * s, up).isEmpty(), "the reply of seq + 1 to its opcode answers it");
+        RESULT.add("ftp_resend=ok");
+    }
+
     public static void main(String[] argv) throws Exception {
         config();
         uplink();
@@ -425,6 +470,7 @@ public final class GcsCheck {
         bridge();
         signed();
         problems();
+        ftpResend();
         System.out.println("RESULT " + String.join(" ", RESULT));
     }
 }

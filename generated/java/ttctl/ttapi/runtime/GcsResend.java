@@ -29,6 +29,11 @@ import java.util.Map;
  * until that item, MISSION_CLEAR_ALL until a MISSION_ACK (which also ends the other two).</li>
  * <li>PARAM_REQUEST_READ and PARAM_SET until a PARAM_VALUE of that name (or index),
  * PARAM_REQUEST_LIST until any PARAM_VALUE.</li>
+ * <li>FILE_TRANSFER_PROTOCOL (MAVLink FTP), once its station has sent the same request (sequence
+ * number and opcode) a second time, until the reply of sequence number + 1 for that opcode: a
+ * reply spans three or four DTT packets, and pymavlink's mavftp gives a download up after 5 s
+ * without one. Not a burst read (a resend would start the burst again), and not before the
+ * station's own retry (mavftp asks for a burst's gaps all at once).</li>
  * </ul>
  *
  * <p>It waits the link's round trip (measured from requests answered at their first send; 0.8 s
@@ -44,6 +49,8 @@ public final class GcsResend {
     private static final double MIN_RTO = 0.3;
     private static final double MAX_RTO = 1.5;
     private static final double BACKOFF = 1.5;
+    private static final int FTP_BURST = 15; // BurstReadFile
+    private static final int FTP_SEEN = 64; // FTP requests remembered to know a station's retry
 
     private static final class Pending {
         byte[] frame;
@@ -58,6 +65,7 @@ public final class GcsResend {
     }
 
     private final LinkedHashMap<String, Pending> pending = new LinkedHashMap<>();
+    private final LinkedHashMap<String, Boolean> ftpSeen = new LinkedHashMap<>(); // FTP requests sent once
     private double srtt = -1;
     private double rttvar = FIRST_RTT / 4;
     private long resent;
@@ -133,6 +141,8 @@ public final class GcsResend {
                 return who + "param|" + name(f, 6);
             case 21: // PARAM_REQUEST_LIST
                 return who + "params|";
+            case 110: // FILE_TRANSFER_PROTOCOL: the payload's seq (u16) and opcode, after network, system, component
+                return u8(f, 0) == 0 && u8(f, 6) != FTP_BURST ? who + "ftp|" + u16(f, 3) + "|" + u8(f, 6) : null;
             default:
                 return null;
         }
@@ -142,6 +152,14 @@ public final class GcsResend {
     public void request(byte[] frame, int crcExtra, long now) {
         String k = key(frame);
         if (k == null) {
+            return;
+        }
+        if (k.contains("|ftp|") && !pending.containsKey(k) && ftpSeen.put(k, Boolean.TRUE) == null) {
+            while (ftpSeen.size() > FTP_SEEN) { // followed from the station's own retry on
+                Iterator<String> it = ftpSeen.keySet().iterator();
+                it.next();
+                it.remove();
+            }
             return;
         }
         Pending p = pending.remove(k); // a station's own retry (or a new one like it): followed afresh
@@ -215,6 +233,11 @@ public final class GcsResend {
             case 39: // MISSION_ITEM
                 if (who != null) {
                     done.add(who + "mitem|" + u8(f, 37) + "|" + u16(f, 28));
+                }
+                break;
+            case 110: // FILE_TRANSFER_PROTOCOL: the reply of seq + 1 to that opcode (req_opcode)
+                if (who != null) {
+                    done.add(who + "ftp|" + ((u16(f, 3) - 1) & 0xFFFF) + "|" + u8(f, 8));
                 }
                 break;
             case 47: // MISSION_ACK
