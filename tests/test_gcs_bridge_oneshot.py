@@ -176,18 +176,25 @@ def test_a_second_stations_mission_count_is_denied_beside_an_upload(tmp_path: Pa
         flood.start()
         ack = None
         pending = first
+        sent: int | None = None
         end = time.monotonic() + scaled(40)
         while time.monotonic() < end:
-            if pending is not None and pending.get_type() in ("MISSION_REQUEST_INT", "MISSION_REQUEST"):
+            if pending is None and sent is not None:
+                s = sent  # no request and no ack for 1.5 s: the item again (QGroundControl's _ackTimeout)
+            elif pending is not None and pending.get_type() in ("MISSION_REQUEST_INT", "MISSION_REQUEST"):
                 s = int(pending.seq)
                 a.pump(0.4)  # a station taking its time over each item: the upload lasts while B floods
-                a.conn.mav.mission_item_int_send(1, 1, s, m.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, m.MAV_CMD_NAV_WAYPOINT,
-                                                 0, 1, 0, 0, 0, math.nan, int((lat0 + s * 1e-5) * 1e7),
-                                                 int(lon0 * 1e7), 10.0, 0)
             elif pending is not None and pending.get_type() == "MISSION_ACK":
                 ack = pending
                 break
-            pending = a.pump(3.0, lambda x: x.get_type() in ("MISSION_REQUEST_INT", "MISSION_REQUEST",
+            else:
+                s = None
+            if s is not None:
+                a.conn.mav.mission_item_int_send(1, 1, s, m.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, m.MAV_CMD_NAV_WAYPOINT,
+                                                 0, 1, 0, 0, 0, math.nan, int((lat0 + s * 1e-5) * 1e7),
+                                                 int(lon0 * 1e7), 10.0, 0)
+                sent = s
+            pending = a.pump(1.5, lambda x: x.get_type() in ("MISSION_REQUEST_INT", "MISSION_REQUEST",
                                                              "MISSION_ACK"))
         time.sleep(1.0)
         stop.set()
