@@ -121,7 +121,7 @@ class Resender:
         if name == "PARAM_REQUEST_LIST":
             return who, "params"
         if name == "FILE_TRANSFER_PROTOCOL":
-            seq, _, opcode, _, _ = FTP_HEADER.unpack_from(bytes(msg.payload).ljust(FTP_HEADER.size, b"\0"))
+            seq, _, opcode, _, _ = _ftp_header(msg)
             if int(msg.target_network) != 0 or opcode == FTP_BURST:
                 return None
             return who, "ftp", seq, opcode
@@ -182,7 +182,7 @@ class Resender:
         elif name == "MISSION_ACK" and who is not None:
             done += [k for k in self.pending if k[0] == who and k[1] in ("mlist", "mitem", "mclear")]
         elif name == "FILE_TRANSFER_PROTOCOL" and who is not None:
-            seq, _, _, _, req_opcode = FTP_HEADER.unpack_from(bytes(msg.payload).ljust(FTP_HEADER.size, b"\0"))
+            seq, _, _, _, req_opcode = _ftp_header(msg)
             done.append((who, "ftp", (seq - 1) & 0xFFFF, req_opcode))
         for k in done:
             p = self.pending.pop(k, None)
@@ -230,6 +230,11 @@ class Resender:
 
     def deadline(self) -> float | None:
         return min((p.due for p in self.pending.values()), default=None)
+
+
+def _ftp_header(msg: Any) -> tuple[int, int, int, int, int]:
+    """(seq, session, opcode, size, req_opcode) of a FILE_TRANSFER_PROTOCOL's payload."""
+    return FTP_HEADER.unpack_from(bytes(msg.payload).ljust(FTP_HEADER.size, b"\0"))
 
 
 def _name(raw: Any) -> str:

@@ -173,15 +173,18 @@ class Scheduler:
     def ready_at(self) -> float:
         t = self.pacer.ready_at()
         if self._held_until is not None and not (self.control or self.telemetry):
-            due = self.control_due() if self.control_due is not None else None
+            due = self._due()
             if due is not None and due <= self._held_until:  # only bulk waits, and for that retry still
                 t = max(t, due)
         return t
 
+    def _due(self) -> float | None:
+        return self.control_due() if self.control_due is not None else None
+
     def _bulk_limit(self, now: float) -> int:
         """How long a packet bulk data may fill now: the whole packet, or what leaves the radio
         before a control frame falls due (the pacer's rate; unpaced: no limit)."""
-        due = self.control_due() if self.control_due is not None else None
+        due = self._due()
         if due is None or not self.pacer.rate or due <= now:
             return self.mtu
         return min(self.mtu, int((due - now) * self.pacer.rate))
@@ -212,7 +215,7 @@ class Scheduler:
             # signed, nothing goes between a long frame's pieces: a shorter piece would not help
             n = mtu if self.sign is not None or limit >= mtu else self._piece(limit, len(self._spill))
             if n == 0:
-                self._held_until = self.control_due() if self.control_due is not None else None
+                self._held_until = self._due()
                 return b""
             pkt += self._spill[:n]
             self._spill = self._spill[n:]
@@ -249,7 +252,7 @@ class Scheduler:
                     self._held = frame
                 break
         if not pkt and limit < mtu:  # (what bulk there is waits: a source's frame may not fit either)
-            self._held_until = self.control_due() if self.control_due is not None else None
+            self._held_until = self._due()
         return bytes(pkt)
 
     @staticmethod
