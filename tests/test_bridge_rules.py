@@ -315,6 +315,11 @@ def test_the_verdict_on_a_last_item_sent_again_for_the_vehicles_request_is_not_t
     assert relay.from_vehicle(2.0, ack, who)[0] is True  # the next upload's own
 
 
+def _from(who: tuple[int, int], msg: Any) -> Any:
+    msg._mav_sysid, msg._mav_compid = who
+    return msg
+
+
 def test_the_vehicle_keeps_items_that_come_ahead_and_acks_a_repeated_last_item_again() -> None:
     from ttctl.ends.onboard.missions import Missions
 
@@ -335,6 +340,11 @@ def test_the_vehicle_keeps_items_that_come_ahead_and_acks_a_repeated_last_item_a
     assert asks.count(1) == 2 and 2 not in asks and 3 not in asks  # 1 asked again once; 2 and 3 never
     from_gcs(item(4), 1.5)  # the last item again: the ground station did not hear the ack
     assert [x.NAME for x in sent[-1:]] == ["MISSION_ACK"] and len([x for x in sent if x.NAME == "MISSION_ACK"]) == 2
+    # another station's upload has begun meanwhile: the first station's repeat is still acked
+    m.on_message(1.6, _from((200, 190), B.MissionCount(target_system=1, target_component=1, count=3, mission_type=0)))
+    from_gcs(item(4), 2.0)
+    assert sent[-1].NAME == "MISSION_ACK" and sent[-1].type == 0, sent[-1]
+    assert m.upload is not None and m.upload.peer == (200, 190)  # and the other upload goes on
 
 
 def test_download_relay_answers_from_the_vehicles_own_items() -> None:

@@ -147,7 +147,8 @@ class Missions:
                     self.warn(f"mission upload from {peer[0]}/{peer[1]} denied: one from {up.peer[0]}/{up.peer[1]}"
                               f" is in progress")
                 return
-            self.done = None
+            if self.done is not None and self.done[0] == peer:
+                self.done = None  # (another station's finished upload may still need its ack again)
             if msg.count == 0:
                 self.plans[msg.mission_type] = []
                 self.upload = None
@@ -163,11 +164,12 @@ class Missions:
             if isinstance(msg, b.MissionItem):
                 msg = self._as_int(msg)
             up = self.upload
-            if up is None and self.done is not None:
+            if (up is None or peer != up.peer) and self.done is not None:
+                # the last item again: our ack was lost (also while another station's upload has begun)
                 who, kind, count, when = self.done
                 if (who, kind, count - 1) == (peer, msg.mission_type, msg.seq) and now - when < 10:
-                    self._ack(peer, int(R.MAV_MISSION_ACCEPTED), kind)  # the last item again: our ack was lost
-                return
+                    self._ack(peer, int(R.MAV_MISSION_ACCEPTED), kind)
+                    return
             if up is None or peer != up.peer:
                 return
             if msg.seq != len(up.items):
